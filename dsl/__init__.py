@@ -1,0 +1,1 @@
+"""The mech language: grammar, parser, interpreter, printing, REPL and CLI."""

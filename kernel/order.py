@@ -1,0 +1,153 @@
+"""Monomial orderings as weight matrices.
+
+Every ordering mech knows (Singular's ``lp dp Dp wp Wp ls ds Ds ws Ws``, weight prefixes
+``a(w)``, matrix orderings ``M(...)`` and blocks of these) is one integer matrix ``M``:
+``x^a > x^b`` iff the first nonzero entry of ``M (a - b)`` is positive.  The ordering
+compiles ``M`` into a sort key (a tuple) with fast paths for the common blocks.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable, Sequence
+
+Exp = tuple[int, ...]
+
+GLOBAL_KINDS = {"lp", "dp", "Dp", "wp", "Wp"}
+LOCAL_KINDS = {"ls", "ds", "Ds", "ws", "Ws"}
+WEIGHTED_KINDS = {"wp", "Wp", "ws", "Ws"}
+
+
+@dataclass(frozen=True)
+class Block:
+    """One block of an ordering.
+
+    ``kind`` is a Singular ordering name (``lp``, ``dp``, ``Dp``, ``wp``, ``Wp``, ``ls``,
+    ``ds``, ``Ds``, ``ws``, ``Ws``), ``"a"`` for a weight prefix (it covers no variables of
+    its own) or ``"M"`` for a matrix block (``weights`` holds the matrix row by row).
+    """
+
+    kind: str
+    size: int
+    weights: tuple[int, ...] = field(default=())
+
+    def rows(self) -> list[list[int]]:
+        """The block's weight matrix on its own variables (a prefix: on the next len(w))."""
+        n, k, w = self.size, self.kind, list(self.weights)
+        if k == "a":
+            return [w]
+        if k == "M":
+            return [w[i * n:(i + 1) * n] for i in range(n)]
+        unit = [[1 if j == i else 0 for j in range(n)] for i in range(n)]
+        rev = [[-1 if j == n - 1 - i else 0 for j in range(n)] for i in range(n - 1)]
+        if k == "lp":
+            return unit
+        if k == "ls":
+            return [[-v for v in r] for r in unit]
+        top = {"dp": [1] * n, "Dp": [1] * n, "ds": [-1] * n, "Ds": [-1] * n,
+               "wp": w, "Wp": w, "ws": [-v for v in w], "Ws": [-v for v in w]}[k]
+        tail = rev if k in ("dp", "ds", "wp", "ws") else unit
+        return [top] + tail
+
+
+class MonomialOrder:
+    """A monomial ordering on ``nvars`` variables, built from blocks."""
+
+    def __init__(self, blocks: Sequence[Block], nvars: int | None = None) -> None:
+        self.blocks = tuple(blocks)
+        covered = sum(b.size for b in self.blocks if b.kind != "a")
+        self.nvars = covered if nvars is None else nvars
+        if covered != self.nvars:
+            raise ValueError(f"the ordering covers {covered} variables, the ring has {self.nvars}")
+        self.matrix = self._matrix()
+        self._check_nondegenerate()
+        self.key: Callable[[Exp], tuple] = self._compile()
+        signs = []
+        for j in range(self.nvars):
+            col = [r[j] for r in self.matrix if r[j] != 0]
+            signs.append(1 if col[0] > 0 else -1)
+        self.is_global = all(s > 0 for s in signs)
+        self.is_local = all(s < 0 for s in signs)
+
+    @classmethod
+    def simple(cls, kind: str, nvars: int, weights: Sequence[int] = ()) -> "MonomialOrder":
+        """One-block ordering, e.g. ``MonomialOrder.simple("dp", 3)``."""
+        return cls([Block(kind, nvars, tuple(weights))])
+
+    def _matrix(self) -> list[list[int]]:
+        n, rows, start = self.nvars, [], 0
+        for b in self.blocks:
+            for r in b.rows():
+                full = [0] * n
+                full[start:start + len(r)] = r
+                rows.append(full)
+            if b.kind != "a":
+                start += b.size
+        return rows
+
+    def _check_nondegenerate(self) -> None:
+        from fractions import Fraction
+        m = [[Fraction(v) for v in r] for r in self.matrix]
+        rank, n = 0, self.nvars
+        for c in range(n):
+            piv = next((i for i in range(rank, len(m)) if m[i][c] != 0), None)
+            if piv is None:
+                continue
+            m[rank], m[piv] = m[piv], m[rank]
+            for i in range(len(m)):
+                if i != rank and m[i][c] != 0:
+                    f = m[i][c] / m[rank][c]
+                    m[i] = [a - f * b for a, b in zip(m[i], m[rank])]
+            rank += 1
+        if rank < n:
+            raise ValueError("the ordering is not a monomial ordering (degenerate weights)")
+
+    def _compile(self) -> Callable[[Exp], tuple]:
+        real = [b for b in self.blocks if b.kind != "a"]
+        if len(real) == len(self.blocks) == 1 and real[0].kind in ("dp", "lp", "Dp", "ds", "ls", "Ds"):
+            k = real[0].kind
+            if k == "lp":
+                return lambda e: e
+            if k == "dp":
+                return lambda e: (sum(e), *[-v for v in reversed(e)])
+            if k == "Dp":
+                return lambda e: (sum(e), *e)
+            if k == "ls":
+                return lambda e: tuple(-v for v in e)
+            if k == "ds":
+                return lambda e: (-sum(e), *[-v for v in reversed(e)])
+            return lambda e: (-sum(e), *e)
+        rows = [tuple((j, v) for j, v in enumerate(r) if v) for r in self.matrix]
+        return lambda e: tuple(sum(v * e[j] for j, v in r) for r in rows)
+
+    def compare(self, a: Exp, b: Exp) -> int:
+        """-1, 0 or 1 as ``x^a`` is smaller than, equal to or greater than ``x^b``."""
+        ka, kb = self.key(a), self.key(b)
+        return (ka > kb) - (ka < kb)
+
+    def is_elimination_for(self, vars_: Sequence[int]) -> bool:
+        """Whether the ordering eliminates the given variable indices (all are larger
+        than any monomial in the other variables): true for a block ordering whose leading
+        blocks cover exactly ``vars_`` with a positive first row."""
+        want, start = set(vars_), 0
+        got: set[int] = set()
+        for b in self.blocks:
+            if b.kind == "a":
+                return False
+            if got == want:
+                return True
+            if b.kind not in GLOBAL_KINDS:
+                return False
+            got |= set(range(start, start + b.size))
+            start += b.size
+            if not got <= want:
+                return False
+        return got == want
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, MonomialOrder) and self.matrix == other.matrix
+
+    def __hash__(self) -> int:
+        return hash(tuple(map(tuple, self.matrix)))
+
+    def __repr__(self) -> str:
+        return f"MonomialOrder({list(self.blocks)!r})"

@@ -1,0 +1,1 @@
+"""mech: a computer-algebra language for the configuration spaces of rigid mechanisms."""

@@ -1,0 +1,1 @@
+"""Command libraries the language loads (algebra commands, mechanisms, plots)."""
