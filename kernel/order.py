@@ -125,23 +125,18 @@ class MonomialOrder:
         return (ka > kb) - (ka < kb)
 
     def is_elimination_for(self, vars_: Sequence[int]) -> bool:
-        """Whether the ordering eliminates the given variable indices (all are larger
-        than any monomial in the other variables): true for a block ordering whose leading
-        blocks cover exactly ``vars_`` with a positive first row."""
-        want, start = set(vars_), 0
-        got: set[int] = set()
-        for b in self.blocks:
-            if b.kind == "a":
+        """Whether every monomial involving one of ``vars_`` is larger than every monomial
+        free of them: true when leading rows of the matrix are nonnegative, vanish outside
+        ``vars_`` and together cover ``vars_``."""
+        want, covered = set(vars_), set()
+        for row in self.matrix:
+            support = {j for j, v in enumerate(row) if v}
+            if any(v < 0 for v in row) or not support <= want:
                 return False
-            if got == want:
+            covered |= support
+            if covered == want:
                 return True
-            if b.kind not in GLOBAL_KINDS:
-                return False
-            got |= set(range(start, start + b.size))
-            start += b.size
-            if not got <= want:
-                return False
-        return got == want
+        return not want
 
     def __eq__(self, other: object) -> bool:
         return isinstance(other, MonomialOrder) and self.matrix == other.matrix

@@ -1,0 +1,48 @@
+"""Helpers shared by the tests: parsing Singular's long-form output, running Singular."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+
+from mech.kernel import Poly, PolyRing
+
+SINGULAR = shutil.which("Singular")
+
+
+def parse_poly(ring: PolyRing, text: str) -> Poly:
+    """A polynomial from Singular's long form (``3*x^2*y-1/2*z``)."""
+    names = {n: g for n, g in zip(ring.names, ring.gens())}
+    expr = re.sub(r"(\d+)/(\d+)", r"(\1/\2)", text.replace("^", "**"))
+    value = eval(expr, {"__builtins__": {}}, _Scope(ring, names))  # noqa: S307 - test data only
+    return value if isinstance(value, Poly) else ring.const(value)
+
+
+class _Scope(dict):
+    def __init__(self, ring: PolyRing, names: dict[str, Poly]) -> None:
+        super().__init__(names)
+        self.ring = ring
+
+    def __missing__(self, key: str):
+        raise NameError(key)
+
+
+def ideal_blocks(output: str) -> list[list[str]]:
+    """The ideals printed as consecutive ``name[i]=...`` lines, in order."""
+    blocks: list[list[str]] = []
+    for line in output.splitlines():
+        m = re.match(r"^\s*[\w_]*\[(\d+)\]=(.*)$", line)
+        if not m:
+            continue
+        if m.group(1) == "1":
+            blocks.append([])
+        blocks[-1].append(m.group(2))
+    return blocks
+
+
+def run_singular(script: str, timeout: float = 120) -> str:
+    """Singular's output for a script (``quit;`` appended)."""
+    assert SINGULAR, "Singular is not installed"
+    res = subprocess.run([SINGULAR, "-q", "--no-warn"], input=script + "\nquit;\n", text=True,
+                         capture_output=True, timeout=timeout)
+    return res.stdout
