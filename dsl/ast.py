@@ -1,0 +1,240 @@
+"""Syntax tree of mech programs: statements and expressions with source positions.
+
+Every node carries ``pos`` (line, column, end line, end column; 1-based, end exclusive), which the
+interpreter uses for ``file:line:col`` errors and for underlining a call.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+
+@dataclass(frozen=True)
+class Pos:
+    line: int
+    col: int
+    end_line: int
+    end_col: int
+
+
+NOPOS = Pos(0, 0, 0, 0)
+
+
+@dataclass(eq=False)
+class Node:
+    pos: Pos = field(default=NOPOS, kw_only=True)
+
+
+# ---------------------------------------------------------------- expressions
+class Expr(Node):
+    pass
+
+
+@dataclass(eq=False)
+class Name(Expr):
+    id: str
+
+
+@dataclass(eq=False)
+class IntLit(Expr):
+    value: int
+
+
+@dataclass(eq=False)
+class RatLit(Expr):
+    num: int
+    den: int
+
+
+@dataclass(eq=False)
+class MonomLit(Expr):
+    """A coefficient glued to a short monomial: ``3x2y`` or ``1/2x``."""
+    num: int
+    den: int
+    monomial: str
+
+
+@dataclass(eq=False)
+class StrLit(Expr):
+    value: str
+
+
+@dataclass(eq=False)
+class Tuple(Expr):
+    """A parenthesized expression list ``(a, b, c)``."""
+    items: list[Expr]
+
+
+@dataclass(eq=False)
+class BinOp(Expr):
+    op: str
+    left: Expr
+    right: Expr
+
+
+@dataclass(eq=False)
+class UnOp(Expr):
+    op: str
+    operand: Expr
+
+
+@dataclass(eq=False)
+class Range(Expr):
+    lo: Expr
+    hi: Expr
+
+
+@dataclass(eq=False)
+class Index(Expr):
+    base: Expr
+    indices: list[Expr]
+
+
+@dataclass(eq=False)
+class Call(Expr):
+    func: Expr
+    args: list[Expr]
+
+
+@dataclass(eq=False)
+class TypeCall(Expr):
+    """A type name used as a conversion command: ``ideal(x, y)``."""
+    type: str
+    args: list[Expr]
+
+
+# ---------------------------------------------------------------- statements
+class Stmt(Node):
+    pass
+
+
+@dataclass(eq=False)
+class ExprStmt(Stmt):
+    exprs: list[Expr]
+
+
+@dataclass(eq=False)
+class Declarator(Node):
+    name: str
+    dims: list[Expr]
+
+
+@dataclass(eq=False)
+class Decl(Stmt):
+    type: str
+    items: list[Declarator]
+    value: Optional[list[Expr]]
+
+
+@dataclass(eq=False)
+class Assign(Stmt):
+    targets: list[Expr]
+    values: list[Expr]
+
+
+@dataclass(eq=False)
+class IncDec(Stmt):
+    target: Expr
+    delta: int
+
+
+@dataclass(eq=False)
+class Block(Stmt):
+    body: list[Stmt]
+
+
+@dataclass(eq=False)
+class If(Stmt):
+    cond: Expr
+    then: list[Stmt]
+    orelse: Optional[list[Stmt]]
+
+
+@dataclass(eq=False)
+class For(Stmt):
+    init: Optional[Stmt]
+    cond: Optional[Expr]
+    step: Optional[Stmt]
+    body: list[Stmt]
+
+
+@dataclass(eq=False)
+class While(Stmt):
+    cond: Expr
+    body: list[Stmt]
+
+
+@dataclass(eq=False)
+class Break(Stmt):
+    pass
+
+
+@dataclass(eq=False)
+class Continue(Stmt):
+    pass
+
+
+@dataclass(eq=False)
+class Return(Stmt):
+    values: list[Expr]
+
+
+@dataclass(eq=False)
+class Param(Node):
+    type: Optional[str]
+    name: str
+
+
+@dataclass(eq=False)
+class ProcDef(Stmt):
+    name: str
+    params: Optional[list[Param]]
+    doc: Optional[str]
+    body: list[Stmt]
+    static: bool = False
+    body_line: int = 0
+
+
+@dataclass(eq=False)
+class Kill(Stmt):
+    targets: list[Expr]
+
+
+@dataclass(eq=False)
+class Export(Stmt):
+    targets: list[Expr]
+
+
+@dataclass(eq=False)
+class Keepring(Stmt):
+    ring: Expr
+
+
+@dataclass(eq=False)
+class Setring(Stmt):
+    ring: Expr
+
+
+@dataclass(eq=False)
+class Lib(Stmt):
+    name: str
+
+
+@dataclass(eq=False)
+class Quit(Stmt):
+    pass
+
+
+@dataclass(eq=False)
+class Help(Stmt):
+    topic: Optional[str]
+
+
+@dataclass(eq=False)
+class Empty(Stmt):
+    pass
+
+
+@dataclass(eq=False)
+class Program(Node):
+    body: list[Stmt]

@@ -1,0 +1,118 @@
+"""mech's errors: every failure the user sees is a :class:`MechError` formatted as
+
+    FILE:LINE:COL: error: message
+    <the source line>
+        ^~~~
+
+followed by ``note:`` entries for the chain of procedure calls it happened in.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional
+
+from .ast import Pos
+
+
+@dataclass
+class Source:
+    """A named program text (a file name, ``<string>`` for ``-c`` code, ``<stdin>``)."""
+
+    name: str
+    text: str
+
+    def line(self, n: int) -> str:
+        lines = self.text.splitlines()
+        return lines[n - 1] if 0 < n <= len(lines) else ""
+
+
+@dataclass
+class Note:
+    message: str
+    source: Optional[Source]
+    pos: Optional[Pos]
+    underline: bool = True
+
+
+class MechError(Exception):
+    """Base class of mech's errors; ``line`` and ``column`` locate it (0 when unknown)."""
+
+    kind = "error"
+
+    def __init__(self, message: str, pos: Optional[Pos] = None, source: Optional[Source] = None,
+                 underline: bool = False) -> None:
+        super().__init__(message)
+        self.message = message
+        self.pos = pos
+        self.source = source
+        self.underline = underline
+        self.notes: list[Note] = []
+
+    @property
+    def line(self) -> int:
+        return self.pos.line if self.pos else 0
+
+    @property
+    def column(self) -> int:
+        return self.pos.col if self.pos else 0
+
+    @property
+    def filename(self) -> str:
+        return self.source.name if self.source else "<input>"
+
+    def locate(self, pos: Pos, source: Optional[Source], underline: bool = False) -> "MechError":
+        """Attach a position unless the error already has one."""
+        if self.pos is None:
+            self.pos, self.source, self.underline = pos, source, underline
+        elif self.source is None:
+            self.source = source
+        return self
+
+    def format(self) -> str:
+        """The error as the user sees it (ends with a newline)."""
+        out = [_entry(self.source, self.pos, "error", self.message, self.underline)]
+        for n in self.notes:
+            out.append(_entry(n.source, n.pos, "note", n.message, n.underline))
+        return "".join(out)
+
+    def __str__(self) -> str:
+        if self.pos is None:
+            return self.message
+        return f"{self.filename}:{self.pos.line}:{self.pos.col}: {self.message}"
+
+
+class MechSyntaxError(MechError):
+    """The program text does not parse."""
+
+
+class MechRuntimeError(MechError):
+    """Evaluation failed (wrong value, division by zero, no ring, ...)."""
+
+
+class MechNameError(MechRuntimeError):
+    """An unknown identifier, command or library."""
+
+
+class MechTypeError(MechRuntimeError):
+    """Arguments or operands of the wrong type or number."""
+
+
+class MechInternalError(MechError):
+    """A bug in mech itself, reported in the same format."""
+
+
+def _entry(source: Optional[Source], pos: Optional[Pos], kind: str, message: str, underline: bool) -> str:
+    name = source.name if source else "<input>"
+    if pos is None or pos.line == 0:
+        return f"{name}: {kind}: {message}\n"
+    head = f"{name}:{pos.line}:{pos.col}: {kind}: {message}\n"
+    text = source.line(pos.line) if source else ""
+    if not text:
+        return head
+    col = min(pos.col, len(text) + 1)
+    lead = "".join(c if c == "\t" else " " for c in text[:col - 1])
+    width = 1
+    if underline:
+        end = pos.end_col if pos.end_line == pos.line else len(text) + 1
+        width = max(1, end - col)
+    return f"{head}{text}\n{lead}^{'~' * (width - 1)}\n"

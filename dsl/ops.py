@@ -1,0 +1,325 @@
+"""Operators of the language on values, with Singular's semantics.
+
+``int`` arithmetic truncates like C (``-7 div 2 == -3``, ``-7 mod 3 == -1``); ``/`` between ints is
+integer division (Singular warns); mixed int/number/poly operands are promoted to the larger type
+in the basering; ideals add (generators joined, zeros and repeated multiples dropped) and multiply
+(pairwise products); matrices add and multiply as matrices.
+"""
+from __future__ import annotations
+
+from typing import Any, Callable, Optional
+
+from ..kernel import Poly, PolyRing
+from .errors import MechRuntimeError, MechTypeError
+from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, to_ideal, to_number, to_poly, typeof)
+
+Warn = Callable[[str], None]
+
+
+def trunc_div(a: int, b: int) -> int:
+    if b == 0:
+        raise MechRuntimeError("division by 0")
+    q = abs(a) // abs(b)
+    return q if (a >= 0) == (b >= 0) else -q
+
+
+def trunc_mod(a: int, b: int) -> int:
+    return a - b * trunc_div(a, b)
+
+
+def _rank(v: Any) -> int:
+    if isinstance(v, int):
+        return 0
+    if isinstance(v, Number):
+        return 1
+    if isinstance(v, Poly):
+        return 2
+    return -1
+
+
+def _bad(op: str, a: Any, b: Any) -> MechTypeError:
+    return MechTypeError(f"operator {op} is not defined for {typeof(a)} and {typeof(b)}")
+
+
+def _ring(a: Any, b: Any, ring: Optional[PolyRing]) -> Optional[PolyRing]:
+    for v in (a, b):
+        r = getattr(v, "ring", None)
+        if isinstance(r, PolyRing):
+            return r
+    return ring
+
+
+def _scalar(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
+    """``a op b`` for int/number/poly operands (at least one not an int)."""
+    ring = _ring(a, b, ring)
+    rank = max(_rank(a), _rank(b))
+    if rank == 1:
+        x, y = to_number(a, ring).c, to_number(b, ring).c
+        if op == "+":
+            return Number(ring, x + y)
+        if op == "-":
+            return Number(ring, x - y)
+        if op == "*":
+            return Number(ring, x * y)
+        if op == "/":
+            if y == 0:
+                raise MechRuntimeError("division by 0")
+            return Number(ring, x / y)
+        raise _bad(op, a, b)
+    x, y = to_poly(a, ring), to_poly(b, ring)
+    if op == "+":
+        return x + y
+    if op == "-":
+        return x - y
+    if op == "*":
+        return x * y
+    if op in ("/", "div"):
+        return poly_quotient(x, y)
+    raise _bad(op, a, b)
+
+
+def poly_quotient(f: Poly, g: Poly) -> Poly:
+    """Singular's ``f / g``: the quotient of dividing ``f`` by ``g`` (a remainder is dropped)."""
+    if g.is_zero():
+        raise MechRuntimeError("division by 0")
+    if g.is_constant():
+        return f / g.lc()
+    ring = f.ring
+    glm, glc = g.lm(), g.lc()
+    q, r = ring.zero(), f
+    while not r.is_zero():
+        e = r.lm()
+        if all(a >= b for a, b in zip(e, glm)):
+            t = ring.monomial(tuple(a - b for a, b in zip(e, glm)), r.terms[e] / glc)
+            q, r = q + t, r - t * g
+        else:
+            r = r - r.lt()
+    return q
+
+
+def _simplify(gens: list[Poly], multiples: bool) -> list[Poly]:
+    """Drop zero generators and repeated ones (with ``multiples``: constant multiples of earlier ones)."""
+    out: list[Poly] = []
+    seen_monic: set = set()
+    for g in gens:
+        if g.is_zero():
+            continue
+        k = g.monic() if multiples else g
+        sig = frozenset(k.terms.items())
+        if sig in seen_monic:
+            continue
+        seen_monic.add(sig)
+        out.append(g)
+    return out
+
+
+def _ideal_op(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
+    ring = _ring(a, b, ring)
+    if op == "+":
+        ia, ib = to_ideal(a, ring), to_ideal(b, ring)
+        return Ideal(ring, _simplify(list(ia.gens) + list(ib.gens), True))
+    if op == "*":
+        if isinstance(a, Ideal) and isinstance(b, Ideal):
+            return Ideal(ring, _simplify([f * g for f in a.gens for g in b.gens], False))
+        if isinstance(a, Ideal):
+            p = to_poly(b, ring)
+            return Ideal(ring, [g * p for g in a.gens])
+        p = to_poly(a, ring)
+        return Ideal(ring, [p * g for g in b.gens])
+    raise _bad(op, a, b)
+
+
+def _matrix_op(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Matrix:
+    ring = _ring(a, b, ring)
+    if isinstance(a, Matrix) and isinstance(b, Matrix):
+        if op in ("+", "-"):
+            if (a.nrows, a.ncols) != (b.nrows, b.ncols):
+                raise MechRuntimeError(f"matrix sizes do not match ({a.nrows}x{a.ncols}, {b.nrows}x{b.ncols}) in {op}")
+            f = (lambda x, y: x + y) if op == "+" else (lambda x, y: x - y)
+            return Matrix(ring, a.nrows, a.ncols, [f(x, y) for x, y in zip(a.entries, b.entries)])
+        if op == "*":
+            if a.ncols != b.nrows:
+                raise MechRuntimeError(f"matrix sizes not compatible ({a.nrows}x{a.ncols}, {b.nrows}x{b.ncols}) in *")
+            out = []
+            for i in range(1, a.nrows + 1):
+                for j in range(1, b.ncols + 1):
+                    s = ring.zero()
+                    for k in range(1, a.ncols + 1):
+                        s = s + a.get(i, k) * b.get(k, j)
+                    out.append(s)
+            return Matrix(ring, a.nrows, b.ncols, out)
+        raise _bad(op, a, b)
+    if op == "*" and _rank(b) >= 0 and isinstance(a, Matrix):
+        p = to_poly(b, ring)
+        return Matrix(ring, a.nrows, a.ncols, [x * p for x in a.entries])
+    if op == "*" and _rank(a) >= 0 and isinstance(b, Matrix):
+        p = to_poly(a, ring)
+        return Matrix(ring, b.nrows, b.ncols, [p * x for x in b.entries])
+    raise _bad(op, a, b)
+
+
+def _intvec_op(op: str, a: Any, b: Any) -> Any:
+    if isinstance(a, IntVec) and isinstance(b, IntVec):
+        if op in ("+", "-"):
+            n = max(len(a), len(b))
+            x = list(a.values) + [0] * (n - len(a))
+            y = list(b.values) + [0] * (n - len(b))
+            return IntVec([u + v if op == "+" else u - v for u, v in zip(x, y)])
+        raise _bad(op, a, b)
+    if isinstance(a, IntVec) and isinstance(b, int):
+        fn = {"+": lambda u: u + b, "-": lambda u: u - b, "*": lambda u: u * b,
+              "/": lambda u: trunc_div(u, b), "div": lambda u: trunc_div(u, b),
+              "mod": lambda u: trunc_mod(u, b)}.get(op)
+    elif isinstance(a, int) and isinstance(b, IntVec) and op in ("+", "*"):
+        return _intvec_op(op, b, a)
+    else:
+        fn = None
+    if fn is None:
+        raise _bad(op, a, b)
+    return IntVec([fn(u) for u in a.values])
+
+
+def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any:
+    """``a op b`` for the arithmetic operators ``+ - * / div mod ^ :``."""
+    if type(a) is int and type(b) is int:
+        if op == "+":
+            return a + b
+        if op == "-":
+            return a - b
+        if op == "*":
+            return a * b
+        if op == "/":
+            warn("int division with `/`: use `div` instead")
+            return trunc_div(a, b)
+        if op == "div":
+            return trunc_div(a, b)
+        if op == "mod":
+            if b == 0:
+                raise MechRuntimeError("division by 0")
+            return trunc_mod(a, b)
+        if op == "^":
+            if b < 0:
+                raise MechRuntimeError("negative exponent for an int")
+            return a ** b
+        if op == ":":
+            if b < 0:
+                raise MechRuntimeError("negative repetition count")
+            return IntVec([a] * b)
+    if op == "^":
+        return power(a, b)
+    if isinstance(a, (IntVec,)) or isinstance(b, IntVec):
+        return _intvec_op(op, a, b)
+    if isinstance(a, Matrix) or isinstance(b, Matrix):
+        return _matrix_op(op, a, b, ring)
+    if isinstance(a, Ideal) or isinstance(b, Ideal):
+        return _ideal_op(op, a, b, ring)
+    if op == "+":
+        if isinstance(a, str) and isinstance(b, str):
+            return a + b
+        if isinstance(a, List) and isinstance(b, List):
+            return List(a.items + b.items)
+    if _rank(a) >= 0 and _rank(b) >= 0:
+        if op == "mod" and isinstance(a, Poly):
+            raise _bad(op, a, b)
+        return _scalar(op, a, b, ring)
+    raise _bad(op, a, b)
+
+
+def power(a: Any, k: Any) -> Any:
+    if not isinstance(k, int):
+        raise MechTypeError(f"operator ^ needs an int exponent, not {typeof(k)}")
+    if isinstance(a, Number):
+        if k < 0:
+            if a.c == 0:
+                raise MechRuntimeError("division by 0")
+            return Number(a.ring, (a.ring.field.one / a.c) ** (-k))
+        return Number(a.ring, a.c ** k)
+    if isinstance(a, Poly):
+        if k < 0:
+            raise MechRuntimeError("negative exponent for a poly")
+        return a ** k
+    if isinstance(a, Ideal):
+        if k < 0:
+            raise MechRuntimeError("negative exponent for an ideal")
+        result = Ideal(a.ring, [a.ring.one()])
+        for _ in range(k):
+            result = _ideal_op("*", result, a, a.ring)
+        return result
+    if isinstance(a, Matrix) and a.nrows == a.ncols and k >= 0:
+        result = Matrix(a.ring, a.nrows, a.ncols, [a.ring.one() if i == j else a.ring.zero()
+                                                   for i in range(a.nrows) for j in range(a.ncols)])
+        for _ in range(k):
+            result = _matrix_op("*", result, a, a.ring)
+        return result
+    raise MechTypeError(f"operator ^ is not defined for {typeof(a)} and int")
+
+
+def negate(a: Any) -> Any:
+    if isinstance(a, int):
+        return -a
+    if isinstance(a, Number):
+        return Number(a.ring, -a.c)
+    if isinstance(a, Poly):
+        return -a
+    if isinstance(a, Matrix):
+        return Matrix(a.ring, a.nrows, a.ncols, [-x for x in a.entries])
+    if isinstance(a, IntVec):
+        return IntVec([-x for x in a.values])
+    raise MechTypeError(f"unary minus is not defined for {typeof(a)}")
+
+
+def truth(v: Any) -> bool:
+    """An int used as a condition."""
+    if isinstance(v, int):
+        return v != 0
+    if isinstance(v, Number):
+        return v.c != 0
+    if isinstance(v, Poly) and v.is_constant():
+        return not v.is_zero()
+    raise MechTypeError(f"a condition must be an int, not {typeof(v)}")
+
+
+def _sort_number(n: Number) -> Any:
+    if n.ring.field.characteristic:
+        return int(n.c)  # Singular compares Z/p elements by their representatives in [0, p)
+    return n.c
+
+
+def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
+    """``a op b`` for ``== != < <= > >=`` (1 or 0)."""
+    if isinstance(a, ExprList) or isinstance(b, ExprList):
+        raise MechTypeError("cannot compare expression lists")
+    if type(a) is int and type(b) is int or (isinstance(a, str) and isinstance(b, str)):
+        x, y = a, b
+    elif _rank(a) >= 0 and _rank(b) >= 0:
+        ring = _ring(a, b, ring)
+        if max(_rank(a), _rank(b)) == 1:
+            x, y = _sort_number(to_number(a, ring)), _sort_number(to_number(b, ring))
+        else:
+            p, q = to_poly(a, ring), to_poly(b, ring)
+            if op in ("==", "!="):
+                return int((p == q) == (op == "=="))
+            x, y = _poly_key(p), _poly_key(q)
+    elif op in ("==", "!=") and type(a) is type(b) and isinstance(a, (Ideal, Matrix, IntVec, List)):
+        return int((a == b) == (op == "=="))
+    elif isinstance(a, IntVec) and isinstance(b, IntVec):
+        x, y = a.values, b.values
+    else:
+        raise MechTypeError(f"cannot compare {typeof(a)} and {typeof(b)}")
+    if op == "==":
+        return int(x == y)
+    if op == "!=":
+        return int(x != y)
+    if op == "<":
+        return int(x < y)
+    if op == "<=":
+        return int(x <= y)
+    if op == ">":
+        return int(x > y)
+    return int(x >= y)
+
+
+def _poly_key(p: Poly) -> tuple:
+    """Polynomials compare by their terms from the largest down (leading monomial first)."""
+    key = p.ring.order.key
+    return tuple((key(e), 1) for e, _ in p.sorted_terms())

@@ -1,0 +1,411 @@
+"""Parsing mech's Singular dialect (``singular.lark``, LALR) into the tree of :mod:`mech.dsl.ast`.
+
+:func:`parse` returns a :class:`~mech.dsl.ast.Program` or raises :class:`MechSyntaxError`;
+:func:`split_complete` finds where complete top-level statements end (the REPL reads until one
+is complete; after a syntax error the statements before it still run).
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+from typing import Any, Optional
+
+from lark import Lark, Token, Transformer, v_args
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken, VisitError
+
+from . import ast as A
+from .errors import MechSyntaxError, Source
+
+GRAMMAR = Path(__file__).with_name("singular.lark")
+
+
+def _pos(meta: Any) -> A.Pos:
+    if getattr(meta, "empty", False):
+        return A.NOPOS
+    return A.Pos(meta.line, meta.column, meta.end_line, meta.end_column)
+
+
+def _tpos(tok: Token) -> A.Pos:
+    return A.Pos(tok.line, tok.column, tok.end_line, tok.end_column)
+
+
+def _list(x: Optional[A.Tuple | list]) -> list:
+    if x is None:
+        return []
+    return list(x)
+
+
+class _Build(Transformer):
+    """Lark callbacks building AST nodes from the parse tree."""
+
+    # ---- expressions
+    @v_args(meta=True)
+    def name(self, meta, c):
+        return A.Name(str(c[0]), pos=_tpos(c[0]))
+
+    @v_args(meta=True)
+    def int_lit(self, meta, c):
+        return A.IntLit(int(c[0]), pos=_tpos(c[0]))
+
+    @v_args(meta=True)
+    def rat_lit(self, meta, c):
+        num, den = str(c[0]).split("/")
+        return A.RatLit(int(num), int(den), pos=_tpos(c[0]))
+
+    @v_args(meta=True)
+    def monom_lit(self, meta, c):
+        s = str(c[0])
+        i = 0
+        while s[i].isdigit() or s[i] == "/":
+            i += 1
+        coeff, mono = s[:i], s[i:]
+        num, _, den = coeff.partition("/")
+        return A.MonomLit(int(num), int(den) if den else 1, mono, pos=_tpos(c[0]))
+
+    @v_args(meta=True)
+    def str_lit(self, meta, c):
+        return A.StrLit(str(c[0])[1:-1], pos=_tpos(c[0]))
+
+    def exprlist(self, c):
+        return list(c)
+
+    @v_args(meta=True)
+    def paren(self, meta, c):
+        items = c[0]
+        if len(items) == 1:
+            return items[0]
+        return A.Tuple(items, pos=_pos(meta))
+
+    @v_args(meta=True)
+    def type_call(self, meta, c):
+        return A.TypeCall(c[0], _list(c[1]), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def call(self, meta, c):
+        return A.Call(c[0], _list(c[1]), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def index(self, meta, c):
+        return A.Index(c[0], c[1], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def range(self, meta, c):
+        return A.Range(c[0], c[1], pos=_pos(meta))
+
+    def type_name(self, c):
+        return str(c[0])
+
+    def _bin(op):  # noqa: N805 - a factory used in the class body
+        @v_args(meta=True)
+        def build(self, meta, c):
+            return A.BinOp(op, c[0], c[1], pos=_pos(meta))
+        return build
+
+    add, sub, mul, div, mod = _bin("+"), _bin("-"), _bin("*"), _bin("/"), _bin("mod")
+    intdiv, pow, repeat = _bin("div"), _bin("^"), _bin(":")
+    eq, ne, lt, le, gt, ge = _bin("=="), _bin("!="), _bin("<"), _bin("<="), _bin(">"), _bin(">=")
+    and_op, or_op = _bin("&&"), _bin("||")
+
+    @v_args(meta=True)
+    def pow_neg(self, meta, c):
+        return A.BinOp("^", c[0], A.UnOp("-", c[1], pos=c[1].pos), pos=_pos(meta))
+
+    def _un(op):  # noqa: N805
+        @v_args(meta=True)
+        def build(self, meta, c):
+            return A.UnOp(op, c[0], pos=_pos(meta))
+        return build
+
+    neg, pos, not_op = _un("-"), _un("+"), _un("!")
+
+    # ---- statements
+    @v_args(meta=True)
+    def start(self, meta, c):
+        return A.Program(list(c), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def expr_stmt(self, meta, c):
+        return A.ExprStmt(c[0], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def empty_stmt(self, meta, c):
+        return A.Empty(pos=_pos(meta))
+
+    @v_args(meta=True)
+    def declarator(self, meta, c):
+        return A.Declarator(str(c[0]), list(c[1:]), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def decl(self, meta, c):
+        typ, rest = c[0], c[1:]
+        value = rest[-1]
+        return A.Decl(typ, list(rest[:-1]), value, pos=_pos(meta))
+
+    @v_args(meta=True)
+    def assign(self, meta, c):
+        for t in c[0]:
+            _check_target(t)
+        return A.Assign(c[0], c[1], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def incr_stmt(self, meta, c):
+        _check_target(c[0])
+        return A.IncDec(c[0], 1, pos=_pos(meta))
+
+    @v_args(meta=True)
+    def decr_stmt(self, meta, c):
+        _check_target(c[0])
+        return A.IncDec(c[0], -1, pos=_pos(meta))
+
+    @v_args(meta=True)
+    def break_stmt(self, meta, c):
+        return A.Break(pos=_pos(meta))
+
+    @v_args(meta=True)
+    def continue_stmt(self, meta, c):
+        return A.Continue(pos=_pos(meta))
+
+    @v_args(meta=True)
+    def return_stmt(self, meta, c):
+        return A.Return(_list(c[0]), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def kill_stmt(self, meta, c):
+        return A.Kill(c[0], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def export_stmt(self, meta, c):
+        return A.Export(c[0], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def keepring_stmt(self, meta, c):
+        return A.Keepring(c[0], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def setring_stmt(self, meta, c):
+        return A.Setring(c[0], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def lib_stmt(self, meta, c):
+        return A.Lib(str(c[0])[1:-1], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def quit_stmt(self, meta, c):
+        return A.Quit(pos=_pos(meta))
+
+    @v_args(meta=True)
+    def help_stmt(self, meta, c):
+        return A.Help(c[0], pos=_pos(meta))
+
+    def help_topic(self, c):
+        t = str(c[0])
+        return t[1:-1] if t.startswith('"') else t
+
+    @v_args(meta=True)
+    def block(self, meta, c):
+        return A.Block(list(c), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def if_stmt(self, meta, c):
+        cond, then, orelse = c[0], c[1], c[2] if len(c) > 2 else None
+        if isinstance(orelse, A.Block):
+            orelse = orelse.body
+        elif orelse is not None:
+            orelse = [orelse]
+        return A.If(cond, then.body, orelse, pos=_pos(meta))
+
+    @v_args(meta=True)
+    def for_stmt(self, meta, c):
+        init, cond, step, body = c
+        return A.For(init, cond, step, body.body, pos=_pos(meta))
+
+    @v_args(meta=True)
+    def while_stmt(self, meta, c):
+        return A.While(c[0], c[1].body, pos=_pos(meta))
+
+    @v_args(meta=True)
+    def proc_def(self, meta, c):
+        static, name, params, doc, body = c
+        return A.ProcDef(str(name), params, str(doc)[1:-1] if doc is not None else None, body.body,
+                         static is not None, body.pos.line, pos=_pos(meta))
+
+    def params(self, c):
+        return [p for p in c if p is not None]
+
+    @v_args(meta=True)
+    def param(self, meta, c):
+        if len(c) == 2:
+            return A.Param(c[0], str(c[1]), pos=_pos(meta))
+        return A.Param(None, str(c[0]), pos=_pos(meta))
+
+
+def _check_target(t: A.Expr) -> None:
+    """Assignment targets are names, possibly indexed (``I[2]``, ``D[i,j]``, ``L[2][1]``)."""
+    base = t
+    while isinstance(base, A.Index):
+        base = base.base
+    if not isinstance(base, A.Name):
+        raise MechSyntaxError("cannot assign to this expression", t.pos, underline=True)
+
+
+@lru_cache(maxsize=1)
+def _parser() -> Lark:
+    return Lark(GRAMMAR.read_text(), parser="lalr", propagate_positions=True, cache=True,
+                maybe_placeholders=True)
+
+
+def parse(text: str, source: Optional[Source] = None) -> A.Program:
+    """The program tree of ``text``; raises :class:`MechSyntaxError` located in ``source``."""
+    source = source or Source("<string>", text)
+    try:
+        return _Build().transform(_parser().parse(text))
+    except VisitError as e:
+        err = e.orig_exc
+        if isinstance(err, MechSyntaxError):
+            err.source = source
+            raise err from None
+        raise
+    except MechSyntaxError as e:
+        e.source = source
+        raise
+    except UnexpectedInput as e:
+        raise _syntax_error(e, text, source) from None
+
+
+def _describe(term: str) -> str:
+    names = {"IDENT": "an identifier", "NUMBER": "a number", "RATIONAL": "a number", "MONOM": "a monomial",
+             "STRING": "a string", "HASH": "'#'", "$END": "end of input"}
+    if term in names:
+        return names[term]
+    for t in _parser().terminals:
+        if t.name == term:
+            return f"'{t.pattern.value}'"
+    return term
+
+
+def _syntax_error(e: UnexpectedInput, text: str, source: Source) -> MechSyntaxError:
+    if isinstance(e, UnexpectedCharacters):
+        ch = text[e.pos_in_stream] if e.pos_in_stream < len(text) else ""
+        if ch == '"':
+            msg = "unterminated string"
+        elif text.startswith("/*", e.pos_in_stream):
+            msg = "unterminated comment"
+        else:
+            msg = f"unexpected character '{ch}'"
+        return MechSyntaxError(msg, A.Pos(e.line, e.column, e.line, e.column + 1), source)
+    expected = set(getattr(e, "expected", ()) or ())
+    tok = getattr(e, "token", None)
+    at_end = isinstance(e, UnexpectedEOF) or tok is None or tok.type == "$END"
+    if at_end:
+        line, col = _after_previous(text, len(text))
+        unclosed = _unclosed(text)
+        if unclosed:
+            msg = f"unexpected end of input: missing '{unclosed}'"
+        elif "SEMICOLON" in expected:
+            msg = "expected ';'"
+        else:
+            msg = "unexpected end of input: incomplete statement"
+        return MechSyntaxError(msg, A.Pos(line, col, line, col + 1), source)
+    if "SEMICOLON" in expected and _starts_new_line(text, tok):
+        line, col = _after_previous(text, tok.start_pos)
+        return MechSyntaxError("expected ';'", A.Pos(line, col, line, col + 1), source)
+    shown = tok.value if tok.type != "STRING" else "string"
+    msg = f"unexpected '{shown}'"
+    if expected & {"IDENT", "NUMBER"}:
+        msg += ", expected an expression"
+    elif len(expected) == 1:
+        msg += f", expected {_describe(next(iter(expected)))}"
+    return MechSyntaxError(msg, _tpos(tok), source, underline=True)
+
+
+def _unclosed(text: str) -> str:
+    """The closing bracket the end of ``text`` is missing ('' when balanced)."""
+    stack = []
+    pairs = {"(": ")", "[": "]", "{": "}"}
+    for kind, start, _ in _scan(text):
+        ch = text[start] if kind == "char" else ""
+        if ch in pairs:
+            stack.append(pairs[ch])
+        elif ch in ")]}" and stack and stack[-1] == ch:
+            stack.pop()
+    return stack[-1] if stack else ""
+
+
+def _starts_new_line(text: str, tok: Token) -> bool:
+    before = text[:tok.start_pos].rstrip(" \t")
+    return before.endswith("\n") or before == ""
+
+
+def _after_previous(text: str, offset: int) -> tuple[int, int]:
+    """Line and column just after the last significant character before ``offset``."""
+    k = _significant_end(text, offset)
+    line = text.count("\n", 0, k) + 1
+    col = k - (text.rfind("\n", 0, k) + 1) + 1
+    return line, col
+
+
+def _significant_end(text: str, offset: int) -> int:
+    """End of the last character before ``offset`` that is not blank or inside a comment."""
+    ends = [0]
+    for kind, start, end in _scan(text[:offset]):
+        if kind != "comment":
+            ends.append(end)
+    return ends[-1]
+
+
+def _scan(text: str):
+    """Significant lexical items of ``text``: ("string"|"comment"|"char", start, end)."""
+    i, n = 0, len(text)
+    while i < n:
+        c = text[i]
+        if c in " \t\r\n\f":
+            i += 1
+        elif text.startswith("//", i):
+            j = text.find("\n", i)
+            j = n if j < 0 else j
+            yield "comment", i, j
+            i = j
+        elif text.startswith("/*", i):
+            j = text.find("*/", i + 2)
+            j = n if j < 0 else j + 2
+            yield "comment", i, j
+            i = j
+        elif c == '"':
+            j = text.find('"', i + 1)
+            j = n if j < 0 else j + 1
+            yield "string", i, j
+            i = j
+        else:
+            yield "char", i, i + 1
+            i += 1
+
+
+def split_complete(text: str) -> tuple[int, bool]:
+    """``(end, open)``: the offset just after the last complete top-level statement of ``text``
+    and whether the text after it holds an unfinished statement (unclosed brackets, string or
+    comment, or significant text without its ``;``)."""
+    depth, boundary, pending, after_brace = 0, 0, False, False
+    for kind, start, end in _scan(text):
+        if kind == "comment":
+            if not text.startswith("*/", end - 2) and text.startswith("/*", start):
+                return boundary, True
+            continue
+        if kind == "string" and (end - start < 2 or text[end - 1] != '"'):
+            return boundary, True
+        if after_brace:
+            after_brace = False
+            if not text.startswith("else", start):
+                boundary, pending = prev_end, False
+        pending = True
+        ch = text[start] if kind == "char" else ""
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+            if ch == "}" and depth == 0:
+                after_brace, prev_end = True, end
+        elif ch == ";" and depth == 0:
+            boundary, pending = end, False
+    if after_brace:
+        return prev_end, False
+    return boundary, pending or depth > 0

@@ -1,0 +1,237 @@
+"""Singular 4.3.1's output format for every value of the language.
+
+:func:`render` is what an expression statement prints (``I;`` prints ``I[1]=...``, an unnamed
+ideal ``_[1]=...``), :func:`print_form` what ``print(...)`` prints, :func:`poly_str` a polynomial
+(short form ``3x2y+1/2y-7`` when every variable and parameter name is one letter, otherwise
+``3*xa^2*yb-1/2``; Z/p coefficients as symmetric representatives).
+"""
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from ..kernel import Poly, PolyRing
+from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, NoneValue, Number, Proc, Ring
+
+_short_cache: dict[int, tuple[PolyRing, bool]] = {}
+
+
+def field_params(field: Any) -> tuple[str, ...]:
+    """Names of the parameters of a coefficient field (empty for QQ and Z/p)."""
+    return tuple(getattr(field, "params", None) or getattr(field, "param_names", None) or ())
+
+
+def is_short(ring: PolyRing) -> bool:
+    """Whether Singular prints this ring's polynomials in short form (all names one letter)."""
+    hit = _short_cache.get(id(ring))
+    if hit is not None and hit[0] is ring:
+        return hit[1]
+    short = all(len(n) == 1 for n in ring.names) and all(len(n) == 1 for n in field_params(ring.field))
+    _short_cache[id(ring)] = (ring, short)
+    return short
+
+
+def coeff_str(field: Any, c: Any) -> str:
+    """A coefficient as Singular prints a number of this field."""
+    if field.characteristic:
+        sym = getattr(field, "symmetric", None)
+        if sym is not None and not field_params(field):
+            return str(sym(c))
+    custom = getattr(field, "singular_str", None)
+    if custom is not None:
+        return custom(c)
+    return str(c)
+
+
+def number_str(n: Number) -> str:
+    return coeff_str(n.ring.field, n.c)
+
+
+def _monomial(names: tuple[str, ...], e: tuple[int, ...], short: bool) -> str:
+    if short:
+        return "".join(n if k == 1 else f"{n}{k}" for n, k in zip(names, e) if k)
+    return "*".join(n if k == 1 else f"{n}^{k}" for n, k in zip(names, e) if k)
+
+
+def poly_str(p: Poly) -> str:
+    """A polynomial in Singular's format, terms from the largest down."""
+    if not p.terms:
+        return "0"
+    ring = p.ring
+    short = is_short(ring)
+    params = bool(field_params(ring.field))
+    field, names = ring.field, ring.names
+    out = []
+    for e, c in p.sorted_terms():
+        cs = coeff_str(field, c)
+        if not any(e):
+            s = cs
+        else:
+            mono = _monomial(names, e, short)
+            if cs == "1":
+                s = mono
+            elif cs == "-1":
+                s = "-" + mono
+            elif short and not params:
+                s = cs + mono
+            else:
+                s = f"{cs}*{mono}"
+        if out and not s.startswith("-"):
+            out.append("+")
+        out.append(s)
+    return "".join(out)
+
+
+def value_str(v: Any) -> str:
+    """A value on one line: Singular's ``string(v)``."""
+    if isinstance(v, bool):
+        return str(int(v))
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, str):
+        return v
+    if isinstance(v, Poly):
+        return poly_str(v)
+    if isinstance(v, Number):
+        return number_str(v)
+    if isinstance(v, Ideal):
+        return ",".join(poly_str(g) for g in v.gens)
+    if isinstance(v, Matrix):
+        return ",".join(poly_str(g) for g in v.entries)
+    if isinstance(v, Map):
+        return ",".join(poly_str(g) for g in v.images)
+    if isinstance(v, IntVec):
+        return ",".join(str(x) for x in v.values)
+    if isinstance(v, (List, ExprList)):
+        return ",".join(value_str(x) for x in v.items if x is not NONE)
+    if isinstance(v, Ring):
+        return f"({charstr(v)}),({','.join(v.names)}),({ordstr(v)})"
+    if isinstance(v, Proc):
+        return v.name
+    if isinstance(v, NoneValue):
+        return ""
+    return str(v)
+
+
+def render(v: Any, name: Optional[str] = None) -> str:
+    """What an expression statement prints for ``v`` (without the final newline); ``name`` is
+    the variable's name when the expression was one (``I;`` prints ``I[1]=...``)."""
+    if isinstance(v, Ideal):
+        n = name or "_"
+        return "\n".join(f"{n}[{i}]={poly_str(g)}" for i, g in enumerate(v.gens, 1))
+    if isinstance(v, Map):
+        n = name or "_"
+        return "\n".join(f"{n}[{i}]={poly_str(g)}" for i, g in enumerate(v.images, 1))
+    if isinstance(v, Matrix):
+        n = name or "_"
+        return "\n".join(f"{n}[{i},{j}]={poly_str(v.get(i, j))}"
+                         for i in range(1, v.nrows + 1) for j in range(1, v.ncols + 1))
+    if isinstance(v, List):
+        return _render_list(v, "")
+    if isinstance(v, Ring):
+        return ring_str(v)
+    if isinstance(v, Proc):
+        return proc_str(v)
+    if isinstance(v, ExprList):
+        return join_outputs([(render(x), isinstance(x, List)) for x in v.items])
+    return value_str(v)
+
+
+def join_outputs(parts: list[tuple[str, bool]]) -> str:
+    """Singular prints the values of ``a, b;`` side by side, separated by a blank, but a list
+    ends its line; ``parts`` holds (text, is_list) pairs."""
+    out = ""
+    for i, (text, _) in enumerate(parts):
+        if i:
+            out += "\n" if parts[i - 1][1] else " "
+        out += text
+    return out
+
+
+def _render_list(lst: List, indent: str) -> str:
+    if not lst.items:
+        return indent + "empty list"
+    lines = []
+    for i, x in enumerate(lst.items, 1):
+        if x is NONE:
+            continue
+        lines.append(f"{indent}[{i}]:")
+        sub = indent + "   "
+        if isinstance(x, List):
+            lines.append(_render_list(x, sub))
+        else:
+            lines.extend(sub + line for line in render(x).split("\n"))
+    return "\n".join(lines)
+
+
+def print_form(v: Any) -> str:
+    """What ``print(v)`` prints: matrices as aligned rows, ideals and intvecs as columns."""
+    if isinstance(v, Matrix):
+        return _matrix_rows([[poly_str(x) for x in row] for row in v.rows()])
+    if isinstance(v, Ideal):
+        return ",\n".join(poly_str(g) for g in v.gens)
+    if isinstance(v, IntVec):
+        return ",\n".join(str(x) for x in v.values) + " "
+    return render(v)
+
+
+def _matrix_rows(cells: list[list[str]]) -> str:
+    """Rows of ``print(M)``: every entry but the last followed by a comma, each column padded to
+    its widest such cell."""
+    if not cells or not cells[0]:
+        return ""
+    nrows, ncols = len(cells), len(cells[0])
+    texts = [[s + ("" if (i, j) == (nrows - 1, ncols - 1) else ",") for j, s in enumerate(row)]
+             for i, row in enumerate(cells)]
+    widths = [max(len(row[j]) for row in texts) for j in range(ncols)]
+    return "\n".join("".join(t.ljust(w) for t, w in zip(row, widths)) for row in texts)
+
+
+# ---------------------------------------------------------------- rings
+def charstr(r: Ring) -> str:
+    """Singular's ``charstr``: ``QQ``, ``ZZ/32003`` or ``0,a,b`` with parameters."""
+    p = r.characteristic
+    if r.params:
+        return ",".join([str(p)] + list(r.params))
+    return f"ZZ/{p}" if p else "QQ"
+
+
+def ordstr(r: Ring) -> str:
+    """Singular's ``ordstr``: ``dp(4),dp(2),C``."""
+    parts = []
+    for b in r.blocks:
+        if b.kind in ("c", "C"):
+            parts.append(b.kind)
+        elif b.weights:
+            parts.append(f"{b.kind}({','.join(str(w) for w in b.weights)})")
+        else:
+            parts.append(f"{b.kind}({b.size})")
+    return ",".join(parts)
+
+
+def ring_str(r: Ring) -> str:
+    """What ``r;`` prints: coefficients, number of variables, the ordering blocks."""
+    p = r.characteristic
+    coeffs = f"ZZ/{p}" if p else "QQ"
+    if r.params:
+        coeffs += f"({', '.join(r.params)})"
+    lines = [f"// coefficients: {coeffs}", f"// number of vars : {len(r.names)}"]
+    start = 0
+    for k, b in enumerate(r.blocks, 1):
+        lines.append(f"//        block {k:3d} : ordering {b.kind}")
+        if b.kind in ("c", "C"):
+            continue
+        size = b.size
+        lines.append("//                  : names    " + " ".join(r.names[start:start + size]))
+        if b.kind == "M":
+            for i in range(size):
+                row = b.weights[i * size:(i + 1) * size]
+                lines.append("//                  : weights  " + " ".join(str(w) for w in row))
+        elif b.weights:
+            lines.append("//                  : weights  " + " ".join(str(w) for w in b.weights))
+        if b.kind != "a":
+            start += size
+    return "\n".join(lines)
+
+
+def proc_str(p: Proc) -> str:
+    return f"// libname  : {p.lib}\n// procname : {p.name}\n// type     : singular"

@@ -1,0 +1,180 @@
+"""Reading a ring declaration ``ring r = CHAR, VARS, ORDERING;`` into a :class:`~mech.dsl.values.Ring`.
+
+The three parts arrive as expression trees and are read as ring data, not evaluated as values:
+``CHAR`` is ``0``, a prime, or ``(0,a,b)`` / ``(p,a)`` with parameters; ``VARS`` is a name,
+``x(1..5)``, or a parenthesized list of those; ``ORDERING`` is ``dp``, ``wp(1,2,3)``,
+``(dp(4),lp(2),C)``, ``(a(1,1),dp)``, ``M(1,1,0,-1)`` ...  Sizes, weights and index ranges are
+int expressions, evaluated by the caller's ``evaluate``.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable
+
+from ..kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from . import ast as A
+from .errors import MechError, MechRuntimeError
+from .values import IntVec, OrderBlock, Ring
+
+Evaluate = Callable[[A.Expr], Any]
+
+ORDERINGS = {"lp", "dp", "Dp", "wp", "Wp", "ls", "ds", "Ds", "ws", "Ws", "a", "M", "c", "C"}
+WEIGHTED = {"wp", "Wp", "ws", "Ws", "a"}
+
+_ring_cache: dict[tuple, PolyRing] = {}
+
+
+def _ints(v: Any, what: str) -> list[int]:
+    if isinstance(v, bool):
+        v = int(v)
+    if isinstance(v, int):
+        return [v]
+    if isinstance(v, IntVec):
+        return list(v.values)
+    raise MechRuntimeError(f"{what} must be an int or an intvec")
+
+
+def _int_args(args: list[A.Expr], evaluate: Evaluate, what: str) -> list[int]:
+    out: list[int] = []
+    for a in args:
+        out.extend(_ints(evaluate(a), what))
+    return out
+
+
+def default_ring() -> Ring:
+    """``ring r;``: Singular's default ring ``32003, (x,y,z), dp``."""
+    return make_ring(32003, (), ["x", "y", "z"], [OrderBlock("dp", 3), OrderBlock("C")])
+
+
+def build_ring(items: list[A.Expr], evaluate: Evaluate) -> Ring:
+    if len(items) != 3:
+        raise MechRuntimeError("a ring is declared as ring r = characteristic, (variables), ordering;")
+    char, params = _at(items[0], lambda: _characteristic(items[0], evaluate))
+    names = _at(items[1], lambda: _names(items[1], evaluate))
+    blocks = _at(items[2], lambda: _ordering(items[2], evaluate, len(names)))
+    return _at(items[0], lambda: make_ring(char, params, names, blocks))
+
+
+def _at(node: A.Expr, build: Callable[[], Any]) -> Any:
+    """Run ``build``, locating its errors at ``node`` (the part of the declaration they concern)."""
+    try:
+        return build()
+    except MechError as e:
+        raise e.locate(node.pos, None, True)
+
+
+def _characteristic(node: A.Expr, evaluate: Evaluate) -> tuple[int, tuple[str, ...]]:
+    params: list[str] = []
+    if isinstance(node, A.Tuple):
+        params = _names(A.Tuple(node.items[1:], pos=node.pos), evaluate)
+        node = node.items[0]
+    if isinstance(node, A.Name) and node.id in ("real", "complex"):
+        raise MechRuntimeError(f"{node.id} coefficients are not supported (use 0 for the rationals)")
+    v = evaluate(node)
+    if isinstance(v, bool) or not isinstance(v, int):
+        raise MechRuntimeError("the characteristic must be 0 or a prime number")
+    return v, tuple(params)
+
+
+def _names(node: A.Expr, evaluate: Evaluate) -> list[str]:
+    items = node.items if isinstance(node, A.Tuple) else [node]
+    names: list[str] = []
+    for it in items:
+        if isinstance(it, A.Name):
+            names.append(it.id)
+        elif isinstance(it, A.Call) and isinstance(it.func, A.Name):
+            for i in _int_args(it.args, evaluate, "a variable index"):
+                names.append(f"{it.func.id}({i})")
+        else:
+            raise MechRuntimeError("expected a variable name such as x or x(1..5)")
+    if len(set(names)) != len(names):
+        raise MechRuntimeError("variable names must be distinct")
+    if not names:
+        raise MechRuntimeError("a ring needs at least one variable")
+    return names
+
+
+def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
+    items = node.items if isinstance(node, A.Tuple) else [node]
+    blocks: list[OrderBlock] = []
+    covered = 0
+    for k, it in enumerate(items):
+        if isinstance(it, A.Name):
+            kind, args = it.id, None
+        elif isinstance(it, A.Call) and isinstance(it.func, A.Name):
+            kind, args = it.func.id, _int_args(it.args, evaluate, "an ordering's size or weights")
+        else:
+            raise MechRuntimeError("expected an ordering such as dp, wp(1,2,3) or (dp(2),lp(1))")
+        if kind not in ORDERINGS:
+            raise MechRuntimeError(f"unknown ordering '{kind}' (known: lp dp Dp wp Wp ls ds Ds ws Ws a M c C)")
+        if kind in ("c", "C"):
+            if args:
+                raise MechRuntimeError(f"the module ordering {kind} takes no arguments")
+            blocks.append(OrderBlock(kind))
+            continue
+        if kind in WEIGHTED:
+            if not args:
+                raise MechRuntimeError(f"the ordering {kind} needs weights, e.g. {kind}(1,2,3)")
+            blocks.append(OrderBlock(kind, len(args), tuple(args)))
+        elif kind == "M":
+            n = math.isqrt(len(args or []))
+            if not args or n * n != len(args):
+                raise MechRuntimeError("a matrix ordering M(...) needs n*n entries")
+            blocks.append(OrderBlock("M", n, tuple(args)))
+        else:
+            if args is None:
+                rest = nvars - covered
+                if any(isinstance(x, A.Call) or (isinstance(x, A.Name) and x.id not in ("c", "C"))
+                       for x in items[k + 1:]):
+                    raise MechRuntimeError(f"the ordering {kind} without a size must be the last block")
+                size = rest
+            elif len(args) != 1:
+                raise MechRuntimeError(f"the ordering {kind} takes one size, e.g. {kind}(3)")
+            else:
+                size = args[0]
+            if size <= 0:
+                raise MechRuntimeError(f"the ordering {kind} must cover at least one variable")
+            blocks.append(OrderBlock(kind, size))
+        if kind != "a":
+            covered += blocks[-1].size
+    if covered != nvars:
+        raise MechRuntimeError(f"the ordering covers {covered} variables, the ring has {nvars}")
+    if not any(b.kind in ("c", "C") for b in blocks):
+        blocks.append(OrderBlock("C"))
+    return blocks
+
+
+def make_ring(char: int, params: tuple[str, ...] | list[str], names: list[str], blocks: list[OrderBlock]) -> Ring:
+    """A ring from its data; equal data share one kernel ring (so their values mix)."""
+    params = tuple(params)
+    key = (char, params, tuple(names), tuple(blocks))
+    poly = _ring_cache.get(key)
+    if poly is None:
+        field = _field(char, params)
+        kblocks = [Block(b.kind, b.size, b.weights) for b in blocks if b.kind not in ("c", "C")]
+        try:
+            order = MonomialOrder(kblocks, len(names))
+        except ValueError as e:
+            raise MechRuntimeError(str(e)) from None
+        poly = _ring_cache[key] = PolyRing(field, names, order)
+    return Ring(poly, params, tuple(blocks))
+
+
+def _field(char: int, params: tuple[str, ...]) -> Any:
+    if char == 0:
+        base = QQ
+    else:
+        try:
+            base = GF(char)
+        except ValueError as e:
+            raise MechRuntimeError(str(e)) from None
+    if not params:
+        return base
+    try:
+        from ..kernel import ratfunc
+    except ImportError:
+        ratfunc = None
+    make = getattr(ratfunc, "parameter_field", None) if ratfunc else None
+    if make is None:
+        raise MechRuntimeError("rings with parameters such as (0,a,b) are not supported yet")
+    return make(base, params)

@@ -1,0 +1,432 @@
+"""Values of the mech language and Singular's conversions between them.
+
+Ring-independent values are plain Python objects (``int``, ``str``) or :class:`IntVec`,
+:class:`List` (of such), :class:`Proc`, :class:`Ring`.  Ring-dependent values refer to a kernel
+:class:`~mech.kernel.PolyRing`: polynomials are kernel :class:`~mech.kernel.Poly` objects, the rest
+are :class:`Number`, :class:`Ideal`, :class:`Matrix`, :class:`Map` and lists containing them.
+Values are immutable: assigning into ``I[2]`` builds a new ideal and rebinds the variable.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Iterable, Optional, Sequence
+
+from ..kernel import Poly, PolyRing
+from .errors import MechRuntimeError, MechTypeError
+
+
+class NoneValue:
+    """Singular's ``none``: what a procedure without ``return`` value gives."""
+
+    _instance: Optional["NoneValue"] = None
+
+    def __new__(cls) -> "NoneValue":
+        if cls._instance is None:
+            cls._instance = super().__new__(cls)
+        return cls._instance
+
+    def __repr__(self) -> str:
+        return "NONE"
+
+
+NONE = NoneValue()
+
+
+class Number:
+    """An element of the coefficient field of a ring (Singular's ``number``)."""
+
+    __slots__ = ("ring", "c")
+
+    def __init__(self, ring: PolyRing, c: Any) -> None:
+        self.ring = ring
+        self.c = c
+
+    def is_zero(self) -> bool:
+        return self.c == 0
+
+    def to_poly(self) -> Poly:
+        return self.ring.const(self.c)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Number) and other.ring == self.ring and other.c == self.c
+
+    def __hash__(self) -> int:
+        return hash(self.c)
+
+    def __repr__(self) -> str:
+        return f"Number({self.c})"
+
+
+class Ideal:
+    """An ideal given by generators (at least one, possibly zero); ``is_std`` marks a standard basis."""
+
+    __slots__ = ("ring", "gens", "is_std")
+
+    def __init__(self, ring: PolyRing, gens: Iterable[Poly], is_std: bool = False) -> None:
+        self.ring = ring
+        self.gens: tuple[Poly, ...] = tuple(gens) or (ring.zero(),)
+        self.is_std = is_std
+
+    def nonzero(self) -> list[Poly]:
+        return [g for g in self.gens if not g.is_zero()]
+
+    def to_sympy(self) -> list:
+        """The generators as sympy expressions."""
+        from .convert import poly_to_sympy
+        return [poly_to_sympy(g) for g in self.gens]
+
+    def __len__(self) -> int:
+        return len(self.gens)
+
+    def __iter__(self):
+        return iter(self.gens)
+
+    def __getitem__(self, i: int) -> Poly:
+        return self.gens[i]
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Ideal) and other.gens == self.gens
+
+    def __repr__(self) -> str:
+        return f"Ideal({', '.join(g.to_str() for g in self.gens)})"
+
+
+class Matrix:
+    """A matrix of polynomials, entries row by row."""
+
+    __slots__ = ("ring", "nrows", "ncols", "entries")
+
+    def __init__(self, ring: PolyRing, nrows: int, ncols: int, entries: Optional[Sequence[Poly]] = None) -> None:
+        self.ring = ring
+        self.nrows = nrows
+        self.ncols = ncols
+        n = nrows * ncols
+        ents = list(entries or ())[:n]
+        ents += [ring.zero()] * (n - len(ents))
+        self.entries: tuple[Poly, ...] = tuple(ents)
+
+    def get(self, i: int, j: int) -> Poly:
+        """Entry in row ``i``, column ``j`` (1-based)."""
+        return self.entries[(i - 1) * self.ncols + (j - 1)]
+
+    def rows(self) -> list[list[Poly]]:
+        return [list(self.entries[i * self.ncols:(i + 1) * self.ncols]) for i in range(self.nrows)]
+
+    def __eq__(self, other: object) -> bool:
+        return (isinstance(other, Matrix) and (other.nrows, other.ncols) == (self.nrows, self.ncols)
+                and other.entries == self.entries)
+
+    def __repr__(self) -> str:
+        return f"Matrix({self.nrows}x{self.ncols})"
+
+
+class IntVec:
+    """A vector of integers (Singular's ``intvec``)."""
+
+    __slots__ = ("values",)
+
+    def __init__(self, values: Iterable[int]) -> None:
+        self.values: tuple[int, ...] = tuple(values) or (0,)
+
+    def __len__(self) -> int:
+        return len(self.values)
+
+    def __iter__(self):
+        return iter(self.values)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, IntVec) and other.values == self.values
+
+    def __repr__(self) -> str:
+        return f"IntVec({list(self.values)})"
+
+
+class List:
+    """A Singular list; unset entries (after ``L[5] = ...`` on a shorter list) hold :data:`NONE`."""
+
+    __slots__ = ("items",)
+
+    def __init__(self, items: Iterable[Any] = ()) -> None:
+        self.items: tuple[Any, ...] = tuple(items)
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+    def __iter__(self):
+        return iter(self.items)
+
+    def __getitem__(self, i: int) -> Any:
+        return self.items[i]
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, List) and other.items == self.items
+
+    def __repr__(self) -> str:
+        return f"List({list(self.items)!r})"
+
+
+class ExprList:
+    """The value of a comma expression or of ``return(a, b)``: several values side by side."""
+
+    __slots__ = ("items",)
+
+    def __init__(self, items: Iterable[Any]) -> None:
+        self.items: tuple[Any, ...] = tuple(items)
+
+    def __repr__(self) -> str:
+        return f"ExprList({list(self.items)!r})"
+
+
+@dataclass(frozen=True)
+class OrderBlock:
+    """One block of a ring's ordering as written (``dp(4)``, ``wp(1,2)``, ``a(1,1)``, ``C``)."""
+
+    kind: str
+    size: int = 0
+    weights: tuple[int, ...] = ()
+
+
+@dataclass(eq=False)
+class Ring:
+    """A ring of the language: a kernel ring plus what Singular prints about it, and the
+    ring-dependent variables declared at top level while it was the basering."""
+
+    poly: PolyRing
+    params: tuple[str, ...]
+    blocks: tuple[OrderBlock, ...]
+    name: str = ""
+    objects: dict = field(default_factory=dict)
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return self.poly.names
+
+    @property
+    def characteristic(self) -> int:
+        return self.poly.field.characteristic
+
+    def var_index(self, name: str) -> Optional[int]:
+        idx = self.__dict__.get("_index")
+        if idx is None:
+            idx = self.__dict__["_index"] = {n: i for i, n in enumerate(self.poly.names)}
+        return idx.get(name)
+
+    def __repr__(self) -> str:
+        return f"Ring({self.name or '?'}: {self.poly!r})"
+
+
+@dataclass(eq=False)
+class Map:
+    """A ring map ``source -> target`` given by the images of the source's variables."""
+
+    source: Ring
+    ring: PolyRing
+    images: tuple[Poly, ...]
+
+
+@dataclass(eq=False)
+class Proc:
+    """A procedure: parameters (type or None, name), body, its doc string and source."""
+
+    name: str
+    params: Optional[list]
+    body: list
+    doc: Optional[str]
+    source: Any
+    lib: str = ""
+    body_line: int = 0
+
+
+TYPE_NAMES = {int: "int", str: "string", Number: "number", Poly: "poly", Ideal: "ideal", Matrix: "matrix",
+              IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none"}
+
+
+def typeof(v: Any) -> str:
+    """Singular's type name of a value."""
+    t = TYPE_NAMES.get(type(v))
+    if t is not None:
+        return t
+    if isinstance(v, bool):
+        return "int"
+    if isinstance(v, ExprList):
+        return "list"
+    return type(v).__name__
+
+
+def ring_of(v: Any) -> Optional[PolyRing]:
+    """The kernel ring a value depends on (None for ring-independent values)."""
+    if isinstance(v, (Poly, Number, Ideal, Matrix, Map)):
+        return v.ring
+    if isinstance(v, (List, ExprList)):
+        for x in v.items:
+            r = ring_of(x)
+            if r is not None:
+                return r
+    return None
+
+
+def is_ring_dependent(v: Any) -> bool:
+    return ring_of(v) is not None
+
+
+# ---------------------------------------------------------------- conversions
+def _need_ring(ring: Optional[PolyRing], what: str) -> PolyRing:
+    if ring is None:
+        raise MechRuntimeError(f"no ring active: a {what} needs a basering (declare one with ring r = ...;)")
+    return ring
+
+
+def _cannot(v: Any, target: str) -> MechTypeError:
+    return MechTypeError(f"cannot convert {typeof(v)} to {target}")
+
+
+def _check_ring(v: Any, ring: PolyRing) -> None:
+    if v.ring is not ring and v.ring != ring:
+        raise MechRuntimeError(f"{typeof(v)} of another ring (use fetch or imap to bring it into the basering)")
+
+
+def to_int(v: Any) -> int:
+    if isinstance(v, int):
+        return int(v)
+    if isinstance(v, Number):
+        raise MechTypeError("cannot convert number to int (for integer division use div, e.g. 7 div 2)")
+    raise _cannot(v, "int")
+
+
+def to_number(v: Any, ring: Optional[PolyRing]) -> Number:
+    if isinstance(v, Number):
+        _check_ring(v, _need_ring(ring, "number"))
+        return v
+    if isinstance(v, int):
+        r = _need_ring(ring, "number")
+        return Number(r, r.field(int(v)))
+    if isinstance(v, Poly) and v.is_constant():
+        _check_ring(v, _need_ring(ring, "number"))
+        return Number(v.ring, v.coeff_of(v.ring.zero_exp))
+    raise _cannot(v, "number")
+
+
+def to_poly(v: Any, ring: Optional[PolyRing]) -> Poly:
+    if isinstance(v, Poly):
+        _check_ring(v, _need_ring(ring, "poly"))
+        return v
+    if isinstance(v, Number):
+        _check_ring(v, _need_ring(ring, "poly"))
+        return v.to_poly()
+    if isinstance(v, int):
+        return _need_ring(ring, "poly").const(int(v))
+    raise _cannot(v, "poly")
+
+
+def to_ideal(v: Any, ring: Optional[PolyRing]) -> Ideal:
+    ring = _need_ring(ring, "ideal")
+    if isinstance(v, Ideal):
+        _check_ring(v, ring)
+        return v
+    if isinstance(v, (ExprList, List)):
+        gens: list[Poly] = []
+        for x in v.items:
+            if isinstance(x, (Ideal, Matrix)):
+                gens.extend(to_ideal(x, ring).gens)
+            else:
+                gens.append(to_poly(x, ring))
+        return Ideal(ring, gens)
+    if isinstance(v, Matrix):
+        _check_ring(v, ring)
+        return Ideal(ring, v.entries)
+    return Ideal(ring, [to_poly(v, ring)])
+
+
+def to_matrix(v: Any, ring: Optional[PolyRing], nrows: int = 0, ncols: int = 0) -> Matrix:
+    """A matrix from a matrix, ideal (one row), polynomial or list of entries; with dimensions
+    given, entries fill row by row (missing ones are zero)."""
+    ring = _need_ring(ring, "matrix")
+    if isinstance(v, Matrix):
+        _check_ring(v, ring)
+        if not nrows or (nrows, ncols) == (v.nrows, v.ncols):
+            return v
+        return Matrix(ring, nrows, ncols, [v.get(i, j) if i <= v.nrows and j <= v.ncols else ring.zero()
+                                           for i in range(1, nrows + 1) for j in range(1, ncols + 1)])
+    if isinstance(v, (ExprList, List)):
+        entries: list[Poly] = []
+        for x in v.items:
+            entries.extend(to_matrix(x, ring).entries if isinstance(x, Matrix) else to_ideal(x, ring).gens)
+    else:
+        entries = list(to_ideal(v, ring).gens)
+    if not nrows:
+        return Matrix(ring, 1, len(entries), entries)
+    if len(entries) > nrows * ncols:
+        raise MechRuntimeError(f"too many entries ({len(entries)}) for a {nrows} x {ncols} matrix")
+    return Matrix(ring, nrows, ncols, entries)
+
+
+def to_intvec(v: Any) -> IntVec:
+    if isinstance(v, IntVec):
+        return v
+    if isinstance(v, int):
+        return IntVec([int(v)])
+    if isinstance(v, (ExprList, List)):
+        out: list[int] = []
+        for x in v.items:
+            out.extend(to_intvec(x).values)
+        return IntVec(out)
+    raise _cannot(v, "intvec")
+
+
+def to_list(v: Any) -> List:
+    if isinstance(v, List):
+        return v
+    if isinstance(v, ExprList):
+        return List(v.items)
+    return List([v])
+
+
+def to_string(v: Any) -> str:
+    if isinstance(v, str):
+        return v
+    if isinstance(v, ExprList):
+        return "".join(to_string(x) for x in v.items)
+    raise _cannot(v, "string")
+
+
+def convert(v: Any, typ: str, ring: Optional[PolyRing]) -> Any:
+    """``v`` as a value of the declared type ``typ`` (``def`` keeps it as it is)."""
+    if typ == "def":
+        return List(v.items) if isinstance(v, ExprList) else v
+    if typ in ("int", "bigint"):
+        return to_int(_single(v, typ))
+    if typ == "number":
+        return to_number(_single(v, typ), ring)
+    if typ == "poly":
+        return to_poly(_single(v, typ), ring)
+    if typ == "ideal":
+        return to_ideal(v, ring)
+    if typ == "matrix":
+        return to_matrix(v, ring)
+    if typ == "intvec":
+        return to_intvec(v)
+    if typ == "list":
+        return to_list(v)
+    if typ == "string":
+        return to_string(v)
+    if typ == "ring":
+        if isinstance(_single(v, typ), Ring):
+            return _single(v, typ)
+        raise _cannot(v, "ring")
+    if typ == "proc":
+        if isinstance(_single(v, typ), Proc):
+            return _single(v, typ)
+        raise _cannot(v, "proc")
+    if typ == "map":
+        if isinstance(_single(v, typ), Map):
+            return _single(v, typ)
+        raise _cannot(v, "map")
+    raise MechTypeError(f"type '{typ}' is not supported yet")
+
+
+def _single(v: Any, typ: str) -> Any:
+    if isinstance(v, ExprList):
+        if len(v.items) == 1:
+            return v.items[0]
+        raise MechTypeError(f"cannot assign {len(v.items)} values to one {typ}")
+    return v

@@ -1,0 +1,136 @@
+"""Multivariate factorization, gcd and squarefree parts over QQ and Z/p through python-flint.
+
+Polynomials travel to flint's ``fmpq_mpoly`` / ``nmod_mpoly`` as exponent dictionaries (the
+variables keep their positions; flint's own term order does not matter) and come back as
+:class:`Poly` of the original ring.  Other coefficient fields raise ``NotImplementedError``.
+
+Normalization (the convention of :func:`normalize`, used for every factor returned here):
+over QQ a polynomial is scaled to an integer primitive one whose leading coefficient in the
+ring's ordering is positive; over Z/p it is made monic.  ``factorize`` returns the unit
+separately, so ``f == unit * prod(g**m)``.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import flint
+
+from .coeffs import PrimeField, RationalField
+from .poly import Poly, PolyRing
+
+
+def _ctx(ring: PolyRing) -> Any:
+    names = tuple(f"x{i}" for i in range(ring.nvars)) or ("x0",)
+    field = ring.field
+    if isinstance(field, RationalField):
+        return flint.fmpq_mpoly_ctx.get(names)
+    if isinstance(field, PrimeField):
+        return flint.nmod_mpoly_ctx.get(names, modulus=field.characteristic)
+    raise NotImplementedError(f"factorization over {field!r} is not available")
+
+
+def to_flint(f: Poly) -> Any:
+    """``f`` as a flint multivariate polynomial (variables by position)."""
+    ctx = _ctx(f.ring)
+    if f.ring.nvars == 0:
+        return ctx.from_dict({(0,): c for c in f.terms.values()})
+    return ctx.from_dict(f.terms)
+
+
+def from_flint(g: Any, ring: PolyRing) -> Poly:
+    """The flint polynomial ``g`` (made by :func:`to_flint` for ``ring``) as a :class:`Poly`."""
+    field = ring.field
+    terms = g.to_dict()
+    if ring.nvars == 0:
+        terms = {(): c for c in terms.values()}
+    if isinstance(field, RationalField):
+        return Poly(ring, {tuple(map(int, e)): c for e, c in terms.items()})
+    return Poly(ring, {tuple(map(int, e)): field(int(c)) for e, c in terms.items()})
+
+
+def normalize(f: Poly) -> Poly:
+    """Over QQ the integer primitive multiple with positive leading coefficient; over Z/p
+    the monic multiple; zero stays zero."""
+    if f.is_zero():
+        return f
+    if f.ring.field.characteristic:
+        return f.monic()
+    den, num = 1, 0
+    for c in f.terms.values():
+        q = int(c.q)
+        den = den * q // math.gcd(den, q)
+    for c in f.terms.values():
+        num = math.gcd(num, int(c.p) * (den // int(c.q)))
+    scale = flint.fmpq(den, num)
+    if f.lc() * scale < 0:
+        scale = -scale
+    return f * scale
+
+
+def factorize(f: Poly) -> tuple[Any, list[tuple[Poly, int]]]:
+    """The factorization ``f = unit * prod(g**m)`` into irreducible factors ``g``.
+
+    Returns ``(unit, [(g, m), ...])`` with ``unit`` a field element and each ``g``
+    normalized by :func:`normalize` (over QQ integer primitive with positive leading
+    coefficient in the ring's ordering; over Z/p monic).  Singular's ``factorize`` lists the
+    unit first and the same factors up to sign: its signs come from factory's internals
+    (e.g. ``-l1+l2-l3``) and are not reproduced.  Factors are sorted by multiplicity, then
+    by increasing leading monomial.  A constant ``f`` gives ``(f, [])``.
+    """
+    ring = f.ring
+    if f.is_constant():
+        return (f.lc() if not f.is_zero() else ring.field.zero), []
+    unit, facs = to_flint(f).factor()
+    out = []
+    for g, m in facs:
+        p = from_flint(g, ring)
+        q = normalize(p)
+        out.append((q, int(m)))
+    prod = ring.one()
+    for q, m in out:
+        prod = prod * q ** m
+    unit = f.lc() / prod.lc()
+    key = ring.order.key
+    out.sort(key=lambda t: (t[1], key(t[0].lm()), len(t[0])))
+    return unit, out
+
+
+def irreducible_factors(f: Poly) -> list[Poly]:
+    """The distinct non-constant irreducible factors of ``f``, normalized."""
+    if f.is_constant():
+        return []
+    return [g for g, _ in factorize(f)[1]]
+
+
+def squarefree_part(f: Poly) -> Poly:
+    """The product of the distinct irreducible factors of ``f``, normalized (a constant
+    ``f`` gives 1, zero gives zero)."""
+    if f.is_zero():
+        return f
+    if f.is_constant():
+        return f.ring.one()
+    _, facs = to_flint(f).factor_squarefree()
+    result = f.ring.one()
+    for g, _m in facs:
+        result = result * from_flint(g, f.ring)
+    return normalize(result)
+
+
+def gcd(f: Poly, g: Poly) -> Poly:
+    """The greatest common divisor, normalized; ``gcd(0, 0) == 0``."""
+    if f.is_zero():
+        return normalize(g)
+    if g.is_zero():
+        return normalize(f)
+    return normalize(from_flint(to_flint(f).gcd(to_flint(g)), f.ring))
+
+
+def divide_exact(f: Poly, g: Poly) -> Poly:
+    """``f / g`` for a divisor ``g`` of ``f``; ``ValueError`` when ``g`` does not divide ``f``."""
+    if g.is_zero():
+        raise ZeroDivisionError("division by zero")
+    q, r = divmod(to_flint(f), to_flint(g))
+    if not r.is_zero():
+        raise ValueError("the division is not exact")
+    return from_flint(q, f.ring)

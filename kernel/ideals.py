@@ -1,0 +1,275 @@
+"""Operations on ideals: elimination, sums, products, powers, intersections, quotients,
+saturations, containment and equality, radicals.
+
+An ideal is a list of :class:`Poly` of one ring with a global ordering (pass ``ring=`` when
+the list may be empty).  Unless said otherwise a result is the reduced Gröbner basis in the
+input ring's ordering (``[]`` for the zero ideal, ``[1]`` for the unit ideal).  Auxiliary
+orderings and variables are built as new rings; polynomials move by remapping exponents.
+Everything is computed through :func:`groebner`, so a faster engine speeds all of it up.
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+from .dimension import independent_sets, krull_dim
+from .groebner import groebner, normal_form
+from .order import Block, Exp, MonomialOrder
+from .poly import Poly, PolyRing
+
+Ideal = Sequence[Poly]
+
+
+def ring_of(*ideals: Ideal, ring: PolyRing | None = None) -> PolyRing:
+    """The ring the ideals live in (``ring`` if given)."""
+    if ring is not None:
+        return ring
+    for ideal in ideals:
+        for p in ideal:
+            return p.ring
+    raise ValueError("the ring of an empty ideal must be given (ring=...)")
+
+
+def std(ideal: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """The reduced Gröbner basis of ``ideal``."""
+    return groebner([p for p in ideal if not p.is_zero()], ring_of(ideal, ring=ring))
+
+
+def is_unit(basis: Ideal) -> bool:
+    """Whether a Gröbner basis generates the unit ideal."""
+    return any(p.is_constant() and not p.is_zero() for p in basis)
+
+
+# --- auxiliary rings --------------------------------------------------------------------
+
+def with_order(ring: PolyRing, order: MonomialOrder) -> PolyRing:
+    """The ring's variables and field with another ordering."""
+    return PolyRing(ring.field, ring.names, order)
+
+
+def move(polys: Ideal, ring: PolyRing) -> list[Poly]:
+    """The same polynomials (same variables) as elements of ``ring``."""
+    return [Poly(ring, p.terms) for p in polys if not p.is_zero()]
+
+
+def product_order(nvars: int, blocks: Sequence[Sequence[int]]) -> MonomialOrder:
+    """The product ordering ``(dp(blocks[0]), dp(blocks[1]), ...)`` on variables given by
+    index (each block need not be contiguous), as one matrix block."""
+    rows: list[list[int]] = []
+    for block in blocks:
+        block = sorted(block)
+        if not block:
+            continue
+        rows.append([1 if j in block else 0 for j in range(nvars)])
+        for v in reversed(block[1:]):
+            rows.append([-1 if j == v else 0 for j in range(nvars)])
+    return MonomialOrder([Block("M", nvars, tuple(v for r in rows for v in r))])
+
+
+def _prefixed(ring: PolyRing, extra: Sequence[str]) -> PolyRing:
+    """``ring`` with new variables in front, in a ``dp`` block before the ring's ordering
+    (an elimination ordering for them)."""
+    names = list(extra) + list(ring.names)
+    while len(set(names)) < len(names):
+        names = ["_" + n if i < len(extra) else n for i, n in enumerate(names)]
+    blocks = [Block("dp", len(extra))] + list(ring.order.blocks)
+    return PolyRing(ring.field, names, MonomialOrder(blocks, len(names)))
+
+
+def _lift(p: Poly, big: PolyRing, k: int) -> Poly:
+    pad = (0,) * k
+    return Poly(big, {pad + e: c for e, c in p.terms.items()})
+
+
+def _drop(p: Poly, ring: PolyRing, k: int) -> Poly:
+    return Poly(ring, {e[k:]: c for e, c in p.terms.items()})
+
+
+def _free_of_prefix(basis: Sequence[Poly], ring: PolyRing, k: int) -> list[Poly]:
+    return [_drop(p, ring, k) for p in basis if all(not any(e[:k]) for e in p.terms)]
+
+
+# --- elimination and the ideal arithmetic -----------------------------------------------
+
+def eliminate(ideal: Ideal, var_indices: Sequence[int], ring: PolyRing | None = None) -> list[Poly]:
+    """The elimination ideal ``I ∩ K[other variables]`` (Singular's ``eliminate(I, x*y)``
+    with ``var_indices`` the positions of x, y), as a reduced basis in the ring's ordering."""
+    ring = ring_of(ideal, ring=ring)
+    elim = set(var_indices)
+    if not elim:
+        return std(ideal, ring)
+    if ring.order.is_elimination_for(sorted(elim)):
+        aux = ring
+    else:
+        weights = tuple(1 if i in elim else 0 for i in range(ring.nvars))
+        aux = with_order(ring, MonomialOrder([Block("a", ring.nvars, weights)] + list(ring.order.blocks),
+                                             ring.nvars))
+    basis = groebner(move(ideal, aux), aux)
+    kept = [p for p in basis if not any(e[i] for e in p.terms for i in elim)]
+    return move(kept, ring) if aux is ring else groebner(move(kept, ring), ring)
+
+
+def ideal_sum(*ideals: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """``I1 + I2 + ...``."""
+    ring = ring_of(*ideals, ring=ring)
+    return groebner([p for i in ideals for p in i if not p.is_zero()], ring)
+
+
+def ideal_product(*ideals: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """``I1 * I2 * ...`` (generated by the products of generators)."""
+    ring = ring_of(*ideals, ring=ring)
+    gens = [ring.one()]
+    for ideal in ideals:
+        basis = std(ideal, ring)
+        gens = [a * b for a in gens for b in basis]
+        gens = groebner(gens, ring) if gens else []
+    return gens
+
+
+def ideal_power(ideal: Ideal, k: int, ring: PolyRing | None = None) -> list[Poly]:
+    """``I^k`` (``I^0`` is the unit ideal)."""
+    ring = ring_of(ideal, ring=ring)
+    if k < 0:
+        raise ValueError("the exponent of an ideal power must be nonnegative")
+    result = [ring.one()]
+    base = std(ideal, ring)
+    while k:
+        if k & 1:
+            result = ideal_product(result, base, ring=ring)
+        k >>= 1
+        if k:
+            base = ideal_product(base, base, ring=ring)
+    return result
+
+
+def intersect(*ideals: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """``I1 ∩ I2 ∩ ...`` (by eliminating t from ``t*I + (1-t)*J``, pairwise)."""
+    ring = ring_of(*ideals, ring=ring)
+    if not ideals:
+        return [ring.one()]
+    bases = sorted((std(i, ring) for i in ideals), key=len)
+    result = bases[0]
+    for other in bases[1:]:
+        result = _intersect2(result, other, ring)
+    return result
+
+
+def _intersect2(a: list[Poly], b: list[Poly], ring: PolyRing) -> list[Poly]:
+    if not a or not b:
+        return []
+    if is_unit(a):
+        return b
+    if is_unit(b):
+        return a
+    if is_subset(a, b):
+        return a
+    if is_subset(b, a):
+        return b
+    big = _prefixed(ring, ["t"])
+    t = big.gen(0)
+    gens = [t * _lift(p, big, 1) for p in a] + [(1 - t) * _lift(p, big, 1) for p in b]
+    return _free_of_prefix(groebner(gens, big), ring, 1)
+
+
+def quotient(ideal: Ideal, other: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """The ideal quotient ``I : J = {f : f*J ⊆ I}``."""
+    from .factor import divide_exact
+    ring = ring_of(ideal, other, ring=ring)
+    basis = std(ideal, ring)
+    result: list[Poly] | None = None
+    for f in std(other, ring):
+        if normal_form(f, basis).is_zero():
+            continue
+        inter = _intersect2(basis, [f], ring)
+        q = groebner([divide_exact(p, f) for p in inter], ring)
+        result = q if result is None else _intersect2(result, q, ring)
+    return [ring.one()] if result is None else result
+
+
+def saturate_poly(ideal: Ideal, f: Poly, ring: PolyRing | None = None) -> list[Poly]:
+    """``I : f^∞`` by eliminating t from ``I + (1 - t*f)``."""
+    ring = ring_of(ideal, [f], ring=ring)
+    if f.is_zero():
+        return [ring.one()]
+    if f.is_constant():
+        return std(ideal, ring)
+    basis = std(ideal, ring)
+    if is_unit(basis):
+        return basis
+    big = _prefixed(ring, ["t"])
+    t = big.gen(0)
+    gens = [_lift(p, big, 1) for p in basis] + [big.one() - t * _lift(f, big, 1)]
+    return _free_of_prefix(groebner(gens, big), ring, 1)
+
+
+def saturation_exponent(ideal: Ideal, saturated: Ideal, other: Ideal,
+                        ring: PolyRing | None = None) -> int:
+    """The least ``k`` with ``I : J^k == I : J^∞`` given ``saturated = I : J^∞``: the least
+    ``k`` with ``saturated * J^k ⊆ I``, found by multiplying normal forms modulo ``I``."""
+    ring = ring_of(ideal, saturated, other, ring=ring)
+    basis = std(ideal, ring)
+    gens = [g for g in std(other, ring)]
+    current = _echelon([normal_form(p, basis) for p in saturated], ring)
+    k = 0
+    while current:
+        k += 1
+        current = _echelon([normal_form(p * g, basis) for p in current for g in gens], ring)
+    return k
+
+
+def _echelon(polys: list[Poly], ring: PolyRing) -> list[Poly]:
+    """A basis of the K-span of ``polys`` (distinct leading monomials)."""
+    rows: dict[Exp, Poly] = {}
+    for p in polys:
+        while not p.is_zero():
+            lm = p.lm()
+            r = rows.get(lm)
+            if r is None:
+                rows[lm] = p.monic()
+                break
+            p = p - r * p.lc()
+    return list(rows.values())
+
+
+def saturate(ideal: Ideal, other: Ideal, ring: PolyRing | None = None) -> tuple[list[Poly], int]:
+    """Singular's ``sat(I, J)``: ``(I : J^∞, k)`` with ``k`` the least exponent such that
+    ``I : J^k == I : J^(k+1)`` (0 when ``I : J == I``)."""
+    ring = ring_of(ideal, other, ring=ring)
+    basis = std(ideal, ring)
+    gens = std(other, ring)
+    result = [ring.one()]
+    for f in gens:
+        result = intersect(result, saturate_poly(basis, f, ring), ring=ring)
+    return result, saturation_exponent(basis, result, gens, ring)
+
+
+# --- comparison ------------------------------------------------------------------------
+
+def is_subset(a: Ideal, b: Ideal, ring: PolyRing | None = None) -> bool:
+    """Whether ``I ⊆ J``."""
+    ring = ring_of(a, b, ring=ring)
+    basis = std(b, ring)
+    return all(normal_form(p, basis).is_zero() for p in a if not p.is_zero())
+
+
+def ideals_equal(a: Ideal, b: Ideal, ring: PolyRing | None = None) -> bool:
+    """Whether the two ideals are equal (equal reduced Gröbner bases)."""
+    ring = ring_of(a, b, ring=ring)
+    return std(a, ring) == std(b, ring)
+
+
+def dimension(ideal: Ideal, ring: PolyRing | None = None) -> int:
+    """The Krull dimension of ``K[x]/I`` (-1 for the unit ideal)."""
+    ring = ring_of(ideal, ring=ring)
+    return krull_dim([p.lm() for p in std(ideal, ring)], ring.nvars)
+
+
+def independent_set(basis: Sequence[Poly], nvars: int) -> list[int]:
+    """A maximal (largest) independent set of variables modulo a Gröbner basis."""
+    sets = independent_sets([p.lm() for p in basis], nvars)
+    return sorted(sets[0]) if sets else []
+
+
+def radical(ideal: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """The radical ``√I`` (intersection of the minimal associated primes)."""
+    from .primdec import radical as _radical
+    return _radical(ideal, ring=ring)

@@ -1,0 +1,521 @@
+"""Minimal associated primes, primary decomposition, radicals and equidimensional parts.
+
+Ideals are lists of :class:`Poly` of one ring with a global ordering; results are reduced
+Gröbner bases in that ring (see :mod:`.ideals`).  The algorithms (Greuel–Pfister, *A Singular
+Introduction to Commutative Algebra*, ch. 4):
+
+* **Reduction to dimension zero** (Gianni–Trager–Zacharias).  For a maximal independent set
+  ``u`` of ``I`` and the other variables ``x``, a Gröbner basis for the product ordering
+  ``(dp(x), dp(u))`` is one of ``I K(u)[x]``, which is zero-dimensional; with ``h`` the
+  product of its leading coefficients in ``K[u]``, ``I K(u)[x] ∩ K[x,u] = I : h^∞`` and
+  ``I = (I : h^∞) ∩ (I + h^m)`` for the saturation exponent ``m``.
+* **Zero-dimensional primes over K(u)**: factor the minimal polynomial of each variable
+  (an elimination basis) and split; add the squarefree parts (Seidenberg's lemma makes the
+  ideal radical); an ideal whose vector-space dimension equals the degree of an irreducible
+  minimal polynomial is maximal.  Otherwise a random linear form plays the variable
+  (generic coordinates).  The primes of ``K[x,u]`` are the contractions ``P : h_P^∞``.
+* **Minimal primes**: first a factorizing Gröbner basis splits ``V(I)`` along factors of
+  basis elements; each piece goes through the reduction above; non-minimal primes are
+  dropped.
+* **Primary components**: GTZ separates the zero-dimensional primaries over ``K(u)`` with
+  saturations ``I : s^∞`` by elements ``s`` lying in all other primes and recurses on
+  ``I + h^m``; Shimoyama–Yokoyama saturates ``I`` by such separators of its minimal primes
+  (pseudo-primary components), extracts their isolated primaries the same way and recurses
+  on the remainders.  Both finish by merging components of equal radical and removing
+  redundant (embedded) ones, so the decomposition is irredundant.
+
+Correct in characteristic 0 and for Z/p with p large enough that random linear forms are
+primitive elements; over Z/p with parameters, an inseparable minimal polynomial (a p-th power
+in ``x`` over ``K(u)``) is not made radical and raises ``RuntimeError``.  The coefficient
+field enters only through field operations, factorization (:mod:`.factor`) and ``groebner``.
+"""
+from __future__ import annotations
+
+import random
+from typing import Callable, Sequence
+
+from .factor import factorize, normalize
+from .groebner import groebner, normal_form
+from .ideals import (Ideal, dimension, independent_set, intersect, is_unit, move,
+                     product_order, quotient, ring_of, saturate_poly, saturation_exponent, std,
+                     with_order)
+from .order import Block, Exp, MonomialOrder
+from .poly import Poly, PolyRing
+
+Component = tuple[list[Poly], list[Poly]]
+
+_ATTEMPTS = 40
+
+
+# --- small helpers ----------------------------------------------------------------------
+
+def _irreducible(f: Poly, cache: dict | None = None) -> list[Poly]:
+    """Distinct irreducible non-constant factors of ``f``."""
+    if cache is not None and f in cache:
+        return cache[f]
+    facs = [] if f.is_constant() else [g for g, _ in factorize(f)[1]]
+    if cache is not None:
+        cache[f] = facs
+    return facs
+
+
+def _sqfree_product(polys: Sequence[Poly], ring: PolyRing) -> Poly:
+    """The product of the distinct irreducible factors of the polynomials."""
+    seen: dict[Poly, None] = {}
+    for p in polys:
+        for g in _irreducible(p):
+            seen.setdefault(g)
+    result = ring.one()
+    for g in seen:
+        result = result * g
+    return result
+
+
+def _is_linear(basis: Sequence[Poly]) -> bool:
+    return all(p.total_degree() <= 1 for p in basis)
+
+
+def _x_part(e: Exp, xs: Sequence[int]) -> Exp:
+    return tuple(e[i] for i in xs)
+
+
+def _lc_x(p: Poly, xs: Sequence[int]) -> Poly:
+    """The coefficient in ``K[u]`` of the leading ``x``-monomial (product ordering)."""
+    lead = _x_part(p.lm(), xs)
+    xset = set(xs)
+    return Poly(p.ring, {tuple(0 if i in xset else v for i, v in enumerate(e)): c
+                         for e, c in p.terms.items() if _x_part(e, xs) == lead})
+
+
+def _unit_over_ku(basis: Sequence[Poly], xs: Sequence[int]) -> bool:
+    """Whether a basis for a product ordering ``x >> u`` generates 1 over ``K(u)``."""
+    return any(not any(p.lm()[i] for i in xs) for p in basis)
+
+
+def _vdim(basis: Sequence[Poly], xs: Sequence[int]) -> int:
+    """``dim_K(u) K(u)[x]/I`` from a zero-dimensional basis for a product ordering."""
+    lms = [_x_part(p.lm(), xs) for p in basis]
+    n = len(xs)
+    bounds = []
+    for i in range(n):
+        pure = [e[i] for e in lms if e[i] and not any(e[j] for j in range(n) if j != i)]
+        if not pure:
+            raise ValueError("the ideal is not zero-dimensional over K(u)")
+        bounds.append(min(pure))
+    count = 0
+
+    def walk(prefix: list[int]) -> None:
+        nonlocal count
+        k = len(prefix)
+        if k == n:
+            count += 1
+            return
+        for v in range(bounds[k]):
+            cand = prefix + [v]
+            if any(all(e[j] <= cand[j] for j in range(k + 1)) and not any(e[k + 1:]) for e in lms):
+                break
+            walk(cand)
+
+    walk([])
+    return count
+
+
+def _minimal_poly(basis: Sequence[Poly], ring: PolyRing, target: int, xs: Sequence[int],
+                  us: Sequence[int]) -> Poly:
+    """The minimal polynomial over ``K(u)`` of the variable ``target`` (an element of
+    ``K[u][target]`` of least degree in the ideal)."""
+    others = [i for i in xs if i != target]
+    order_ring = with_order(ring, product_order(ring.nvars, [others, [target], us]))
+    gb = groebner(move(basis, order_ring), order_ring)
+    cands = [p for p in gb if not any(p.lm()[i] for i in others)]
+    best = min(cands, key=lambda p: p.lm()[target])
+    return Poly(ring, best.terms)
+
+
+def _in_target(f: Poly, target: int) -> list[tuple[Poly, int]]:
+    """Irreducible factors of ``f`` (with multiplicity) involving the variable ``target``."""
+    return [(g, m) for g, m in factorize(f)[1] if g.degree_in(target) > 0]
+
+
+# --- zero-dimensional primes over K(u) ---------------------------------------------------
+
+def _extend_ring(ring: PolyRing, xs: Sequence[int], us: Sequence[int]) -> PolyRing:
+    """``ring`` plus a last variable ``t`` ordered ``(dp(x), dp(t), dp(u))``."""
+    n = ring.nvars
+    name = "t"
+    while name in ring.names:
+        name = "_" + name
+    return PolyRing(ring.field, list(ring.names) + [name], product_order(n + 1, [xs, [n], us]))
+
+
+def _zero_dim_primes(basis: list[Poly], ring: PolyRing, xs: Sequence[int],
+                     us: Sequence[int]) -> list[list[Poly]]:
+    """The primes of ``K(u)[x]`` containing ``I`` (zero-dimensional over ``K(u)``), each as an
+    ideal of ``K[x,u]`` whose extension is the prime; ``ring`` has a product ordering
+    ``x >> u`` and ``basis`` is a Gröbner basis there."""
+    out: list[list[Poly]] = []
+    todo = [basis]
+    rng = random.Random(20240613)
+    while todo:
+        g = todo.pop()
+        if _unit_over_ku(g, xs):
+            continue
+        d = _vdim(g, xs)
+        if d == 1:
+            out.append(g)
+            continue
+        status, extra = "radical", []
+        for i in reversed(xs):
+            facs = _in_target(_minimal_poly(g, ring, i, xs, us), i)
+            if len(facs) > 1:
+                todo.extend(groebner(g + [p], ring) for p, _ in facs)
+                status = "split"
+                break
+            p, m = facs[0]
+            if p.degree_in(i) == d:
+                out.append(g)
+                status = "prime"
+                break
+            if m > 1:
+                extra.append(p)
+        if status != "radical":
+            continue
+        if extra:
+            todo.append(groebner(g + extra, ring))
+            continue
+        todo.extend(_split_by_linear_form(g, ring, xs, us, d, rng, out))
+    return out
+
+
+def _split_by_linear_form(g: list[Poly], ring: PolyRing, xs: Sequence[int], us: Sequence[int],
+                          d: int, rng: random.Random, out: list[list[Poly]]) -> list[list[Poly]]:
+    """Generic coordinates for a radical ``g`` whose variables are no primitive elements:
+    the minimal polynomial of a random linear form either splits ``g`` (the pieces are
+    returned) or has degree ``d`` (then ``g`` is prime and goes to ``out``)."""
+    big = _extend_ring(ring, xs, us)
+    n = ring.nvars
+    lifted = [Poly(big, {e + (0,): c for e, c in p.terms.items()}) for p in g]
+    p_char = ring.field.characteristic
+    span = 30 if not p_char else min(p_char - 1, 1000)
+    for attempt in range(_ATTEMPTS):
+        coeffs = [rng.randint(1, span + attempt * 10) for _ in xs]
+        ell = ring.zero()
+        for c, i in zip(coeffs, xs):
+            ell = ell + ring.gen(i) * c
+        ell_big = Poly(big, {e + (0,): c for e, c in ell.terms.items()})
+        f = _minimal_poly(lifted + [big.gen(n) - ell_big], big, n, list(xs) + [n], us)
+        facs = _in_target(f, n)
+        if len(facs) > 1:
+            images = [ring.gen(i) for i in range(n)] + [ell]
+            return [groebner(g + [p.compose(images, ring)], ring) for p, _ in facs]
+        if facs[0][0].degree_in(n) == d:
+            out.append(g)
+            return []
+    raise RuntimeError("no primitive element found (inseparable extension or a too small field)")
+
+
+def _contract(basis: list[Poly], ring: PolyRing, xs: Sequence[int]) -> tuple[list[Poly], Poly]:
+    """``(I K(u)[x] ∩ K[x,u], h)``: the contraction ``I : h^∞`` of an ideal given by a Gröbner
+    basis for the product ordering, and ``h`` (the squarefree product of the leading
+    coefficients)."""
+    h = _sqfree_product([_lc_x(p, xs) for p in basis], ring)
+    if h.is_constant():
+        return basis, h
+    return saturate_poly(basis, h, ring), h
+
+
+# --- the reduction to dimension zero ---------------------------------------------------
+
+class _Reduction:
+    """An ideal seen over ``K(u)``: the independent set, the product-order ring and basis,
+    ``h`` and the zero-dimensional primes contracted to ``K[x,u]`` (in the input ring)."""
+
+    def __init__(self, basis: list[Poly], ring: PolyRing, us: Sequence[int] | None = None) -> None:
+        n = ring.nvars
+        self.ring = ring
+        self.us = independent_set(basis, n) if us is None else list(us)
+        self.xs = [i for i in range(n) if i not in self.us]
+        self.bring = with_order(ring, product_order(n, [self.xs, self.us]))
+        self.bbasis = groebner(move(basis, self.bring), self.bring)
+        self.h = Poly(ring, _sqfree_product([_lc_x(p, self.xs) for p in self.bbasis],
+                                            self.bring).terms)
+
+    def primes(self) -> list[list[Poly]]:
+        """The contracted primes (reduced bases in the input ring)."""
+        found = _zero_dim_primes(self.bbasis, self.bring, self.xs, self.us)
+        out = []
+        for p in found:
+            pc, _ = _contract(p, self.bring, self.xs)
+            out.append(groebner(move(pc, self.ring), self.ring))
+        return out
+
+
+# --- minimal associated primes ----------------------------------------------------------
+
+def _contained(polys: Sequence[Poly], basis: Sequence[Poly]) -> bool:
+    """Whether the polynomials lie in the ideal of the Gröbner basis ``basis``."""
+    return all(normal_form(p, basis).is_zero() for p in polys)
+
+
+def _facstd(basis: list[Poly], ring: PolyRing, cache: dict) -> list[list[Poly]]:
+    """Factorizing Gröbner bases: ideals without reducible or non-squarefree basis elements
+    such that every minimal prime of ``I`` is a minimal prime of one of them.  A branch
+    ``I + f_i`` for a basis element ``f_1 ··· f_k`` only looks for primes avoiding
+    ``f_1, ..., f_(i-1)``: those factors are dropped from later splits, and a branch whose
+    ideal contains one of them is abandoned."""
+    out: list[list[Poly]] = []
+    todo: list[tuple[list[Poly], list[Poly]]] = [(basis, [])]
+    while todo:
+        gens, nonzero = todo.pop()
+        g = groebner(gens, ring)
+        if is_unit(g) or any(normal_form(f, g).is_zero() for f in nonzero):
+            continue
+        for p in g:
+            facs = [f for f in _irreducible(p, cache) if f not in nonzero]
+            if not facs:
+                break
+            if len(facs) > 1 or facs[0] != normalize(p):
+                todo.extend((g + [f], nonzero + facs[:i]) for i, f in enumerate(facs))
+                break
+        else:
+            out.append(g)
+    return _minimal_ideals(out)
+
+
+def _minimal_ideals(ideals: list[list[Poly]]) -> list[list[Poly]]:
+    """Distinct ideals (reduced bases) not containing another one."""
+    uniq: list[list[Poly]] = []
+    for i in sorted(ideals, key=lambda b: (len(b), sum(len(p) for p in b))):
+        if not any(_contained(j, i) for j in uniq):
+            uniq = [j for j in uniq if not _contained(i, j)] + [i]
+    return uniq
+
+
+def _min_ass(basis: list[Poly], ring: PolyRing, cache: dict, split: bool = True) -> list[list[Poly]]:
+    """Primes whose varieties cover ``V(I)`` (all minimal primes among them)."""
+    primes: list[list[Poly]] = []
+    for piece in (_facstd(basis, ring, cache) if split else [basis]):
+        if _is_linear(piece):
+            primes.append(piece)
+            continue
+        red = _Reduction(piece, ring)
+        primes.extend(red.primes())
+        h = red.h
+        if h.is_constant() or _contained(quotient(piece, [h], ring), piece):
+            continue
+        for f in _irreducible(h, cache):
+            primes.extend(_min_ass(groebner(piece + [f], ring), ring, cache))
+    return _minimal_ideals(primes)
+
+
+def _work(ideal: Ideal, ring: PolyRing | None) -> tuple[PolyRing, PolyRing, list[Poly]]:
+    """``(ring, work, basis)``: the input ring, the same ring ordered by ``dp`` (where the
+    decompositions run, as they do not depend on the ordering) and the ideal's reduced
+    basis there."""
+    ring = ring_of(ideal, ring=ring)
+    dp = MonomialOrder([Block("dp", ring.nvars)])
+    work = ring if ring.order == dp else with_order(ring, dp)
+    return ring, work, std(move(ideal, work), work)
+
+
+def _back(basis: list[Poly], ring: PolyRing) -> list[Poly]:
+    return groebner(move(basis, ring), ring)
+
+
+def _sort_key(ring: PolyRing) -> Callable[[list[Poly]], tuple]:
+    """A deterministic order of ideals: decreasing dimension, then leading monomials."""
+    key = ring.order.key
+    return lambda b: (-dimension(b, ring), [key(p.lm()) for p in b])
+
+
+def _min_ass_public(ideal: Ideal, ring: PolyRing | None, split: bool) -> list[list[Poly]]:
+    ring, work, basis = _work(ideal, ring)
+    if is_unit(basis):
+        return []
+    primes = [_back(p, ring) for p in _min_ass(basis, work, {}, split)]
+    return sorted(primes, key=_sort_key(ring))
+
+
+def min_ass_gtz(ideal: Ideal, ring: PolyRing | None = None) -> list[list[Poly]]:
+    """The minimal associated primes of ``I`` (Singular's ``minAssGTZ``), as reduced bases;
+    ``[]`` for the unit ideal."""
+    return _min_ass_public(ideal, ring, True)
+
+
+def min_ass_char(ideal: Ideal, ring: PolyRing | None = None) -> list[list[Poly]]:
+    """The minimal associated primes (Singular's ``minAssChar``).  Computed like
+    :func:`min_ass_gtz` but without the factorizing pre-split: each ideal is reduced to
+    dimension zero directly and split by factoring minimal polynomials (triangular
+    splitting in place of characteristic sets); the result is the same set of primes."""
+    return _min_ass_public(ideal, ring, False)
+
+
+def radical(ideal: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """The radical of ``I``: the intersection of its minimal primes."""
+    ring = ring_of(ideal, ring=ring)
+    primes = min_ass_gtz(ideal, ring)
+    return intersect(*primes, ring=ring) if primes else [ring.one()]
+
+
+def equi_radical(ideal: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """Singular's ``equiRadical``: the intersection of the minimal primes of maximal
+    dimension (the radical of the top-dimensional part)."""
+    ring = ring_of(ideal, ring=ring)
+    primes = min_ass_gtz(ideal, ring)
+    if not primes:
+        return [ring.one()]
+    top = max(dimension(p, ring) for p in primes)
+    return intersect(*[p for p in primes if dimension(p, ring) == top], ring=ring)
+
+
+def is_prime(ideal: Ideal, ring: PolyRing | None = None) -> bool:
+    """Whether ``I`` is a prime ideal (the unit ideal is not)."""
+    _, work, basis = _work(ideal, ring)
+    primes = [] if is_unit(basis) else _min_ass(basis, work, {})
+    return len(primes) == 1 and primes[0] == basis
+
+
+def is_primary(ideal: Ideal, ring: PolyRing | None = None) -> bool:
+    """Whether ``I`` is a primary ideal (the unit ideal is not)."""
+    _, work, basis = _work(ideal, ring)
+    if is_unit(basis):
+        return False
+    primes = _min_ass(basis, work, {})
+    return len(primes) == 1 and len(_clean(_primdec_sy(basis, work, {}), work)) == 1
+
+
+# --- primary decomposition ---------------------------------------------------------------
+
+def _separator(primes: list[list[Poly]], i: int, ring: PolyRing) -> Poly:
+    """An element of every prime but the ``i``-th, not in the ``i``-th."""
+    s = ring.one()
+    for j, p in enumerate(primes):
+        if j == i:
+            continue
+        outside = [g for g in p if not normal_form(g, primes[i]).is_zero()]
+        s = s * min(outside, key=lambda g: (g.total_degree(), len(g)))
+    return s
+
+
+def _split_off(basis: list[Poly], h: Poly, ring: PolyRing,
+               saturated: list[Poly] | None = None) -> list[Poly] | None:
+    """``I + h^m`` with ``m`` the saturation exponent of ``h``, or None when ``I : h == I``."""
+    if h.is_constant():
+        return None
+    sat = saturated if saturated is not None else saturate_poly(basis, h, ring)
+    m = saturation_exponent(basis, sat, [h], ring)
+    if m == 0:
+        return None
+    return groebner(basis + [h ** m], ring)
+
+
+def _primdec_gtz(basis: list[Poly], ring: PolyRing) -> list[Component]:
+    if is_unit(basis):
+        return []
+    red = _Reduction(basis, ring)
+    primes = red.primes()
+    h = red.h
+    sat = basis if h.is_constant() else saturate_poly(basis, h, ring)
+    if len(primes) == 1:
+        comps = [(sat, primes[0])]
+    else:
+        comps = [(saturate_poly(sat, _separator(primes, i, ring), ring), p)
+                 for i, p in enumerate(primes)]
+    rest = _split_off(basis, h, ring, sat)
+    if rest is not None:
+        comps += _primdec_gtz(rest, ring)
+    return comps
+
+
+def _primdec_sy(basis: list[Poly], ring: PolyRing, cache: dict) -> list[Component]:
+    if is_unit(basis):
+        return []
+    primes = _min_ass(basis, ring, cache)
+    comps: list[Component] = []
+    if len(primes) == 1:
+        return _extract(basis, primes[0], ring, cache)
+    rest = basis
+    for i, p in enumerate(primes):
+        s = _separator(primes, i, ring)
+        sat = saturate_poly(rest, s, ring)
+        comps += _extract(sat, p, ring, cache)
+        m = saturation_exponent(rest, sat, [s], ring)
+        rest = groebner(rest + [s ** m], ring) if m else sat
+    if not is_unit(rest):
+        comps += _primdec_sy(rest, ring, cache)
+    return comps
+
+
+def _extract(pseudo: list[Poly], prime: list[Poly], ring: PolyRing, cache: dict) -> list[Component]:
+    """The isolated primary component of a pseudo-primary ideal (radical ``prime``) and the
+    decomposition of what remains."""
+    red = _Reduction(pseudo, ring, independent_set(prime, ring.nvars))
+    h = red.h
+    primary = pseudo if h.is_constant() else saturate_poly(pseudo, h, ring)
+    comps = [(primary, prime)]
+    rest = _split_off(pseudo, h, ring, primary)
+    if rest is not None:
+        comps += _primdec_sy(rest, ring, cache)
+    return comps
+
+
+def _clean(comps: list[Component], ring: PolyRing) -> list[Component]:
+    """Merge components with equal radicals and drop redundant ones (most embedded first)."""
+    merged: dict[tuple[Poly, ...], list[list[Poly]]] = {}
+    for q, p in comps:
+        merged.setdefault(tuple(p), []).append(q)
+    items = [(intersect(*qs, ring=ring) if len(qs) > 1 else qs[0], list(p))
+             for p, qs in merged.items()]
+    dims = [dimension(p, ring) for _, p in items]
+    keep = list(range(len(items)))
+    for k in sorted(range(len(items)), key=lambda k: dims[k]):
+        q, p = items[k]
+        below = [items[j][0] for j in keep if j != k and _contained(items[j][1], p)]
+        if below and _contained(intersect(*below, ring=ring), q):
+            keep.remove(k)
+    return [items[k] for k in keep]
+
+
+def _primdec_public(ideal: Ideal, ring: PolyRing | None, method: str) -> list[Component]:
+    ring, work, basis = _work(ideal, ring)
+    comps = _primdec_gtz(basis, work) if method == "gtz" else _primdec_sy(basis, work, {})
+    out = [(_back(q, ring), _back(p, ring)) for q, p in _clean(comps, work)]
+    key = _sort_key(ring)
+    return sorted(out, key=lambda c: (key(c[1]), key(c[0])))
+
+
+def primdec_gtz(ideal: Ideal, ring: PolyRing | None = None) -> list[Component]:
+    """An irredundant primary decomposition (Singular's ``primdecGTZ``): a list of
+    ``(primary, prime)`` pairs of reduced bases, embedded components included; ``[]`` for
+    the unit ideal."""
+    return _primdec_public(ideal, ring, "gtz")
+
+
+def primdec_sy(ideal: Ideal, ring: PolyRing | None = None) -> list[Component]:
+    """An irredundant primary decomposition by Shimoyama–Yokoyama (Singular's
+    ``primdecSY``); same format as :func:`primdec_gtz`."""
+    return _primdec_public(ideal, ring, "sy")
+
+
+# --- equidimensional parts --------------------------------------------------------------
+
+def equidim(ideal: Ideal, ring: PolyRing | None = None) -> list[list[Poly]]:
+    """Singular's ``equidim``: equidimensional ideals ``a[1..s]`` with intersection ``I``,
+    by increasing dimension; ``a[s]`` is the top-dimensional part (the intersection of the
+    primary components of dimension ``dim I``), ``a[k]`` the intersection of the components
+    of the k-th smaller dimension occurring.  Embedded components are not unique, so the
+    lower parts may differ from Singular's (their radicals agree).  ``[[1]]`` for the unit
+    ideal."""
+    ring = ring_of(ideal, ring=ring)
+    comps = primdec_gtz(ideal, ring)
+    if not comps:
+        return [[ring.one()]]
+    by_dim: dict[int, list[list[Poly]]] = {}
+    for q, p in comps:
+        by_dim.setdefault(dimension(p, ring), []).append(q)
+    return [intersect(*by_dim[d], ring=ring) for d in sorted(by_dim)]
+
+
+def equidim_max(ideal: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """Singular's ``equidimMax``: the top-dimensional part of ``I``."""
+    return equidim(ideal, ring)[-1]

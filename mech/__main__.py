@@ -1,0 +1,6 @@
+"""``python -m mech``: the same as the ``mech`` command."""
+import sys
+
+from .cli import main
+
+sys.exit(main())

@@ -1,0 +1,73 @@
+"""The ``mech`` command: run a script (``mech FILE``), code (``mech -c CODE``), standard input
+(``mech -``) or, without arguments, the interactive REPL."""
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Optional
+
+from . import __version__
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="mech", description="mech: a Singular-compatible computer-algebra language "
+                                "for the configuration spaces of rigid mechanisms.")
+    p.add_argument("file", nargs="?", help="script to run (.mech or .sing); '-' reads standard input")
+    p.add_argument("-c", dest="code", metavar="CODE", help="run CODE")
+    p.add_argument("-q", "--quiet", action="store_true", help="accepted for compatibility with Singular -q")
+    p.add_argument("--no-warn", action="store_true", help="do not print '// **' warnings")
+    p.add_argument("--version", action="version", version=f"mech {__version__}")
+    return p
+
+
+def run_text(text: str, name: str, warnings: bool = True) -> int:
+    """Run a program, printing its output as it is produced; errors go to stderr.  The exit status."""
+    from .dsl.errors import MechError, MechInternalError
+    from .dsl.interpreter import Interpreter, QuitSignal
+    interp = Interpreter(out=sys.stdout, flush=True, warnings=warnings)
+    try:
+        interp.execute(text, name)
+    except QuitSignal:
+        return 0
+    except MechError as e:
+        sys.stdout.flush()
+        sys.stderr.write(e.format())
+        return 1
+    except KeyboardInterrupt:
+        sys.stdout.flush()
+        sys.stderr.write(f"{name}: error: interrupted\n")
+        return 130
+    except Exception as e:  # a bug: still the error format, never a traceback
+        sys.stdout.flush()
+        sys.stderr.write(MechInternalError(f"internal error: {type(e).__name__}: {e}").format())
+        return 1
+    return 0
+
+
+def main(argv: Optional[list[str]] = None) -> int:
+    args = _parser().parse_args(argv)
+    warnings = not args.no_warn
+    if args.code is not None:
+        if args.file:
+            sys.stderr.write("mech: error: give either -c CODE or a FILE, not both\n")
+            return 2
+        return run_text(args.code, "<string>", warnings)
+    if args.file == "-" or (args.file is None and not sys.stdin.isatty()):
+        return run_text(sys.stdin.read(), "<stdin>", warnings)
+    if args.file:
+        try:
+            with open(args.file, encoding="utf-8") as fh:
+                text = fh.read()
+        except OSError as e:
+            sys.stderr.write(f"mech: error: cannot read {args.file}: {e.strerror}\n")
+            return 2
+        except UnicodeDecodeError:
+            sys.stderr.write(f"mech: error: {args.file} is not a UTF-8 text file\n")
+            return 2
+        return run_text(text, args.file, warnings)
+    from .dsl.repl import run_repl
+    return run_repl(warnings=warnings)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

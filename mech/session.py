@@ -1,0 +1,121 @@
+"""The Python API: a :class:`Session` runs mech code and exchanges values with Python."""
+from __future__ import annotations
+
+import io
+from typing import Any
+
+from .dsl import ast as A
+from .dsl.errors import MechError, MechNameError, MechSyntaxError, MechTypeError, Source
+from .dsl.interpreter import Interpreter, QuitSignal
+from .dsl.parser import parse
+from .dsl.values import NONE, ExprList, IntVec, Ring
+
+
+class Session:
+    """An interpreter with its variables and rings, kept between calls.
+
+    ``execute(code)`` runs statements and returns what they printed; ``eval(expr)`` returns the
+    value of one expression; ``session[name]`` reads a variable and ``session[name] = value``
+    sets one (ints, strings, sympy expressions, lists of them, or mech values).  Errors raise
+    :class:`MechError` subclasses carrying ``line`` and ``column`` (``err.output`` holds what was
+    printed before the error)."""
+
+    def __init__(self, warnings: bool = True) -> None:
+        self._out = io.StringIO()
+        self._interp = Interpreter(out=self._out, warnings=warnings)
+
+    @property
+    def interpreter(self) -> Interpreter:
+        return self._interp
+
+    @property
+    def ring(self) -> Ring | None:
+        """The basering (None before a ring is declared)."""
+        return self._interp.ring
+
+    def execute(self, source: str, name: str = "<string>") -> str:
+        """Run ``source`` and return the text it printed."""
+        self._out.seek(0)
+        self._out.truncate()
+        try:
+            self._interp.execute(source, name)
+        except QuitSignal:
+            pass
+        except MechError as e:
+            e.output = self._out.getvalue()
+            raise
+        return self._out.getvalue()
+
+    def eval(self, expr: str) -> Any:
+        """The value of the expression ``expr`` (a tuple for a comma expression)."""
+        text = expr.strip().rstrip(";")
+        src = Source("<eval>", text)
+        program = parse(text + ";", src)
+        if len(program.body) != 1 or not isinstance(program.body[0], A.ExprStmt):
+            raise MechSyntaxError("eval takes one expression (use execute for statements)", None, src)
+        stmt = program.body[0]
+        it = self._interp
+        saved = it.source
+        it.source, it.stmt = src, stmt
+        self._out.seek(0)
+        self._out.truncate()
+        try:
+            values = [it.eval(e) for e in stmt.exprs]
+        finally:
+            it.source = saved
+        values = [v for v in values if v is not NONE]
+        flat = []
+        for v in values:
+            flat.extend(v.items if isinstance(v, ExprList) else [v])
+        if not flat:
+            return None
+        return flat[0] if len(flat) == 1 else tuple(flat)
+
+    def __getitem__(self, name: str) -> Any:
+        var = self._interp.lookup(name)
+        if var is None:
+            raise MechNameError(f"unknown identifier '{name}'")
+        return var.value
+
+    def __contains__(self, name: str) -> bool:
+        return self._interp.lookup(name) is not None
+
+    def __setitem__(self, name: str, value: Any) -> None:
+        it = self._interp
+        var = it.lookup(name)
+        if isinstance(value, str) and var is not None and var.type not in ("string", "def"):
+            text = f"{name} = {value};"
+            it.execute(text, "<setitem>")
+            return
+        v, typ = self._from_python(value)
+        if var is not None:
+            it.stmt = None
+            it.assign(A.Name(name), v)
+        else:
+            from .dsl.values import convert
+            ring = it.ring.poly if it.ring else None
+            it.declare(name, typ, convert(v, typ, ring) if typ != "def" else v)
+
+    def _from_python(self, value: Any) -> tuple[Any, str]:
+        from .dsl.convert import is_sympy, sympy_to_poly
+        from .dsl.values import Ideal, List, Matrix, Map, Number, Proc, typeof
+        from .kernel import Poly
+        if isinstance(value, bool):
+            return int(value), "int"
+        if isinstance(value, int):
+            return value, "int"
+        if isinstance(value, str):
+            return value, "string"
+        if isinstance(value, (Poly, Number, Ideal, Matrix, Map, IntVec, List, Ring, Proc)):
+            return value, typeof(value) if not isinstance(value, (Ring, Proc)) else "def"
+        if is_sympy(value):
+            return sympy_to_poly(value, self._interp.basering().poly), "poly"
+        if isinstance(value, (list, tuple)):
+            if all(isinstance(x, int) and not isinstance(x, bool) for x in value):
+                return IntVec(value), "intvec"
+            if all(isinstance(x, (int, Poly)) or is_sympy(x) for x in value):
+                ring = self._interp.basering().poly
+                gens = [x if isinstance(x, Poly) else sympy_to_poly(x, ring) for x in value]
+                return Ideal(ring, gens), "ideal"
+            return List([self._from_python(x)[0] for x in value]), "list"
+        raise MechTypeError(f"cannot convert a Python {type(value).__name__} to a mech value")
