@@ -23,6 +23,27 @@ def poly_to_sympy(p: Poly) -> Any:
     return total
 
 
+def to_sympy(v: Any) -> Any:
+    """A value of the language as sympy objects: polynomials and numbers as expressions, ideals and
+    lists as Python lists, matrices as ``sympy.Matrix``; ints and strings stay as they are."""
+    import sympy
+
+    from .values import ExprList, Ideal, IntVec, List, Matrix, Number
+    if isinstance(v, Poly):
+        return poly_to_sympy(v)
+    if isinstance(v, Number):
+        return poly_to_sympy(v.to_poly())
+    if isinstance(v, Ideal):
+        return [poly_to_sympy(g) for g in v.gens]
+    if isinstance(v, Matrix):
+        return sympy.Matrix(v.nrows, v.ncols, [poly_to_sympy(g) for g in v.entries])
+    if isinstance(v, IntVec):
+        return list(v.values)
+    if isinstance(v, (List, ExprList)):
+        return [to_sympy(x) for x in v.items]
+    return v
+
+
 def sympy_to_poly(expr: Any, ring: PolyRing) -> Poly:
     """A sympy expression (polynomial in the ring's variable names, rational coefficients) as a
     kernel polynomial of ``ring``."""

@@ -13,6 +13,8 @@ from typing import Optional
 
 from .ast import Pos
 
+MAX_NOTES = 12  # procedure-call notes shown under an error (deep recursion elides the middle)
+
 
 @dataclass
 class Source:
@@ -71,8 +73,17 @@ class MechError(Exception):
     def format(self) -> str:
         """The error as the user sees it (ends with a newline)."""
         out = [_entry(self.source, self.pos, "error", self.message, self.underline)]
-        for n in self.notes:
-            out.append(_entry(n.source, n.pos, "note", n.message, n.underline))
+        notes = self.notes
+        if len(notes) > MAX_NOTES:
+            skipped = len(notes) - MAX_NOTES + 1
+            head, tail = notes[:MAX_NOTES - 2], notes[-1:]
+            skip = Note(f"... {skipped} more procedure calls ...", None, None)
+            notes = head + [skip] + tail
+        for n in notes:
+            if n.pos is None:
+                out.append(f"note: {n.message}\n")
+            else:
+                out.append(_entry(n.source, n.pos, "note", n.message, n.underline))
         return "".join(out)
 
     def __str__(self) -> str:

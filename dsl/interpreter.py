@@ -280,9 +280,9 @@ class Interpreter:
             if len(values) != len(s.items):
                 raise MechRuntimeError(f"{len(s.items)} variables declared but {len(values)} values given")
         for d, v in zip(s.items, values):
-            self._declare_item(typ, d, v, s.value[0] if s.value and len(s.items) == 1 and len(s.value) == 1 else None)
+            self._declare_item(typ, d, v)
 
-    def _declare_item(self, typ: str, d: A.Declarator, v: Any, rhs_node: Optional[A.Expr]) -> None:
+    def _declare_item(self, typ: str, d: A.Declarator, v: Any) -> None:
         kring = self.ring.poly if self.ring else None
         if typ == "matrix":
             dims = [to_int(self.eval(x)) for x in d.dims]
@@ -296,8 +296,8 @@ class Interpreter:
         elif v is None:
             v = self._default(typ)
         else:
-            v = self._converted(v, typ, kring, rhs_node)
-        self.declare(d.name, typ, v, d.pos)
+            v = self._converted(v, typ, kring)
+        self.declare(d.name, typ, v)
 
     def _default(self, typ: str) -> Any:
         if typ in ("int", "bigint"):
@@ -321,7 +321,7 @@ class Interpreter:
             return Ideal(ring, [], is_std=True)
         raise MechTypeError(f"type '{typ}' is not supported yet")
 
-    def _converted(self, v: Any, typ: str, kring: Any, rhs_node: Optional[A.Expr]) -> Any:
+    def _converted(self, v: Any, typ: str, kring: Any) -> Any:
         if typ in RING_TYPES and kring is None:
             self.basering()
         v = convert(v, typ, kring)
@@ -331,7 +331,7 @@ class Interpreter:
                 v = Ideal(v.ring, v.gens, std)
         return v
 
-    def declare(self, name: str, typ: str, value: Any, pos: Optional[A.Pos] = None) -> Var:
+    def declare(self, name: str, typ: str, value: Any) -> Var:
         """Create a variable in the current scope (a ring-dependent one with the basering)."""
         if self.registry.is_builtin(name):
             raise MechNameError(f"'{name}' is a command and cannot be declared as a variable")
@@ -420,7 +420,7 @@ class Interpreter:
             ring = build_ring(s.value, self.eval)
         ring.name = s.items[0].name
         self.rings.append(ring)
-        self.declare(ring.name, "ring", ring, s.items[0].pos)
+        self.declare(ring.name, "ring", ring)
         self.ring = ring
 
     def _declare_map(self, s: A.Decl) -> None:
@@ -436,29 +436,34 @@ class Interpreter:
                 raise MechTypeError("a map is declared as map phi = r, f1, ..., fn; with r the source ring")
             src = v[0]
             target = self.basering().poly
-            images = list(self._converted(ExprList(v[1:]), "ideal", target, None).gens) if len(v) > 1 else []
+            images = list(self._converted(ExprList(v[1:]), "ideal", target).gens) if len(v) > 1 else []
             if len(images) > len(src.names):
                 raise MechRuntimeError(f"the map gives {len(images)} images for the {len(src.names)} "
                                        f"variables of {src.name or 'the source ring'}")
             m = Map(src, target, tuple(images))
-        self.declare(s.items[0].name, "map", m, s.items[0].pos)
+        self.declare(s.items[0].name, "map", m)
 
     def _exec_assign(self, s: A.Assign) -> None:
         if len(s.targets) == 1:
-            self.assign(s.targets[0], self._rhs(s.values), s.values[0] if len(s.values) == 1 else None)
+            self.assign(s.targets[0], self._rhs(s.values))
             return
         if len(s.values) == len(s.targets):  # Singular assigns pairwise, in turn: a, b = b, a; sets both to b
             for t, n in zip(s.targets, s.values):
-                self.assign(t, self.eval(n), n)
+                self.assign(t, self.eval(n))
             return
         vals = self._values(s.values)
         if len(vals) != len(s.targets):
             raise MechRuntimeError(f"{len(s.targets)} targets but {len(vals)} values")
         for t, v in zip(s.targets, vals):
-            self.assign(t, v, None)
+            self.assign(t, v)
 
-    def assign(self, target: A.Expr, value: Any, rhs_node: Optional[A.Expr] = None) -> None:
+    def assign(self, target: A.Expr, value: Any) -> None:
         """Store ``value`` into a name or an indexed entry (``I[2]``, ``D[i,j]``, ``L[2][1]``)."""
+        if type(value) is int and type(target) is A.Name:  # fast path: int variables in loops
+            var = self.lookup(target.id)
+            if var is not None and var.type == "int":
+                var.value = value
+                return
         chain: list[A.Index] = []
         base = target
         while isinstance(base, A.Index):
@@ -485,7 +490,7 @@ class Interpreter:
                 value = to_matrix(value, self.basering().poly, var.value.nrows, var.value.ncols) \
                     if not isinstance(value, Matrix) else to_matrix(value, self.basering().poly)
             else:
-                value = self._converted(value, var.type, kring, rhs_node)
+                value = self._converted(value, var.type, kring)
             self._rebind(var, value)
             return
         chain.reverse()
@@ -493,8 +498,9 @@ class Interpreter:
         self._rebind(var, new)
 
     def _rebind(self, var: Var, value: Any) -> None:
-        dependent = is_ring_dependent(value)
-        if var.type in ("def", "list") and dependent != (var.ring is not None):
+        """Set a variable's value; a def or list moves to or from its ring as the value requires."""
+        if var.type in ("def", "list") and is_ring_dependent(value) != (var.ring is not None):
+            dependent = var.ring is None
             frame = self.frames[var.level] if var.level < len(self.frames) else self.frames[-1]
             old = self._ring_table(frame, var.ring, False) if var.ring is not None else frame.vars
             if old is not None:
@@ -548,6 +554,11 @@ class Interpreter:
         raise MechTypeError(f"cannot assign into an entry of a {typeof(container)}")
 
     def _exec_incdec(self, s: A.IncDec) -> None:
+        if type(s.target) is A.Name:
+            var = self.lookup(s.target.id)
+            if var is not None and type(var.value) is int:
+                var.value += s.delta
+                return
         cur = self.eval(s.target)
         if type(cur) is not int:
             raise MechTypeError(f"++ and -- need an int, not {typeof(cur)}")
@@ -595,7 +606,7 @@ class Interpreter:
 
     def _exec_procdef(self, s: A.ProcDef) -> None:
         lib = getattr(self, "_loading_lib", "")
-        self.declare(s.name, "proc", Proc(s.name, s.params, s.body, s.doc, self.source, lib, s.body_line), s.pos)
+        self.declare(s.name, "proc", Proc(s.name, s.params, s.body, s.doc, self.source, lib, s.body_line))
 
     def _names_of(self, targets: list[A.Expr], what: str) -> list[A.Name]:
         out = []
@@ -758,8 +769,7 @@ class Interpreter:
         return MechNameError(f"unknown identifier '{name}'")
 
     def _param(self, ring: Ring, name: str) -> Number:
-        field = ring.poly.field
-        return Number(ring.poly, field.parameter(ring.params.index(name)))
+        return Number(ring.poly, ring.poly.field.gen(ring.params.index(name)))
 
     def _monomial(self, text: str, coeff: Any = None) -> Optional[Any]:
         """``x2y`` as x^2*y when it reads as one-letter ring variables (or parameters) with exponents."""
@@ -930,8 +940,7 @@ class Interpreter:
 
     def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:
         if cmd.raw:
-            result = cmd.overloads[0].func(self, *arg_nodes)
-            return self.registry._result(result)
+            return self.registry.invoke_raw(cmd, self, arg_nodes)
         args = self._args(arg_nodes)
         saved = self.argnames
         self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
@@ -1002,7 +1011,7 @@ class Interpreter:
                 v = to_matrix(args[i], self.basering().poly)
             else:
                 try:
-                    v = self._converted(args[i], typ, self.ring.poly if self.ring else None, None)
+                    v = self._converted(args[i], typ, self.ring.poly if self.ring else None)
                 except MechError as e:
                     e.message = f"argument {i + 1} of {proc.name}: {e.message}"
                     raise

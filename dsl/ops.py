@@ -295,6 +295,8 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
         ring = _ring(a, b, ring)
         if max(_rank(a), _rank(b)) == 1:
             x, y = _sort_number(to_number(a, ring)), _sort_number(to_number(b, ring))
+            if op not in ("==", "!=") and getattr(ring.field, "params", ()):
+                raise MechTypeError("numbers with parameters cannot be ordered")
         else:
             p, q = to_poly(a, ring), to_poly(b, ring)
             if op in ("==", "!="):

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any, Optional
 
 from lark import Lark, Token, Transformer, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken, VisitError
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
 
 from . import ast as A
 from .errors import MechSyntaxError, Source
@@ -311,7 +311,10 @@ def _syntax_error(e: UnexpectedInput, text: str, source: Source) -> MechSyntaxEr
         return MechSyntaxError("expected ';'", A.Pos(line, col, line, col + 1), source)
     shown = tok.value if tok.type != "STRING" else "string"
     msg = f"unexpected '{shown}'"
-    if expected & {"IDENT", "NUMBER"}:
+    word = _statement_word(text, tok.start_pos)
+    if word and tok.type == "IDENT":
+        msg += f" ('{word}' is not a type)"
+    elif expected & {"IDENT", "NUMBER"}:
         msg += ", expected an expression"
     elif len(expected) == 1:
         msg += f", expected {_describe(next(iter(expected)))}"
@@ -329,6 +332,13 @@ def _unclosed(text: str) -> str:
         elif ch in ")]}" and stack and stack[-1] == ch:
             stack.pop()
     return stack[-1] if stack else ""
+
+
+def _statement_word(text: str, offset: int) -> str:
+    """The identifier just before ``offset`` if it opens a statement (``ideals I = x;``)."""
+    import re
+    m = re.search(r"(^|[;{}])\s*([A-Za-z_@][A-Za-z0-9_@]*)\s*$", text[:offset])
+    return m.group(2) if m else ""
 
 
 def _starts_new_line(text: str, tok: Token) -> bool:
@@ -384,7 +394,7 @@ def split_complete(text: str) -> tuple[int, bool]:
     """``(end, open)``: the offset just after the last complete top-level statement of ``text``
     and whether the text after it holds an unfinished statement (unclosed brackets, string or
     comment, or significant text without its ``;``)."""
-    depth, boundary, pending, after_brace = 0, 0, False, False
+    depth, boundary, pending, after_brace, prev_end = 0, 0, False, False, 0
     for kind, start, end in _scan(text):
         if kind == "comment":
             if not text.startswith("*/", end - 2) and text.startswith("/*", start):

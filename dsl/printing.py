@@ -17,7 +17,7 @@ _short_cache: dict[int, tuple[PolyRing, bool]] = {}
 
 def field_params(field: Any) -> tuple[str, ...]:
     """Names of the parameters of a coefficient field (empty for QQ and Z/p)."""
-    return tuple(getattr(field, "params", None) or getattr(field, "param_names", None) or ())
+    return tuple(getattr(field, "params", ()))
 
 
 def is_short(ring: PolyRing) -> bool:
@@ -30,20 +30,18 @@ def is_short(ring: PolyRing) -> bool:
     return short
 
 
-def coeff_str(field: Any, c: Any) -> str:
-    """A coefficient as Singular prints a number of this field."""
+def coeff_str(field: Any, c: Any, short: bool = True) -> str:
+    """A coefficient as Singular prints a number of this field (``short``: the ring's short form)."""
+    if field_params(field):
+        from ..kernel.ratfunc import format_coeff
+        return format_coeff(c, short)
     if field.characteristic:
-        sym = getattr(field, "symmetric", None)
-        if sym is not None and not field_params(field):
-            return str(sym(c))
-    custom = getattr(field, "singular_str", None)
-    if custom is not None:
-        return custom(c)
+        return str(field.symmetric(c))
     return str(c)
 
 
 def number_str(n: Number) -> str:
-    return coeff_str(n.ring.field, n.c)
+    return coeff_str(n.ring.field, n.c, is_short(n.ring))
 
 
 def _monomial(names: tuple[str, ...], e: tuple[int, ...], short: bool) -> str:
@@ -62,7 +60,7 @@ def poly_str(p: Poly) -> str:
     field, names = ring.field, ring.names
     out = []
     for e, c in p.sorted_terms():
-        cs = coeff_str(field, c)
+        cs = coeff_str(field, c, short)
         if not any(e):
             s = cs
         else:

@@ -2,6 +2,7 @@
 prints, and survives errors and Ctrl-C; Ctrl-D (or ``quit;``) leaves."""
 from __future__ import annotations
 
+import importlib
 import sys
 from typing import Callable, Optional
 
@@ -17,14 +18,13 @@ def run_repl(warnings: bool = True, read: Optional[Callable[[str], str]] = None)
     from .. import __version__
     if read is None:
         try:
-            import readline  # noqa: F401 - line editing and history for input()
+            importlib.import_module("readline")  # line editing and history for input()
         except ImportError:
             pass
         read = input
     interp = Interpreter(out=sys.stdout, flush=True, warnings=warnings)
     print(BANNER.format(version=__version__))
     buf = ""
-    count = 0
     while True:
         try:
             line = read("> " if not buf else ". ")
@@ -42,7 +42,6 @@ def run_repl(warnings: bool = True, read: Optional[Callable[[str], str]] = None)
         text, buf = buf, ""
         if not text.strip():
             continue
-        count += 1
         try:
             interp.execute(text, "<stdin>")
         except QuitSignal:

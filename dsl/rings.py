@@ -51,6 +51,9 @@ def build_ring(items: list[A.Expr], evaluate: Evaluate) -> Ring:
         raise MechRuntimeError("a ring is declared as ring r = characteristic, (variables), ordering;")
     char, params = _at(items[0], lambda: _characteristic(items[0], evaluate))
     names = _at(items[1], lambda: _names(items[1], evaluate))
+    clash = sorted(set(names) & set(params))
+    if clash:
+        raise MechRuntimeError(f"'{clash[0]}' is both a parameter and a variable", items[1].pos, None, True)
     blocks = _at(items[2], lambda: _ordering(items[2], evaluate, len(names)))
     return _at(items[0], lambda: make_ring(char, params, names, blocks))
 
@@ -171,10 +174,10 @@ def _field(char: int, params: tuple[str, ...]) -> Any:
     if not params:
         return base
     try:
-        from ..kernel import ratfunc
+        from ..kernel.ratfunc import RationalFunctionField
     except ImportError:
-        ratfunc = None
-    make = getattr(ratfunc, "parameter_field", None) if ratfunc else None
-    if make is None:
-        raise MechRuntimeError("rings with parameters such as (0,a,b) are not supported yet")
-    return make(base, params)
+        raise MechRuntimeError("rings with parameters such as (0,a,b) are not supported yet") from None
+    try:
+        return RationalFunctionField(char, params)
+    except ValueError as e:
+        raise MechRuntimeError(str(e)) from None

@@ -9,8 +9,11 @@ from __future__ import annotations
 
 from itertools import combinations
 from math import comb
-from typing import Any, Iterable, Sequence
+from typing import Any, Callable, Iterable, Sequence
 
+import flint
+
+from .coeffs import PrimeField, RationalField
 from .poly import Poly, PolyRing, divides, sub_exp
 
 
@@ -260,23 +263,46 @@ def _laplace(rows: list[list[Poly]], rs: list[int], cs: list[int], memo: dict) -
 
 
 def _bareiss(m: Matrix) -> Poly:
-    """Fraction-free Gaussian elimination (Bareiss): every division is exact."""
-    n = m.nrows
-    a = [list(r) for r in m.rows]
-    sign, prev = 1, m.ring.one()
+    """Fraction-free Gaussian elimination (Bareiss): every division is exact.  Over QQ and
+    Z/p the arithmetic runs on flint polynomials."""
+    ring = m.ring
+    ctx = _flint_context(ring)
+    if ctx is None:
+        return _bareiss_det([list(r) for r in m.rows], ring.zero(), ring.one(), exact_divide)
+    rows = [[ctx.from_dict(e.terms) if e.terms else ctx.from_dict({}) for e in r] for r in m.rows]
+    d = _bareiss_det(rows, ctx.from_dict({}), ctx.constant(1), lambda a, b: a / b)
+    return Poly(ring, {tuple(int(v) for v in e): ring.field(c) for e, c in d.to_dict().items()})
+
+
+def _flint_context(ring: PolyRing) -> Any:
+    """A flint polynomial context for the ring's field (None if flint has none)."""
+    names = tuple(f"v{i}" for i in range(ring.nvars))
+    if not names:
+        return None
+    if isinstance(ring.field, RationalField):
+        return flint.fmpq_mpoly_ctx.get(names, ordering="lex")
+    if isinstance(ring.field, PrimeField):
+        return flint.nmod_mpoly_ctx.get(names, ordering="lex", modulus=ring.field.characteristic)
+    return None
+
+
+def _bareiss_det(a: list[list[Any]], zero: Any, one: Any, divide: Callable[[Any, Any], Any]) -> Any:
+    """Bareiss' determinant of the square matrix ``a`` (modified in place)."""
+    n = len(a)
+    sign, prev = 1, one
     for k in range(n - 1):
-        if a[k][k].is_zero():
-            piv = next((i for i in range(k + 1, n) if not a[i][k].is_zero()), None)
+        if a[k][k] == 0:
+            piv = next((i for i in range(k + 1, n) if a[i][k] != 0), None)
             if piv is None:
-                return m.ring.zero()
+                return zero
             a[k], a[piv] = a[piv], a[k]
             sign = -sign
         p = a[k][k]
         for i in range(k + 1, n):
             for j in range(k + 1, n):
                 v = p * a[i][j] - a[i][k] * a[k][j]
-                a[i][j] = exact_divide(v, prev) if v.terms else v
-            a[i][k] = m.ring.zero()
+                a[i][j] = divide(v, prev) if v != 0 else v
+            a[i][k] = zero
         prev = p
     d = a[n - 1][n - 1]
     return d if sign > 0 else -d
@@ -297,6 +323,10 @@ def minors(m: Matrix, k: int) -> list[Poly]:
       elimination's order and up to sign, then zeros up to C(r,k)*C(c,k) entries;
     * otherwise Laplace expansion: the row sets in colexicographic order, for each the column
       sets in colexicographic order, true signs, zero minors dropped (``[0]`` if all vanish).
+
+    The elimination picks pivots by Singular's size of coefficients; for parameter fields, and
+    for non-integer rationals past the first elimination step, that size is approximated, so
+    the order and signs may differ from Singular's there (the ideal never does).
     """
     r, c, ring = m.nrows, m.ncols, m.ring
     if k <= 0:

@@ -171,11 +171,14 @@ def mora(gens: Sequence[Poly], ring: PolyRing) -> list[Terms]:
         update(_Elem(h, key))
         return False
 
-    todo = sorted((g for g in gens if not g.is_zero()), key=lambda g: g.total_degree())
+    def rank(e: Exp) -> tuple:  # smallest first for global orderings, largest first otherwise
+        return tuple(sign * v for v in key(e))
+
+    todo = sorted((g for g in gens if not g.is_zero()), key=lambda g: (g.total_degree(), rank(g.lm())))
     while todo or pairs:
         # the next generator or pair of least sugar (generators first on ties)
         best_pair = min(range(len(pairs)), default=None,
-                        key=lambda t: (pairs[t][3], sum(pairs[t][2]), tuple(-sign * v for v in key(pairs[t][2]))))
+                        key=lambda t: (pairs[t][3], rank(pairs[t][2])))
         if todo and (best_pair is None or todo[0].total_degree() <= pairs[best_pair][3]):
             h = mora_normal_form(dict(todo.pop(0).terms), basis, key)
         else:

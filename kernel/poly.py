@@ -166,7 +166,10 @@ class Poly:
 
     def __mul__(self, other: Any) -> "Poly":
         if not isinstance(other, Poly):
-            c = self.ring.field(other)
+            try:
+                c = self.ring.field(other)
+            except TypeError:
+                return NotImplemented
             if c == 0:
                 return self.ring.zero()
             return Poly(self.ring, {e: v * c for e, v in self.terms.items()})

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Optional, Protocol
 
 from ..dsl.errors import MechNameError, MechTypeError
-from ..dsl.values import (ExprList, Ideal, IntVec, List, Map, Matrix, NoneValue, Number, Proc, Ring,
+from ..dsl.values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring,
                           to_ideal, to_intvec, to_matrix, to_number, to_poly, typeof)
 from ..kernel import Poly, PolyRing
 
@@ -223,13 +223,23 @@ def invoke(cmd: Command, ctx: Any, args: list) -> Any:
                 if coerce and hasattr(ctx, "argnames"):
                     ctx.argnames = [n if b is a else "_" for n, a, b in zip(ctx.argnames, args, bound)]
                 result = ov.func(ctx, *bound) if ov.wants_ctx else ov.func(*bound)
-                return _result(result)
+                return result_value(result)
     got = ", ".join(typeof(a) for a in args)
     raise MechTypeError(f"wrong arguments for {cmd.name}: got ({got}), expected {cmd.usage()}")
 
 
-def _result(v: Any) -> Any:
-    from ..dsl.values import NONE
+def invoke_raw(cmd: Command, ctx: Any, nodes: list) -> Any:
+    """Call a raw command with the argument trees, checking their number."""
+    ov = cmd.overloads[0]
+    if len(nodes) < ov.required or (not ov.has_varargs and len(nodes) > len(ov.names)):
+        want = ov.required if ov.required == len(ov.names) or ov.has_varargs else f"{ov.required} to {len(ov.names)}"
+        more = " or more" if ov.has_varargs and ov.required else ""
+        raise MechTypeError(f"wrong number of arguments for {cmd.name}: got {len(nodes)}, expected {want}{more}")
+    return result_value(ov.func(ctx, *nodes))
+
+
+def result_value(v: Any) -> Any:
+    """A command's Python result as a value of the language."""
     if v is None:
         return NONE
     if isinstance(v, bool):
@@ -291,4 +301,4 @@ def help_text(name: str) -> Optional[str]:
     return head + ("\n" + cmd.doc if cmd.doc else "")
 
 
-__all__ = ["command", "Context", "COMMANDS", "LIBRARIES", "invoke", "find", "load_commands", "NoneValue"]
+__all__ = ["command", "Context", "COMMANDS", "LIBRARIES", "invoke", "find", "load_commands"]

@@ -3,6 +3,7 @@ structure of polynomials and ideals, type conversions, ring information, printin
 rings, options and the interpreter's own commands."""
 from __future__ import annotations
 
+from math import gcd
 from typing import Any
 
 from ..dsl import ast as A
@@ -23,27 +24,45 @@ from .registry import command
 
 
 def normalize(p: Poly) -> Poly:
-    """A basis element as Singular's std returns it: over QQ the primitive integer multiple with
-    positive leading coefficient, over Z/p (and other fields) monic."""
+    """A basis element as Singular's std returns it: over QQ (and QQ(a,..)) the primitive multiple
+    without denominators and with positive leading coefficient; over Z/p monic (Z/p(a,..): the
+    leading coefficient's leading term 1)."""
     if p.is_zero():
         return p
     field = p.ring.field
-    if field.characteristic or not hasattr(p.lc(), "p"):
+    if getattr(field, "params", ()):
+        return _normalize_params(p)
+    if field.characteristic:
         return p.monic()
     import flint
-    from math import gcd
     den = 1
     for c in p.terms.values():
         q = int(c.q)
         den = den * q // gcd(den, q)
-    nums = [int(c.p) * (den // int(c.q)) for c in p.terms.values()]
     g = 0
-    for n in nums:
-        g = gcd(g, n)
+    for c in p.terms.values():
+        g = gcd(g, int(c.p) * (den // int(c.q)))
     scale = flint.fmpq(den, g)
-    if p.lc() < 0:
-        scale = -scale
-    return p * scale
+    return p * (-scale if p.lc() < 0 else scale)
+
+
+def _normalize_params(p: Poly) -> Poly:
+    field = p.ring.field
+    lcm = None
+    for c in p.terms.values():
+        lcm = c.den if lcm is None else lcm * c.den // lcm.gcd(c.den)
+    nums = {e: c.num * (lcm // c.den) for e, c in p.terms.items()}
+    content = None
+    for n in nums.values():
+        content = n if content is None else content.gcd(n)
+    nums = {e: n // content for e, n in nums.items()}
+    lead = int(nums[p.lm()].leading_coefficient())
+    if field.characteristic:
+        inv = pow(lead, -1, field.characteristic)
+        nums = {e: n * inv for e, n in nums.items()}
+    elif lead < 0:
+        nums = {e: -n for e, n in nums.items()}
+    return Poly(p.ring, {e: field.from_polys(n) for e, n in nums.items()})
 
 
 def standard_basis(ideal: Ideal) -> list[Poly]:
@@ -243,8 +262,7 @@ def maxideal(ctx, k: int) -> Ideal:
         for a in range(left, -1, -1):
             rec(i + 1, left - a, cur + [a])
     rec(0, k, [])
-    mons = sorted((ring.monomial(e) for e in exps), key=lambda p: ring.order.key(p.lm()), reverse=True)
-    return Ideal(ring, mons)
+    return Ideal(ring, [ring.monomial(e) for e in sorted(exps)])  # Singular lists them in increasing lex order
 
 
 # ---------------------------------------------------------------- matrices

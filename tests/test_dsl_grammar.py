@@ -212,6 +212,7 @@ def test_positions():
     ("int i = 1 $ 2;", 1, 11, "unexpected character '$'"),
     ("f(1,,2);", 1, 5, "unexpected ','"),
     ("x +", 1, 4, "incomplete statement"),
+    ("ideals I = x;", 1, 8, "'ideals' is not a type"),
 ])
 def test_syntax_errors(src, line, col, msg):
     with pytest.raises(MechSyntaxError) as info:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from fractions import Fraction
 import shutil
 import subprocess
 
@@ -13,14 +14,14 @@ SINGULAR = shutil.which("Singular")
 def parse_poly(ring: PolyRing, text: str) -> Poly:
     """A polynomial from Singular's long form (``3*x^2*y-1/2*z``)."""
     names = {n: g for n, g in zip(ring.names, ring.gens())}
-    expr = re.sub(r"(\d+)/(\d+)", r"(\1/\2)", text.replace("^", "**"))
+    expr = re.sub(r"(\d+)/(\d+)", r"Fraction(\1,\2)", text.replace("^", "**"))
     value = eval(expr, {"__builtins__": {}}, _Scope(ring, names))  # noqa: S307 - test data only
     return value if isinstance(value, Poly) else ring.const(value)
 
 
 class _Scope(dict):
     def __init__(self, ring: PolyRing, names: dict[str, Poly]) -> None:
-        super().__init__(names)
+        super().__init__(names, Fraction=Fraction)
         self.ring = ring
 
     def __missing__(self, key: str):

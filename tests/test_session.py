@@ -1,0 +1,68 @@
+"""The Python API: Session.execute / eval / item access, values to and from sympy, errors."""
+import pytest
+import sympy
+
+from mech import MechError, MechNameError, MechSyntaxError, Session
+from mech.dsl.values import Ideal, IntVec, List
+
+
+@pytest.fixture
+def s():
+    ses = Session()
+    ses.execute("ring r = 0,(x,y,z),dp; ideal I = x2-y, xy-z;")
+    return ses
+
+
+def test_execute_returns_printed_text(s):
+    assert s.execute("std(I);") == "_[1]=y2-xz\n_[2]=xy-z\n_[3]=x2-y\n"
+    assert s.execute("int k = 1;") == ""
+
+
+def test_eval_returns_values(s):
+    G = s.eval("std(I)")
+    assert isinstance(G, Ideal) and len(G.gens) == 3
+    x, y, z = sympy.symbols("x y z")
+    assert G.to_sympy() == [y**2 - x*z, x*y - z, x**2 - y]
+    assert s.eval("dim(std(I))") == 1
+    assert s.eval("1, 2") == (1, 2)
+    assert s.eval('"abc"') == "abc"
+    assert s.eval("print(1)") is None
+
+
+def test_items(s):
+    x, y, z = sympy.symbols("x y z")
+    s["f"] = x**3 + sympy.Rational(1, 2) * y
+    assert s.execute("f; reduce(f, std(I));") == "x3+1/2y\n1/2y+z\n"
+    s["I"] = "x2-y, xy-z, z"
+    assert s.execute("I;") == "I[1]=x2-y\nI[2]=xy-z\nI[3]=z\n"
+    s["n"] = 5
+    s["name"] = "hello"
+    s["J"] = [x, y**2]
+    s["v"] = [1, 2, 3]
+    assert s.execute("n; name; J; v; typeof(J); typeof(v);") == "5\nhello\nJ[1]=x\nJ[2]=y2\n1,2,3\nideal\nintvec\n"
+    assert s["n"] == 5 and s["name"] == "hello" and isinstance(s["v"], IntVec)
+    assert "I" in s and "nothing" not in s
+    with pytest.raises(MechNameError):
+        s["nothing"]
+    s["n"] = 7
+    assert s.eval("n + 1") == 8
+    s["L"] = [1, "a"]
+    assert isinstance(s["L"], List)
+
+
+def test_errors_carry_position(s):
+    with pytest.raises(MechNameError) as info:
+        s.execute("int k = 1;\nk = k + q;")
+    e = info.value
+    assert (e.line, e.column) == (2, 9) and isinstance(e, MechError)
+    with pytest.raises(MechSyntaxError):
+        s.eval("1 +")
+    with pytest.raises(MechError):
+        s["f"] = sympy.Symbol("w")  # not a ring variable
+
+
+def test_sessions_are_independent():
+    a, b = Session(), Session()
+    a.execute("int i = 1;")
+    with pytest.raises(MechNameError):
+        b.execute("i;")
