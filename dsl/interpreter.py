@@ -12,6 +12,7 @@ from __future__ import annotations
 import os
 import sys
 import time
+import weakref
 from pathlib import Path
 from typing import Any, Callable, Optional, TextIO
 
@@ -22,7 +23,7 @@ from .errors import (MechError, MechInternalError, MechNameError, MechRuntimeErr
                      MechTypeError, Note, Source)
 from .parser import parse, split_complete
 from .printing import join_outputs, render
-from .rings import build_ring, default_ring
+from .rings import build_ring, default_ring, indexed_names
 from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring, convert, is_ring_dependent,
                      to_int, to_matrix, to_poly, typeof)
 
@@ -114,7 +115,7 @@ class Interpreter:
         self.globals: dict[str, Var] = {}
         self.frames: list[Frame] = [Frame(0, self.globals)]
         self.ring: Optional[Ring] = None
-        self.rings: list[Ring] = []
+        self.rings: weakref.WeakSet[Ring] = weakref.WeakSet()  # for 'it belongs to ring r' hints
         self.options: set[str] = set(DEFAULT_OPTIONS)
         self.loaded_libs: set[str] = set()
         self.source = Source("<string>", "")
@@ -419,7 +420,7 @@ class Interpreter:
         else:
             ring = build_ring(s.value, self.eval)
         ring.name = s.items[0].name
-        self.rings.append(ring)
+        self.rings.add(ring)
         self.declare(ring.name, "ring", ring)
         self.ring = ring
 
@@ -891,16 +892,6 @@ class Interpreter:
             raise MechRuntimeError(f"index {i} out of range (the {what} has {len(seq)} entries)")
         return seq[i - 1]
 
-    def _args(self, nodes: list[A.Expr]) -> list[Any]:
-        out: list[Any] = []
-        for n in nodes:
-            v = self.eval(n)
-            if isinstance(v, ExprList):
-                out.extend(v.items)
-            else:
-                out.append(v)
-        return out
-
     def _eval_call(self, node: A.Call) -> Any:
         f = node.func
         if isinstance(f, A.Name):
@@ -909,28 +900,41 @@ class Interpreter:
             if var is not None:
                 v = var.value
                 if isinstance(v, Proc):
-                    return self.call_proc(v, self._args(node.args), node)
+                    return self.call_proc(v, self._values(node.args), node)
                 if isinstance(v, Map):
                     return self.apply_map(v, node.args)
             cmd = self.registry.find(name, self.loaded_libs)
             if cmd is not None:
                 return self.call_command(cmd, node.args)
-            if self.ring is not None:
-                idx = [self.eval(a) for a in node.args]
-                if idx and all(type(i) is int for i in idx):
-                    vname = f"{name}({','.join(str(i) for i in idx)})"
-                    k = self.ring.var_index(vname)
-                    if k is not None:
-                        return self.ring.poly.gen(k)
+            gens = self._indexed_vars(node)
+            if gens is not None:
+                return gens
             if var is not None:
                 raise MechTypeError(f"'{name}' is a {typeof(var.value)}, not a procedure")
             raise self.registry.unknown_command(name)
+        if isinstance(f, A.Call):
+            gens = self._indexed_vars(node)
+            if gens is not None:
+                return gens
         v = self.eval(f)
         if isinstance(v, Proc):
-            return self.call_proc(v, self._args(node.args), node)
+            return self.call_proc(v, self._values(node.args), node)
         if isinstance(v, Map):
             return self.apply_map(v, node.args)
         raise MechTypeError(f"a {typeof(v)} cannot be called")
+
+    def _indexed_vars(self, node: A.Call) -> Any:
+        """Ring variables written ``x(2)``, ``x(1..3)`` (several), ``y(1)(2)``; None if not such."""
+        if self.ring is None:
+            return None
+        names = indexed_names(node, self.eval)
+        if names is None:
+            return None
+        idx = [self.ring.var_index(n) for n in names]
+        if any(i is None for i in idx):
+            return None
+        gens = [self.ring.poly.gen(i) for i in idx]
+        return gens[0] if len(gens) == 1 else ExprList(gens)
 
     def _eval_typecall(self, node: A.TypeCall) -> Any:
         cmd = self.registry.find(node.type, self.loaded_libs)
@@ -941,7 +945,7 @@ class Interpreter:
     def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:
         if cmd.raw:
             return self.registry.invoke_raw(cmd, self, arg_nodes)
-        args = self._args(arg_nodes)
+        args = self._values(arg_nodes)
         saved = self.argnames
         self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
         try:

@@ -79,17 +79,40 @@ def _characteristic(node: A.Expr, evaluate: Evaluate) -> tuple[int, tuple[str, .
     return v, tuple(params)
 
 
+def indexed_names(node: A.Expr, evaluate: Evaluate) -> list[str] | None:
+    """The names ``x(1)``, ``x(2)``, ... that ``x(1..2)`` or ``y(1..2)(1..3)`` stand for (None when the
+    node is not such a call or an index is not an int or intvec)."""
+    levels: list[list[A.Expr]] = []
+    while isinstance(node, A.Call):
+        levels.append(node.args)
+        node = node.func
+    if not isinstance(node, A.Name) or not levels:
+        return None
+    names = [node.id]
+    for args in reversed(levels):
+        idx: list[int] = []
+        for a in args:
+            v = evaluate(a)
+            if isinstance(v, bool) or not isinstance(v, (int, IntVec)):
+                return None
+            idx.extend(_ints(v, "an index"))
+        if not idx:
+            return None
+        names = [f"{n}({i})" for n in names for i in idx]
+    return names
+
+
 def _names(node: A.Expr, evaluate: Evaluate) -> list[str]:
     items = node.items if isinstance(node, A.Tuple) else [node]
     names: list[str] = []
     for it in items:
         if isinstance(it, A.Name):
             names.append(it.id)
-        elif isinstance(it, A.Call) and isinstance(it.func, A.Name):
-            for i in _int_args(it.args, evaluate, "a variable index"):
-                names.append(f"{it.func.id}({i})")
-        else:
+            continue
+        indexed = indexed_names(it, evaluate)
+        if indexed is None:
             raise MechRuntimeError("expected a variable name such as x or x(1..5)")
+        names.extend(indexed)
     if len(set(names)) != len(names):
         raise MechRuntimeError("variable names must be distinct")
     if not names:

@@ -80,6 +80,7 @@ def mora_normal_form(f: Terms, reducers: Sequence[_Elem], key: Callable) -> Term
     h = f
     extra: list[_Elem] = []
     while h:
+        h = cancel_unit(h, key)
         lm = max(h, key=key)
         mask = _mask(lm)
         best = None

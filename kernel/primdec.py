@@ -120,98 +120,180 @@ def _vdim(basis: Sequence[Poly], xs: Sequence[int]) -> int:
     return count
 
 
-def _minimal_poly(basis: Sequence[Poly], ring: PolyRing, target: int, xs: Sequence[int],
-                  us: Sequence[int]) -> Poly:
-    """The minimal polynomial over ``K(u)`` of the variable ``target`` (an element of
-    ``K[u][target]`` of least degree in the ideal)."""
-    others = [i for i in xs if i != target]
-    order_ring = with_order(ring, product_order(ring.nvars, [others, [target], us]))
-    gb = groebner(move(basis, order_ring), order_ring)
-    cands = [p for p in gb if not any(p.lm()[i] for i in others)]
-    best = min(cands, key=lambda p: p.lm()[target])
-    return Poly(ring, best.terms)
-
-
 def _in_target(f: Poly, target: int) -> list[tuple[Poly, int]]:
     """Irreducible factors of ``f`` (with multiplicity) involving the variable ``target``."""
     return [(g, m) for g, m in factorize(f)[1] if g.degree_in(target) > 0]
 
 
-# --- zero-dimensional primes over K(u) ---------------------------------------------------
+# --- zero-dimensional decomposition over K(u) --------------------------------------------
 
-def _extend_ring(ring: PolyRing, xs: Sequence[int], us: Sequence[int]) -> PolyRing:
-    """``ring`` plus a last variable ``t`` ordered ``(dp(x), dp(t), dp(u))``."""
-    n = ring.nvars
-    name = "t"
-    while name in ring.names:
-        name = "_" + name
-    return PolyRing(ring.field, list(ring.names) + [name], product_order(n + 1, [xs, [n], us]))
+class _ZeroDim:
+    """Decompositions of ideals ``I`` of ``K[x,u]`` with ``I K(u)[x]`` zero-dimensional;
+    ``ring`` has the product ordering ``x >> u`` and ideals are Gröbner bases there.
+    Components are ideals of ``K[x,u]`` whose extensions to ``K(u)[x]`` are the primes and
+    primaries (contract them with :func:`_contract`)."""
 
+    def __init__(self, ring: PolyRing, xs: Sequence[int], us: Sequence[int]) -> None:
+        self.ring, self.xs, self.us = ring, list(xs), list(us)
+        self.rng = random.Random(20240613)
+        self.minpolys: dict[tuple, Poly] = {}
+        n = ring.nvars
+        name = "t"
+        while name in ring.names:
+            name = "_" + name
+        # ring plus a last variable t for linear forms, ordered (dp(x), dp(t), dp(u))
+        self.big = PolyRing(ring.field, list(ring.names) + [name],
+                            product_order(n + 1, [self.xs, [n], self.us]))
 
-def _zero_dim_primes(basis: list[Poly], ring: PolyRing, xs: Sequence[int],
-                     us: Sequence[int]) -> list[list[Poly]]:
-    """The primes of ``K(u)[x]`` containing ``I`` (zero-dimensional over ``K(u)``), each as an
-    ideal of ``K[x,u]`` whose extension is the prime; ``ring`` has a product ordering
-    ``x >> u`` and ``basis`` is a Gröbner basis there."""
-    out: list[list[Poly]] = []
-    todo = [basis]
-    rng = random.Random(20240613)
-    while todo:
-        g = todo.pop()
-        if _unit_over_ku(g, xs):
-            continue
-        d = _vdim(g, xs)
-        if d == 1:
-            out.append(g)
-            continue
-        status, extra = "radical", []
-        for i in reversed(xs):
-            facs = _in_target(_minimal_poly(g, ring, i, xs, us), i)
-            if len(facs) > 1:
-                todo.extend(groebner(g + [p], ring) for p, _ in facs)
-                status = "split"
-                break
-            p, m = facs[0]
-            if p.degree_in(i) == d:
-                out.append(g)
-                status = "prime"
-                break
-            if m > 1:
-                extra.append(p)
-        if status != "radical":
-            continue
-        if extra:
-            todo.append(groebner(g + extra, ring))
-            continue
-        todo.extend(_split_by_linear_form(g, ring, xs, us, d, rng, out))
-    return out
+    def minimal_poly(self, g: list[Poly], target: int) -> Poly:
+        """The minimal polynomial over ``K(u)`` of the variable ``target`` modulo ``g``."""
+        key = (tuple(g), target)
+        if key not in self.minpolys:
+            if self.us:
+                self.minpolys[key] = self._eliminant(g, self.ring, target, self.xs)
+            else:
+                self.minpolys[key] = self._krylov(g, self.ring.gen(target), target)
+        return self.minpolys[key]
 
+    def _eliminant(self, g: list[Poly], ring: PolyRing, target: int, xs: Sequence[int]) -> Poly:
+        """An element of least degree of ``I ∩ K[u][target]`` (an elimination basis)."""
+        others = [i for i in xs if i != target]
+        order_ring = with_order(ring, product_order(ring.nvars, [others, [target], self.us]))
+        gb = groebner(move(g, order_ring), order_ring)
+        best = min((p for p in gb if not any(p.lm()[i] for i in others)), key=lambda p: p.lm()[target])
+        return Poly(ring, best.terms)
 
-def _split_by_linear_form(g: list[Poly], ring: PolyRing, xs: Sequence[int], us: Sequence[int],
-                          d: int, rng: random.Random, out: list[list[Poly]]) -> list[list[Poly]]:
-    """Generic coordinates for a radical ``g`` whose variables are no primitive elements:
-    the minimal polynomial of a random linear form either splits ``g`` (the pieces are
-    returned) or has degree ``d`` (then ``g`` is prime and goes to ``out``)."""
-    big = _extend_ring(ring, xs, us)
-    n = ring.nvars
-    lifted = [Poly(big, {e + (0,): c for e, c in p.terms.items()}) for p in g]
-    p_char = ring.field.characteristic
-    span = 30 if not p_char else min(p_char - 1, 1000)
-    for attempt in range(_ATTEMPTS):
-        coeffs = [rng.randint(1, span + attempt * 10) for _ in xs]
-        ell = ring.zero()
-        for c, i in zip(coeffs, xs):
-            ell = ell + ring.gen(i) * c
+    def _krylov(self, g: list[Poly], ell: Poly, var: int) -> Poly:
+        """Over a field (no parameters): the minimal polynomial of multiplication by ``ell``
+        on ``K[x]/I``, in the variable ``var``, from normal forms of its powers."""
+        ring = self.ring
+        rows: list[tuple[Exp, Poly, dict[int, object]]] = []
+        power, k = normal_form(ring.one(), g), 0
+        while True:
+            vec, combo = power, {k: ring.field.one}
+            for piv, row, rc in rows:
+                c = vec.terms.get(piv)
+                if c is not None:
+                    vec = vec - row * c
+                    for j, v in rc.items():
+                        combo[j] = combo.get(j, ring.field.zero) - v * c
+            if vec.is_zero():
+                terms = {}
+                for j, v in combo.items():
+                    if v != 0:
+                        e = [0] * ring.nvars
+                        e[var] = j
+                        terms[tuple(e)] = v
+                return Poly(ring, terms)
+            piv = vec.lm()
+            inv = ring.field.one / vec.terms[piv]
+            rows.append((piv, vec * inv, {j: v * inv for j, v in combo.items()}))
+            k += 1
+            power = normal_form(ell * power, g)
+
+    def form_minimal_poly(self, g: list[Poly], ell: Poly) -> Poly:
+        """The minimal polynomial of the linear form ``ell`` as a polynomial in the extra
+        variable ``t`` of ``self.big``."""
+        n = self.ring.nvars
+        if not self.us:
+            f = self._krylov(g, ell, 0)
+            return Poly(self.big, {(0,) * n + (e[0],): c for e, c in f.terms.items()})
+        big = self.big
+        lifted = [Poly(big, {e + (0,): c for e, c in p.terms.items()}) for p in g]
         ell_big = Poly(big, {e + (0,): c for e, c in ell.terms.items()})
-        f = _minimal_poly(lifted + [big.gen(n) - ell_big], big, n, list(xs) + [n], us)
-        facs = _in_target(f, n)
-        if len(facs) > 1:
-            images = [ring.gen(i) for i in range(n)] + [ell]
-            return [groebner(g + [p.compose(images, ring)], ring) for p, _ in facs]
-        if facs[0][0].degree_in(n) == d:
-            out.append(g)
-            return []
-    raise RuntimeError("no primitive element found (inseparable extension or a too small field)")
+        return self._eliminant(lifted + [big.gen(n) - ell_big], big, n, self.xs + [n])
+
+    def random_form(self, attempt: int) -> Poly:
+        p = self.ring.field.characteristic
+        span = 30 + 10 * attempt if not p else min(p - 1, 1000)
+        ell = self.ring.zero()
+        for i in self.xs:
+            ell = ell + self.ring.gen(i) * self.rng.randint(1, span)
+        return ell
+
+    def split_by_form(self, g: list[Poly], powers: bool) -> tuple[list[list[Poly]], int]:
+        """Factor the minimal polynomial of random linear forms until it has several
+        irreducible factors (returns the pieces ``g + p(ell)`` or ``g + p(ell)^m``) or a
+        factor of degree ``vdim(g)`` (returns ``([], degree)``)."""
+        d = _vdim(g, self.xs)
+        n = self.ring.nvars
+        for attempt in range(_ATTEMPTS):
+            ell = self.random_form(attempt)
+            facs = _in_target(self.form_minimal_poly(g, ell), n)
+            if len(facs) > 1:
+                images = [self.ring.gen(i) for i in range(n)] + [ell]
+                return [groebner(g + [Poly(self.big, (p ** m if powers else p).terms).compose(
+                    images, self.ring)], self.ring) for p, m in facs], 0
+            if facs[0][0].degree_in(n) == d:
+                return [], d
+        raise RuntimeError("no primitive element found (inseparable extension or a too small field)")
+
+    def primes(self, basis: list[Poly]) -> list[list[Poly]]:
+        """The primes containing ``I`` over ``K(u)``: split by factors of minimal polynomials,
+        make radical by adding their squarefree parts (Seidenberg), recognise a prime by a
+        primitive element (variable or random linear form)."""
+        out: list[list[Poly]] = []
+        todo = [basis]
+        while todo:
+            g = todo.pop()
+            if _unit_over_ku(g, self.xs):
+                continue
+            d = _vdim(g, self.xs)
+            if d == 1:
+                out.append(g)
+                continue
+            status, extra = "radical", []
+            for i in reversed(self.xs):
+                facs = _in_target(self.minimal_poly(g, i), i)
+                if len(facs) > 1:
+                    todo.extend(groebner(g + [p], self.ring) for p, _ in facs)
+                    status = "split"
+                    break
+                p, m = facs[0]
+                if p.degree_in(i) == d:
+                    out.append(g)
+                    status = "prime"
+                    break
+                if m > 1:
+                    extra.append(p)
+            if status != "radical":
+                continue
+            if extra:
+                todo.append(groebner(g + extra, self.ring))
+                continue
+            pieces, _ = self.split_by_form(g, powers=False)
+            if pieces:
+                todo.extend(pieces)
+            else:
+                out.append(g)
+        return out
+
+    def primaries(self, basis: list[Poly]) -> list[tuple[list[Poly], list[Poly]]]:
+        """The primary components over ``K(u)`` with their primes: split by the prime-power
+        factors of minimal polynomials (the pieces are coprime), then by random linear
+        forms until each piece has a single prime."""
+        out = []
+        todo = [basis]
+        while todo:
+            g = todo.pop()
+            if _unit_over_ku(g, self.xs):
+                continue
+            split = False
+            for i in reversed(self.xs):
+                facs = _in_target(self.minimal_poly(g, i), i)
+                if len(facs) > 1:
+                    todo.extend(groebner(g + [p ** m], self.ring) for p, m in facs)
+                    split = True
+                    break
+            if split:
+                continue
+            primes = self.primes(g)
+            if len(primes) == 1:
+                out.append((g, primes[0]))
+                continue
+            pieces, _ = self.split_by_form(g, powers=True)
+            todo.extend(pieces)
+        return out
 
 
 def _contract(basis: list[Poly], ring: PolyRing, xs: Sequence[int]) -> tuple[list[Poly], Poly]:
@@ -240,14 +322,18 @@ class _Reduction:
         self.h = Poly(ring, _sqfree_product([_lc_x(p, self.xs) for p in self.bbasis],
                                             self.bring).terms)
 
+    def _contracted(self, basis: list[Poly]) -> list[Poly]:
+        return groebner(move(_contract(basis, self.bring, self.xs)[0], self.ring), self.ring)
+
     def primes(self) -> list[list[Poly]]:
         """The contracted primes (reduced bases in the input ring)."""
-        found = _zero_dim_primes(self.bbasis, self.bring, self.xs, self.us)
-        out = []
-        for p in found:
-            pc, _ = _contract(p, self.bring, self.xs)
-            out.append(groebner(move(pc, self.ring), self.ring))
-        return out
+        zd = _ZeroDim(self.bring, self.xs, self.us)
+        return [self._contracted(p) for p in zd.primes(self.bbasis)]
+
+    def primaries(self) -> list[Component]:
+        """The contracted primary components of ``I K(u)[x]`` with their primes."""
+        zd = _ZeroDim(self.bring, self.xs, self.us)
+        return [(self._contracted(q), self._contracted(p)) for q, p in zd.primaries(self.bbasis)]
 
 
 # --- minimal associated primes ----------------------------------------------------------
@@ -413,15 +499,8 @@ def _primdec_gtz(basis: list[Poly], ring: PolyRing) -> list[Component]:
     if is_unit(basis):
         return []
     red = _Reduction(basis, ring)
-    primes = red.primes()
-    h = red.h
-    sat = basis if h.is_constant() else saturate_poly(basis, h, ring)
-    if len(primes) == 1:
-        comps = [(sat, primes[0])]
-    else:
-        comps = [(saturate_poly(sat, _separator(primes, i, ring), ring), p)
-                 for i, p in enumerate(primes)]
-    rest = _split_off(basis, h, ring, sat)
+    comps = red.primaries()
+    rest = _split_off(basis, red.h, ring)
     if rest is not None:
         comps += _primdec_gtz(rest, ring)
     return comps

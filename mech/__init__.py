@@ -2,20 +2,22 @@
 
 Python API::
 
-    from mech import Session, MechError
+    from mech import Session, MechError, to_sympy
     s = Session()
-    s.execute("ring r = 0, (x,y,z), dp; ideal I = x2-y, xy-z;")
-    G = s.eval("std(I)")          # an Ideal: G.gens are kernel polynomials, G.to_sympy() sympy ones
-    to_sympy(s.eval("x2 + 1/2"))  # any value as sympy objects
-    s["f"] = "x3"                 # strings are parsed as mech expressions for existing variables
-    print(s.execute("reduce(x3, std(I));"))   # 'z\\n'
+    s.execute("ring r = 0, (x,y,z), dp; ideal I = x2-y, xy-z;")   # returns the printed text: ''
+    G = s.eval("std(I)")               # an Ideal; G.gens are kernel polynomials
+    G.to_sympy()                       # [-x*z + y**2, x*y - z, x**2 - y]
+    s.execute("reduce(x3, std(I));")   # 'z\\n'
+    s["I"] = "x2-y, xy-z, z"           # a string for an existing ideal is read as mech code
+    s["f"] = to_sympy(s.eval("x+y"))**2   # sympy expressions become polys
+    s.execute("f;")                    # 'x2+2xy+y2\\n'
 """
 from .dsl.convert import to_sympy
-from .session import Session
 from .dsl.errors import (MechError, MechInternalError, MechNameError, MechRuntimeError, MechSyntaxError,
-                          MechTypeError)
+                         MechTypeError)
+from .session import Session
 
 __version__ = "0.1.0"
 
-__all__ = ["Session", "to_sympy", "MechError", "MechSyntaxError", "MechRuntimeError", "MechNameError", "MechTypeError",
-           "MechInternalError", "__version__"]
+__all__ = ["Session", "to_sympy", "MechError", "MechSyntaxError", "MechRuntimeError", "MechNameError",
+           "MechTypeError", "MechInternalError", "__version__"]

@@ -386,10 +386,6 @@ def print_(ctx, x: Any) -> None:
 # ---------------------------------------------------------------- rings
 
 
-def _ring_arg(ctx: Any, r: Ring | None) -> Ring:
-    return r if r is not None else ctx.basering()
-
-
 @command("nvars")
 def nvars(r: Ring) -> int:
     """nvars(r): the number of ring variables."""
@@ -420,28 +416,28 @@ def par(ctx, i: int) -> Number:
     return ctx._param(ring, ring.params[i - 1])
 
 
+def _name_list(ctx: Any, r: Ring | int, i: int | None, what: str) -> str:
+    """The variable (``what="variables"``) or parameter names of a ring, or the i-th of them."""
+    if isinstance(r, int):
+        r, i = ctx.basering(), r
+    seq = r.names if what == "variables" else r.params
+    if i is None:
+        return ",".join(seq)
+    if not 1 <= i <= len(seq):
+        raise MechRuntimeError(f"index {i} out of range: the ring has {len(seq)} {what}")
+    return seq[i - 1]
+
+
 @command("varstr")
 def varstr(ctx, r: Ring | int, i: int | None = None) -> str:
     """varstr(r): the variable names separated by commas; varstr(i) or varstr(r, i): the i-th."""
-    if isinstance(r, int):
-        r, i = ctx.basering(), r
-    if i is None:
-        return ",".join(r.names)
-    if not 1 <= i <= len(r.names):
-        raise MechRuntimeError(f"varstr: the ring has {len(r.names)} variables")
-    return r.names[i - 1]
+    return _name_list(ctx, r, i, "variables")
 
 
 @command("parstr")
 def parstr(ctx, r: Ring | int, i: int | None = None) -> str:
     """parstr(r): the parameter names separated by commas; parstr(i): the i-th."""
-    if isinstance(r, int):
-        r, i = ctx.basering(), r
-    if i is None:
-        return ",".join(r.params)
-    if not 1 <= i <= len(r.params):
-        raise MechRuntimeError(f"parstr: the ring has {len(r.params)} parameters")
-    return r.params[i - 1]
+    return _name_list(ctx, r, i, "parameters")
 
 
 @command("charstr")

@@ -66,3 +66,18 @@ def test_sessions_are_independent():
     a.execute("int i = 1;")
     with pytest.raises(MechNameError):
         b.execute("i;")
+
+
+def test_package_docstring_example():
+    """The example in mech/__init__.py's docstring runs and gives the values its comments show."""
+    import mech
+    env: dict = {}
+    for line in mech.__doc__.split("::\n", 1)[1].splitlines():
+        code, _, comment = line.strip().partition("  # ")
+        if not code:
+            continue
+        shown = comment.rsplit(": ", 1)[-1].strip()
+        if shown.startswith(("'", "[")):
+            assert repr(eval(code, env)) == shown, code
+        else:
+            exec(code, env)

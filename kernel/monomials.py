@@ -1,0 +1,110 @@
+"""Monomials packed into Python integers, for the F4 engine.
+
+A global monomial ordering is a nonnegative integer weight matrix ``W`` of full rank (every
+global ordering has one: add to a row with a negative entry a multiple of an earlier row
+that is positive in that column, which leaves the ordering unchanged, and drop dependent
+rows).  A monomial ``x^e`` is stored as one integer whose bit fields are, from the most
+significant down, ``W e`` (one field per row), the total degree ``|e|``, and ``e`` itself.
+Every field is nonnegative and keeps its top bit clear, so
+
+* multiplication of monomials is integer addition, division is subtraction;
+* comparing two packed integers compares the monomials in the ordering (``W e`` decides,
+  the lower fields only break ties that cannot happen since ``W`` has full rank);
+* ``a | b`` is one masked subtraction: ``((b | G) - a) & G == G`` where ``G`` holds the
+  guard (top) bit of every field, because no field of ``b - a`` then borrows from the next.
+
+Field widths are chosen for a total-degree bound ``maxdeg``; code building larger monomials
+must check :meth:`Packing.fits` and start again with a wider packing.
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Sequence
+
+from .order import Exp, MonomialOrder
+
+
+def nonnegative_matrix(order: MonomialOrder) -> list[list[int]]:
+    """A nonnegative ``n x n`` integer matrix of full rank defining the same (global) ordering."""
+    n = order.nvars
+    rows: list[list[int]] = []
+    echelon: list[list[Fraction]] = []  # for the rank test
+    for r in order.matrix:
+        if not _independent(echelon, r):
+            continue
+        r = list(r)
+        for j in range(n):
+            if r[j] < 0:
+                s = next(s for s in reversed(rows) if s[j] > 0)  # exists for a global ordering
+                c = -(r[j] // s[j])
+                r = [a + c * b for a, b in zip(r, s)]
+        rows.append(r)
+        if len(rows) == n:
+            break
+    return rows
+
+
+def _independent(echelon: list[list[Fraction]], row: Sequence[int]) -> bool:
+    """Whether ``row`` is independent of the rows in ``echelon`` (which it then joins)."""
+    v = [Fraction(x) for x in row]
+    for e in echelon:
+        piv = next(i for i, x in enumerate(e) if x)
+        if v[piv]:
+            f = v[piv] / e[piv]
+            v = [a - f * b for a, b in zip(v, e)]
+    if any(v):
+        echelon.append(v)
+        return True
+    return False
+
+
+class Packing:
+    """Packed monomials in ``nvars`` variables for a global ordering, total degree <= ``maxdeg``."""
+
+    def __init__(self, order: MonomialOrder, maxdeg: int) -> None:
+        n = self.nvars = order.nvars
+        self.maxdeg = maxdeg
+        W = nonnegative_matrix(order)
+        ebits = maxdeg.bit_length() + 1
+        widths = [(max(r) * maxdeg).bit_length() + 1 for r in W] + [ebits] * (n + 1)
+        shifts, pos = [], 0
+        for w in reversed(widths):
+            shifts.append(pos)
+            pos += w
+        shifts.reverse()
+        self.bits = pos
+        self.guard = sum(1 << (s + w - 1) for s, w in zip(shifts, widths))
+        self.eshifts = shifts[n + 1:]
+        self.dshift = shifts[n]
+        self.emask = (1 << ebits) - 1
+        # the packed form of each variable: W's column, degree 1, exponent 1
+        self.units = [sum(W[i][j] << shifts[i] for i in range(n)) + (1 << shifts[n]) + (1 << shifts[n + 1 + j])
+                      for j in range(n)]
+
+    def fits(self, degree: int) -> bool:
+        return degree <= self.maxdeg
+
+    def pack(self, e: Exp) -> int:
+        return sum(k * u for k, u in zip(e, self.units) if k)
+
+    def unpack(self, m: int) -> Exp:
+        mask = self.emask
+        return tuple([(m >> s) & mask for s in self.eshifts])
+
+    def degree(self, m: int) -> int:
+        return (m >> self.dshift) & self.emask
+
+    def divides(self, a: int, b: int) -> bool:
+        g = self.guard
+        return ((b | g) - a) & g == g
+
+    def lcm(self, a: int, b: int) -> int:
+        mask, units = self.emask, self.units
+        m = 0
+        for s, u in zip(self.eshifts, units):
+            x, y = (a >> s) & mask, (b >> s) & mask
+            if x < y:
+                x = y
+            if x:
+                m += x * u
+        return m
