@@ -14,6 +14,7 @@ from typing import Optional
 from .ast import Pos
 
 MAX_NOTES = 12  # procedure-call notes shown under an error (deep recursion elides the middle)
+MAX_SHOWN = 200  # characters of a long source line shown under an error (around its column)
 
 
 @dataclass
@@ -24,7 +25,9 @@ class Source:
     text: str
 
     def line(self, n: int) -> str:
-        lines = self.text.splitlines()
+        if getattr(self, "_lines", None) is None or self._lines[0] is not self.text:
+            self._lines = (self.text, self.text.splitlines())  # split once: long scripts warn often
+        lines = self._lines[1]
         return lines[n - 1] if 0 < n <= len(lines) else ""
 
 
@@ -114,6 +117,9 @@ class MechInternalError(MechError):
 
 def _entry(source: Optional[Source], pos: Optional[Pos], kind: str, message: str, underline: bool) -> str:
     name = source.name if source else "<input>"
+    message = message.replace("\r", "\\r").replace("\n", "\\n")  # one line, whatever strings it quotes
+    if len(message) > 2 * MAX_SHOWN:
+        message = message[:2 * MAX_SHOWN] + "..."
     if pos is None or pos.line == 0:
         return f"{name}: {kind}: {message}\n"
     head = f"{name}:{pos.line}:{pos.col}: {kind}: {message}\n"
@@ -121,9 +127,12 @@ def _entry(source: Optional[Source], pos: Optional[Pos], kind: str, message: str
     if not text:
         return head
     col = min(pos.col, len(text) + 1)
+    end = pos.end_col if underline and pos.end_line == pos.line else len(text) + 1 if underline else col + 1
+    if len(text) > MAX_SHOWN:  # a long line: the part around the error
+        lo = max(0, min(col - 1 - MAX_SHOWN // 2, len(text) - MAX_SHOWN))
+        cut = ("..." if lo else "") + text[lo:lo + MAX_SHOWN] + ("..." if lo + MAX_SHOWN < len(text) else "")
+        shift = lo - (3 if lo else 0)
+        text, col, end = cut, col - shift, min(end - shift, len(cut) + 1)
     lead = "".join(c if c == "\t" else " " for c in text[:col - 1])
-    width = 1
-    if underline:
-        end = pos.end_col if pos.end_line == pos.line else len(text) + 1
-        width = max(1, end - col)
+    width = max(1, end - col)
     return f"{head}{text}\n{lead}^{'~' * (width - 1)}\n"

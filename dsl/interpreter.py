@@ -9,7 +9,6 @@ the basering, else a short monomial (``x2y``), else it is unknown.
 """
 from __future__ import annotations
 
-import os
 import sys
 import time
 import weakref
@@ -19,9 +18,9 @@ from typing import Any, Callable, Optional, TextIO
 from ..kernel import Poly
 from . import ast as A
 from . import ops
-from .errors import (MechError, MechInternalError, MechNameError, MechRuntimeError, MechSyntaxError,
-                     MechTypeError, Note, Source)
-from .parser import parse, split_complete
+from .errors import MechError, MechInternalError, MechNameError, MechRuntimeError, MechTypeError, Note, Source
+from .limits import LimitExceeded, Limits, limit_error
+from .parser import parse_pieces
 from .printing import join_outputs, render
 from .rings import build_ring, default_ring, indexed_names
 from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring, convert, is_ring_dependent,
@@ -98,15 +97,17 @@ def convert_exception(e: BaseException) -> MechError:
     if isinstance(e, (ValueError, ArithmeticError)):
         return MechRuntimeError(str(e))
     if isinstance(e, MemoryError):
-        return MechRuntimeError("out of memory")
+        return limit_error(e)
     return MechInternalError(f"internal error: {type(e).__name__}: {e}")
 
 
 class Interpreter:
     """Runs mech programs; output goes to ``out`` (flushed after each write when ``flush``)."""
 
-    def __init__(self, out: Optional[TextIO] = None, flush: bool = False, warnings: bool = True) -> None:
+    def __init__(self, out: Optional[TextIO] = None, flush: bool = False, warnings: bool = True,
+                 timeout: Optional[float] = None, max_memory: Optional[float] = None) -> None:
         from ..stdlib import registry
+        self.limits = Limits(timeout, max_memory)  # per statement; see limits.py
         registry.load_commands()
         self.registry = registry
         self.out = out if out is not None else sys.stdout
@@ -146,29 +147,11 @@ class Interpreter:
 
     # ------------------------------------------------------------ running programs
     def execute(self, text: str, name: str = "<string>") -> None:
-        """Parse and run ``text``.  After a syntax error, the complete statements before it
-        still run (as Singular reads statement by statement); then the error is raised."""
+        """Parse and run ``text`` a piece at a time (as Singular reads statement by statement):
+        after a syntax error, the statements before it have run; then the error is raised."""
         source = Source(name, text)
-        try:
-            program = parse(text, source)
-        except MechSyntaxError as err:
-            end, _ = split_complete(text[:self._offset(text, err)])
-            if end:
-                try:
-                    prefix = parse(text[:end], source)
-                except MechSyntaxError:
-                    prefix = None
-                if prefix is not None:
-                    self.run(prefix, source)
-            raise err
-        self.run(program, source)
-
-    @staticmethod
-    def _offset(text: str, err: MechError) -> int:
-        if err.pos is None:
-            return len(text)
-        lines = text.split("\n")
-        return sum(len(x) + 1 for x in lines[:err.pos.line - 1]) + err.pos.col - 1
+        for program in parse_pieces(text, source):
+            self.run(program, source)
 
     def run(self, program: A.Program, source: Source) -> None:
         """Run a parsed program at top level."""
@@ -176,7 +159,7 @@ class Interpreter:
         self.source = source
         try:
             for stmt in program.body:
-                self.exec_stmt(stmt)
+                self.limits.run(self, self.exec_stmt, stmt)
         except (_Break, _Continue) as sig:
             word = "break" if isinstance(sig, _Break) else "continue"
             raise MechRuntimeError(f"{word} outside a loop", self.stmt.pos if self.stmt else None, source)
@@ -227,6 +210,8 @@ class Interpreter:
         except MechError as e:
             e.locate(stmt.pos, self.source)
             raise
+        except LimitExceeded as e:
+            raise limit_error(e).locate(stmt.pos, self.source) from None
         except Exception as e:
             raise convert_exception(e).locate(stmt.pos, self.source) from None
 
@@ -397,6 +382,26 @@ class Interpreter:
             if v is not None:
                 return v
         return self.globals.get(name)
+
+    def visible_names(self) -> dict[str, Var]:
+        """The variables visible here, by name (for the REPL's completion and help)."""
+        names = dict(self.globals)
+        if self.ring is not None:
+            names.update(self.ring.objects)
+        frame = self.frames[-1]
+        if frame.level:
+            names.update(frame.vars)
+            if self.ring is not None:
+                names.update(frame.ring_vars.get(self.ring, {}))
+        return names
+
+    def unwind(self) -> None:
+        """Back to the top level after an interrupt: drop procedure frames an interrupted cleanup left."""
+        if len(self.frames) > 1:
+            self.ring = self.frames[1].ring_at_entry
+            del self.frames[1:]
+        self.stmt = None
+        self._loading_lib = ""
 
     def lookup_in_ring(self, ring: Ring, name: str) -> Optional[Var]:
         """A ring-dependent variable of ``ring`` (not necessarily the basering)."""
@@ -669,10 +674,16 @@ class Interpreter:
         self.load_library(s.name)
 
     def load_library(self, name: str) -> None:
-        """``LIB "name";``: enable a library's commands and run its mech source if it has one."""
-        path = STDLIB_DIR / name
+        """``LIB "name";``: enable a library's commands and run its mech source if it has one: one of
+        mech's libraries, else the file of that name next to the running script (in the current
+        directory for code without a file).  Never a path, so scripts read no other files."""
+        if name in ("", ".", "..") or Path(name).name != name:
+            raise MechNameError(f'LIB takes a library name, not a path: "{name}" (libraries are mech\'s own '
+                                f'or files next to the script)')
+        path = STDLIB_DIR / name if name.endswith(".lib") else Path()  # mech's library sources: stdlib/*.lib
         if name not in self.registry.LIBRARIES and not path.is_file():
-            user = Path(name) if os.path.isabs(name) else Path(self.source.name).parent / name
+            script = Path(self.source.name)
+            user = (script.parent if script.is_file() else Path.cwd()) / name
             if user.is_file():
                 path = user
             else:
@@ -695,9 +706,16 @@ class Interpreter:
 
     def _exec_help(self, s: A.Help) -> None:
         if s.topic is None:
-            names = sorted(n for n, c in self.registry.COMMANDS.items() if not c.lib or c.lib in self.loaded_libs)
-            self.write("help NAME; shows what a command or procedure does. Commands:\n")
-            self.write(_wrap(names) + "\n")
+            self.write("help NAME; shows what a command or procedure does.  Commands by library:\n")
+            libs: dict[str, list[str]] = {}
+            for n, c in self.registry.COMMANDS.items():
+                libs.setdefault(c.lib or "", []).append(n)
+            for lib in sorted(libs):
+                head = "built in" if not lib else lib if lib in self.loaded_libs else f'{lib} (LIB "{lib}";)'
+                self.write(f"{head}:\n{_wrap(sorted(libs[lib], key=str.lower), indent='  ')}\n")
+            procs = sorted(v.name for v in self.visible_names().values() if isinstance(v.value, Proc))
+            if procs:
+                self.write(f"procedures:\n{_wrap(procs, indent='  ')}\n")
             return
         var = self.lookup(s.topic)
         if var is not None and isinstance(var.value, Proc):
@@ -832,8 +850,23 @@ class Interpreter:
             return int(ops.truth(self.eval(node.left)) and ops.truth(self.eval(node.right)))
         if op == "||":
             return int(ops.truth(self.eval(node.left)) or ops.truth(self.eval(node.right)))
-        a = self.eval(node.left)
-        b = self.eval(node.right)
+        spine = [node]  # a long sum x+y+...+z nests to the left: evaluate its left spine by a loop
+        while type(spine[-1].left) is A.BinOp and spine[-1].left.op not in ("&&", "||"):
+            spine.append(spine[-1].left)
+        a = self.eval(spine[-1].left)
+        for n in reversed(spine[1:]):
+            b = self.eval(n.right)
+            try:
+                a = self._binary(n.op, a, b)
+            except MechError as e:
+                if e.pos is None:
+                    e.locate(n.pos, self.source, True)
+                raise
+            except Exception as e:
+                raise convert_exception(e).locate(n.pos, self.source, True) from None
+        return self._binary(op, a, self.eval(node.right))
+
+    def _binary(self, op: str, a: Any, b: Any) -> Any:
         ring = self.ring.poly if self.ring else None
         if op in ("==", "!=", "<", "<=", ">", ">="):
             return ops.compare(op, a, b, ring)
@@ -943,13 +976,15 @@ class Interpreter:
         return self.call_command(cmd, node.args)
 
     def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:
-        if cmd.raw:
-            return self.registry.invoke_raw(cmd, self, arg_nodes)
-        args = self._values(arg_nodes)
+        args = None if cmd.raw else self._values(arg_nodes)
         saved = self.argnames
-        self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
         try:
+            if cmd.raw:
+                return self.registry.invoke_raw(cmd, self, arg_nodes)
+            self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
             return self.registry.invoke(cmd, self, args)
+        except (LimitExceeded, MemoryError) as e:  # "time limit of 5 s exceeded in std"
+            raise limit_error(e, cmd.name) from None
         finally:
             self.argnames = saved
 
@@ -1042,26 +1077,50 @@ class Interpreter:
             finally:
                 self.ring = saved
         images = list(m.images) + [m.ring.zero()] * (len(m.source.names) - len(m.images))
-        return map_value(value, images, m.ring)
+        from ..kernel.maps import map_polys
+        return map_value(value, images, m.ring, lambda polys, source: map_polys(polys, images, m.ring, source))
 
 
-def map_value(v: Any, images: tuple | list, target: Any) -> Any:
-    """The image of a value under the substitution x_i -> images[i] into ``target``."""
+def map_value(v: Any, images: tuple | list, target: Any, how: Optional[Callable] = None) -> Any:
+    """The image of a value under the substitution x_i -> images[i] into ``target``, coefficients
+    converted by :func:`mech.kernel.maps.coefficient_map` (parameters by name, as imap does);
+    ``how(polys, source)`` replaces the substitution (e.g. :func:`mech.kernel.maps.map_polys`)."""
+    if how is None:
+        def how(polys: list, source: Any) -> list:
+            from ..kernel.maps import coefficient_map
+            coeff = coefficient_map(source, target)
+            out = []
+            for p in polys:
+                acc = target.zero()
+                for e, c in p.terms.items():
+                    t = coeff(c)
+                    for i, k in enumerate(e):
+                        if k:
+                            t = t * images[i] ** k
+                    acc = acc + t
+                out.append(acc)
+            return out
+
+    def each(polys: Any) -> list:
+        polys = list(polys)
+        return how(polys, polys[0].ring) if polys else []
     if isinstance(v, Poly):
-        return v.compose(list(images), target)
+        return each([v])[0]
     if isinstance(v, Number):
-        same = v.ring.field == target.field
-        return Number(target, v.c if same else target.field(v.ring.field.to_fraction(v.c)))
+        p = each([v.to_poly()])[0]
+        if not p.is_constant():
+            raise MechRuntimeError("the image of a number is not a number")
+        return Number(target, p.lc() if p.terms else target.field.zero)
     if isinstance(v, Ideal):
-        return Ideal(target, [g.compose(list(images), target) for g in v.gens])
+        return Ideal(target, each(v.gens))
     if isinstance(v, Matrix):
-        return Matrix(target, v.nrows, v.ncols, [g.compose(list(images), target) for g in v.entries])
+        return Matrix(target, v.nrows, v.ncols, each(v.entries))
     if isinstance(v, Map):
-        return Map(v.source, target, tuple(g.compose(list(images), target) for g in v.images))
+        return Map(v.source, target, tuple(each(v.images)))
     if isinstance(v, List):
-        return List([map_value(x, images, target) for x in v.items])
+        return List([map_value(x, images, target, how) for x in v.items])
     if isinstance(v, ExprList):
-        return ExprList([map_value(x, images, target) for x in v.items])
+        return ExprList([map_value(x, images, target, how) for x in v.items])
     return v
 
 
@@ -1069,15 +1128,15 @@ def proc_pos(proc: Proc) -> Optional[A.Pos]:
     return proc.body[0].pos if proc.body else None
 
 
-def _wrap(names: list[str], width: int = 78) -> str:
+def _wrap(names: list[str], width: int = 78, indent: str = "") -> str:
     lines, cur = [], ""
     for n in names:
-        if cur and len(cur) + 1 + len(n) > width:
-            lines.append(cur)
+        if cur and len(indent) + len(cur) + 1 + len(n) > width:
+            lines.append(indent + cur)
             cur = n
         else:
             cur = f"{cur} {n}" if cur else n
     if cur:
-        lines.append(cur)
+        lines.append(indent + cur)
     return "\n".join(lines)
 

@@ -200,6 +200,7 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
         if op == "^":
             if b < 0:
                 raise MechRuntimeError("negative exponent for an int")
+            _check_power(abs(a).bit_length(), b, MAX_INT_BITS, "int")
             return a ** b
         if op == ":":
             if b < 0:
@@ -225,9 +226,28 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
     raise _bad(op, a, b)
 
 
+MAX_INT_BITS = 1 << 20     # powers beyond these sizes are refused: computed in one C call, they would
+MAX_COEFF_BITS = 1 << 26   # take minutes that no time limit can interrupt (3^99999999)
+
+
+def _check_power(bits: int, k: int, limit: int, what: str) -> None:
+    if bits > 1 and k > 1 and bits * k > limit:
+        raise MechRuntimeError(f"{what} too large: the power would have about {bits * k} bits (at most {limit})")
+
+
+def _coeff_bits(c: Any) -> int:
+    """The size of a rational coefficient in bits (0 for others: modular ones stay small)."""
+    num, den = getattr(c, "p", None), getattr(c, "q", None)
+    if hasattr(num, "bit_length") and hasattr(den, "bit_length"):
+        return max(int(num.bit_length()), int(den.bit_length()))
+    return 0
+
+
 def power(a: Any, k: Any) -> Any:
     if not isinstance(k, int):
         raise MechTypeError(f"operator ^ needs an int exponent, not {typeof(k)}")
+    if isinstance(a, Number) or (isinstance(a, Poly) and len(a.terms) == 1):
+        _check_power(_coeff_bits(a.c if isinstance(a, Number) else a.lc()), abs(k), MAX_COEFF_BITS, "number")
     if isinstance(a, Number):
         if k < 0:
             if a.c == 0:
@@ -294,9 +314,12 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
     elif _rank(a) >= 0 and _rank(b) >= 0:
         ring = _ring(a, b, ring)
         if max(_rank(a), _rank(b)) == 1:
-            x, y = _sort_number(to_number(a, ring)), _sort_number(to_number(b, ring))
-            if op not in ("==", "!=") and getattr(ring.field, "params", ()):
-                raise MechTypeError("numbers with parameters cannot be ordered")
+            if getattr(ring.field, "params", ()):
+                if op not in ("==", "!="):
+                    raise MechTypeError("numbers with parameters cannot be ordered")
+                x, y = to_number(a, ring).c, to_number(b, ring).c
+            else:
+                x, y = _sort_number(to_number(a, ring)), _sort_number(to_number(b, ring))
         else:
             p, q = to_poly(a, ring), to_poly(b, ring)
             if op in ("==", "!="):

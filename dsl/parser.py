@@ -1,16 +1,20 @@
 """Parsing mech's Singular dialect (``singular.lark``, LALR) into the tree of :mod:`mech.dsl.ast`.
 
 :func:`parse` returns a :class:`~mech.dsl.ast.Program` or raises :class:`MechSyntaxError`;
-:func:`split_complete` finds where complete top-level statements end (the REPL reads until one
-is complete; after a syntax error the statements before it still run).
+:func:`parse_pieces` parses a program a piece of whole statements at a time (the interpreter runs
+each piece before parsing the next: long scripts stay small in memory, and after a syntax error the
+statements before it have run); :func:`split_complete` finds where complete top-level statements
+end (the REPL reads until one is complete).
 """
 from __future__ import annotations
 
+import itertools
+import re
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Iterator, Optional
 
-from lark import Lark, Token, Transformer, v_args
+from lark import Lark, Token, Transformer_NonRecursive, v_args
 from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, VisitError
 
 from . import ast as A
@@ -35,7 +39,7 @@ def _list(x: Optional[A.Tuple | list]) -> list:
     return list(x)
 
 
-class _Build(Transformer):
+class _Build(Transformer_NonRecursive):  # iterative: deeply nested input cannot overflow the stack
     """Lark callbacks building AST nodes from the parse tree."""
 
     # ---- expressions
@@ -254,11 +258,15 @@ def _parser() -> Lark:
                 maybe_placeholders=True)
 
 
-def parse(text: str, source: Optional[Source] = None) -> A.Program:
-    """The program tree of ``text``; raises :class:`MechSyntaxError` located in ``source``."""
+def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 1)) -> A.Program:
+    """The program tree of ``text``; raises :class:`MechSyntaxError` located in ``source``
+    (``at``: the line and column where ``text`` starts there)."""
     source = source or Source("<string>", text)
     try:
-        return _Build().transform(_parser().parse(text))
+        tree = _parser().parse(text)
+        if at != (1, 1):
+            _shift(tree, at)
+        return _Build().transform(tree)
     except VisitError as e:
         err = e.orig_exc
         if isinstance(err, MechSyntaxError):
@@ -269,7 +277,9 @@ def parse(text: str, source: Optional[Source] = None) -> A.Program:
         e.source = source
         raise
     except UnexpectedInput as e:
-        raise _syntax_error(e, text, source) from None
+        err = _syntax_error(e, text, source)
+        err.pos = _moved(err.pos, at)
+        raise err from None
 
 
 def _describe(term: str) -> str:
@@ -306,7 +316,7 @@ def _syntax_error(e: UnexpectedInput, text: str, source: Source) -> MechSyntaxEr
         else:
             msg = "unexpected end of input: incomplete statement"
         return MechSyntaxError(msg, A.Pos(line, col, line, col + 1), source)
-    if "SEMICOLON" in expected and _starts_new_line(text, tok):
+    if "SEMICOLON" in expected and _starts_new_line(text, tok) and _unterminated(text, tok.start_pos):
         line, col = _after_previous(text, tok.start_pos)
         return MechSyntaxError("expected ';'", A.Pos(line, col, line, col + 1), source)
     shown = tok.value if tok.type != "STRING" else "string"
@@ -326,7 +336,7 @@ def _unclosed(text: str) -> str:
     stack = []
     pairs = {"(": ")", "[": "]", "{": "}"}
     for kind, start, _ in _scan(text):
-        ch = text[start] if kind == "char" else ""
+        ch = text[start] if kind == "char" else " "
         if ch in pairs:
             stack.append(pairs[ch])
         elif ch in ")]}" and stack and stack[-1] == ch:
@@ -344,6 +354,12 @@ def _statement_word(text: str, offset: int) -> str:
 def _starts_new_line(text: str, tok: Token) -> bool:
     before = text[:tok.start_pos].rstrip(" \t")
     return before.endswith("\n") or before == ""
+
+
+def _unterminated(text: str, offset: int) -> bool:
+    """Whether a statement before ``offset`` lacks its ``;`` (not at the start, nor after ``; { }``)."""
+    k = _significant_end(text, offset)
+    return k > 0 and text[k - 1] not in ";{}"
 
 
 def _after_previous(text: str, offset: int) -> tuple[int, int]:
@@ -407,7 +423,7 @@ def split_complete(text: str) -> tuple[int, bool]:
             if not text.startswith("else", start):
                 boundary, pending = prev_end, False
         pending = True
-        ch = text[start] if kind == "char" else ""
+        ch = text[start] if kind == "char" else " "
         if ch in "([{":
             depth += 1
         elif ch in ")]}":
@@ -419,3 +435,107 @@ def split_complete(text: str) -> tuple[int, bool]:
     if after_brace:
         return prev_end, False
     return boundary, pending or depth > 0
+
+
+# ---------------------------------------------------------------- long programs, piece by piece
+PIECE = 1 << 16          # statements are parsed in pieces of about this many characters
+MAX_STATEMENT = 10**6    # characters; parsing takes about 1 KB of memory per character
+
+_SPECIAL = re.compile(r'"[^"]*"?|//[^\n]*|/\*.*?(?:\*/|\Z)|[][(){};]', re.S)
+_BLANK = re.compile(r'(?:\s+|//[^\n]*|/\*.*?(?:\*/|\Z))*+', re.S)  # possessive: no backtracking memory
+_ELSE = re.compile(r'(?:\s+|//[^\n]*|/\*.*?\*/)*+else(?![A-Za-z0-9_@])', re.S)
+
+
+def statement_ends(text: str) -> Iterator[int]:
+    """The offsets just after each complete top-level statement of ``text`` (its ``;``, or the
+    ``}`` closing it when no ``else`` follows); what follows the last is blank or incomplete."""
+    depth = 0
+    for m in _SPECIAL.finditer(text):
+        ch = m.group()
+        if len(ch) > 1 or ch == '"':
+            continue
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]":
+            depth -= 1
+        elif ch == "}":
+            depth -= 1
+            if depth == 0 and not _ELSE.match(text, m.end()):
+                yield m.end()
+        elif depth == 0:
+            yield m.end()
+
+
+def parse_pieces(text: str, source: Source) -> Iterator[A.Program]:
+    """``text`` parsed a piece of whole statements at a time, for running each piece before the
+    next is parsed: memory stays small for long scripts, the statements before a syntax error run
+    before it is raised, and a statement longer than ``MAX_STATEMENT`` is refused unparsed."""
+    start, prev, before, line = 0, 0, 0, 1
+    for end in itertools.chain(statement_ends(text), [len(text)]):
+        if end - prev > MAX_STATEMENT and end - _BLANK.match(text, prev).end() > MAX_STATEMENT:
+            if prev > start:
+                yield from _piece(text, start, prev, line, before, source)
+            pos = _at(text, _BLANK.match(text, prev).end(), start, line)
+            raise MechSyntaxError(f"statement too long ({end - prev} characters; at most {MAX_STATEMENT})",
+                                  A.Pos(*pos, *pos), source)
+        last, prev = prev, end
+        if end > start and (end - start >= PIECE or end == len(text)):
+            yield from _piece(text, start, end, line, before, source)
+            line += text.count("\n", start, end)
+            start, before = end, last
+
+
+def _piece(text: str, start: int, end: int, line: int, before: int, source: Source) -> Iterator[A.Program]:
+    """The statements of ``text[start:end]`` (which starts on ``line``; the statement before it
+    starts at ``before``).  After a syntax error: the statements before the failing one, one by
+    one, then its error, found with the statement before it (the messages look back)."""
+    try:
+        program = parse(text[start:end], source, _at(text, start, start, line))
+    except MechSyntaxError:
+        pass
+    else:
+        yield program
+        return
+    piece = text[start:end]
+    a = 0
+    for b in [*statement_ends(piece), len(piece)]:
+        try:
+            program = parse(piece[a:b], source, _at(text, start + a, start, line))
+        except MechSyntaxError as err:
+            parse(text[before:start + b], source, _at(text, before, start, line))
+            raise err
+        yield program
+        before, a = start + a, b
+
+
+def _at(text: str, offset: int, start: int, line: int) -> tuple[int, int]:
+    """Line and column of ``offset`` in ``text``, whose offset ``start`` is on ``line``."""
+    if offset >= start:
+        line += text.count("\n", start, offset)
+    else:
+        line -= text.count("\n", offset, start)
+    return line, offset - (text.rfind("\n", 0, offset) + 1) + 1
+
+
+def _moved(pos: Optional[A.Pos], at: tuple[int, int]) -> Optional[A.Pos]:
+    """A position in a piece of text starting at ``at`` as a position in the whole text."""
+    if pos is None or pos.line == 0 or at == (1, 1):
+        return pos
+    line, col = at
+    return A.Pos(pos.line + line - 1, pos.col + (col - 1 if pos.line == 1 else 0),
+                 pos.end_line + line - 1, pos.end_col + (col - 1 if pos.end_line == 1 else 0))
+
+
+def _shift(tree: Any, at: tuple[int, int]) -> None:
+    """Move the positions of a piece's parse tree to where the piece starts (``at``)."""
+    dline, dcol = at[0] - 1, at[1] - 1
+    for t in tree.iter_subtrees():
+        items = [t.meta] if not t.meta.empty else []
+        items += [c for c in t.children if isinstance(c, Token)]
+        for x in items:
+            if x.line == 1:
+                x.column += dcol
+            if x.end_line == 1:
+                x.end_column += dcol
+            x.line += dline
+            x.end_line += dline

@@ -141,6 +141,10 @@ def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
         if kind in WEIGHTED:
             if not args:
                 raise MechRuntimeError(f"the ordering {kind} needs weights, e.g. {kind}(1,2,3)")
+            if kind == "a":  # as in Singular, a weight prefix is cut to the variables left
+                args = args[:nvars - covered]
+                if not args:
+                    continue
             blocks.append(OrderBlock(kind, len(args), tuple(args)))
         elif kind == "M":
             n = math.isqrt(len(args or []))

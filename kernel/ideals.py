@@ -9,7 +9,7 @@ Everything is computed through :func:`groebner`, so a faster engine speeds all o
 """
 from __future__ import annotations
 
-from typing import Sequence
+from typing import Callable, Sequence
 
 from .dimension import independent_sets, krull_dim
 from .groebner import groebner, normal_form
@@ -53,16 +53,30 @@ def move(polys: Ideal, ring: PolyRing) -> list[Poly]:
 
 def product_order(nvars: int, blocks: Sequence[Sequence[int]]) -> MonomialOrder:
     """The product ordering ``(dp(blocks[0]), dp(blocks[1]), ...)`` on variables given by
-    index (each block need not be contiguous), as one matrix block."""
+    index (a block need not be contiguous), as one matrix block with a fast sort key."""
     rows: list[list[int]] = []
-    for block in blocks:
-        block = sorted(block)
-        if not block:
-            continue
+    parts = [sorted(b) for b in blocks if b]
+    for block in parts:
         rows.append([1 if j in block else 0 for j in range(nvars)])
         for v in reversed(block[1:]):
             rows.append([-1 if j == v else 0 for j in range(nvars)])
-    return MonomialOrder([Block("M", nvars, tuple(v for r in rows for v in r))])
+    order = MonomialOrder([Block("M", nvars, tuple(v for r in rows for v in r))])
+    order.key = _product_key(parts)
+    order.product_blocks = parts  # type: ignore[attr-defined]
+    return order
+
+
+def _product_key(parts: list[list[int]]) -> Callable[[Exp], tuple]:
+    """The sort key of the product of ``dp`` blocks (equal to the matrix ordering's)."""
+    tails = [tuple(reversed(b[1:])) for b in parts]
+
+    def key(e: Exp) -> tuple:
+        out: list[int] = []
+        for block, tail in zip(parts, tails):
+            out.append(sum([e[i] for i in block]))
+            out.extend([-e[i] for i in tail])
+        return tuple(out)
+    return key
 
 
 def _prefixed(ring: PolyRing, extra: Sequence[str]) -> PolyRing:
@@ -71,8 +85,15 @@ def _prefixed(ring: PolyRing, extra: Sequence[str]) -> PolyRing:
     names = list(extra) + list(ring.names)
     while len(set(names)) < len(names):
         names = ["_" + n if i < len(extra) else n for i, n in enumerate(names)]
-    blocks = [Block("dp", len(extra))] + list(ring.order.blocks)
-    return PolyRing(ring.field, names, MonomialOrder(blocks, len(names)))
+    k, n = len(extra), len(names)
+    parts = getattr(ring.order, "product_blocks", None)
+    if parts is None and ring.order == MonomialOrder([Block("dp", ring.nvars)]):
+        parts = [range(ring.nvars)]
+    if parts is not None:
+        order = product_order(n, [range(k)] + [[i + k for i in p] for p in parts])
+    else:
+        order = MonomialOrder([Block("dp", k)] + list(ring.order.blocks), n)
+    return PolyRing(ring.field, names, order)
 
 
 def _lift(p: Poly, big: PolyRing, k: int) -> Poly:
@@ -185,14 +206,16 @@ def quotient(ideal: Ideal, other: Ideal, ring: PolyRing | None = None) -> list[P
     return [ring.one()] if result is None else result
 
 
-def saturate_poly(ideal: Ideal, f: Poly, ring: PolyRing | None = None) -> list[Poly]:
-    """``I : f^∞`` by eliminating t from ``I + (1 - t*f)``."""
+def saturate_poly(ideal: Ideal, f: Poly, ring: PolyRing | None = None,
+                  is_basis: bool = False) -> list[Poly]:
+    """``I : f^∞`` by eliminating t from ``I + (1 - t*f)`` (``is_basis``: the ideal is
+    given by its reduced Gröbner basis)."""
     ring = ring_of(ideal, [f], ring=ring)
     if f.is_zero():
         return [ring.one()]
+    basis = list(ideal) if is_basis else std(ideal, ring)
     if f.is_constant():
-        return std(ideal, ring)
-    basis = std(ideal, ring)
+        return basis
     if is_unit(basis):
         return basis
     big = _prefixed(ring, ["t"])
@@ -202,11 +225,12 @@ def saturate_poly(ideal: Ideal, f: Poly, ring: PolyRing | None = None) -> list[P
 
 
 def saturation_exponent(ideal: Ideal, saturated: Ideal, other: Ideal,
-                        ring: PolyRing | None = None) -> int:
+                        ring: PolyRing | None = None, is_basis: bool = False) -> int:
     """The least ``k`` with ``I : J^k == I : J^∞`` given ``saturated = I : J^∞``: the least
-    ``k`` with ``saturated * J^k ⊆ I``, found by multiplying normal forms modulo ``I``."""
+    ``k`` with ``saturated * J^k ⊆ I``, found by multiplying normal forms modulo ``I``
+    (``is_basis``: ``I`` is given by its reduced Gröbner basis)."""
     ring = ring_of(ideal, saturated, other, ring=ring)
-    basis = std(ideal, ring)
+    basis = list(ideal) if is_basis else std(ideal, ring)
     gens = [g for g in std(other, ring)]
     current = _echelon([normal_form(p, basis) for p in saturated], ring)
     k = 0

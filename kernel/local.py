@@ -12,9 +12,13 @@ from dataclasses import dataclass, field
 from typing import Any, Sequence
 
 from .dimension import krull_dim
-from .mora import standard_basis
+from .factor import normalize
+from .hilbert import mult, vdim
+from .ideals import intersect, move, with_order
+from .mora import standard_basis, weak_normal_form
 from .order import Block, Exp, MonomialOrder
-from .poly import Poly, PolyRing, divides
+from .poly import Poly, PolyRing
+from .primdec import min_ass_gtz, primdec_gtz
 
 
 def _ring_of(gens: Sequence[Poly], ring: PolyRing | None) -> PolyRing:
@@ -24,36 +28,27 @@ def _ring_of(gens: Sequence[Poly], ring: PolyRing | None) -> PolyRing:
     return ring
 
 
-def with_order(ring: PolyRing, kind: str) -> PolyRing:
-    """The same variables and field with a one-block ordering (``"ds"``, ``"dp"``, ...)."""
-    return PolyRing(ring.field, ring.names, MonomialOrder([Block(kind, ring.nvars)]))
+def _reorder(ring: PolyRing, kind: str) -> PolyRing:
+    """The same variables and field ordered by one block ``kind`` (``"ds"``, ``"dp"``)."""
+    return with_order(ring, MonomialOrder([Block(kind, ring.nvars)]))
 
 
-def _move(polys: Sequence[Poly], ring: PolyRing) -> list[Poly]:
-    return [Poly(ring, dict(p.terms)) for p in polys if not p.is_zero()]
+def _ds_basis(gens: Sequence[Poly], ring: PolyRing) -> list[Poly]:
+    local = _reorder(ring, "ds")
+    return standard_basis(move(gens, local), local)
 
 
 def local_standard_basis(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[Poly]:
     """A standard basis of the ideal in the local ring at the origin (ordering ``ds``),
     as polynomials of the input's ring."""
     ring = _ring_of(gens, ring)
-    local = with_order(ring, "ds")
-    return _move(standard_basis(_move(gens, local), local), ring)
+    return move(_ds_basis(gens, ring), ring)
 
 
-def singular_normalized(p: Poly) -> Poly:
-    """``p`` as Singular's ``std`` stores it: over QQ a primitive integer polynomial with a
-    positive leading coefficient, over Z/p monic."""
-    if p.is_zero():
-        return p
-    if p.ring.field.characteristic:
-        return p.monic()
-    fracs = [p.ring.field.to_fraction(c) for c in p.terms.values()]
-    from math import gcd, lcm
-    den = lcm(*(f.denominator for f in fracs))
-    num = gcd(*(f.numerator * den // f.denominator for f in fracs))
-    scale = den / p.ring.field(num)
-    return p * (scale if p.lc() * scale > 0 else -scale)
+# Singular's reduce/NF in a local ring: a weak normal form, zero iff f lies in the ideal of
+# the local ring, otherwise determined only up to a unit and modulo the ideal (see
+# mora.weak_normal_form)
+local_normal_form = weak_normal_form
 
 
 def lowest_form(p: Poly) -> Poly:
@@ -70,14 +65,12 @@ def tangent_cone(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[Pol
     the ideal of lowest forms of all elements of the ideal; ``[1]`` when the origin is not
     on the variety, ``[]`` for the zero ideal."""
     ring = _ring_of(gens, ring)
-    local = with_order(ring, "ds")
-    basis = standard_basis(_move(gens, local), local)
-    return _move([lowest_form(singular_normalized(g)) for g in basis], ring)
+    return move([lowest_form(normalize(g)) for g in _ds_basis(gens, ring)], ring)
 
 
 def _leading(gens: Sequence[Poly], ring: PolyRing | None) -> tuple[list[Exp], int]:
     ring = _ring_of(gens, ring)
-    return [g.lm() for g in standard_basis(_move(gens, with_order(ring, "ds")))], ring.nvars
+    return [g.lm() for g in _ds_basis(gens, ring)], ring.nvars
 
 
 def local_dim(gens: Sequence[Poly], ring: PolyRing | None = None) -> int:
@@ -87,80 +80,20 @@ def local_dim(gens: Sequence[Poly], ring: PolyRing | None = None) -> int:
     return krull_dim(lms, n)
 
 
-def hilbert_numerator(lms: Sequence[Exp], nvars: int) -> list[int]:
-    """Coefficients (in t, from t^0) of the numerator ``K(t)`` of the Hilbert series
-    ``K(t)/(1-t)^n`` of ``K[x]/<x^a : a in lms>`` (Bayer–Stillman pivoting)."""
-    gens = _minimal_monomials([tuple(e) for e in lms])
-    if any(sum(e) == 0 for e in gens):
-        return [0]
-    supports = [{i for i, v in enumerate(e) if v} for e in gens]
-    if all(not (a & b) for k, a in enumerate(supports) for b in supports[k + 1:]):
-        out = [1]
-        for e in gens:
-            d = sum(e)
-            shifted = [0] * d + out
-            out = [a - b for a, b in zip(out + [0] * d, shifted)]
-        return out
-    # pivot x_i^k with k an exponent of x_i in a generator involving several variables:
-    # neither x_i^k nor the quotients m / x_i^k lie in the ideal, so both branches shrink
-    mixed = [e for e, s in zip(gens, supports) if len(s) > 1]
-    counts = [sum(1 for e in gens if e[j]) for j in range(nvars)]
-    i = max((j for j in range(nvars) if any(e[j] for e in mixed)), key=lambda j: counts[j])
-    powers = sorted(e[i] for e in mixed if e[i])
-    k = powers[len(powers) // 2]
-    pivot = tuple(k if j == i else 0 for j in range(nvars))
-    plus = hilbert_numerator(gens + [pivot], nvars)
-    colon = hilbert_numerator([tuple(max(0, v - k) if j == i else v for j, v in enumerate(e)) for e in gens],
-                              nvars)
-    out = [0] * max(len(plus), len(colon) + k)
-    for d, c in enumerate(plus):
-        out[d] += c
-    for d, c in enumerate(colon):
-        out[d + k] += c
-    while len(out) > 1 and out[-1] == 0:
-        out.pop()
-    return out
-
-
-def _minimal_monomials(exps: list[Exp]) -> list[Exp]:
-    exps = sorted(set(exps), key=sum)
-    out: list[Exp] = []
-    for e in exps:
-        if not any(divides(m, e) for m in out):
-            out.append(e)
-    return out
-
-
-def _degree_and_length(lms: Sequence[Exp], nvars: int) -> tuple[int, int]:
-    """(dimension, multiplicity) of ``K[x]/L`` for a monomial ideal ``L``: the numerator is
-    divided by ``(1-t)`` as often as it vanishes at 1 and then evaluated at 1."""
-    num = hilbert_numerator(lms, nvars)
-    if num == [0]:
-        return -1, 0
-    dim = nvars
-    while dim > 0 and sum(num) == 0:
-        quotient, carry = [], 0  # num = (1 - t) * quotient
-        for c in num[:-1]:
-            carry += c
-            quotient.append(carry)
-        num, dim = quotient, dim - 1
-    return dim, sum(num)
-
-
 def local_vdim(gens: Sequence[Poly], ring: PolyRing | None = None) -> int:
     """``dim_K K[x]_<x>/I``: the number of monomials outside the ``ds`` leading ideal;
     -1 when it is infinite, 0 when the origin is not on the variety (Singular's ``vdim``)."""
-    dim, length = _degree_and_length(*_leading(gens, ring))
-    return -1 if dim > 0 else length
+    return vdim(*_leading(gens, ring))
 
 
 def local_mult(gens: Sequence[Poly], ring: PolyRing | None = None) -> int:
     """Multiplicity of ``K[x]_<x>/I`` (the degree of the tangent cone, Singular's
     ``mult(std(I))`` in a ``ds`` ring); 0 when the origin is not on the variety."""
-    return _degree_and_length(*_leading(gens, ring))[1]
+    return mult(*_leading(gens, ring))
 
 
 def jacobian_ideal(f: Poly) -> list[Poly]:
+    """The partial derivatives of ``f``."""
     return [f.diff(i) for i in range(f.ring.nvars)]
 
 
@@ -178,12 +111,13 @@ def tjurina(f: Poly) -> int:
 
 
 def vanishes_at_origin(gens: Sequence[Poly]) -> bool:
+    """Whether the origin lies on ``V(gens)`` (no generator has a constant term)."""
     return all(g.ring.zero_exp not in g.terms for g in gens)
 
 
-def _global(gens: Sequence[Poly], ring: PolyRing) -> tuple[PolyRing, list[Poly]]:
-    target = ring if ring.order.is_global else with_order(ring, "dp")
-    return target, _move(gens, target)
+def _global(ring: PolyRing) -> PolyRing:
+    """The ring itself if its ordering is global, else the same ring ordered by ``dp``."""
+    return ring if ring.order.is_global else _reorder(ring, "dp")
 
 
 def min_ass_local(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[list[Poly]]:
@@ -191,20 +125,20 @@ def min_ass_local(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[li
     (:func:`primdec.min_ass_gtz`, in a ``dp`` ring when the ordering is not global) whose
     variety contains the origin, as polynomials of the input's ring (Singular's
     ``minAssGTZ`` in a ring with a local ordering)."""
-    from .primdec import min_ass_gtz
     ring = _ring_of(gens, ring)
-    target, moved = _global(gens, ring)
-    return [_move(p, ring) for p in min_ass_gtz(moved, target) if vanishes_at_origin(p)]
+    target = _global(ring)
+    return [move(p, ring) for p in min_ass_gtz(move(gens, target), target) if vanishes_at_origin(p)]
 
 
-def primdec_local(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[tuple[list[Poly], list[Poly]]]:
+def primdec_local(gens: Sequence[Poly], ring: PolyRing | None = None
+                  ) -> list[tuple[list[Poly], list[Poly]]]:
     """Primary decomposition of ``I K[x]_<x>``: the global (primary, prime) pairs
     (:func:`primdec.primdec_gtz`) whose prime's variety contains the origin (Singular's
     ``primdecGTZ`` in a ring with a local ordering)."""
-    from .primdec import primdec_gtz
     ring = _ring_of(gens, ring)
-    target, moved = _global(gens, ring)
-    return [(_move(q, ring), _move(p, ring)) for q, p in primdec_gtz(moved, target) if vanishes_at_origin(p)]
+    target = _global(ring)
+    return [(move(q, ring), move(p, ring)) for q, p in primdec_gtz(move(gens, target), target)
+            if vanishes_at_origin(p)]
 
 
 # --- points -----------------------------------------------------------------------------
@@ -232,7 +166,8 @@ def _centred(gens: Sequence[Poly], point: Sequence[Any]) -> list[Poly]:
     p = _point(gens[0].ring, point)
     bad = [g for g in gens if g.evaluate(p) != 0]
     if bad:
-        raise ValueError(f"the point {tuple(point)} is not on the variety ({bad[0].to_str()} does not vanish)")
+        raise ValueError(f"the point {tuple(point)} is not on the variety "
+                         f"({bad[0].to_str()} does not vanish)")
     return shift_to_origin(gens, point)
 
 
@@ -275,11 +210,16 @@ def local_components_at(gens: Sequence[Poly], point: Sequence[Any]) -> list[list
 
 @dataclass
 class PointInfo:
-    """What :func:`classify_point` finds at a point of ``V(I)`` (centred coordinates).
+    """What :func:`classify_point` finds at a point ``p`` of ``V = V(I)``, in coordinates
+    centred at ``p``.
 
     ``kind`` is ``"regular"``, ``"components meet"`` (several irreducible components pass
     through the point: the paper's Theorem 3, e.g. where two motion modes meet) or
-    ``"singular"`` (a singular point of the one irreducible component through it)."""
+    ``"singular"`` (a singular point of the one irreducible component through it).
+    ``local_dim`` is ``dim O_{V,p}``, ``tangent_space_dim`` the dimension of the Zariski
+    tangent space of ``V`` (from the local radical, the intersection of ``components``);
+    ``multiplicity`` and ``tangent_cone`` are those of ``I`` itself (of ``V`` when ``I`` is
+    radical, as in the paper)."""
 
     kind: str
     point: tuple
@@ -291,18 +231,17 @@ class PointInfo:
 
 
 def classify_point(gens: Sequence[Poly], point: Sequence[Any]) -> PointInfo:
-    """Classify a point of ``V(gens)`` (generators of a radical ideal, as in the paper):
-    regular when one component passes through it and ``dim T_p V = dim O_{V,p}``;
-    "components meet" when several local components pass through it (Theorem 3);
-    "singular" otherwise.  ValueError when the point is not on the variety."""
+    """Classify a point of ``V(gens)``: "components meet" when several irreducible
+    components pass through it (Theorem 3), otherwise "regular" when the tangent space of
+    the one component through it has its dimension (Definition 3, the Jacobian criterion
+    for its prime) and "singular" when it is larger.  ValueError when the point is not on
+    the variety."""
     centred = _centred(gens, point)
+    ring = centred[0].ring
     comps = min_ass_local(centred)
+    target = _global(ring)
+    radical = intersect(*(move(p, target) for p in comps), ring=target)
+    t = ring.nvars - jacobian_rank(radical, [0] * ring.nvars)
     d = local_dim(centred)
-    t = gens[0].ring.nvars - jacobian_rank(gens, point)
-    if len(comps) > 1:
-        kind = "components meet"
-    elif t == d:
-        kind = "regular"
-    else:
-        kind = "singular"
+    kind = "components meet" if len(comps) > 1 else "regular" if t == d else "singular"
     return PointInfo(kind, tuple(point), d, t, local_mult(centred), tangent_cone(centred), comps)

@@ -73,12 +73,21 @@ class Packing:
             pos += w
         shifts.reverse()
         self.bits = pos
+        # a graded ordering (first weight row positive): its weighted degree is the top field
+        self.graded = all(v > 0 for v in W[0])
+        self.wshift = shifts[0]
         self.guard = sum(1 << (s + w - 1) for s, w in zip(shifts, widths))
         self.eshifts = shifts[n + 1:]
         self.dshift = shifts[n]
         self.emask = (1 << ebits) - 1
+        # the exponent fields are the lowest ones: their mask, guard bits and field width
+        self.ebits = ebits
+        self.eall = (1 << (n * ebits)) - 1
+        self.eguard = sum(1 << (ebits * i + ebits - 1) for i in range(n))
+
         # the packed form of each variable: W's column, degree 1, exponent 1
-        self.units = [sum(W[i][j] << shifts[i] for i in range(n)) + (1 << shifts[n]) + (1 << shifts[n + 1 + j])
+        self.units = [sum(W[i][j] << shifts[i] for i in range(n)) + (1 << shifts[n])
+                      + (1 << shifts[n + 1 + j])
                       for j in range(n)]
 
     def fits(self, degree: int) -> bool:
@@ -91,12 +100,25 @@ class Packing:
         mask = self.emask
         return tuple([(m >> s) & mask for s in self.eshifts])
 
+    def weighted_degree(self, m: int) -> int:
+        """The first weight row applied to the exponent (the degree of a graded ordering)."""
+        return m >> self.wshift
+
     def degree(self, m: int) -> int:
         return (m >> self.dshift) & self.emask
 
     def divides(self, a: int, b: int) -> bool:
         g = self.guard
         return ((b | g) - a) & g == g
+
+    def lcm_e(self, a: int, b: int) -> int:
+        """The exponent fields of ``lcm(a, b)`` (word-parallel maximum), enough to compare lcms
+        and test their divisibility with :attr:`eguard`."""
+        eall, g = self.eall, self.eguard
+        ea, eb = a & eall, b & eall
+        sel = (((ea | g) - eb) & g) >> (self.ebits - 1)
+        sel *= (1 << self.ebits) - 1
+        return (ea & sel) | (eb & ~sel)
 
     def lcm(self, a: int, b: int) -> int:
         mask, units = self.emask, self.units

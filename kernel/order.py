@@ -67,6 +67,8 @@ class MonomialOrder:
             signs.append(1 if col[0] > 0 else -1)
         self.is_global = all(s > 0 for s in signs)
         self.is_local = all(s < 0 for s in signs)
+        self.is_graded = all(w > 0 for w in self.matrix[0])
+        """The first weight row is positive: the ordering refines a (weighted) degree."""
 
     @classmethod
     def simple(cls, kind: str, nvars: int, weights: Sequence[int] = ()) -> "MonomialOrder":

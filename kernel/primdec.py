@@ -34,7 +34,7 @@ from __future__ import annotations
 import random
 from typing import Callable, Sequence
 
-from .factor import factorize, normalize
+from .factor import factorize, normalize, to_flint
 from .groebner import groebner, normal_form
 from .ideals import (Ideal, dimension, independent_set, intersect, is_unit, move,
                      product_order, quotient, ring_of, saturate_poly, saturation_exponent, std,
@@ -127,6 +127,147 @@ def _in_target(f: Poly, target: int) -> list[tuple[Poly, int]]:
 
 # --- zero-dimensional decomposition over K(u) --------------------------------------------
 
+class _Quotient:
+    """Linear algebra in ``K(u)[x]/I`` without rational functions: elements are vectors over
+    ``K[u]`` (flint polynomials) on the standard ``x``-monomials with a common denominator;
+    normal forms by fraction-free (pseudo-) reduction modulo a Gröbner basis for the product
+    ordering ``x >> u``, minimal polynomials by fraction-free Krylov iteration."""
+
+    def __init__(self, basis: Sequence[Poly], ring: PolyRing, xs: Sequence[int]) -> None:
+        self.ctx = to_flint(ring.one()).context()
+        self.xs = list(xs)
+        xset = set(xs)
+        self.key = _product_x_key(len(xs))
+        self.reducers = []
+        for p in basis:
+            vec = self._vector(p, xset)
+            lead = max(vec, key=self.key)
+            self.reducers.append((lead, vec[lead], vec))
+
+    def _vector(self, p: Poly, xset: set) -> dict:
+        parts: dict[Exp, dict] = {}
+        for e, c in p.terms.items():
+            xe = tuple(e[i] for i in self.xs)
+            ue = tuple(0 if i in xset else v for i, v in enumerate(e))
+            parts.setdefault(xe, {})[ue] = c
+        return {xe: self.ctx.from_dict(d) for xe, d in parts.items()}
+
+    def normal_form(self, f: dict) -> tuple[dict, object]:
+        """``(r, D)`` with ``f = r / D`` in ``K(u)[x]/I``, ``r`` reduced."""
+        f = dict(f)
+        done: dict = {}
+        scale = self.ctx.from_dict({(0,) * self.ctx.nvars(): 1})
+        while f:
+            m = max(f, key=self.key)
+            c = f.pop(m)
+            hit = next((r for r in self.reducers if all(a >= b for a, b in zip(m, r[0]))), None)
+            if hit is None:
+                done[m] = c
+                continue
+            lead, lc, vec = hit
+            shift = tuple(a - b for a, b in zip(m, lead))
+            g = c.gcd(lc)
+            mul, fac = lc / g, c / g
+            if not mul.is_one():
+                f = {k: v * mul for k, v in f.items()}
+                done = {k: v * mul for k, v in done.items()}
+                scale = scale * mul
+            for e, v in vec.items():
+                if e == lead:
+                    continue
+                t = tuple(a + b for a, b in zip(e, shift))
+                w = f.get(t)
+                w = -fac * v if w is None else w - fac * v
+                if w.is_zero():
+                    f.pop(t, None)
+                else:
+                    f[t] = w
+        return self._reduce_content(done, scale)
+
+    def _reduce_content(self, vec: dict, scale):
+        g = scale
+        for v in vec.values():
+            if g.is_one():
+                break
+            g = g.gcd(v)
+        if not g.is_one() and not g.is_zero():
+            vec = {k: v / g for k, v in vec.items()}
+            scale = scale / g
+        return vec, scale
+
+    def times_form(self, vec: dict, form: dict) -> dict:
+        out: dict = {}
+        for e, v in vec.items():
+            for pos, c in form.items():
+                t = e[:pos] + (e[pos] + 1,) + e[pos + 1:]
+                w = out.get(t)
+                w = v * c if w is None else w + v * c
+                if w.is_zero():
+                    out.pop(t, None)
+                else:
+                    out[t] = w
+        return out
+
+    def minimal_poly(self, form: dict) -> list:
+        """The coefficients (in ``K[u]``, content removed) of the minimal polynomial over
+        ``K(u)`` of multiplication by the linear form ``{position in xs: coefficient}``."""
+        one = self.ctx.from_dict({(0,) * self.ctx.nvars(): 1})
+        vec, denom = self.normal_form({(0,) * len(self.xs): one})
+        rows: list[tuple[Exp, dict, dict]] = []
+        denoms = []
+        k = 0
+        while True:
+            denoms.append(denom)
+            v, combo = dict(vec), {k: one}
+            for piv, row, rc in rows:
+                a = v.get(piv)
+                if a is None:
+                    continue
+                b = row[piv]
+                g = a.gcd(b)
+                a, b = a / g, b / g
+                v = _axpy(b, v, -a, row)
+                combo = _axpy(b, combo, -a, rc)
+            if not v:
+                coeffs = [combo.get(j, one * 0) * denoms[j] for j in range(k + 1)]
+                content = coeffs[-1]
+                for c in coeffs:
+                    content = content.gcd(c)
+                return [c / content for c in coeffs]
+            v, combo = _primitive_pair(v, combo)
+            rows.append((max(v, key=self.key), v, combo))
+            k += 1
+            vec, d = self.normal_form(self.times_form(vec, form))
+            denom = denom * d
+
+
+def _axpy(a, x: dict, b, y: dict) -> dict:
+    """``a*x + b*y`` for sparse vectors with flint entries."""
+    out = {k: a * v for k, v in x.items()}
+    for k, v in y.items():
+        w = out.get(k)
+        w = b * v if w is None else w + b * v
+        if w.is_zero():
+            out.pop(k, None)
+        else:
+            out[k] = w
+    return out
+
+
+def _primitive_pair(v: dict, combo: dict) -> tuple[dict, dict]:
+    g = None
+    for w in list(v.values()) + list(combo.values()):
+        g = w if g is None else g.gcd(w)
+        if g.is_one():
+            return v, combo
+    return {k: w / g for k, w in v.items()}, {k: w / g for k, w in combo.items()}
+
+
+def _product_x_key(n: int) -> Callable[[Exp], tuple]:
+    """The ``dp`` key on ``x``-exponents (the ``x`` block of :func:`product_order`)."""
+    return lambda e: (sum(e), *[-v for v in reversed(e[1:])])
+
+
 class _ZeroDim:
     """Decompositions of ideals ``I`` of ``K[x,u]`` with ``I K(u)[x]`` zero-dimensional;
     ``ring`` has the product ordering ``x >> u`` and ideals are Gröbner bases there.
@@ -146,62 +287,32 @@ class _ZeroDim:
                             product_order(n + 1, [self.xs, [n], self.us]))
 
     def minimal_poly(self, g: list[Poly], target: int) -> Poly:
-        """The minimal polynomial over ``K(u)`` of the variable ``target`` modulo ``g``."""
+        """The minimal polynomial over ``K(u)`` of the variable ``target`` modulo ``g``,
+        as a polynomial of ``K[u][target]``."""
         key = (tuple(g), target)
         if key not in self.minpolys:
-            if self.us:
-                self.minpolys[key] = self._eliminant(g, self.ring, target, self.xs)
-            else:
-                self.minpolys[key] = self._krylov(g, self.ring.gen(target), target)
+            pos = self.xs.index(target)
+            f = _Quotient(g, self.ring, self.xs).minimal_poly({pos: self.ring.field.one})
+            self.minpolys[key] = self._as_poly(f, self.ring, target)
         return self.minpolys[key]
-
-    def _eliminant(self, g: list[Poly], ring: PolyRing, target: int, xs: Sequence[int]) -> Poly:
-        """An element of least degree of ``I ∩ K[u][target]`` (an elimination basis)."""
-        others = [i for i in xs if i != target]
-        order_ring = with_order(ring, product_order(ring.nvars, [others, [target], self.us]))
-        gb = groebner(move(g, order_ring), order_ring)
-        best = min((p for p in gb if not any(p.lm()[i] for i in others)), key=lambda p: p.lm()[target])
-        return Poly(ring, best.terms)
-
-    def _krylov(self, g: list[Poly], ell: Poly, var: int) -> Poly:
-        """Over a field (no parameters): the minimal polynomial of multiplication by ``ell``
-        on ``K[x]/I``, in the variable ``var``, from normal forms of its powers."""
-        ring = self.ring
-        rows: list[tuple[Exp, Poly, dict[int, object]]] = []
-        power, k = normal_form(ring.one(), g), 0
-        while True:
-            vec, combo = power, {k: ring.field.one}
-            for piv, row, rc in rows:
-                c = vec.terms.get(piv)
-                if c is not None:
-                    vec = vec - row * c
-                    for j, v in rc.items():
-                        combo[j] = combo.get(j, ring.field.zero) - v * c
-            if vec.is_zero():
-                terms = {}
-                for j, v in combo.items():
-                    if v != 0:
-                        e = [0] * ring.nvars
-                        e[var] = j
-                        terms[tuple(e)] = v
-                return Poly(ring, terms)
-            piv = vec.lm()
-            inv = ring.field.one / vec.terms[piv]
-            rows.append((piv, vec * inv, {j: v * inv for j, v in combo.items()}))
-            k += 1
-            power = normal_form(ell * power, g)
 
     def form_minimal_poly(self, g: list[Poly], ell: Poly) -> Poly:
         """The minimal polynomial of the linear form ``ell`` as a polynomial in the extra
         variable ``t`` of ``self.big``."""
-        n = self.ring.nvars
-        if not self.us:
-            f = self._krylov(g, ell, 0)
-            return Poly(self.big, {(0,) * n + (e[0],): c for e, c in f.terms.items()})
-        big = self.big
-        lifted = [Poly(big, {e + (0,): c for e, c in p.terms.items()}) for p in g]
-        ell_big = Poly(big, {e + (0,): c for e, c in ell.terms.items()})
-        return self._eliminant(lifted + [big.gen(n) - ell_big], big, n, self.xs + [n])
+        form = {self.xs.index(e.index(1)): c for e, c in ell.terms.items()}
+        f = _Quotient(g, self.ring, self.xs).minimal_poly(form)
+        return self._as_poly(f, self.big, self.ring.nvars)
+
+    def _as_poly(self, coeffs: list, ring: PolyRing, var: int) -> Poly:
+        """``sum(coeffs[j] * var^j)`` with flint coefficients in ``K[u]``."""
+        conv = self.ring.field
+        terms = {}
+        for j, c in enumerate(coeffs):
+            for e, v in c.to_dict().items():
+                exp = [int(k) for k in e] + [0] * (ring.nvars - self.ring.nvars)
+                exp[var] = j
+                terms[tuple(exp)] = v if not conv.characteristic else conv(int(v))
+        return Poly(ring, terms)
 
     def random_form(self, attempt: int) -> Poly:
         p = self.ring.field.characteristic
@@ -211,27 +322,31 @@ class _ZeroDim:
             ell = ell + self.ring.gen(i) * self.rng.randint(1, span)
         return ell
 
-    def split_by_form(self, g: list[Poly], powers: bool) -> tuple[list[list[Poly]], int]:
-        """Factor the minimal polynomial of random linear forms until it has several
-        irreducible factors (returns the pieces ``g + p(ell)`` or ``g + p(ell)^m``) or a
-        factor of degree ``vdim(g)`` (returns ``([], degree)``)."""
-        d = _vdim(g, self.xs)
+    def by_form(self, g: list[Poly], d: int, attempts: int = _ATTEMPTS) -> tuple[list[Component], bool] | None:
+        """Random linear forms ``ell`` until one is cyclic (its minimal polynomial ``f`` has
+        degree ``d = vdim(g)``, so ``K(u)[x]/g ≅ K(u)[t]/(f)``) or ``f`` has several
+        irreducible factors ``p^m``.  Returns the pieces ``(g + p(ell)^m, g + p(ell))`` and
+        whether ``ell`` was cyclic (then they are the primary components and their primes);
+        None after ``attempts`` failures."""
         n = self.ring.nvars
-        for attempt in range(_ATTEMPTS):
+        for attempt in range(attempts):
             ell = self.random_form(attempt)
-            facs = _in_target(self.form_minimal_poly(g, ell), n)
-            if len(facs) > 1:
+            f = self.form_minimal_poly(g, ell)
+            facs = _in_target(f, n)
+            cyclic = f.degree_in(n) == d
+            if cyclic or len(facs) > 1:
                 images = [self.ring.gen(i) for i in range(n)] + [ell]
-                return [groebner(g + [Poly(self.big, (p ** m if powers else p).terms).compose(
-                    images, self.ring)], self.ring) for p, m in facs], 0
-            if facs[0][0].degree_in(n) == d:
-                return [], d
-        raise RuntimeError("no primitive element found (inseparable extension or a too small field)")
+
+                def back(p: Poly) -> Poly:
+                    return Poly(self.big, p.terms).compose(images, self.ring)
+                return [(groebner(g + [back(p ** m)], self.ring), groebner(g + [back(p)], self.ring))
+                        for p, m in facs], cyclic
+        return None
 
     def primes(self, basis: list[Poly]) -> list[list[Poly]]:
-        """The primes containing ``I`` over ``K(u)``: split by factors of minimal polynomials,
-        make radical by adding their squarefree parts (Seidenberg), recognise a prime by a
-        primitive element (variable or random linear form)."""
+        """The primes containing ``I`` over ``K(u)``: split by factors of minimal polynomials
+        of the variables, make radical by adding their squarefree parts (Seidenberg), then a
+        cyclic linear form of the radical ideal gives its primes."""
         out: list[list[Poly]] = []
         todo = [basis]
         while todo:
@@ -261,38 +376,50 @@ class _ZeroDim:
             if extra:
                 todo.append(groebner(g + extra, self.ring))
                 continue
-            pieces, _ = self.split_by_form(g, powers=False)
-            if pieces:
-                todo.extend(pieces)
+            found = self.by_form(g, d)
+            if found is None:
+                raise RuntimeError("no primitive element found (inseparable extension or a too small field)")
+            pieces, cyclic = found
+            if cyclic:
+                out.extend(p for _, p in pieces)
             else:
-                out.append(g)
+                todo.extend(p for _, p in pieces)
         return out
 
-    def primaries(self, basis: list[Poly]) -> list[tuple[list[Poly], list[Poly]]]:
-        """The primary components over ``K(u)`` with their primes: split by the prime-power
-        factors of minimal polynomials (the pieces are coprime), then by random linear
-        forms until each piece has a single prime."""
-        out = []
+    def primaries(self, basis: list[Poly]) -> list[Component]:
+        """The primary components over ``K(u)`` with their primes: a cyclic variable or
+        linear form gives them at once; otherwise split by the prime-power factors of
+        minimal polynomials (coprime pieces) until each piece has a single prime."""
+        out: list[Component] = []
         todo = [basis]
         while todo:
             g = todo.pop()
             if _unit_over_ku(g, self.xs):
                 continue
-            split = False
+            d = _vdim(g, self.xs)
+            found = None
             for i in reversed(self.xs):
-                facs = _in_target(self.minimal_poly(g, i), i)
-                if len(facs) > 1:
-                    todo.extend(groebner(g + [p ** m], self.ring) for p, m in facs)
-                    split = True
+                f = self.minimal_poly(g, i)
+                facs = _in_target(f, i)
+                if f.degree_in(i) == d or len(facs) > 1:
+                    found = ([(groebner(g + [p ** m], self.ring), groebner(g + [p], self.ring))
+                              for p, m in facs], f.degree_in(i) == d)
                     break
-            if split:
-                continue
-            primes = self.primes(g)
-            if len(primes) == 1:
-                out.append((g, primes[0]))
-                continue
-            pieces, _ = self.split_by_form(g, powers=True)
-            todo.extend(pieces)
+            if found is None:
+                found = self.by_form(g, d, attempts=2)
+            if found is None or not found[1] and len(found[0]) == 1:
+                primes = self.primes(g)
+                if len(primes) == 1:
+                    out.append((g, primes[0]))
+                    continue
+                found = self.by_form(g, d)
+                if found is None:
+                    raise RuntimeError("no separating linear form found (a too small field)")
+            pieces, cyclic = found
+            if cyclic:
+                out.extend(pieces)
+            else:
+                todo.extend(q for q, _ in pieces)
         return out
 
 
@@ -303,7 +430,7 @@ def _contract(basis: list[Poly], ring: PolyRing, xs: Sequence[int]) -> tuple[lis
     h = _sqfree_product([_lc_x(p, xs) for p in basis], ring)
     if h.is_constant():
         return basis, h
-    return saturate_poly(basis, h, ring), h
+    return saturate_poly(basis, h, ring, is_basis=True), h
 
 
 # --- the reduction to dimension zero ---------------------------------------------------
@@ -488,21 +615,28 @@ def _split_off(basis: list[Poly], h: Poly, ring: PolyRing,
     """``I + h^m`` with ``m`` the saturation exponent of ``h``, or None when ``I : h == I``."""
     if h.is_constant():
         return None
-    sat = saturated if saturated is not None else saturate_poly(basis, h, ring)
-    m = saturation_exponent(basis, sat, [h], ring)
+    sat = saturated if saturated is not None else saturate_poly(basis, h, ring, is_basis=True)
+    m = saturation_exponent(basis, sat, [h], ring, is_basis=True)
     if m == 0:
         return None
     return groebner(basis + [h ** m], ring)
 
 
 def _primdec_gtz(basis: list[Poly], ring: PolyRing) -> list[Component]:
-    if is_unit(basis):
-        return []
-    red = _Reduction(basis, ring)
-    comps = red.primaries()
-    rest = _split_off(basis, red.h, ring)
-    if rest is not None:
-        comps += _primdec_gtz(rest, ring)
+    """Primary components of ``I`` (possibly redundant): the components of ``I : h^∞`` from
+    dimension zero over ``K(u)``, then the same for ``I + h^m``, until the components found
+    intersect to ``I``."""
+    comps: list[Component] = []
+    found = [ring.one()]
+    rest: list[Poly] | None = basis
+    while rest is not None and not is_unit(rest):
+        red = _Reduction(rest, ring)
+        new = red.primaries()
+        comps += new
+        found = intersect(found, *[q for q, _ in new], ring=ring)
+        if _contained(found, basis):
+            break
+        rest = _split_off(rest, red.h, ring)
     return comps
 
 
@@ -516,9 +650,9 @@ def _primdec_sy(basis: list[Poly], ring: PolyRing, cache: dict) -> list[Componen
     rest = basis
     for i, p in enumerate(primes):
         s = _separator(primes, i, ring)
-        sat = saturate_poly(rest, s, ring)
+        sat = saturate_poly(rest, s, ring, is_basis=True)
         comps += _extract(sat, p, ring, cache)
-        m = saturation_exponent(rest, sat, [s], ring)
+        m = saturation_exponent(rest, sat, [s], ring, is_basis=True)
         rest = groebner(rest + [s ** m], ring) if m else sat
     if not is_unit(rest):
         comps += _primdec_sy(rest, ring, cache)
@@ -530,7 +664,7 @@ def _extract(pseudo: list[Poly], prime: list[Poly], ring: PolyRing, cache: dict)
     decomposition of what remains."""
     red = _Reduction(pseudo, ring, independent_set(prime, ring.nvars))
     h = red.h
-    primary = pseudo if h.is_constant() else saturate_poly(pseudo, h, ring)
+    primary = pseudo if h.is_constant() else saturate_poly(pseudo, h, ring, is_basis=True)
     comps = [(primary, prime)]
     rest = _split_off(pseudo, h, ring, primary)
     if rest is not None:

@@ -14,10 +14,23 @@ def _parser() -> argparse.ArgumentParser:
                                 "for the configuration spaces of rigid mechanisms.")
     p.add_argument("file", nargs="?", help="script to run (.mech or .sing); '-' reads standard input")
     p.add_argument("-c", dest="code", metavar="CODE", help="run CODE")
-    p.add_argument("-q", "--quiet", action="store_true", help="accepted for compatibility with Singular -q")
+    p.add_argument("-q", "--quiet", action="store_true", help="no banner in the interactive shell (as Singular -q)")
     p.add_argument("--no-warn", action="store_true", help="do not print '// **' warnings")
+    p.add_argument("--timeout", type=_limit, metavar="SECONDS", help="time limit of each statement (0: none)")
+    p.add_argument("--max-memory", type=_limit, metavar="MB", help="memory each statement may add to the process, "
+                   "in MB (0: none)")
     p.add_argument("--version", action="version", version=f"mech {__version__}")
     return p
+
+
+def _limit(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = -1.0
+    if not 0 <= value < float("inf"):
+        raise argparse.ArgumentTypeError(f"expected a nonnegative number, got '{text}'")
+    return value
 
 
 def run_text(text: str, name: str, warnings: bool = True) -> int:
@@ -46,6 +59,12 @@ def run_text(text: str, name: str, warnings: bool = True) -> int:
 
 def main(argv: Optional[list[str]] = None) -> int:
     args = _parser().parse_args(argv)
+    from .dsl.limits import default_limits
+    with default_limits(args.timeout, args.max_memory):  # for every interpreter of this run, the REPL's too
+        return _main(args)
+
+
+def _main(args: argparse.Namespace) -> int:
     warnings = not args.no_warn
     if args.code is not None:
         if args.file:
@@ -66,7 +85,7 @@ def main(argv: Optional[list[str]] = None) -> int:
             return 2
         return run_text(text, args.file, warnings)
     from .dsl.repl import run_repl
-    return run_repl(warnings=warnings)
+    return run_repl(warnings=warnings, quiet=args.quiet)
 
 
 if __name__ == "__main__":

@@ -18,11 +18,14 @@ class Session:
     value of one expression; ``session[name]`` reads a variable and ``session[name] = value``
     sets one (ints, strings, sympy expressions, lists of them, or mech values).  Errors raise
     :class:`MechError` subclasses carrying ``line`` and ``column`` (``err.output`` holds what was
-    printed before the error)."""
+    printed before the error).  ``timeout`` (seconds) and ``max_memory`` (MB it may add to the
+    process) limit each statement (``mech.dsl.limits``): exceeding one raises ``MechLimitError``
+    and leaves the session usable."""
 
-    def __init__(self, warnings: bool = True) -> None:
+    def __init__(self, warnings: bool = True, timeout: float | None = None,
+                 max_memory: float | None = None) -> None:
         self._out = io.StringIO()
-        self._interp = Interpreter(out=self._out, warnings=warnings)
+        self._interp = Interpreter(out=self._out, warnings=warnings, timeout=timeout, max_memory=max_memory)
 
     @property
     def interpreter(self) -> Interpreter:
@@ -60,7 +63,7 @@ class Session:
         self._out.seek(0)
         self._out.truncate()
         try:
-            values = [it.eval(e) for e in stmt.exprs]
+            values = it.limits.run(it, lambda: [it.eval(e) for e in stmt.exprs])
         finally:
             it.source = saved
         values = [v for v in values if v is not NONE]

@@ -1,0 +1,214 @@
+"""Gröbner basis benchmarks: mech against Singular, SymPy (and Macaulay2 when installed).
+
+    python benchmarks/run.py                      # every case of benchmarks/cases.py
+    python benchmarks/run.py --only katsura-6 --no-sympy
+    python benchmarks/run.py --write              # also rewrite benchmarks/RESULTS.md
+
+Each system runs in its own process.  Times are CPU seconds of that process (the machine is
+shared; wall-clock times are printed too): mech times ``groebner(I)`` of the kernel (the
+reduced basis, engine ``auto``) on the ideal read by mech's own front end, best of
+``--repeat`` runs; Singular times ``std(I)`` with ``timer`` (CPU, 1 ms ticks), repeated until
+half a second has passed, start-up excluded; SymPy times ``groebner(..., method='buchberger')``
+with a time limit.  mech's peak memory is the resident set size of its process (Python,
+flint and the computation).
+"""
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import resource
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+from cases import CASES, Case  # noqa: E402
+
+SINGULAR = shutil.which("Singular")
+M2 = shutil.which("M2")
+
+
+# -- children: one system each --------------------------------------------------------------
+def child_mech(case: Case, repeat: int) -> dict:
+    from mech import Session
+    from mech.kernel import groebner
+    s = Session(warnings=False)
+    s.execute(f"ring r = {case.char}, ({','.join(case.variables)}), {case.ordering};\n"
+              f"ideal I = {', '.join(case.gens)};")
+    ideal = s["I"]
+    gens, ring = list(ideal.gens), ideal.ring
+    best = None
+    for _ in range(repeat):
+        c0, w0 = time.process_time(), time.perf_counter()
+        G = groebner(gens, ring)
+        c1, w1 = time.process_time(), time.perf_counter()
+        if best is None or c1 - c0 < best[0]:
+            best = (c1 - c0, w1 - w0)
+    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    return {"cpu": best[0], "wall": best[1], "rss": rss, "size": len(G)}
+
+
+def child_sympy(case: Case) -> dict:
+    import sympy
+    syms = sympy.symbols(case.variables)
+    scope = dict(zip(case.variables, syms))
+    polys = [sympy.sympify(g.replace("^", "**"), locals=scope) for g in case.gens]
+    order = {"dp": "grevlex", "lp": "lex", "Dp": "grlex"}[case.ordering]
+    opts = {"modulus": case.char} if case.char else {"domain": "QQ"}
+    c0, w0 = time.process_time(), time.perf_counter()
+    G = sympy.groebner(polys, *syms, order=order, method="buchberger", **opts)
+    return {"cpu": time.process_time() - c0, "wall": time.perf_counter() - w0, "size": len(G.exprs)}
+
+
+# -- the parent ------------------------------------------------------------------------------
+def run_child(kind: str, case: Case, repeat: int, timeout: float) -> dict | None:
+    cmd = [sys.executable, str(Path(__file__).resolve()), f"--child-{kind}", case.name, "--char", str(case.char),
+           "--ordering", case.ordering, "--repeat", str(repeat)]
+    try:
+        res = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return {"timeout": timeout}
+    if res.returncode:
+        return {"error": res.stderr.strip().splitlines()[-1] if res.stderr.strip() else f"exit {res.returncode}"}
+    return json.loads(res.stdout.strip().splitlines()[-1])
+
+
+def singular_script(case: Case, reps: int) -> str:
+    return (f'system("--ticks-per-sec", 1000);\n'
+            f"ring r = {case.char}, ({','.join(case.variables)}), {case.ordering};\n"
+            f"ideal I = {', '.join(case.gens)};\n"
+            f"ideal G; int k; int c0 = timer; int w0 = rtimer;\n"
+            f"for (k = 0; k < {reps}; k++) {{ G = std(I); }}\n"
+            f'"RESULT"; timer - c0; rtimer - w0; size(G);\nquit;\n')
+
+
+def run_singular(case: Case, timeout: float) -> dict | None:
+    if not SINGULAR:
+        return None
+    reps, out = 1, None
+    for _ in range(2):
+        try:
+            res = subprocess.run([SINGULAR, "-q", "--no-warn"], input=singular_script(case, reps), text=True,
+                                 capture_output=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return {"timeout": timeout}
+        lines = res.stdout.split("RESULT", 1)[1].split()
+        cpu, wall, size = int(lines[0]), int(lines[1]), int(lines[2])
+        out = {"cpu": cpu / 1000 / reps, "wall": wall / 1000 / reps, "size": size, "reps": reps}
+        if cpu >= 500 or reps > 1:
+            break
+        reps = min(500, max(2, math.ceil(500 / max(cpu, 1))))
+    return out
+
+
+def fmt_time(r: dict | None) -> str:
+    if r is None:
+        return "—"
+    if "timeout" in r:
+        return f"> {r['timeout']:.0f} s"
+    if "error" in r:
+        return "error"
+    t = r["cpu"]
+    return f"{t * 1000:.1f} ms" if t < 1 else f"{t:.2f} s"
+
+
+def ratio(a: dict | None, b: dict | None) -> str:
+    """a / b as a factor, '>' when a timed out."""
+    if not a or not b or "error" in a or "error" in b or "timeout" in b:
+        return "—"
+    if "timeout" in a:
+        return f"> {a['timeout'] / b['cpu']:.0f}"
+    return f"{a['cpu'] / b['cpu']:.1f}" if a["cpu"] / b["cpu"] < 100 else f"{a['cpu'] / b['cpu']:.0f}"
+
+
+def machine() -> list[str]:
+    cpu = "unknown"
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    import flint
+    sing = subprocess.run([SINGULAR, "-v", "-q", "--no-warn"], input="quit;", text=True,
+                          capture_output=True).stdout.split("\n")[0] if SINGULAR else "not installed"
+    return [f"- date: {datetime.datetime.now().strftime('%Y-%m-%d %H:%M')}",
+            f"- `uname -a`: {' '.join(platform.uname())}",
+            f"- CPU: {cpu}, {os.cpu_count()} cores (shared with other jobs: load average "
+            f"{' '.join(f'{x:.1f}' for x in os.getloadavg())} at the start)",
+            f"- Python {platform.python_version()}, python-flint {flint.__version__}; Singular: "
+            f"{sing.strip() or 'installed'}; Macaulay2: {'installed' if M2 else 'not installed'}"]
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--only", nargs="*", help="case names (default: all)")
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--timeout", type=float, default=600, help="limit for mech and Singular (s)")
+    ap.add_argument("--sympy-timeout", type=float, default=60)
+    ap.add_argument("--no-sympy", action="store_true")
+    ap.add_argument("--write", action="store_true", help="write benchmarks/RESULTS.md")
+    ap.add_argument("--char", type=int)
+    ap.add_argument("--ordering")
+    ap.add_argument("--child-mech")
+    ap.add_argument("--child-sympy")
+    args = ap.parse_args()
+
+    if args.child_mech or args.child_sympy:
+        name = args.child_mech or args.child_sympy
+        case = next(c for c in CASES if c.name == name and c.char == args.char and c.ordering == args.ordering)
+        out = child_mech(case, args.repeat) if args.child_mech else child_sympy(case)
+        print(json.dumps(out))
+        return
+
+    cases = [c for c in CASES if not args.only or c.name in args.only]
+    head = ("| system | field | ordering | basis | mech | Singular | mech / Singular | SymPy | SymPy / mech "
+            "| mech peak RSS |")
+    rows = [head, "|" + "---|" * 10]
+    print(head)
+    for case in cases:
+        mech = run_child("mech", case, args.repeat, args.timeout)
+        sing = run_singular(case, args.timeout)
+        sym = None
+        if case.sympy and not args.no_sympy:
+            sym = run_child("sympy", case, 1, args.sympy_timeout)
+        size = mech.get("size", "?") if mech else "?"
+        if sing and "size" in sing and mech and "size" in mech and sing["size"] != mech["size"]:
+            size = f"{size} (Singular {sing['size']})"
+        rss = f"{mech['rss']:.0f} MB" if mech and "rss" in mech else "—"
+        row = (f"| {case.name} | {case.field} | {case.ordering} | {size} | {fmt_time(mech)} | {fmt_time(sing)} "
+               f"| {ratio(mech, sing)} | {fmt_time(sym)} | {ratio(sym, mech)} | {rss} |")
+        rows.append(row)
+        print(row, flush=True)
+        if mech and "wall" in mech:
+            print(f"    wall: mech {mech['wall']:.3f} s" + (f", Singular {sing['wall']:.3f} s" if sing and "wall" in sing
+                                                        else ""), flush=True)
+    if args.write:
+        write_results(rows, args)
+
+
+def write_results(rows: list[str], args) -> None:
+    text = ["# Benchmarks: reduced Gröbner bases", "",
+            "Produced by `python benchmarks/run.py --write` (see its docstring for the method).", ""]
+    text += machine()
+    text += ["", "Times are CPU time of one computation (mech: best of "
+             f"{args.repeat}; Singular: mean over repetitions filling half a second; SymPy: one run, "
+             f"`method='buchberger'`, stopped after {args.sympy_timeout:.0f} s; — = not run). "
+             "Singular's `std` uses its default options (tail-reduced, not necessarily minimal); "
+             "mech returns the reduced basis. The basis column is the number of elements mech returns.", ""]
+    text += rows
+    text += [""]
+    (HERE / "RESULTS.md").write_text("\n".join(text) + "\n")
+
+
+if __name__ == "__main__":
+    main()

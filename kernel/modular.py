@@ -1,0 +1,400 @@
+"""Gröbner bases over QQ by F4 modulo primes (Arnold, JSC 35, 2003; Traverso's Gröbner trace).
+
+1. The generators are scaled to primitive integer polynomials ``F``.
+2. One prime ``p0`` runs the full F4 (:class:`.f4.F4`) and records its trace; further primes
+   only replay the recorded linear algebra (:func:`.f4.replay`).  A prime that does not follow
+   the trace is dropped; when too many do, ``p0`` was unlucky and a new prime learns.  Primes
+   dividing a leading coefficient of ``F`` are skipped.
+3. The residues of the coefficients of the reduced basis are combined by the Chinese remainder
+   theorem and lifted to rationals by rational reconstruction (:class:`Reconstructor`); every
+   lifted coefficient is checked against the later primes, and a complete lift is accepted
+   once the next prime agrees with all of it.
+4. The lift ``G`` is verified (:func:`verify_basis`):
+
+   * exactly over QQ: every generator top-reduces to 0 by ``G``, so ``I = <F>`` lies in
+     ``J = <G>``;
+   * the Gröbner basis property: with ``verify="exact"``, every S-pair left by the
+     Gebauer–Möller criteria top-reduces to 0 over QQ, so ``G`` is the reduced Gröbner basis
+     of ``J``.  By default (``"fast"``) this is checked modulo one fresh prime ``q`` instead:
+     ``G mod q`` is a Gröbner basis.  If ``G`` were not one over QQ, some S-pair would have a
+     nonzero remainder whose numerators ``q`` divides; ``q`` is drawn independently of ``G``
+     from about 7 million primes, so this has probability below ``b / 27 / 7e6`` for
+     remainders of ``b`` bits in all.
+
+   ``J = I`` then holds when ``I`` is homogeneous: with ``p`` any prime used, the rank of a
+   matrix over ``Z`` only drops mod ``p``, so ``dim I_d >= dim (I mod p)_d = #LM(G)_d =
+   dim J_d >= dim I_d`` in every degree.  For other ideals it holds as soon as one prime used
+   is lucky, ``LT(I mod p) = LT(I)``: then ``LT(J) = <LM(G)> = LT(I)`` with ``I ⊆ J``.  Only
+   finitely many primes are unlucky, and the primes are drawn from ``(2^27, 2^28)`` by a fixed
+   pseudo-random sequence (so runs are reproducible).
+   If a check fails, the computation starts again from a new prime; after three failures
+   the caller falls back to Buchberger over QQ.
+"""
+from __future__ import annotations
+
+import random
+from math import gcd, isqrt
+from typing import Any, Sequence
+
+import flint
+
+from .f4 import F4, PackingOverflow, TraceMismatch, initial_degree, is_groebner, replay
+from .monomials import Packing, nonnegative_matrix
+
+PRIME_RANGE = (1 << 27, 1 << 28)
+
+
+class ModularFailure(Exception):
+    """The modular method could not produce a verified basis (use another engine)."""
+
+
+class SmallSystem(Exception):
+    """The first modular run was smaller than the caller's threshold (use another engine)."""
+
+
+def primes(seed: int = 20031):
+    """An endless pseudo-random sequence of distinct primes in ``PRIME_RANGE``."""
+    rng = random.Random(seed)
+    seen = set()
+    while True:
+        q = _next_prime(rng.randrange(*PRIME_RANGE))
+        if q < PRIME_RANGE[1] and q not in seen:
+            seen.add(q)
+            yield q
+
+
+def _next_prime(n: int) -> int:
+    n |= 1
+    while not flint.fmpz(n).is_prime():
+        n += 2
+    return n
+
+
+def primitive(terms: dict) -> dict:
+    """The primitive integer multiple (positive content) of a polynomial over QQ."""
+    den = 1
+    for c in terms.values():
+        q = int(c.q)
+        den = den * q // gcd(den, q)
+    ints = {e: int(c.p) * (den // int(c.q)) for e, c in terms.items()}
+    cont = 0
+    for v in ints.values():
+        cont = gcd(cont, v)
+    return {e: v // cont for e, v in ints.items()}
+
+
+def ratrec(a: int, m: int, bound: int) -> tuple[int, int] | None:
+    """``n/d`` with ``n = a d mod m``, ``|n| <= bound``, ``0 < d <= bound`` (Wang), or None."""
+    r0, r1, s0, s1 = m, a % m, 0, 1
+    while r1 > bound:
+        q = r0 // r1
+        r0, r1 = r1, r0 - q * r1
+        s0, s1 = s1, s0 - q * s1
+    if s1 == 0 or abs(s1) > bound or gcd(r1, abs(s1)) != 1:
+        return None
+    return (r1, s1) if s1 > 0 else (-r1, -s1)
+
+
+class Reconstructor:
+    """Rational reconstruction of coefficient lists, resumed where the last attempt failed:
+    coefficients lifted from fewer primes are kept (the final check against a further prime
+    covers them).  A running common denominator ``den`` makes most coefficients one
+    multiplication: ``a den mod m`` is already the small numerator."""
+
+    def __init__(self, sizes: list[int]) -> None:
+        self.out: list[list[tuple[int, int]]] = [[(0, 1)] * k for k in sizes]
+        self.reset()
+
+    def reset(self) -> None:
+        self.i = self.j = 0
+        self.den = 1
+
+    def check(self, residues: list[list[int]], p: int) -> bool:
+        """Rewind to the first lifted coefficient that disagrees with the residues mod p;
+        whether one did."""
+        out = self.out
+        for i in range(min(self.i + 1, len(out))):
+            row, rs = out[i], residues[i]
+            for j in range(self.j if i == self.i else len(row)):
+                n, d = row[j]
+                if (n - rs[j] * d) % p or d % p == 0:
+                    self.i, self.j, self.den = i, j, 1
+                    return True
+        return False
+
+    def attempt(self, values: list[list[int]], m: int) -> list[list[Any]] | None:
+        bound = isqrt(m // 2)
+        half = m // 2
+        i, j, den, out = self.i, self.j, self.den, self.out
+        while i < len(values):
+            cs, row = values[i], out[i]
+            while j < len(cs):
+                a = cs[j]
+                b = a * den % m
+                if b > half:
+                    b -= m
+                if -bound <= b <= bound and den <= bound:
+                    row[j] = (b, den)
+                else:
+                    r = ratrec(a, m, bound)
+                    if r is None:
+                        self.i, self.j, self.den = i, j, den
+                        return None
+                    row[j] = r
+                    den = den * r[1] // gcd(den, r[1])
+                    if den > bound:
+                        den = r[1]
+                j += 1
+            i, j = i + 1, 0
+        self.i, self.j, self.den = i, j, den
+        return [[flint.fmpq(n, d) for n, d in row] for row in out]
+
+
+class Lifter:
+    """Chinese remaindering of coefficient lists, prime by prime."""
+
+    def __init__(self) -> None:
+        self.m = 1
+        self.values: list[list[int]] | None = None
+
+    def add(self, residues: list[list[int]], p: int) -> None:
+        if self.values is None:
+            self.values, self.m = [list(cs) for cs in residues], p
+            return
+        m = self.m
+        inv = pow(m, -1, p)
+        self.values = [[x + m * ((r - x) * inv % p) for x, r in zip(xs, rs)]
+                       for xs, rs in zip(self.values, residues)]
+        self.m = m * p
+
+
+def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
+          small_work: int = 0) -> list[dict]:
+    """The reduced Gröbner basis over QQ by modular F4, as ``{exponent: fmpq}`` dicts
+    (see the module docstring; ``verify`` is ``"fast"``, ``"exact"`` or ``"none"``).
+    Raises :class:`SmallSystem` if the first run handles fewer than ``small_work`` matrix
+    entries."""
+    ints = [primitive(g.terms) for g in gens]
+    maxdeg = initial_degree(gens)
+    stream = primes()
+    for attempt in range(3):
+        while True:
+            P = Packing(ring.order, maxdeg)
+            shapes, coefs = _pack(ints, P)
+            try:
+                result = _modular(shapes, coefs, P, stream, max_primes, small_work)
+                break
+            except PackingOverflow:
+                maxdeg = 2 * maxdeg + 1
+        if result is None:
+            continue
+        shape, G = result
+        unpack = P.unpack
+        basis = [{unpack(mo): c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
+        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact"):
+            return basis
+    raise ModularFailure("no verified basis")
+
+
+def _pack(ints: list[dict], P: Packing):
+    shapes, coefs = [], []
+    for t in ints:
+        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
+        shapes.append([m for m, _ in items])
+        coefs.append([c for _, c in items])
+    return shapes, coefs
+
+
+def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int = 0):
+    """(monomials, rational coefficients) of the lifted basis, or None to start again."""
+    used = 0
+    while used < max_primes:
+        p0 = next(stream)
+        used += 1
+        if any(cs[0] % p0 == 0 for cs in coefs):
+            continue
+        rows = [(ms, [c % p0 for c in cs]) for ms, cs in zip(shapes, coefs)]
+        engine = F4(rows, P, p0, record=True)
+        basis = engine.run()
+        if engine.work < small_work:
+            raise SmallSystem
+        small_work = 0
+        trace = engine.trace
+        shape = trace.shape
+        lifter = Lifter()
+        lifter.add([cs for _, cs in basis], p0)
+        rec = Reconstructor([len(cs) for _, cs in basis])
+        candidate = None
+        misses = good = 0
+        while used < max_primes:
+            p = next(stream)
+            used += 1
+            if any(cs[0] % p == 0 for cs in coefs):
+                continue
+            try:
+                res = replay(trace, [[c % p for c in cs] for cs in coefs], p)
+            except TraceMismatch:
+                misses += 1
+                if misses > good + 2:
+                    break  # p0 was unlucky: learn again
+                continue
+            good += 1
+            if not rec.check(res, p) and candidate is not None:
+                return shape, candidate
+            lifter.add(res, p)
+            candidate = rec.attempt(lifter.values, lifter.m)
+    return None
+
+
+def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool = False) -> bool:
+    """Check a lifted reduced basis (see the module docstring).
+
+    Always exact: every generator top-reduces to 0 over QQ.  The Gröbner basis property is
+    checked exactly over QQ (``exact``), or else modulo one fresh prime, where it is one F4
+    matrix of all S-pairs left by the Gebauer–Möller criteria."""
+    if len(basis) == 1 and len(basis[0]) == 1 and not any(next(iter(basis[0]))):
+        return True  # the unit ideal: nothing to check beyond the lift
+    red = ExactReducer(basis, ring.order)
+    if exact:
+        if not red.is_groebner():
+            return False
+    else:
+        checked = 0
+        while checked < 1:
+            q = next(stream)
+            rows = _reduce_mod(basis, ring.order, q)
+            if rows is None:
+                continue
+            if not _is_groebner_mod(rows, ring.order, q):
+                return False
+            checked += 1
+    return all(red.reduces_to_zero(f) for f in ints)
+
+
+def _reduce_mod(basis: list[dict], order, q: int):
+    """The basis mod q as (exponents, coefficients) pairs, or None if q divides a denominator."""
+    out = []
+    for b in basis:
+        items = []
+        for e, c in b.items():
+            d = int(c.q) % q
+            if d == 0:
+                return None
+            items.append((e, int(c.p) * pow(d, -1, q) % q))
+        out.append(items)
+    return out
+
+
+def _is_groebner_mod(polys, order, q: int) -> bool:
+    maxdeg = 15
+    top = max(sum(e) for items in polys for e, _ in items)
+    while maxdeg < 2 * top:
+        maxdeg = 2 * maxdeg + 1
+    while True:
+        P = Packing(order, maxdeg)
+        rows = []
+        for items in polys:
+            packed = sorted(((P.pack(e), c) for e, c in items), reverse=True)
+            rows.append(([m for m, _ in packed], [c for _, c in packed]))
+        try:
+            return is_groebner(rows, P, q)
+        except PackingOverflow:
+            maxdeg = 2 * maxdeg + 1
+
+
+class ExactReducer:
+    """Top-reduction over QQ by a reduced basis, with python-flint's ``fmpq_mpoly``.
+
+    ``x^e`` is mapped to ``y^(W e, e)`` in ``QQ[y_1..y_2n]`` with the lexicographic ordering:
+    a ring embedding that maps leading terms to leading terms (``W`` is the ordering's
+    nonnegative matrix), so flint does the arithmetic and finds leading terms."""
+
+    def __init__(self, basis: list[dict], order) -> None:
+        n = self.n = order.nvars
+        self.W = W = nonnegative_matrix(order)
+        self.ctx = flint.fmpq_mpoly_ctx.get(("y", 2 * n), "lex")
+        self.xctx = flint.fmpq_mpoly_ctx.get(("x", n), "lex")
+        ys = self.ctx.gens()
+        self.images = []
+        for j in range(n):
+            m = ys[n + j]
+            for i in range(n):
+                if W[i][j]:
+                    m = m * ys[i] ** W[i][j]
+            self.images.append(m)
+        self.polys = [self.image(b) for b in basis]
+        self.lms = [p.monomial(0)[n:] for p in self.polys]
+        self.masks = [_support(e) for e in self.lms]
+
+    def image(self, terms: dict):
+        """The image of a polynomial (substitution of monomials, done by flint)."""
+        return self.xctx.from_dict(terms).compose(*self.images, ctx=self.ctx)
+
+    def _term(self, u, c):
+        W = self.W
+        return self.ctx.from_dict({tuple([sum(w * x for w, x in zip(r, u)) for r in W]) + tuple(u): c})
+
+    def reduces_to_zero(self, terms: dict) -> bool:
+        f = self.image({e: flint.fmpq(c) for e, c in terms.items()})
+        return self._top_reduce(f)
+
+    def _top_reduce(self, f) -> bool:
+        n, lms, masks, polys = self.n, self.lms, self.masks, self.polys
+        while not f.is_zero():
+            e = f.monomial(0)[n:]
+            m = _support(e)
+            for k, lm in enumerate(lms):
+                if masks[k] & ~m == 0 and all(a <= b for a, b in zip(lm, e)):
+                    break
+            else:
+                return False
+            u = tuple([a - b for a, b in zip(e, lm)])
+            f = f - self._term(u, f.leading_coefficient()) * polys[k]
+        return True
+
+    def is_groebner(self) -> bool:
+        """Every S-pair left by the Gebauer–Möller criteria top-reduces to 0 over QQ."""
+        for i, j, L in _pairs(self.lms):
+            ui = tuple([a - b for a, b in zip(L, self.lms[i])])
+            uj = tuple([a - b for a, b in zip(L, self.lms[j])])
+            one = flint.fmpq(1)
+            s = self._term(ui, one) * self.polys[i] - self._term(uj, one) * self.polys[j]
+            if not self._top_reduce(s):
+                return False
+        return True
+
+
+def _support(e) -> int:
+    m = 0
+    for i, v in enumerate(e):
+        if v:
+            m |= 1 << i
+    return m
+
+
+def _pairs(lms: list) -> list[tuple[int, int, tuple]]:
+    """The pairs of a basis with these leading exponents left by the Gebauer–Möller
+    criteria (adding the elements one by one)."""
+    def lcm(a, b):
+        return tuple([x if x > y else y for x, y in zip(a, b)])
+
+    def divides(a, b):
+        return all(x <= y for x, y in zip(a, b))
+
+    pairs: list[tuple[int, int, tuple]] = []
+    for h, H in enumerate(lms):
+        cands = []
+        for i in range(h):
+            L = lcm(lms[i], H)
+            cands.append((i, L, L == tuple(x + y for x, y in zip(lms[i], H))))
+        kept: dict[tuple, tuple] = {}
+        for c in cands:
+            if any(d[1] != c[1] and divides(d[1], c[1]) for d in cands):
+                continue
+            prev = kept.get(c[1])
+            if prev is None or (c[2] and not prev[2]):
+                kept[c[1]] = c
+        pairs = [(i, j, L) for i, j, L in pairs
+                 if not (divides(H, L) and lcm(lms[i], H) != L and lcm(lms[j], H) != L)]
+        pairs += [(i, h, L) for i, L, coprime in kept.values() if not coprime]
+    return pairs
