@@ -1,4 +1,4 @@
-"""Gröbner basis benchmarks: mech against Singular, SymPy (and Macaulay2 when installed).
+"""Gröbner basis benchmarks: mech against Singular, Macaulay2 and SymPy (each when installed).
 
     python benchmarks/run.py                      # every case of benchmarks/cases.py
     python benchmarks/run.py --only katsura-6 --no-sympy
@@ -109,6 +109,56 @@ def run_singular(case: Case, timeout: float) -> dict | None:
     return out
 
 
+M2_ORDERS = {"dp": "GRevLex", "lp": "Lex", "Dp": "GLex"}
+
+
+def m2_order(ordering: str) -> str | None:
+    """Macaulay2's MonomialOrder for a Singular ordering: one block or a product of blocks."""
+    if ordering in M2_ORDERS:
+        return M2_ORDERS[ordering]
+    blocks = []
+    for part in ordering.strip("()").split("),"):
+        kind, _, size = part.rstrip(")").partition("(")
+        if kind not in M2_ORDERS or not size.isdigit():
+            return None
+        blocks.append(f"{M2_ORDERS[kind]} => {size}")
+    return "{" + ", ".join(blocks) + "}"
+
+
+def m2_script(case: Case, reps: int) -> str:
+    """``gens gb`` of a fresh copy of the ideal ``reps`` times (M2 caches bases on the ideal)."""
+    field = "QQ" if case.char == 0 else f"ZZ/{case.char}"
+    ring = f"R = {field}[{', '.join(case.variables)}, MonomialOrder => {m2_order(case.ordering)}]; use R;"
+    return (f"t = 0; n = 0;\nfor k from 1 to {reps} do ({ring} I = ideal({', '.join(case.gens)}); "
+            f"t0 = cpuTime(); G = gens gb I; t = t + cpuTime() - t0; n = numcols G);\n"
+            f'print "RESULT"; print(t / {reps}); print n;\n')
+
+
+def run_m2(case: Case, timeout: float) -> dict | None:
+    """Macaulay2's time for a minimal Gröbner basis (``gens gb``), CPU seconds per run."""
+    if not M2 or m2_order(case.ordering) is None:
+        return None
+    reps, out = 1, None
+    for _ in range(2):
+        path = HERE / f".m2-{os.getpid()}.m2"
+        path.write_text(m2_script(case, reps))
+        try:
+            res = subprocess.run([M2, "--script", str(path)], text=True, capture_output=True, timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return {"timeout": timeout}
+        finally:
+            path.unlink()
+        if "RESULT" not in res.stdout:
+            return {"error": (res.stderr or res.stdout).strip()[-200:]}
+        lines = res.stdout.split("RESULT", 1)[1].split()
+        cpu = float(lines[0])
+        out = {"cpu": cpu, "size": int(lines[1]), "reps": reps}
+        if cpu * reps >= 0.5 or reps > 1:
+            break
+        reps = min(200, max(2, math.ceil(0.5 / max(cpu, 1e-3))))
+    return out
+
+
 def fmt_time(r: dict | None) -> str:
     if r is None:
         return "—"
@@ -171,13 +221,14 @@ def main() -> None:
         return
 
     cases = [c for c in CASES if not args.only or c.name in args.only]
-    head = ("| system | field | ordering | basis | mech | Singular | mech / Singular | SymPy | SymPy / mech "
-            "| mech peak RSS |")
-    rows = [head, "|" + "---|" * 10]
+    head = ("| system | field | ordering | basis | mech | Singular | mech / Singular | Macaulay2 | mech / M2 "
+            "| SymPy | SymPy / mech | mech peak RSS |")
+    rows = [head, "|" + "---|" * 12]
     print(head)
     for case in cases:
         mech = run_child("mech", case, args.repeat, args.timeout)
         sing = run_singular(case, args.timeout)
+        m2 = run_m2(case, args.timeout)
         sym = None
         if case.sympy and not args.no_sympy:
             sym = run_child("sympy", case, 1, args.sympy_timeout)
@@ -186,7 +237,8 @@ def main() -> None:
             size = f"{size} (Singular {sing['size']})"
         rss = f"{mech['rss']:.0f} MB" if mech and "rss" in mech else "—"
         row = (f"| {case.name} | {case.field} | {case.ordering} | {size} | {fmt_time(mech)} | {fmt_time(sing)} "
-               f"| {ratio(mech, sing)} | {fmt_time(sym)} | {ratio(sym, mech)} | {rss} |")
+               f"| {ratio(mech, sing)} | {fmt_time(m2)} | {ratio(mech, m2)} | {fmt_time(sym)} | {ratio(sym, mech)} "
+               f"| {rss} |")
         rows.append(row)
         print(row, flush=True)
         if mech and "wall" in mech:
@@ -201,7 +253,8 @@ def write_results(rows: list[str], args) -> None:
             "Produced by `python benchmarks/run.py --write` (see its docstring for the method).", ""]
     text += machine()
     text += ["", "Times are CPU time of one computation (mech: best of "
-             f"{args.repeat}; Singular: mean over repetitions filling half a second; SymPy: one run, "
+             f"{args.repeat}; Singular and Macaulay2: mean over repetitions filling half a second, Macaulay2's "
+             "`gens gb` on a fresh copy of the ring and ideal each time; SymPy: one run, "
              f"`method='buchberger'`, stopped after {args.sympy_timeout:.0f} s; — = not run). "
              "Singular's `std` uses its default options (tail-reduced, not necessarily minimal); "
              "mech returns the reduced basis. The basis column is the number of elements mech returns.", ""]

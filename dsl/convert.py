@@ -8,14 +8,38 @@ from ..kernel import Poly, PolyRing
 from .errors import MechTypeError
 
 
+def _mpoly_to_sympy(m: Any, syms: list) -> Any:
+    import sympy
+    total = sympy.Integer(0)
+    for e, c in m.to_dict().items():
+        term = sympy.Integer(int(c))
+        for s, k in zip(syms, e):
+            term *= s ** k
+        total += term
+    return total
+
+
+def _coeff_to_sympy(field: Any, c: Any) -> Any:
+    """A coefficient as a sympy number, or over a parameter field (``ring r = (0,a),...``) a
+    quotient of polynomials in symbols named like the parameters."""
+    import sympy
+
+    from ..kernel.ratfunc import RationalFunctionField
+    if isinstance(field, RationalFunctionField):
+        syms = [sympy.Symbol(n) for n in field.params]
+        return _mpoly_to_sympy(c.num, syms) / _mpoly_to_sympy(c.den, syms)
+    f = field.to_fraction(c)
+    return sympy.Rational(f.numerator, f.denominator)
+
+
 def poly_to_sympy(p: Poly) -> Any:
-    """A kernel polynomial as a sympy expression in symbols named like the ring variables."""
+    """A kernel polynomial as a sympy expression in symbols named like the ring variables (and
+    parameters)."""
     import sympy
     syms = [sympy.Symbol(n) for n in p.ring.names]
     total = sympy.Integer(0)
     for e, c in p.terms.items():
-        f = p.ring.field.to_fraction(c)
-        term = sympy.Rational(f.numerator, f.denominator)
+        term = _coeff_to_sympy(p.ring.field, c)
         for s, k in zip(syms, e):
             if k:
                 term *= s ** k
@@ -45,25 +69,60 @@ def to_sympy(v: Any) -> Any:
 
 
 def sympy_to_poly(expr: Any, ring: PolyRing) -> Poly:
-    """A sympy expression (polynomial in the ring's variable names, rational coefficients) as a
-    kernel polynomial of ``ring``."""
+    """A sympy expression (polynomial in the ring's variable names with rational coefficients, or
+    over a parameter field coefficients rational in the parameters) as a kernel polynomial of ``ring``."""
     import sympy
+
+    from ..kernel.ratfunc import RationalFunctionField
     expr = sympy.sympify(expr)
     syms = [sympy.Symbol(n) for n in ring.names]
-    extra = expr.free_symbols - set(syms)
+    field = ring.field
+    params = [sympy.Symbol(n) for n in field.params] if isinstance(field, RationalFunctionField) else []
+    extra = expr.free_symbols - set(syms) - set(params)
     if extra:
         names = ", ".join(sorted(str(s) for s in extra))
         raise MechTypeError(f"{names}: not a variable of the basering ({','.join(ring.names)})")
     try:
-        sp = sympy.Poly(sympy.expand(expr), *syms) if syms else None
+        sp = sympy.Poly(sympy.together(sympy.expand(expr)) if params else sympy.expand(expr), *syms)
     except sympy.PolynomialError as e:
         raise MechTypeError(f"not a polynomial: {expr}") from e
     terms = {}
     for monom, coeff in sp.terms():
-        if not coeff.is_Rational:
-            raise MechTypeError(f"coefficient {coeff} is not a rational number")
-        terms[tuple(int(k) for k in monom)] = Fraction(int(coeff.p), int(coeff.q))
+        terms[tuple(int(k) for k in monom)] = _sympy_to_coeff(coeff, field, params)
     return ring.from_dict(terms)
+
+
+def _sympy_to_coeff(coeff: Any, field: Any, params: list) -> Any:
+    import sympy
+    if coeff.is_Rational:
+        return Fraction(int(coeff.p), int(coeff.q))
+    if not params:
+        raise MechTypeError(f"coefficient {coeff} is not a rational number")
+    num, den = sympy.fraction(sympy.cancel(coeff))
+    try:
+        parts = [sympy.Poly(x, *params) for x in (num, den)]
+    except sympy.PolynomialError as e:
+        raise MechTypeError(f"coefficient {coeff} is not rational in the parameters") from e
+    flint_polys = []
+    for part in parts:
+        d = {}
+        for monom, c in part.terms():
+            if not c.is_Rational:
+                raise MechTypeError(f"coefficient {coeff} is not rational in the parameters")
+            d[tuple(int(k) for k in monom)] = Fraction(int(c.p), int(c.q))
+        flint_polys.append(d)
+    return _ratfunc(field, *flint_polys)
+
+
+def _ratfunc(field: Any, num: dict, den: dict) -> Any:
+    """``num/den`` (dicts exponent -> Fraction) as an element of the parameter field."""
+    from math import lcm
+    scale = lcm(*(f.denominator for f in list(num.values()) + list(den.values())))
+    if field.characteristic and scale % field.characteristic == 0:
+        raise MechTypeError(f"a coefficient has a denominator divisible by {field.characteristic}")
+    def mpoly(d: dict) -> Any:
+        return field.ctx.from_dict({e: int(c * scale) for e, c in d.items()})
+    return field.from_polys(mpoly(num), mpoly(den))
 
 
 def is_sympy(x: Any) -> bool:

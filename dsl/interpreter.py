@@ -181,7 +181,7 @@ class Interpreter:
     def _line_text(self) -> str:
         if self.stmt is None or not self.stmt.pos.line:
             return ""
-        return self.source.line(self.stmt.pos.line).strip()
+        return self.source.line(self.stmt.pos.line).rstrip("\r\n")  # as Singular: with its blanks
 
     def warn_in_line(self, message: str) -> None:
         self.warn(f"{message} in line >>{self._line_text()}<<")
@@ -278,7 +278,8 @@ class Interpreter:
             if v is None:
                 v = Matrix(ring, *(dims or (1, 1)))
             else:
-                v = to_matrix(v, ring, *dims) if dims else to_matrix(v, ring)
+                # as Singular: a matrix value keeps its size, other values fill [rows][cols] (default 1 x 1)
+                v = to_matrix(v, ring) if isinstance(v, Matrix) else to_matrix(v, ring, *(dims or (1, 1)))
         elif v is None:
             v = self._default(typ)
         else:
@@ -298,6 +299,8 @@ class Interpreter:
             return NONE
         if typ == "proc":
             raise MechRuntimeError("a proc is declared with proc name(...) { ... }")
+        if typ == "mechanism":
+            raise MechRuntimeError('a mechanism is declared with its description: mechanism m = "fix O; bar O A l1";')
         ring = self.basering().poly
         if typ == "number":
             return Number(ring, ring.field.zero)
@@ -327,6 +330,11 @@ class Interpreter:
         table = self._ring_table(frame, ring, True) if dependent else frame.vars
         other = frame.vars if dependent else (self._ring_table(frame, self.ring, False) if self.ring else None)
         if name in table or (other is not None and name in other):
+            old = table.get(name) or other.get(name)
+            kind = {"bigint": "int", "qring": "ring"}
+            if typ != "def" and kind.get(typ, typ) != kind.get(typeof(old.value), typeof(old.value)):
+                raise MechNameError(f"identifier '{name}' in use (a {typeof(old.value)}): as in Singular, "
+                                    f"kill it before declaring a {typ} of that name")
             self._redefining(name)
             table.pop(name, None)
             if other is not None:
@@ -443,10 +451,7 @@ class Interpreter:
             src = v[0]
             target = self.basering().poly
             images = list(self._converted(ExprList(v[1:]), "ideal", target).gens) if len(v) > 1 else []
-            if len(images) > len(src.names):
-                raise MechRuntimeError(f"the map gives {len(images)} images for the {len(src.names)} "
-                                       f"variables of {src.name or 'the source ring'}")
-            m = Map(src, target, tuple(images))
+            m = Map(src, target, tuple(images))  # as Singular, images beyond the variables are kept, unused
         self.declare(s.items[0].name, "map", m)
 
     def _exec_assign(self, s: A.Assign) -> None:
@@ -557,6 +562,11 @@ class Interpreter:
             vals += [0] * (i - len(vals))
             vals[i - 1] = to_int(value)
             return IntVec(vals)
+        if isinstance(container, str) and last and isinstance(value, str):
+            # as Singular: the i-th character becomes the first one of the value ("" ends the string there)
+            if not 1 <= i <= len(container):
+                raise MechRuntimeError(f"string index {i} out of range 1..{len(container)}")
+            return container[:i - 1] + value[:1] + (container[i:] if value else "")
         raise MechTypeError(f"cannot assign into an entry of a {typeof(container)}")
 
     def _exec_incdec(self, s: A.IncDec) -> None:
@@ -584,8 +594,8 @@ class Interpreter:
                 self.exec_block(s.body)
             except _Break:
                 break
-            except _Continue:
-                pass
+            except _Continue:  # as in Singular, continue skips the step: it goes on with the condition
+                continue
             if s.step is not None:
                 self.exec_stmt(s.step)
 
@@ -661,6 +671,8 @@ class Interpreter:
         ring = self.eval(s.ring)
         if not isinstance(ring, Ring):
             raise MechTypeError(f"keepring needs a ring, not {typeof(ring)}")
+        if isinstance(s.ring, A.Name):
+            ring.name = s.ring.id
         self.ring = ring
         self.frames[-1].keep_ring = True
 
@@ -668,6 +680,8 @@ class Interpreter:
         ring = self.eval(s.ring)
         if not isinstance(ring, Ring):
             raise MechTypeError(f"setring needs a ring, not {typeof(ring)}")
+        if isinstance(s.ring, A.Name):  # as Singular, the basering is known by the name it was set by
+            ring.name = s.ring.id
         self.ring = ring
 
     def _exec_lib(self, s: A.Lib) -> None:
@@ -935,6 +949,9 @@ class Interpreter:
                 if isinstance(v, Proc):
                     return self.call_proc(v, self._values(node.args), node)
                 if isinstance(v, Map):
+                    nvars = len(v.source.names)
+                    if len(v.images) < nvars:  # Singular's quirk: applying a map stores its missing images (0)
+                        var.value = Map(v.source, v.ring, v.images + (v.ring.zero(),) * (nvars - len(v.images)))
                     return self.apply_map(v, node.args)
             cmd = self.registry.find(name, self.loaded_libs)
             if cmd is not None:
@@ -1046,8 +1063,8 @@ class Interpreter:
             typ = p.type or "def"
             if typ == "ring":
                 v = convert(args[i], "ring", None)
-            elif typ == "matrix":
-                v = to_matrix(args[i], self.basering().poly)
+            elif typ == "matrix":  # as a declaration without dimensions: a non-matrix fills a 1 x 1 matrix
+                v = to_matrix(args[i], self.basering().poly, *((0, 0) if isinstance(args[i], Matrix) else (1, 1)))
             else:
                 try:
                     v = self._converted(args[i], typ, self.ring.poly if self.ring else None)
@@ -1076,7 +1093,8 @@ class Interpreter:
                 value = self.eval(node)
             finally:
                 self.ring = saved
-        images = list(m.images) + [m.ring.zero()] * (len(m.source.names) - len(m.images))
+        nvars = len(m.source.names)
+        images = list(m.images[:nvars]) + [m.ring.zero()] * (nvars - len(m.images))
         from ..kernel.maps import map_polys
         return map_value(value, images, m.ring, lambda polys, source: map_polys(polys, images, m.ring, source))
 

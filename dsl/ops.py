@@ -113,14 +113,22 @@ def _simplify(gens: list[Poly], multiples: bool) -> list[Poly]:
     return out
 
 
+def _compactify(ring: PolyRing, gens: list[Poly]) -> list[Poly]:
+    """Singular's id_Compactify: the unit ideal ``1`` if a generator is a unit (its leading monomial
+    is 1 in the ring's ordering), else without zeros and constant multiples of earlier generators."""
+    if any(not g.is_zero() and not any(g.lm()) for g in gens):
+        return [ring.one()]
+    return _simplify(gens, True)
+
+
 def _ideal_op(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
     ring = _ring(a, b, ring)
     if op == "+":
         ia, ib = to_ideal(a, ring), to_ideal(b, ring)
-        return Ideal(ring, _simplify(list(ia.gens) + list(ib.gens), True))
+        return Ideal(ring, _compactify(ring, list(ia.gens) + list(ib.gens)))
     if op == "*":
         if isinstance(a, Ideal) and isinstance(b, Ideal):
-            return Ideal(ring, _simplify([f * g for f in a.gens for g in b.gens], False))
+            return Ideal(ring, _compactify(ring, [f * g for f in a.gens for g in b.gens]))
         if isinstance(a, Ideal):
             p = to_poly(b, ring)
             return Ideal(ring, [g * p for g in a.gens])
@@ -261,10 +269,10 @@ def power(a: Any, k: Any) -> Any:
     if isinstance(a, Ideal):
         if k < 0:
             raise MechRuntimeError("negative exponent for an ideal")
-        result = Ideal(a.ring, [a.ring.one()])
+        gens = [a.ring.one()]  # all k-fold products, without zeros and repetitions (Singular's id_Power)
         for _ in range(k):
-            result = _ideal_op("*", result, a, a.ring)
-        return result
+            gens = [f * g for f in gens for g in a.gens]
+        return Ideal(a.ring, _simplify(gens, False) or [a.ring.zero()])
     if isinstance(a, Matrix) and a.nrows == a.ncols and k >= 0:
         result = Matrix(a.ring, a.nrows, a.ncols, [a.ring.one() if i == j else a.ring.zero()
                                                    for i in range(a.nrows) for j in range(a.ncols)])

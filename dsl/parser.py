@@ -205,6 +205,9 @@ class _Build(Transformer_NonRecursive):  # iterative: deeply nested input cannot
         t = str(c[0])
         return t[1:-1] if t.startswith('"') else t
 
+    def help_keyword(self, c):
+        return str(c[0])
+
     @v_args(meta=True)
     def block(self, meta, c):
         return A.Block(list(c), pos=_pos(meta))

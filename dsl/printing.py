@@ -156,6 +156,8 @@ def _render_list(lst: List, indent: str) -> str:
         sub = indent + "   "
         if isinstance(x, List):
             lines.append(_render_list(x, sub))
+        elif isinstance(x, (str, Ring)):  # printed as one text: Singular indents only its first line
+            lines.append(sub + render(x))
         else:
             lines.extend(sub + line for line in render(x).split("\n"))
     return "\n".join(lines)
@@ -169,6 +171,10 @@ def print_form(v: Any) -> str:
         return ",\n".join(poly_str(g) for g in v.gens)
     if isinstance(v, IntVec):
         return ",\n".join(str(x) for x in v.values) + " "
+    if isinstance(v, Ring):
+        order = v.poly.order
+        kind = "global" if order.is_global else "local" if order.is_local else "mixed"
+        return f"polynomial ring, over a field, {kind} ordering\n" + ring_str(v)
     return render(v)
 
 

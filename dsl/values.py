@@ -250,7 +250,7 @@ def typeof(v: Any) -> str:
         return "int"
     if isinstance(v, ExprList):
         return "list"
-    return type(v).__name__
+    return getattr(type(v), "type_name", type(v).__name__)
 
 
 def ring_of(v: Any) -> Optional[PolyRing]:
@@ -339,7 +339,7 @@ def to_ideal(v: Any, ring: Optional[PolyRing]) -> Ideal:
 
 def to_matrix(v: Any, ring: Optional[PolyRing], nrows: int = 0, ncols: int = 0) -> Matrix:
     """A matrix from a matrix, ideal (one row), polynomial or list of entries; with dimensions
-    given, entries fill row by row (missing ones are zero)."""
+    given, entries fill row by row (missing ones are zero, extra ones dropped, as in Singular)."""
     ring = _need_ring(ring, "matrix")
     if isinstance(v, Matrix):
         _check_ring(v, ring)
@@ -355,9 +355,7 @@ def to_matrix(v: Any, ring: Optional[PolyRing], nrows: int = 0, ncols: int = 0) 
         entries = list(to_ideal(v, ring).gens)
     if not nrows:
         return Matrix(ring, 1, len(entries), entries)
-    if len(entries) > nrows * ncols:
-        raise MechRuntimeError(f"too many entries ({len(entries)}) for a {nrows} x {ncols} matrix")
-    return Matrix(ring, nrows, ncols, entries)
+    return Matrix(ring, nrows, ncols, entries[:nrows * ncols])
 
 
 def to_intvec(v: Any) -> IntVec:
@@ -421,6 +419,9 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing]) -> Any:
         if isinstance(_single(v, typ), Map):
             return _single(v, typ)
         raise _cannot(v, "map")
+    if typ == "mechanism":  # the type lives with its commands (mech.stdlib.mechanism)
+        from mech.stdlib.mechanism import to_mechanism
+        return to_mechanism(_single(v, typ))
     raise MechTypeError(f"type '{typ}' is not supported yet")
 
 

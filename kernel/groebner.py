@@ -7,6 +7,7 @@ by name so faster ones (F4) can be swapped in behind the same interface.
 from __future__ import annotations
 
 import heapq
+from operator import add as _add, sub as _sub
 from typing import Any, Callable, Sequence
 
 from .poly import Exp, Poly, PolyRing, divides, lcm_exp
@@ -48,17 +49,17 @@ class _Reducer:
         """Normal form of ``f``; ``full`` reduces every term, otherwise only the top."""
         if not f:
             return {}
-        key = self.key
+        key = self.ring.order.neg_key
         p = dict(f)
-        heap = [_Neg(key(e), e) for e in p]
+        heap = [(key(e), e) for e in p]
         heapq.heapify(heap)
         result: dict[Exp, Any] = {}
         while heap:
-            e = heapq.heappop(heap).e
+            e = heapq.heappop(heap)[1]
             c = p.get(e)
             if c is None:
                 continue
-            while heap and heap[0].e == e:
+            while heap and heap[0][1] == e:
                 heapq.heappop(heap)
             hit = self.find(e, _mask(e))
             if hit is None:
@@ -69,15 +70,15 @@ class _Reducer:
                     return result
                 continue
             lm, g = hit
-            shift = tuple([x - y for x, y in zip(e, lm)])
+            shift = tuple(map(_sub, e, lm))
             lc = g[lm]
             factor = c / lc
             for ge, gc in g.items():
-                te = tuple([x + y for x, y in zip(ge, shift)])
+                te = tuple(map(_add, ge, shift))
                 v = p.get(te)
                 if v is None:
                     p[te] = -factor * gc
-                    heapq.heappush(heap, _Neg(key(te), te))
+                    heapq.heappush(heap, (key(te), te))
                 else:
                     v = v - factor * gc
                     if v == 0:
@@ -85,19 +86,6 @@ class _Reducer:
                     else:
                         p[te] = v
         return result
-
-
-class _Neg:
-    """Heap entry ordering monomials from the largest down."""
-
-    __slots__ = ("k", "e")
-
-    def __init__(self, k: tuple, e: Exp) -> None:
-        self.k = k
-        self.e = e
-
-    def __lt__(self, other: "_Neg") -> bool:
-        return self.k > other.k
 
 
 def _monic(p: dict[Exp, Any], key: Callable) -> dict[Exp, Any]:

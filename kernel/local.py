@@ -9,8 +9,9 @@ polynomials of the input's ring.  The point-based functions move the point to th
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
+from .coeffs import PrimeField, RationalField
 from .dimension import krull_dim
 from .factor import normalize
 from .hilbert import mult, vdim
@@ -59,13 +60,20 @@ def lowest_form(p: Poly) -> Poly:
     return Poly(p.ring, {e: c for e, c in p.terms.items() if sum(e) == d})
 
 
-def tangent_cone(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[Poly]:
+def _primitive(p: Poly) -> Poly:
+    """Singular's normalization of a ``std`` element over QQ and Z/p (others stay monic)."""
+    return normalize(p) if isinstance(p.ring.field, (RationalField, PrimeField)) else p
+
+
+def tangent_cone(gens: Sequence[Poly], ring: PolyRing | None = None,
+                 scale: Callable[[Poly], Poly] = _primitive) -> list[Poly]:
     """The tangent cone at the origin as sing.lib's ``tangentcone`` computes it: the lowest
-    forms of a ``ds`` standard basis (normalized as Singular's ``std`` does), which generate
-    the ideal of lowest forms of all elements of the ideal; ``[1]`` when the origin is not
-    on the variety, ``[]`` for the zero ideal."""
+    forms of a ``ds`` standard basis (each element first normalized by ``scale``, by default
+    as Singular's ``std`` does over QQ and Z/p), which generate the ideal of lowest forms of
+    all elements of the ideal; ``[1]`` when the origin is not on the variety, ``[]`` for the
+    zero ideal."""
     ring = _ring_of(gens, ring)
-    return move([lowest_form(normalize(g)) for g in _ds_basis(gens, ring)], ring)
+    return move([lowest_form(scale(g)) for g in _ds_basis(gens, ring)], ring)
 
 
 def _leading(gens: Sequence[Poly], ring: PolyRing | None) -> tuple[list[Exp], int]:

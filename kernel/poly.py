@@ -5,6 +5,8 @@ bound to a :class:`PolyRing` (field, variable names, monomial ordering).
 """
 from __future__ import annotations
 
+from operator import le as _le
+
 from typing import Any, Iterable, Iterator, Sequence
 
 from .coeffs import Field
@@ -296,7 +298,7 @@ class Poly:
 
 def divides(a: Exp, b: Exp) -> bool:
     """Whether ``x^a`` divides ``x^b``."""
-    return all(x <= y for x, y in zip(a, b))
+    return all(map(_le, a, b))
 
 
 def lcm_exp(a: Exp, b: Exp) -> Exp:

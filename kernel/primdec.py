@@ -7,7 +7,8 @@ Introduction to Commutative Algebra*, ch. 4):
 * **Reduction to dimension zero** (Gianni–Trager–Zacharias).  For a maximal independent set
   ``u`` of ``I`` and the other variables ``x``, a Gröbner basis for the product ordering
   ``(dp(x), dp(u))`` is one of ``I K(u)[x]``, which is zero-dimensional; with ``h`` the
-  product of its leading coefficients in ``K[u]``, ``I K(u)[x] ∩ K[x,u] = I : h^∞`` and
+  product of the leading coefficients in ``K[u]`` of the elements with minimal leading
+  ``x``-monomials (a Gröbner basis over ``K(u)``), ``I K(u)[x] ∩ K[x,u] = I : h^∞`` and
   ``I = (I : h^∞) ∩ (I + h^m)`` for the saturation exponent ``m``.
 * **Zero-dimensional primes over K(u)**: factor the minimal polynomial of each variable
   (an elimination basis) and split; add the squarefree parts (Seidenberg's lemma makes the
@@ -17,12 +18,16 @@ Introduction to Commutative Algebra*, ch. 4):
 * **Minimal primes**: first a factorizing Gröbner basis splits ``V(I)`` along factors of
   basis elements; each piece goes through the reduction above; non-minimal primes are
   dropped.
-* **Primary components**: GTZ separates the zero-dimensional primaries over ``K(u)`` with
+* **Primary components**: GTZ splits the zero-dimensional ideal over ``K(u)`` by the
+  prime-power factors of minimal polynomials, separates the primaries of what remains with
   saturations ``I : s^∞`` by elements ``s`` lying in all other primes and recurses on
   ``I + h^m``; Shimoyama–Yokoyama saturates ``I`` by such separators of its minimal primes
   (pseudo-primary components), extracts their isolated primaries the same way and recurses
   on the remainders.  Both finish by merging components of equal radical and removing
   redundant (embedded) ones, so the decomposition is irredundant.
+
+* **Parameters** (``K(a)[x]``, Singular's ``ring r = (0,a),(x),dp;``): the decompositions
+  of ``I K(a)[x] ∩ K[x,a]`` (parameters as variables) extended to ``K(a)[x]``.
 
 Correct in characteristic 0 and for Z/p with p large enough that random linear forms are
 primitive elements; over Z/p with parameters, an inseparable minimal polynomial (a p-th power
@@ -31,6 +36,7 @@ field enters only through field operations, factorization (:mod:`.factor`) and `
 """
 from __future__ import annotations
 
+import math
 import random
 from typing import Callable, Sequence
 
@@ -40,6 +46,7 @@ from .ideals import (Ideal, dimension, independent_set, intersect, is_unit, move
                      product_order, quotient, ring_of, saturate_poly, saturation_exponent, std,
                      with_order)
 from .order import Block, Exp, MonomialOrder
+from .coeffs import GF, QQ
 from .poly import Poly, PolyRing
 
 Component = tuple[list[Poly], list[Poly]]
@@ -85,6 +92,21 @@ def _lc_x(p: Poly, xs: Sequence[int]) -> Poly:
     xset = set(xs)
     return Poly(p.ring, {tuple(0 if i in xset else v for i, v in enumerate(e)): c
                          for e, c in p.terms.items() if _x_part(e, xs) == lead})
+
+
+def _leading_coefficients(basis: Sequence[Poly], xs: Sequence[int]) -> list[Poly]:
+    """The leading coefficients in ``K[u]`` of a Gröbner basis of ``I K(u)[x]`` taken from
+    a basis for a product ordering ``x >> u``: one element (the one with the smallest
+    coefficient) for each minimal ``x``-leading monomial suffices."""
+    best: dict[Exp, Poly] = {}
+    for p in basis:
+        lead, c = _x_part(p.lm(), xs), _lc_x(p, xs)
+        if lead not in best or (c.total_degree(), len(c)) < (best[lead].total_degree(), len(best[lead])):
+            best[lead] = c
+
+    def divides(a: Exp, b: Exp) -> bool:
+        return a != b and all(i <= j for i, j in zip(a, b))
+    return [c for lead, c in best.items() if not any(divides(o, lead) for o in best)]
 
 
 def _unit_over_ku(basis: Sequence[Poly], xs: Sequence[int]) -> bool:
@@ -322,14 +344,14 @@ class _ZeroDim:
             ell = ell + self.ring.gen(i) * self.rng.randint(1, span)
         return ell
 
-    def by_form(self, g: list[Poly], d: int, attempts: int = _ATTEMPTS) -> tuple[list[Component], bool] | None:
+    def by_form(self, g: list[Poly], d: int) -> tuple[list[Component], bool] | None:
         """Random linear forms ``ell`` until one is cyclic (its minimal polynomial ``f`` has
         degree ``d = vdim(g)``, so ``K(u)[x]/g ≅ K(u)[t]/(f)``) or ``f`` has several
         irreducible factors ``p^m``.  Returns the pieces ``(g + p(ell)^m, g + p(ell))`` and
         whether ``ell`` was cyclic (then they are the primary components and their primes);
-        None after ``attempts`` failures."""
+        None after ``_ATTEMPTS`` failures."""
         n = self.ring.nvars
-        for attempt in range(attempts):
+        for attempt in range(_ATTEMPTS):
             ell = self.random_form(attempt)
             f = self.form_minimal_poly(g, ell)
             facs = _in_target(f, n)
@@ -386,10 +408,20 @@ class _ZeroDim:
                 todo.extend(p for _, p in pieces)
         return out
 
+    def separated(self, g: list[Poly]) -> list[Component]:
+        """The primary components of ``g`` over ``K(u)`` from its primes: ``g : s^∞`` for an
+        element ``s`` of all primes but one (all primes are maximal over ``K(u)``)."""
+        primes = self.primes(g)
+        if len(primes) == 1:
+            return [(g, primes[0])]
+        contracted = [_contract(p, self.ring, self.xs)[0] for p in primes]
+        return [(saturate_poly(g, _separator(contracted, i, self.ring), self.ring, is_basis=True), p)
+                for i, p in enumerate(primes)]
+
     def primaries(self, basis: list[Poly]) -> list[Component]:
-        """The primary components over ``K(u)`` with their primes: a cyclic variable or
-        linear form gives them at once; otherwise split by the prime-power factors of
-        minimal polynomials (coprime pieces) until each piece has a single prime."""
+        """The primary components over ``K(u)`` with their primes: a cyclic variable gives
+        them at once; the prime-power factors of a variable's minimal polynomial split the
+        ideal into coprime pieces; a piece without either is separated by its primes."""
         out: list[Component] = []
         todo = [basis]
         while todo:
@@ -406,15 +438,8 @@ class _ZeroDim:
                               for p, m in facs], f.degree_in(i) == d)
                     break
             if found is None:
-                found = self.by_form(g, d, attempts=2)
-            if found is None or not found[1] and len(found[0]) == 1:
-                primes = self.primes(g)
-                if len(primes) == 1:
-                    out.append((g, primes[0]))
-                    continue
-                found = self.by_form(g, d)
-                if found is None:
-                    raise RuntimeError("no separating linear form found (a too small field)")
+                out.extend(self.separated(g))
+                continue
             pieces, cyclic = found
             if cyclic:
                 out.extend(pieces)
@@ -427,7 +452,7 @@ def _contract(basis: list[Poly], ring: PolyRing, xs: Sequence[int]) -> tuple[lis
     """``(I K(u)[x] ∩ K[x,u], h)``: the contraction ``I : h^∞`` of an ideal given by a Gröbner
     basis for the product ordering, and ``h`` (the squarefree product of the leading
     coefficients)."""
-    h = _sqfree_product([_lc_x(p, xs) for p in basis], ring)
+    h = _sqfree_product(_leading_coefficients(basis, xs), ring)
     if h.is_constant():
         return basis, h
     return saturate_poly(basis, h, ring, is_basis=True), h
@@ -446,7 +471,7 @@ class _Reduction:
         self.xs = [i for i in range(n) if i not in self.us]
         self.bring = with_order(ring, product_order(n, [self.xs, self.us]))
         self.bbasis = groebner(move(basis, self.bring), self.bring)
-        self.h = Poly(ring, _sqfree_product([_lc_x(p, self.xs) for p in self.bbasis],
+        self.h = Poly(ring, _sqfree_product(_leading_coefficients(self.bbasis, self.xs),
                                             self.bring).terms)
 
     def _contracted(self, basis: list[Poly]) -> list[Poly]:
@@ -521,6 +546,59 @@ def _min_ass(basis: list[Poly], ring: PolyRing, cache: dict, split: bool = True)
     return _minimal_ideals(primes)
 
 
+class _Parameters:
+    """A ring ``K(a)[x]`` with parameters seen as ``K[x, a]`` (the parameters as the last
+    variables, ordering ``(dp(x), dp(a))``): the primary components of ``I K(a)[x]`` are the
+    extensions of those of ``J = I K(a)[x] ∩ K[x, a]`` whose primes meet ``K[a]`` in 0 (all
+    of them; the localization at ``K[a] \\ 0`` keeps exactly those)."""
+
+    def __init__(self, ring: PolyRing) -> None:
+        field = ring.field
+        self.ring, self.field, self.n = ring, field, ring.nvars
+        base = GF(field.characteristic) if field.characteristic else QQ
+        names = list(ring.names) + [a if a not in ring.names else f"_{a}" for a in field.params]
+        m = len(field.params)
+        self.big = PolyRing(base, names, product_order(self.n + m, [range(self.n), range(self.n, self.n + m)]))
+
+    @staticmethod
+    def of(ring: PolyRing) -> bool:
+        """Whether the ring's coefficients have parameters."""
+        return bool(getattr(ring.field, "params", ()))
+
+    def _lift(self, p: Poly) -> Poly:
+        """``p`` times the lcm of its denominators, in ``K[x, a]``."""
+        den = self.field.ctx.constant(1)
+        for c in p.terms.values():
+            den = den * (c.den // den.gcd(c.den))
+        terms = {}
+        for e, c in p.terms.items():
+            for ea, k in (c.num * (den // c.den)).to_dict().items():
+                terms[e + tuple(ea)] = self.big.field(int(k))
+        return Poly(self.big, terms)
+
+    def ideal(self, ideal: Ideal) -> list[Poly]:
+        """``J = I K(a)[x] ∩ K[x, a]``: the lifted generators saturated by the product of the
+        leading coefficients (in ``K[a]``) of their Gröbner basis, eliminating ``x``."""
+        basis = groebner([self._lift(p) for p in ideal if not p.is_zero()], self.big)
+        return _contract(basis, self.big, range(self.n))[0]
+
+    def generic(self, prime: list[Poly]) -> bool:
+        """Whether a prime, a reduced basis for the elimination ordering, meets ``K[a]`` in 0."""
+        return all(any(e[:self.n]) for e in (p.lm() for p in prime))
+
+    def back(self, basis: list[Poly]) -> list[Poly]:
+        """The extension to ``K(a)[x]``, a reduced basis."""
+        field, polys = self.field, []
+        for p in basis:
+            if not field.characteristic:
+                p = p * math.lcm(*(int(c.q) for c in p.terms.values()))
+            coeffs: dict[Exp, dict] = {}
+            for e, c in p.terms.items():
+                coeffs.setdefault(e[:self.n], {})[e[self.n:]] = int(c.p) if not field.characteristic else int(c)
+            polys.append(Poly(self.ring, {e: field.from_polys(field.ctx.from_dict(d)) for e, d in coeffs.items()}))
+        return groebner(polys, self.ring)
+
+
 def _work(ideal: Ideal, ring: PolyRing | None) -> tuple[PolyRing, PolyRing, list[Poly]]:
     """``(ring, work, basis)``: the input ring, the same ring ordered by ``dp`` (where the
     decompositions run, as they do not depend on the ordering) and the ideal's reduced
@@ -542,6 +620,11 @@ def _sort_key(ring: PolyRing) -> Callable[[list[Poly]], tuple]:
 
 
 def _min_ass_public(ideal: Ideal, ring: PolyRing | None, split: bool) -> list[list[Poly]]:
+    ring = ring_of(ideal, ring=ring)
+    if _Parameters.of(ring):
+        pr = _Parameters(ring)
+        return sorted([pr.back(p) for p in _min_ass_public(pr.ideal(ideal), pr.big, split)
+                       if pr.generic(p)], key=_sort_key(ring))
     ring, work, basis = _work(ideal, ring)
     if is_unit(basis):
         return []
@@ -690,10 +773,16 @@ def _clean(comps: list[Component], ring: PolyRing) -> list[Component]:
 
 
 def _primdec_public(ideal: Ideal, ring: PolyRing | None, method: str) -> list[Component]:
+    ring = ring_of(ideal, ring=ring)
+    key = _sort_key(ring)
+    if _Parameters.of(ring):
+        pr = _Parameters(ring)
+        comps = [(pr.back(q), pr.back(p)) for q, p in _primdec_public(pr.ideal(ideal), pr.big, method)
+                 if pr.generic(p)]
+        return sorted(comps, key=lambda c: (key(c[1]), key(c[0])))
     ring, work, basis = _work(ideal, ring)
     comps = _primdec_gtz(basis, work) if method == "gtz" else _primdec_sy(basis, work, {})
     out = [(_back(q, ring), _back(p, ring)) for q, p in _clean(comps, work)]
-    key = _sort_key(ring)
     return sorted(out, key=lambda c: (key(c[1]), key(c[0])))
 
 

@@ -16,9 +16,12 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("-c", dest="code", metavar="CODE", help="run CODE")
     p.add_argument("-q", "--quiet", action="store_true", help="no banner in the interactive shell (as Singular -q)")
     p.add_argument("--no-warn", action="store_true", help="do not print '// **' warnings")
+    p.add_argument("--dialect", choices=("singular", "m2"), help="the language: Singular's (default) or "
+                   "Macaulay2's (default for .m2 files)")
     p.add_argument("--timeout", type=_limit, metavar="SECONDS", help="time limit of each statement (0: none)")
     p.add_argument("--max-memory", type=_limit, metavar="MB", help="memory each statement may add to the process, "
                    "in MB (0: none)")
+    p.add_argument("--json", action="store_true", help="mechanism reports (analyze) as JSON")
     p.add_argument("--version", action="version", version=f"mech {__version__}")
     return p
 
@@ -33,11 +36,14 @@ def _limit(text: str) -> float:
     return value
 
 
-def run_text(text: str, name: str, warnings: bool = True) -> int:
+def run_text(text: str, name: str, warnings: bool = True, dialect: str = "singular") -> int:
     """Run a program, printing its output as it is produced; errors go to stderr.  The exit status."""
     from .dsl.errors import MechError, MechInternalError
     from .dsl.interpreter import Interpreter, QuitSignal
-    interp = Interpreter(out=sys.stdout, flush=True, warnings=warnings)
+    cls = Interpreter
+    if dialect == "m2":
+        from .dsl.m2 import M2Interpreter as cls
+    interp = cls(out=sys.stdout, flush=True, warnings=warnings)
     try:
         interp.execute(text, name)
     except QuitSignal:
@@ -66,13 +72,17 @@ def main(argv: Optional[list[str]] = None) -> int:
 
 def _main(args: argparse.Namespace) -> int:
     warnings = not args.no_warn
+    if args.json:
+        from .stdlib import analysis
+        analysis.REPORT_FORMAT = "json"
+    dialect = args.dialect or ("m2" if args.file and args.file.endswith(".m2") else "singular")
     if args.code is not None:
         if args.file:
             sys.stderr.write("mech: error: give either -c CODE or a FILE, not both\n")
             return 2
-        return run_text(args.code, "<string>", warnings)
+        return run_text(args.code, "<string>", warnings, dialect)
     if args.file == "-" or (args.file is None and not sys.stdin.isatty()):
-        return run_text(sys.stdin.read(), "<stdin>", warnings)
+        return run_text(sys.stdin.read(), "<stdin>", warnings, dialect)
     if args.file:
         try:
             with open(args.file, encoding="utf-8") as fh:
@@ -83,7 +93,10 @@ def _main(args: argparse.Namespace) -> int:
         except UnicodeDecodeError:
             sys.stderr.write(f"mech: error: {args.file} is not a UTF-8 text file\n")
             return 2
-        return run_text(text, args.file, warnings)
+        return run_text(text, args.file, warnings, dialect)
+    if dialect == "m2":
+        from .dsl.m2 import run_m2_repl
+        return run_m2_repl(warnings=warnings)
     from .dsl.repl import run_repl
     return run_repl(warnings=warnings, quiet=args.quiet)
 

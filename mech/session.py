@@ -16,16 +16,23 @@ class Session:
 
     ``execute(code)`` runs statements and returns what they printed; ``eval(expr)`` returns the
     value of one expression; ``session[name]`` reads a variable and ``session[name] = value``
-    sets one (ints, strings, sympy expressions, lists of them, or mech values).  Errors raise
+    sets one (ints, strings, sympy expressions and matrices, lists of them, or mech values);
+    :func:`mech.to_sympy` turns values into sympy objects.  Errors raise
     :class:`MechError` subclasses carrying ``line`` and ``column`` (``err.output`` holds what was
     printed before the error).  ``timeout`` (seconds) and ``max_memory`` (MB it may add to the
     process) limit each statement (``mech.dsl.limits``): exceeding one raises ``MechLimitError``
     and leaves the session usable."""
 
     def __init__(self, warnings: bool = True, timeout: float | None = None,
-                 max_memory: float | None = None) -> None:
+                 max_memory: float | None = None, dialect: str = "singular") -> None:
         self._out = io.StringIO()
-        self._interp = Interpreter(out=self._out, warnings=warnings, timeout=timeout, max_memory=max_memory)
+        if dialect not in ("singular", "m2"):
+            raise ValueError(f"unknown dialect '{dialect}' (known: singular, m2)")
+        self.dialect = dialect
+        cls = Interpreter
+        if dialect == "m2":  # Macaulay2's syntax on the same interpreter (mech.dsl.m2)
+            from .dsl.m2 import M2Interpreter as cls
+        self._interp = cls(out=self._out, warnings=warnings, timeout=timeout, max_memory=max_memory)
 
     @property
     def interpreter(self) -> Interpreter:
@@ -53,8 +60,14 @@ class Session:
         """The value of the expression ``expr`` (a tuple for a comma expression)."""
         text = expr.strip().rstrip(";")
         src = Source("<eval>", text)
-        program = parse(text + ";", src)
-        if len(program.body) != 1 or not isinstance(program.body[0], A.ExprStmt):
+        if self.dialect == "m2":
+            from .dsl.m2 import parse as parse_m2
+            program = parse_m2(text, src)
+            exprs = [s.expr for s in program.body]
+        else:
+            program = parse(text + ";", src)
+            exprs = program.body[0].exprs if program.body and isinstance(program.body[0], A.ExprStmt) else []
+        if len(program.body) != 1 or not exprs:
             raise MechSyntaxError("eval takes one expression (use execute for statements)", None, src)
         stmt = program.body[0]
         it = self._interp
@@ -63,7 +76,7 @@ class Session:
         self._out.seek(0)
         self._out.truncate()
         try:
-            values = it.limits.run(it, lambda: [it.eval(e) for e in stmt.exprs])
+            values = it.limits.run(it, lambda: [it.eval(e) for e in exprs])
         finally:
             it.source = saved
         values = [v for v in values if v is not NONE]
@@ -112,7 +125,13 @@ class Session:
         if isinstance(value, (Poly, Number, Ideal, Matrix, Map, IntVec, List, Ring, Proc)):
             return value, typeof(value) if not isinstance(value, (Ring, Proc)) else "def"
         if is_sympy(value):
-            return sympy_to_poly(value, self._interp.basering().poly), "poly"
+            ring = self._interp.basering().poly
+            if getattr(value, "is_Matrix", False):
+                rows, cols = value.shape
+                return Matrix(ring, rows, cols, [sympy_to_poly(x, ring) for x in value]), "matrix"
+            if getattr(value, "is_Number", False):
+                return Number(ring, sympy_to_poly(value, ring).lc() if value else ring.field.zero), "number"
+            return sympy_to_poly(value, ring), "poly"
         if isinstance(value, (list, tuple)):
             if all(isinstance(x, int) and not isinstance(x, bool) for x in value):
                 return IntVec(value), "intvec"

@@ -138,7 +138,22 @@ def factorize(f: Poly, how: int = 0) -> Any:
     """factorize(f[, n]): the factorization of f over QQ or Z/p: the list of the ideal of the unit
     and the irreducible factors and the intvec of their multiplicities; n = 1: the ideal of the
     factors only; n = 2: the list of the factors and multiplicities without the unit; n = 3: the
-    product of the distinct factors."""
+    product of the distinct factors.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      factorize(2x2-2y2);
+      → [1]:
+      →    _[1]=2
+      →    _[2]=x-y
+      →    _[3]=x+y
+      → [2]:
+      →    1,1,1
+      factorize(x3-x, 1);
+      → _[1]=x
+      → _[2]=x-1
+      → _[3]=x+1
+    """
     if how not in (0, 1, 2, 3):
         raise MechRuntimeError(f"factorize(f, {how}): the second argument must be 0, 1, 2 or 3")
     ring = f.ring

@@ -21,21 +21,45 @@ def _local(I: Ideal) -> bool:
 
 @command("vdim")
 def vdim(ctx, I: Ideal) -> int:
-    """vdim(I): the vector space dimension of R/I for a standard basis I (-1 if infinite)."""
+    """vdim(I): the vector space dimension of R/I for a standard basis I (-1 if infinite).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      vdim(std(ideal(x2, y3)));
+      → 6
+      vdim(std(ideal(x2)));
+      → -1
+    """
     return H.vdim(_leading(ctx, I), I.ring.nvars)
 
 
 @command("mult")
 def mult(ctx, I: Ideal) -> int:
     """mult(I): the degree (global ordering) or multiplicity (local ordering) of R/I for a
-    standard basis I."""
+    standard basis I.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      mult(std(ideal(x2+y2+z2)));
+      → 2
+      ring s = 0,(x,y),ds;
+      mult(std(ideal(x2-y3)));
+      → 2
+    """
     return H.mult(_leading(ctx, I), I.ring.nvars)
 
 
 @command("degree")
 def degree(ctx, I: Ideal) -> None:
     """degree(I): prints the dimension and the degree (or, for a local ordering, the
-    multiplicity) of R/I for a standard basis I, as Singular's // dimension ... lines."""
+    multiplicity) of R/I for a standard basis I, as Singular's // dimension ... lines.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      degree(std(ideal(xy, xz)));
+      → // dimension (proj.)  = 1
+      → // degree (proj.)   = 1
+    """
     info = H.degree(_leading(ctx, I), I.ring.nvars, _local(I))
     ctx.write("\n".join(info.lines()) + "\n")
 
@@ -44,7 +68,24 @@ def degree(ctx, I: Ideal) -> None:
 def hilb(ctx, I: Ideal, which: int = 0) -> IntVec | None:
     """hilb(I): prints the first and second Hilbert series numerators of R/I (// c t^k lines) and
     the degree lines, for a standard basis I; hilb(I, 1) and hilb(I, 2) return the coefficients of
-    the first or second numerator as an intvec (with a trailing 0)."""
+    the first or second numerator as an intvec (with a trailing 0).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      ideal I = std(ideal(x2, xy));
+      hilb(I);
+      → //         1 t^0
+      → //        -2 t^2
+      → //         1 t^3
+      →
+      → //         1 t^0
+      → //         1 t^1
+      → //        -1 t^2
+      → // dimension (proj.)  = 0
+      → // degree (proj.)   = 1
+      hilb(I, 1);
+      → 1,0,-2,1,0
+    """
     lms = _leading(ctx, I)
     n = I.ring.nvars
     if which == 0:
@@ -59,7 +100,20 @@ def hilb(ctx, I: Ideal, which: int = 0) -> IntVec | None:
 @command("kbase")
 def kbase(ctx, I: Ideal, k: int | None = None) -> Ideal:
     """kbase(I) or kbase(I, k): the monomials not in the leading ideal of the standard basis I
-    (a vector space basis of R/I; 0 if R/I is infinite-dimensional), or those of degree k."""
+    (a vector space basis of R/I; 0 if R/I is infinite-dimensional), or those of degree k.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      ideal I = std(ideal(x2, y2));
+      kbase(I);
+      → _[1]=xy
+      → _[2]=y
+      → _[3]=x
+      → _[4]=1
+      kbase(I, 1);
+      → _[1]=y
+      → _[2]=x
+    """
     ring = I.ring
     mons = H.kbase(_leading(ctx, I), ring.nvars, k)
     return Ideal(ring, [ring.monomial(e) for e in mons])

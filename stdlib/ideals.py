@@ -43,7 +43,14 @@ def eliminate(I: Ideal, m: Poly) -> Ideal:
     """eliminate(I, m): the elimination ideal of I for the variables whose product is m (those of
     its leading monomial; none for a constant): I intersected with the subring of the other
     variables, as a standard basis in the basering; eliminate(I, v) with an intvec v of variable
-    indices."""
+    indices.
+
+    Example:
+      ring r = 0,(t,x,y),dp;
+      ideal I = x-t2, y-t3;
+      eliminate(I, t);
+      → _[1]=x3-y2
+    """
     return _eliminate(I, [] if m.is_constant() else [i for i, k in enumerate(m.lm()) if k])
 
 
@@ -57,14 +64,27 @@ def eliminate_indices(I: Ideal, v: IntVec) -> Ideal:
 
 @command("intersect")
 def intersect(I: Ideal, *more: Ideal) -> Ideal:
-    """intersect(I1, I2, ...): the intersection of the ideals, a standard basis."""
+    """intersect(I1, I2, ...): the intersection of the ideals, a standard basis.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      intersect(ideal(x), ideal(y), ideal(x+y));
+      → _[1]=x2y+xy2
+    """
     _global(I, "intersect")
     return _std_ideal(I.ring, K.intersect(*[J.nonzero() for J in (I, *more)], ring=I.ring))
 
 
 @command("quotient")
 def quotient(I: Ideal, J: Ideal) -> Ideal:
-    """quotient(I, J): the ideal quotient I : J = {f : f*J in I}, a standard basis."""
+    """quotient(I, J): the ideal quotient I : J = {f : f*J in I}, a standard basis.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      quotient(ideal(x2, xy), ideal(x));
+      → _[1]=y
+      → _[2]=x
+    """
     _global(I, "quotient")
     with _available("quotient", I.ring):
         return _std_ideal(I.ring, K.quotient(I.nonzero(), J.nonzero(), ring=I.ring))
@@ -73,7 +93,17 @@ def quotient(I: Ideal, J: Ideal) -> Ideal:
 @command("sat", lib="elim.lib")
 def sat(I: Ideal, J: Ideal) -> List:
     """sat(I, J): the list of the saturation I : J^infinity (a standard basis) and the least
-    exponent k with I : J^k = I : J^(k+1)."""
+    exponent k with I : J^k = I : J^(k+1).
+
+    Example:
+      LIB "elim.lib";
+      ring r = 0,(x,y),dp;
+      sat(ideal(x2y, xy2), ideal(x));
+      → [1]:
+      →    _[1]=y
+      → [2]:
+      →    2
+    """
     _global(I, "sat")
     result, k = K.saturate(I.nonzero(), J.nonzero(), ring=I.ring)
     return List([_std_ideal(I.ring, result), k])
@@ -81,7 +111,14 @@ def sat(I: Ideal, J: Ideal) -> List:
 
 @command("radical", lib="primdec.lib")
 def radical(I: Ideal) -> Ideal:
-    """radical(I): the radical of I (the intersection of its minimal associated primes)."""
+    """radical(I): the radical of I (the intersection of its minimal associated primes).
+
+    Example:
+      LIB "primdec.lib";
+      ring r = 0,(x,y),dp;
+      radical(ideal(x2, xy2));
+      → _[1]=x
+    """
     _global(I, "radical")
     with _available("radical", I.ring):
         return _std_ideal(I.ring, K.radical(I.nonzero(), ring=I.ring))
@@ -90,7 +127,15 @@ def radical(I: Ideal) -> Ideal:
 @command("homog")
 def homog(I: Poly | Ideal) -> int:
     """homog(I): 1 if every generator of I (or the poly) is homogeneous for the ring's variable
-    weights, else 0."""
+    weights, else 0.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      homog(x2+xy);
+      → 1
+      homog(ideal(x2+y, y2));
+      → 0
+    """
     return int(_homog.is_homogeneous(I if isinstance(I, Poly) else list(I.gens)))
 
 

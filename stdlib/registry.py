@@ -96,10 +96,14 @@ class Command:
 
 
 COMMANDS: dict[str, Command] = {}
+#: Commands of the other surface dialects (``dialect="m2"``), by dialect: invisible to Singular code.
+DIALECTS: dict[str, dict[str, Command]] = {}
 
 
-def command(name: str, lib: Optional[str] = None, raw: bool = False) -> Callable[[Callable], Callable]:
-    """Register the decorated function as the command ``name`` (or as one more overload of it)."""
+def command(name: str, lib: Optional[str] = None, raw: bool = False,
+            dialect: Optional[str] = None) -> Callable[[Callable], Callable]:
+    """Register the decorated function as the command ``name`` (or as one more overload of it);
+    ``dialect="m2"``: a command of the Macaulay2 dialect only."""
     def deco(func: Callable) -> Callable:
         sig = inspect.signature(func)
         params = list(sig.parameters.values())
@@ -109,10 +113,11 @@ def command(name: str, lib: Optional[str] = None, raw: bool = False) -> Callable
         ov = Overload(func, wants_ctx, [p.name for p in params if p.kind != p.VAR_POSITIONAL])
         ov.required = sum(1 for p in params if p.default is p.empty and p.kind == p.POSITIONAL_OR_KEYWORD)
         ov.has_varargs = any(p.kind == p.VAR_POSITIONAL for p in params)
-        cmd = COMMANDS.get(name)
+        table = COMMANDS if dialect is None else DIALECTS.setdefault(dialect, {})
+        cmd = table.get(name)
         doc = inspect.getdoc(func) or ""
         if cmd is None:
-            COMMANDS[name] = Command(name, lib, raw, doc, [ov])
+            table[name] = Command(name, lib, raw, doc, [ov])
         else:
             cmd.overloads.append(ov)
             if doc and not cmd.doc:
@@ -293,10 +298,14 @@ def is_builtin(name: str) -> bool:
     return cmd is not None and not cmd.lib
 
 
+#: Help texts of language topics that are not commands (keywords, types): ``help if;``.
+TOPICS: dict[str, str] = {}
+
+
 def help_text(name: str) -> Optional[str]:
     cmd = COMMANDS.get(name)
     if cmd is None:
-        return None
+        return TOPICS.get(name)
     head = f"{cmd.usage()}" + (f"    [{cmd.lib}]" if cmd.lib else "")
     return head + ("\n" + cmd.doc if cmd.doc else "")
 

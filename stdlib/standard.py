@@ -10,7 +10,7 @@ from ..dsl import ast as A
 from ..dsl.errors import MechNameError, MechRuntimeError, MechTypeError
 from ..dsl.printing import charstr as _charstr
 from ..dsl.printing import ordstr as _ordstr
-from ..dsl.printing import print_form, value_str
+from ..dsl.printing import print_form, render, value_str
 from ..dsl.values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Ring, to_ideal, to_intvec,
                           to_matrix, to_number, to_poly)
 from ..dsl.values import typeof as _typeof
@@ -18,7 +18,7 @@ from ..kernel import Poly
 from ..kernel.dimension import krull_dim
 from ..kernel.groebner import groebner as _groebner
 from ..kernel.groebner import normal_form
-from .registry import command
+from .registry import TOPICS, command
 
 # ---------------------------------------------------------------- standard bases
 
@@ -84,13 +84,29 @@ def standard_basis(ideal: Ideal) -> list[Poly]:
 def std(I: Ideal) -> Ideal:
     """std(I): a standard basis of the ideal I for the ring's ordering (for a global ordering the
     reduced Groebner basis, each element a primitive integer polynomial over QQ, monic over Z/p),
-    sorted by increasing leading monomial."""
+    sorted by increasing leading monomial.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      ideal I = x2-y, xy-z;
+      std(I);
+      → _[1]=y2-xz
+      → _[2]=xy-z
+      → _[3]=x2-y
+    """
     return Ideal(I.ring, standard_basis(I), is_std=True)
 
 
 @command("groebner")
 def groebner(I: Ideal) -> Ideal:
-    """groebner(I): a Groebner basis of I (the same as std(I))."""
+    """groebner(I): a Groebner basis of I (the same as std(I)).
+
+    Example:
+      ring r = 0,(x,y),lp;
+      groebner(ideal(x2+y2-1, x-y));
+      → _[1]=2y2-1
+      → _[2]=x-y
+    """
     return Ideal(I.ring, standard_basis(I), is_std=True)
 
 
@@ -118,20 +134,43 @@ def _reduce(ctx: Any, f: Any, I: Ideal) -> Any:
 @command("reduce")
 def reduce(ctx, f: Poly | Ideal | Matrix, I: Ideal) -> Any:
     """reduce(f, I): the normal form of f (a poly, ideal or matrix) with respect to the standard
-    basis I; the remainder is returned as it is (not normalized)."""
+    basis I; the remainder is returned as it is (not normalized).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      ideal G = std(ideal(x2-y, y2-1));
+      reduce(x3+y3, G);
+      → xy+y
+    """
     return _reduce(ctx, f, I)
 
 
 @command("NF")
 def NF(ctx, f: Poly | Ideal | Matrix, I: Ideal) -> Any:
-    """NF(f, I): the normal form of f with respect to the standard basis I (the same as reduce)."""
+    """NF(f, I): the normal form of f with respect to the standard basis I (the same as reduce).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      ideal G = std(ideal(x2-y, y2-1));
+      NF(x4+xy, G);
+      → xy+1
+    """
     return _reduce(ctx, f, I)
 
 
 @command("dim")
 def dim(ctx, I: Ideal) -> int:
-    """dim(I): the Krull dimension of R/I for a standard basis I (-1 for the unit ideal)."""
+    """dim(I): the Krull dimension of R/I for a standard basis I (-1 for the unit ideal).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      dim(std(ideal(xy, xz)));
+      → 2
+    """
     ctx.assume_std(I, 0)
+    order = I.ring.order
+    if not order.is_global and not order.is_local:
+        ctx.warn(f"dim({ctx.argnames[0]}) may be wrong because the mixed monomial ordering")
     lms = [g.lm() for g in I.nonzero()]
     return krull_dim(lms, I.ring.nvars)
 
@@ -142,7 +181,17 @@ def dim(ctx, I: Ideal) -> int:
 @command("size")
 def size(x: Any) -> int:
     """size(x): terms of a poly, nonzero generators of an ideal, entries of a list, intvec or
-    matrix, characters of a string."""
+    matrix, characters of a string.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      size(x2+2xy-1);
+      → 3
+      size(ideal(x, 0, y));
+      → 2
+      size("mech");
+      → 4
+    """
     if isinstance(x, int):
         return 0 if x == 0 else 1
     if isinstance(x, Number):
@@ -164,7 +213,16 @@ def size(x: Any) -> int:
 
 @command("lead")
 def lead(f: Poly | Ideal) -> Any:
-    """lead(f): the leading term of a poly, or the ideal of leading terms."""
+    """lead(f): the leading term of a poly, or the ideal of leading terms.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      lead(3x2y-x3+y);
+      → -x3
+      lead(ideal(x+y2, 2x-1));
+      → _[1]=y2
+      → _[2]=2x
+    """
     if isinstance(f, Poly):
         return f.ring.zero() if f.is_zero() else f.lt()
     return Ideal(f.ring, [g if g.is_zero() else g.lt() for g in f.gens])
@@ -172,19 +230,41 @@ def lead(f: Poly | Ideal) -> Any:
 
 @command("leadcoef")
 def leadcoef(f: Poly) -> Number:
-    """leadcoef(f): the leading coefficient of f (a number)."""
+    """leadcoef(f): the leading coefficient of f (a number).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      leadcoef(-3x2y+x3+y);
+      → 1
+    """
     return Number(f.ring, f.ring.field.zero if f.is_zero() else f.lc())
 
 
 @command("leadmonom")
 def leadmonom(f: Poly) -> Poly:
-    """leadmonom(f): the leading monomial of f (coefficient 1)."""
+    """leadmonom(f): the leading monomial of f (coefficient 1).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      leadmonom(-3x2y+x3+y);
+      → x3
+    """
     return f.ring.zero() if f.is_zero() else f.ring.monomial(f.lm())
 
 
 @command("deg")
 def deg(f: Poly | Ideal, w: IntVec | None = None) -> int:
-    """deg(f) or deg(f, w): the (weighted) total degree of f, -1 for 0; for an ideal the maximum."""
+    """deg(f) or deg(f, w): the (weighted) total degree of f, -1 for 0; for an ideal the maximum.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      deg(x2y+y5);
+      → 5
+      deg(x2y+y5, intvec(3,1));
+      → 7
+      deg(0);
+      → -1
+    """
     def one(p: Poly) -> int:
         if p.is_zero():
             return -1
@@ -199,7 +279,16 @@ def deg(f: Poly | Ideal, w: IntVec | None = None) -> int:
 
 @command("diff")
 def diff(f: Poly | Ideal | Matrix, x: Poly) -> Any:
-    """diff(f, x): the partial derivative of f (poly, ideal or matrix) by the ring variable x."""
+    """diff(f, x): the partial derivative of f (poly, ideal or matrix) by the ring variable x.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      diff(x3y2+xy, x);
+      → 3x2y2+y
+      diff(ideal(x2, xy), y);
+      → _[1]=0
+      → _[2]=x
+    """
     i = _var_index(x, "diff")
     if isinstance(f, Poly):
         return f.diff(i)
@@ -219,7 +308,17 @@ def _var_index(x: Poly, cmd: str) -> int:
 @command("jacob")
 def jacob(f: Poly | Ideal) -> Any:
     """jacob(f): the ideal of partial derivatives of a poly; for an ideal the Jacobian matrix
-    (one row per generator)."""
+    (one row per generator).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      jacob(x3+xy2);
+      → _[1]=3x2+y2
+      → _[2]=2xy
+      print(jacob(ideal(x2+y2-1, x-y)));
+      → 2x,2y,
+      → 1, -1
+    """
     n = f.ring.nvars
     if isinstance(f, Poly):
         return Ideal(f.ring, [f.diff(i) for i in range(n)])
@@ -228,7 +327,15 @@ def jacob(f: Poly | Ideal) -> Any:
 
 @command("subst")
 def subst(f: Poly | Ideal | Matrix, *pairs: Any) -> Any:
-    """subst(f, x, g, ...): substitute g for the ring variable x in f (several pairs in turn)."""
+    """subst(f, x, g, ...): substitute g for the ring variable x in f (several pairs in turn).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      subst(x2+yz, x, y+1);
+      → y2+yz+2y+1
+      subst(x2+yz, y, 2, z, x);
+      → x2+2x
+    """
     if not pairs or len(pairs) % 2:
         raise MechTypeError("subst(f, x, g): give a variable and its substitute")
     ring = f.ring
@@ -249,7 +356,15 @@ def subst(f: Poly | Ideal | Matrix, *pairs: Any) -> Any:
 
 @command("maxideal")
 def maxideal(ctx, k: int) -> Ideal:
-    """maxideal(k): the ideal of all monomials of degree k."""
+    """maxideal(k): the ideal of all monomials of degree k.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      maxideal(2);
+      → _[1]=y2
+      → _[2]=xy
+      → _[3]=x2
+    """
     ring = ctx.basering().poly
     if k <= 0:
         return Ideal(ring, [ring.one()])
@@ -270,7 +385,16 @@ def maxideal(ctx, k: int) -> Ideal:
 
 @command("ncols")
 def ncols(m: Matrix | Ideal | IntVec) -> int:
-    """ncols(M): the number of columns (generators of an ideal)."""
+    """ncols(M): the number of columns (generators of an ideal).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      matrix M[2][3] = x,y,1,2,3,4;
+      ncols(M);
+      → 3
+      ncols(ideal(x, y, 0));
+      → 3
+    """
     if isinstance(m, Matrix):
         return m.ncols
     if isinstance(m, Ideal):
@@ -280,7 +404,16 @@ def ncols(m: Matrix | Ideal | IntVec) -> int:
 
 @command("nrows")
 def nrows(m: Matrix | Ideal | IntVec) -> int:
-    """nrows(M): the number of rows (1 for an ideal)."""
+    """nrows(M): the number of rows (1 for an ideal).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      matrix M[2][3] = x,y,1,2,3,4;
+      nrows(M);
+      → 2
+      nrows(intvec(1,2,3));
+      → 3
+    """
     if isinstance(m, Matrix):
         return m.nrows
     if isinstance(m, Ideal):
@@ -290,7 +423,16 @@ def nrows(m: Matrix | Ideal | IntVec) -> int:
 
 @command("transpose")
 def transpose(m: Matrix) -> Matrix:
-    """transpose(M): the transposed matrix."""
+    """transpose(M): the transposed matrix.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      matrix M[2][3] = x,y,1,2,3,4;
+      print(transpose(M));
+      → x,2,
+      → y,3,
+      → 1,4
+    """
     return Matrix(m.ring, m.ncols, m.nrows, [m.get(i, j) for j in range(1, m.ncols + 1)
                                              for i in range(1, m.nrows + 1)])
 
@@ -300,26 +442,63 @@ def transpose(m: Matrix) -> Matrix:
 
 @command("ideal")
 def ideal(ctx, *xs: Any) -> Ideal:
-    """ideal(f1, ..., fn): the ideal generated by polys, ideals or matrix entries."""
+    """ideal(f1, ..., fn): the ideal generated by polys, ideals or matrix entries.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      ideal(x2, y-1, 0);
+      → _[1]=x2
+      → _[2]=y-1
+      → _[3]=0
+      ideal I = x, ideal(y2, x+y);
+      I;
+      → I[1]=x
+      → I[2]=y2
+      → I[3]=x+y
+    """
     ring = ctx.basering().poly
     return to_ideal(ExprList(xs), ring) if xs else Ideal(ring, [])
 
 
 @command("poly")
 def poly(ctx, x: int | Number | Poly) -> Poly:
-    """poly(x): x as a polynomial."""
+    """poly(x): x as a polynomial.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      poly(3);
+      → 3
+      typeof(poly(3));
+      → poly
+    """
     return to_poly(x, ctx.basering().poly)
 
 
 @command("number")
 def number(ctx, x: int | Number | Poly) -> Number:
-    """number(x): x as a number (a constant polynomial's coefficient)."""
+    """number(x): x as a number (a constant polynomial's coefficient).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      number(3/4);
+      → 3/4
+      number(poly(5));
+      → 5
+    """
     return to_number(x, ctx.basering().poly)
 
 
 @command("int")
 def int_(x: int | Number | Poly | str) -> int:
-    """int(x): x as an int (a number must be an integer)."""
+    """int(x): x as an int (a number must be an integer).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      int(number(6));
+      → 6
+      int("42") + 1;
+      → 43
+    """
     if isinstance(x, int):
         return x
     if isinstance(x, str):
@@ -336,31 +515,80 @@ def int_(x: int | Number | Poly | str) -> int:
 
 @command("intvec")
 def intvec(*xs: int | IntVec) -> IntVec:
-    """intvec(a, b, ...): the vector of the ints a, b, ...."""
+    """intvec(a, b, ...): the vector of the ints a, b, ....
+
+    Example:
+      intvec(1, 2, 3);
+      → 1,2,3
+      intvec(intvec(1,2), 5);
+      → 1,2,5
+    """
     return to_intvec(ExprList(xs)) if xs else IntVec([0])
 
 
 @command("list")
 def list_(*xs: Any) -> List:
-    """list(a, b, ...): the list of the values a, b, ...."""
+    """list(a, b, ...): the list of the values a, b, ....
+
+    Example:
+      ring r = 0,(x,y),dp;
+      list(1, "two", x+y);
+      → [1]:
+      →    1
+      → [2]:
+      →    two
+      → [3]:
+      →    x+y
+    """
     return List(xs)
 
 
 @command("string")
 def string(*xs: Any) -> str:
-    """string(x, ...): the values written on one line and concatenated."""
+    """string(x, ...): the values written on one line and concatenated.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      string(x2+1, " and ", 3);
+      → x2+1 and 3
+      string(ideal(x, y2));
+      → x,y2
+    """
     return "".join(value_str(x) for x in xs)
 
 
 @command("matrix")
 def matrix(ctx, x: Any, nr: int = 0, nc: int = 0) -> Matrix:
-    """matrix(I) or matrix(M, r, c): a matrix from an ideal (one row) or resized."""
+    """matrix(I) or matrix(M, r, c): a matrix from an ideal (one row) or resized.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      print(matrix(ideal(x, y, x+y)));
+      → x,y,x+y
+      matrix A[2][2] = 1,2,3,4;
+      print(matrix(A, 3, 3));
+      → 1,2,0,
+      → 3,4,0,
+      → 0,0,0
+    """
     return to_matrix(x, ctx.basering().poly, nr, nc) if nr else to_matrix(x, ctx.basering().poly)
 
 
 @command("typeof", raw=True)
 def typeof(ctx, *nodes: A.Expr) -> str:
-    """typeof(x): the type name of x ("?unknown type?" for an undefined name)."""
+    """typeof(x): the type name of x ("?unknown type?" for an undefined name).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      typeof(x);
+      → poly
+      typeof(ideal(x));
+      → ideal
+      typeof(1);
+      → int
+      typeof(undefinedname);
+      → ?unknown type?
+    """
     if len(nodes) != 1:
         raise MechTypeError("typeof takes one argument")
     node = nodes[0]
@@ -377,8 +605,22 @@ def typeof(ctx, *nodes: A.Expr) -> str:
 
 @command("print")
 def print_(ctx, x: Any) -> None:
-    """print(x): print x (a matrix as aligned rows, an ideal or intvec as a column)."""
+    """print(x): print x (a matrix as aligned rows, an ideal or intvec as a column).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      matrix M[2][2] = x,y2,1,-1;
+      print(M);
+      → x,y2,
+      → 1,-1
+      print(ideal(x, y));
+      → x,
+      → y
+    """
     if x is NONE:
+        return
+    if isinstance(x, Map):  # as Singular: a map prints as phi[i]=... under its name
+        ctx.write(render(x, ctx.argnames[0] if ctx.argnames else None) + "\n")
         return
     ctx.write(print_form(x) + "\n")
 
@@ -388,19 +630,37 @@ def print_(ctx, x: Any) -> None:
 
 @command("nvars")
 def nvars(r: Ring) -> int:
-    """nvars(r): the number of ring variables."""
+    """nvars(r): the number of ring variables.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      nvars(r);
+      → 3
+    """
     return len(r.names)
 
 
 @command("npars")
 def npars(r: Ring) -> int:
-    """npars(r): the number of parameters of the coefficient field."""
+    """npars(r): the number of parameters of the coefficient field.
+
+    Example:
+      ring r = (0,a,b),(x,y),dp;
+      npars(r);
+      → 2
+    """
     return len(r.params)
 
 
 @command("var")
 def var(ctx, i: int) -> Poly:
-    """var(i): the i-th ring variable."""
+    """var(i): the i-th ring variable.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      var(2);
+      → y
+    """
     ring = ctx.basering()
     if not 1 <= i <= len(ring.names):
         raise MechRuntimeError(f"var({i}): the ring has {len(ring.names)} variables")
@@ -409,7 +669,13 @@ def var(ctx, i: int) -> Poly:
 
 @command("par")
 def par(ctx, i: int) -> Number:
-    """par(i): the i-th parameter of the coefficient field."""
+    """par(i): the i-th parameter of the coefficient field.
+
+    Example:
+      ring r = (0,a,b),(x,y),dp;
+      par(2);
+      → (b)
+    """
     ring = ctx.basering()
     if not 1 <= i <= len(ring.params):
         raise MechRuntimeError(f"par({i}): the ring has {len(ring.params)} parameters")
@@ -430,31 +696,68 @@ def _name_list(ctx: Any, r: Ring | int, i: int | None, what: str) -> str:
 
 @command("varstr")
 def varstr(ctx, r: Ring | int, i: int | None = None) -> str:
-    """varstr(r): the variable names separated by commas; varstr(i) or varstr(r, i): the i-th."""
+    """varstr(r): the variable names separated by commas; varstr(i) or varstr(r, i): the i-th.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      varstr(r);
+      → x,y,z
+      varstr(2);
+      → y
+    """
     return _name_list(ctx, r, i, "variables")
 
 
 @command("parstr")
 def parstr(ctx, r: Ring | int, i: int | None = None) -> str:
-    """parstr(r): the parameter names separated by commas; parstr(i): the i-th."""
+    """parstr(r): the parameter names separated by commas; parstr(i): the i-th.
+
+    Example:
+      ring r = (0,a,b),(x,y),dp;
+      parstr(r);
+      → a,b
+      parstr(1);
+      → a
+    """
     return _name_list(ctx, r, i, "parameters")
 
 
 @command("charstr")
 def charstr(r: Ring) -> str:
-    """charstr(r): the coefficient field: QQ, ZZ/p, or 0,a,b with parameters."""
+    """charstr(r): the coefficient field: QQ, ZZ/p, or 0,a,b with parameters.
+
+    Example:
+      ring r = 32003,(x,y),dp;
+      charstr(r);
+      → ZZ/32003
+      ring s = (0,a),(x,y),dp;
+      charstr(s);
+      → 0,a
+    """
     return _charstr(r)
 
 
 @command("char")
 def char(r: Ring) -> int:
-    """char(r): the characteristic of the coefficient field."""
+    """char(r): the characteristic of the coefficient field.
+
+    Example:
+      ring r = 32003,(x,y),dp;
+      char(r);
+      → 32003
+    """
     return r.characteristic
 
 
 @command("ordstr")
 def ordstr(r: Ring) -> str:
-    """ordstr(r): the monomial ordering, e.g. dp(4),dp(2),C."""
+    """ordstr(r): the monomial ordering, e.g. dp(4),dp(2),C.
+
+    Example:
+      ring r = 0,(x,y,z),(dp(2),lp(1));
+      ordstr(r);
+      → dp(2),lp(1),C
+    """
     return _ordstr(r)
 
 
@@ -477,26 +780,39 @@ def _in_ring(ctx: Any, ring_node: A.Expr, name_node: A.Expr, cmd: str) -> tuple[
 @command("imap", raw=True)
 def imap(ctx, ring_node: A.Expr, obj_node: A.Expr) -> Any:
     """imap(r, f): the object f of ring r mapped into the basering, each variable to the variable
-    of the same name (to 0 if the basering has none)."""
+    or parameter of the same name (to 0 if the basering has none), parameters likewise by name.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      poly f = x2+yz;
+      ring s = 0,(z,x),dp;
+      imap(r, f);
+      → x2
+    """
     from ..dsl.interpreter import map_value
-    src, v = _in_ring(ctx, ring_node, obj_node, "imap")
-    target = ctx.basering()
-    images = []
-    for n in src.names:
-        i = target.var_index(n)
-        images.append(target.poly.gen(i) if i is not None else target.poly.zero())
-    return map_value(v, images, target.poly)
+    from ..kernel.maps import imap as imap_polys
+    _, v = _in_ring(ctx, ring_node, obj_node, "imap")
+    target = ctx.basering().poly
+    return map_value(v, [], target, lambda polys, source: imap_polys(polys, source, target))
 
 
 @command("fetch", raw=True)
 def fetch(ctx, ring_node: A.Expr, obj_node: A.Expr) -> Any:
-    """fetch(r, f): the object f of ring r mapped into the basering, the i-th variable to the i-th."""
+    """fetch(r, f): the object f of ring r mapped into the basering, the i-th variable to the i-th
+    (to 0 if the basering has fewer), parameters likewise by position.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      poly f = x2+yz;
+      ring s = 0,(a,b,c),dp;
+      fetch(r, f);
+      → a2+bc
+    """
     from ..dsl.interpreter import map_value
-    src, v = _in_ring(ctx, ring_node, obj_node, "fetch")
-    target = ctx.basering()
-    if len(src.names) > len(target.names):
-        raise MechRuntimeError(f"fetch: {src.name or 'the source ring'} has more variables than the basering")
-    return map_value(v, [target.poly.gen(i) for i in range(len(src.names))], target.poly)
+    from ..kernel.maps import fetch as fetch_polys
+    _, v = _in_ring(ctx, ring_node, obj_node, "fetch")
+    target = ctx.basering().poly
+    return map_value(v, [], target, lambda polys, source: fetch_polys(polys, source, target))
 
 
 # ---------------------------------------------------------------- interpreter commands
@@ -504,7 +820,18 @@ def fetch(ctx, ring_node: A.Expr, obj_node: A.Expr) -> Any:
 
 @command("defined", raw=True)
 def defined(ctx, node: A.Expr) -> int:
-    """defined(x): 0 if x is undefined, -1 for a ring variable, else 1 + the level it was declared at."""
+    """defined(x): 0 if x is undefined, -1 for a ring variable, else 1 + the level it was declared at.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      int n = 3;
+      defined(n);
+      → 1
+      defined(x);
+      → -1
+      defined(m);
+      → 0
+    """
     if not isinstance(node, A.Name):
         return 0
     var = ctx.lookup(node.id)
@@ -518,19 +845,43 @@ def defined(ctx, node: A.Expr) -> int:
 
 @command("nameof", raw=True)
 def nameof(ctx, node: A.Expr) -> str:
-    """nameof(x): the name of the variable x ("" for an expression)."""
+    """nameof(x): the name of the variable x ("" for an expression; for basering the ring's name).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      poly f = x+y;
+      nameof(f);
+      → f
+    """
+    if isinstance(node, A.Name) and node.id == "basering":
+        return ctx.basering().name
     return node.id if isinstance(node, A.Name) else ""
 
 
 @command("execute")
-def execute(ctx, code: str) -> None:
-    """execute(s): run the string s as mech code."""
-    ctx.execute(code, ctx.source.name)
+def execute(code: str) -> None:
+    """execute(s): not provided: mech does not run code built at run time from strings (an error).
+
+    Example:
+      execute("int a = 1;");
+      → <stdin>:1:1: error: execute is not provided: mech does not run code built from strings; write the statements into the script
+      → execute("int a = 1;");
+      → ^~~~~~~~~~~~~~~~~~~~~
+    """
+    raise MechRuntimeError("execute is not provided: mech does not run code built from strings; "
+                           "write the statements into the script")
 
 
 @command("option", raw=True)
 def option(ctx, *nodes: A.Expr) -> None:
-    """option(name, ...): set options (option(redSB); option(noredSB) clears one); option() prints them."""
+    """option(name, ...): set options (option(redSB); option(noredSB) clears one); option() prints them.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      option(redSB);
+      option();
+      → //options: redSB redTail redThrough intStrategy redefine usage prompt
+    """
     from ..dsl.interpreter import OPTION_ORDER
     if not nodes:
         shown = [o for o in OPTION_ORDER if o in ctx.options]
@@ -551,7 +902,11 @@ def option(ctx, *nodes: A.Expr) -> None:
 
 @command("system")
 def system(ctx, what: str, *args: Any) -> Any:
-    """system("--ticks-per-sec", n): the unit of timer and rtimer (ticks per second)."""
+    """system("--ticks-per-sec", n): the unit of timer and rtimer (ticks per second).
+
+    Example:
+      system("--ticks-per-sec", 1000);
+    """
     if what == "--ticks-per-sec":
         if args:
             n = args[0]
@@ -565,7 +920,14 @@ def system(ctx, what: str, *args: Any) -> Any:
 
 @command("export", raw=True)
 def export(ctx, *nodes: A.Expr) -> None:
-    """export(x): make a procedure's variable x global (with its ring)."""
+    """export(x): make a procedure's variable x global (with its ring).
+
+    Example:
+      proc mk() { int k = 7; export(k); }
+      mk();
+      k;
+      → 7
+    """
     for n in nodes:
         if not isinstance(n, A.Name):
             raise MechTypeError("export needs variable names")
@@ -574,7 +936,16 @@ def export(ctx, *nodes: A.Expr) -> None:
 
 @command("delete")
 def delete(L: List, i: int) -> List:
-    """delete(L, i): the list L without its i-th entry."""
+    """delete(L, i): the list L without its i-th entry.
+
+    Example:
+      list L = 1, 2, 3;
+      delete(L, 2);
+      → [1]:
+      →    1
+      → [2]:
+      →    3
+    """
     if not 1 <= i <= len(L):
         raise MechRuntimeError(f"delete: index {i} out of range (the list has {len(L)} entries)")
     return List(L.items[:i - 1] + L.items[i:])
@@ -582,8 +953,60 @@ def delete(L: List, i: int) -> List:
 
 @command("insert")
 def insert(L: List, v: Any, i: int = 0) -> List:
-    """insert(L, v) or insert(L, v, i): the list L with v inserted after position i (default 0)."""
+    """insert(L, v) or insert(L, v, i): the list L with v inserted after position i (default 0).
+
+    Example:
+      list L = 1, 2;
+      insert(L, 5);
+      → [1]:
+      →    5
+      → [2]:
+      →    1
+      → [3]:
+      →    2
+      insert(L, 5, 2);
+      → [1]:
+      →    1
+      → [2]:
+      →    2
+      → [3]:
+      →    5
+    """
     if not 0 <= i <= len(L):
         raise MechRuntimeError(f"insert: position {i} out of range (the list has {len(L)} entries)")
     return List(L.items[:i] + (v,) + L.items[i:])
 
+
+
+# ---------------------------------------------------------------- help topics of the language
+TOPICS.update({
+    "if": "if (cond) { ... } else { ... }: run the first block when the int cond is not 0, else the second.",
+    "else": "if (cond) { ... } else { ... }: the block run when cond is 0.",
+    "for": "for (init; cond; step) { ... }: run init, then the block and step while the int cond is not 0.",
+    "while": "while (cond) { ... }: run the block while the int cond is not 0.",
+    "break": "break;: leave the innermost for or while loop.",
+    "continue": "continue;: go on with the next round of the innermost loop.",
+    "proc": "proc name(type a, ..., list #) { ... }: define a procedure; its variables are local, "
+            "return(...) gives its values.",
+    "return": "return(v, ...);: leave the procedure with the values v, ...",
+    "kill": "kill x, ...;: delete the variables x, ...",
+    "export": "export x;: make the procedure's variable x a top-level variable (of its ring).",
+    "keepring": "keepring r;: leave the procedure with r as the basering.",
+    "setring": "setring r;: make the ring r the basering (objects of other rings become invisible).",
+    "LIB": 'LIB "x.lib";: load the library x.lib (mech\'s own libraries or a file next to the script).',
+    "quit": "quit;: end the script.",
+    "exit": "exit;: end the script.",
+    "help": "help NAME; or ?NAME;: what a command, procedure, type or keyword does; help; lists the commands.",
+    "basering": "basering: the current ring.",
+    "int": "int i = 3;: a machine integer (div, mod, % and / divide; comparisons give 0 or 1).",
+    "bigint": "bigint b = 2^70;: an integer of any size (in mech the same as int).",
+    "number": "number c = 3/4;: an element of the coefficient field of the basering.",
+    "poly": "poly f = x2+y;: a polynomial of the basering.",
+    "ring": "ring r = 0, (x,y,z), dp;: a polynomial ring (characteristic or (char, params), variables, "
+            "ordering); it becomes the basering.",
+    "map": "map phi = r, f1, ..., fn;: the map from ring r to the basering taking the i-th variable to fi.",
+    "list": "list L = a, b, ...;: a list of values of any types; L[i] is the i-th entry.",
+    "string": 'string s = "abc";: a string; + concatenates, s[i] is a character.',
+    "intvec": "intvec v = 1, 2, 3..5;: a vector of ints.",
+    "def": "def x = value;: a variable taking the type of its value.",
+})

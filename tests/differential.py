@@ -5,7 +5,12 @@ Singular 4.3.1; the results are parsed into polynomials and compared.
 * global orderings: ``std`` as reduced bases (Singular under ``option(redSB)``), and ``eliminate``
   (both results brought to reduced bases by ``std``);
 * local and mixed orderings: the leading ideal of ``std`` (its minimal monomial generators), which
-  every standard basis shares.
+  every standard basis shares;
+* decompositions of intersections of random ideals (some with squared generators, so that
+  primaries are not prime): ``minAssGTZ`` as sets of primes, ``primdecGTZ`` as the set of
+  associated primes plus the primary components of the minimal ones (embedded components are
+  not unique); every component brought to its reduced basis by ``std``;
+* ``tangentcone`` of random ideals through the origin, as reduced bases.
 
 A case passes when the bases are equal as sets of monic polynomials; the printed bases are also
 compared line by line (a difference there alone is a printing mismatch).  mech runs each case
@@ -35,7 +40,7 @@ LOCAL = ["ds", "ls", "Ds", "ws", "dp-ds", "ds-dp", "lp-ls"]
 @dataclass
 class Case:
     number: int
-    kind: str                # "std" | "eliminate" | "local"
+    kind: str                # "std" | "eliminate" | "local" | "minass" | "primdec" | "tangentcone"
     char: int
     names: str
     ordering: str
@@ -46,11 +51,26 @@ class Case:
         return f"ring r = {self.char}, ({','.join(self.names)}), {self.ordering};"
 
     def command(self) -> str:
-        return f"std(eliminate(I, {self.elim}));" if self.kind == "eliminate" else "std(I);"
+        if self.kind == "eliminate":
+            return f"std(eliminate(I, {self.elim}));"
+        if self.kind == "minass":
+            return ('list L = minAssGTZ(I); int k;\n'
+                    'for (k = 1; k <= size(L); k++) { "@@comp"; std(L[k]); } kill k;')
+        if self.kind == "primdec":
+            return ('list L = primdecGTZ(I); int k;\n'
+                    'for (k = 1; k <= size(L); k++) { "@@comp"; std(L[k][1]); "@@prime"; std(L[k][2]); } kill k;')
+        if self.kind == "tangentcone":
+            return "std(tangentcone(I));"
+        return "std(I);"
+
+    def ideal(self) -> str:
+        if self.kind in ("minass", "primdec"):
+            return f"intersect({', '.join(self.gens)})"
+        return ", ".join(self.gens)
 
     def script(self) -> str:
         """The case as a script both systems read."""
-        return f"{self.ring()}\nideal I = {', '.join(self.gens)};\n{self.command()}\n"
+        return f"{self.ring()}\nideal I = {self.ideal()};\n{self.command()}\n"
 
 
 # ---------------------------------------------------------------- random cases
@@ -105,12 +125,33 @@ def random_poly(rng: random.Random, names: str, char: int, max_deg: int, constan
     return "+".join(terms).replace("+-", "-")
 
 
+KINDS = {"std": 6, "eliminate": 2, "local": 2, "minass": 2, "primdec": 2, "tangentcone": 1}
+
+
+def random_piece(rng: random.Random, names: str, char: int) -> str:
+    """One of the ideals a decomposition case intersects: 1 to n-1 sparse generators of degree
+    at most 2 (constant terms allowed), one of them squared now and then."""
+    gens = [random_poly(rng, names, char, 2, 0.4) for _ in range(rng.randint(1, len(names) - 1))]
+    if rng.random() < 0.3:
+        gens[0] = f"({gens[0]})^2"
+    return f"ideal({', '.join(gens)})"
+
+
 def random_case(rng: random.Random, number: int, char: int | None = None, hard: bool = False) -> Case:
     """A random case; ``hard``: more variables, generators and degree."""
     char = char if char is not None else rng.choice([0, P])
     n = rng.choice([3, 4, 4, 5]) if hard else rng.choice([2, 2, 3, 3, 3, 4])
     names = NAMES[:n]
-    kind = rng.choices(["std", "eliminate", "local"], weights=[6, 2, 2])[0]
+    kind = rng.choices(list(KINDS), weights=list(KINDS.values()))[0]
+    if kind in ("minass", "primdec"):
+        n = min(n, 3)
+        names = NAMES[:n]
+        ordering = random_ordering(rng, n, rng.choice(["dp", "lp", "dp-blocks", "Dp"]))
+        return Case(number, kind, char, names, ordering, [random_piece(rng, names, char)
+                                                          for _ in range(rng.randint(1, 3))])
+    if kind == "tangentcone":
+        gens = [random_poly(rng, names, char, 3, 0.0) for _ in range(rng.randint(1, n - 1))]
+        return Case(number, kind, char, names, "dp", gens)
     ordering = random_ordering(rng, n, rng.choice(LOCAL if kind == "local" else GLOBAL))
     max_deg = {2: 4, 3: 3, 4: 2, 5: 2}[n] + hard
     constant = 0.0 if kind == "local" else 0.1  # in a local ring, a constant term makes a unit
@@ -190,7 +231,7 @@ def singular_outputs(cases: list[Case], timeout: float = 30) -> dict[int, str]:
 
 
 def _singular(cases: list[Case], timeout: float) -> dict[int, str]:
-    script = "option(redSB);\n" + "".join(f'"@@case {c.number}";\n{c.script()}kill r;\n' for c in cases)
+    script = 'option(redSB); LIB "primdec.lib"; LIB "sing.lib";\n' + "".join(f'"@@case {c.number}";\n{c.script()}kill r;\n' for c in cases)
     res = subprocess.run([SINGULAR, "-q", "--no-warn"], input=script + "quit;\n", text=True, capture_output=True,
                          timeout=timeout)
     out: dict[int, str] = {}
@@ -205,7 +246,7 @@ def mech_output(case: Case, timeout: float) -> str | None:
     from mech import MechError, Session
     from mech.dsl.limits import MechLimitError
     s = Session(timeout=timeout)
-    s.execute("option(redSB);")
+    s.execute('option(redSB); LIB "primdec.lib"; LIB "sing.lib";')
     try:
         return s.execute(case.script(), f"<case {case.number}>")
     except MechLimitError:
@@ -222,10 +263,51 @@ def order_key(case: Case):
     return s.ring.poly.order.key
 
 
+def components(case: Case, text: str, key) -> list[tuple[frozenset, frozenset]]:
+    """The (primary, prime) pairs of a decomposition's output, each a set of monic polynomials
+    (for ``minAssGTZ`` the primary is the prime)."""
+    out = []
+    for chunk in text.split("@@comp")[1:]:
+        q, _, p = chunk.partition("@@prime")
+        q_set = frozenset(monic(parse_poly(x, case.names, case.char), case.char, key) for x in ideal_lines(q))
+        p_set = frozenset(monic(parse_poly(x, case.names, case.char), case.char, key)
+                          for x in ideal_lines(p)) if p else q_set
+        out.append((q_set, p_set))
+    return out
+
+
+def compare_decompositions(case: Case, mine: str, theirs: str, key) -> str:
+    a, b = components(case, mine, key), components(case, theirs, key)
+    if {p for _, p in a} != {p for _, p in b}:
+        return f"primes differ: mech {len(a)}, Singular {len(b)} components"
+    if case.kind == "primdec":
+        lead = {p: frozenset(max(dict(f), key=key) for f in p if f) for _, p in b}
+        # a prime is minimal when no other prime of the list is contained in it; with reduced bases of
+        # primes, containment of the ideals is checked by Singular's and mech's agreement on the set only,
+        # so compare the primaries of every prime that Singular lists once (isolated ones are unique)
+        counts = {p: sum(1 for _, o in b if o == p) for _, p in b}
+        ours = {p: q for q, p in a}
+        for q, p in b:
+            if counts[p] == 1 and _minimal(p, [o for _, o in b], lead) and ours.get(p) != q:
+                return "isolated primary components differ"
+    return ""
+
+
+def _minimal(p: frozenset, primes: list[frozenset], lead: dict) -> bool:
+    """Whether no other prime's leading ideal lies in ``p``'s (a necessary condition for o ⊂ p)."""
+    def divides(a, b):
+        return all(x <= y for x, y in zip(a, b))
+    return not any(o != p and all(any(divides(n, m) for n in lead[p]) for m in lead[o]) for o in primes)
+
+
 def compare(case: Case, mine: str, theirs: str) -> str:
     """'' when the results agree, else what differs."""
     if mine.startswith("error:"):
         return f"mech failed: {mine}"
+    if case.kind in ("minass", "primdec"):
+        if "@@comp" not in theirs and "_[" not in theirs and theirs.strip():
+            return f"no decomposition in Singular's output: {theirs!r}"
+        return compare_decompositions(case, mine, theirs, order_key(case))
     a, b = ideal_lines(mine), ideal_lines(theirs)
     if not b:
         return f"no ideal in Singular's output: {theirs!r}"

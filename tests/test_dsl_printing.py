@@ -1,12 +1,8 @@
 """Printing in Singular 4.3.1's format (expected strings taken from real Singular runs)."""
 import pytest
+from util import run
 
-from mech import Session
 from mech.dsl.printing import poly_str
-
-
-def run(src):
-    return Session().execute(src)
 
 
 @pytest.mark.parametrize("ring, expr, out", [

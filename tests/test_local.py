@@ -301,7 +301,7 @@ def test_local_normal_form_matches_singular():
     assert local_normal_form(y + x * y + y**5 + x * y**7, standard_basis([x * y - x**2 * y])) == y
     assert local_normal_form(x + y + x**3, standard_basis([x + x**2 + y**4])) == y - x**2 + x**3 - y**4
     assert local_normal_form(3 * y + 3 * x * y + y**5, [x**2]) == 3 * y
-    assert local_normal_form(3 * y + 3 * x * y + y**5 + x**3, [x**2]) == 3 * y + 3 * x * y + y**5 + x**3
+    assert local_normal_form(3 * y + 3 * x * y + y**5 + x**3, [x**2]) == 3 * y + 3 * x * y + y**5  # tail reduced
     M = ring("xy", [Block("dp", 1), Block("ds", 1)])
     x, y = M.gens()
     assert local_normal_form(y + y**2, [x**2]) == y  # 1 + y is a unit of K[x]_>

@@ -48,7 +48,7 @@ def katsura(n):
     for m in range(n):
         terms = [f"{u[abs(k)]}*{u[abs(m - k)]}" for k in range(-n, n + 1) if abs(m - k) <= n]
         eqs.append("+".join(terms) + f"-{u[m]}")
-    return f"ring r = 0,({','.join(u)}),dp;\rideal I = {', '.join(eqs)};\r"
+    return f"ring r = 0,({','.join(u)}),lp;\rideal I = {', '.join(eqs)};\r"
 
 
 def test_multiline_input_continues_until_complete(capsys):
@@ -142,7 +142,7 @@ def test_interrupt_during_a_long_std_keeps_the_session(capsys):
     shell = Shell()
     run = shell.interp.execute
 
-    def execute(text, name):                  # Ctrl-C 0.3 s into katsura-8's std (minutes)
+    def execute(text, name):                  # Ctrl-C 0.3 s into katsura-8's lex std (Python loops, minutes)
         if "std(I)" in text:
             threading.Timer(0.3, _thread.interrupt_main).start()
         return run(text, name)

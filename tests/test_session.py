@@ -81,3 +81,23 @@ def test_package_docstring_example():
             assert repr(eval(code, env)) == shown, code
         else:
             exec(code, env)
+
+
+def test_sympy_both_ways_with_parameters_matrices_and_numbers():
+    from mech import to_sympy
+    a, x, y = sympy.symbols("a x y")
+    s = Session()
+    s.execute("ring q = (0,a),(x,y),dp; poly g = a*x + 1/a*y + (a+1)/(a-1); matrix M[2][2] = x, a, 1, y;")
+    g = to_sympy(s["g"])
+    assert sympy.simplify(g - (a*x + y/a + (a + 1)/(a - 1))) == 0
+    assert to_sympy(s["M"]) == sympy.Matrix([[x, a], [1, y]])
+    s["h"] = g * x                                   # and back: coefficients rational in the parameter
+    assert s.execute("h - g*x; typeof(h);") == "0\npoly\n"
+    s["N"] = sympy.Matrix([[x, 1], [a, y**2]])
+    assert s.execute("print(N); typeof(N);") == "x,  1,\n(a),y2\nmatrix\n"
+    s["c"] = sympy.Rational(3, 4)
+    assert s.execute("c; typeof(c);") == "3/4\nnumber\n"
+    s.execute("ring p = 32003,(x,y),dp; poly f = 16002x + 3;")
+    assert to_sympy(s["f"]) == 3 - 16001*x          # Z/p: Singular's symmetric representatives
+    with pytest.raises(MechError, match="not a variable"):
+        s["e"] = a * x                              # no parameter a in this ring

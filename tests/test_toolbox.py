@@ -9,26 +9,13 @@ import re
 from pathlib import Path
 
 import pytest
-from util import SINGULAR, run_singular
+from util import SINGULAR, error, run, run_singular
 
-from mech import MechError, MechNameError, MechRuntimeError, MechTypeError, Session
+from mech import MechNameError, MechRuntimeError, MechTypeError, Session
 
 CORPUS = Path(__file__).parent / "corpus"
 PAPER = Path("/work/shared/reference/paper")
 PRIMDEC = re.compile(r"minAssGTZ|primdecGTZ|tangentcone|^size\(L\)|^L;")  # commands of other modules
-
-
-def run(src):
-    return Session().execute(src)
-
-
-def error(src, kind=MechError):
-    """The error ``src`` raises; it must be located and shown with the source line and a caret."""
-    with pytest.raises(kind) as info:
-        run(src)
-    e = info.value
-    assert e.line > 0 and "^" in e.format().splitlines()[2]
-    return e
 
 
 def same_ideal(session, a, b):
@@ -176,8 +163,6 @@ def test_ideal_operators():
     assert out.split("\n")[10:13] == ["_[1]=x6", "_[2]=x5y", "_[3]=x4y3"]
 
 
-@pytest.mark.xfail(reason="dsl/ops.py: ideal + and * do not yet apply Singular's id_Compactify (a unit "
-                          "gives the unit ideal; later constant multiples are dropped from products)")
 def test_ideal_operators_compactify_as_singular():
     out = run("ring r = 0, (x,y,z), dp; ideal(x, 1) + ideal(y); ideal(x, 2x, y) * ideal(2y, x);")
     assert out == "_[1]=1\n_[1]=2xy\n_[2]=x2\n_[3]=2y2\n"

@@ -1,4 +1,4 @@
-"""Helpers shared by the tests: parsing Singular's long-form output, running Singular."""
+"""Helpers shared by the tests: running mech code, parsing Singular's long-form output, running Singular."""
 from __future__ import annotations
 
 import re
@@ -6,9 +6,27 @@ from fractions import Fraction
 import shutil
 import subprocess
 
+import pytest
+
+from mech import MechError, Session
 from mech.kernel import Poly, PolyRing
 
 SINGULAR = shutil.which("Singular")
+
+
+def run(src: str) -> str:
+    """What ``src`` prints in a fresh session."""
+    return Session().execute(src)
+
+
+def error(src: str, kind: type = MechError) -> MechError:
+    """The error ``src`` raises in a fresh session; it must be located and shown with the source line
+    and a caret under it."""
+    with pytest.raises(kind) as info:
+        run(src)
+    e = info.value
+    assert e.line > 0 and "^" in e.format().splitlines()[2], e.format()
+    return e
 
 
 def parse_poly(ring: PolyRing, text: str) -> Poly:
