@@ -196,7 +196,14 @@ def machine() -> list[str]:
             f"- CPU: {cpu}, {os.cpu_count()} cores (shared with other jobs: load average "
             f"{' '.join(f'{x:.1f}' for x in os.getloadavg())} at the start)",
             f"- Python {platform.python_version()}, python-flint {flint.__version__}; Singular: "
-            f"{sing.strip() or 'installed'}; Macaulay2: {'installed' if M2 else 'not installed'}"]
+            f"{sing.strip() or 'installed'}; Macaulay2: {m2_version()}"]
+
+
+def m2_version() -> str:
+    if not M2:
+        return "not installed"
+    out = subprocess.run([M2, "--version"], text=True, capture_output=True).stdout.strip()
+    return out or "installed"
 
 
 def main() -> None:

@@ -295,7 +295,14 @@ _NAMES = {"timeout": "timeout", "--timeout": "timeout", "max-memory": "max_memor
 def limits_command(ctx, what: str = "", value: Any = None) -> Any:
     """limits(): the time and memory limits of each statement; limits("timeout", s) sets the
     time limit to s seconds and limits("max-memory", mb) the memory limit to mb MB (0: none);
-    limits("timeout") is the current value (0: none)."""
+    limits("timeout") is the current value (0: none).
+
+    Example:
+      limits("timeout", 30);
+      limits("timeout");
+      → 30
+      limits("timeout", 0);
+    """
     lim: Limits = ctx.limits
     if not what:
         return lim.describe()

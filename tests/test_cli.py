@@ -123,16 +123,3 @@ def test_console_script_installed():
         pytest.skip("console script not on PATH")
     r = subprocess.run([exe, "-c", "2+3;"], text=True, capture_output=True, timeout=60)
     assert r.stdout == "5\n"
-
-
-def test_readme_mech_examples_run():
-    """Every mech code block of README.md runs without error."""
-    import re
-    readme = Path(__file__).resolve().parent.parent / "README.md"
-    blocks = [b for b in re.findall(r"```[a-z]*\n(.*?)```", readme.read_text(), re.S) if b.lstrip().startswith("ring")]
-    assert blocks
-    for block in blocks:
-        r = mech("-c", block)
-        assert r.returncode == 0, r.stderr
-    r = mech("-c", blocks[0])
-    assert r.stdout == "_[1]=y2-xz\n_[2]=xy-z\n_[3]=x2-y\n1\nz\n"

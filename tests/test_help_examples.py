@@ -73,16 +73,9 @@ EXAMPLES = {name: example(doc) for name, doc in DOCS.items()}
 WITH_EXAMPLE = sorted(name for name, steps in EXAMPLES.items() if steps)
 
 
-#: Known gaps: commands whose docstring still lacks an example (limits: dsl/limits.py).
-NO_EXAMPLE_YET = {"limits"}
-
-
 def test_every_command_and_procedure_has_an_example():
     missing = sorted(name for name, steps in EXAMPLES.items() if not steps)
-    new = [name for name in missing if name not in NO_EXAMPLE_YET]
-    assert not new, f"{len(new)} commands or procedures have no Example paragraph: {', '.join(new)}"
-    if missing:
-        pytest.xfail(f"no Example paragraph yet: {', '.join(missing)}")
+    assert not missing, f"{len(missing)} commands or procedures have no Example paragraph: {', '.join(missing)}"
 
 
 @pytest.mark.parametrize("name", WITH_EXAMPLE)

@@ -317,12 +317,12 @@ def test_cli_error_has_no_traceback(tmp_path):
 
 # ---------------------------------------------------------------- documentation
 def code_blocks(path: Path) -> list[tuple[str, str | None]]:
-    """The untagged code blocks of a markdown file, each with the ```text block printed after it."""
+    """The untagged (or ```mech) code blocks of a markdown file, each with the ```text block printed after it."""
     text = path.read_text()
     blocks = re.findall(r"```(\w*)\n(.*?)```", text, re.S)
     out = []
     for i, (tag, code) in enumerate(blocks):
-        if tag == "":
+        if tag in ("", "mech"):
             nxt = blocks[i + 1] if i + 1 < len(blocks) else None
             out.append((code, nxt[1] if nxt and nxt[0] == "text" else None))
     return out

@@ -1,9 +1,12 @@
-"""Property tests (hypothesis) of the kernel's foundations: orderings and Gröbner bases."""
+"""Property tests (hypothesis) of the kernel: orderings, Gröbner bases, elimination and primary
+decomposition."""
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing, groebner, normal_form
+from mech.kernel.ideals import eliminate, intersect, radical
 from mech.kernel.poly import lcm_exp
+from mech.kernel.primdec import is_prime, primdec_gtz
 
 N = 3
 exps = st.tuples(*[st.integers(0, 4)] * N)
@@ -76,3 +79,41 @@ def test_groebner_basis_reduces_generators_and_spolys(data):
         for g in G:
             if f is not g:
                 assert not any(all(a <= b for a, b in zip(g.lm(), e)) for e in f.terms)
+
+
+@settings(max_examples=40, deadline=None)
+@given(small_ideals(), st.sets(st.integers(0, N - 1), min_size=1, max_size=N - 1))
+def test_elimination_is_free_of_the_variables_and_in_the_ideal(data, drop):
+    R, polys = data
+    E = eliminate(polys, sorted(drop))
+    G = groebner(polys)
+    for f in E:
+        assert all(e[i] == 0 for e in f.terms for i in drop)
+        assert normal_form(f, G).is_zero()
+
+
+@st.composite
+def decomposable_ideals(draw):
+    """Intersections and products of small ideals, so that components of several dimensions,
+    embedded and non-reduced ones occur; in two or three variables to keep examples quick."""
+    field = draw(st.sampled_from([QQ, GF(32003)]))
+    R = PolyRing(field, ["x", "y", "z"], MonomialOrder.simple("dp", N))
+    x, y, z = R.gens()
+    atoms = [x, y, z, x - 1, y + 1, x - y, x + y - z, x ** 2 - y, y ** 2 - z]
+    pieces = []
+    for _ in range(draw(st.integers(1, 3))):
+        gens = draw(st.lists(st.sampled_from(atoms), min_size=1, max_size=2, unique=True))
+        power = draw(st.integers(1, 2))
+        pieces.append([g ** power if k == 0 else g for k, g in enumerate(gens)])
+    return R, pieces
+
+
+@settings(max_examples=25, deadline=None)
+@given(decomposable_ideals())
+def test_primary_components_intersect_to_the_ideal(data):
+    R, pieces = data
+    I = intersect(*pieces, ring=R)
+    comps = primdec_gtz(I, R)
+    assert intersect(*[q for q, _ in comps], ring=R) == groebner(I, R)
+    for q, p in comps:
+        assert radical(q, R) == p and is_prime(p, R)
