@@ -16,7 +16,7 @@ KEYWORDS = ("if", "else", "for", "while", "proc", "static", "return", "break", "
             "keepring", "setring", "LIB", "quit", "exit", "help", "and", "or", "not", "div", "mod")
 #: Type names (declarations ``poly f = ...;``).
 TYPES = ("int", "bigint", "number", "poly", "ideal", "matrix", "list", "string", "intvec", "intmat", "map",
-         "def", "ring", "qring", "vector", "module", "resolution", "link")
+         "def", "ring", "qring", "vector", "module", "resolution", "link", "mechanism")
 #: Names the interpreter itself gives a value.
 SYSTEM_VARIABLES = ("basering", "timer", "rtimer", "voice", "printlevel")
 

@@ -136,7 +136,8 @@ _SPEC_NAMES = {int: "int", str: "string", Number: "number", Poly: "poly", Ideal:
 def _spec_name(spec: Optional[tuple]) -> str:
     if spec is None:
         return "any"
-    return "|".join(_SPEC_NAMES.get(t, getattr(t, "__name__", str(t))) for t in spec)
+    return "|".join(_SPEC_NAMES.get(t, getattr(t, "type_name", None) or getattr(t, "__name__", str(t)))
+                    for t in spec)
 
 
 def _to_spec(hint: Any) -> Optional[tuple]:
