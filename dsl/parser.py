@@ -23,6 +23,10 @@ from .errors import MechSyntaxError, Source
 GRAMMAR = Path(__file__).with_name("singular.lark")
 
 
+#: The first words of mechanism.lib's description statements (``mechanism m { ... }``).
+MECHANISM_STATEMENTS = ("ground", "fix", "bar", "prismatic", "body", "slider")
+
+
 def _pos(meta: Any) -> A.Pos:
     if getattr(meta, "empty", False):
         return A.NOPOS
@@ -144,6 +148,27 @@ class _Build(Transformer_NonRecursive):  # iterative: deeply nested input cannot
         typ, rest = c[0], c[1:]
         value = rest[-1]
         return A.Decl(typ, list(rest[:-1]), value, pos=_pos(meta))
+
+    @v_args(meta=True)
+    def mech_def(self, meta, c):
+        typ, name, lines = c[0], c[1], c[2:]
+        if typ != "mechanism":
+            raise MechSyntaxError(f"a {{ ... }} description declares a mechanism, not a {typ}", _tpos(name))
+        for words in lines:
+            if str(words[0]) not in MECHANISM_STATEMENTS:
+                raise MechSyntaxError(f"unknown mechanism statement '{words[0]}' (expected "
+                                      f"{', '.join(MECHANISM_STATEMENTS)})", _tpos(words[0]), underline=True)
+        text = "; ".join(" ".join(str(w) for w in words) for words in lines)
+        return A.Decl("mechanism", [A.Declarator(str(name), [], pos=_tpos(name))],
+                      [A.StrLit(text, pos=_pos(meta))], pos=_pos(meta))
+
+    def mech_line(self, c):
+        return c
+
+    def mech_word(self, c):
+        tok = c[-1]
+        return Token(tok.type, "".join(str(t) for t in c), tok.start_pos, tok.line, tok.column,
+                     tok.end_line, tok.end_column) if len(c) > 1 else tok
 
     @v_args(meta=True)
     def assign(self, meta, c):

@@ -332,7 +332,7 @@ def test_docs_examples(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     s = Session()
     blocks = code_blocks(ROOT / "docs" / "mechanisms.md")
-    assert len(blocks) == 5
+    assert len(blocks) == 6
     for code, expected in blocks:
         out = s.execute(code)
         if expected is not None:
@@ -354,3 +354,17 @@ def test_cli_json(tmp_path):
     data = json.loads(r.stdout)
     assert data["mobility"] == 1 and [len(s["local_components"]) for s in data["singular"]] == [2, 2]
     assert (tmp_path / "kite_modes.png").exists()
+
+
+def test_block_form_is_the_same_mechanism():
+    s = Session()
+    s.execute('LIB "mechanism.lib";\nmechanism a {\n  ground O A 1;\n  bar O B l1; bar B C l2;\n'
+              '  bar C A l3;\n}\nmechanism b = "ground O A 1; bar O B l1; bar B C l2; bar C A l3";\n'
+              'mechanism c { fix O -1/2 3; bar O P 2; slider P 0 1 -1/2; }')
+    assert str(s["a"]) == str(s["b"]) and s.eval("typeof(a)") == "mechanism"
+    assert "fix O -1/2 3" in str(s["c"])
+    with pytest.raises(MechError) as e:
+        s.execute("mechanism d {\n  ground O A 1;\n  rod O B 2;\n}")
+    assert e.value.format().startswith("<string>:3:3: error: unknown mechanism statement 'rod'")
+    with pytest.raises(MechError, match="declares a mechanism, not a int"):
+        s.execute("int k { bar O B 1; }")
