@@ -87,7 +87,10 @@ class Frame:
 
 
 def convert_exception(e: BaseException) -> MechError:
-    """A Python exception raised during evaluation as the error the user sees."""
+    """A Python exception raised during evaluation as the error the user sees (a broken pipe,
+    the reader of the output gone as in ``mech f | head``, is raised again for the caller)."""
+    if isinstance(e, BrokenPipeError):
+        raise e
     if isinstance(e, MechError):
         return e
     if isinstance(e, ZeroDivisionError):

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from typing import Optional
 
@@ -56,6 +57,9 @@ def run_text(text: str, name: str, warnings: bool = True, dialect: str = "singul
         sys.stdout.flush()
         sys.stderr.write(f"{name}: error: interrupted\n")
         return 130
+    except BrokenPipeError:  # `mech f | head`: stop quietly, as Unix tools do
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 141
     except Exception as e:  # a bug: still the error format, never a traceback
         sys.stdout.flush()
         sys.stderr.write(MechInternalError(f"internal error: {type(e).__name__}: {e}").format())

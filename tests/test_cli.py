@@ -123,3 +123,11 @@ def test_console_script_installed():
         pytest.skip("console script not on PATH")
     r = subprocess.run([exe, "-c", "2+3;"], text=True, capture_output=True, timeout=60)
     assert r.stdout == "5\n"
+
+
+@pytest.mark.skipif(os.name != "posix", reason="shell pipes")
+def test_a_closed_pipe_ends_quietly():
+    script = "int i; for (i = 0; i < 200000; i++) { i; }"
+    cmd = f"{sys.executable} -m mech -c '{script}' | head -1; echo status ${{PIPESTATUS[0]}} >&2"
+    r = subprocess.run(["bash", "-c", cmd], text=True, capture_output=True, timeout=120)
+    assert r.stdout == "0\n" and r.stderr == "status 141\n"
