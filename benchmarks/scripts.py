@@ -25,8 +25,8 @@ PAPER = ROOT.parent / "shared" / "reference" / "paper"
 SINGULAR = shutil.which("Singular")
 MECH = shutil.which("mech") or ""
 SCRATCH = tempfile.mkdtemp(prefix="mech-bench-")
+# children may write and use bytecode caches, as an installed mech does (the first run warms them)
 ENV = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
-"""Children may write and use bytecode caches, as an installed mech does (the first run warms them)."""
 
 
 def timed(cmd: list[str], stdin: str | None = None) -> dict:

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any, Iterator, Optional
 
 from lark import Lark, Token, Transformer_NonRecursive, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedInput, VisitError
+from lark.exceptions import UnexpectedCharacters, UnexpectedInput
 
 from ..kernel import Poly
 from . import ast as A
@@ -26,7 +26,7 @@ from . import ops
 from .errors import MechError, MechNameError, MechRuntimeError, MechSyntaxError, MechTypeError, Source
 from .interpreter import Frame, Interpreter, Var, _Break, _Return
 from .m2_printing import Opt, Symbol, to_string
-from .parser import _pos, _tpos
+from .parser import _pos, _tpos, build
 from .rings import make_ring
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, OrderBlock, Ring, to_int, typeof
 
@@ -336,13 +336,7 @@ def parse(text: str, source: Optional[Source] = None) -> A.Program:
     """The program tree of Macaulay2 code ``text``; raises :class:`MechSyntaxError` located in ``source``."""
     source = source or Source("<string>", text)
     try:
-        return _Build().transform(_parser().parse(text))
-    except VisitError as e:
-        err = e.orig_exc
-        if isinstance(err, MechSyntaxError):
-            err.source = source
-            raise err from None
-        raise
+        return build(_Build(), _parser().parse(text), source)
     except UnexpectedCharacters as e:
         ch = text[e.pos_in_stream] if e.pos_in_stream < len(text) else ""
         msg = "unterminated string" if ch == '"' else f"unexpected character '{ch}'"

@@ -286,6 +286,18 @@ def _parser() -> Lark:
                 maybe_placeholders=True)
 
 
+def build(builder: Transformer_NonRecursive, tree: Any, source: Source) -> A.Program:
+    """``builder.transform(tree)``, a syntax error raised while building located in ``source``."""
+    try:
+        return builder.transform(tree)
+    except VisitError as e:
+        err = e.orig_exc
+        if isinstance(err, MechSyntaxError):
+            err.source = source
+            raise err from None
+        raise
+
+
 def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 1)) -> A.Program:
     """The program tree of ``text``; raises :class:`MechSyntaxError` located in ``source``
     (``at``: the line and column where ``text`` starts there)."""
@@ -294,13 +306,7 @@ def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 
         tree = _parser().parse(text)
         if at != (1, 1):
             _shift(tree, at)
-        return _Build().transform(tree)
-    except VisitError as e:
-        err = e.orig_exc
-        if isinstance(err, MechSyntaxError):
-            err.source = source
-            raise err from None
-        raise
+        return build(_Build(), tree, source)
     except MechSyntaxError as e:
         e.source = source
         raise

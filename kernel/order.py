@@ -61,16 +61,16 @@ class MonomialOrder:
         self.matrix = self._matrix()
         self._check_nondegenerate()
         self.key: Callable[[Exp], tuple] = self._compile()
+        # sorts monomials from the largest down (heaps)
         self.neg_key: Callable[[Exp], tuple] = _linear_key([[-v for v in r] for r in self.matrix])
-        """A key sorting monomials from the largest down (for heaps)."""
         signs = []
         for j in range(self.nvars):
             col = [r[j] for r in self.matrix if r[j] != 0]
             signs.append(1 if col[0] > 0 else -1)
         self.is_global = all(s > 0 for s in signs)
         self.is_local = all(s < 0 for s in signs)
+        # the first weight row is positive: the ordering refines a (weighted) degree
         self.is_graded = all(w > 0 for w in self.matrix[0])
-        """The first weight row is positive: the ordering refines a (weighted) degree."""
 
     @classmethod
     def simple(cls, kind: str, nvars: int, weights: Sequence[int] = ()) -> "MonomialOrder":

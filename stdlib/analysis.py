@@ -575,7 +575,7 @@ def configuration_ring(m: Mechanism) -> Ring:
     """
     from mech.dsl.rings import make_ring
     from mech.dsl.values import OrderBlock
-    n, params = len(m.variables()), [p for p in m.symbols()]
+    n, params = len(m.variables()), list(m.symbols())
     blocks = [OrderBlock("dp", n)] + ([OrderBlock("dp", len(params))] if params else [])
     return make_ring(0, (), m.variables() + params, blocks)
 

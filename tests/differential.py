@@ -281,22 +281,20 @@ def compare_decompositions(case: Case, mine: str, theirs: str, key) -> str:
     if {p for _, p in a} != {p for _, p in b}:
         return f"primes differ: mech {len(a)}, Singular {len(b)} components"
     if case.kind == "primdec":
-        lead = {p: frozenset(max(dict(f), key=key) for f in p if f) for _, p in b}
-        # a prime is minimal when no other prime of the list is contained in it; with reduced bases of
-        # primes, containment of the ideals is checked by Singular's and mech's agreement on the set only,
-        # so compare the primaries of every prime that Singular lists once (isolated ones are unique)
-        counts = {p: sum(1 for _, o in b if o == p) for _, p in b}
+        # isolated primary components are unique: compare those of the primes that are certainly
+        # minimal (listed once, and no other prime's leading ideal inside theirs)
+        primes = [p for _, p in b]
+        lead = {p: [max(dict(f), key=key) for f in p if f] for p in primes}
         ours = {p: q for q, p in a}
         for q, p in b:
-            if counts[p] == 1 and _minimal(p, [o for _, o in b], lead) and ours.get(p) != q:
+            if primes.count(p) == 1 and _minimal(p, primes, lead) and ours.get(p) != q:
                 return "isolated primary components differ"
     return ""
 
 
 def _minimal(p: frozenset, primes: list[frozenset], lead: dict) -> bool:
-    """Whether no other prime's leading ideal lies in ``p``'s (a necessary condition for o ⊂ p)."""
-    def divides(a, b):
-        return all(x <= y for x, y in zip(a, b))
+    """Whether no other prime's leading ideal lies in ``p``'s (necessary for ``o ⊂ p``)."""
+    from mech.kernel.poly import divides
     return not any(o != p and all(any(divides(n, m) for n in lead[p]) for m in lead[o]) for o in primes)
 
 

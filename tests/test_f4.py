@@ -4,45 +4,13 @@ import random
 import flint
 import pytest
 
-from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing, groebner
+from mech.kernel import GF, QQ, Block, MonomialOrder, groebner
 from mech.kernel.f4 import F4, TraceMismatch, pack_polys, replay
 from mech.kernel.modular import ExactReducer, Reconstructor, primes, primitive, ratrec, verify_basis
 from mech.kernel.monomials import Packing
+from util import cyclic, katsura, ring
 
 P32003 = GF(32003)
-
-
-def ring(names, blocks, field=QQ):
-    return PolyRing(field, names, MonomialOrder(blocks))
-
-
-def katsura(R, n):
-    X = R.gens()
-
-    def V(i):
-        i = abs(i)
-        return X[i] if i <= n else R.zero()
-    ideal = [sum((V(j) for j in range(-n, n + 1)), R.zero()) - 1]
-    for m in range(n):
-        ideal.append(sum((V(j) * V(m - j) for j in range(-n, n + 1)), R.zero()) - V(m))
-    return ideal
-
-
-def cyclic(R):
-    X, n = R.gens(), R.nvars
-    ideal = []
-    for d in range(1, n):
-        p = R.zero()
-        for i in range(n):
-            t = R.one()
-            for k in range(d):
-                t = t * X[(i + k) % n]
-            p = p + t
-        ideal.append(p)
-    t = R.one()
-    for x in X:
-        t = t * x
-    return ideal + [t - 1]
 
 
 def same(gens, R=None):

@@ -3,45 +3,12 @@ Singular is installed)."""
 from pathlib import Path
 
 import pytest
-from util import SINGULAR, ideal_blocks, parse_poly, run_singular
+from util import SINGULAR, cyclic, ideal_blocks, katsura, parse_poly, ring, run_singular
 
-from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing, contains, groebner, normal_form
+from mech.kernel import GF, Block, contains, groebner, normal_form
 from mech.kernel.dimension import krull_dim
 
 DATA = Path(__file__).parent / "data"
-
-
-def ring(names, blocks, field=QQ):
-    return PolyRing(field, names, MonomialOrder(blocks))
-
-
-def katsura(R, n):
-    X = R.gens()
-
-    def V(i):
-        i = abs(i)
-        return X[i] if i <= n else R.zero()
-    ideal = [sum((V(j) for j in range(-n, n + 1)), R.zero()) - 1]
-    for m in range(n):
-        ideal.append(sum((V(j) * V(m - j) for j in range(-n, n + 1)), R.zero()) - V(m))
-    return ideal
-
-
-def cyclic(R):
-    X, n = R.gens(), R.nvars
-    ideal = []
-    for d in range(1, n):
-        p = R.zero()
-        for i in range(n):
-            t = R.one()
-            for k in range(d):
-                t = t * X[(i + k) % n]
-            p = p + t
-        ideal.append(p)
-    t = R.one()
-    for x in X:
-        t = t * x
-    return ideal + [t - 1]
 
 
 def cases():

@@ -9,7 +9,7 @@ import subprocess
 import pytest
 
 from mech import MechError, Session
-from mech.kernel import Poly, PolyRing
+from mech.kernel import QQ, MonomialOrder, Poly, PolyRing
 
 SINGULAR = shutil.which("Singular")
 
@@ -65,3 +65,40 @@ def run_singular(script: str, timeout: float = 120) -> str:
     res = subprocess.run([SINGULAR, "-q", "--no-warn"], input=script + "\nquit;\n", text=True,
                          capture_output=True, timeout=timeout)
     return res.stdout
+
+
+# ---------------------------------------------------------------- benchmark systems
+def ring(names, blocks, field=QQ):
+    """A polynomial ring with a block ordering."""
+    return PolyRing(field, names, MonomialOrder(blocks))
+
+
+def katsura(R, n):
+    """katsura-n in the first n+1 variables of R."""
+    X = R.gens()
+
+    def V(i):
+        i = abs(i)
+        return X[i] if i <= n else R.zero()
+    ideal = [sum((V(j) for j in range(-n, n + 1)), R.zero()) - 1]
+    for m in range(n):
+        ideal.append(sum((V(j) * V(m - j) for j in range(-n, n + 1)), R.zero()) - V(m))
+    return ideal
+
+
+def cyclic(R):
+    """cyclic-n in the n variables of R."""
+    X, n = R.gens(), R.nvars
+    ideal = []
+    for d in range(1, n):
+        p = R.zero()
+        for i in range(n):
+            t = R.one()
+            for k in range(d):
+                t = t * X[(i + k) % n]
+            p = p + t
+        ideal.append(p)
+    t = R.one()
+    for x in X:
+        t = t * x
+    return ideal + [t - 1]
