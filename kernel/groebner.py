@@ -7,78 +7,99 @@ by name so faster ones (F4) can be swapped in behind the same interface.
 from __future__ import annotations
 
 import heapq
-from operator import add as _add, sub as _sub
+from collections import OrderedDict
 from typing import Any, Callable, Sequence
 
-from .poly import Exp, Poly, PolyRing, divides, lcm_exp
+from .monomials import Packing
+from .poly import Exp, Poly, PolyRing
 
 
 class OrderingError(ValueError):
     """Raised when an algorithm needs a global ordering and the ring's is not."""
 
 
-def _mask(e: Exp) -> int:
-    m = 0
-    for i, v in enumerate(e):
-        if v:
-            m |= 1 << i
-    return m
+class _Overflow(Exception):
+    """A monomial outgrew the fields of its packing (start again with a wider one)."""
+
+
+def _packed(ring: PolyRing, polys: Sequence[dict[Exp, Any]], run: Callable[[Packing], Any]) -> Any:
+    """``run(packing)`` with a packing of the ring's ordering wide enough for ``polys``,
+    widened and run again whenever a monomial overflows it."""
+    maxdeg = max(8, 2 * max((sum(e) for p in polys for e in p), default=0))
+    while True:
+        try:
+            return run(Packing(ring.order, maxdeg))
+        except _Overflow:
+            maxdeg *= 4
+
+
+def _pack(pk: Packing, p: dict[Exp, Any]) -> dict[int, Any]:
+    pack = pk.pack
+    return {pack(e): c for e, c in p.items()}
+
+
+def _unpack(pk: Packing, p: dict[int, Any]) -> dict[Exp, Any]:
+    unpack = pk.unpack
+    return {unpack(m): c for m, c in p.items()}
 
 
 class _Reducer:
-    """A set of reducers (monic polynomials as dicts) with divisibility masks."""
+    """A set of reducers: polynomials as ``{packed monomial: coefficient}`` with their
+    leading monomials (see :class:`~.monomials.Packing`: a product of monomials is a sum of
+    integers, the ordering compares integers, divisibility is one masked subtraction)."""
 
-    def __init__(self, ring: PolyRing, polys: Sequence[dict[Exp, Any]] = ()) -> None:
-        self.ring = ring
-        self.key = ring.order.key
-        self.items: list[tuple[Exp, int, dict[Exp, Any]]] = []
+    def __init__(self, pk: Packing, polys: Sequence[dict[int, Any]] = ()) -> None:
+        self.guard = pk.guard
+        self.items: list[tuple[int, dict[int, Any]]] = []
         for p in polys:
             self.add(p)
 
-    def add(self, p: dict[Exp, Any]) -> None:
-        lm = max(p, key=self.key)
-        self.items.append((lm, _mask(lm), p))
+    def add(self, p: dict[int, Any]) -> None:
+        self.items.append((max(p), p))
 
-    def find(self, e: Exp, emask: int) -> tuple[Exp, dict[Exp, Any]] | None:
-        for lm, m, p in self.items:
-            if m & ~emask == 0 and divides(lm, e):
+    def find(self, m: int) -> tuple[int, dict[int, Any]] | None:
+        g = self.guard
+        mg = m | g
+        for lm, p in self.items:
+            if (mg - lm) & g == g:
                 return lm, p
         return None
 
-    def reduce(self, f: dict[Exp, Any], full: bool = True) -> dict[Exp, Any]:
+    def reduce(self, f: dict[int, Any], full: bool = True) -> dict[int, Any]:
         """Normal form of ``f``; ``full`` reduces every term, otherwise only the top."""
         if not f:
             return {}
-        key = self.ring.order.neg_key
+        guard = self.guard
         p = dict(f)
-        heap = [(key(e), e) for e in p]
+        heap = [-m for m in p]  # the largest monomial first
         heapq.heapify(heap)
-        result: dict[Exp, Any] = {}
+        result: dict[int, Any] = {}
         while heap:
-            e = heapq.heappop(heap)[1]
-            c = p.get(e)
+            m = -heapq.heappop(heap)
+            c = p.get(m)
             if c is None:
                 continue
-            while heap and heap[0][1] == e:
+            while heap and heap[0] == -m:
                 heapq.heappop(heap)
-            hit = self.find(e, _mask(e))
+            hit = self.find(m)
             if hit is None:
-                del p[e]
-                result[e] = c
+                del p[m]
+                result[m] = c
                 if not full:
                     result.update(p)
                     return result
                 continue
             lm, g = hit
-            shift = tuple(map(_sub, e, lm))
-            lc = g[lm]
-            factor = c / lc
+            shift = m - lm
+            factor = c / g[lm]
             for ge, gc in g.items():
-                te = tuple(map(_add, ge, shift))
+                te = ge + shift
                 v = p.get(te)
                 if v is None:
+                    if te & guard:
+                        raise _Overflow
                     p[te] = -factor * gc
-                    heapq.heappush(heap, (key(te), te))
+                    heapq.heappush(heap, -te)
                 else:
                     v = v - factor * gc
                     if v == 0:
@@ -88,8 +109,7 @@ class _Reducer:
         return result
 
 
-def _monic(p: dict[Exp, Any], key: Callable) -> dict[Exp, Any]:
-    lm = max(p, key=key)
+def _monic(p: dict, lm: Any) -> dict:
     inv = 1 / p[lm]
     return {e: c * inv for e, c in p.items()}
 
@@ -97,17 +117,23 @@ def _monic(p: dict[Exp, Any], key: Callable) -> dict[Exp, Any]:
 def buchberger(gens: Sequence[Poly], ring: PolyRing) -> list[dict[Exp, Any]]:
     """A (non-reduced) Gröbner basis as dicts, by Buchberger's algorithm with the
     Gebauer–Möller criteria and the sugar strategy."""
-    key = ring.order.key
-    basis: list[dict[Exp, Any]] = []
-    lms: list[Exp] = []
+    polys = [g.terms for g in gens if g.terms]
+    return _packed(ring, polys, lambda pk: [_unpack(pk, b) for b in _buchberger(polys, pk)])
+
+
+def _buchberger(polys: Sequence[dict[Exp, Any]], pk: Packing) -> list[dict[int, Any]]:
+    basis: list[dict[int, Any]] = []
+    lms: list[int] = []
     sugar: list[int] = []
     active: list[bool] = []
-    pairs: list[tuple[int, int, Exp, int]] = []  # (i, j, lcm, sugar)
-    reducer = _Reducer(ring)
+    pairs: list[tuple[int, int, int, int]] = []  # (sugar, lcm, i, j): ``min`` is the next pair
+    reducer = _Reducer(pk)
+    guard, degree, divides_, lcm = pk.guard, pk.degree, pk.divides, pk.lcm
 
-    def update(h: dict[Exp, Any], s: int) -> None:
+    def update(h: dict[int, Any], s: int) -> None:
         nonlocal pairs
-        hlm = max(h, key=key)
+        hlm = max(h)
+        hdeg = degree(hlm)
         k = len(basis)
         basis.append(h)
         lms.append(hlm)
@@ -117,65 +143,55 @@ def buchberger(gens: Sequence[Poly], ring: PolyRing) -> list[dict[Exp, Any]]:
         new = []
         for i in range(k):
             if active[i]:
-                lc = lcm_exp(lms[i], hlm)
-                ps = max(sugar[i] + sum(lc) - sum(lms[i]), s + sum(lc) - sum(hlm))
-                new.append((i, k, lc, ps))
+                lc = lcm(lms[i], hlm)
+                if lc & guard:
+                    raise _Overflow
+                d = degree(lc)
+                new.append((max(sugar[i] + d - degree(lms[i]), s + d - hdeg), lc, i, k))
         # criterion M / F: keep a pair only if no other new pair's lcm properly divides it,
-        # and among equal lcms keep one (preferring a coprime pair, which is then dropped)
-        kept = []
+        # and among equal lcms keep one (none if one of them is coprime: product criterion)
+        lcms = {a[1] for a in new}
+        kept: dict[int, tuple] = {}
+        coprime = set()
         for a in new:
-            if any(b is not a and divides(b[2], a[2]) and b[2] != a[2] for b in new):
+            lc = a[1]
+            if lc in kept or lc in coprime or any(b != lc and divides_(b, lc) for b in lcms):
                 continue
-            kept.append(a)
-        by_lcm: dict[Exp, tuple] = {}
-        for a in kept:
-            prev = by_lcm.get(a[2])
-            coprime = a[2] == tuple(x + y for x, y in zip(lms[a[0]], hlm))
-            if prev is None or coprime:
-                by_lcm[a[2]] = a
-        final = []
-        for lc, a in by_lcm.items():
-            if lc == tuple(x + y for x, y in zip(lms[a[0]], hlm)):
-                continue  # product criterion
-            final.append(a)
+            if degree(lc) == degree(lms[a[2]]) + hdeg:
+                coprime.add(lc)
+                kept.pop(lc, None)
+            else:
+                kept[lc] = a
         # criterion B on old pairs
-        old = []
-        for (i, j, lc, ps) in pairs:
-            if divides(hlm, lc) and lcm_exp(lms[i], hlm) != lc and lcm_exp(lms[j], hlm) != lc:
-                continue
-            old.append((i, j, lc, ps))
-        pairs = old + final
+        old = [a for a in pairs
+               if not (divides_(hlm, a[1]) and lcm(lms[a[2]], hlm) != a[1] and lcm(lms[a[3]], hlm) != a[1])]
+        pairs = old + list(kept.values())
         for i in range(k):
-            if active[i] and divides(hlm, lms[i]):
+            if active[i] and divides_(hlm, lms[i]):
                 active[i] = False
 
-    for g in gens:
-        if g.terms:
-            r = reducer.reduce(g.terms)
-            if r:
-                update(_monic(r, key), g.total_degree())
-    while pairs:
-        best = min(range(len(pairs)), key=lambda t: (pairs[t][3], key(pairs[t][2])))
-        i, j, lc, ps = pairs.pop(best)
-        f, g = basis[i], basis[j]
-        spoly = _spoly(f, lms[i], g, lms[j], lc)
-        r = reducer.reduce(spoly)
+    for g in polys:
+        r = reducer.reduce(_pack(pk, g))
         if r:
-            if ring.zero_exp in r and len(r) == 1:
-                return [{ring.zero_exp: ring.field.one}]
-            update(_monic(r, key), ps)
+            update(_monic(r, max(r)), sum(max(g, key=sum)))
+    while pairs:
+        best = min(pairs)
+        pairs.remove(best)
+        ps, lc, i, j = best
+        r = reducer.reduce(_spoly(basis[i], lms[i], basis[j], lms[j], lc))
+        if r:
+            if len(r) == 1 and 0 in r:  # a nonzero constant: the unit ideal
+                return [_monic(r, 0)]
+            update(_monic(r, max(r)), ps)
     return [b for b, a in zip(basis, active) if a]
 
 
-def _spoly(f: dict, lf: Exp, g: dict, lg: Exp, lc: Exp) -> dict:
-    sf = tuple([x - y for x, y in zip(lc, lf)])
-    sg = tuple([x - y for x, y in zip(lc, lg)])
+def _spoly(f: dict[int, Any], lf: int, g: dict[int, Any], lg: int, lc: int) -> dict[int, Any]:
+    sf, sg = lc - lf, lc - lg
     cf, cg = f[lf], g[lg]
-    out: dict = {}
-    for e, c in f.items():
-        out[tuple([x + y for x, y in zip(e, sf)])] = c * cg
+    out = {e + sf: c * cg for e, c in f.items()}
     for e, c in g.items():
-        te = tuple([x + y for x, y in zip(e, sg)])
+        te = e + sg
         v = out.get(te)
         v = -c * cf if v is None else v - c * cf
         if v == 0:
@@ -186,24 +202,24 @@ def _spoly(f: dict, lf: Exp, g: dict, lg: Exp, lc: Exp) -> dict:
 
 
 def reduce_basis(basis: Sequence[dict[Exp, Any]], ring: PolyRing) -> list[dict[Exp, Any]]:
-    """The reduced Gröbner basis (monic, minimal, tails reduced) of a Gröbner basis."""
-    key = ring.order.key
-    items = [(max(b, key=key), b) for b in basis if b]
-    minimal = []
-    for idx, (lm, b) in enumerate(items):
-        if any(divides(l2, lm) and (l2 != lm or j < idx) for j, (l2, _) in enumerate(items) if j != idx):
-            continue
-        minimal.append(b)
+    """The reduced Gröbner basis (monic, minimal, tails reduced) of a Gröbner basis, sorted by
+    increasing leading monomial."""
+    return _packed(ring, basis, lambda pk: [_unpack(pk, b) for b in _reduce_basis(basis, pk)])
+
+
+def _reduce_basis(basis: Sequence[dict[Exp, Any]], pk: Packing) -> list[dict[int, Any]]:
+    items = [(max(b), b) for b in (_pack(pk, b) for b in basis if b)]
+    minimal = [(lm, b) for idx, (lm, b) in enumerate(items)
+               if not any(pk.divides(l2, lm) and (l2 != lm or j < idx)
+                          for j, (l2, _) in enumerate(items) if j != idx)]
     out = []
-    for idx, b in enumerate(minimal):
-        others = _Reducer(ring, [m for j, m in enumerate(minimal) if j != idx])
-        lm = max(b, key=key)
-        tail = {e: c for e, c in b.items() if e != lm}
-        r = others.reduce(tail)
+    for idx, (lm, b) in enumerate(minimal):
+        others = _Reducer(pk, [m for j, (_, m) in enumerate(minimal) if j != idx])
+        r = others.reduce({e: c for e, c in b.items() if e != lm})
         r[lm] = b[lm]
-        out.append(_monic(r, key))
-    out.sort(key=lambda p: key(max(p, key=key)))
-    return out
+        out.append((lm, _monic(r, lm)))
+    out.sort(key=lambda t: t[0])
+    return [b for _, b in out]
 
 
 ENGINES: dict[str, Callable[[Sequence[Poly], PolyRing], list[dict[Exp, Any]]]] = {
@@ -238,11 +254,34 @@ def groebner(gens: Sequence[Poly], ring: PolyRing | None = None, engine: str = "
     gens = [g for g in gens if not g.is_zero()]
     if not gens:
         return []
-    run = ENGINES[engine]
+    key = (ring, engine, frozenset(gens))
+    out = _CACHE.get(key)
+    if out is None:
+        out = _compute(gens, ring, ENGINES[engine])
+        _CACHE[key] = out
+        if len(_CACHE) > _CACHE_SIZE:
+            _CACHE.popitem(last=False)
+    else:
+        _CACHE.move_to_end(key)
+    return list(out)
+
+
+def cached_groebner(gens: Sequence[Poly], ring: PolyRing, engine: str = "auto") -> list[Poly] | None:
+    """The basis :func:`groebner` would return, if it is known already; else ``None``."""
+    out = _CACHE.get((ring, engine, frozenset(g for g in gens if not g.is_zero())))
+    return None if out is None else list(out)
+
+
+_CACHE: OrderedDict[tuple, list[Poly]] = OrderedDict()
+"""Recent results by (ring, engine, set of generators): the algorithms built on :func:`groebner`
+(dimension, containment, decomposition) ask for the same bases many times."""
+_CACHE_SIZE = 256
+
+
+def _compute(gens: list[Poly], ring: PolyRing, run: Callable) -> list[Poly]:
     basis = run(gens, ring)
     if not getattr(run, "returns_reduced", False):
-        basis = reduce_basis(basis, ring)
-        return [Poly(ring, b) for b in basis]
+        return [Poly(ring, b) for b in reduce_basis(basis, ring)]
     out = []
     for b in basis:
         p = Poly(ring, b)
@@ -253,8 +292,13 @@ def groebner(gens: Sequence[Poly], ring: PolyRing | None = None, engine: str = "
 
 def normal_form(f: Poly, basis: Sequence[Poly], full: bool = True) -> Poly:
     """Remainder of ``f`` on division by ``basis`` (a Gröbner basis for a unique result)."""
-    red = _Reducer(f.ring, [b.terms for b in basis if not b.is_zero()])
-    return Poly(f.ring, red.reduce(f.terms, full))
+    if not f.ring.order.is_global:
+        raise OrderingError("normal forms need a global ordering; use the weak normal form for local orderings")
+    polys = [b.terms for b in basis if not b.is_zero()]
+
+    def run(pk: Packing) -> dict[Exp, Any]:
+        return _unpack(pk, _Reducer(pk, [_pack(pk, b) for b in polys]).reduce(_pack(pk, f.terms), full))
+    return Poly(f.ring, _packed(f.ring, polys + [f.terms], run))
 
 
 def contains(basis: Sequence[Poly], f: Poly) -> bool:

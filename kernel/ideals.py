@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import Callable, Sequence
 
 from .dimension import independent_sets, krull_dim
-from .groebner import groebner, normal_form
+from .groebner import cached_groebner, groebner, normal_form
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
@@ -284,7 +284,13 @@ def ideals_equal(a: Ideal, b: Ideal, ring: PolyRing | None = None) -> bool:
 def dimension(ideal: Ideal, ring: PolyRing | None = None) -> int:
     """The Krull dimension of ``K[x]/I`` (-1 for the unit ideal)."""
     ring = ring_of(ideal, ring=ring)
-    return krull_dim([p.lm() for p in std(ideal, ring)], ring.nvars)
+    basis = cached_groebner(ideal, ring)
+    if basis is None:
+        if not ring.order.is_graded:  # any ordering gives the dimension, a degree ordering fastest
+            ring = with_order(ring, MonomialOrder.simple("dp", ring.nvars))
+            ideal = move(ideal, ring)
+        basis = std(ideal, ring)
+    return krull_dim([p.lm() for p in basis], ring.nvars)
 
 
 def independent_set(basis: Sequence[Poly], nvars: int) -> list[int]:

@@ -19,6 +19,7 @@ must check :meth:`Packing.fits` and start again with a wider packing.
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import lru_cache
 from typing import Sequence
 
 from .order import Exp, MonomialOrder
@@ -26,10 +27,14 @@ from .order import Exp, MonomialOrder
 
 def nonnegative_matrix(order: MonomialOrder) -> list[list[int]]:
     """A nonnegative ``n x n`` integer matrix of full rank defining the same (global) ordering."""
-    n = order.nvars
+    return [list(r) for r in _nonnegative(tuple(map(tuple, order.matrix)), order.nvars)]
+
+
+@lru_cache(maxsize=256)
+def _nonnegative(matrix: tuple[tuple[int, ...], ...], n: int) -> tuple[tuple[int, ...], ...]:
     rows: list[list[int]] = []
     echelon: list[list[Fraction]] = []  # for the rank test
-    for r in order.matrix:
+    for r in matrix:
         if not _independent(echelon, r):
             continue
         r = list(r)
@@ -41,7 +46,7 @@ def nonnegative_matrix(order: MonomialOrder) -> list[list[int]]:
         rows.append(r)
         if len(rows) == n:
             break
-    return rows
+    return tuple(map(tuple, rows))
 
 
 def _independent(echelon: list[list[Fraction]], row: Sequence[int]) -> bool:

@@ -49,6 +49,10 @@ class Block:
         return [top] + tail
 
 
+_KEYS: dict[tuple, tuple[Callable[[Exp], tuple], Callable[[Exp], tuple]]] = {}
+"""The sort keys of the orderings built so far, by blocks and matrix."""
+
+
 class MonomialOrder:
     """A monomial ordering on ``nvars`` variables, built from blocks."""
 
@@ -59,10 +63,14 @@ class MonomialOrder:
         if covered != self.nvars:
             raise ValueError(f"the ordering covers {covered} variables, the ring has {self.nvars}")
         self.matrix = self._matrix()
-        self._check_nondegenerate()
-        self.key: Callable[[Exp], tuple] = self._compile()
-        # sorts monomials from the largest down (heaps)
-        self.neg_key: Callable[[Exp], tuple] = _linear_key([[-v for v in r] for r in self.matrix])
+        sig = (self.blocks, tuple(map(tuple, self.matrix)))
+        if sig not in _KEYS:  # checking and compiling cost more than many small Gröbner bases
+            self._check_nondegenerate()
+            # neg_key sorts monomials from the largest down (heaps)
+            _KEYS[sig] = (self._compile(), _linear_key([[-v for v in r] for r in self.matrix]))
+        self.key: Callable[[Exp], tuple]
+        self.neg_key: Callable[[Exp], tuple]
+        self.key, self.neg_key = _KEYS[sig]
         signs = []
         for j in range(self.nvars):
             col = [r[j] for r in self.matrix if r[j] != 0]

@@ -76,12 +76,13 @@ class PolyRing:
 class Poly:
     """An element of a :class:`PolyRing`; ``terms`` maps exponents to nonzero coefficients."""
 
-    __slots__ = ("ring", "terms", "_lm")
+    __slots__ = ("ring", "terms", "_lm", "_hash")
 
     def __init__(self, ring: PolyRing, terms: dict[Exp, Any]) -> None:
         self.ring = ring
-        self.terms = terms
+        self.terms = terms  # never changed after construction: the hash is kept
         self._lm: Exp | None = None
+        self._hash: int | None = None
 
     # structure
     def is_zero(self) -> bool:
@@ -235,7 +236,9 @@ class Poly:
         return NotImplemented
 
     def __hash__(self) -> int:
-        return hash(frozenset(self.terms.items()))
+        if self._hash is None:
+            self._hash = hash(frozenset(self.terms.items()))
+        return self._hash
 
     def __repr__(self) -> str:
         return f"Poly({self.to_str()})"

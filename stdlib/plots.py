@@ -1,11 +1,15 @@
-"""Pictures of configuration spaces and mechanisms (matplotlib, Agg backend, PNG/SVG files).
+"""Pictures of configuration spaces and mechanisms, as SVG (written directly) or PNG (matplotlib).
 
 Configuration spaces are drawn in angle coordinates ``theta_i = atan2(s_i, c_i)`` like the
-paper's Figures 2 and 4: a plane picture for two links, a 3-d picture of the first three angles
-otherwise.  Points of each motion mode are found numerically: random angles are projected onto
-the mode's variety by Gauss–Newton steps (minimum-norm, on the prime's generators with
-``c_i = cos theta_i``, ``s_i = sin theta_i``); only points whose residual is below 1e-9 are drawn.
-Each mode has its own colour; the singular configurations are marked."""
+paper's Figures 2 and 4: a plane picture of two angles, a 3-d picture of three (the first ones,
+or the links chosen).  Points of each motion mode are found numerically: random angles are
+projected onto the mode's variety by Gauss–Newton steps (minimum-norm, on the prime's
+generators with ``c_i = cos theta_i``, ``s_i = sin theta_i``); only points whose residual is below
+1e-9 are drawn.  Each mode has its own colour; the singular configurations are black crosses
+(exact for rational ones; algebraic ones are sampled like the modes).
+
+Each picture is built once as a :class:`~mech.stdlib.scene.Scene`; ``svg.py`` and ``png.py``
+render it."""
 from __future__ import annotations
 
 import math
@@ -14,79 +18,192 @@ from fractions import Fraction
 from typing import Any, Callable, Sequence
 
 from mech.dsl.errors import MechRuntimeError
-from mech.dsl.values import List
+from mech.dsl.values import IntVec, List
 from mech.kernel import Poly
-from mech.stdlib.analysis import require_numeric, run_analysis
+from mech.stdlib.analysis import Analysis, require_numeric, run_analysis
 from mech.stdlib.mechanism import Mechanism
 from mech.stdlib.registry import command
+from mech.stdlib.scene import FONT, Axes2D, Axes3D, Lines, Markers, Scene, Text, legend, nice_ticks, pi_ticks
 
-COLOURS = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink"]
-
-
-def _pyplot() -> Any:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
-
-
-def _numeric_poly(p: Poly) -> Callable[[Any], Any]:
-    """``p`` as a function of an array of points (one row per point)."""
-    terms = [(float(c.p) / float(c.q), e) for e, c in p.terms.items()]
-
-    def f(x: Any) -> Any:
-        import numpy as np
-        out = np.zeros(x.shape[0])
-        for c, e in terms:
-            t = np.full(x.shape[0], c)
-            for i, k in enumerate(e):
-                if k:
-                    t = t * x[:, i] ** k
-            out = out + t
-        return out
-    return f
+# matplotlib's tab10 colours
+COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+           "#bcbd22", "#17becf"]
+MAX_SAMPLES = 100_000
+TOLERANCE = 1e-9  # largest residual of a drawn point
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
-def sample_mode(prime: Sequence[Poly], nlinks: int, count: int = 3000, seed: int = 0) -> Any:
-    """Points (rows of configuration-variable values) of ``V(prime)``: random angles projected by
-    Gauss–Newton steps; only converged points are kept."""
+# ---------------------------------------------------------------- sampling
+def _rational(c: Any) -> float:
+    return float(Fraction(int(c.p), int(c.q)))
+
+
+def _compile(polys: Sequence[Poly], nvars: int) -> Callable[[Any], Any]:
+    """The polynomials as one numpy function: an (N, nvars) array of points to the (N, len(polys))
+    array of their values."""
+    def term(e: tuple, c: Any) -> str:
+        factors = [repr(_rational(c))] + [f"x{i}" if k == 1 else f"x{i}**{k}" for i, k in enumerate(e) if k]
+        return "*".join(factors)
+    exprs = ["zero + " + (" + ".join(term(e, c) for e, c in p.terms.items()) or "0.0") for p in polys]
+    source = ("def f(x):\n    zero = np.zeros(len(x))\n"
+              + "".join(f"    x{i} = x[:, {i}]\n" for i in range(nvars))
+              + f"    return np.stack([{', '.join(exprs)}], axis=1)\n")
     import numpy as np
-    ring = prime[0].ring
-    n = ring.nvars
-    gens = [_numeric_poly(g) for g in prime]
-    jac = [[_numeric_poly(g.diff(j)) for j in range(n)] for g in prime]
+    scope: dict[str, Any] = {"np": np}
+    exec(compile(source, "<polynomials>", "exec"), scope)
+    return scope["f"]
+
+
+def sample_mode(prime: Sequence[Poly], nlinks: int, count: int = 3000, seed: int = 0,
+                iterations: int = 40) -> Any:
+    """Points (rows of configuration-variable values) of ``V(prime)``: random angles (and prismatic
+    lengths in [-2, 2]) moved by minimum-norm Gauss–Newton steps in those parameters until the
+    residual of every generator is below 1e-12 or ``iterations`` steps are done; only the points
+    whose residual is below :data:`TOLERANCE` are returned."""
+    import numpy as np
+    n = prime[0].ring.nvars
+    gens = _compile(prime, n)
+    jac = _compile([g.diff(j) for g in prime for j in range(n)], n)
     rng = np.random.default_rng(seed)
-    # parameters: one angle per link, then the other (prismatic) variables
-    theta = rng.uniform(-math.pi, math.pi, (count, nlinks))
-    rest = rng.uniform(-2, 2, (count, n - 2 * nlinks))
+    params = np.column_stack([rng.uniform(-math.pi, math.pi, (count, nlinks)),
+                              rng.uniform(-2, 2, (count, n - 2 * nlinks))])
 
-    def point(th: Any, r: Any) -> Any:
-        cols = []
-        for i in range(nlinks):
-            cols += [np.cos(th[:, i]), np.sin(th[:, i])]
-        return np.column_stack(cols + [r[:, j] for j in range(r.shape[1])])
+    def point(p: Any) -> Any:
+        x = np.empty((len(p), n))
+        x[:, 0:2 * nlinks:2], x[:, 1:2 * nlinks:2] = np.cos(p[:, :nlinks]), np.sin(p[:, :nlinks])
+        x[:, 2 * nlinks:] = p[:, nlinks:]
+        return x
 
-    for _ in range(40):
-        x = point(theta, rest)
-        res = np.column_stack([g(x) for g in gens])
-        dx = np.stack([np.column_stack([d(x) for d in row]) for row in jac], axis=1)  # (N, m, n)
-        # chain rule to the parameters
-        cols = []
-        for i in range(nlinks):
-            cols.append(-dx[:, :, 2 * i] * x[:, None, 2 * i + 1] + dx[:, :, 2 * i + 1] * x[:, None, 2 * i])
-        cols += [dx[:, :, 2 * nlinks + j] for j in range(n - 2 * nlinks)]
-        jp = np.stack(cols, axis=2)
-        step = np.einsum("nij,nj->ni", np.linalg.pinv(jp, rcond=1e-10), res)
-        theta = theta - step[:, :nlinks]
-        rest = rest - step[:, nlinks:]
-    x = point(theta, rest)
-    res = np.abs(np.column_stack([g(x) for g in gens])).max(axis=1)
-    return x[res < 1e-9]
+    active = np.arange(count)
+    with np.errstate(all="ignore"):  # diverging points overflow
+        for _ in range(iterations):
+            x = point(params[active])
+            res = gens(x)
+            worst = np.abs(res).max(axis=1)
+            moving = np.isfinite(worst) & (worst >= 1e-12)  # diverged points stop too
+            active, x, res = active[moving], x[moving], res[moving]
+            if not len(active):
+                break
+            dx = jac(x).reshape(len(x), len(prime), n)
+            # chain rule: d/dtheta_i = -s_i d/dc_i + c_i d/ds_i
+            jp = np.concatenate([dx[:, :, 1:2 * nlinks:2] * x[:, None, 0:2 * nlinks:2]
+                                 - dx[:, :, 0:2 * nlinks:2] * x[:, None, 1:2 * nlinks:2],
+                                 dx[:, :, 2 * nlinks:]], axis=2)
+            # (J^T J + eps I) step = J^T res: the minimum-norm step as eps -> 0
+            jt = jp.transpose(0, 2, 1)
+            normal = jt @ jp
+            eps = 1e-12 * (1 + np.trace(normal, axis1=1, axis2=2))
+            normal += eps[:, None, None] * np.eye(normal.shape[1])
+            step = np.linalg.solve(normal, jt @ res[:, :, None])[:, :, 0]
+            params[active] -= step
+        x = point(params)
+        return x[np.abs(gens(x)).max(axis=1) < TOLERANCE]
 
 
 def _angles(x: Any, nlinks: int) -> Any:
     import numpy as np
-    return np.column_stack([np.arctan2(x[:, 2 * i + 1], x[:, 2 * i]) for i in range(nlinks)])
+    return np.arctan2(x[:, 1:2 * nlinks:2], x[:, 0:2 * nlinks:2])
+
+
+# ---------------------------------------------------------------- pictures
+def _title(scene: Scene, text: str, centre: float) -> None:
+    size = min(FONT, 2 * min(centre, scene.width - centre) / (0.62 * max(len(text), 1)))
+    scene.add(Text(centre, 22, text, size, cls="title"))
+
+
+def _thin(xy: Any) -> list:
+    """The pixel positions ``xy`` (an (N, 2) array) keeping one per half pixel."""
+    import numpy as np
+    _, first = np.unique(np.round(xy * 2), axis=0, return_index=True)
+    return xy[np.sort(first)].tolist()
+
+
+def configuration_scene(m: Mechanism, a: Analysis, links: Sequence[int], count: int) -> Scene:
+    """The configuration space of ``m`` (analysed in ``a``) in the angles of ``links`` (0-based)."""
+    import numpy as np
+    nlinks = len(m.links)
+    scene = Scene(800, 540)
+    _title(scene, str(m), 305)
+    labels = ["θ" + str(k + 1).translate(_SUB) for k in links]
+    cube = [(-math.pi, math.pi)] * len(links)
+    if len(links) == 2:
+        axes = Axes2D((80, 45, 530, 480), cube[0], cube[1])
+        axes.frame(scene, pi_ticks(), pi_ticks(), labels[0], labels[1])
+
+        def place(th: Any) -> Any:
+            return np.column_stack(axes.map(th[:, 0], th[:, 1]))
+    else:
+        box = Axes3D(cube, (310, 285), 230)
+        box.frame(scene, [pi_ticks()] * 3, labels)
+
+        def place(th: Any) -> Any:
+            return np.column_stack(box.project((th[:, 0], th[:, 1], th[:, 2])))
+    entries = []
+    for i, mode in enumerate(a.modes, 1):
+        if not mode.real:
+            continue
+        th = _angles(sample_mode(mode.prime, nlinks, count, seed=i), nlinks)[:, links]
+        dots = scene.add(Markers(_thin(place(th)), "dot", 2.2, COLOURS[(i - 1) % len(COLOURS)], cls=f"mode{i}"))
+        entries.append((dots, f"mode {i} (dim {mode.dim})"))
+    points, sets = [], {}
+    for s in a.singular:
+        if s.point is not None:
+            points.append([_rational(c) for c in s.point])
+        elif s.real and s.dim == 0:
+            points += np.unique(np.round(sample_mode(s.prime, nlinks, 200, seed=1), 6), axis=0).tolist()
+        elif s.real:
+            sets.setdefault(s.dim, []).append(sample_mode(s.prime, nlinks, count, seed=1))
+    for d, found in sorted(sets.items()):
+        th = _angles(np.concatenate(found), nlinks)[:, links]
+        dots = scene.add(Markers(_thin(place(th)), "dot", 3, "black", cls=f"singular-dim{d}"))
+        entries.append((dots, f"singular configurations (dim {d})"))
+    if points:
+        th = _angles(np.array(points), nlinks)[:, links]
+        crosses = scene.add(Markers(place(th).tolist(), "x", 10, "black", width=2, cls="singular"))
+        entries.append((crosses, "singular configurations"))
+    if entries:
+        legend(scene, 600, 50, entries)
+    return scene
+
+
+def _clip(p: tuple[float, float], d: tuple[float, float], box: tuple[tuple[float, float], ...]
+          ) -> list[tuple[float, float]]:
+    """The segment of the line ``p + t d`` inside the rectangle ``box`` = (x range, y range)."""
+    lo, hi = -math.inf, math.inf
+    for v, dv, (a, b) in zip(p, d, box):
+        if dv:
+            t1, t2 = (a - v) / dv, (b - v) / dv
+            lo, hi = max(lo, min(t1, t2)), min(hi, max(t1, t2))
+    return [(p[0] + t * d[0], p[1] + t * d[1]) for t in (lo, hi)]
+
+
+def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str) -> Scene:
+    """The mechanism ``m`` with its joint points at ``xy``."""
+    scene = Scene(520, 440)
+    _title(scene, title, 285)
+    xs, ys = [x for x, _ in xy.values()], [y for _, y in xy.values()]
+    pad = 0.25 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
+    axes = Axes2D((70, 40, 500, 390), (min(xs) - pad, max(xs) + pad), (min(ys) - pad, max(ys) + pad), equal=True)
+    axes.frame(scene, nice_ticks(*axes.xrange), nice_ticks(*axes.yrange), "x", "y")
+    for s in m.sliders:
+        a, b, _ = (float(Fraction(t)) for t in s.line)
+        line = _clip(xy[s.point], (b, -a) if (a, b) != (0, 0) else (1.0, 0.0), (axes.xrange, axes.yrange))
+        scene.add(Lines([[axes.map(*p) for p in line]], "grey", dash=True, cls="slider-line"))
+    links = []
+    for link in m.links:
+        pts = [axes.map(*xy[p]) for p in link.points]
+        links.append(pts + pts[:1] if len(pts) > 2 else pts)
+    scene.add(Lines(links, "#1f77b4", 4, round=True, cls="links"))
+    scene.add(Markers([axes.map(*xy[s.point]) for s in m.sliders], "square", 16, "#d62728", width=1.5,
+                      cls="sliders"))
+    scene.add(Markers([axes.map(*xy[p]) for p in xy if p not in m.fixed], "circle", 9, "black", "white",
+                      cls="joints"))
+    scene.add(Markers([axes.map(*xy[p]) for p in xy if p in m.fixed], "triangle", 14, "black", "black",
+                      cls="fixed"))
+    for p, (x, y) in xy.items():
+        u, v = axes.map(x, y)
+        scene.add(Text(u + 8, v - 8, p, anchor="start", cls="point"))
+    return scene
 
 
 def _check_path(path: str) -> str:
@@ -98,51 +215,70 @@ def _check_path(path: str) -> str:
     return path
 
 
+def _write(scene: Scene, path: str, title: str) -> None:
+    try:
+        if path.lower().endswith(".svg"):
+            from mech.stdlib.svg import write_svg
+            write_svg(scene, path, title)
+        else:
+            from mech.stdlib.png import write_png
+            write_png(scene, path)
+    except OSError as e:
+        raise MechRuntimeError(f"'{path}': cannot write the file ({e.strerror or e})") from None
+
+
+# ---------------------------------------------------------------- commands
+def _plot(m: Mechanism, path: str, links: Sequence[Any] | None, count: int) -> None:
+    _check_path(path)
+    if not 0 < count <= MAX_SAMPLES:
+        raise MechRuntimeError(f"plotConfigurations: the number of samples must be in 1..{MAX_SAMPLES}, not {count}")
+    nlinks = len(m.links)
+    if links is None:
+        if nlinks < 2:
+            raise MechRuntimeError("plotConfigurations needs at least two links")
+        links = list(range(1, min(nlinks, 3) + 1))
+    if len(links) not in (2, 3):
+        raise MechRuntimeError(f"plotConfigurations: give 2 or 3 link numbers, not {len(links)}")
+    for k in links:
+        if type(k) is not int:
+            raise MechRuntimeError(f"plotConfigurations: the links are given by their numbers (int), not '{k}'")
+        if not 1 <= k <= nlinks:
+            raise MechRuntimeError(f"plotConfigurations: there is no link {k} (the links are 1..{nlinks})")
+    if len(set(links)) < len(links):
+        raise MechRuntimeError(f"plotConfigurations: a link is repeated in {', '.join(map(str, links))}")
+    a = run_analysis(m)
+    require_numeric(a, "plotConfigurations")
+    _write(configuration_scene(m, a, [k - 1 for k in links], count), path, f"configuration space of {m}")
+
+
 @command("plotConfigurations", lib="mechanism.lib")
 def plot_configurations(m: Mechanism, path: str, count: int = 3000) -> None:
-    """plotConfigurations(m, "file.png"[, samples]): the configuration space in angle coordinates,
-    one colour per motion mode, singular configurations marked.
+    """plotConfigurations(m, "file.svg"[, links][, samples]): the configuration space in angle
+    coordinates theta_i, one colour per motion mode, singular configurations as black crosses.
+
+    The picture is plane for two links and 3-d for three or more: the angles of the first three
+    links, or of the 2 or 3 links numbered in the list (or intvec) `links`.  Each mode is sampled
+    at `samples` (default 3000) random starting points moved onto it numerically.  The file is
+    SVG or PNG by its name's ending.
 
     Example:
       LIB "mechanism.lib";
       mechanism m = "fix O; bar O A 1; bar A B 1; slider B";
+      plotConfigurations(m, "modes.svg", list(1, 3));
+      → <stdin>:3:1: error: plotConfigurations: there is no link 3 (the links are 1..2)
+      → plotConfigurations(m, "modes.svg", list(1, 3));
+      → ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
       plotConfigurations(m, "modes.pdf");
-      → <stdin>:3:1: error: 'modes.pdf': give a file name ending in .png or .svg
+      → <stdin>:1:1: error: 'modes.pdf': give a file name ending in .png or .svg
       → plotConfigurations(m, "modes.pdf");
       → ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
     """
-    import numpy as np
-    _check_path(path)
-    a = run_analysis(m)
-    require_numeric(a, "plotConfigurations")
-    nlinks = len(m.links)
-    if nlinks < 2:
-        raise MechRuntimeError("plotConfigurations needs at least two links")
-    plt = _pyplot()
-    fig = plt.figure(figsize=(6, 5))
-    ax = fig.add_subplot(111, projection="3d" if nlinks >= 3 else None)
-    dims = min(nlinks, 3)
-    for i, mode in enumerate(a.modes, 1):
-        if not mode.real:
-            continue
-        th = _angles(sample_mode(mode.prime, nlinks, count, seed=i), nlinks)
-        ax.scatter(*(th[:, k] for k in range(dims)), s=2, color=COLOURS[(i - 1) % len(COLOURS)],
-                   label=f"mode {i} (dim {mode.dim})")
-    sing = [s.point for s in a.singular if s.point is not None]
-    if sing:
-        pts = np.array([[float(Fraction(int(c.p), int(c.q))) for c in p] for p in sing])
-        th = _angles(pts, nlinks)
-        ax.scatter(*(th[:, k] for k in range(dims)), s=60, color="black", marker="x",
-                   label="singular configurations", depthshade=False) if dims == 3 else \
-            ax.scatter(th[:, 0], th[:, 1], s=60, color="black", marker="x", label="singular configurations")
-    ax.set_xlabel(r"$\theta_1$")
-    ax.set_ylabel(r"$\theta_2$")
-    if dims == 3:
-        ax.set_zlabel(r"$\theta_3$")
-    ax.legend(loc="upper left", fontsize=7)
-    ax.set_title(str(m), fontsize=7)
-    fig.savefig(path)
-    plt.close(fig)
+    _plot(m, path, None, count)
+
+
+@command("plotConfigurations", lib="mechanism.lib")
+def plot_configurations_of(m: Mechanism, path: str, links: List | IntVec, count: int = 3000) -> None:
+    _plot(m, path, list(links.items if isinstance(links, List) else links.values), count)
 
 
 def _value(v: Any) -> float:
@@ -154,6 +290,10 @@ def _value(v: Any) -> float:
         except ValueError:
             pass
     raise MechRuntimeError(f"drawMechanism: '{v}' is not a number (integers or strings such as \"1/2\", \"0.25\")")
+
+
+def _evaluate(p: Poly, values: Sequence[float]) -> float:
+    return sum(_rational(c) * math.prod(v ** k for v, k in zip(values, e)) for e, c in p.terms.items())
 
 
 @command("drawMechanism", lib="mechanism.lib")
@@ -178,37 +318,10 @@ def draw_mechanism(m: Mechanism, config: List, path: str) -> None:
         raise MechRuntimeError(f"drawMechanism: {len(names)} values expected ({','.join(names)}), "
                                f"{len(values)} given")
     R, gens = m.constraints()
-    bad = max(abs(float(_evaluate(g, values))) for g in gens)
+    bad = max(abs(_evaluate(g, values)) for g in gens)
     if bad > 1e-6:
         raise MechRuntimeError(f"drawMechanism: the values are not a configuration (a constraint is {bad:.3g})")
     pos, _ = m.positions(R)
-    xy = {p: (float(_evaluate(x, values)), float(_evaluate(y, values))) for p, (x, y) in pos.items()}
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(5, 4))
-    for link in m.links:
-        pts = [xy[p] for p in link.points]
-        if len(pts) > 2:
-            pts = pts + pts[:1]
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "-", lw=3, color="tab:blue", solid_capstyle="round")
-    for s in m.sliders:
-        a, b, c = (float(Fraction(t)) if not isinstance(t, str) else 0.0 for t in s.line)
-        px, py = xy[s.point]
-        dx, dy = (b, -a) if (a, b) != (0, 0) else (1, 0)
-        span = max(1.0, max(abs(u) + abs(v) for u, v in xy.values()))
-        ax.plot([px - span * dx, px + span * dx], [py - span * dy, py + span * dy], "--", color="grey", lw=1)
-        ax.plot([px], [py], "s", ms=12, mfc="none", color="tab:red")
-    for p, (x, y) in xy.items():
-        fixed = p in m.fixed
-        ax.plot([x], [y], "^" if fixed else "o", ms=10 if fixed else 6,
-                color="black" if fixed else "white", mec="black")
-        ax.annotate(p, (x, y), textcoords="offset points", xytext=(5, 5))
-    ax.set_aspect("equal")
-    ax.margins(0.2)
-    ax.set_title(", ".join(f"{n}={v:.3g}" for n, v in zip(names, values)), fontsize=7)
-    fig.savefig(path)
-    plt.close(fig)
-
-
-def _evaluate(p: Poly, values: Sequence[float]) -> float:
-    return sum(float(Fraction(int(c.p), int(c.q))) * math.prod(v ** k for v, k in zip(values, e))
-               for e, c in p.terms.items())
+    xy = {p: (_evaluate(x, values), _evaluate(y, values)) for p, (x, y) in pos.items()}
+    title = ", ".join(f"{n}={v:.3g}" for n, v in zip(names, values))
+    _write(mechanism_scene(m, xy, title), path, f"{m} at {title}")

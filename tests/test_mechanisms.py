@@ -115,7 +115,7 @@ def test_paper_examples_run(name, tmp_path):
                        cwd=tmp_path, text=True, capture_output=True, timeout=300)
     assert r.returncode == 0, r.stderr
     assert "singularities need one of" in r.stdout and "tangent cone" in r.stdout
-    assert {p.suffix for p in tmp_path.iterdir()} == {".png", ".svg"}
+    assert {p.suffix for p in tmp_path.iterdir()} == {".svg"}
 
 
 # ---------------------------------------------------------------- other mechanisms vs Singular
@@ -337,7 +337,7 @@ def test_docs_examples(tmp_path, monkeypatch):
         out = s.execute(code)
         if expected is not None:
             assert out == expected
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["fourbar_modes.png", "q1.svg"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fourbar_13.png", "fourbar_modes.svg", "q1.svg"]
 
 
 def test_readme_example():
