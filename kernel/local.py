@@ -4,18 +4,23 @@ multiplicity, Milnor and Tjurina numbers, local components, classification of po
 Everything "local" is computed in the local ring ``K[x]_<x>`` at the origin with a standard
 basis for ``ds`` (:mod:`.mora`), whatever the ordering of the input's ring; results are
 polynomials of the input's ring.  The point-based functions move the point to the origin
-(``x_i -> x_i + p_i``) and answer in those centred coordinates, as the paper does.
+(``x_i -> x_i + p_i``) and answer in those centred coordinates, as the paper does; points with
+algebraic coordinates (a zero-dimensional prime) are handled over ``Q[t]/m(t)`` for a primitive
+element ``t`` (:func:`primitive_element`, :func:`classify_algebraic_point`).
 """
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass, field
+from fractions import Fraction
 from typing import Any, Callable, Sequence
 
 from .coeffs import PrimeField, RationalField
 from .dimension import krull_dim
-from .factor import normalize
+from .factor import factorize, normalize
+from .groebner import groebner, normal_form
 from .hilbert import mult, vdim
-from .ideals import intersect, move, with_order
+from .ideals import dimension, independent_set, intersect, is_subset, move, std, with_order
 from .mora import standard_basis, weak_normal_form
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing
@@ -238,18 +243,240 @@ class PointInfo:
     components: list[list[Poly]] = field(default_factory=list)
 
 
-def classify_point(gens: Sequence[Poly], point: Sequence[Any]) -> PointInfo:
+def classify_point(gens: Sequence[Poly], point: Sequence[Any],
+                   primes: Sequence[Sequence[Poly]] | None = None) -> PointInfo:
     """Classify a point of ``V(gens)``: "components meet" when several irreducible
     components pass through it (Theorem 3), otherwise "regular" when the tangent space of
     the one component through it has its dimension (Definition 3, the Jacobian criterion
-    for its prime) and "singular" when it is larger.  ValueError when the point is not on
-    the variety."""
+    for its prime) and "singular" when it is larger.  ``primes``: the minimal primes of
+    the ideal when they are known (a decomposition was made): those through the point are
+    its local components, no decomposition is made again.  ValueError when the point is not
+    on the variety."""
     centred = _centred(gens, point)
     ring = centred[0].ring
-    comps = min_ass_local(centred)
+    if primes is None:
+        comps = min_ass_local(centred)
+    else:
+        target, p = _global(ring), _point(ring, point)
+        comps = [move(std(move(shift_to_origin(list(P), point), target), target), ring)
+                 for P in primes if all(g.evaluate(p) == 0 for g in P)]
     target = _global(ring)
     radical = intersect(*(move(p, target) for p in comps), ring=target)
     t = ring.nvars - jacobian_rank(radical, [0] * ring.nvars)
     d = local_dim(centred)
-    kind = "components meet" if len(comps) > 1 else "regular" if t == d else "singular"
-    return PointInfo(kind, tuple(point), d, t, local_mult(centred), tangent_cone(centred), comps)
+    return PointInfo(_kind(len(comps), t, d), tuple(point), d, t, local_mult(centred),
+                     tangent_cone(centred), comps)
+
+
+def _kind(components: int, tangent_dim: int, dim: int) -> str:
+    """Theorem 3 and Definition 3: several components through the point, else regular iff
+    the tangent space has the dimension of the one component."""
+    return "components meet" if components > 1 else "regular" if tangent_dim == dim else "singular"
+
+
+# --- points with algebraic coordinates --------------------------------------------------
+# A zero-dimensional prime P of Q[x] that is not a rational point is a Galois orbit of conjugate
+# points over K = Q[t]/m(t).  A primitive element t (a linear form separating the points) gives
+# P + (t - form) the shape x_i - phi_i(t), m(t) (the shape lemma), and the analysis at all the
+# conjugate points at once is the analysis over K at the origin of J(x + phi(t)) + (m) in
+# Q[x, t]: every prime of Q[x, t] containing the irreducible m is a prime of K[x].
+
+@dataclass
+class AlgebraicPoint:
+    """The conjugate points of a zero-dimensional prime: ``t = form`` with minimal polynomial
+    ``minpoly(t)`` and coordinates ``x_i = coords[i](t)``, polynomials of ``ring`` (the input's
+    variables then ``t``, ordered ``(dp(n), dp(1))``: Gröbner bases there are bases over K)."""
+
+    ring: PolyRing
+    form: Poly
+    minpoly: Poly
+    coords: list[Poly]
+
+    @property
+    def degree(self) -> int:
+        """The number of conjugate points."""
+        return self.minpoly.total_degree()
+
+
+def _forms(ring: PolyRing, tries: int = 40) -> list[Poly]:
+    """Candidate primitive elements: the variables (last first), then small integer forms."""
+    rnd = random.Random(7)
+    gens = ring.gens()
+    out = gens[::-1]
+    for _ in range(tries):
+        out.append(sum((ring.const(rnd.randint(-3, 3)) * x for x in gens), ring.zero()))
+    return [f for f in out if not f.is_constant()]
+
+
+def primitive_element(prime: Sequence[Poly], ring: PolyRing | None = None,
+                      name: str = "t") -> AlgebraicPoint:
+    """A primitive element of the zero-dimensional prime (a variable if one separates the
+    points, else a small integer linear form) and the shape basis ``x_i - phi_i(t), m(t)``.
+    ValueError unless the prime is zero-dimensional."""
+    ring = _ring_of(prime, ring)
+    if dimension(prime, ring) != 0:
+        raise ValueError("a primitive element needs a zero-dimensional prime")
+    n = ring.nvars
+    while name in ring.names:
+        name += "_"
+    big = PolyRing(ring.field, list(ring.names) + [name],
+                   MonomialOrder([Block("dp", n), Block("dp", 1)]))
+    xs, t = big.gens()[:n], big.gens()[n]
+    lifted = [g.compose(xs, big) for g in prime]
+    for form in _forms(ring):
+        lform = form.compose(xs, big)
+        basis = groebner(lifted + [t - lform], big)
+        lead = {g.lm(): g for g in basis}
+        if len(basis) != n + 1 or any(x.lm() not in lead for x in xs):
+            continue
+        coords = [x - lead[x.lm()] for x in xs]
+        if all(_in_t(g, n) for g in [basis[0]] + coords):
+            return AlgebraicPoint(big, lform, basis[0], coords)
+    raise ValueError("no primitive element found")
+
+
+def _in_t(p: Poly, n: int) -> bool:
+    """Whether ``p`` involves only the variables after the first ``n``."""
+    return all(not any(e[:n]) for e in p.terms)
+
+
+def _moved(gens: Sequence[Poly], point: AlgebraicPoint) -> list[Poly]:
+    """``gens(x + phi(t))`` reduced modulo ``m(t)``, and ``m(t)``, in ``point.ring``."""
+    ring, m = point.ring, point.minpoly
+    n = ring.nvars - 1
+    images = [x + c for x, c in zip(ring.gens()[:n], point.coords)]
+    return [normal_form(g.compose(images, ring), [m]) for g in gens] + [m]
+
+
+def centre_at(gens: Sequence[Poly], point: AlgebraicPoint) -> list[Poly]:
+    """``gens(x + phi(t))`` reduced modulo ``m(t)``, and ``m(t)``: the conjugate points moved
+    to the origin, in ``point.ring``.  ValueError unless the points are on the variety."""
+    centred = _moved(gens, point)
+    n = point.ring.nvars - 1
+    at_zero = [point.ring.zero()] * n + point.ring.gens()[n:]
+    if any(not g.compose(at_zero).is_zero() for g in centred[:-1]):
+        raise ValueError("the points are not on the variety")
+    return centred
+
+
+def _lowest_in(p: Poly, n: int) -> Poly:
+    """The part of least degree in the first ``n`` variables."""
+    d = min(sum(e[:n]) for e in p.terms)
+    return Poly(p.ring, {e: c for e, c in p.terms.items() if sum(e[:n]) == d})
+
+
+def tangent_cone_over(centred: Sequence[Poly], point: AlgebraicPoint) -> list[Poly]:
+    """The tangent cone at the origin over ``K = Q[t]/m(t)`` of an ideal of ``point.ring``
+    containing ``m(t)``: the lowest forms in ``x`` of a standard basis for ``(ds(n), dp(1))``
+    (local in ``x``, global in ``t``: the units are the elements with a non-zero rational
+    constant term), which generate the ideal of lowest forms; returned as the reduced
+    Gröbner basis in ``point.ring`` (``m(t)`` first, then the basis over K)."""
+    ring = point.ring
+    n = ring.nvars - 1
+    mixed = with_order(ring, MonomialOrder([Block("ds", n), Block("dp", 1)]))
+    basis = standard_basis(move(centred, mixed), mixed)
+    return groebner([_lowest_in(g, n) for g in move(basis, ring)] + [point.minpoly], ring)
+
+
+def _tangent_dim(gens: Sequence[Poly], at: Sequence[Poly], ring: PolyRing, m: Poly) -> int:
+    """The dimension over ``Q[t]/m(t)`` of the Zariski tangent space of ``V(gens)`` (gens of
+    ``ring = Q[x, t]``) at ``x = at(t)``: the kernel of the Jacobian there, as a linear ideal."""
+    n = ring.nvars - 1
+    images = list(at) + ring.gens()[n:]
+    linear = [sum((normal_form(g.diff(i).compose(images), [m]) * x
+                   for i, x in enumerate(ring.gens()[:n])), ring.zero()) for g in gens]
+    return dimension(linear + [m], ring)
+
+
+def stays_prime(prime: Sequence[Poly], point: AlgebraicPoint, tries: int = 6) -> bool:
+    """A sufficient test that a prime of ``Q[x]`` of positive dimension stays prime over
+    ``K = Q[t]/m(t)``: a zero-dimensional slice has a prime ``Z`` of smooth points of
+    ``V(prime)`` with ``Z`` prime over K.  Then ``Gal(Qbar/K)`` moves the points of ``Z``
+    transitively; each lies on exactly one geometric component (it is smooth) and every
+    geometric component holds one (``Gal(Qbar/Q)`` permutes them transitively, ``prime`` is
+    prime over Q), so ``Gal(Qbar/K)`` permutes the components transitively."""
+    ring = _ring_of(prime, None)
+    n = ring.nvars
+    basis = std(prime, ring)
+    d = dimension(basis, ring)
+    if d <= 0:
+        return False
+    free = independent_set(basis, n)
+    rnd = random.Random(3)
+
+    def lift(polys: Sequence[Poly], target: PolyRing) -> list[Poly]:
+        return [g.compose(target.gens()[:n], target) for g in polys]
+    for _ in range(tries):
+        sliced = basis + [ring.gens()[i] - ring.const(Fraction(rnd.randint(-9, 9), rnd.randint(1, 9)))
+                          for i in free]
+        if dimension(sliced, ring) != 0:
+            continue
+        for Z in min_ass_gtz(sliced, ring):
+            z = primitive_element(Z, ring)
+            if (_tangent_dim(lift(basis, z.ring), z.coords, z.ring, z.minpoly) == d
+                    and _irreducible_over(point.minpoly, z.minpoly)):
+                return True
+    return False
+
+
+def _irreducible_over(m: Poly, mu: Poly) -> bool:
+    """Whether ``m`` stays irreducible over ``Q[s]/mu(s)`` (both irreducible, univariate in
+    their last variable), i.e. ``Q[s, t]/(mu(s), m(t))`` is a field: for ``w = s + k t``
+    of full degree ``deg mu * deg m`` (a primitive element) the algebra is ``Q[w]/r(w)``,
+    ``r`` its minimal polynomial; a field iff ``r`` is irreducible."""
+    ring = PolyRing(m.ring.field, ["s", "t", "w"], MonomialOrder([Block("dp", 2), Block("dp", 1)]))
+    s, t, w = ring.gens()
+
+    def univariate(p: Poly, x: Poly) -> Poly:
+        return sum((x ** e[-1] * ring.const(c) for e, c in p.terms.items()), ring.zero())
+    full = m.total_degree() * mu.total_degree()
+    for k in range(1, full * full + 2):  # each pair of points rules out at most one k
+        r = groebner([univariate(mu, s), univariate(m, t), w - s - t * ring.const(k)], ring)[0]
+        if r.total_degree() == full:
+            _, factors = factorize(r)
+            return len(factors) == 1
+    raise ValueError("no primitive element found")
+
+
+def local_components_over(centred: Sequence[Poly], point: AlgebraicPoint,
+                          primes: Sequence[Sequence[Poly]] | None = None) -> list[list[Poly]]:
+    """The minimal primes of ``centred`` (an ideal of ``point.ring`` containing ``m(t)``)
+    through the origin over K (contained in ``(x, m(t))``): the local components at the
+    point.  With ``primes``, the minimal primes over Q of the uncentred ideal: each one
+    through the point that :func:`stays_prime` over K gives one component directly, the
+    others are decomposed (minimal primes over K are slow: linear algebra over K(u))."""
+    ring = point.ring
+    n = ring.nvars - 1
+    origin = ring.gens()[:n] + [point.minpoly]
+    if primes is None:
+        return [p for p in min_ass_gtz(centred, ring) if is_subset(p, origin, ring)]
+    comps = []
+    for P in primes:
+        moved = _moved(P, point)
+        if not is_subset(moved, origin, ring):
+            continue
+        if stays_prime(P, point):
+            comps.append(groebner(moved, ring))
+        else:
+            comps += [p for p in min_ass_gtz(moved, ring) if is_subset(p, origin, ring)]
+    return comps
+
+
+def classify_algebraic_point(gens: Sequence[Poly], point: AlgebraicPoint,
+                             primes: Sequence[Sequence[Poly]] | None = None) -> PointInfo:
+    """:func:`classify_point` at the conjugate points (all alike: Galois conjugate), over K:
+    components, cone and tangent space in coordinates centred at the point, in ``point.ring``;
+    ``point`` of the result is ``coords``.  ``primes``: the minimal primes of ``gens`` over Q,
+    if known (see :func:`local_components_over`)."""
+    ring = point.ring
+    n = ring.nvars - 1
+    centred = centre_at(gens, point)
+    comps = local_components_over(centred, point, primes)
+    if not comps:
+        raise ValueError("no component through the points: primes must be the ideal's minimal primes")
+    radical = intersect(*comps, ring=ring) if len(comps) > 1 else comps[0]
+    t = _tangent_dim(radical, [ring.zero()] * n, ring, point.minpoly)
+    d = max(dimension(c, ring) for c in comps)
+    cone = tangent_cone_over(centred, point)
+    lms = [g.lm()[:n] for g in cone if not _in_t(g, n)]
+    return PointInfo(_kind(len(comps), t, d), tuple(point.coords), d, t, mult(lms, n), cone, comps)

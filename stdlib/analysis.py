@@ -11,16 +11,17 @@
 * with symbolic lengths, the conditions on the lengths: for each minimal prime ``P`` of the
   Fitting ideal, ``(J + P) ∩ Q[lengths]`` saturated by the product of the lengths (so
   components that need a vanishing length drop out), factorized;
-* with numeric lengths, the singular configurations and at each rational one the tangent
-  cone, the local components and the type (Theorem 3), and whether a regular motion can pass
-  from one local component to another (Remarks 2, 3: only if their tangent cones share a line).
+* with numeric lengths, the singular configurations and at each one that is a point (rational,
+  or a Galois orbit of algebraic points, over ``Q[t]/m(t)`` for a primitive element ``t``) the
+  tangent cone, the local components and the type (Theorem 3), and whether a regular motion can
+  pass from one local component to another (Remarks 2, 3: only if their tangent cones share a line).
 """
 from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
 from mech.kernel.factor import factorize
@@ -28,7 +29,8 @@ from mech.kernel.groebner import normal_form
 from mech.kernel.hilbert import vdim
 from mech.kernel.ideals import (dimension, eliminate, ideals_equal, independent_set, is_subset,
                                 move, radical, saturate_poly, std)
-from mech.kernel.local import classify_point, tangent_cone, tangent_cone_at
+from mech.kernel.local import (AlgebraicPoint, centre_at, classify_algebraic_point, classify_point,
+                               primitive_element, tangent_cone, tangent_cone_at, tangent_cone_over)
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, primdec_gtz
 from mech.stdlib.mechanism import Mechanism, MechanismError
@@ -155,6 +157,9 @@ class SingularPoint:
     local_components: list[list[Poly]] = field(default_factory=list)
     modes: list[int] = field(default_factory=list)  # indices (1-based) of the modes through it
     transition: str = ""
+    # a Galois orbit of conjugate points: the primitive element t; the cone and the components are
+    # then ideals of algebraic.ring = Q[configuration, t] containing the minimal polynomial of t
+    algebraic: AlgebraicPoint | None = None
 
 
 @dataclass
@@ -196,15 +201,19 @@ def fitting_ideal(gens: list[Poly], nvars: int, size: int) -> list[Poly]:
     return [p for p in minors(_jacobian(gens, nvars), size) if not p.is_zero()]
 
 
-def is_radical(J: list[Poly], R: PolyRing) -> bool:
+def is_radical(J: list[Poly], R: PolyRing, nconfig: int | None = None) -> bool:
     """Whether ``J`` is radical.  Cheap sufficient test first: a complete intersection (as many
     generators as its codimension) is unmixed and Cohen–Macaulay, so it is radical when it is
     generically reduced, i.e. when its Jacobian singular locus ``J + I_c(dJ)`` has smaller
-    dimension (Serre's criterion); otherwise ``√J`` is computed and compared."""
+    dimension (Serre's criterion); otherwise ``√J`` is computed and compared.  The minors of the
+    derivatives by the first ``nconfig`` variables alone (fewer, and the analysis needs them
+    anyway) generate a smaller ideal, so a smaller dimension with them is enough."""
     d = dimension(J, R)
     c = R.nvars - d
-    if len(J) == c and dimension(list(J) + fitting_ideal(J, R.nvars, c), R) < d:
-        return True
+    if len(J) == c:
+        for k in sorted({nconfig or R.nvars, R.nvars}):
+            if dimension(list(J) + fitting_ideal(J, k, c), R) < d:
+                return True
     return ideals_equal(radical(J, R), J, R)
 
 
@@ -222,7 +231,7 @@ def global_analysis(m: Mechanism, decompose: bool = True) -> Analysis:
         raise MechanismError(f"{m.name}: the configuration space is empty (the constraints have no "
                              "solution, not even a complex one)")
     d = dimension(J, R)
-    a = Analysis(m, R, J, n, params, d, d - len(params), is_radical(J, R), len(J) == R.nvars - d,
+    a = Analysis(m, R, J, n, params, d, d - len(params), is_radical(J, R, n), len(J) == R.nvars - d,
                  decompose)
     if not decompose and not (a.radical and a.complete_intersection):
         raise MechanismError(f"{m.name}: the quick analysis needs a radical complete intersection")
@@ -303,26 +312,50 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
             sp.kind = "singular point (local components not computed: quick analysis)"
             sp.tangent_cone = tangent_cone_at(a.ideal, point)
         elif point is not None:
-            info = classify_point(a.ideal, point)
+            info = classify_point(a.ideal, point, _minimal_modes(a))
             sp.kind = info.kind
             sp.tangent_cone = info.tangent_cone
             sp.local_components = info.components
             sp.transition = _transition(info.components, R)
+        elif d == 0:
+            _algebraic_local(a, sp)
         out.append(sp)
     a.singular = out
     return out
+
+
+def _algebraic_local(a: Analysis, sp: SingularPoint) -> None:
+    """Step 4 at the conjugate points of a zero-dimensional prime that is not a rational point:
+    over ``K = Q[t]/m(t)`` for a primitive element ``t``, with the motion modes (the minimal
+    primes of J over Q) as the starting point of the local components over K."""
+    pt = sp.algebraic = primitive_element(sp.prime, a.ring)
+    if not a.decomposed:
+        sp.kind = "singular point (local components not computed: quick analysis)"
+        sp.tangent_cone = tangent_cone_over(centre_at(a.ideal, pt), pt)
+        return
+    info = classify_algebraic_point(a.ideal, pt, _minimal_modes(a))
+    sp.kind, sp.tangent_cone, sp.local_components = info.kind, info.tangent_cone, info.components
+    sp.transition = _transition(info.components, pt.ring, lambda c: tangent_cone_over(c, pt))
+
+
+def _minimal_modes(a: Analysis) -> list[list[Poly]]:
+    """The minimal primes of J: the motion modes' primes without the embedded ones."""
+    primes = [md.prime for md in a.modes]
+    return [P for P in primes if not any(_contains(Q, P, a.ring) for Q in primes if Q is not P)]
 
 
 def _vanishes(g: Poly, P: list[Poly], R: PolyRing) -> bool:
     return normal_form(g, std(P, R)).is_zero()
 
 
-def _transition(components: list[list[Poly]], R: PolyRing) -> str:
+def _transition(components: list[list[Poly]], R: PolyRing,
+                cone: Callable[[list[Poly]], list[Poly]] | None = None) -> str:
     """Remarks 2 and 3: a regular motion (non-zero velocity) from one local component to
-    another needs a common tangent direction: their tangent cones must meet outside 0."""
+    another needs a common tangent direction: their tangent cones must meet outside 0
+    (``cone``: the tangent cone function, by default over Q)."""
     if len(components) < 2:
         return "one local component: no change of motion mode here"
-    cones = [tangent_cone(c, c[0].ring) for c in components]
+    cones = [cone(c) if cone else tangent_cone(c, c[0].ring) for c in components]
     shared = []
     for (i, a), (j, b) in itertools.combinations(enumerate(cones, 1), 2):
         ring = a[0].ring
@@ -353,6 +386,21 @@ def _dp(polys: Sequence[Poly]) -> list[Poly]:
     ring = polys[0].ring
     glob = PolyRing(ring.field, ring.names, MonomialOrder([Block("dp", ring.nvars)]))
     return [normalize(g) for g in std(move(list(polys), glob), glob)]
+
+
+def _primitive(p: Poly) -> Poly:
+    from mech.stdlib.standard import normalize
+    return normalize(p)
+
+
+def _local(s: SingularPoint, polys: Sequence[Poly]) -> list[Poly]:
+    """A cone or local component for the report: at a rational point its reduced dp basis; at
+    algebraic points its basis over Q(t) (a Gröbner basis of algebraic.ring) without the
+    minimal polynomial of t."""
+    if s.algebraic is None:
+        return _dp(polys)
+    n = s.algebraic.ring.nvars - 1
+    return [_primitive(g) for g in polys if any(any(e[:n]) for e in g.terms)]
 
 
 def _show(polys: Sequence[Poly]) -> str:
@@ -398,9 +446,12 @@ def report_data(a: Analysis) -> dict:
                              for m in a.modes]
         d["singular"] = [{
             "prime": ps(_dp(s.prime)), "dimension": s.dim, "real_points": s.real,
-            "point": [_frac(c) for c in s.point] if s.point else None, "modes": s.modes,
-            "kind": s.kind, "tangent_cone": ps(_dp(s.tangent_cone)),
-            "local_components": [ps(_dp(c)) for c in s.local_components],
+            "point": [_frac(c) for c in s.point] if s.point else ps(s.algebraic.coords) if s.algebraic
+            else None, "modes": s.modes,
+            **({"primitive_element": poly_str(s.algebraic.form),
+                "minimal_polynomial": poly_str(_primitive(s.algebraic.minpoly))} if s.algebraic else {}),
+            "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
+            "local_components": [ps(_local(s, c)) for c in s.local_components],
             "transition": s.transition} for s in a.singular]
     return d
 
@@ -443,17 +494,23 @@ def report_text(a: Analysis) -> str:
     for i, s in enumerate(a.singular, 1):
         modes = "modes " + ", ".join(map(str, s.modes)) if len(s.modes) > 1 else f"mode {s.modes[0]}" \
             if s.modes else "no mode"
-        if s.point is None:
+        if s.point is None and s.algebraic is None:
             where = f"{_show(_dp(s.prime))} (dim {s.dim}, {'real' if s.real else 'no real points'})"
-            out.append(f"  q{i} {where}: not a rational point, no local analysis")
+            out.append(f"  q{i} {where}: not a point, no local analysis")
             continue
         on = f" on {modes}" if a.decomposed else ""
-        out.append(f"  q{i} = ({_names(a)}) = ({','.join(_frac(c) for c in s.point)}){on}: "
-                   f"{s.kind}")
-        out.append(f"     tangent cone (coordinates centred at q{i}): {_show(_dp(s.tangent_cone))}")
+        pt = s.algebraic
+        coords = [poly_str(c) for c in pt.coords] if pt else [_frac(c) for c in s.point]
+        out.append(f"  q{i} = ({_names(a)}) = ({','.join(coords)}){on}: {s.kind}")
+        if pt:
+            out.append(f"     where t = {poly_str(pt.form)}, {poly_str(_primitive(pt.minpoly))} = 0: "
+                       f"{pt.degree} conjugate points, {_count_real_roots(pt.minpoly)} real")
+        over = ", coefficients in Q(t)" if pt else ""
+        out.append(f"     tangent cone (coordinates centred at q{i}{over}): "
+                   f"{_show(_local(s, s.tangent_cone))}")
         if a.decomposed:
             out.append(f"     local components (Theorem 3): {len(s.local_components)}: " +
-                       ", ".join(_show(_dp(c)) for c in s.local_components))
+                       ", ".join(_show(_local(s, c)) for c in s.local_components))
             out.append(f"     {s.transition}")
     return "\n".join(out) + "\n"
 
@@ -469,8 +526,8 @@ def report_latex(a: Analysis) -> str:
                 "(" + _tex([f])[len(r"\langle "):-len(r" \rangle")] + ")" for f in a.length_factors) + " = 0")
     else:
         rows += [rf"J_{{{i}}} &= " + _tex(_dp(m.prime)) for i, m in enumerate(a.modes, 1)]
-        rows += [rf"C_{{q_{{{i}}}}} &= V\left(" + _tex(_dp(s.tangent_cone)) + r"\right)"
-                 for i, s in enumerate(a.singular, 1) if s.point is not None]
+        rows += [rf"C_{{q_{{{i}}}}} &= V\left(" + _tex(_local(s, s.tangent_cone)) + r"\right)"
+                 for i, s in enumerate(a.singular, 1) if s.point is not None or s.algebraic]
     return "\\begin{align*}\n" + " \\\\\n".join(rows) + "\n\\end{align*}\n"
 
 
@@ -671,7 +728,9 @@ def length_conditions(ctx: Any, m: Mechanism) -> Ideal:
 @command("singularPoints", lib="mechanism.lib")
 def singular_points(ctx: Any, m: Mechanism) -> List:
     """singularPoints(m): each singular configuration as list(prime, kind, tangent cone,
-    local components, transition) (cone and components centred at the point).
+    local components, transition) (cone and components centred at the point; at a point with
+    algebraic coordinates they have coefficients in Q(t), which analyze prints: here an empty
+    ideal and list).
 
     Example:
       LIB "mechanism.lib";
@@ -691,8 +750,10 @@ def singular_points(ctx: Any, m: Mechanism) -> List:
     """
     a = run_analysis(m)
     require_numeric(a, "singularPoints")
-    return List([List([_into(ctx, _dp(s.prime)), s.kind or "not rational", _into(ctx, _dp(s.tangent_cone)),
-                       List([_into(ctx, _dp(c)) for c in s.local_components]), s.transition])
+    return List([List([_into(ctx, _dp(s.prime)), s.kind or "not a point",
+                       _into(ctx, [] if s.algebraic else _dp(s.tangent_cone)),
+                       List([] if s.algebraic else [_into(ctx, _dp(c)) for c in s.local_components]),
+                       s.transition])
                  for s in a.singular])
 
 
