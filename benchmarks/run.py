@@ -40,6 +40,7 @@ M2 = shutil.which("M2")
 def child_mech(case: Case, repeat: int) -> dict:
     from mech import Session
     from mech.kernel import groebner
+    from mech.kernel.groebner import clear_cache
     s = Session(warnings=False)
     s.execute(f"ring r = {case.char}, ({','.join(case.variables)}), {case.ordering};\n"
               f"ideal I = {', '.join(case.gens)};")
@@ -47,6 +48,7 @@ def child_mech(case: Case, repeat: int) -> dict:
     gens, ring = list(ideal.gens), ideal.ring
     best = None
     for _ in range(repeat):
+        clear_cache()
         c0, w0 = time.process_time(), time.perf_counter()
         G = groebner(gens, ring)
         c1, w1 = time.process_time(), time.perf_counter()

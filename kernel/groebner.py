@@ -272,6 +272,11 @@ def cached_groebner(gens: Sequence[Poly], ring: PolyRing, engine: str = "auto") 
     return None if out is None else list(out)
 
 
+def clear_cache() -> None:
+    """Forget the recent bases (benchmarks time computations, not look-ups)."""
+    _CACHE.clear()
+
+
 _CACHE: OrderedDict[tuple, list[Poly]] = OrderedDict()
 """Recent results by (ring, engine, set of generators): the algorithms built on :func:`groebner`
 (dimension, containment, decomposition) ask for the same bases many times."""
