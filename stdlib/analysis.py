@@ -3,7 +3,10 @@
 * the constraint ideal ``J`` (``Mechanism.constraints``), its dimension (the mobility: for
   symbolic lengths the dimension of a generic fibre, ``dim J - #lengths``) and radicality;
 * the motion modes: the primary decomposition of ``J`` (prime components with dimension and
-  whether they have real points, decided exactly: :func:`has_real_points`);
+  whether they have real points, decided exactly: :func:`has_real_points`); for a radical
+  complete intersection the primes certified by a birational projection
+  (``mech.kernel.projection``) when a sparse one passes its degree test, also over
+  ``QQ(lengths)`` for symbolic lengths (the generic mechanism's modes; real points not decided);
 * the singular variety (Theorem 1): ``J + I_r(dJ)`` with ``r = #configuration variables -
   mobility`` (the Fitting ideal of the Jacobian with respect to the configuration variables);
   when ``J`` is not radical or not equidimensional, the union of the components' singular
@@ -33,6 +36,7 @@ from mech.kernel.local import (AlgebraicPoint, centre_at, classify_algebraic_poi
                                primitive_element, tangent_cone, tangent_cone_at, tangent_cone_over)
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, primdec_gtz
+from mech.kernel.projection import project_primes
 from mech.stdlib.mechanism import Mechanism, MechanismError
 
 
@@ -126,12 +130,13 @@ def has_real_points(prime: list[Poly], ring: PolyRing) -> bool:
 # ---------------------------------------------------------------- results
 @dataclass
 class Mode:
-    """A motion mode: a prime component of the constraint ideal."""
+    """A motion mode: a prime component of the constraint ideal (with symbolic lengths: over
+    QQ(lengths), contracted to QQ[x, lengths]; ``dim`` over QQ(lengths), ``real`` None)."""
 
     prime: list[Poly]
     primary: list[Poly]
     dim: int
-    real: bool
+    real: bool | None
 
 
 @dataclass
@@ -236,7 +241,7 @@ def global_analysis(m: Mechanism, decompose: bool = True) -> Analysis:
     if not decompose and not (a.radical and a.complete_intersection):
         raise MechanismError(f"{m.name}: the quick analysis needs a radical complete intersection")
     if not params:
-        for primary, prime in primdec_gtz(J, R) if decompose else []:
+        for primary, prime in _decomposition(a) if decompose else []:
             a.modes.append(Mode(prime, primary, dimension(prime, R), has_real_points(prime, R)))
         # a radical complete intersection is equidimensional: the critical point method applies to J
         if not (any(md.real for md in a.modes) if decompose else has_real_points(J, R)):
@@ -246,7 +251,28 @@ def global_analysis(m: Mechanism, decompose: bool = True) -> Analysis:
     a.fitting = fitting_ideal(J, n, a.fitting_size)
     if params:
         _length_conditions(a)
+        found = project_primes(J, R, len(params), _SPARSE) if decompose and a.radical and \
+            a.complete_intersection and R.nvars <= _SYMBOLIC_VARS else None
+        a.modes = [Mode(P, P, dimension(P, R) - len(params), None) for P in found.primes] if found else []
     return a
+
+
+_SPARSE = 2  # projections tried (the sparse ones of kernel.projection.candidate_forms)
+# symbolic modes only up to this many variables (lengths included): the four-bar's 9 take 1 s, the
+# five-bar's 12 (eliminating 8 of 15) did not finish in minutes
+_SYMBOLIC_VARS = 10
+
+
+def _decomposition(a: Analysis) -> list[tuple[list[Poly], list[Poly]]]:
+    """(primary, prime) pairs of J: ``[(J, J)]`` when a sparse birational projection
+    (kernel.projection) proves a radical complete intersection (unmixed) prime; otherwise
+    primdecGTZ (also when the projection finds several primes: primdecGTZ's numbering of the
+    modes is kept, as its order of primes with equal leading monomials is its own)."""
+    if a.radical and a.complete_intersection:
+        found = project_primes(a.ideal, a.ring, 0, _SPARSE)
+        if found is not None and len(found.primes) == 1:
+            return [(found.primes[0], found.primes[0])]
+    return primdec_gtz(a.ideal, a.ring)
 
 
 def _length_conditions(a: Analysis) -> None:
@@ -440,6 +466,8 @@ def report_data(a: Analysis) -> dict:
              "elimination": ps(c.elimination or []), "condition": ps(c.conditions),
              "factors": ps(c.factors)} for c in a.length_components]
         d["length_conditions"] = ps(a.length_factors)
+        d["motion_modes"] = [{"prime": ps(_dp(m.prime)), "dimension": m.dim, "real_points": None}
+                             for m in a.modes]  # over Q(lengths); [] when not computed
     else:
         d["motion_modes"] = [{"prime": ps(_dp(m.prime)), "dimension": m.dim, "real_points": m.real,
                               "primary_equals_prime": ideals_equal(m.primary, m.prime, a.ring)}
@@ -481,7 +509,20 @@ def report_text(a: Analysis) -> str:
                        ", ".join(f"{poly_str(f)} = 0" for f in a.length_factors))
         else:
             out.append("no singularities for non-zero lengths")
-        out.append("motion modes and singular configurations: give numeric lengths (setLengths)")
+        if not a.decomposed:
+            out.append("motion modes: not computed (quick analysis); singular configurations: give "
+                       "numeric lengths (setLengths)")
+            return "\n".join(out) + "\n"
+        if not a.modes:
+            out.append("motion modes and singular configurations: give numeric lengths (setLengths)")
+            return "\n".join(out) + "\n"
+        field = f"Q({','.join(a.params)})"
+        out.append(f"motion modes over {field} (generic lengths, certified by a birational projection; "
+                   f"real points not decided): {len(a.modes)}")
+        for i, m in enumerate(a.modes, 1):
+            what = f"J is prime over {field}" if len(a.modes) == 1 else _show(_dp(m.prime))
+            out.append(f"  [{i}] dim {m.dim}: {what}")
+        out.append("singular configurations: give numeric lengths (setLengths)")
         return "\n".join(out) + "\n"
     if not a.decomposed:
         out.append("motion modes: not computed (quick analysis); the configuration space has real points")

@@ -38,6 +38,16 @@ def _rational(c: Any) -> float:
     return float(Fraction(int(c.p), int(c.q)))
 
 
+def _numpy() -> Any:
+    """numpy, with one BLAS thread unless the environment says otherwise (set before numpy's first
+    import): the plots' many small batched solves gain nothing from threads, and starting and
+    spinning them cost 0.3 s of a 0.6 s script here."""
+    for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ.setdefault(var, "1")
+    import numpy
+    return numpy
+
+
 def _compile(polys: Sequence[Poly], nvars: int) -> Callable[[Any], Any]:
     """The polynomials as one numpy function: an (N, nvars) array of points to the (N, len(polys))
     array of their values."""
@@ -48,7 +58,7 @@ def _compile(polys: Sequence[Poly], nvars: int) -> Callable[[Any], Any]:
     source = ("def f(x):\n    zero = np.zeros(len(x))\n"
               + "".join(f"    x{i} = x[:, {i}]\n" for i in range(nvars))
               + f"    return np.stack([{', '.join(exprs)}], axis=1)\n")
-    import numpy as np
+    np = _numpy()
     scope: dict[str, Any] = {"np": np}
     exec(compile(source, "<polynomials>", "exec"), scope)
     return scope["f"]
@@ -60,7 +70,7 @@ def sample_mode(prime: Sequence[Poly], nlinks: int, count: int = 3000, seed: int
     lengths in [-2, 2]) moved by minimum-norm Gauss–Newton steps in those parameters until the
     residual of every generator is below 1e-12 or ``iterations`` steps are done; only the points
     whose residual is below :data:`TOLERANCE` are returned."""
-    import numpy as np
+    np = _numpy()
     n = prime[0].ring.nvars
     gens = _compile(prime, n)
     jac = _compile([g.diff(j) for g in prime for j in range(n)], n)
@@ -101,7 +111,7 @@ def sample_mode(prime: Sequence[Poly], nlinks: int, count: int = 3000, seed: int
 
 
 def _angles(x: Any, nlinks: int) -> Any:
-    import numpy as np
+    np = _numpy()
     return np.arctan2(x[:, 1:2 * nlinks:2], x[:, 0:2 * nlinks:2])
 
 
@@ -113,14 +123,14 @@ def _title(scene: Scene, text: str, centre: float) -> None:
 
 def _thin(xy: Any) -> list:
     """The pixel positions ``xy`` (an (N, 2) array) keeping one per half pixel."""
-    import numpy as np
+    np = _numpy()
     _, first = np.unique(np.round(xy * 2), axis=0, return_index=True)
     return xy[np.sort(first)].tolist()
 
 
 def configuration_scene(m: Mechanism, a: Analysis, links: Sequence[int], count: int) -> Scene:
     """The configuration space of ``m`` (analysed in ``a``) in the angles of ``links`` (0-based)."""
-    import numpy as np
+    np = _numpy()
     nlinks = len(m.links)
     scene = Scene(800, 540)
     _title(scene, str(m), 305)

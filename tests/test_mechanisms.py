@@ -12,7 +12,8 @@ import pytest
 from mech import Session
 from mech.dsl.errors import MechError
 from mech.kernel.ideals import ideals_equal
-from mech.stdlib.analysis import analyze, global_analysis, has_real_points, local_analysis
+from mech.stdlib.analysis import (analyze, global_analysis, has_real_points, local_analysis, report_data,
+                                   report_text)
 from mech.stdlib.mechanism import parse_mechanism
 from tests.util import SINGULAR, ideal_blocks, parse_poly, run_singular
 
@@ -207,6 +208,27 @@ def test_fivebar_quick_against_singular():
     local_analysis(a)
     assert (a.mobility, a.radical, a.complete_intersection, len(a.singular)) == (2, True, True, 4)
     check_against_singular(a, modes=False)
+
+
+def test_fivebar_one_mode(tmp_path):
+    """primdecGTZ does not finish; the birational projection (kernel.projection) proves J prime."""
+    a = global_analysis(parse_mechanism(FIVEBAR))
+    assert len(a.modes) == 1 and (a.modes[0].dim, a.modes[0].real) == (2, True)
+    assert same(a.modes[0].prime, a.ideal, a.ring)
+    r = subprocess.run([sys.executable, "-m", "mech", str(ROOT / "examples" / "fivebar.mech")],
+                       cwd=tmp_path, text=True, capture_output=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    assert "motion modes (primary decomposition of J): 1\n" in r.stdout
+    assert r.stdout.count("on mode 1: singular\n") == 4  # the full analysis (local components too)
+
+
+def test_symbolic_lengths_modes():
+    """With symbolic lengths, the modes over Q(lengths) when a projection certifies them."""
+    a = analyze(parse_mechanism(FOURBAR))
+    assert [(m.dim, m.real) for m in a.modes] == [(1, None)]
+    assert "  [1] dim 1: J is prime over Q(l1,l2,l3)\n" in report_text(a)
+    data = report_data(a)
+    assert [(m["dimension"], m["real_points"]) for m in data["motion_modes"]] == [(1, None)]
 
 
 @pytest.mark.singular
