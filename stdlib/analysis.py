@@ -252,15 +252,15 @@ def global_analysis(m: Mechanism, decompose: bool = True) -> Analysis:
     if params:
         _length_conditions(a)
         found = project_primes(J, R, len(params), _SPARSE) if decompose and a.radical and \
-            a.complete_intersection and R.nvars <= _SYMBOLIC_VARS else None
+            a.complete_intersection and n <= _SYMBOLIC_CONFIG else None
         a.modes = [Mode(P, P, dimension(P, R) - len(params), None) for P in found.primes] if found else []
     return a
 
 
 _SPARSE = 2  # projections tried (the sparse ones of kernel.projection.candidate_forms)
-# symbolic modes only up to this many variables (lengths included): the four-bar's 9 take 1 s, the
-# five-bar's 12 (eliminating 8 of 15) did not finish in minutes
-_SYMBOLIC_VARS = 10
+# symbolic modes only up to this many configuration variables: the four-bar's 6 (and 3 lengths) take
+# 1 s; the five-bar's 8 did not finish in minutes, with one symbolic length as with four
+_SYMBOLIC_CONFIG = 6
 
 
 def _decomposition(a: Analysis) -> list[tuple[list[Poly], list[Poly]]]:
@@ -713,6 +713,9 @@ def mobility(m: Mechanism) -> int:
 @command("motionModes", lib="mechanism.lib")
 def motion_modes(ctx: Any, m: Mechanism) -> List:
     """motionModes(m): the prime components of J, each as list(prime, dim, has real points).
+    With symbolic lengths: the modes over Q(lengths) (the generic mechanism's), with their
+    dimension over Q(lengths) and -1 for real points (not decided); an error when they could not
+    be certified (see docs/mechanisms.md, Limits).
 
     Example:
       LIB "mechanism.lib";
@@ -728,8 +731,12 @@ def motion_modes(ctx: Any, m: Mechanism) -> List:
       → 1
     """
     a = run_analysis(m, local=False)
-    require_numeric(a, "motionModes")
-    return List([List([_into(ctx, _dp(md.prime)), md.dim, int(md.real)]) for md in a.modes])
+    if a.params and not a.modes:
+        raise MechRuntimeError(f"motionModes: the modes over Q({','.join(a.params)}) were not certified "
+                               "(no sparse birational projection, or too many variables): give numeric "
+                               "lengths (setLengths(m, ...))")
+    return List([List([_into(ctx, _dp(md.prime)), md.dim, -1 if md.real is None else int(md.real)])
+                 for md in a.modes])
 
 
 @command("singularVariety", lib="mechanism.lib")

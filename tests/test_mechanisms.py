@@ -231,6 +231,18 @@ def test_symbolic_lengths_modes():
     assert [(m["dimension"], m["real_points"]) for m in data["motion_modes"]] == [(1, None)]
 
 
+def test_motion_modes_command_with_symbolic_lengths():
+    """motionModes gives the modes over Q(lengths) (real points -1: not decided), or says why not."""
+    s = Session()
+    out = s.execute('LIB "mechanism.lib"; mechanism m = "fix O; bar O A l1; bar A B l2; slider B";\n'
+                    'def r = configurationRing(m); setring r;\n'
+                    'list L = motionModes(m); size(L); L[1][2]; L[1][3]; L[1][1] == std(constraints(m));')
+    assert out.split() == ["1", "1", "-1", "1"]
+    with pytest.raises(MechError, match=r"modes over Q\(l1\) were not certified"):
+        s.execute('mechanism f = "ground O A 2; bar O B l1; bar B C 1; bar C D 1; bar D A 1";\n'
+                  'def r2 = configurationRing(f); setring r2; list L2 = motionModes(f);')
+
+
 @pytest.mark.singular
 @pytest.mark.skipif(not SINGULAR, reason="Singular not installed")
 def test_watt_against_singular():
