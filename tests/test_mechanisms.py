@@ -326,7 +326,7 @@ def test_report_formats():
     ('mechanism m = "fix O; fix A 5 0; bar O A 1"; mobility(m);', "configuration space is empty"),
     ('mechanism m = "ground O A 1; bar O B 5; bar B C 1; bar C A 1"; mobility(m);', "does not close"),
     ('mechanism m = "fix O; bar O A l"; mechanism n = setLengths(m, 1, 2);', "1 symbolic lengths"),
-    ('mechanism m = "fix O; bar O A l; bar A B 1; slider B"; motionModes(m);', "needs numeric lengths"),
+    ('mechanism m = "fix O; bar O A l; bar A B 1; slider B"; singularPoints(m);', "needs numeric lengths"),
     ('mechanism m = 3;', "cannot convert int to mechanism"),
     ('mechanism m;', "declared with its description"),
     ('mechanism m = "fix O; bar O A 1; bar A B 1; slider B"; plotConfigurations(m, "x.pdf");', ".png or .svg"),
