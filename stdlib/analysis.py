@@ -180,6 +180,7 @@ class Analysis:
     complete_intersection: bool
     decomposed: bool = True  # False: a quick analysis without the primary decomposition of J
     modes: list[Mode] = field(default_factory=list)
+    modes_by: str = "primary decomposition of J"  # how the modes were found, for the report
     fitting_size: int = 0
     fitting: list[Poly] = field(default_factory=list)
     length_components: list[LengthComponent] = field(default_factory=list)
@@ -271,6 +272,7 @@ def _decomposition(a: Analysis) -> list[tuple[list[Poly], list[Poly]]]:
     if a.radical and a.complete_intersection:
         found = project_primes(a.ideal, a.ring, 0, _SPARSE)
         if found is not None and len(found.primes) == 1:
+            a.modes_by = "J is prime, certified by a birational projection"
             return [(found.primes[0], found.primes[0])]
     return primdec_gtz(a.ideal, a.ring)
 
@@ -527,7 +529,7 @@ def report_text(a: Analysis) -> str:
     if not a.decomposed:
         out.append("motion modes: not computed (quick analysis); the configuration space has real points")
     else:
-        out.append(f"motion modes (primary decomposition of J): {len(a.modes)}")
+        out.append(f"motion modes ({a.modes_by}): {len(a.modes)}")
     for i, m in enumerate(a.modes, 1):
         real = "has real points" if m.real else "no real points (not physically feasible)"
         out.append(f"  [{i}] dim {m.dim}, {real}: {_show(_dp(m.prime))}")

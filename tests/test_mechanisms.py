@@ -218,7 +218,7 @@ def test_fivebar_one_mode(tmp_path):
     r = subprocess.run([sys.executable, "-m", "mech", str(ROOT / "examples" / "fivebar.mech")],
                        cwd=tmp_path, text=True, capture_output=True, timeout=300)
     assert r.returncode == 0, r.stderr
-    assert "motion modes (primary decomposition of J): 1\n" in r.stdout
+    assert "motion modes (J is prime, certified by a birational projection): 1\n" in r.stdout
     assert r.stdout.count("on mode 1: singular\n") == 4  # the full analysis (local components too)
 
 
