@@ -254,7 +254,7 @@ def groebner(gens: Sequence[Poly], ring: PolyRing | None = None, engine: str = "
     gens = [g for g in gens if not g.is_zero()]
     if not gens:
         return []
-    key = (ring, engine, frozenset(gens))
+    key = _key(gens, ring, engine)
     out = _CACHE.get(key)
     if out is None:
         out = _compute(gens, ring, ENGINES[engine])
@@ -268,8 +268,12 @@ def groebner(gens: Sequence[Poly], ring: PolyRing | None = None, engine: str = "
 
 def cached_groebner(gens: Sequence[Poly], ring: PolyRing, engine: str = "auto") -> list[Poly] | None:
     """The basis :func:`groebner` would return, if it is known already; else ``None``."""
-    out = _CACHE.get((ring, engine, frozenset(g for g in gens if not g.is_zero())))
+    out = _CACHE.get(_key(gens, ring, engine))
     return None if out is None else list(out)
+
+
+def _key(gens: Sequence[Poly], ring: PolyRing, engine: str) -> tuple:
+    return ring, engine, frozenset(g for g in gens if not g.is_zero())
 
 
 def clear_cache() -> None:

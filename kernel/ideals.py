@@ -46,6 +46,11 @@ def with_order(ring: PolyRing, order: MonomialOrder) -> PolyRing:
     return PolyRing(ring.field, ring.names, order)
 
 
+def dp_ring(ring: PolyRing) -> PolyRing:
+    """The ring's variables and field ordered by ``dp``."""
+    return with_order(ring, MonomialOrder.simple("dp", ring.nvars))
+
+
 def move(polys: Ideal, ring: PolyRing) -> list[Poly]:
     """The same polynomials (same variables) as elements of ``ring``."""
     return [Poly(ring, p.terms) for p in polys if not p.is_zero()]
@@ -287,7 +292,7 @@ def dimension(ideal: Ideal, ring: PolyRing | None = None) -> int:
     basis = cached_groebner(ideal, ring)
     if basis is None:
         if not ring.order.is_graded:  # any ordering gives the dimension, a degree ordering fastest
-            ring = with_order(ring, MonomialOrder.simple("dp", ring.nvars))
+            ring = dp_ring(ring)
             ideal = move(ideal, ring)
         basis = std(ideal, ring)
     return krull_dim([p.lm() for p in basis], ring.nvars)

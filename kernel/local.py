@@ -254,13 +254,13 @@ def classify_point(gens: Sequence[Poly], point: Sequence[Any],
     on the variety."""
     centred = _centred(gens, point)
     ring = centred[0].ring
+    target = _global(ring)
     if primes is None:
         comps = min_ass_local(centred)
     else:
-        target, p = _global(ring), _point(ring, point)
+        p = _point(ring, point)
         comps = [move(std(move(shift_to_origin(list(P), point), target), target), ring)
                  for P in primes if all(g.evaluate(p) == 0 for g in P)]
-    target = _global(ring)
     radical = intersect(*(move(p, target) for p in comps), ring=target)
     t = ring.nvars - jacobian_rank(radical, [0] * ring.nvars)
     d = local_dim(centred)

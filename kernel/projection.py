@@ -34,7 +34,7 @@ from typing import Iterator, Sequence
 from .dimension import krull_dim
 from .factor import factorize, normalize
 from .hilbert import degree
-from .ideals import eliminate, move, product_order, saturate_poly, std
+from .ideals import dp_ring, eliminate, move, product_order, saturate_poly, std
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 
@@ -71,7 +71,7 @@ def variety_degree(ideal: Sequence[Poly], ring: PolyRing, params: int = 0) -> in
     n = _check_params(ring, params)
     if params:
         return degree([g.lm()[:n] for g in std(ideal, ring)], n).degree
-    dp = PolyRing(ring.field, ring.names, MonomialOrder([Block("dp", n)]))
+    dp = dp_ring(ring)
     return degree([g.lm() for g in std(move(ideal, dp), dp)], n).degree
 
 

@@ -30,7 +30,7 @@ from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
 from mech.kernel.factor import factorize
 from mech.kernel.groebner import normal_form
 from mech.kernel.hilbert import vdim
-from mech.kernel.ideals import (dimension, eliminate, ideals_equal, independent_set, is_subset,
+from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, independent_set, is_subset,
                                 move, radical, saturate_poly, std)
 from mech.kernel.local import (AlgebraicPoint, centre_at, classify_algebraic_point, classify_point,
                                primitive_element, tangent_cone, tangent_cone_at, tangent_cone_over)
@@ -38,6 +38,7 @@ from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, primdec_gtz
 from mech.kernel.projection import project_primes
 from mech.stdlib.mechanism import Mechanism, MechanismError
+from mech.stdlib.standard import normalize
 
 
 # ---------------------------------------------------------------- real points
@@ -385,9 +386,8 @@ def _transition(components: list[list[Poly]], R: PolyRing,
         return "one local component: no change of motion mode here"
     cones = [cone(c) if cone else tangent_cone(c, c[0].ring) for c in components]
     shared = []
+    glob = dp_ring(cones[0][0].ring)
     for (i, a), (j, b) in itertools.combinations(enumerate(cones, 1), 2):
-        ring = a[0].ring
-        glob = PolyRing(ring.field, ring.names, MonomialOrder([Block("dp", ring.nvars)]))
         if dimension(move(list(a) + list(b), glob), glob) > 0:
             shared.append(f"{i} and {j}")
     if not shared:
@@ -408,17 +408,10 @@ def analyze(m: Mechanism) -> Analysis:
 # ---------------------------------------------------------------- reports
 def _dp(polys: Sequence[Poly]) -> list[Poly]:
     """A reduced dp basis (normalized as Singular's std) of an ideal of any ordering."""
-    from mech.stdlib.standard import normalize
     if not polys:
         return []
-    ring = polys[0].ring
-    glob = PolyRing(ring.field, ring.names, MonomialOrder([Block("dp", ring.nvars)]))
+    glob = dp_ring(polys[0].ring)
     return [normalize(g) for g in std(move(list(polys), glob), glob)]
-
-
-def _primitive(p: Poly) -> Poly:
-    from mech.stdlib.standard import normalize
-    return normalize(p)
 
 
 def _local(s: SingularPoint, polys: Sequence[Poly]) -> list[Poly]:
@@ -428,7 +421,7 @@ def _local(s: SingularPoint, polys: Sequence[Poly]) -> list[Poly]:
     if s.algebraic is None:
         return _dp(polys)
     n = s.algebraic.ring.nvars - 1
-    return [_primitive(g) for g in polys if any(any(e[:n]) for e in g.terms)]
+    return [normalize(g) for g in polys if any(any(e[:n]) for e in g.terms)]
 
 
 def _show(polys: Sequence[Poly]) -> str:
@@ -479,7 +472,7 @@ def report_data(a: Analysis) -> dict:
             "point": [_frac(c) for c in s.point] if s.point else ps(s.algebraic.coords) if s.algebraic
             else None, "modes": s.modes,
             **({"primitive_element": poly_str(s.algebraic.form),
-                "minimal_polynomial": poly_str(_primitive(s.algebraic.minpoly))} if s.algebraic else {}),
+                "minimal_polynomial": poly_str(normalize(s.algebraic.minpoly))} if s.algebraic else {}),
             "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
             "local_components": [ps(_local(s, c)) for c in s.local_components],
             "transition": s.transition} for s in a.singular]
@@ -546,7 +539,7 @@ def report_text(a: Analysis) -> str:
         coords = [poly_str(c) for c in pt.coords] if pt else [_frac(c) for c in s.point]
         out.append(f"  q{i} = ({_names(a)}) = ({','.join(coords)}){on}: {s.kind}")
         if pt:
-            out.append(f"     where t = {poly_str(pt.form)}, {poly_str(_primitive(pt.minpoly))} = 0: "
+            out.append(f"     where t = {poly_str(pt.form)}, {poly_str(normalize(pt.minpoly))} = 0: "
                        f"{pt.degree} conjugate points, {_count_real_roots(pt.minpoly)} real")
         over = ", coefficients in Q(t)" if pt else ""
         out.append(f"     tangent cone (coordinates centred at q{i}{over}): "

@@ -8,14 +8,14 @@ generators with ``c_i = cos theta_i``, ``s_i = sin theta_i``); only points whose
 1e-9 are drawn.  Each mode has its own colour; the singular configurations are black crosses
 (exact for rational ones; algebraic ones are sampled like the modes).
 
-Each picture is built once as a :class:`~mech.stdlib.scene.Scene`; ``svg.py`` and ``png.py``
-render it."""
+Each picture is built once as a :class:`~mech.stdlib._scene.Scene`; ``_svg.py`` and ``_png.py``
+render it (the three are imported when a picture is drawn, not when the commands are loaded)."""
 from __future__ import annotations
 
 import math
 import os
 from fractions import Fraction
-from typing import Any, Callable, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Sequence
 
 from mech.dsl.errors import MechRuntimeError
 from mech.dsl.values import IntVec, List
@@ -23,7 +23,9 @@ from mech.kernel import Poly
 from mech.stdlib.analysis import Analysis, require_numeric, run_analysis
 from mech.stdlib.mechanism import Mechanism
 from mech.stdlib.registry import command
-from mech.stdlib.scene import FONT, Axes2D, Axes3D, Lines, Markers, Scene, Text, legend, nice_ticks, pi_ticks
+
+if TYPE_CHECKING:
+    from mech.stdlib._scene import Scene
 
 # matplotlib's tab10 colours
 COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
@@ -117,6 +119,7 @@ def _angles(x: Any, nlinks: int) -> Any:
 
 # ---------------------------------------------------------------- pictures
 def _title(scene: Scene, text: str, centre: float) -> None:
+    from mech.stdlib._scene import FONT, Text
     size = min(FONT, 2 * min(centre, scene.width - centre) / (0.62 * max(len(text), 1)))
     scene.add(Text(centre, 22, text, size, cls="title"))
 
@@ -130,6 +133,7 @@ def _thin(xy: Any) -> list:
 
 def configuration_scene(m: Mechanism, a: Analysis, links: Sequence[int], count: int) -> Scene:
     """The configuration space of ``m`` (analysed in ``a``) in the angles of ``links`` (0-based)."""
+    from mech.stdlib._scene import Axes2D, Axes3D, Markers, Scene, legend, pi_ticks
     np = _numpy()
     nlinks = len(m.links)
     scene = Scene(800, 540)
@@ -189,6 +193,7 @@ def _clip(p: tuple[float, float], d: tuple[float, float], box: tuple[tuple[float
 
 def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str) -> Scene:
     """The mechanism ``m`` with its joint points at ``xy``."""
+    from mech.stdlib._scene import Axes2D, Lines, Markers, Scene, Text, nice_ticks
     scene = Scene(520, 440)
     _title(scene, title, 285)
     xs, ys = [x for x, _ in xy.values()], [y for _, y in xy.values()]
@@ -228,10 +233,10 @@ def _check_path(path: str) -> str:
 def _write(scene: Scene, path: str, title: str) -> None:
     try:
         if path.lower().endswith(".svg"):
-            from mech.stdlib.svg import write_svg
+            from mech.stdlib._svg import write_svg
             write_svg(scene, path, title)
         else:
-            from mech.stdlib.png import write_png
+            from mech.stdlib._png import write_png
             write_png(scene, path)
     except OSError as e:
         raise MechRuntimeError(f"'{path}': cannot write the file ({e.strerror or e})") from None

@@ -1,10 +1,10 @@
-"""A :class:`~mech.stdlib.scene.Scene` as an SVG file, written directly: coordinates rounded to
+"""A :class:`~mech.stdlib._scene.Scene` as an SVG file, written directly: coordinates rounded to
 0.1 px, each marker group one ``<path>`` (dots are zero-length round-capped segments)."""
 from __future__ import annotations
 
 from html import escape  # xml.sax.saxutils would import urllib, http and ssl (25 ms)
 
-from mech.stdlib.scene import Lines, Markers, Scene, Text
+from mech.stdlib._scene import Lines, Markers, Scene, Text
 
 
 def _n(v: float) -> str:

@@ -1,6 +1,6 @@
 """A neutral description of a picture (lines, marker groups, texts in pixel coordinates, y down) and
 the chart layouts the plots build from it: plane axes, a 3-d axis box under a fixed oblique
-orthographic projection, a legend.  ``svg.py`` and ``png.py`` render a :class:`Scene`."""
+orthographic projection, a legend.  ``_svg.py`` and ``_png.py`` render a :class:`Scene`."""
 from __future__ import annotations
 
 import math

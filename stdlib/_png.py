@@ -1,8 +1,8 @@
-"""A :class:`~mech.stdlib.scene.Scene` as a PNG file, drawn by matplotlib (Agg, no pyplot) on axes
+"""A :class:`~mech.stdlib._scene.Scene` as a PNG file, drawn by matplotlib (Agg, no pyplot) on axes
 covering the whole figure in the scene's pixel coordinates."""
 from __future__ import annotations
 
-from mech.stdlib.scene import Lines, Markers, Scene, Text
+from mech.stdlib._scene import Lines, Markers, Scene, Text
 
 DPI = 100
 PT = 72 / DPI  # points per pixel
