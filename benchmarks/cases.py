@@ -116,7 +116,7 @@ def _standard() -> list[Case]:
     elim = ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]
     for char in (0, 32003):
         cases.append(Case("block (dp(3),dp(2))", char, ["x", "y", "z", "u", "v"], "(dp(3),dp(2))", elim,
-                          sympy=False, notes="the block-ordered system of tests/test_groebner.py"))
+                          sympy=False, notes="the block-ordered system of tests/kernel/test_groebner.py"))
     names, gens = katsura(5)
     cases.append(Case("katsura-5 (lp(2),dp(4))", 0, names, "(lp(2),dp(4))", gens, sympy=False))
     fourbar = ["4+3*c3-2*c1-4*c2", "3*s3-2*s1-4*s2", "x-2*c1-2*c2+s2", "y-2*s1-2*s2-c2",

@@ -24,7 +24,7 @@ IDENT = r"[A-Za-z_@][A-Za-z0-9_@]*"
 
 
 def _registry_commands() -> frozenset[str]:
-    from ..stdlib import registry
+    from . import registry
     registry.load_commands()
     return frozenset(registry.COMMANDS)
 

@@ -109,7 +109,7 @@ class Interpreter:
 
     def __init__(self, out: Optional[TextIO] = None, flush: bool = False, warnings: bool = True,
                  timeout: Optional[float] = None, max_memory: Optional[float] = None) -> None:
-        from ..stdlib import registry
+        from . import registry
         self.limits = Limits(timeout, max_memory)  # per statement; see limits.py
         registry.load_commands()
         self.registry = registry

@@ -23,7 +23,7 @@ import time
 from typing import Any, Callable, Iterator, Optional
 
 from .errors import MechRuntimeError
-from ..stdlib.registry import command
+from .registry import command
 
 POLL = 0.02     # seconds between the watchdog's checks
 REFIRE = 1.0    # raise again if the statement is still running this long after the first time

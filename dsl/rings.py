@@ -200,10 +200,7 @@ def _field(char: int, params: tuple[str, ...]) -> Any:
             raise MechRuntimeError(str(e)) from None
     if not params:
         return base
-    try:
-        from ..kernel.ratfunc import RationalFunctionField
-    except ImportError:
-        raise MechRuntimeError("rings with parameters such as (0,a,b) are not supported yet") from None
+    from ..kernel.ratfunc import RationalFunctionField
     try:
         return RationalFunctionField(char, params)
     except ValueError as e:

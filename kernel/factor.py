@@ -96,13 +96,6 @@ def factorize(f: Poly) -> tuple[Any, list[tuple[Poly, int]]]:
     return unit, out
 
 
-def irreducible_factors(f: Poly) -> list[Poly]:
-    """The distinct non-constant irreducible factors of ``f``, normalized."""
-    if f.is_constant():
-        return []
-    return [g for g, _ in factorize(f)[1]]
-
-
 def squarefree_part(f: Poly) -> Poly:
     """The product of the distinct irreducible factors of ``f``, normalized (a constant
     ``f`` gives 1, zero gives zero)."""

@@ -313,7 +313,3 @@ def normal_form(f: Poly, basis: Sequence[Poly], full: bool = True) -> Poly:
 def contains(basis: Sequence[Poly], f: Poly) -> bool:
     """Ideal membership of ``f`` given a Gröbner basis."""
     return normal_form(f, basis).is_zero()
-
-
-def leading_monomials(basis: Sequence[Poly]) -> list[Exp]:
-    return [b.lm() for b in basis if not b.is_zero()]

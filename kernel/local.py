@@ -44,13 +44,6 @@ def _ds_basis(gens: Sequence[Poly], ring: PolyRing) -> list[Poly]:
     return standard_basis(move(gens, local), local)
 
 
-def local_standard_basis(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[Poly]:
-    """A standard basis of the ideal in the local ring at the origin (ordering ``ds``),
-    as polynomials of the input's ring."""
-    ring = _ring_of(gens, ring)
-    return move(_ds_basis(gens, ring), ring)
-
-
 # Singular's reduce/NF in a local ring: a weak normal form, zero iff f lies in the ideal of
 # the local ring, otherwise determined only up to a unit and modulo the ideal (see
 # mora.weak_normal_form)

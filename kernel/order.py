@@ -12,9 +12,6 @@ from typing import Callable, Sequence
 
 Exp = tuple[int, ...]
 
-GLOBAL_KINDS = {"lp", "dp", "Dp", "wp", "Wp"}
-LOCAL_KINDS = {"ls", "ds", "Ds", "ws", "Ws"}
-WEIGHTED_KINDS = {"wp", "Wp", "ws", "Ws"}
 
 
 @dataclass(frozen=True)

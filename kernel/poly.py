@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from operator import le as _le
 
-from typing import Any, Iterable, Iterator, Sequence
+from typing import Any, Iterator, Sequence
 
 from .coeffs import Field
 from .order import Exp, MonomialOrder
@@ -314,9 +314,3 @@ def sub_exp(a: Exp, b: Exp) -> Exp:
 
 def add_exp(a: Exp, b: Exp) -> Exp:
     return tuple([x + y for x, y in zip(a, b)])
-
-
-def polys_ring(polys: Iterable[Poly]) -> PolyRing | None:
-    for p in polys:
-        return p.ring
-    return None

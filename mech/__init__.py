@@ -12,6 +12,16 @@ Python API::
     s["f"] = to_sympy(s.eval("x+y"))**2   # sympy expressions become polys
     s.execute("f;")                    # 'x2+2xy+y2\\n'
 """
+from pathlib import Path as _Path
+
+# In a checkout, the language's packages (dsl/, kernel/, stdlib/) sit beside this folder and the
+# installed package maps them to mech.dsl, mech.kernel, mech.stdlib.  When this folder is the
+# one imported (a raw checkout, or the checkout's root shadowing an installed copy), look for
+# them beside it too.
+_CHECKOUT = _Path(__file__).resolve().parent.parent
+if (_CHECKOUT / "dsl" / "singular.lark").is_file() and str(_CHECKOUT) not in __path__:
+    __path__.append(str(_CHECKOUT))
+
 from .dsl.convert import to_sympy
 from .dsl.errors import (MechError, MechInternalError, MechNameError, MechRuntimeError, MechSyntaxError,
                          MechTypeError)

@@ -570,7 +570,7 @@ def report_latex(a: Analysis) -> str:
 # ---------------------------------------------------------------- commands (LIB "mechanism.lib")
 from mech.dsl.errors import MechRuntimeError  # noqa: E402
 from mech.dsl.values import Ideal, List, Ring  # noqa: E402
-from mech.stdlib.registry import command  # noqa: E402
+from mech.dsl.registry import command  # noqa: E402
 
 _CACHE: dict[str, Analysis] = {}
 REPORT_FORMAT = "text"  # analyze's default format (mech --json sets "json")

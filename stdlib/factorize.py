@@ -22,7 +22,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError
 from ..dsl.values import Ideal, IntVec, List
 from ..kernel import Poly
-from .registry import command
+from ..dsl.registry import command
 from .standard import normalize
 
 Factors = list[tuple[Poly, int]]

@@ -7,7 +7,7 @@ from __future__ import annotations
 from ..dsl.errors import MechRuntimeError
 from ..dsl.values import Ideal, IntVec
 from ..kernel import hilbert as H
-from .registry import command
+from ..dsl.registry import command
 
 
 def _leading(ctx, I: Ideal) -> list[tuple[int, ...]]:

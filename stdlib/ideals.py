@@ -11,7 +11,7 @@ from ..dsl.values import Ideal, IntVec, List
 from ..kernel import Poly
 from ..kernel import homog as _homog
 from ..kernel import ideals as K
-from .registry import command
+from ..dsl.registry import command
 from .standard import normalize
 
 

@@ -22,7 +22,7 @@ from ..kernel.matrix import jacobian, minors
 from ..kernel.mora import standard_basis as mora_std
 from ..kernel.order import Block, MonomialOrder
 from ..kernel.primdec import equidim
-from .registry import command
+from ..dsl.registry import command
 from .standard import normalize
 
 

@@ -17,7 +17,7 @@ from ..dsl.m2_printing import Factored, Opt, Symbol, to_string
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, OrderBlock, Ring, typeof
 from ..kernel import Poly
 from ..kernel import ideals as K
-from .registry import command
+from ..dsl.registry import command
 from .standard import normalize, standard_basis
 
 _KINDS = {"GRevLex": "dp", "Lex": "lp", "GLex": "Dp"}
@@ -441,7 +441,7 @@ def _call(ctx, f: Any, x: Any) -> Any:
     if isinstance(f, M2Function):
         return ctx.call_function(f, [x])
     if isinstance(f, CommandRef):
-        from .registry import invoke
+        from ..dsl.registry import invoke
         return invoke(f.command, ctx, [x])
     raise MechTypeError(f"a {typeof(f)} is not a function")
 

@@ -6,7 +6,7 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.values import Ideal, Matrix
 from ..kernel import Poly
 from ..kernel import matrix as KM
-from .registry import command
+from ..dsl.registry import command
 
 
 def _kernel(M: Matrix) -> KM.Matrix:

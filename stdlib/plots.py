@@ -22,7 +22,7 @@ from mech.dsl.values import IntVec, List
 from mech.kernel import Poly
 from mech.stdlib.analysis import Analysis, require_numeric, run_analysis
 from mech.stdlib.mechanism import Mechanism
-from mech.stdlib.registry import command
+from mech.dsl.registry import command
 
 if TYPE_CHECKING:
     from mech.stdlib._scene import Scene

@@ -13,7 +13,7 @@ from ..dsl.values import Ideal, List
 from ..kernel import Poly
 from ..kernel import local as _local
 from ..kernel import primdec as P
-from .registry import command
+from ..dsl.registry import command
 from .standard import normalize
 
 

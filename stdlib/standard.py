@@ -18,7 +18,7 @@ from ..kernel import Poly
 from ..kernel.dimension import krull_dim
 from ..kernel.groebner import groebner as _groebner
 from ..kernel.groebner import normal_form
-from .registry import TOPICS, command
+from ..dsl.registry import TOPICS, command
 
 # ---------------------------------------------------------------- standard bases
 
@@ -72,10 +72,7 @@ def standard_basis(ideal: Ideal) -> list[Poly]:
     if ring.order.is_global:
         basis = _groebner(gens, ring)
     else:
-        try:
-            from ..kernel.mora import standard_basis as local_std
-        except ImportError:
-            raise MechRuntimeError("std for local and mixed orderings (ls, ds, ...) is not supported yet") from None
+        from ..kernel.mora import standard_basis as local_std
         basis = local_std(gens, ring)
     return [normalize(p) for p in basis]
 
@@ -113,10 +110,7 @@ def groebner(I: Ideal) -> Ideal:
 def _nf(f: Poly, basis: list[Poly]) -> Poly:
     if f.ring.order.is_global:
         return normal_form(f, basis)
-    try:
-        from ..kernel.mora import weak_normal_form
-    except ImportError:
-        raise MechRuntimeError("reduce for local and mixed orderings is not supported yet") from None
+    from ..kernel.mora import weak_normal_form
     return weak_normal_form(f, basis)
 
 

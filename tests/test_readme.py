@@ -7,7 +7,8 @@ import pytest
 
 from mech import Session
 
-ROOT = Path(__file__).resolve().parent.parent
+from tests.util import ROOT
+
 README = (ROOT / "README.md").read_text()
 
 

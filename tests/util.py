@@ -2,9 +2,10 @@
 from __future__ import annotations
 
 import re
-from fractions import Fraction
 import shutil
 import subprocess
+from fractions import Fraction
+from pathlib import Path
 
 import pytest
 
@@ -12,6 +13,8 @@ from mech import MechError, Session
 from mech.kernel import QQ, MonomialOrder, Poly, PolyRing
 
 SINGULAR = shutil.which("Singular")
+#: The checkout's root (examples/, docs/, tests/corpus/ are found from it).
+ROOT = Path(__file__).resolve().parent.parent
 
 
 def run(src: str) -> str:

@@ -1,0 +1,314 @@
+"""The command registry: how Python functions become commands of the language.
+
+A command is a function decorated with :func:`command`; its parameter annotations declare the
+argument types, which the registry checks and coerces (Singular's automatic conversions
+int -> number -> poly -> ideal -> matrix, int -> intvec) before the call::
+
+    from mech.dsl.registry import command
+    from mech.dsl.values import Ideal
+
+    @command("std")
+    def std(ctx, I: Ideal) -> Ideal:
+        '''std(I): a standard basis of the ideal I.'''
+        ...
+
+Registering the same name again adds an overload (tried in order: first without, then with
+coercion).  ``lib="primdec.lib"`` makes the command visible only after ``LIB "primdec.lib";``.
+``raw=True`` passes the unevaluated argument trees instead of values (for ``defined(x)``,
+``imap(r, I)``...).  The docstring is what ``help name;`` prints.  A first parameter named
+``ctx`` receives the interpreter's :class:`Context`.  Every module of ``mech.stdlib`` is imported
+at start-up (see :func:`load_commands`), so command modules import heavy packages (sympy) lazily.
+"""
+from __future__ import annotations
+
+import importlib
+import inspect
+import pkgutil
+import types
+import typing
+from dataclasses import dataclass, field
+from typing import Any, Callable, Optional, Protocol
+
+from .errors import MechNameError, MechTypeError
+from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring,
+                          to_ideal, to_intvec, to_matrix, to_number, to_poly, typeof)
+from ..kernel import Poly, PolyRing
+
+#: Library names ``LIB "...";`` accepts; a command's ``lib=`` adds its library.
+LIBRARIES: set[str] = {"primdec.lib", "sing.lib", "elim.lib", "poly.lib", "polylib.lib", "general.lib",
+                       "matrix.lib", "ring.lib", "standard.lib"}
+
+
+class Context(Protocol):
+    """What a command sees of the interpreter (the first parameter ``ctx``)."""
+
+    ring: Optional[Ring]          #: the basering (None before any ring is declared)
+    argnames: list[str]           #: names of the argument expressions, "_" for unnamed ones
+    options: set[str]             #: active option(...) names, e.g. "redSB"
+
+    def basering(self) -> Ring:
+        """The basering; raises a clear error when no ring is active."""
+
+    def write(self, text: str) -> None:
+        """Print ``text`` (include the newline)."""
+
+    def warn(self, message: str) -> None:
+        """Print Singular's warning line ``// ** message``."""
+
+    def assume_std(self, ideal: Ideal, argno: int) -> None:
+        """Warn ``// ** I is no standard basis`` when argument ``argno`` (0-based) is not marked as one."""
+
+    def eval(self, node: Any) -> Any:
+        """Evaluate an argument tree (raw commands)."""
+
+
+@dataclass
+class Overload:
+    func: Callable
+    wants_ctx: bool
+    names: list[str]
+    specs: list[Optional[tuple]] = field(default_factory=list)
+    required: int = 0
+    varargs: Optional[tuple] = None
+    has_varargs: bool = False
+    resolved: bool = False
+
+
+@dataclass
+class Command:
+    name: str
+    lib: Optional[str]
+    raw: bool
+    doc: str
+    overloads: list[Overload]
+
+    def usage(self) -> str:
+        outs = []
+        for ov in self.overloads:
+            _resolve(ov)
+            parts = [_spec_name(s) for s in ov.specs]
+            for i in range(ov.required, len(parts)):
+                parts[i] = f"[{parts[i]}]"
+            if ov.has_varargs:
+                parts.append(f"{_spec_name(ov.varargs)}...")
+            outs.append(f"{self.name}({', '.join(parts)})")
+        return " or ".join(outs)
+
+
+COMMANDS: dict[str, Command] = {}
+#: Commands of the other surface dialects (``dialect="m2"``), by dialect: invisible to Singular code.
+DIALECTS: dict[str, dict[str, Command]] = {}
+
+
+def command(name: str, lib: Optional[str] = None, raw: bool = False,
+            dialect: Optional[str] = None) -> Callable[[Callable], Callable]:
+    """Register the decorated function as the command ``name`` (or as one more overload of it);
+    ``dialect="m2"``: a command of the Macaulay2 dialect only."""
+    def deco(func: Callable) -> Callable:
+        sig = inspect.signature(func)
+        params = list(sig.parameters.values())
+        wants_ctx = bool(params) and params[0].name == "ctx"
+        if wants_ctx:
+            params = params[1:]
+        ov = Overload(func, wants_ctx, [p.name for p in params if p.kind != p.VAR_POSITIONAL])
+        ov.required = sum(1 for p in params if p.default is p.empty and p.kind == p.POSITIONAL_OR_KEYWORD)
+        ov.has_varargs = any(p.kind == p.VAR_POSITIONAL for p in params)
+        table = COMMANDS if dialect is None else DIALECTS.setdefault(dialect, {})
+        cmd = table.get(name)
+        doc = inspect.getdoc(func) or ""
+        if cmd is None:
+            table[name] = Command(name, lib, raw, doc, [ov])
+        else:
+            cmd.overloads.append(ov)
+            if doc and not cmd.doc:
+                cmd.doc = doc
+        if lib:
+            LIBRARIES.add(lib)
+        return func
+    return deco
+
+
+# ---------------------------------------------------------------- argument types
+_SPEC_NAMES = {int: "int", str: "string", Number: "number", Poly: "poly", Ideal: "ideal", Matrix: "matrix",
+               IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc"}
+
+
+def _spec_name(spec: Optional[tuple]) -> str:
+    if spec is None:
+        return "any"
+    return "|".join(_SPEC_NAMES.get(t, getattr(t, "type_name", None) or getattr(t, "__name__", str(t)))
+                    for t in spec)
+
+
+def _to_spec(hint: Any) -> Optional[tuple]:
+    if hint is inspect.Parameter.empty or hint is Any or hint is object:
+        return None
+    origin = typing.get_origin(hint)
+    if origin in (typing.Union, types.UnionType):
+        out: list = []
+        for h in typing.get_args(hint):
+            if h is type(None):
+                continue
+            s = _to_spec(h)
+            if s is None:
+                return None
+            out.extend(s)
+        return tuple(out)
+    return (hint,)
+
+
+def _resolve(ov: Overload) -> None:
+    if ov.resolved:
+        return
+    hints = typing.get_type_hints(ov.func)
+    sig = inspect.signature(ov.func)
+    params = list(sig.parameters.values())[1 if ov.wants_ctx else 0:]
+    for p in params:
+        spec = _to_spec(hints.get(p.name, inspect.Parameter.empty))
+        if p.kind == p.VAR_POSITIONAL:
+            ov.varargs = spec
+        else:
+            ov.specs.append(spec)
+    ov.resolved = True
+
+
+_NO = object()
+
+# implicit conversions: target type -> (source types, converter(value, ring))
+_COERCE: dict[type, tuple[tuple, Callable[[Any, Optional[PolyRing]], Any]]] = {
+    Number: ((int,), to_number),
+    Poly: ((int, Number), to_poly),
+    Ideal: ((int, Number, Poly), to_ideal),
+    Matrix: ((Ideal,), to_matrix),
+    IntVec: ((int,), lambda v, r: to_intvec(v)),
+}
+
+
+def _accept(spec: Optional[tuple], v: Any, ring: Optional[PolyRing], coerce: bool) -> Any:
+    if spec is None:
+        return v
+    for t in spec:
+        if t is int:
+            if type(v) is int:
+                return v
+        elif isinstance(v, t):
+            return v
+    if coerce:
+        for t in spec:
+            rule = _COERCE.get(t)
+            if rule and isinstance(v, rule[0]) and not isinstance(v, bool):
+                try:
+                    return rule[1](v, ring)
+                except Exception:
+                    continue
+    return _NO
+
+
+def _bind(ov: Overload, args: list, ring: Optional[PolyRing], coerce: bool) -> Optional[list]:
+    _resolve(ov)
+    n = len(args)
+    if n < ov.required or (not ov.has_varargs and n > len(ov.specs)):
+        return None
+    out = []
+    for i, a in enumerate(args):
+        spec = ov.specs[i] if i < len(ov.specs) else ov.varargs
+        c = _accept(spec, a, ring, coerce)
+        if c is _NO:
+            return None
+        out.append(c)
+    return out
+
+
+def invoke(cmd: Command, ctx: Any, args: list) -> Any:
+    """Call ``cmd`` with evaluated arguments: pick the overload, coerce, convert the result."""
+    ring = ctx.ring.poly if ctx.ring is not None else None
+    for coerce in (False, True):
+        for ov in cmd.overloads:
+            bound = _bind(ov, args, ring, coerce)
+            if bound is not None:
+                if coerce and hasattr(ctx, "argnames"):
+                    ctx.argnames = [n if b is a else "_" for n, a, b in zip(ctx.argnames, args, bound)]
+                result = ov.func(ctx, *bound) if ov.wants_ctx else ov.func(*bound)
+                return result_value(result)
+    got = ", ".join(typeof(a) for a in args)
+    raise MechTypeError(f"wrong arguments for {cmd.name}: got ({got}), expected {cmd.usage()}")
+
+
+def invoke_raw(cmd: Command, ctx: Any, nodes: list) -> Any:
+    """Call a raw command with the argument trees, checking their number."""
+    ov = cmd.overloads[0]
+    if len(nodes) < ov.required or (not ov.has_varargs and len(nodes) > len(ov.names)):
+        want = ov.required if ov.required == len(ov.names) or ov.has_varargs else f"{ov.required} to {len(ov.names)}"
+        more = " or more" if ov.has_varargs and ov.required else ""
+        raise MechTypeError(f"wrong number of arguments for {cmd.name}: got {len(nodes)}, expected {want}{more}")
+    return result_value(ov.func(ctx, *nodes))
+
+
+def result_value(v: Any) -> Any:
+    """A command's Python result as a value of the language."""
+    if v is None:
+        return NONE
+    if isinstance(v, bool):
+        return int(v)
+    if isinstance(v, list):
+        return List(v)
+    if isinstance(v, tuple):
+        return ExprList(v)
+    return v
+
+
+# ---------------------------------------------------------------- lookup and libraries
+_loaded = False
+
+
+def load_commands() -> None:
+    """Import every module of ``mech.stdlib`` once, registering their commands."""
+    global _loaded
+    if _loaded:
+        return
+    _loaded = True
+    pkg = importlib.import_module("mech.stdlib")
+    for info in pkgutil.iter_modules(pkg.__path__):
+        if info.name != "registry" and not info.name.startswith("_"):
+            importlib.import_module(f"mech.stdlib.{info.name}")
+
+
+def find(name: str, loaded_libs: set[str]) -> Optional[Command]:
+    """The command ``name`` if it is built in or its library is loaded."""
+    cmd = COMMANDS.get(name)
+    if cmd is None or (cmd.lib and cmd.lib not in loaded_libs):
+        return None
+    return cmd
+
+
+def unknown_command(name: str) -> MechNameError:
+    cmd = COMMANDS.get(name)
+    if cmd is not None and cmd.lib:
+        return MechNameError(f"unknown command '{name}' (it is in {cmd.lib}: load it with LIB \"{cmd.lib}\";)")
+    return MechNameError(f"unknown command '{name}'")
+
+
+def check_library(name: str) -> None:
+    if name not in LIBRARIES:
+        known = " ".join(sorted(LIBRARIES))
+        raise MechNameError(f"unknown library '{name}' (known: {known})")
+
+
+def is_builtin(name: str) -> bool:
+    cmd = COMMANDS.get(name)
+    return cmd is not None and not cmd.lib
+
+
+#: Help texts of language topics that are not commands (keywords, types): ``help if;``.
+TOPICS: dict[str, str] = {}
+
+
+def help_text(name: str) -> Optional[str]:
+    cmd = COMMANDS.get(name)
+    if cmd is None:
+        return TOPICS.get(name)
+    head = f"{cmd.usage()}" + (f"    [{cmd.lib}]" if cmd.lib else "")
+    return head + ("\n" + cmd.doc if cmd.doc else "")
+
+
+__all__ = ["command", "Context", "COMMANDS", "LIBRARIES", "invoke", "find", "load_commands"]

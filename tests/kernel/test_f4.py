@@ -1,0 +1,174 @@
+"""The F4 engine (kernel/f4.py, modular.py, monomials.py) against Buchberger's reduced bases."""
+import random
+
+import flint
+import pytest
+
+from mech.kernel import GF, QQ, Block, MonomialOrder, groebner
+from mech.kernel.f4 import F4, TraceMismatch, pack_polys, replay
+from mech.kernel.modular import ExactReducer, Reconstructor, primes, primitive, ratrec, verify_basis
+from mech.kernel.monomials import Packing
+from tests.util import cyclic, katsura, ring
+
+P32003 = GF(32003)
+
+
+def same(gens, R=None):
+    """F4's reduced basis equals Buchberger's (as lists of polynomials, leading terms too)."""
+    R = R or gens[0].ring
+    G = groebner(gens, R, engine="f4")
+    B = groebner(gens, R, engine="buchberger")
+    assert G == B
+    assert [g.lm() for g in G] == [max(g.terms, key=R.order.key) for g in G]
+    return G
+
+
+@pytest.mark.parametrize("field", [QQ, P32003], ids=["QQ", "Z/32003"])
+def test_katsura4_cyclic4_cyclic5(field):
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)], field)
+    assert len(same(katsura(R, 4))) == 13
+    assert len(same(cyclic(ring("abcd", [Block("dp", 4)], field)))) == 7
+    assert len(same(cyclic(ring("abcde", [Block("dp", 5)], field)))) == 20
+
+
+@pytest.mark.parametrize("field", [QQ, P32003], ids=["QQ", "Z/32003"])
+def test_small_classics(field):
+    R = ring("xyz", [Block("dp", 3)], field)
+    x, y, z = R.gens()
+    assert [g.lm() for g in same([x**2 - y, x**3 - z])] == [(0, 2, 0), (1, 1, 0), (2, 0, 0)]
+    R = ring("xyz", [Block("lp", 3)], field)
+    x, y, z = R.gens()
+    same([x**2 + y**2 + z**2 - 1, x - y**2, y * z - x])
+    R = ring("xyzuv", [Block("dp", 3), Block("dp", 2)], field)
+    x, y, z, u, v = R.gens()
+    same([x**2 + y * u - 1, y**2 - x * v, z**3 - u**2 * v, x * y * z - u - v])
+
+
+def test_block_and_weighted_orderings():
+    R = ring("abcdxy", [Block("dp", 4), Block("dp", 2)])
+    a, b, c, d, x, y = R.gens()
+    same([x - a * b, y - c * d, a**2 + b**2 - 1, c**2 + d**2 - 1])  # an elimination
+    R = ring("xyzuv", [Block("lp", 2), Block("dp", 3)])
+    x, y, z, u, v = R.gens()
+    same([x * y - z, x**2 - u * v + 1, y**2 - z * u, z * v - x])
+    R = ring("xyz", [Block("wp", 3, (3, 1, 2))], P32003)
+    x, y, z = R.gens()
+    same([x**2 - y * z, y**3 + x - z, x * z - y**2 + 1])
+    R = ring("xyz", [Block("a", 3, (0, 1, 1)), Block("lp", 3)])
+    x, y, z = R.gens()
+    same([x**2 - y * z, y**3 + x - z, x * z - y**2 + 1])
+
+
+def test_big_rational_coefficients():
+    R = ring("xyz", [Block("dp", 3)])
+    x, y, z = R.gens()
+    big = flint.fmpq(3**80 + 7, 2**70 - 1)
+    same([big * x**2 - y * z + flint.fmpq(1, 10**30), x * y - big * z**2, y**2 - x + big * big])
+
+
+def test_unit_zero_constant():
+    for field in (QQ, P32003):
+        R = ring("xy", [Block("dp", 2)], field)
+        x, y = R.gens()
+        assert groebner([x, x - 1], engine="f4") == [R.one()]
+        assert groebner([x**2 * y - 1, x * y**2 - x, x**3 - y**2 - 2], engine="f4") == same(
+            [x**2 * y - 1, x * y**2 - x, x**3 - y**2 - 2])
+        assert groebner([R.zero()], engine="f4") == []
+        assert groebner([R.const(5), x], engine="f4") == [R.one()]
+        assert groebner([x**3 - 1, x * y + 3, 0 * x], engine="f4") == same([x**3 - 1, x * y + 3])
+
+
+def test_random_systems_match_buchberger():
+    rng = random.Random(7)
+    orders = [[Block("dp", 3)], [Block("lp", 3)], [Block("Dp", 3)], [Block("dp", 1), Block("dp", 2)],
+              [Block("wp", 3, (1, 2, 3))]]
+    for trial in range(40):
+        R = ring("xyz", rng.choice(orders), rng.choice([QQ, P32003, GF(7)]))
+        gens = []
+        for _ in range(rng.randint(1, 4)):
+            terms = {tuple(rng.randint(0, 3) for _ in range(3)): rng.randint(-9, 9) for _ in range(rng.randint(1, 4))}
+            gens.append(R.from_dict(terms))
+        gens = [g for g in gens if not g.is_zero()] or [R.gens()[0]]
+        same(gens, R)
+
+
+def test_auto_engine_is_f4_for_larger_systems():
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    assert groebner(katsura(R, 4)) == groebner(katsura(R, 4), engine="buchberger")
+
+
+def test_packing_matches_the_ordering():
+    rng = random.Random(3)
+    for blocks in ([Block("dp", 4)], [Block("lp", 4)], [Block("Dp", 4)], [Block("wp", 4, (3, 1, 2, 5))],
+                   [Block("dp", 2), Block("lp", 2)], [Block("a", 4, (1, 0, 2, 0)), Block("dp", 4)],
+                   [Block("M", 4, (1, 1, 1, 1, 0, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0))]):
+        order = MonomialOrder(blocks)
+        P = Packing(order, 31)
+        for _ in range(300):
+            a, b = (tuple(rng.randrange(8) for _ in range(4)) for _ in range(2))
+            pa, pb = P.pack(a), P.pack(b)
+            assert (pa < pb) == (order.key(a) < order.key(b))
+            assert P.unpack(pa) == a and P.degree(pa) == sum(a)
+            assert P.divides(pa, pb) == all(x <= y for x, y in zip(a, b))
+            assert P.lcm(pa, pb) == P.pack(tuple(max(x, y) for x, y in zip(a, b)))
+            assert P.pack(tuple(x + y for x, y in zip(a, b))) == pa + pb
+
+
+def test_trace_replay_and_mismatch():
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    gens = [primitive(g.terms) for g in katsura(R, 4)]
+    P = Packing(R.order, 31)
+
+    class Int:  # primitive integer polynomials with the Poly interface pack_polys needs
+        def __init__(self, t):
+            self.terms = t
+    rows = pack_polys([Int(t) for t in gens], P, lambda c: c)
+    engines = {}
+    for p in (1000003, 998244353 // 32 | 1, 32003):
+        if not flint.fmpz(p).is_prime():
+            continue
+        engines[p] = F4([(ms, [c % p for c in cs]) for ms, cs in rows], P, p, record=True)
+        engines[p].run()
+    p0, e0 = next(iter(engines.items()))
+    for p, e in engines.items():
+        got = replay(e0.trace, [[c % p for c in cs] for _, cs in rows], p)
+        assert got == [cs for _, cs in F4([(ms, [c % p for c in cs]) for ms, cs in rows], P, p).run()]
+    # a generator changed so that the recorded path no longer applies
+    bad = [[c % 101 for c in cs] for _, cs in rows]
+    bad[0] = [0] * len(bad[0])
+    bad[0][0] = 1
+    with pytest.raises(TraceMismatch):
+        replay(e0.trace, bad, 101)
+
+
+def test_rational_reconstruction_and_lift():
+    m = 1000003 * 998244353
+    for n, d in [(3, 7), (-12345, 679), (0, 1), (1, 1), (-1, 99991)]:
+        a = n * pow(d, -1, m) % m
+        assert ratrec(a, m, 10**7) == (n, d)
+    rec = Reconstructor([2, 1])
+    values = [[5 * pow(3, -1, m) % m, 7 * pow(3, -1, m) % m], [-2 * pow(9, -1, m) % m]]
+    assert rec.attempt(values, m) == [[flint.fmpq(5, 3), flint.fmpq(7, 3)], [flint.fmpq(-2, 9)]]
+    big = flint.fmpq(3**20, 7**10)
+    M = m * 1000033 * 1000037
+    a = int(big.p) * pow(int(big.q), -1, M) % M
+    assert Reconstructor([1]).attempt([[a % m]], m) != [[big]]  # too few primes: another fraction
+    assert Reconstructor([1]).attempt([[a]], M) == [[big]]
+
+
+def test_verification_rejects_a_wrong_basis():
+    R = ring("xyz", [Block("dp", 3)])
+    x, y, z = R.gens()
+    gens = [x**2 - y, x**3 - z]
+    G = groebner(gens, engine="f4")
+    basis = [dict(g.terms) for g in G]
+    ints = [primitive(g.terms) for g in gens]
+    assert verify_basis(basis, ints, R, primes(), exact=True)
+    assert verify_basis(basis, ints, R, primes())
+    wrong = [dict(b) for b in basis]
+    e = next(iter(wrong[0]))
+    wrong[0][(0, 0, 1)] = wrong[0].get((0, 0, 1), 0) + flint.fmpq(1, 3)  # y^2 - x z + z/3
+    assert not verify_basis(wrong, ints, R, primes(), exact=True)
+    assert not verify_basis(wrong, ints, R, primes())
+    assert e == (0, 2, 0)
+    assert ExactReducer(basis, R.order).reduces_to_zero(primitive((x**5 - z * y).terms))
