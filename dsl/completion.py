@@ -9,9 +9,9 @@ from typing import Callable, Iterator
 from prompt_toolkit.completion import CompleteEvent, Completer, Completion
 from prompt_toolkit.document import Document
 
-from .highlight import KEYWORDS, SYSTEM_VARIABLES, TYPES
-from .interpreter import STDLIB_DIR, Interpreter
-from .parser import _scan
+from .highlight import KEYWORDS, SYSTEM_VARIABLES, type_words
+from .interpreter import Interpreter
+from .split import scan
 
 #: The shell's own commands (handled by the REPL, not the language) and what they do.
 SHELL_COMMANDS = {
@@ -84,19 +84,19 @@ def _commands(interp: Interpreter) -> list[tuple[str, str]]:
 
 
 def _words() -> list[tuple[str, str]]:
-    return ([(w, "keyword") for w in sorted(KEYWORDS)] + [(t, "type") for t in sorted(TYPES)]
+    return ([(w, "keyword") for w in sorted(KEYWORDS)] + [(t, "type") for t in sorted(type_words())]
             + [(s, "system variable") for s in SYSTEM_VARIABLES])
 
 
 def _libraries(interp: Interpreter) -> list[str]:
-    names = set(interp.registry.LIBRARIES) | {p.name for p in STDLIB_DIR.glob("*.lib")}
+    names = set(interp.registry.LIBRARIES) | {p.name for d in interp.registry.LIBRARY_DIRS for p in d.glob("*.lib")}
     return sorted(names)
 
 
 def _inside_string_or_comment(text: str) -> bool:
     """Whether the end of ``text`` is inside a string or a comment."""
     last = None
-    for last in _scan(text):
+    for last in scan(text):
         pass
     if last is None or last[2] < len(text):
         return False

@@ -1,4 +1,4 @@
-"""Conversions between mech values and sympy expressions (sympy is imported only here, lazily)."""
+"""Conversions between kernel polynomials and sympy expressions (sympy is imported lazily, in the functions)."""
 from __future__ import annotations
 
 from fractions import Fraction
@@ -45,27 +45,6 @@ def poly_to_sympy(p: Poly) -> Any:
                 term *= s ** k
         total += term
     return total
-
-
-def to_sympy(v: Any) -> Any:
-    """A value of the language as sympy objects: polynomials and numbers as expressions, ideals and
-    lists as Python lists, matrices as ``sympy.Matrix``; ints and strings stay as they are."""
-    import sympy
-
-    from .values import ExprList, Ideal, IntVec, List, Matrix, Number
-    if isinstance(v, Poly):
-        return poly_to_sympy(v)
-    if isinstance(v, Number):
-        return poly_to_sympy(v.to_poly())
-    if isinstance(v, Ideal):
-        return [poly_to_sympy(g) for g in v.gens]
-    if isinstance(v, Matrix):
-        return sympy.Matrix(v.nrows, v.ncols, [poly_to_sympy(g) for g in v.entries])
-    if isinstance(v, IntVec):
-        return list(v.values)
-    if isinstance(v, (List, ExprList)):
-        return [to_sympy(x) for x in v.items]
-    return v
 
 
 def sympy_to_poly(expr: Any, ring: PolyRing) -> Poly:

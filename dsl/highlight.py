@@ -11,21 +11,28 @@ from typing import Any, Iterable, Iterator, Optional
 from pygments.lexer import RegexLexer, words
 from pygments.token import Comment, Keyword, Name, Number, Operator, Punctuation, String, Text, Whitespace
 
+from .types import type_names
+
 #: Statement keywords and word operators of the language.
 KEYWORDS = ("if", "else", "for", "while", "proc", "static", "return", "break", "continue", "kill", "export",
             "keepring", "setring", "LIB", "quit", "exit", "help", "and", "or", "not", "div", "mod")
-#: Type names (declarations ``poly f = ...;``).
+#: The built-in type names (declarations ``poly f = ...;``); :func:`type_words` adds the libraries' types.
 TYPES = ("int", "bigint", "number", "poly", "ideal", "matrix", "list", "string", "intvec", "intmat", "map",
-         "def", "ring", "qring", "vector", "module", "resolution", "link", "mechanism")
+         "def", "ring", "qring", "vector", "module", "resolution", "link")
 #: Names the interpreter itself gives a value.
 SYSTEM_VARIABLES = ("basering", "timer", "rtimer", "voice", "printlevel")
 
 IDENT = r"[A-Za-z_@][A-Za-z0-9_@]*"
 
 
+def type_words() -> tuple[str, ...]:
+    """The type keywords: the built-in types and those libraries registered (:mod:`mech.dsl.types`)."""
+    return TYPES + type_names()
+
+
 def _registry_commands() -> frozenset[str]:
     from . import registry
-    registry.load_commands()
+    registry.load_plugins()
     return frozenset(registry.COMMANDS)
 
 
@@ -66,7 +73,10 @@ class MechLexer(RegexLexer):
                                ) -> Iterator[tuple[int, Any, str]]:
         if self._commands is None:
             self._commands = _registry_commands()
+        plugin_types = frozenset(type_names())
         for index, token, value in super().get_tokens_unprocessed(text, stack):
-            if token is Name and value in self._commands:
+            if token is Name and value in plugin_types:
+                token = Keyword.Type
+            elif token is Name and value in self._commands:
                 token = Name.Builtin
             yield index, token, value

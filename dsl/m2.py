@@ -1,360 +1,34 @@
-"""The Macaulay2 dialect: ``m2.lark`` parsed into mech's AST, and the interpreter that runs it.
-
-The tree uses the shared nodes of :mod:`mech.dsl.ast` (names, literals, operators, calls, ranges)
-plus the few Macaulay2 constructs Singular lacks, defined here: lists ``{...}``, rings ``QQ[x,y]``,
-options ``a => b``, functions ``(a,b) -> ...``, assignments, loops and conditionals as expressions
-(``for i from 1 to n do ...``, ``for x in L list ...``).  :class:`M2Interpreter` is mech's
-interpreter with Macaulay2's name rules (global variables of any type; assigning a ring makes its
-variables visible, as Macaulay2's ``use``), its commands (``stdlib/m2.py``, registered with
-``dialect="m2"``) and its output (``m2_printing.py``: ``o1 = ...`` for statements not ending in ``;``).
+"""The Macaulay2 dialect's interpreter: mech's interpreter with Macaulay2's name rules (global
+variables of any type; assigning a ring makes its variables visible, as Macaulay2's ``use``), its
+rings and monomial orders (``QQ[x,y, MonomialOrder => Lex]``), its commands (registered with
+``dialect="m2"``, e.g. by ``stdlib/m2.py``), its operators (``I : J``, ``f % I`` and ``==`` on
+ideals, registered by the same library with :func:`mech.dsl.registry.operator`) and its output
+(``m2_printing.py``: ``o1 = ...`` for statements not ending in ``;``).  The tree and the parser
+are :mod:`mech.dsl.m2_ast` and :mod:`mech.dsl.m2_parser`.
 """
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
-from pathlib import Path
-from typing import Any, Iterator, Optional
+from typing import Any, Optional
 
-from lark import Lark, Token, Transformer_NonRecursive, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedInput
-
-from ..kernel import Poly
 from . import ast as A
 from . import ops
 from .errors import MechError, MechNameError, MechRuntimeError, MechSyntaxError, MechTypeError, Source
-from .interpreter import Frame, Interpreter, Var, _Break, _Return
+from .interpreter import Interpreter
+from .m2_ast import (BreakExpr, Coeffs, ForLoop, Function, IfExpr, Length, ListLit, Option, ReturnExpr, RingCons,
+                     Seq, SetVar, Statement, Subscript, WhileLoop)
+from .m2_orders import order_blocks
+from .m2_parser import is_complete, parse
 from .m2_printing import Opt, Symbol, to_string
-from .parser import _pos, _tpos, build
 from .rings import make_ring
+from .scopes import Frame, Var
+from .signals import BreakSignal, ReturnSignal
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, OrderBlock, Ring, to_int, typeof
 
-GRAMMAR = Path(__file__).with_name("m2.lark")
+__all__ = ["M2Interpreter", "M2Function", "CommandRef", "parse", "run_m2_repl"]
 
 
-# ---------------------------------------------------------------- nodes Singular has no form for
-@dataclass(eq=False)
-class Coeffs(A.Expr):
-    """A coefficient ring: ``QQ`` (characteristic 0) or ``ZZ/p``."""
-    characteristic: int
-
-
-@dataclass(eq=False)
-class ListLit(A.Expr):
-    items: list[A.Expr]
-
-
-@dataclass(eq=False)
-class RingCons(A.Expr):
-    """``K[x, y, Option => v]``: a polynomial ring over ``K``."""
-    base: A.Expr
-    items: list[A.Expr]
-
-
-@dataclass(eq=False)
-class Option(A.Expr):
-    key: A.Expr
-    value: A.Expr
-
-
-@dataclass(eq=False)
-class Subscript(A.Expr):
-    """``x_1`` (an indexed ring variable) or ``L_0`` (an entry, counted from 0)."""
-    base: A.Expr
-    index: A.Expr
-
-
-@dataclass(eq=False)
-class Length(A.Expr):
-    """``#L``."""
-    operand: A.Expr
-
-
-@dataclass(eq=False)
-class SetVar(A.Expr):
-    """``name = value`` (its value is the value assigned)."""
-    target: A.Expr
-    value: A.Expr
-
-
-@dataclass(eq=False)
-class Function(A.Expr):
-    """``(a, b) -> body``."""
-    params: list[str]
-    body: A.Expr
-
-
-@dataclass(eq=False)
-class Seq(A.Expr):
-    """``(e1; e2; e3)``: evaluated in turn; the value of the last (none after a final ``;``)."""
-    exprs: list[A.Expr]
-    silent: bool
-
-
-@dataclass(eq=False)
-class ForLoop(A.Expr):
-    var: str
-    start: Optional[A.Expr]
-    stop: Optional[A.Expr]
-    items: Optional[A.Expr]
-    collect: bool
-    body: A.Expr
-
-
-@dataclass(eq=False)
-class WhileLoop(A.Expr):
-    cond: A.Expr
-    body: A.Expr
-
-
-@dataclass(eq=False)
-class IfExpr(A.Expr):
-    cond: A.Expr
-    then: A.Expr
-    orelse: Optional[A.Expr]
-
-
-@dataclass(eq=False)
-class ReturnExpr(A.Expr):
-    value: Optional[A.Expr]
-
-
-@dataclass(eq=False)
-class BreakExpr(A.Expr):
-    pass
-
-
-@dataclass(eq=False)
-class Statement(A.Stmt):
-    """A top-level expression; ``silent`` when a ``;`` ends it (no ``oN =`` output)."""
-    expr: A.Expr
-    silent: bool
-
-
-# ---------------------------------------------------------------- parsing
-#: tokens after which a line break ends the statement (an expression can end there)
-_ENDERS = {"IDENT", "COEFFS", "NUMBER", "STRING", "RPAR", "RSQB", "RBRACE", "BREAK", "RETURN"}
-_OPEN = {"LPAR", "LSQB", "LBRACE"}
-_CLOSE = {"RPAR", "RSQB", "RBRACE"}
-
-
-class _Lines:
-    """Postlexer: a line break separates statements only outside brackets after a complete expression."""
-
-    always_accept = ("_NL",)
-
-    def process(self, stream: Iterator[Token]) -> Iterator[Token]:
-        depth, prev = 0, None
-        for tok in stream:
-            if tok.type == "_NL":
-                if depth == 0 and prev in _ENDERS:
-                    yield tok
-                    prev = None
-                continue
-            if tok.type in _OPEN:
-                depth += 1
-            elif tok.type in _CLOSE:
-                depth = max(depth - 1, 0)
-            prev = tok.type
-            yield tok
-
-
-class _Build(Transformer_NonRecursive):
-    """Lark callbacks building the tree."""
-
-    @v_args(meta=True)
-    def start(self, meta, c):
-        body: list[A.Stmt] = []
-        for item in c:
-            if item is None:
-                continue
-            if isinstance(item, Token):
-                if item.type == "SEMI" and body:
-                    body[-1].silent = True
-                continue
-            body.append(Statement(item, False, pos=item.pos))
-        return A.Program(body, pos=_pos(meta))
-
-    @v_args(meta=True)
-    def name(self, meta, c):
-        return A.Name(str(c[0]), pos=_tpos(c[0]))
-
-    @v_args(meta=True)
-    def coeffs(self, meta, c):
-        text = str(c[0])
-        char = int(text.split("/")[1]) if "/" in text else 0
-        if text.startswith("ZZ") and "/" not in text:
-            raise MechSyntaxError("the integers ZZ are not a field: use QQ or ZZ/p", _tpos(c[0]))
-        return Coeffs(char, pos=_tpos(c[0]))
-
-    @v_args(meta=True)
-    def int_lit(self, meta, c):
-        return A.IntLit(int(c[0]), pos=_tpos(c[0]))
-
-    @v_args(meta=True)
-    def str_lit(self, meta, c):
-        text = str(c[0])[1:-1]
-        return A.StrLit(re.sub(r"\\(.)", lambda m: {"n": "\n", "t": "\t"}.get(m.group(1), m.group(1)), text),
-                        pos=_tpos(c[0]))
-
-    def exprlist(self, c):
-        return list(c)
-
-    def seq(self, c):
-        return list(c)
-
-    @v_args(meta=True)
-    def paren(self, meta, c):
-        pos = _pos(meta)
-        if c[0] is None:
-            return A.Tuple([], pos=pos)
-        parts = c[0]  # expression lists and the ';' tokens between them
-        if len(parts) == 1:
-            items = parts[0]
-            return items[0] if len(items) == 1 else A.Tuple(items, pos=pos)
-        exprs: list[A.Expr] = []
-        silent = False
-        for p in parts:
-            if isinstance(p, Token):
-                silent = True
-            elif p is not None:
-                if len(p) != 1:
-                    raise MechSyntaxError("a ';' sequence takes one expression between the ';'", pos)
-                exprs.extend(p)
-                silent = False
-        return Seq(exprs, silent, pos=pos)
-
-    @v_args(meta=True)
-    def sequence(self, meta, c):
-        return A.Tuple(list(c), pos=_pos(meta))
-
-    @v_args(meta=True)
-    def list_lit(self, meta, c):
-        return ListLit(c[0] or [], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def ring_cons(self, meta, c):
-        return RingCons(c[0], c[1] or [], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def subscript(self, meta, c):
-        return Subscript(c[0], c[1], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def hash_index(self, meta, c):
-        return A.Index(c[0], [c[1]], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def hash_index_neg(self, meta, c):
-        return A.Index(c[0], [A.UnOp("-", c[1], pos=c[1].pos)], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def length(self, meta, c):
-        return Length(c[0], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def apply(self, meta, c):
-        f, arg = c
-        args = arg.items if isinstance(arg, A.Tuple) else [arg]
-        return A.Call(f, args, pos=_pos(meta))
-
-    def _bin(op):  # noqa: N805 - a factory used in the class body
-        @v_args(meta=True)
-        def build(self, meta, c):
-            return A.BinOp(op, c[0], c[1], pos=_pos(meta))
-        return build
-
-    add, sub, mul, div, mod, pow = _bin("+"), _bin("-"), _bin("*"), _bin("/"), _bin("%"), _bin("^")
-    eq, ne, lt, le, gt, ge = _bin("=="), _bin("!="), _bin("<"), _bin("<="), _bin(">"), _bin(">=")
-    and_op, or_op, quotient = _bin("&&"), _bin("||"), _bin(":")
-
-    @v_args(meta=True)
-    def neg(self, meta, c):
-        return A.UnOp("-", c[0], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def not_op(self, meta, c):
-        return A.UnOp("!", c[0], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def range(self, meta, c):
-        return A.Range(c[0], c[1], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def assign(self, meta, c):
-        target = c[0]
-        if not isinstance(target, (A.Name, Subscript)):
-            raise MechSyntaxError("cannot assign to this expression", target.pos, underline=True)
-        return SetVar(target, c[1], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def lambda_(self, meta, c):
-        params = c[0].items if isinstance(c[0], A.Tuple) else [c[0]]
-        if not all(isinstance(p, A.Name) for p in params):
-            raise MechSyntaxError("a function's parameters are names: (a, b) -> ...", c[0].pos, underline=True)
-        return Function([p.id for p in params], c[1], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def option(self, meta, c):
-        return Option(c[0], c[1], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def for_range(self, meta, c):
-        var, start, stop, kind, body = c
-        return ForLoop(str(var), start, stop, None, kind.type == "LIST", body, pos=_pos(meta))
-
-    @v_args(meta=True)
-    def for_in(self, meta, c):
-        var, items, kind, body = c
-        return ForLoop(str(var), None, None, items, kind.type == "LIST", body, pos=_pos(meta))
-
-    @v_args(meta=True)
-    def while_(self, meta, c):
-        return WhileLoop(c[0], c[1], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def if_(self, meta, c):
-        return IfExpr(c[0], c[1], c[2], pos=_pos(meta))
-
-    @v_args(meta=True)
-    def return_(self, meta, c):
-        return ReturnExpr(c[0] if c else None, pos=_pos(meta))
-
-    @v_args(meta=True)
-    def break_(self, meta, c):
-        return BreakExpr(pos=_pos(meta))
-
-
-@lru_cache(maxsize=1)
-def _parser() -> Lark:
-    return Lark(GRAMMAR.read_text(), parser="lalr", propagate_positions=True, maybe_placeholders=True,
-                postlex=_Lines(), lexer="contextual")
-
-
-def parse(text: str, source: Optional[Source] = None) -> A.Program:
-    """The program tree of Macaulay2 code ``text``; raises :class:`MechSyntaxError` located in ``source``."""
-    source = source or Source("<string>", text)
-    try:
-        return build(_Build(), _parser().parse(text), source)
-    except UnexpectedCharacters as e:
-        ch = text[e.pos_in_stream] if e.pos_in_stream < len(text) else ""
-        msg = "unterminated string" if ch == '"' else f"unexpected character '{ch}'"
-        raise MechSyntaxError(msg, A.Pos(e.line, e.column, e.line, e.column + 1), source) from None
-    except UnexpectedInput as e:
-        tok = getattr(e, "token", None)
-        if tok is None or tok.type == "$END":
-            line = text.count("\n") + 1
-            col = len(text) - (text.rfind("\n") + 1) + 1
-            raise MechSyntaxError("unexpected end of input: incomplete statement",
-                                  A.Pos(line, col, line, col + 1), source) from None
-        if tok.value == "*" and text[tok.start_pos - 1:tok.start_pos] == "-":
-            raise MechSyntaxError("unterminated comment: -* without its *-", _tpos(tok), source) from None
-        shown = "line break" if tok.type == "_NL" else tok.value
-        raise MechSyntaxError(f"unexpected '{shown}'", _tpos(tok), source, underline=True) from None
-
-
-# ---------------------------------------------------------------- running
 
 #: Macaulay2 symbols mech knows (option names and monomial orders)
 SYMBOLS = {"MonomialOrder", "Lex", "GRevLex", "GLex", "RevLex", "Weights", "Eliminate", "Global", "Degrees",
@@ -388,6 +62,7 @@ class M2Interpreter(Interpreter):
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         self.commands = self.registry.DIALECTS.get("m2", {})
+        self.operators = self.registry.OPERATORS.get("m2", {})
         self.count = 0  # the number N of the statement, as Macaulay2's oN
         self._exec[Statement] = self._exec_statement
         self._eval.update({
@@ -548,7 +223,6 @@ class M2Interpreter(Interpreter):
         return NONE if node.silent else v
 
     def _eval_ring(self, node: RingCons) -> Ring:
-        from ..stdlib.m2 import order_blocks
         base = self.eval(node.base)
         if not isinstance(base, Coeffs):
             raise MechTypeError(f"a polynomial ring is built over QQ or ZZ/p, not over a {typeof(base)}")
@@ -605,7 +279,7 @@ class M2Interpreter(Interpreter):
             self.set_var(node.var, x)
             try:
                 v = self.eval(node.body)
-            except _Break:
+            except BreakSignal:
                 break
             if node.collect:
                 out.append(v)
@@ -615,7 +289,7 @@ class M2Interpreter(Interpreter):
         while self._truth(self.eval(node.cond)):
             try:
                 self.eval(node.body)
-            except _Break:
+            except BreakSignal:
                 break
         return NONE
 
@@ -630,10 +304,10 @@ class M2Interpreter(Interpreter):
         return v
 
     def _eval_return(self, node: ReturnExpr) -> Any:
-        raise _Return(self.eval(node.value) if node.value is not None else NONE)
+        raise ReturnSignal(self.eval(node.value) if node.value is not None else NONE)
 
     def _eval_break(self, node: BreakExpr) -> Any:
-        raise _Break()
+        raise BreakSignal()
 
     # ------------------------------------------------------------ calls and operators
     def _eval_call(self, node: A.Call) -> Any:
@@ -674,17 +348,19 @@ class M2Interpreter(Interpreter):
         self.source = fn.source
         try:
             return self.eval(fn.body)
-        except _Return as r:
+        except ReturnSignal as r:
             return r.value
         finally:
             self.frames.pop()
             self.source = saved
 
     def _binary(self, op: str, a: Any, b: Any) -> Any:
-        from ..stdlib import m2 as lib
+        hook = self.operators.get("==" if op == "!=" else op)  # the library's operators (I : J, f % I, I == J)
+        if hook is not None:
+            v = hook(a, b)
+            if v is not NotImplemented:
+                return not v if op == "!=" else v
         ring = self.ring.poly if self.ring else None
-        if op == ":":
-            return lib.quotient(a, b)
         if op == "/" and type(a) is int and type(b) is int:
             if b == 0:
                 raise MechRuntimeError("division by 0")
@@ -698,11 +374,6 @@ class M2Interpreter(Interpreter):
                 raise MechTypeError(f"the ideals of {op} are in different rings")
             gens = a.gens + b.gens if op == "+" else tuple(f * g for f in a.gens for g in b.gens)
             return Ideal(a.ring, gens)
-        if op == "%" and isinstance(a, (Poly, Number, int)) and isinstance(b, Ideal):
-            return lib.remainder(a, b)
-        if op in ("==", "!="):
-            same = lib.equal(a, b)
-            return same if op == "==" else not same
         if op in ("<", "<=", ">", ">="):
             return bool(ops.compare(op, a, b, ring))
         if isinstance(a, bool) or isinstance(b, bool):
@@ -734,15 +405,6 @@ def _rational(op: str, a: Fraction | int, b: Fraction | int) -> Fraction | int:
 
 
 # ---------------------------------------------------------------- the interactive shell
-def is_complete(text: str) -> bool:
-    """Whether the input can run: it parses, or its error is not an unfinished end."""
-    try:
-        parse(text)
-    except MechSyntaxError as e:
-        return not e.message.startswith("unexpected end of input")
-    return True
-
-
 def run_m2_repl(warnings: bool = True, read: Optional[Any] = None, out: Optional[Any] = None) -> int:
     """Macaulay2's prompt ``iN :`` with outputs ``oN = ...`` until end of input or ``exit``."""
     import sys

@@ -16,17 +16,22 @@ Registering the same name again adds an overload (tried in order: first without,
 coercion).  ``lib="primdec.lib"`` makes the command visible only after ``LIB "primdec.lib";``.
 ``raw=True`` passes the unevaluated argument trees instead of values (for ``defined(x)``,
 ``imap(r, I)``...).  The docstring is what ``help name;`` prints.  A first parameter named
-``ctx`` receives the interpreter's :class:`Context`.  Every module of ``mech.stdlib`` is imported
-at start-up (see :func:`load_commands`), so command modules import heavy packages (sympy) lazily.
+``ctx`` receives the interpreter's :class:`Context`.
+
+The language runtime knows no library: a library package registers a loader with
+:func:`add_loader` (mech's facade registers ``mech.stdlib.load``), which the interpreter runs once,
+before its first program (:func:`load_plugins`); the loader imports the library's modules, whose
+decorators register their commands (and :func:`mech.dsl.types.register_type` their types) and
+:func:`add_library_dir` the folder of their ``*.lib`` sources.  Loading happens at start-up, so
+command modules import heavy packages (sympy) lazily.
 """
 from __future__ import annotations
 
-import importlib
 import inspect
-import pkgutil
 import types
 import typing
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, Callable, Optional, Protocol
 
 from .errors import MechNameError, MechTypeError
@@ -45,6 +50,7 @@ class Context(Protocol):
     ring: Optional[Ring]          #: the basering (None before any ring is declared)
     argnames: list[str]           #: names of the argument expressions, "_" for unnamed ones
     options: set[str]             #: active option(...) names, e.g. "redSB"
+    settings: dict[str, Any]      #: session settings the facade gives (e.g. "report_format": "json")
 
     def basering(self) -> Ring:
         """The basering; raises a clear error when no ring is active."""
@@ -124,6 +130,19 @@ def command(name: str, lib: Optional[str] = None, raw: bool = False,
                 cmd.doc = doc
         if lib:
             LIBRARIES.add(lib)
+        return func
+    return deco
+
+
+#: Binary operators of the other dialects defined by their libraries, by dialect and symbol.
+OPERATORS: dict[str, dict[str, Callable[[Any, Any], Any]]] = {}
+
+
+def operator(symbol: str, dialect: str) -> Callable[[Callable], Callable]:
+    """Register the decorated ``f(a, b)`` as the operator ``symbol`` of ``dialect`` (``"=="`` also
+    gives ``"!="``); it returns ``NotImplemented`` for operands it leaves to the dialect's own rules."""
+    def deco(func: Callable) -> Callable:
+        OPERATORS.setdefault(dialect, {})[symbol] = func
         return func
     return deco
 
@@ -257,20 +276,39 @@ def result_value(v: Any) -> Any:
     return v
 
 
-# ---------------------------------------------------------------- lookup and libraries
-_loaded = False
+# ---------------------------------------------------------------- plug-ins, lookup and libraries
+_PENDING: list[Callable[[], None]] = []
+#: Folders holding libraries' mech sources (``x.lib``, run by ``LIB "x.lib";``).
+LIBRARY_DIRS: list[Path] = []
 
 
-def load_commands() -> None:
-    """Import every module of ``mech.stdlib`` once, registering their commands."""
-    global _loaded
-    if _loaded:
-        return
-    _loaded = True
-    pkg = importlib.import_module("mech.stdlib")
-    for info in pkgutil.iter_modules(pkg.__path__):
-        if info.name != "registry" and not info.name.startswith("_"):
-            importlib.import_module(f"mech.stdlib.{info.name}")
+def add_loader(load: Callable[[], None]) -> None:
+    """Register a library package's ``load`` (which registers its commands and types), run by the
+    next :func:`load_plugins`."""
+    _PENDING.append(load)
+
+
+def load_plugins() -> None:
+    """Run the loaders registered since the last call (each once); interpreters call it on creation."""
+    while _PENDING:
+        _PENDING.pop(0)()
+
+
+def add_library_dir(folder: Path) -> None:
+    """Make the ``*.lib`` mech sources in ``folder`` loadable by ``LIB "name";``."""
+    if folder not in LIBRARY_DIRS:
+        LIBRARY_DIRS.append(folder)
+
+
+def library_source(name: str) -> Optional[Path]:
+    """The mech source of the library ``name`` in a library folder (None if there is none)."""
+    if not name.endswith(".lib"):
+        return None
+    for folder in LIBRARY_DIRS:
+        path = folder / name
+        if path.is_file():
+            return path
+    return None
 
 
 def find(name: str, loaded_libs: set[str]) -> Optional[Command]:
@@ -311,4 +349,5 @@ def help_text(name: str) -> Optional[str]:
     return head + ("\n" + cmd.doc if cmd.doc else "")
 
 
-__all__ = ["command", "Context", "COMMANDS", "LIBRARIES", "invoke", "find", "load_commands"]
+__all__ = ["command", "Context", "COMMANDS", "LIBRARIES", "invoke", "find", "add_loader", "load_plugins",
+           "add_library_dir"]

@@ -25,9 +25,11 @@ from pathlib import Path
 from typing import Any, Callable, Optional, TextIO
 
 from .errors import MechError
-from .interpreter import Interpreter, QuitSignal, convert_exception
-from .parser import split_complete
+from .boundary import convert_exception
+from .interpreter import Interpreter
+from .split import split_complete
 from .printing import ordstr
+from .signals import QuitSignal
 
 BANNER = "mech {version}: Singular-compatible algebra.  ?NAME explains a command, :help the shell, Ctrl-D quits."
 
@@ -261,14 +263,13 @@ def _isatty(stream: Any) -> bool:
 
 # ------------------------------------------------------------------ the input loops
 def run_repl(warnings: bool = True, read: Optional[Callable[[str], str]] = None, quiet: bool = False,
-             input: Any = None, output: Any = None) -> int:
+             input: Any = None, output: Any = None, version: str = "(development)") -> int:
     """Run the shell.  ``read`` (a replacement for :func:`input`) gives the plain line-by-line loop;
     otherwise prompt_toolkit on the terminal, or on ``input``/``output`` (tests pass a pipe input
-    and a ``DummyOutput``).  Returns the exit status."""
-    from .. import __version__
+    and a ``DummyOutput``); ``version`` is the one the banner shows.  Returns the exit status."""
     shell = Shell(warnings)
     if not quiet:
-        shell.out.write(BANNER.format(version=__version__) + "\n")
+        shell.out.write(BANNER.format(version=version) + "\n")
     if read is None and input is None and (not _isatty(sys.stdout) or os.environ.get("TERM") == "dumb"):
         try:
             importlib.import_module("readline")  # line editing for input()

@@ -1,10 +1,11 @@
-"""Values of the mech language and Singular's conversions between them.
+"""Values of the mech language, Singular's conversions between them (and :func:`to_sympy`).
 
 Ring-independent values are plain Python objects (``int``, ``str``) or :class:`IntVec`,
 :class:`List` (of such), :class:`Proc`, :class:`Ring`.  Ring-dependent values refer to a kernel
 :class:`~mech.kernel.PolyRing`: polynomials are kernel :class:`~mech.kernel.Poly` objects, the rest
 are :class:`Number`, :class:`Ideal`, :class:`Matrix`, :class:`Map` and lists containing them.
 Values are immutable: assigning into ``I[2]`` builds a new ideal and rebinds the variable.
+Libraries add types of their own (:mod:`mech.dsl.types`); :func:`convert` converts to those too.
 """
 from __future__ import annotations
 
@@ -12,7 +13,9 @@ from dataclasses import dataclass, field
 from typing import Any, Iterable, Optional, Sequence
 
 from ..kernel import Poly, PolyRing
+from .convert import poly_to_sympy
 from .errors import MechRuntimeError, MechTypeError
+from .types import find_type
 
 
 class NoneValue:
@@ -72,7 +75,6 @@ class Ideal:
 
     def to_sympy(self) -> list:
         """The generators as sympy expressions."""
-        from .convert import poly_to_sympy
         return [poly_to_sympy(g) for g in self.gens]
 
     def __len__(self) -> int:
@@ -270,6 +272,26 @@ def is_ring_dependent(v: Any) -> bool:
 
 
 # ---------------------------------------------------------------- conversions
+def to_sympy(v: Any) -> Any:
+    """A value of the language as sympy objects: polynomials and numbers as expressions, ideals and
+    lists as Python lists, matrices as ``sympy.Matrix``; ints and strings stay as they are."""
+    import sympy
+
+    if isinstance(v, Poly):
+        return poly_to_sympy(v)
+    if isinstance(v, Number):
+        return poly_to_sympy(v.to_poly())
+    if isinstance(v, Ideal):
+        return [poly_to_sympy(g) for g in v.gens]
+    if isinstance(v, Matrix):
+        return sympy.Matrix(v.nrows, v.ncols, [poly_to_sympy(g) for g in v.entries])
+    if isinstance(v, IntVec):
+        return list(v.values)
+    if isinstance(v, (List, ExprList)):
+        return [to_sympy(x) for x in v.items]
+    return v
+
+
 def _need_ring(ring: Optional[PolyRing], what: str) -> PolyRing:
     if ring is None:
         raise MechRuntimeError(f"no ring active: a {what} needs a basering (declare one with ring r = ...;)")
@@ -419,9 +441,9 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing]) -> Any:
         if isinstance(_single(v, typ), Map):
             return _single(v, typ)
         raise _cannot(v, "map")
-    if typ == "mechanism":  # the type lives with its commands (mech.stdlib.mechanism)
-        from mech.stdlib.mechanism import to_mechanism
-        return to_mechanism(_single(v, typ))
+    plugin = find_type(typ)  # a type a library registered (mech.dsl.types)
+    if plugin is not None:
+        return plugin.convert(_single(v, typ))
     raise MechTypeError(f"type '{typ}' is not supported yet")
 
 

@@ -22,10 +22,16 @@ _CHECKOUT = _Path(__file__).resolve().parent.parent
 if (_CHECKOUT / "dsl" / "singular.lark").is_file() and str(_CHECKOUT) not in __path__:
     __path__.append(str(_CHECKOUT))
 
-from .dsl.convert import to_sympy
+from . import stdlib as _stdlib
+from .dsl import registry as _registry
 from .dsl.errors import (MechError, MechInternalError, MechNameError, MechRuntimeError, MechSyntaxError,
                          MechTypeError)
+from .dsl.values import to_sympy
 from .session import Session
+
+# The language runtime (mech.dsl) knows no library: mech's own (mech.stdlib) is registered here and
+# loaded when the first interpreter starts (registry.load_plugins).
+_registry.add_loader(_stdlib.load)
 
 __version__ = "0.1.0"
 

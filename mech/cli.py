@@ -102,7 +102,7 @@ def _main(args: argparse.Namespace) -> int:
         from .dsl.m2 import run_m2_repl
         return run_m2_repl(warnings=warnings)
     from .dsl.repl import run_repl
-    return run_repl(warnings=warnings, quiet=args.quiet)
+    return run_repl(warnings=warnings, quiet=args.quiet, version=__version__)
 
 
 if __name__ == "__main__":

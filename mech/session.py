@@ -61,7 +61,7 @@ class Session:
         text = expr.strip().rstrip(";")
         src = Source("<eval>", text)
         if self.dialect == "m2":
-            from .dsl.m2 import parse as parse_m2
+            from .dsl.m2_parser import parse as parse_m2
             program = parse_m2(text, src)
             exprs = [s.expr for s in program.body]
         else:

@@ -13,57 +13,15 @@ from __future__ import annotations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
-from ..dsl.m2_printing import Factored, Opt, Symbol, to_string
-from ..dsl.values import ExprList, Ideal, List, Matrix, Number, OrderBlock, Ring, typeof
+from ..dsl.m2_printing import Factored, Opt, to_string
+from ..dsl.registry import command, operator
+from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
 from ..kernel import Poly
 from ..kernel import ideals as K
-from ..dsl.registry import command
 from .standard import normalize, standard_basis
 
-_KINDS = {"GRevLex": "dp", "Lex": "lp", "GLex": "Dp"}
 
-
-# ---------------------------------------------------------------- rings and monomial orders
-def order_blocks(spec: Any, n: int) -> list[OrderBlock]:
-    """Singular's blocks for Macaulay2's ``MonomialOrder => spec`` on ``n`` variables: GRevLex (dp),
-    Lex (lp), GLex (Dp), ``Weights => w`` (a weight row, then GRevLex), ``Eliminate k`` (the weight
-    row 1,..,1,0,..,0, then GRevLex) and lists of these (``{GRevLex => 2, Lex => 3}``: blocks)."""
-    items = spec.items if isinstance(spec, List) else [spec]
-    blocks: list[OrderBlock] = []
-    covered = 0
-    for k, item in enumerate(items):
-        last = k == len(items) - 1
-        if isinstance(item, Symbol) and item.name in _KINDS:
-            if not last:
-                raise MechRuntimeError(f"{item.name} without a size covers the remaining variables: put it last")
-            size = n - covered
-        elif isinstance(item, Opt) and isinstance(item.key, Symbol) and item.key.name in _KINDS:
-            size = item.value
-            if type(size) is not int or size <= 0:
-                raise MechRuntimeError(f"{item.key.name} => n takes a positive number of variables")
-        elif isinstance(item, Opt) and isinstance(item.key, Symbol) and item.key.name in ("Weights", "Eliminate"):
-            if item.key.name == "Weights":
-                w = item.value.items if isinstance(item.value, List) else None
-                if w is None or not all(type(x) is int for x in w) or len(w) > n - covered:
-                    raise MechRuntimeError(f"Weights => {{...}} takes at most {n - covered} integers")
-            else:
-                if type(item.value) is not int or not 0 <= item.value <= n - covered:
-                    raise MechRuntimeError(f"Eliminate k takes 0 <= k <= {n - covered}")
-                w = [1] * item.value
-            blocks.append(OrderBlock("a", 0, tuple([0] * covered + list(w) + [0] * (n - covered - len(w)))))
-            continue
-        else:
-            raise MechRuntimeError(f"unknown monomial order {to_string(item)} (known: GRevLex, Lex, GLex, "
-                                   f"Weights => {{...}}, Eliminate k, and lists of these)")
-        if covered + size > n:
-            raise MechRuntimeError(f"the monomial order covers more than the {n} variables")
-        blocks.append(OrderBlock(_KINDS[item.key.name if isinstance(item, Opt) else item.name], size))
-        covered += size
-    if covered < n:
-        blocks.append(OrderBlock("dp", n - covered))
-    return blocks
-
-
+# ---------------------------------------------------------------- rings
 @command("use", dialect="m2")
 def use(ctx, R: Ring) -> Ring:
     """use R: make R's variables visible (assigning a ring to a name does this too)."""
@@ -194,6 +152,7 @@ def eliminate_ideal_first(I: Ideal, variables: List | Poly) -> Ideal:
     return eliminate(variables, I)
 
 
+@operator(":", dialect="m2")
 def quotient(a: Any, b: Any) -> Ideal:
     """``I : J`` (``I : f``), the ideal quotient."""
     if isinstance(a, Ideal) and isinstance(b, (Ideal, Poly)):
@@ -410,7 +369,7 @@ def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
                 raise MechTypeError("sub(f, {x => a, ...}) takes a list of options")
             i = _indices(ring, item.key)[0]
             images[i] = _polys(ctx, (item.value,))[0]
-    from ..dsl.interpreter import map_value
+    from ..dsl.maps import map_value
     return map_value(f, images, target)
 
 
@@ -492,13 +451,17 @@ def length(L: List | ExprList) -> int:
     return len(L.items)
 
 
-def remainder(f: Any, I: Ideal) -> Any:
-    """``f % I``: the normal form of f modulo a Gröbner basis of I."""
+@operator("%", dialect="m2")
+def remainder(f: Any, I: Any) -> Any:
+    """``f % I``: the normal form of f modulo a Gröbner basis of I (other operands: Singular's %)."""
+    if not (isinstance(f, (Poly, Number, int)) and isinstance(I, Ideal)):
+        return NotImplemented
     from ..kernel.groebner import normal_form
     p = f.to_poly() if isinstance(f, Number) else f if isinstance(f, Poly) else I.ring.one() * f
     return normal_form(p, _gb(I).gens)
 
 
+@operator("==", dialect="m2")
 def equal(a: Any, b: Any) -> bool:
     """``a == b`` in Macaulay2: ideals as ideals, lists entry by entry."""
     if isinstance(a, Ideal) and isinstance(b, Ideal):

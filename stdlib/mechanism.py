@@ -19,13 +19,16 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, ClassVar, Union
 
+from mech.dsl.errors import MechRuntimeError, MechTypeError
+from mech.dsl.types import register_type
+from mech.dsl.values import typeof
 from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
 
 Length = Union[int, Fraction, str]  # a number or the name of a symbolic length
 
 
-class MechanismError(ValueError):
-    """An ill-formed mechanism description."""
+class MechanismError(MechRuntimeError):
+    """An ill-formed mechanism (a user error of the language)."""
 
 
 @dataclass
@@ -235,6 +238,9 @@ class Mechanism:
 
 
 # ---------------------------------------------------------------- the description language
+#: The first words of the description's statements (what ``mechanism m { ... }`` accepts).
+STATEMENTS = ("ground", "fix", "bar", "prismatic", "body", "slider")
+
 SYNTAX = """statements separated by ';' or new lines:
   ground A B g           A fixed at the origin, B at (g, 0): the ground link of length g
   fix P [x y]            P fixed at (x, y) (default the origin)
@@ -285,8 +291,8 @@ def parse_mechanism(text: str, name: str = "mechanism") -> Mechanism:
             m.body(pts, local)
             continue
         if op not in counts:
-            raise MechanismError(f"{where}: unknown statement '{op}' (expected ground, fix, bar, "
-                                 "prismatic, body or slider)")
+            raise MechanismError(f"{where}: unknown statement '{op}' (expected {', '.join(STATEMENTS[:-1])} "
+                                 f"or {STATEMENTS[-1]})")
         if len(args) not in counts[op]:
             n = " or ".join(str(c) for c in counts[op])
             raise MechanismError(f"{where}: '{op}' takes {n} arguments")
@@ -308,13 +314,16 @@ def parse_mechanism(text: str, name: str = "mechanism") -> Mechanism:
 
 def to_mechanism(v: Any) -> Mechanism:
     """A value of type ``mechanism``: a mechanism, or a description string parsed."""
-    from mech.dsl.errors import MechRuntimeError, MechTypeError
     if isinstance(v, Mechanism):
         return v
     if not isinstance(v, str):
-        from mech.dsl.values import typeof
         raise MechTypeError(f"cannot convert {typeof(v)} to mechanism (give its description as a string)")
     try:
         return parse_mechanism(v)
     except MechanismError as e:
         raise MechRuntimeError(f"mechanism: {e}") from None
+
+
+register_type("mechanism", to_mechanism,
+              default='a mechanism is declared with its description: mechanism m = "fix O; bar O A l1";',
+              statements=STATEMENTS)

@@ -783,7 +783,7 @@ def imap(ctx, ring_node: A.Expr, obj_node: A.Expr) -> Any:
       imap(r, f);
       → x2
     """
-    from ..dsl.interpreter import map_value
+    from ..dsl.maps import map_value
     from ..kernel.maps import imap as imap_polys
     _, v = _in_ring(ctx, ring_node, obj_node, "imap")
     target = ctx.basering().poly
@@ -802,7 +802,7 @@ def fetch(ctx, ring_node: A.Expr, obj_node: A.Expr) -> Any:
       fetch(r, f);
       → a2+bc
     """
-    from ..dsl.interpreter import map_value
+    from ..dsl.maps import map_value
     from ..kernel.maps import fetch as fetch_polys
     _, v = _in_ring(ctx, ring_node, obj_node, "fetch")
     target = ctx.basering().poly
@@ -876,7 +876,7 @@ def option(ctx, *nodes: A.Expr) -> None:
       option();
       → //options: redSB redTail redThrough intStrategy redefine usage prompt
     """
-    from ..dsl.interpreter import OPTION_ORDER
+    from ..dsl.options import OPTION_ORDER
     if not nodes:
         shown = [o for o in OPTION_ORDER if o in ctx.options]
         shown += sorted(o for o in ctx.options if o not in OPTION_ORDER)

@@ -276,7 +276,7 @@ def check(text: str, name: str = "<fuzz>", session: Session | None = None) -> tu
 def campaign(seed: int, count: int, kind: str) -> Stats:
     """``count`` runs of generated ("grammar") or mutated ("mutation") scripts from ``seed``."""
     from mech.dsl import registry
-    registry.load_commands()
+    registry.load_plugins()
     rng = random.Random(f"{kind}:{seed}")
     commands = sorted(registry.COMMANDS)
     gen = ScriptGen(rng, commands)

@@ -3,7 +3,8 @@ import pytest
 
 from mech.dsl import ast as A
 from mech.dsl.errors import MechSyntaxError
-from mech.dsl.parser import parse, split_complete
+from mech.dsl.parser import parse
+from mech.dsl.split import split_complete
 
 
 def one(src):

@@ -11,12 +11,12 @@ import pytest
 
 from mech import Session
 from mech.dsl.errors import MechError
-from mech.dsl.interpreter import STDLIB_DIR
+from mech.stdlib import LIB_DIR as STDLIB_DIR
 from mech.dsl.values import Proc
-from mech.dsl.registry import COMMANDS, load_commands
+from mech.dsl.registry import COMMANDS, load_plugins
 from tests.util import SINGULAR, run_singular
 
-load_commands()
+load_plugins()
 
 #: Commands Singular does not have (their examples are checked by hand): these and mech's own libraries'.
 MECH_ONLY = {"limits", "tangentConeAt", "localComponentsAt", "tangentSpaceDim", "pointType"}

@@ -1,0 +1,127 @@
+"""Assignments: ``x = v;``, into entries (``I[2] = f;``, ``M[i,j] = f;``, ``L[2][1] = v;``),
+several at once (``a, b = b, a;``), ``x++;``.  Values are immutable: an entry assignment builds a
+new value and rebinds the variable."""
+from __future__ import annotations
+
+from typing import Any
+
+from . import ast as A
+from .errors import MechNameError, MechRuntimeError, MechTypeError
+from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_int, to_matrix, to_poly, typeof
+
+
+class Assignment:
+    """Assignment statements (part of the interpreter)."""
+
+    def _exec_assign(self, s: A.Assign) -> None:
+        if len(s.targets) == 1:
+            self.assign(s.targets[0], self._rhs(s.values))
+            return
+        if len(s.values) == len(s.targets):  # Singular assigns pairwise, in turn: a, b = b, a; sets both to b
+            for t, n in zip(s.targets, s.values):
+                self.assign(t, self.eval(n))
+            return
+        vals = self._values(s.values)
+        if len(vals) != len(s.targets):
+            raise MechRuntimeError(f"{len(s.targets)} targets but {len(vals)} values")
+        for t, v in zip(s.targets, vals):
+            self.assign(t, v)
+
+    def assign(self, target: A.Expr, value: Any) -> None:
+        """Store ``value`` into a name or an indexed entry (``I[2]``, ``D[i,j]``, ``L[2][1]``)."""
+        if type(value) is int and type(target) is A.Name:  # fast path: int variables in loops
+            var = self.lookup(target.id)
+            if var is not None and var.type == "int":
+                var.value = value
+                return
+        chain: list[A.Index] = []
+        base = target
+        while isinstance(base, A.Index):
+            chain.append(base)
+            base = base.base
+        assert isinstance(base, A.Name)
+        name = base.id
+        var = self.lookup(name)
+        if var is None:
+            if name in self.sysvars or name in ("timer", "rtimer"):
+                self.sysvars[name] = to_int(value)
+                return
+            if self.ring is not None and self.ring.var_index(name) is not None:
+                raise MechRuntimeError(f"cannot assign to the ring variable '{name}'")
+            raise MechNameError(f"'{name}' is not declared (declare it first, e.g. int {name} = ...;)",
+                                base.pos, self.source)
+        kring = self.ring.poly if self.ring else None
+        if not chain:
+            if var.type == "ring":
+                value = convert(value, "ring", None)
+            elif var.type == "map":
+                value = convert(value, "map", None)
+            elif var.type == "matrix" and isinstance(var.value, Matrix):
+                value = to_matrix(value, self.basering().poly, var.value.nrows, var.value.ncols) \
+                    if not isinstance(value, Matrix) else to_matrix(value, self.basering().poly)
+            else:
+                value = self._converted(value, var.type, kring)
+            self._rebind(var, value)
+            return
+        chain.reverse()
+        new = self._set_in(var.value, chain, 0, value)
+        self._rebind(var, new)
+
+    def _set_in(self, container: Any, chain: list[A.Index], k: int, value: Any) -> Any:
+        node = chain[k]
+        idx = [self.eval(i) for i in node.indices]
+        last = k == len(chain) - 1
+        ring = self.ring.poly if self.ring else None
+        if isinstance(container, Matrix):
+            if len(idx) != 2 or not last:
+                raise MechRuntimeError("a matrix entry is set as M[i,j] = ...")
+            i, j = to_int(idx[0]), to_int(idx[1])
+            if not (1 <= i <= container.nrows and 1 <= j <= container.ncols):
+                raise MechRuntimeError(f"index [{i},{j}] out of range for a {container.nrows} x {container.ncols} matrix")
+            ents = list(container.entries)
+            ents[(i - 1) * container.ncols + j - 1] = to_poly(value, container.ring)
+            return Matrix(container.ring, container.nrows, container.ncols, ents)
+        if len(idx) != 1:
+            raise MechRuntimeError(f"a {typeof(container)} takes one index")
+        i = to_int(idx[0])
+        if i < 1:
+            raise MechRuntimeError(f"index {i} out of range (indices start at 1)")
+        if isinstance(container, Ideal):
+            if not last:
+                raise MechRuntimeError("cannot index into an ideal's generator")
+            gens = list(container.gens)
+            gens += [container.ring.zero()] * (i - len(gens))
+            gens[i - 1] = to_poly(value, container.ring if ring is None else ring)
+            return Ideal(container.ring, gens)
+        if isinstance(container, List):
+            items = list(container.items)
+            items += [NONE] * (i - len(items))
+            if last:
+                items[i - 1] = List(value.items) if isinstance(value, ExprList) else value
+            else:
+                items[i - 1] = self._set_in(items[i - 1], chain, k + 1, value)
+            return List(items)
+        if isinstance(container, IntVec):
+            if not last:
+                raise MechRuntimeError("cannot index into an int")
+            vals = list(container.values)
+            vals += [0] * (i - len(vals))
+            vals[i - 1] = to_int(value)
+            return IntVec(vals)
+        if isinstance(container, str) and last and isinstance(value, str):
+            # as Singular: the i-th character becomes the first one of the value ("" ends the string there)
+            if not 1 <= i <= len(container):
+                raise MechRuntimeError(f"string index {i} out of range 1..{len(container)}")
+            return container[:i - 1] + value[:1] + (container[i:] if value else "")
+        raise MechTypeError(f"cannot assign into an entry of a {typeof(container)}")
+
+    def _exec_incdec(self, s: A.IncDec) -> None:
+        if type(s.target) is A.Name:
+            var = self.lookup(s.target.id)
+            if var is not None and type(var.value) is int:
+                var.value += s.delta
+                return
+        cur = self.eval(s.target)
+        if type(cur) is not int:
+            raise MechTypeError(f"++ and -- need an int, not {typeof(cur)}")
+        self.assign(s.target, cur + s.delta)

@@ -1,0 +1,133 @@
+"""Declarations: ``T x = value;`` converts the value to the type (Singular's conversions) and
+creates the variable; rings and maps have their own forms; ``T x;`` gives the type's default."""
+from __future__ import annotations
+
+from typing import Any
+
+from . import ast as A
+from .errors import MechRuntimeError, MechTypeError
+from .rings import build_ring, default_ring
+from .scopes import RING_TYPES
+from .types import find_type
+from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Ring, convert, to_int, to_matrix, typeof
+
+#: Singular's types mech does not provide.
+UNSUPPORTED_TYPES = {"qring", "vector", "module", "resolution", "link", "intmat"}
+
+
+class Declarations:
+    """Declaration statements (part of the interpreter)."""
+
+    def _exec_decl(self, s: A.Decl) -> None:
+        typ = s.type
+        if typ in UNSUPPORTED_TYPES:
+            raise MechTypeError(f"type '{typ}' is not supported yet")
+        if typ == "ring":
+            self._declare_ring(s)
+            return
+        if typ == "map":
+            self._declare_map(s)
+            return
+        for d in s.items:
+            if d.dims and typ != "matrix":
+                raise MechTypeError(f"only a matrix is declared with dimensions, not a {typ}")
+        values: list[Any]
+        if s.value is None:
+            values = [None] * len(s.items)
+        elif len(s.items) == 1:
+            values = [self._rhs(s.value)]
+        else:
+            values = self._values(s.value)
+            if len(values) != len(s.items):
+                raise MechRuntimeError(f"{len(s.items)} variables declared but {len(values)} values given")
+        for d, v in zip(s.items, values):
+            self._declare_item(typ, d, v)
+
+    def _declare_item(self, typ: str, d: A.Declarator, v: Any) -> None:
+        kring = self.ring.poly if self.ring else None
+        if typ == "matrix":
+            dims = [to_int(self.eval(x)) for x in d.dims]
+            if dims and (len(dims) != 2 or dims[0] <= 0 or dims[1] <= 0):
+                raise MechRuntimeError("a matrix is declared as matrix M[rows][cols]")
+            ring = self.basering().poly
+            if v is None:
+                v = Matrix(ring, *(dims or (1, 1)))
+            else:
+                # as Singular: a matrix value keeps its size, other values fill [rows][cols] (default 1 x 1)
+                v = to_matrix(v, ring) if isinstance(v, Matrix) else to_matrix(v, ring, *(dims or (1, 1)))
+        elif v is None:
+            v = self._default(typ)
+        else:
+            v = self._converted(v, typ, kring)
+        self.declare(d.name, typ, v)
+
+    def _default(self, typ: str) -> Any:
+        if typ in ("int", "bigint"):
+            return 0
+        if typ == "string":
+            return ""
+        if typ == "list":
+            return List()
+        if typ == "intvec":
+            return IntVec([0])
+        if typ == "def":
+            return NONE
+        if typ == "proc":
+            raise MechRuntimeError("a proc is declared with proc name(...) { ... }")
+        plugin = find_type(typ)
+        if plugin is not None:  # a library's type (mech.dsl.types)
+            if isinstance(plugin.default, str):
+                raise MechRuntimeError(plugin.default)
+            return plugin.default()
+        ring = self.basering().poly
+        if typ == "number":
+            return Number(ring, ring.field.zero)
+        if typ == "poly":
+            return ring.zero()
+        if typ == "ideal":
+            return Ideal(ring, [], is_std=True)
+        raise MechTypeError(f"type '{typ}' is not supported yet")
+
+    def _converted(self, v: Any, typ: str, kring: Any) -> Any:
+        if typ in RING_TYPES and kring is None:
+            self.basering()
+        v = convert(v, typ, kring)
+        if isinstance(v, Ideal):
+            std = v.is_std or len(v.gens) <= 1  # Singular marks one-generator ideals as standard bases
+            if std != v.is_std:
+                v = Ideal(v.ring, v.gens, std)
+        return v
+
+    def _declare_ring(self, s: A.Decl) -> None:
+        if len(s.items) != 1 or s.items[0].dims:
+            raise MechRuntimeError("declare one ring at a time: ring r = 0, (x,y,z), dp;")
+        if s.value is None:
+            ring = default_ring()
+        elif len(s.value) == 1:
+            v = self.eval(s.value[0])
+            if not isinstance(v, Ring):
+                raise MechTypeError(f"cannot convert {typeof(v)} to ring")
+            ring = Ring(v.poly, v.params, v.blocks)
+        else:
+            ring = build_ring(s.value, self.eval)
+        ring.name = s.items[0].name
+        self.rings.add(ring)
+        self.declare(ring.name, "ring", ring)
+        self.ring = ring
+
+    def _declare_map(self, s: A.Decl) -> None:
+        if len(s.items) != 1:
+            raise MechRuntimeError("declare one map at a time: map phi = r, f1, ..., fn;")
+        if s.value is None:
+            raise MechRuntimeError("a map is declared as map phi = r, f1, ..., fn;")
+        v = self._values(s.value)
+        if len(v) == 1 and isinstance(v[0], Map):
+            m = v[0]
+        else:
+            if not v or not isinstance(v[0], Ring):
+                raise MechTypeError("a map is declared as map phi = r, f1, ..., fn; with r the source ring")
+            src = v[0]
+            target = self.basering().poly
+            images = list(self._converted(ExprList(v[1:]), "ideal", target).gens) if len(v) > 1 else []
+            m = Map(src, target, tuple(images))  # as Singular, images beyond the variables are kept, unused
+        self.declare(s.items[0].name, "map", m)

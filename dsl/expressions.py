@@ -1,0 +1,184 @@
+"""The expression evaluator: operators, ranges, indexing, calls of procedures, maps and commands."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..kernel import Poly
+from . import ast as A
+from . import ops
+from .boundary import convert_exception
+from .errors import MechError, MechRuntimeError, MechTypeError
+from .limits import LimitExceeded, limit_error
+from .signals import SIGNALS
+from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Proc, to_int, typeof
+
+
+class Expressions:
+    """Evaluating expressions (part of the interpreter)."""
+
+    def eval(self, node: A.Expr) -> Any:
+        try:
+            return self._eval[type(node)](node)
+        except SIGNALS:
+            raise
+        except MechError as e:
+            if e.pos is None:
+                e.locate(node.pos, self.source, isinstance(node, (A.Call, A.TypeCall, A.BinOp, A.Index)))
+            raise
+        except Exception as e:
+            raise convert_exception(e).locate(node.pos, self.source,
+                                              isinstance(node, (A.Call, A.TypeCall, A.BinOp))) from None
+
+    def _values(self, nodes: list[A.Expr]) -> list[Any]:
+        """Evaluate an expression list, splicing in the items of expression-list values."""
+        out: list[Any] = []
+        for n in nodes:
+            v = self.eval(n)
+            if isinstance(v, ExprList):
+                out.extend(v.items)
+            elif v is not NONE or len(nodes) == 1:
+                out.append(v)
+        return out
+
+    def _rhs(self, nodes: list[A.Expr]) -> Any:
+        vals = self._values(nodes)
+        if len(vals) == 1:
+            return vals[0]
+        return ExprList(vals)
+
+    def _eval_tuple(self, node: A.Tuple) -> Any:
+        return ExprList(self._values(node.items))
+
+    def _eval_binop(self, node: A.BinOp) -> Any:
+        op = node.op
+        if op == "&&":
+            return int(ops.truth(self.eval(node.left)) and ops.truth(self.eval(node.right)))
+        if op == "||":
+            return int(ops.truth(self.eval(node.left)) or ops.truth(self.eval(node.right)))
+        spine = [node]  # a long sum x+y+...+z nests to the left: evaluate its left spine by a loop
+        while type(spine[-1].left) is A.BinOp and spine[-1].left.op not in ("&&", "||"):
+            spine.append(spine[-1].left)
+        a = self.eval(spine[-1].left)
+        for n in reversed(spine[1:]):
+            b = self.eval(n.right)
+            try:
+                a = self._binary(n.op, a, b)
+            except MechError as e:
+                if e.pos is None:
+                    e.locate(n.pos, self.source, True)
+                raise
+            except Exception as e:
+                raise convert_exception(e).locate(n.pos, self.source, True) from None
+        return self._binary(op, a, self.eval(node.right))
+
+    def _binary(self, op: str, a: Any, b: Any) -> Any:
+        ring = self.ring.poly if self.ring else None
+        if op in ("==", "!=", "<", "<=", ">", ">="):
+            return ops.compare(op, a, b, ring)
+        return ops.binary(op, a, b, ring, self.warn_in_line)
+
+    def _eval_unop(self, node: A.UnOp) -> Any:
+        v = self.eval(node.operand)
+        if node.op == "-":
+            return ops.negate(v)
+        if node.op == "+":
+            return v
+        return int(not ops.truth(v))
+
+    def _eval_range(self, node: A.Range) -> IntVec:
+        lo, hi = to_int(self.eval(node.lo)), to_int(self.eval(node.hi))
+        step = 1 if hi >= lo else -1
+        return IntVec(range(lo, hi + step, step))
+
+    def _eval_index(self, node: A.Index) -> Any:
+        base = self.eval(node.base)
+        idx = [self.eval(i) for i in node.indices]
+        if isinstance(base, Matrix) and len(idx) == 2:
+            i, j = to_int(idx[0]), to_int(idx[1])
+            if not (1 <= i <= base.nrows and 1 <= j <= base.ncols):
+                raise MechRuntimeError(f"index [{i},{j}] out of range for a {base.nrows} x {base.ncols} matrix")
+            return base.get(i, j)
+        if len(idx) != 1:
+            raise MechRuntimeError(f"a {typeof(base)} takes one index")
+        k = idx[0]
+        if isinstance(k, IntVec):
+            return ExprList([self._item(base, i) for i in k.values])
+        return self._item(base, to_int(k))
+
+    def _item(self, base: Any, i: int) -> Any:
+        if isinstance(base, Ideal):
+            seq, what = base.gens, "ideal"
+        elif isinstance(base, List):
+            seq, what = base.items, "list"
+        elif isinstance(base, IntVec):
+            seq, what = base.values, "intvec"
+        elif isinstance(base, str):
+            seq, what = base, "string"
+        elif isinstance(base, Map):
+            seq, what = base.images, "map"
+        elif isinstance(base, Poly):
+            seq, what = [base.ring.monomial(e, c) for e, c in base.sorted_terms()], "poly"
+            if 1 <= i <= len(seq):
+                return seq[i - 1]
+            if i > len(seq):
+                return base.ring.zero()
+        elif isinstance(base, Matrix):
+            raise MechRuntimeError("a matrix entry is M[i,j]")
+        else:
+            raise MechTypeError(f"a {typeof(base)} cannot be indexed")
+        if not 1 <= i <= len(seq):
+            raise MechRuntimeError(f"index {i} out of range (the {what} has {len(seq)} entries)")
+        return seq[i - 1]
+
+    def _eval_call(self, node: A.Call) -> Any:
+        f = node.func
+        if isinstance(f, A.Name):
+            name = f.id
+            var = self.lookup(name)
+            if var is not None:
+                v = var.value
+                if isinstance(v, Proc):
+                    return self.call_proc(v, self._values(node.args), node)
+                if isinstance(v, Map):
+                    nvars = len(v.source.names)
+                    if len(v.images) < nvars:  # Singular's quirk: applying a map stores its missing images (0)
+                        var.value = Map(v.source, v.ring, v.images + (v.ring.zero(),) * (nvars - len(v.images)))
+                    return self.apply_map(v, node.args)
+            cmd = self.registry.find(name, self.loaded_libs)
+            if cmd is not None:
+                return self.call_command(cmd, node.args)
+            gens = self._indexed_vars(node)
+            if gens is not None:
+                return gens
+            if var is not None:
+                raise MechTypeError(f"'{name}' is a {typeof(var.value)}, not a procedure")
+            raise self.registry.unknown_command(name)
+        if isinstance(f, A.Call):
+            gens = self._indexed_vars(node)
+            if gens is not None:
+                return gens
+        v = self.eval(f)
+        if isinstance(v, Proc):
+            return self.call_proc(v, self._values(node.args), node)
+        if isinstance(v, Map):
+            return self.apply_map(v, node.args)
+        raise MechTypeError(f"a {typeof(v)} cannot be called")
+
+    def _eval_typecall(self, node: A.TypeCall) -> Any:
+        cmd = self.registry.find(node.type, self.loaded_libs)
+        if cmd is None:
+            raise MechTypeError(f"type '{node.type}' is not supported yet")
+        return self.call_command(cmd, node.args)
+
+    def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:
+        args = None if cmd.raw else self._values(arg_nodes)
+        saved = self.argnames
+        try:
+            if cmd.raw:
+                return self.registry.invoke_raw(cmd, self, arg_nodes)
+            self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
+            return self.registry.invoke(cmd, self, args)
+        except (LimitExceeded, MemoryError) as e:  # "time limit of 5 s exceeded in std"
+            raise limit_error(e, cmd.name) from None
+        finally:
+            self.argnames = saved

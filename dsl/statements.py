@@ -1,0 +1,133 @@
+"""The statement executor: expression statements (printing their values), control flow, procedure
+definitions, kill, export, keepring, setring and quit; declarations, assignments, LIB and help
+have their own modules."""
+from __future__ import annotations
+
+from . import ast as A
+from . import ops
+from .boundary import convert_exception
+from .errors import MechError, MechNameError, MechRuntimeError, MechTypeError
+from .limits import LimitExceeded, limit_error
+from .printing import join_outputs, render
+from .signals import SIGNALS, BreakSignal, ContinueSignal, QuitSignal, ReturnSignal
+from .values import NONE, ExprList, List, Proc, Ring, typeof
+
+
+class Statements:
+    """Running statements (part of the interpreter)."""
+
+    def exec_block(self, body: list[A.Stmt]) -> None:
+        for stmt in body:
+            self.exec_stmt(stmt)
+
+    def exec_stmt(self, stmt: A.Stmt) -> None:
+        self.stmt = stmt
+        try:
+            self._exec[type(stmt)](stmt)
+        except SIGNALS:
+            raise
+        except MechError as e:
+            e.locate(stmt.pos, self.source)
+            raise
+        except LimitExceeded as e:
+            raise limit_error(e).locate(stmt.pos, self.source) from None
+        except Exception as e:
+            raise convert_exception(e).locate(stmt.pos, self.source) from None
+
+    def _exec_expr(self, s: A.ExprStmt) -> None:
+        parts = []
+        for node in s.exprs:
+            v = self.eval(node)
+            if v is NONE:
+                continue
+            self.last = v
+            parts.append((render(v, node.id if isinstance(node, A.Name) else None), isinstance(v, List)))
+        if parts:
+            self.write(join_outputs(parts) + "\n")
+
+    def _exec_if(self, s: A.If) -> None:
+        if ops.truth(self.eval(s.cond)):
+            self.exec_block(s.then)
+        elif s.orelse is not None:
+            self.exec_block(s.orelse)
+
+    def _exec_for(self, s: A.For) -> None:
+        if s.init is not None:
+            self.exec_stmt(s.init)
+        while s.cond is None or ops.truth(self.eval(s.cond)):
+            try:
+                self.exec_block(s.body)
+            except BreakSignal:
+                break
+            except ContinueSignal:  # as in Singular, continue skips the step: it goes on with the condition
+                continue
+            if s.step is not None:
+                self.exec_stmt(s.step)
+
+    def _exec_while(self, s: A.While) -> None:
+        while ops.truth(self.eval(s.cond)):
+            try:
+                self.exec_block(s.body)
+            except BreakSignal:
+                break
+            except ContinueSignal:
+                pass
+
+    def _exec_break(self, s: A.Break) -> None:
+        raise BreakSignal()
+
+    def _exec_continue(self, s: A.Continue) -> None:
+        raise ContinueSignal()
+
+    def _exec_return(self, s: A.Return) -> None:
+        if len(self.frames) == 1:
+            raise MechRuntimeError("return outside a procedure")
+        vals = self._values(s.values) if s.values else []
+        raise ReturnSignal(NONE if not vals else vals[0] if len(vals) == 1 else ExprList(vals))
+
+    def _exec_procdef(self, s: A.ProcDef) -> None:
+        lib = self._loading_lib
+        self.declare(s.name, "proc", Proc(s.name, s.params, s.body, s.doc, self.source, lib, s.body_line))
+
+    def _names_of(self, targets: list[A.Expr], what: str) -> list[A.Name]:
+        out = []
+        for t in targets:
+            items = t.items if isinstance(t, A.Tuple) else [t]
+            for it in items:
+                if not isinstance(it, A.Name):
+                    raise MechRuntimeError(f"{what} needs variable names", it.pos, self.source)
+                out.append(it)
+        return out
+
+    def _exec_kill(self, s: A.Kill) -> None:
+        for n in self._names_of(s.targets, "kill"):
+            var = self.lookup(n.id)
+            if var is None:
+                raise MechNameError(f"'{n.id}' is not defined", n.pos, self.source)
+            self._remove(var)
+            if isinstance(var.value, Ring) and var.value is self.ring:
+                self.ring = None
+
+    def _exec_export(self, s: A.Export) -> None:
+        for n in self._names_of(s.targets, "export"):
+            self.export(n.id)
+
+    def _exec_keepring(self, s: A.Keepring) -> None:
+        ring = self.eval(s.ring)
+        if not isinstance(ring, Ring):
+            raise MechTypeError(f"keepring needs a ring, not {typeof(ring)}")
+        if isinstance(s.ring, A.Name):
+            ring.name = s.ring.id
+        self.ring = ring
+        self.frames[-1].keep_ring = True
+
+    def _exec_setring(self, s: A.Setring) -> None:
+        ring = self.eval(s.ring)
+        if not isinstance(ring, Ring):
+            raise MechTypeError(f"setring needs a ring, not {typeof(ring)}")
+        if isinstance(s.ring, A.Name):  # as Singular, the basering is known by the name it was set by
+            ring.name = s.ring.id
+        self.ring = ring
+
+    def _exec_quit(self, s: A.Quit) -> None:
+        raise QuitSignal()
