@@ -12,12 +12,14 @@ from .types import block_types, find_type
 
 
 def meta_pos(meta: Any) -> A.Pos:
+    """The position of a rule's match (Lark's ``meta``; none for an empty match)."""
     if getattr(meta, "empty", False):
         return A.NOPOS
     return A.Pos(meta.line, meta.column, meta.end_line, meta.end_column)
 
 
 def token_pos(tok: Token) -> A.Pos:
+    """The position of a token."""
     return A.Pos(tok.line, tok.column, tok.end_line, tok.end_column)
 
 

@@ -13,7 +13,8 @@ from typing import Any, Callable
 
 from ..kernel import GF, QQ, Block, MonomialOrder, PolyRing
 from . import ast as A
-from .errors import MechError, MechRuntimeError
+from .boundary import convert_exception
+from .errors import MechRuntimeError
 from .values import IntVec, OrderBlock, Ring
 
 Evaluate = Callable[[A.Expr], Any]
@@ -59,11 +60,12 @@ def build_ring(items: list[A.Expr], evaluate: Evaluate) -> Ring:
 
 
 def _at(node: A.Expr, build: Callable[[], Any]) -> Any:
-    """Run ``build``, locating its errors at ``node`` (the part of the declaration they concern)."""
+    """Run ``build``, locating its errors (the kernel's too) at ``node``, the part of the declaration
+    they concern."""
     try:
         return build()
-    except MechError as e:
-        raise e.locate(node.pos, None, True)
+    except Exception as e:
+        raise convert_exception(e).locate(node.pos, None, True) from None
 
 
 def _characteristic(node: A.Expr, evaluate: Evaluate) -> tuple[int, tuple[str, ...]]:
@@ -182,10 +184,7 @@ def make_ring(char: int, params: tuple[str, ...] | list[str], names: list[str], 
     if poly is None:
         field = _field(char, params)
         kblocks = [Block(b.kind, b.size, b.weights) for b in blocks if b.kind not in ("c", "C")]
-        try:
-            order = MonomialOrder(kblocks, len(names))
-        except ValueError as e:
-            raise MechRuntimeError(str(e)) from None
+        order = MonomialOrder(kblocks, len(names))
         poly = _ring_cache[key] = PolyRing(field, names, order)
     return Ring(poly, params, tuple(blocks))
 
@@ -194,14 +193,8 @@ def _field(char: int, params: tuple[str, ...]) -> Any:
     if char == 0:
         base = QQ
     else:
-        try:
-            base = GF(char)
-        except ValueError as e:
-            raise MechRuntimeError(str(e)) from None
+        base = GF(char)
     if not params:
         return base
     from ..kernel.ratfunc import RationalFunctionField
-    try:
-        return RationalFunctionField(char, params)
-    except ValueError as e:
-        raise MechRuntimeError(str(e)) from None
+    return RationalFunctionField(char, params)
