@@ -108,7 +108,8 @@ class Interpreter:
     """Runs mech programs; output goes to ``out`` (flushed after each write when ``flush``)."""
 
     def __init__(self, out: Optional[TextIO] = None, flush: bool = False, warnings: bool = True,
-                 timeout: Optional[float] = None, max_memory: Optional[float] = None) -> None:
+                 timeout: Optional[float] = None, max_memory: Optional[float] = None,
+                 settings: Optional[dict[str, Any]] = None) -> None:
         from . import registry
         self.limits = Limits(timeout, max_memory)  # per statement; see limits.py
         registry.load_commands()
@@ -127,6 +128,9 @@ class Interpreter:
         self.last: Any = NONE
         self.argnames: list[str] = []
         self.ticks_per_sec = 1
+        # settings of the run that commands read (ctx.settings), e.g. "report_format": analyze's default
+        # format (mech --format); a minimal version of h16dsl's, which the lead merges
+        self.settings: dict[str, Any] = dict(settings or {})
         self.sysvars: dict[str, int] = {"printlevel": 0}
         self._t0 = time.process_time()
         self._r0 = time.time()

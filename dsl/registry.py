@@ -45,6 +45,7 @@ class Context(Protocol):
     ring: Optional[Ring]          #: the basering (None before any ring is declared)
     argnames: list[str]           #: names of the argument expressions, "_" for unnamed ones
     options: set[str]             #: active option(...) names, e.g. "redSB"
+    settings: dict[str, Any]      #: settings of the run, e.g. "report_format" (mech --format); minimal, as h16dsl's
 
     def basering(self) -> Ring:
         """The basering; raises a clear error when no ring is active."""
