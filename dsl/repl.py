@@ -143,17 +143,18 @@ class Shell:
     interrupts).  :meth:`run` takes one complete input; the input loops are :func:`run_repl`'s."""
 
     def __init__(self, warnings: bool = True, out: Optional[TextIO] = None, err: Optional[TextIO] = None,
-                 status: Optional[StatusLine] = None) -> None:
+                 status: Optional[StatusLine] = None, settings: Optional[dict[str, Any]] = None) -> None:
         self.out = out if out is not None else sys.stdout
         self.err = err if err is not None else sys.stderr
         self.warnings = warnings
+        self.settings = settings  # the interpreter's, also after :reset
         self.status = status if status is not None else StatusLine(self.err if _isatty(self.err) else None)
         self._output = _Output(self.out, self.status)
         self.interp = self._fresh_interpreter()
         self.last_time: Optional[float] = None
 
     def _fresh_interpreter(self) -> Interpreter:
-        return Interpreter(out=self._output, flush=True, warnings=self.warnings)
+        return Interpreter(out=self._output, flush=True, warnings=self.warnings, settings=self.settings)
 
     @property
     def timing(self) -> bool:
@@ -263,11 +264,13 @@ def _isatty(stream: Any) -> bool:
 
 # ------------------------------------------------------------------ the input loops
 def run_repl(warnings: bool = True, read: Optional[Callable[[str], str]] = None, quiet: bool = False,
-             input: Any = None, output: Any = None, version: str = "(development)") -> int:
+             input: Any = None, output: Any = None, version: str = "(development)",
+             settings: Optional[dict[str, Any]] = None) -> int:
     """Run the shell.  ``read`` (a replacement for :func:`input`) gives the plain line-by-line loop;
     otherwise prompt_toolkit on the terminal, or on ``input``/``output`` (tests pass a pipe input
-    and a ``DummyOutput``); ``version`` is the one the banner shows.  Returns the exit status."""
-    shell = Shell(warnings)
+    and a ``DummyOutput``); ``version`` is the one the banner shows; ``settings``: the interpreter's
+    (mech --format).  Returns the exit status."""
+    shell = Shell(warnings, settings=settings)
     if not quiet:
         shell.out.write(BANNER.format(version=version) + "\n")
     if read is None and input is None and (not _isatty(sys.stdout) or os.environ.get("TERM") == "dumb"):

@@ -5,12 +5,13 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-from typing import Optional
+from typing import Any, Optional
 
 from . import __version__
 
 
 def _parser() -> argparse.ArgumentParser:
+    from .stdlib.reports import FORMATS
     p = argparse.ArgumentParser(prog="mech", description="mech: a Singular-compatible computer-algebra language "
                                 "for the configuration spaces of rigid mechanisms.")
     p.add_argument("file", nargs="?", help="script to run (.mech or .sing); '-' reads standard input")
@@ -22,7 +23,9 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--timeout", type=_limit, metavar="SECONDS", help="time limit of each statement (0: none)")
     p.add_argument("--max-memory", type=_limit, metavar="MB", help="memory each statement may add to the process, "
                    "in MB (0: none)")
-    p.add_argument("--json", action="store_true", help="mechanism reports (analyze) as JSON")
+    p.add_argument("--format", choices=list(FORMATS), default="text", help="the format of mechanism reports "
+                   "(analyze's default)")
+    p.add_argument("--json", dest="format", action="store_const", const="json", help="the same as --format json")
     p.add_argument("--version", action="version", version=f"mech {__version__}")
     return p
 
@@ -37,14 +40,16 @@ def _limit(text: str) -> float:
     return value
 
 
-def run_text(text: str, name: str, warnings: bool = True, dialect: str = "singular") -> int:
-    """Run a program, printing its output as it is produced; errors go to stderr.  The exit status."""
+def run_text(text: str, name: str, warnings: bool = True, dialect: str = "singular",
+             settings: Optional[dict[str, Any]] = None) -> int:
+    """Run a program, printing its output as it is produced; errors go to stderr.  The exit status.
+    ``settings``: the interpreter's (``{"report_format": "json"}``...)."""
     from .dsl.errors import MechError, MechInternalError
     from .dsl.interpreter import Interpreter, QuitSignal
     cls = Interpreter
     if dialect == "m2":
         from .dsl.m2 import M2Interpreter as cls
-    interp = cls(out=sys.stdout, flush=True, warnings=warnings)
+    interp = cls(out=sys.stdout, flush=True, warnings=warnings, settings=settings)
     try:
         interp.execute(text, name)
     except QuitSignal:
@@ -76,17 +81,15 @@ def main(argv: Optional[list[str]] = None) -> int:
 
 def _main(args: argparse.Namespace) -> int:
     warnings = not args.no_warn
-    if args.json:
-        from .stdlib import analysis
-        analysis.REPORT_FORMAT = "json"
+    settings = {"report_format": args.format}
     dialect = args.dialect or ("m2" if args.file and args.file.endswith(".m2") else "singular")
     if args.code is not None:
         if args.file:
             sys.stderr.write("mech: error: give either -c CODE or a FILE, not both\n")
             return 2
-        return run_text(args.code, "<string>", warnings, dialect)
+        return run_text(args.code, "<string>", warnings, dialect, settings)
     if args.file == "-" or (args.file is None and not sys.stdin.isatty()):
-        return run_text(sys.stdin.read(), "<stdin>", warnings, dialect)
+        return run_text(sys.stdin.read(), "<stdin>", warnings, dialect, settings)
     if args.file:
         try:
             with open(args.file, encoding="utf-8") as fh:
@@ -97,12 +100,12 @@ def _main(args: argparse.Namespace) -> int:
         except UnicodeDecodeError:
             sys.stderr.write(f"mech: error: {args.file} is not a UTF-8 text file\n")
             return 2
-        return run_text(text, args.file, warnings, dialect)
+        return run_text(text, args.file, warnings, dialect, settings)
     if dialect == "m2":
         from .dsl.m2 import run_m2_repl
         return run_m2_repl(warnings=warnings)
     from .dsl.repl import run_repl
-    return run_repl(warnings=warnings, quiet=args.quiet, version=__version__)
+    return run_repl(warnings=warnings, quiet=args.quiet, version=__version__, settings=settings)
 
 
 if __name__ == "__main__":

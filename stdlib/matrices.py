@@ -1,12 +1,13 @@
-"""Determinants and minors of matrices, as Singular's ``det`` and ``minor`` (``nrows``, ``ncols``,
-``transpose``, ``jacob`` and ``print`` are in :mod:`mech.stdlib.standard`)."""
+"""Matrices: their shape (``nrows``, ``ncols``), ``transpose``, and determinants and minors as
+Singular's ``det`` and ``minor`` (``jacob`` is in :mod:`mech.stdlib.polynomials`, ``print`` in
+:mod:`mech.stdlib.language`)."""
 from __future__ import annotations
 
 from ..dsl.errors import MechRuntimeError
-from ..dsl.values import Ideal, Matrix
+from ..dsl.registry import command
+from ..dsl.values import Ideal, IntVec, Matrix
 from ..kernel import Poly
 from ..kernel import matrix as KM
-from ..dsl.registry import command
 
 
 def _kernel(M: Matrix) -> KM.Matrix:
@@ -42,3 +43,57 @@ def minor(M: Matrix, k: int) -> Ideal:
       → _[3]=-2x+y
     """
     return Ideal(M.ring, KM.minors(_kernel(M), k))
+
+
+@command("ncols")
+def ncols(m: Matrix | Ideal | IntVec) -> int:
+    """ncols(M): the number of columns (generators of an ideal).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      matrix M[2][3] = x,y,1,2,3,4;
+      ncols(M);
+      → 3
+      ncols(ideal(x, y, 0));
+      → 3
+    """
+    if isinstance(m, Matrix):
+        return m.ncols
+    if isinstance(m, Ideal):
+        return len(m.gens)
+    return 1
+
+
+@command("nrows")
+def nrows(m: Matrix | Ideal | IntVec) -> int:
+    """nrows(M): the number of rows (1 for an ideal).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      matrix M[2][3] = x,y,1,2,3,4;
+      nrows(M);
+      → 2
+      nrows(intvec(1,2,3));
+      → 3
+    """
+    if isinstance(m, Matrix):
+        return m.nrows
+    if isinstance(m, Ideal):
+        return 1
+    return len(m)
+
+
+@command("transpose")
+def transpose(m: Matrix) -> Matrix:
+    """transpose(M): the transposed matrix.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      matrix M[2][3] = x,y,1,2,3,4;
+      print(transpose(M));
+      → x,2,
+      → y,3,
+      → 1,4
+    """
+    return Matrix(m.ring, m.ncols, m.nrows, [m.get(i, j) for j in range(1, m.ncols + 1)
+                                             for i in range(1, m.nrows + 1)])

@@ -2,7 +2,6 @@
 import os
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
@@ -133,3 +132,41 @@ def test_a_closed_pipe_ends_quietly():
     cmd = f"{sys.executable} -m mech -c '{script}' | head -1; echo status ${{PIPESTATUS[0]}} >&2"
     r = subprocess.run(["bash", "-c", cmd], text=True, capture_output=True, timeout=120)
     assert r.stdout == "0\n" and r.stderr == "status 141\n"
+
+
+ANALYZE = 'LIB "mechanism.lib"; mechanism m = "fix O; bar O A 1; slider A"; analyze(m);'
+
+
+@pytest.mark.parametrize("args, form", [(["--format", "latex"], "latex"), (["--format", "json"], "json"),
+                                        (["--json"], "json"), (["--format", "text"], "text"), ([], "text")])
+def test_format_option_is_analyze_default(args, form, capsys):
+    from mech import Session
+    assert main(args + ["-c", ANALYZE]) == 0
+    assert capsys.readouterr().out == Session().execute(ANALYZE.replace("(m)", f'(m, "{form}")'))
+
+
+def test_json_alias_and_last_option_wins():
+    from mech.cli import _parser
+    assert _parser().parse_args(["--json"]).format == "json"
+    assert _parser().parse_args(["--json", "--format", "latex"]).format == "latex"
+    assert _parser().parse_args([]).format == "text"
+
+
+def test_unknown_format_option():
+    r = mech("--format", "xml", "-c", "1;")
+    assert r.returncode == 2 and r.stdout == ""
+    assert "argument --format: invalid choice: 'xml' (choose from 'text', 'json', 'latex')" in r.stderr
+
+
+def test_format_reaches_the_repl(capsys):
+    from mech.dsl.repl import run_repl
+    lines = iter([ANALYZE, ":reset", ANALYZE])
+
+    def read(prompt):
+        try:
+            return next(lines)
+        except StopIteration:
+            raise EOFError from None
+    assert run_repl(read=read, quiet=True, settings={"report_format": "latex"}) == 0
+    out = capsys.readouterr().out
+    assert out.count("\\begin{align*}") == 2 and "mechanism:" not in out

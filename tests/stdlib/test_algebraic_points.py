@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
@@ -17,8 +16,9 @@ from mech.kernel.groebner import normal_form
 from mech.kernel.ideals import ideals_equal
 from mech.kernel.local import (centre_at, classify_algebraic_point, local_components_over,
                                primitive_element, stays_prime)
-from mech.stdlib.analysis import analyze, report_data, report_text
+from mech.stdlib.analysis import analyze
 from mech.stdlib.mechanism import parse_mechanism
+from mech.stdlib.reports import report_data, report_text
 from mech.stdlib.standard import normalize
 from tests.util import ROOT, SINGULAR, ideal_blocks, parse_poly, run_singular
 

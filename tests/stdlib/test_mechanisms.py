@@ -12,8 +12,9 @@ import pytest
 from mech import Session
 from mech.dsl.errors import MechError
 from mech.kernel.ideals import ideals_equal
-from mech.stdlib.analysis import (analyze, global_analysis, has_real_points, local_analysis, report_data,
-                                   report_text)
+from mech.stdlib.analysis import analyze, global_analysis, local_analysis
+from mech.stdlib.realpoints import has_real_points
+from mech.stdlib.reports import report_data, report_text
 from mech.stdlib.mechanism import parse_mechanism
 from tests.util import ROOT, SINGULAR, ideal_blocks, parse_poly, run_singular
 

@@ -1,0 +1,249 @@
+"""The commands of ``LIB "mechanism.lib";`` on a mechanism's analysis: its ring, constraints,
+mobility, motion modes, singular variety and configurations, length conditions, and ``analyze``
+(the report, in a format of :data:`mech.stdlib.reports.FORMATS`).  The pictures are in
+:mod:`mech.stdlib.plots`."""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any, Sequence
+
+from mech.dsl.errors import MechRuntimeError
+from mech.dsl.registry import command
+from mech.dsl.values import Ideal, List, Ring
+from mech.kernel import Poly
+from mech.stdlib.analysis import run_analysis, require_numeric
+from mech.stdlib.mechanism import Mechanism, MechanismError
+from mech.stdlib.reports import FORMATS, dp_basis, unknown_format
+
+
+def _into(ctx: Any, polys: Sequence[Poly]) -> Ideal:
+    """The polynomials as an ideal of the basering (mapped by variable names)."""
+    from mech.kernel.maps import imap
+    ring = ctx.basering().poly
+    if not polys:
+        return Ideal(ring, [])
+    missing = [n for g in polys for i, n in enumerate(g.ring.names)
+               if n not in ring.names and any(e[i] for e in g.terms)]
+    if missing:
+        raise MechRuntimeError(f"the basering lacks the mechanism's variable {missing[0]} "
+                               "(def r = configurationRing(m); setring r;)")
+    return Ideal(ring, imap(list(polys), polys[0].ring, ring))
+
+
+@command("setLengths", lib="mechanism.lib")
+def set_lengths(m: Mechanism, *values: int | str) -> Mechanism:
+    """setLengths(m, v1, v2, ...): m with its symbolic lengths (in order of appearance) set to the
+    values (integers or strings "p/q").
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A l1; bar A B l2; slider B";
+      setLengths(m, 2, "1/2");
+      → fix O 0 0; bar O A 2; bar A B 1/2; slider B
+    """
+    names = m.symbols()
+    if len(values) != len(names):
+        raise MechRuntimeError(f"setLengths: the mechanism has {len(names)} symbolic lengths "
+                               f"({','.join(names)}), {len(values)} values given")
+    vals: dict[str, Any] = {}
+    for n, v in zip(names, values):
+        try:
+            vals[n] = Fraction(v) if isinstance(v, str) else v
+        except ValueError:
+            raise MechRuntimeError(f"setLengths: '{v}' is not a number") from None
+    return m.with_values(vals)
+
+
+@command("lengths", lib="mechanism.lib")
+def lengths(m: Mechanism) -> List:
+    """lengths(m): the names of the symbolic lengths, in order of appearance.
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A l1; bar A B l2; slider B";
+      lengths(m);
+      → [1]:
+      →    l1
+      → [2]:
+      →    l2
+    """
+    return List(m.symbols())
+
+
+@command("configurationRing", lib="mechanism.lib")
+def configuration_ring(m: Mechanism) -> Ring:
+    """configurationRing(m): the ring 0,(c1,s1,...,lengths),(dp(n),dp(k)) of the constraints.
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A l1; bar A B l2; slider B";
+      def r = configurationRing(m); r;
+      → // coefficients: QQ
+      → // number of vars : 6
+      → //        block   1 : ordering dp
+      → //                  : names    c1 s1 c2 s2
+      → //        block   2 : ordering dp
+      → //                  : names    l1 l2
+    """
+    from mech.dsl.rings import make_ring
+    from mech.dsl.values import OrderBlock
+    n, params = len(m.variables()), list(m.symbols())
+    blocks = [OrderBlock("dp", n)] + ([OrderBlock("dp", len(params))] if params else [])
+    return make_ring(0, (), m.variables() + params, blocks)
+
+
+@command("constraints", lib="mechanism.lib")
+def constraints(ctx: Any, m: Mechanism) -> Ideal:
+    """constraints(m): the constraint ideal J (loop and slider constraints, then the circles).
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A l1; bar A B l2; slider B";
+      def r = configurationRing(m); setring r;
+      constraints(m);
+      → _[1]=s1*l1+s2*l2
+      → _[2]=c1^2+s1^2-1
+      → _[3]=c2^2+s2^2-1
+    """
+    try:
+        return _into(ctx, m.constraints()[1])
+    except MechanismError as e:
+        raise MechRuntimeError(str(e)) from None
+
+
+@command("mobility", lib="mechanism.lib")
+def mobility(m: Mechanism) -> int:
+    """mobility(m): the dimension of the configuration space (for generic symbolic lengths).
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A l1; bar A B l2; slider B";
+      mobility(m);
+      → 1
+    """
+    return run_analysis(m, local=False).mobility
+
+
+@command("motionModes", lib="mechanism.lib")
+def motion_modes(ctx: Any, m: Mechanism) -> List:
+    """motionModes(m): the prime components of J, each as list(prime, dim, has real points).
+    With symbolic lengths: the modes over Q(lengths) (the generic mechanism's), with their
+    dimension over Q(lengths) and -1 for real points (not decided); an error when they could not
+    be certified (see docs/mechanisms.md, Limits).
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A 1; bar A B 1; slider B";
+      def r = configurationRing(m); setring r;
+      list L = motionModes(m);
+      size(L); L[1][1]; L[1][2]; L[1][3];
+      → 2
+      → _[1]=s1+s2
+      → _[2]=c1+c2
+      → _[3]=c2^2+s2^2-1
+      → 1
+      → 1
+    """
+    a = run_analysis(m, local=False)
+    if a.params and not a.modes:
+        raise MechRuntimeError(f"motionModes: the modes over Q({','.join(a.params)}) were not certified "
+                               "(no sparse birational projection, or too many variables): give numeric "
+                               "lengths (setLengths(m, ...))")
+    return List([List([_into(ctx, dp_basis(md.prime)), md.dim, -1 if md.real is None else int(md.real)])
+                 for md in a.modes])
+
+
+@command("singularVariety", lib="mechanism.lib")
+def singular_variety(ctx: Any, m: Mechanism) -> Ideal:
+    """singularVariety(m): J + I_r(dJ), the Fitting ideal of Theorem 1 added to J.
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A l1; bar A B l2; slider B";
+      def r = configurationRing(m); setring r;
+      size(singularVariety(m));
+      → 7
+    """
+    a = run_analysis(m, local=False)
+    return _into(ctx, list(a.ideal) + a.fitting)
+
+
+@command("lengthConditions", lib="mechanism.lib")
+def length_conditions(ctx: Any, m: Mechanism) -> Ideal:
+    """lengthConditions(m): the irreducible factors on the lengths, one of which must vanish
+    for singular configurations to exist.
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A l1; bar A B l2; slider B";
+      def r = configurationRing(m); setring r;
+      lengthConditions(m);
+      → _[1]=l1-l2
+      → _[2]=l1+l2
+    """
+    a = run_analysis(m, local=False)
+    if not a.params:
+        raise MechRuntimeError("lengthConditions needs symbolic lengths")
+    return _into(ctx, a.length_factors)
+
+
+@command("singularPoints", lib="mechanism.lib")
+def singular_points(ctx: Any, m: Mechanism) -> List:
+    """singularPoints(m): each singular configuration as list(prime, kind, tangent cone,
+    local components, transition) (cone and components centred at the point; at a point with
+    algebraic coordinates they have coefficients in Q(t), which analyze prints: here an empty
+    ideal and list).
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A 1; bar A B 1; slider B";
+      def r = configurationRing(m); setring r;
+      list S = singularPoints(m);
+      size(S); S[1][1]; S[1][2]; S[1][3];
+      → 2
+      → _[1]=s2+1
+      → _[2]=c2
+      → _[3]=s1-1
+      → _[4]=c1
+      → components meet
+      → _[1]=s2
+      → _[2]=s1
+      → _[3]=c1^2-c2^2
+    """
+    a = run_analysis(m)
+    require_numeric(a, "singularPoints")
+    return List([List([_into(ctx, dp_basis(s.prime)), s.kind or "not a point",
+                       _into(ctx, [] if s.algebraic else dp_basis(s.tangent_cone)),
+                       List([] if s.algebraic else [_into(ctx, dp_basis(c)) for c in s.local_components]),
+                       s.transition])
+                 for s in a.singular])
+
+
+@command("analyze", lib="mechanism.lib")
+def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> None:
+    """analyze(m[, "text"|"json"|"latex"[, "full"|"quick"]]): prints the whole analysis ("quick":
+    without the primary decomposition of J, so without motion modes and local components; the
+    default format is text, or the one given by mech --format).
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "fix O; bar O A 1; slider A";
+      analyze(m);
+      → mechanism: fix O 0 0; bar O A 1; slider A
+      → variables: c1,s1
+      → constraint ideal J:
+      →   s1
+      →   c1^2+s1^2-1
+      → mobility 0; J is radical
+      → motion modes (primary decomposition of J): 2
+      →   [1] dim 0, has real points: <s1, c1-1>
+      →   [2] dim 0, has real points: <s1, c1+1>
+      → singular configurations (Theorem 1: V(J + I_2(dJ))): 0
+    """
+    form = form or ctx.settings.get("report_format", "text")
+    render = FORMATS.get(form)
+    if render is None:
+        raise MechRuntimeError(f"analyze: {unknown_format(form)}")
+    if depth not in ("full", "quick"):
+        raise MechRuntimeError(f"analyze: unknown depth '{depth}' (full or quick)")
+    ctx.write(render(run_analysis(m, decompose=depth == "full")))

@@ -1,0 +1,213 @@
+"""The structure of polynomials and ideals: ``size``, leading terms (``lead``, ``leadcoef``,
+``leadmonom``), ``deg``, derivatives (``diff``, ``jacob``), ``subst`` and ``maxideal``."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..dsl.errors import MechRuntimeError, MechTypeError
+from ..dsl.registry import command
+from ..dsl.values import Ideal, IntVec, List, Map, Matrix, Number, Ring, to_poly
+from ..dsl.values import typeof as _typeof
+from ..kernel import Poly
+
+
+@command("size")
+def size(x: Any) -> int:
+    """size(x): terms of a poly, nonzero generators of an ideal, entries of a list, intvec or
+    matrix, characters of a string.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      size(x2+2xy-1);
+      → 3
+      size(ideal(x, 0, y));
+      → 2
+      size("mech");
+      → 4
+    """
+    if isinstance(x, int):
+        return 0 if x == 0 else 1
+    if isinstance(x, Number):
+        return 0 if x.is_zero() else 1
+    if isinstance(x, Poly):
+        return len(x.terms)
+    if isinstance(x, Ideal):
+        return len(x.nonzero())
+    if isinstance(x, Matrix):
+        return x.nrows * x.ncols
+    if isinstance(x, (List, str, IntVec)):
+        return len(x)
+    if isinstance(x, Map):
+        return len(x.images)
+    if isinstance(x, Ring):
+        return len(x.names)
+    raise MechTypeError(f"size is not defined for {_typeof(x)}")
+
+
+@command("lead")
+def lead(f: Poly | Ideal) -> Any:
+    """lead(f): the leading term of a poly, or the ideal of leading terms.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      lead(3x2y-x3+y);
+      → -x3
+      lead(ideal(x+y2, 2x-1));
+      → _[1]=y2
+      → _[2]=2x
+    """
+    if isinstance(f, Poly):
+        return f.ring.zero() if f.is_zero() else f.lt()
+    return Ideal(f.ring, [g if g.is_zero() else g.lt() for g in f.gens])
+
+
+@command("leadcoef")
+def leadcoef(f: Poly) -> Number:
+    """leadcoef(f): the leading coefficient of f (a number).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      leadcoef(-3x2y+x3+y);
+      → 1
+    """
+    return Number(f.ring, f.ring.field.zero if f.is_zero() else f.lc())
+
+
+@command("leadmonom")
+def leadmonom(f: Poly) -> Poly:
+    """leadmonom(f): the leading monomial of f (coefficient 1).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      leadmonom(-3x2y+x3+y);
+      → x3
+    """
+    return f.ring.zero() if f.is_zero() else f.ring.monomial(f.lm())
+
+
+@command("deg")
+def deg(f: Poly | Ideal, w: IntVec | None = None) -> int:
+    """deg(f) or deg(f, w): the (weighted) total degree of f, -1 for 0; for an ideal the maximum.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      deg(x2y+y5);
+      → 5
+      deg(x2y+y5, intvec(3,1));
+      → 7
+      deg(0);
+      → -1
+    """
+    def one(p: Poly) -> int:
+        if p.is_zero():
+            return -1
+        if w is None:
+            return p.total_degree()
+        ws = list(w.values) + [0] * (p.ring.nvars - len(w))
+        return max(sum(a * b for a, b in zip(e, ws)) for e in p.terms)
+    if isinstance(f, Poly):
+        return one(f)
+    return max((one(g) for g in f.gens), default=-1)
+
+
+@command("diff")
+def diff(f: Poly | Ideal | Matrix, x: Poly) -> Any:
+    """diff(f, x): the partial derivative of f (poly, ideal or matrix) by the ring variable x.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      diff(x3y2+xy, x);
+      → 3x2y2+y
+      diff(ideal(x2, xy), y);
+      → _[1]=0
+      → _[2]=x
+    """
+    i = _var_index(x, "diff")
+    if isinstance(f, Poly):
+        return f.diff(i)
+    if isinstance(f, Ideal):
+        return Ideal(f.ring, [g.diff(i) for g in f.gens])
+    return Matrix(f.ring, f.nrows, f.ncols, [g.diff(i) for g in f.entries])
+
+
+def _var_index(x: Poly, cmd: str) -> int:
+    if len(x.terms) == 1:
+        (e, c), = x.terms.items()
+        if c == 1 and sum(e) == 1:
+            return e.index(1)
+    raise MechRuntimeError(f"{cmd}: the second argument must be a ring variable")
+
+
+@command("jacob")
+def jacob(f: Poly | Ideal) -> Any:
+    """jacob(f): the ideal of partial derivatives of a poly; for an ideal the Jacobian matrix
+    (one row per generator).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      jacob(x3+xy2);
+      → _[1]=3x2+y2
+      → _[2]=2xy
+      print(jacob(ideal(x2+y2-1, x-y)));
+      → 2x,2y,
+      → 1, -1
+    """
+    n = f.ring.nvars
+    if isinstance(f, Poly):
+        return Ideal(f.ring, [f.diff(i) for i in range(n)])
+    return Matrix(f.ring, len(f.gens), n, [g.diff(i) for g in f.gens for i in range(n)])
+
+
+@command("subst")
+def subst(f: Poly | Ideal | Matrix, *pairs: Any) -> Any:
+    """subst(f, x, g, ...): substitute g for the ring variable x in f (several pairs in turn).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      subst(x2+yz, x, y+1);
+      → y2+yz+2y+1
+      subst(x2+yz, y, 2, z, x);
+      → x2+2x
+    """
+    if not pairs or len(pairs) % 2:
+        raise MechTypeError("subst(f, x, g): give a variable and its substitute")
+    ring = f.ring
+    for k in range(0, len(pairs), 2):
+        x = to_poly(pairs[k], ring)
+        g = to_poly(pairs[k + 1], ring)
+        i = _var_index(x, "subst")
+        images = ring.gens()
+        images[i] = g
+        if isinstance(f, Poly):
+            f = f.compose(images)
+        elif isinstance(f, Ideal):
+            f = Ideal(ring, [p.compose(images) for p in f.gens])
+        else:
+            f = Matrix(ring, f.nrows, f.ncols, [p.compose(images) for p in f.entries])
+    return f
+
+
+@command("maxideal")
+def maxideal(ctx, k: int) -> Ideal:
+    """maxideal(k): the ideal of all monomials of degree k.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      maxideal(2);
+      → _[1]=y2
+      → _[2]=xy
+      → _[3]=x2
+    """
+    ring = ctx.basering().poly
+    if k <= 0:
+        return Ideal(ring, [ring.one()])
+    exps: list[tuple[int, ...]] = []
+
+    def rec(i: int, left: int, cur: list[int]) -> None:
+        if i == ring.nvars - 1:
+            exps.append(tuple(cur + [left]))
+            return
+        for a in range(left, -1, -1):
+            rec(i + 1, left - a, cur + [a])
+    rec(0, k, [])
+    return Ideal(ring, [ring.monomial(e) for e in sorted(exps)])  # Singular lists them in increasing lex order
