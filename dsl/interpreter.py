@@ -15,7 +15,7 @@ import weakref
 from pathlib import Path
 from typing import Any, Callable, Optional, TextIO
 
-from ..kernel import Poly
+from ..kernel import KernelError, Poly
 from . import ast as A
 from . import ops
 from .errors import MechError, MechInternalError, MechNameError, MechRuntimeError, MechTypeError, Note, Source
@@ -93,6 +93,8 @@ def convert_exception(e: BaseException) -> MechError:
         raise e
     if isinstance(e, MechError):
         return e
+    if isinstance(e, KernelError):
+        return MechRuntimeError(str(e))
     if isinstance(e, ZeroDivisionError):
         return MechRuntimeError("division by 0")
     if isinstance(e, RecursionError):

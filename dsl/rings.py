@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from typing import Any, Callable
 
-from ..kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from ..kernel import GF, QQ, Block, KernelError, MonomialOrder, PolyRing
 from . import ast as A
 from .errors import MechError, MechRuntimeError
 from .values import IntVec, OrderBlock, Ring
@@ -184,7 +184,7 @@ def make_ring(char: int, params: tuple[str, ...] | list[str], names: list[str], 
         kblocks = [Block(b.kind, b.size, b.weights) for b in blocks if b.kind not in ("c", "C")]
         try:
             order = MonomialOrder(kblocks, len(names))
-        except ValueError as e:
+        except KernelError as e:
             raise MechRuntimeError(str(e)) from None
         poly = _ring_cache[key] = PolyRing(field, names, order)
     return Ring(poly, params, tuple(blocks))
@@ -196,12 +196,12 @@ def _field(char: int, params: tuple[str, ...]) -> Any:
     else:
         try:
             base = GF(char)
-        except ValueError as e:
+        except KernelError as e:
             raise MechRuntimeError(str(e)) from None
     if not params:
         return base
     from ..kernel.ratfunc import RationalFunctionField
     try:
         return RationalFunctionField(char, params)
-    except ValueError as e:
+    except KernelError as e:
         raise MechRuntimeError(str(e)) from None

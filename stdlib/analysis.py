@@ -31,11 +31,11 @@ from mech.kernel.factor import factorize
 from mech.kernel.groebner import normal_form
 from mech.kernel.hilbert import vdim
 from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, independent_set, is_subset,
-                                move, radical, saturate_poly, std)
+                                move, saturate_poly, std)
 from mech.kernel.local import (AlgebraicPoint, centre_at, classify_algebraic_point, classify_point,
                                primitive_element, tangent_cone, tangent_cone_at, tangent_cone_over)
 from mech.kernel.matrix import Matrix, minors
-from mech.kernel.primdec import min_ass_gtz, primdec_gtz
+from mech.kernel.primdec import min_ass_gtz, primdec_gtz, radical
 from mech.kernel.projection import project_primes
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.standard import normalize
