@@ -39,8 +39,8 @@ M2 = shutil.which("M2")
 # -- children: one system each --------------------------------------------------------------
 def child_mech(case: Case, repeat: int) -> dict:
     from mech import Session
-    from mech.kernel import groebner
-    from mech.kernel.groebner import clear_cache
+    from mech.kernel.engines import clear_cache
+    from mech.kernel.groebner import groebner
     s = Session(warnings=False)
     s.execute(f"ring r = {case.char}, ({','.join(case.variables)}), {case.ordering};\n"
               f"ideal I = {', '.join(case.gens)};")

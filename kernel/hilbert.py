@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Sequence
 
+from .errors import DomainError
 from .order import Exp
 
 Series = list[int]  # coefficients of t^0, t^1, ...
@@ -89,7 +90,7 @@ def hilbert_numerators(lms: Sequence[Exp], nvars: int) -> tuple[Series, Series, 
     only); ``hilb(I,1)`` and ``hilb(I,2)`` return ``Q + [0]`` and ``P + [0]``."""
     gens = minimal_monomials(lms)
     if gens and len(gens[0]) != nvars:
-        raise ValueError(f"monomials in {len(gens[0])} variables for a ring of {nvars}")
+        raise DomainError(f"monomials in {len(gens[0])} variables for a ring of {nvars}")
     q = _trim(_numerator(gens))
     if q == [0]:
         return [0], [0], -1

@@ -10,7 +10,7 @@ from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
 from ..kernel import Poly
 from ..kernel.dimension import krull_dim
-from ..kernel.groebner import groebner as _groebner
+from ..kernel.engines import standard_basis as kernel_standard_basis
 from ..kernel.groebner import normal_form
 
 
@@ -58,14 +58,7 @@ def _normalize_params(p: Poly) -> Poly:
 
 def standard_basis(ideal: Ideal) -> list[Poly]:
     """A standard basis of ``ideal`` (reduced for global orderings), normalized as Singular's std."""
-    ring = ideal.ring
-    gens = ideal.nonzero()
-    if ring.order.is_global:
-        basis = _groebner(gens, ring)
-    else:
-        from ..kernel.mora import standard_basis as local_std
-        basis = local_std(gens, ring)
-    return [normalize(p) for p in basis]
+    return [normalize(p) for p in kernel_standard_basis(ideal.nonzero(), ideal.ring)]
 
 
 @command("std")
@@ -101,7 +94,7 @@ def groebner(I: Ideal) -> Ideal:
 def _nf(f: Poly, basis: list[Poly]) -> Poly:
     if f.ring.order.is_global:
         return normal_form(f, basis)
-    from ..kernel.mora import weak_normal_form
+    from ..kernel.localnf import weak_normal_form
     return weak_normal_form(f, basis)
 
 
