@@ -14,6 +14,7 @@ import time
 import weakref
 from typing import Any, Callable, Optional, TextIO
 
+from ..kernel.engines import AUTO, using_engine
 from . import ast as A
 from . import registry
 from .assignment import Assignment
@@ -95,7 +96,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.source = source
         try:
             for stmt in program.body:
-                self.limits.run(self, self.exec_stmt, stmt)
+                self.guarded(self.exec_stmt, stmt)
         except (BreakSignal, ContinueSignal) as sig:
             word = "break" if isinstance(sig, BreakSignal) else "continue"
             raise MechRuntimeError(f"{word} outside a loop", self.stmt.pos if self.stmt else None, source)
@@ -103,6 +104,12 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
             raise MechRuntimeError("return outside a procedure", self.stmt.pos if self.stmt else None, source)
         finally:
             self.source = saved
+
+    def guarded(self, fn: Callable[..., Any], *args: Any) -> Any:
+        """``fn(*args)`` as one top-level statement: under the limits, with the session's default
+        Gröbner engine (``settings["engine"]``, see :mod:`mech.kernel.engines`)."""
+        with using_engine(self.settings.get("engine", AUTO)):
+            return self.limits.run(self, fn, *args)
 
     def write(self, text: str) -> None:
         self.out.write(text)

@@ -11,6 +11,7 @@ from . import __version__
 
 
 def _parser() -> argparse.ArgumentParser:
+    from .kernel.engines import list_engines
     from .stdlib.reports import FORMATS
     p = argparse.ArgumentParser(prog="mech", description="mech: a Singular-compatible computer-algebra language "
                                 "for the configuration spaces of rigid mechanisms.")
@@ -26,6 +27,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--format", choices=list(FORMATS), default="text", help="the format of mechanism reports "
                    "(analyze's default)")
     p.add_argument("--json", dest="format", action="store_const", const="json", help="the same as --format json")
+    p.add_argument("--engine", choices=[name for name, _ in list_engines()], default="auto",
+                   help="the Groebner engine of every standard basis (default auto; see 'help engine;')")
     p.add_argument("--version", action="version", version=f"mech {__version__}")
     return p
 
@@ -81,7 +84,7 @@ def main(argv: Optional[list[str]] = None) -> int:
 
 def _main(args: argparse.Namespace) -> int:
     warnings = not args.no_warn
-    settings = {"report_format": args.format}
+    settings = {"report_format": args.format, "engine": args.engine}
     dialect = args.dialect or ("m2" if args.file and args.file.endswith(".m2") else "singular")
     if args.code is not None:
         if args.file:

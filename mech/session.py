@@ -9,6 +9,8 @@ from .dsl.errors import MechError, MechNameError, MechSyntaxError, MechTypeError
 from .dsl.interpreter import Interpreter, QuitSignal
 from .dsl.parser import parse
 from .dsl.values import NONE, ExprList, IntVec, Ring
+from .kernel.engines import check_engine
+from .kernel.errors import EngineError
 
 
 class Session:
@@ -21,10 +23,11 @@ class Session:
     :class:`MechError` subclasses carrying ``line`` and ``column`` (``err.output`` holds what was
     printed before the error).  ``timeout`` (seconds) and ``max_memory`` (MB it may add to the
     process) limit each statement (``mech.dsl.limits``): exceeding one raises ``MechLimitError``
-    and leaves the session usable."""
+    and leaves the session usable.  ``engine`` names the Gröbner engine of every standard basis
+    (``mech.kernel.engines``; default ``"auto"``; the language's ``engine("NAME")`` changes it)."""
 
     def __init__(self, warnings: bool = True, timeout: float | None = None,
-                 max_memory: float | None = None, dialect: str = "singular") -> None:
+                 max_memory: float | None = None, dialect: str = "singular", engine: str = "auto") -> None:
         self._out = io.StringIO()
         if dialect not in ("singular", "m2"):
             raise ValueError(f"unknown dialect '{dialect}' (known: singular, m2)")
@@ -32,7 +35,12 @@ class Session:
         cls = Interpreter
         if dialect == "m2":  # Macaulay2's syntax on the same interpreter (mech.dsl.m2)
             from .dsl.m2 import M2Interpreter as cls
-        self._interp = cls(out=self._out, warnings=warnings, timeout=timeout, max_memory=max_memory)
+        try:
+            check_engine(engine)
+        except EngineError as e:
+            raise ValueError(str(e)) from None
+        self._interp = cls(out=self._out, warnings=warnings, timeout=timeout, max_memory=max_memory,
+                           settings={"engine": engine})
 
     @property
     def interpreter(self) -> Interpreter:
@@ -76,7 +84,7 @@ class Session:
         self._out.seek(0)
         self._out.truncate()
         try:
-            values = it.limits.run(it, lambda: [it.eval(e) for e in exprs])
+            values = it.guarded(lambda: [it.eval(e) for e in exprs])
         finally:
             it.source = saved
         values = [v for v in values if v is not NONE]

@@ -10,6 +10,7 @@ from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
 from ..kernel import Poly
 from ..kernel.dimension import krull_dim
+from ..kernel.engines import AUTO, check_engine, list_engines
 from ..kernel.engines import standard_basis as kernel_standard_basis
 from ..kernel.groebner import normal_form
 
@@ -59,6 +60,39 @@ def _normalize_params(p: Poly) -> Poly:
 def standard_basis(ideal: Ideal) -> list[Poly]:
     """A standard basis of ``ideal`` (reduced for global orderings), normalized as Singular's std."""
     return [normalize(p) for p in kernel_standard_basis(ideal.nonzero(), ideal.ring)]
+
+
+def _engine_list() -> str:
+    return "\n".join(f"      {name:<11}{summary}" for name, summary in list_engines())
+
+
+def engine(ctx, name: str = "") -> Any:
+    """engine(): the name of the session's Groebner engine; engine("NAME"): use NAME from now on for
+    std and every command built on it (elimination, decomposition, ...), wherever it accepts the
+    ring (elsewhere "auto" chooses).  The same as mech --engine NAME and Session(engine="NAME").
+    The engines:
+{engines}
+
+    Example:
+      engine();
+      → auto
+      engine("buchberger");
+      ring r = 0,(x,y),dp;
+      std(ideal(x2-y, xy-1));
+      → _[1]=y2-x
+      → _[2]=xy-1
+      → _[3]=x2-y
+      engine("auto");
+    """
+    if not name:
+        return ctx.settings.get("engine", AUTO)
+    check_engine(name)
+    ctx.settings["engine"] = name
+    return None
+
+
+engine.__doc__ = engine.__doc__.replace("{engines}", _engine_list())
+command("engine")(engine)
 
 
 @command("std")
