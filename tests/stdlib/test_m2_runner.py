@@ -1,4 +1,4 @@
-"""The Macaulay2 conformance runner (benchmarks/m2_examples.py) on synthetic sources and outputs:
+"""The Macaulay2 conformance runner (benchmarks/m2_examples.py, m2_sources.py) on synthetic sources and outputs:
 reading Macaulay2's strings and doc formats, the selection rule, the classification of results and
 the report; with Macaulay2 installed, its judge of mech's values."""
 from __future__ import annotations
@@ -12,15 +12,17 @@ import pytest
 from tests.util import ROOT
 
 
-def _load():
-    spec = importlib.util.spec_from_file_location("m2_examples", ROOT / "benchmarks" / "m2_examples.py")
+def _load(name: str):
+    """A module of benchmarks/ (not a package: its scripts import each other by name)."""
+    spec = importlib.util.spec_from_file_location(name, ROOT / "benchmarks" / f"{name}.py")
     module = importlib.util.module_from_spec(spec)
-    sys.modules["m2_examples"] = module  # dataclasses look their module up
+    sys.modules[name] = module  # dataclasses and m2_examples look it up
     spec.loader.exec_module(module)
     return module
 
 
-R = _load()
+S = _load("m2_sources")
+R = _load("m2_examples")
 INFO = {"private": {"checkIt", "H"}, "globals": {"monomialIdeal": "function", "Strategy": "Symbol",
                                                 "elapsedTime": "Keyword"}, "version": "1.21"}
 
@@ -33,14 +35,14 @@ INFO = {"private": {"checkIt", "H"}, "globals": {"monomialIdeal": "function", "S
     ("///a/b///", "a/b", 9),
 ])
 def test_strings(text: str, value: str, end: int) -> None:
-    assert R.read_string(text, 0) == (value, end)
+    assert S.read_string(text, 0) == (value, end)
 
 
 def test_tokens_skip_comments_and_strings() -> None:
     code = 'f(x) -- g(y)\n-* h *- "k(z)" ///m/// x_1..x_3 1.5'
-    assert [t for _, t in R.tokens(code)] == ["f", "(", "x", ")", '"', '"', "x", "_", "1", ".", ".", "x", "_", "3",
+    assert [t for _, t in S.tokens(code)] == ["f", "(", "x", ")", '"', '"', "x", "_", "1", ".", ".", "x", "_", "3",
                                              "1.5"]
-    assert R.closing("a(b[c], (d)) e", 1) == 12
+    assert S.closing("a(b[c], (d)) e", 1) == 12
 
 
 def test_document_examples_and_key() -> None:
@@ -53,9 +55,9 @@ def test_document_examples_and_key() -> None:
               + 1
         ///,
         EXAMPLE { /// a = 1 /// } }'''
-    assert R.document_key(body) == "(resultant, RingElement, RingElement)"
-    assert R.document_key('{ Key => "polynomial rings", EXAMPLE "x" }') == "polynomial rings"
-    assert R.old_style_examples(body) == ["R = QQ[x]", "f = x^2 -- a comment", "g = x", "h = f + g\n  + 1",
+    assert S.document_key(body) == "(resultant, RingElement, RingElement)"
+    assert S.document_key('{ Key => "polynomial rings", EXAMPLE "x" }') == "polynomial rings"
+    assert S.old_style_examples(body) == ["R = QQ[x]", "f = x^2 -- a comment", "g = x", "h = f + g\n  + 1",
                                           "a = 1"]
 
 
@@ -95,7 +97,7 @@ Node
 
 
 def test_simpledoc_nodes() -> None:
-    assert R.simpledoc_nodes(SIMPLEDOC) == [
+    assert S.simpledoc_nodes(SIMPLEDOC) == [
         ("saturate", ["R = QQ[x,y]\nI = ideal(x^2,\n    x*y)", "saturate I"], 1),
         ("ideal quotients", ["x"], 26)]
 
@@ -109,7 +111,7 @@ def test_cases_in_a_file(tmp_path: Path) -> None:
         'TEST get(currentFileDirectory | "other.m2")\n'
         "BENCHMARK ///\n  slow()\n///\n"
         "SIMPLETEST = str -> TEST str\n")
-    cases = R.cases_in(tmp_path / "pkg.m2", "Pkg/pkg.m2", "Pkg", "")
+    cases = S.cases_in(tmp_path / "pkg.m2", "Pkg/pkg.m2", "Pkg", "")
     assert [(c.where, c.kind, c.name, c.code) for c in cases] == [
         ("Pkg/pkg.m2:1", "example", "foo", "foo 1"),
         ("Pkg/pkg.m2:4", "example", "saturate", "R = QQ[x,y]\nI = ideal(x^2,\n    x*y)\nsaturate I"),
@@ -125,7 +127,7 @@ def test_loaded_files(tmp_path: Path) -> None:
     (tmp_path / "Pkg.m2").write_text('load "./Pkg/a.m2"\n-- load "./Pkg/c.m2"\n')
     (tmp_path / "Pkg" / "a.m2").write_text('x = 1\n  load "./b.m2"\n')
     (tmp_path / "Pkg" / "b.m2").write_text("")
-    assert [p.name for p in R.loaded_files(tmp_path / "Pkg.m2")] == ["Pkg.m2", "a.m2", "b.m2"]
+    assert [p.name for p in S.loaded_files(tmp_path / "Pkg.m2")] == ["Pkg.m2", "a.m2", "b.m2"]
 
 
 @pytest.mark.parametrize("code, reason", [
@@ -142,11 +144,11 @@ def test_loaded_files(tmp_path: Path) -> None:
     ("R = QQ[x, SkewCommutative => true]", "non-commutative rings: SkewCommutative"),
 ])
 def test_selection(code: str, reason: str) -> None:
-    assert R.out_of_scope(code) == reason
+    assert S.out_of_scope(code) == reason
 
 
 def test_internals() -> None:
-    case = R.Case("f:1", "Pkg", "test", "TEST", "H = 1\ncheckIt(H, x)")
+    case = S.Case("f:1", "Pkg", "test", "TEST", "H = 1\ncheckIt(H, x)")
     assert R.internals(case, INFO) == "checkIt"
 
 
@@ -204,7 +206,7 @@ def _m2(values: dict, classes=("Ideal",), prints=(), rc: int = 0, error: str = "
             "seconds": 1.0, "timeout": timeout}
 
 
-CASE = R.Case("f:1", "Pkg", "example", "node", "code")
+CASE = S.Case("f:1", "Pkg", "example", "node", "code")
 
 
 @pytest.mark.parametrize("mech, m2, status, reason", [
@@ -219,6 +221,10 @@ CASE = R.Case("f:1", "Pkg", "example", "node", "code")
     (_mech({}, rc=1, err="f:2:1: error: internal error: IndexError: list index out of range\n"), _m2({}),
      "crash", "IndexError: list index out of range"),
     (_mech({}, rc=-9, timeout=True), _m2({}), "timeout", "mech times out"),
+    (_mech({}, rc=1, err="f:1:1: error: operator ^ is not defined for ring and int\n"), _m2({}),
+     "excluded", "modules, resolutions, chain complexes: R^n"),
+    (_mech({}, rc=1, err="f:1:5: error: unknown identifier 'ZZ' (no ring is active)\n"), _m2({}),
+     "unsupported", "ZZ as a value"),
     (_mech({}), _m2({}, rc=1, error="stdio:1:1:(3): error: no method"), "excluded", "Macaulay2 1.21 fails on it"),
     (_mech({}), _m2({}, classes=("Module", "Ideal")), "excluded", "values outside mech's scope: Module"),
 ])
@@ -228,7 +234,7 @@ def test_classify(mech: dict, m2: dict, status: str, reason: str) -> None:
 
 
 def test_report_ranks_the_missing_features() -> None:
-    cases = [R.Case(f"f:{k}", "Pkg", "example", f"n{k}", "x") for k in range(5)]
+    cases = [S.Case(f"f:{k}", "Pkg", "example", f"n{k}", "x") for k in range(5)]
     results = [R.Result(cases[0], "agree"), R.Result(cases[1], "unsupported", "function monomialIdeal"),
                R.Result(cases[2], "unsupported", "function monomialIdeal"), R.Result(cases[3], "unsupported", "syntax: ':='"),
                R.Result(cases[4], "excluded", "random values: random")]
@@ -248,7 +254,7 @@ def test_macaulay2_judges_values(tmp_path: Path) -> None:
             "primaryDecomposition ideal(x^2, x*y)")
     mech = {2: "ideal(x*z,x*y)", 3: "{ideal(z,y), ideal x}", 4: "3", 6: "x", 7: "(1,2)",
             9: "{ideal x, ideal(y^2,x*y,x^2)}", 10: "{ideal x, ideal(y^2,x^2)}"}
-    m2 = R.run_m2(R.Case("f:1", "Pkg", "example", "n", code), mech, 60, str(tmp_path))
+    m2 = R.run_m2(S.Case("f:1", "Pkg", "example", "n", code), mech, 60, str(tmp_path))
     assert m2["values"] == {1: ("R", "missing"), 2: ("ideal(x*y,x*z)", "equal"),
                             3: ("{ideal x, ideal(z,y)}", "equal"), 4: ("{3}", "differ"), 6: ("x", "same"),
                             7: ("{1, 2}", "differ"), 9: ("{ideal x, ideal(y,x^2)}", "equivalent"),
