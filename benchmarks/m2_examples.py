@@ -371,6 +371,24 @@ def classify(case: Case, mech: dict, m2: dict, info: dict) -> Result:
     return res
 
 
+def mech_lacks(results: list[Result], info: dict) -> Counter:
+    """Macaulay2's functions that the in-scope cases not agreeing use (and do not define) and that
+    mech's Macaulay2 dialect does not know: function -> number of cases."""
+    uses: dict[int, set[str]] = {}
+    for r in results:
+        if r.status in STATUSES and r.status != "agree":
+            toks = [t for _, t in tokens(r.case.code)]
+            defined = {t for k, t in enumerate(toks[:-1]) if toks[k + 1] in ("=", ":")}
+            uses[id(r)] = {t for t in toks if info["globals"].get(t) == "function" and t not in defined}
+    names = set().union(*uses.values()) if uses else set()
+    probe = ("import sys\nfrom mech import MechError, Session\ns = Session(dialect='m2')\n"
+             "for n in sys.stdin.read().split():\n    try:\n        s.execute(n + ';')\n"
+             "    except MechError:\n        print(n)\n")
+    with tempfile.TemporaryDirectory() as tmp:
+        lacking = set(run([sys.executable, "-c", probe], "\n".join(sorted(names)), 300, tmp)[1].split())
+    return Counter(n for used in uses.values() for n in used & lacking)
+
+
 def run_case(case: Case, info: dict, timeout: float) -> Result:
     if case.excluded:
         return Result(case, "excluded", case.excluded)
@@ -439,6 +457,10 @@ def report(results: list[Result], meta: dict) -> str:
             blocked.setdefault(r.reason, []).append(r)
     for reason, rs in sorted(blocked.items(), key=lambda kv: (-len(kv[1]), kv[0])):
         lines.append(f"| {cell(reason)} | {len(rs)} | {rs[0].case.where} |")
+    lines += ["", "Every Macaulay2 function that mech's dialect lacks, by the number of in-scope cases not agreeing "
+              "that use it (anywhere in their code, not only first):", "",
+              ", ".join(f"{name} {n}" for name, n in sorted(meta["lacks"].items(), key=lambda kv: (-kv[1], kv[0])))
+              or "none"]
     for status, title in (("differ", "Different values"), ("crash", "Crashes"), ("error", "Errors"),
                           ("timeout", "Time-outs")):
         rs = [r for r in scope if r.status == status]
@@ -454,7 +476,7 @@ def report(results: list[Result], meta: dict) -> str:
 
 
 def main(argv: Optional[list[str]] = None) -> int:
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p = argparse.ArgumentParser(description=" ".join(__doc__.split("\n\n")[0].split()))
     p.add_argument("--src", type=Path, required=True, help="a checkout of Macaulay2's sources (github.com/Macaulay2/M2)")
     p.add_argument("--only", help="run only the cases whose file:line or node matches this regular expression")
     p.add_argument("--timeout", type=float, default=60, help="seconds per case and system (default 60)")
@@ -463,6 +485,8 @@ def main(argv: Optional[list[str]] = None) -> int:
     p.add_argument("--json", type=Path, help="save every case's result to this file")
     p.add_argument("--list", action="store_true", help="list the cases and their exclusions, run nothing")
     args = p.parse_args(argv)
+    if args.write and args.only:
+        p.error("--write writes the report of every case: not with --only")
     cases = extract(args.src)
     if args.only:
         cases = [c for c in cases if re.search(args.only, f"{c.where} {c.name}")]
@@ -476,7 +500,7 @@ def main(argv: Optional[list[str]] = None) -> int:
         results = list(pool.map(lambda c: run_case(c, info, args.timeout), cases))
     meta = {"date": time.strftime("%Y-%m-%d %H:%M"), "seconds": time.perf_counter() - t0, "jobs": args.jobs,
             "timeout": args.timeout, "m2_version": info["version"], "source": source_version(args.src),
-            "mech": mech_commit()}
+            "mech": mech_commit(), "lacks": mech_lacks(results, info)}
     for r in results:
         if r.status not in ("agree", "excluded"):
             print(f"{r.status:12} {r.case.where} {r.case.name}: {r.reason}")

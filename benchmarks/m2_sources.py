@@ -42,7 +42,7 @@ OUT_OF_SCOPE = {
     "hash tables and internals": {"new", "peek", "hashTable", "HashTable", "MutableHashTable",
                                   "MutableList", "mutableMatrix", "mutableIdentity", "keys", "values",
                                   "pairs", "cache", "frames", "gbTrace", "gbSnapshot", "engineDebugLevel",
-                                  "debugLevel", "locate", "globalAssign", "installMethod", "method"},
+                                  "debugLevel", "locate", "globalAssign", "installMethod", "method", "hooks"},
     "system, files and help": {"help", "viewHelp", "examples", "methods", "code", "edit", "installPackage",
                                "check", "run", "get", "openOut", "openIn", "currentFileDirectory", "printWidth",
                                "showTex", "tex", "html", "net", "toExternalString", "schedule",
@@ -310,7 +310,8 @@ def extract(src: Path) -> list[Case]:
     for path in files:
         if path.is_file():
             rel = str(path.relative_to(pkgs))
-            out.extend(cases_in(path, rel, "Macaulay2Doc/" + path.stem.removesuffix("-doc"), ""))
+            page = "functions" if path.parent.name == "functions" else path.stem
+            out.extend(cases_in(path, rel, f"Macaulay2Doc/{page}", ""))
     for case in out:
         case.excluded = case.excluded or out_of_scope(case.code)
     return out

@@ -233,17 +233,26 @@ def test_classify(mech: dict, m2: dict, status: str, reason: str) -> None:
     assert (r.status, r.reason) == (status, reason)
 
 
+def test_functions_mech_lacks() -> None:
+    info = {"globals": {"monomialIdeal": "function", "ideal": "function", "f": "function", "R": "Symbol"}}
+    code = "R = QQ[x]; monomialIdeal x; ideal x; f = y -> y; f x"
+    results = [R.Result(S.Case("f:1", "Pkg", "example", "n", code), "unsupported"),
+               R.Result(S.Case("f:2", "Pkg", "example", "n", code), "agree")]
+    assert R.mech_lacks(results, info) == {"monomialIdeal": 1}
+
+
 def test_report_ranks_the_missing_features() -> None:
     cases = [S.Case(f"f:{k}", "Pkg", "example", f"n{k}", "x") for k in range(5)]
     results = [R.Result(cases[0], "agree"), R.Result(cases[1], "unsupported", "function monomialIdeal"),
                R.Result(cases[2], "unsupported", "function monomialIdeal"), R.Result(cases[3], "unsupported", "syntax: ':='"),
                R.Result(cases[4], "excluded", "random values: random")]
     text = R.report(results, {"date": "today", "seconds": 1.0, "jobs": 2, "timeout": 30, "m2_version": "1.21",
-                              "source": "1.21", "mech": "abc"})
+                              "source": "1.21", "mech": "abc", "lacks": {"monomialIdeal": 2}})
     assert "4 in scope, **1 agree (25%)**" in text
     assert "| function monomialIdeal | 2 | f:1 |\n| syntax: ':=' | 1 | f:3 |" in text
     assert "| **all** | 4 | 1 | 0 | 3 | 0 | 0 | 0 | 25% | 1 |" in text
     assert "| random values | 1 |" in text
+    assert "use it (anywhere in their code, not only first):\n\nmonomialIdeal 2" in text
 
 
 # ---------------------------------------------------------------- Macaulay2 judging mech's text
