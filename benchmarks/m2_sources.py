@@ -236,7 +236,7 @@ def simpledoc_nodes(text: str) -> list[tuple[str, list[str], int]]:
             continue
         k = end if word != "Node" else k + 1
     nodes.append((key, examples, start))
-    return [(key.strip('"'), ex, line) for key, ex, line in nodes if ex]
+    return [(key.strip('"'), [e for e in ex if e], line) for key, ex, line in nodes if any(ex)]
 
 
 def cases_in(path: Path, rel: str, origin: str, package: str) -> list[Case]:
@@ -245,6 +245,8 @@ def cases_in(path: Path, rel: str, origin: str, package: str) -> list[Case]:
     out: list[Case] = []
     toks = list(tokens(text))
     for k, (i, tok) in enumerate(toks):
+        if tok == "end" and (i == 0 or text[i - 1] == "\n"):  # Macaulay2 reads no further
+            break
         if k + 1 == len(toks) or (k and toks[k - 1][1] in (".", "#", "=", ":")):
             continue
         j, nxt = toks[k + 1]

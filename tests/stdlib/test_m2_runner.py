@@ -89,6 +89,11 @@ Node
       nothing
 Node
   Key
+    "template"
+  Description
+    Example
+Node
+  Key
     "ideal quotients"
   Description
     Example
@@ -99,7 +104,7 @@ Node
 def test_simpledoc_nodes() -> None:
     assert S.simpledoc_nodes(SIMPLEDOC) == [
         ("saturate", ["R = QQ[x,y]\nI = ideal(x^2,\n    x*y)", "saturate I"], 1),
-        ("ideal quotients", ["x"], 26)]
+        ("ideal quotients", ["x"], 31)]
 
 
 def test_cases_in_a_file(tmp_path: Path) -> None:
@@ -110,15 +115,17 @@ def test_cases_in_a_file(tmp_path: Path) -> None:
         "TEST ///\n  assert(2 == 2)\n///\n"
         'TEST get(currentFileDirectory | "other.m2")\n'
         "BENCHMARK ///\n  slow()\n///\n"
-        "SIMPLETEST = str -> TEST str\n")
+        "SIMPLETEST = str -> TEST str\n"
+        "end--\n"
+        "TEST ///\n  after the end\n///\n")
     cases = S.cases_in(tmp_path / "pkg.m2", "Pkg/pkg.m2", "Pkg", "")
     assert [(c.where, c.kind, c.name, c.code) for c in cases] == [
         ("Pkg/pkg.m2:1", "example", "foo", "foo 1"),
         ("Pkg/pkg.m2:4", "example", "saturate", "R = QQ[x,y]\nI = ideal(x^2,\n    x*y)\nsaturate I"),
-        ("Pkg/pkg.m2:29", "example", "ideal quotients", "x"),
-        ("Pkg/pkg.m2:36", "test", "TEST", "assert(2 == 2)"),
-        ("Pkg/pkg.m2:39", "test", "TEST", "assert(1 == 1)"),
-        ("Pkg/pkg.m2:40", "test", "TEST", "slow()")]
+        ("Pkg/pkg.m2:34", "example", "ideal quotients", "x"),
+        ("Pkg/pkg.m2:41", "test", "TEST", "assert(2 == 2)"),
+        ("Pkg/pkg.m2:44", "test", "TEST", "assert(1 == 1)"),
+        ("Pkg/pkg.m2:45", "test", "TEST", "slow()")]
     assert cases[-1].excluded.startswith("a MinimalPrimes BENCHMARK")
 
 
