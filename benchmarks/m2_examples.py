@@ -496,6 +496,8 @@ def main(argv: Optional[list[str]] = None) -> int:
         return 0
     t0 = time.perf_counter()
     info = m2_info(120)
+    if subprocess.run(MECH + ["-c", "1;"], capture_output=True).returncode:
+        raise SystemExit(f"m2_examples: mech does not run with {sys.executable} (run this with mech's Python)")
     with ThreadPoolExecutor(max_workers=max(args.jobs, 1)) as pool:
         results = list(pool.map(lambda c: run_case(c, info, args.timeout), cases))
     meta = {"date": time.strftime("%Y-%m-%d %H:%M"), "seconds": time.perf_counter() - t0, "jobs": args.jobs,
