@@ -78,10 +78,14 @@ def latex(v: Any) -> str:
 
 
 def has_latex(v: Any) -> bool:
-    """Whether a value is shown with LaTeX in notebooks (ring elements, ideals, matrices, lists of them)."""
+    """Whether a value is shown with LaTeX in notebooks: ring elements, ideals, matrices, and
+    lists of them (with integers beside them)."""
     if isinstance(v, (Poly, Number, Ideal, Matrix)):
         return True
-    return isinstance(v, List) and bool(v.items) and all(has_latex(x) for x in v.items)
+    if not isinstance(v, List):
+        return False
+    plain = [x for x in v.items if isinstance(x, (int, IntVec))]
+    return len(plain) < len(v.items) and all(has_latex(x) for x in v.items if not isinstance(x, (int, IntVec)))
 
 
 def bundle(values: list[Any], text: str) -> dict[str, str]:
