@@ -2,6 +2,11 @@
 kernel, examples/python.ipynb (the %%mech magic) on IPython's.  Their text outputs are what a
 plain Session prints for the same cells; the rich outputs are checked for what they must show."""
 import re
+import shlex
+import shutil
+import subprocess
+import sys
+from pathlib import Path
 
 import nbformat
 import pytest
@@ -81,3 +86,21 @@ def test_the_magic_notebook_on_the_python_kernel(tmp_path):
     (err,) = [o for o in cells[-1].outputs if o.output_type == "error"]
     assert err.traceback == ["<cell>:1:15: error: unexpected '*', expected an expression",
                              "ideal K = c1 +* s1;", "              ^"]
+
+
+def test_readme_notebook_route(kernel_specs, tmp_path):
+    """README's notebook command: after the install (done here by the fixture), `jupyter execute` writes
+    the executed notebook beside the example."""
+    readme = (ROOT / "README.md").read_text()
+    (line,) = [ln for ln in re.findall(r"^```sh\n(.*?)\n```$", readme, re.S | re.M) if "jupyter execute" in ln]
+    steps = [shlex.split(step) for step in line.split(" && ")]
+    assert steps[1] == [".venv/bin/pip", "install", "-q", ".[jupyter]"] and steps[2] == [".venv/bin/mech", "--install-kernel"]
+    argv = steps[3]
+    assert argv[:2] == [".venv/bin/jupyter", "execute"]
+    shutil.copy(ROOT / argv[2], tmp_path / Path(argv[2]).name)
+    jupyter = Path(sys.executable).with_name("jupyter")
+    r = subprocess.run([str(jupyter), "execute", Path(argv[2]).name, *argv[3:]], cwd=tmp_path, capture_output=True,
+                       text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    done = nbformat.read(tmp_path / "mechanisms_run.ipynb", as_version=4)
+    assert sum("image/svg+xml" in o.get("data", {}) for c in done.cells if c.cell_type == "code" for o in c.outputs) == 5

@@ -115,3 +115,10 @@ def test_decimal_lengths_still_work():
     out = s.execute('LIB "mechanism.lib"; mechanism m = "fix O; bar O A l1; bar A B l2; slider B";'
                     'setLengths(m, "1.5e2", "-0.25");')
     assert out == "fix O 0 0; bar O A 150; bar A B -1/4; slider B\n"
+
+
+def test_shell_commands_in_a_script_say_what_they_are():
+    r = mech(stdin="ring r = 0,(x),dp;\n:time on\n")
+    assert r.returncode == 1 and r.stderr.startswith(
+        "<stdin>:2:1: error: unexpected ':': ':time on' is a command of the interactive shell (mech in a terminal), "
+        "not of scripts\n")
