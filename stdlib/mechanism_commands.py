@@ -249,7 +249,7 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
     a = run_analysis(m, decompose=depth == "full")
     text = render(a)
     if "display" in ctx.settings and form == "text":  # a notebook: the report as HTML tables too
-        from mech.stdlib.report_html import report_html
+        from mech.stdlib._report_html import report_html
         ctx.display({"text/plain": text, "text/html": report_html(a)})
     else:
         ctx.write(text)

@@ -171,3 +171,12 @@ def test_format_reaches_the_repl(capsys):
     assert run_repl(read=read, quiet=True, settings={"report_format": "latex"}) == 0
     out = capsys.readouterr().out
     assert out.count("\\begin{align*}") == 2 and "mechanism:" not in out
+
+
+def test_json_reports_are_json_lines(tmp_path):
+    import json
+    r = subprocess.run([sys.executable, "-m", "mech", "--json", str(ROOT / "examples" / "slider2.mech")], cwd=tmp_path,
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0 and r.stderr == ""
+    reports = [json.loads(line) for line in r.stdout.splitlines()]
+    assert [d["mobility"] for d in reports] == [1, 1] and len(reports[1]["motion_modes"]) == 2

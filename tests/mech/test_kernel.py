@@ -25,7 +25,8 @@ class Client:
                 return msg["content"]
 
     def run(self, code: str, timeout: float = 120) -> tuple[dict, list]:
-        msg_id = self.client.execute(code)
+        # each reply is checked here: an error must not make the kernel abort the next cells
+        msg_id = self.client.execute(code, stop_on_error=False)
         outputs = []
         while True:
             msg = self.client.get_iopub_msg(timeout=timeout)
@@ -110,7 +111,7 @@ def test_limits_per_cell_and_kernel_commands(kernel):
 
 def test_interrupt_keeps_the_session(kernel):
     kernel.text("int j = 7;")
-    msg_id = kernel.client.execute("int i; while (1) { i++; }")
+    msg_id = kernel.client.execute("int i; while (1) { i++; }", stop_on_error=False)
     time.sleep(1.5)
     kernel.manager.interrupt_kernel()
     reply = kernel.reply(msg_id, timeout=60)
