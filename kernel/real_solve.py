@@ -272,8 +272,8 @@ class RUR:
         """Balls around the coordinates of the solution at ``root`` (its interval as is)."""
         with flint.ctx.workprec(prec):
             t = root.ball(prec)
-            d = _ball_eval(fmpq_poly(self.poly).derivative(), t)
-            return [_ball_eval(g, t) / d for g in self.numerators]
+            d = ball_eval(fmpq_poly(self.poly).derivative(), t)
+            return [ball_eval(g, t) / d for g in self.numerators]
 
 
 def _powmod(p: fmpq_poly, k: int, f: fmpq_poly) -> fmpq_poly:
@@ -287,7 +287,8 @@ def _powmod(p: fmpq_poly, k: int, f: fmpq_poly) -> fmpq_poly:
     return out
 
 
-def _ball_eval(p: fmpq_poly, t: arb) -> arb:
+def ball_eval(p: fmpq_poly, t: arb) -> arb:
+    """A ball around ``p(t)`` (at the current precision)."""
     return arb_poly([arb(c) for c in p.coeffs()])(t) if p.coeffs() else arb(0)
 
 
@@ -389,7 +390,7 @@ class Solutions:
         return len(self.real)
 
 
-def _boxes(rep: RUR, roots: list[RealRoot], width: fmpq) -> list[tuple[RealRoot, list[tuple[fmpq, fmpq]]]]:
+def solution_boxes(rep: RUR, roots: list[RealRoot], width: fmpq) -> list[tuple[RealRoot, list[tuple[fmpq, fmpq]]]]:
     """Boxes of width at most ``width`` around the real solutions, pairwise disjoint."""
     out = []
     for root in roots:
@@ -405,7 +406,7 @@ def _boxes(rep: RUR, roots: list[RealRoot], width: fmpq) -> list[tuple[RealRoot,
     for i in range(len(out)):
         for j in range(i + 1, len(out)):
             if all(a[0] <= b[1] and b[0] <= a[1] for a, b in zip(out[i][1], out[j][1])):
-                return _boxes(rep, roots, width / 2 ** 16)
+                return solution_boxes(rep, roots, width / 2 ** 16)
     return out
 
 
@@ -415,7 +416,7 @@ def real_solutions(gens: Sequence[Poly], ring: PolyRing | None = None, digits: i
     A = QuotientAlgebra(gens, ring)
     rep = rur_of(A)
     roots = rep.real_roots()
-    boxes = _boxes(rep, roots, fmpq(1, 10 ** digits))
+    boxes = solution_boxes(rep, roots, fmpq(1, 10 ** digits))
     return Solutions(A.dim, rep.count, [RealSolution(b, r.multiplicity, r) for r, b in boxes], rep)
 
 
