@@ -39,8 +39,8 @@ from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 from .real_fibers import curve_part, linear_poly
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, primitive, separate
-from .real_solve import (RUR, QuotientAlgebra, arb_bounds, ball_eval, from_fmpq_poly, rur, rur_of, solution_boxes,
-                         to_fmpq_poly)
+from .real_solve import (RUR, QuotientAlgebra, arb_bounds, ball_eval, from_fmpq_poly, rur, rur_of,
+                         shape_representation, solution_boxes, to_fmpq_poly)
 
 Box = list[tuple[fmpq, fmpq]]
 
@@ -252,9 +252,7 @@ def _family_branches(curve: list[Poly], ring: PolyRing, fam: PointFamily) -> lis
 
 
 def _point_box(fam: PointFamily, root: RealRoot) -> Box:
-    f = fmpq_poly(fam.poly)
-    rep = RUR(None, [], fam.poly, fam.coords, [(h * f.derivative()) % f for h in fam.coords], f)
-    return solution_boxes(rep, [root], fmpq(1, 10 ** 12))[0][1]
+    return solution_boxes(shape_representation(fam.poly, fam.coords), [root], fmpq(1, 10 ** 12))[0][1]
 
 
 def _passes(S: _Setting) -> bool:

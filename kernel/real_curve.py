@@ -14,21 +14,23 @@ projection.  docs/real.md explains the steps; in short:
    the Jacobian of ``n - 1`` combinations of the generators and ``l``), zero-dimensional, with ``l``
    separating them (one critical point per fibre).
 3. A second form ``m``: the plane image ``g(X, Y) = 0`` of ``(l, m)`` by interpolation of fibres
-   (squarefree: birational); its events, the real roots ``c`` of the discriminant in ``Y``.  In
-   ``Q(c)``: ``gcd(g(c, Y), g_Y(c, Y)) = (Y - y_c)^(k-1)`` (one critical point per vertical line, else
-   another ``m``) and ``h = g(c, Y)/(Y - y_c)^k``.
-4. At each event a rational window ``[a, b]`` around ``c`` (no other event) and an interval
-   ``J`` around ``y_c`` with ``h`` nonzero on ``J`` (ball arithmetic) and ``g(X, ends of J) != 0`` on
-   ``[a, b]`` (exact root counts): then the real roots of ``g(a, Y)`` in ``J`` are exactly the arcs
-   coming from the left into ``(c, y_c)``, those below/above ``J`` pass through the regular points
-   (the sweep rule, now certified); the same at ``b``.
-5. Lifting: if ``c`` is the value of a critical point ``p`` of ``l`` on ``C`` mapping to ``(c, y_c)``,
-   the arcs there belong to ``p`` - checked: their number equals the half-branches at ``p`` (2 at a
-   smooth point, else :func:`.real_branches.half_branch_counts`), so no other real point maps there.
-   Otherwise every point over ``c`` is smooth and not critical for ``l``: ``L`` arcs from each side
-   are ``L`` real points; for ``L >= 2`` (apparent crossings of the projection) the arcs are paired
-   through a window free of events of a second image ``(l, m2)``, by the ``m2``-order of the real
-   points of the rational fibres at its ends.
+   (squarefree: birational); its events, the real roots ``c`` of the discriminant in ``Y``.  Between
+   events the real arcs of the image do not cross, so an arc is named by its rank in ``Y``.
+4. At an event ``c`` that is the value of a critical point ``p`` of ``l`` whose image ``(c, y_c)``
+   is critical for ``g`` (``g_Y(c, y_c) = 0`` in ``Q(c)``): ``k`` the multiplicity of ``y_c`` in
+   ``g(c, Y)`` and ``h = g(c, Y)/(Y - y_c)^k``, certified squarefree (ball root isolation: no other
+   critical point of the image over ``c``, else another ``m``).  A rational window ``[a, b]``
+   around ``c`` (no other event) and an interval ``J`` around ``y_c`` with ``h`` nonzero on ``J``
+   (ball arithmetic) and ``g(X, ends of J) != 0`` on ``[a, b]`` (exact root counts): the real roots
+   of ``g(a, Y)`` in ``J`` are exactly the arcs from the left ending at ``(c, y_c)``, those below
+   and above ``J`` pass through the regular points in order (the sweep rule, certified); the
+   same at ``b``.  The arcs at ``(c, y_c)`` belong to ``p``: their number must equal the number of
+   half-branches of ``C`` at ``p`` (2 at a smooth point, else :func:`.real_branches.half_branch_counts`),
+   so no other real point of ``C`` maps there (else another ``m``).
+5. At any other event every point of ``C`` over ``c`` is smooth and not critical for ``l``: each
+   real arc goes on through it.  The arcs on the two sides are matched through a window free of
+   events of a second image ``(l, m2)``, by the ``m2``-order of the real points of the rational
+   fibres at the window's ends (apparent crossings of the first image are undone here).
 6. Arcs of the strips between events and the critical points form a graph; its connected
    components are the circuits (with points of their arcs and critical points as samples), critical
    points without arcs are isolated points, arcs over the two unbounded strips are unbounded ends.
@@ -96,26 +98,28 @@ class CurveTopology:
 # --- the affine chart of the linear equations ----------------------------------------------
 
 class _Chart:
-    """The linear elements ``x_j - a_j(free)`` of a reduced ``dp`` basis: the curve lives in the
-    free variables (the other elements only involve them)."""
+    """The affine subspace of the linear elements ``x_j - a_j(free)`` of a reduced ``dp`` basis:
+    the curve is given in the free variables by the other generators restricted to it."""
 
-    def __init__(self, basis: list[Poly], ring: PolyRing) -> None:
+    def __init__(self, gens: list[Poly], basis: list[Poly], ring: PolyRing) -> None:
         n = ring.nvars
-        linear = {g.lm().index(1): g for g in basis if g.total_degree() == 1}
+        linear = {g.lm().index(1): g.monic() for g in basis if g.total_degree() == 1}
         self.free = [i for i in range(n) if i not in linear]
-        self.ring = PolyRing(QQ, [ring.names[i] for i in self.free], MonomialOrder([Block("dp", len(self.free))])) \
-            if self.free else None
-        self.gens = [Poly(self.ring, {tuple(e[i] for i in self.free): c for e, c in g.terms.items()})
-                     for g in basis if g.total_degree() != 1] if self.free else []
+        self.ring = PolyRing(QQ, [ring.names[i] for i in self.free], MonomialOrder([Block("dp", len(self.free))]))
+        xs = self.ring.gens()
         self.maps: list[tuple[fmpq, list[fmpq]]] = []
+        images = []
         for i in range(n):
             if i in linear:
-                g = linear[i].monic()
+                g = linear[i]
                 const = -g.coeff_of(ring.zero_exp)
                 lin = [-g.coeff_of(tuple(int(k == j) for k in range(n))) for j in self.free]
-                self.maps.append((const, lin))
             else:
-                self.maps.append((fmpq(0), [fmpq(int(j == i)) for j in self.free]))
+                const, lin = fmpq(0), [fmpq(int(j == i)) for j in self.free]
+            self.maps.append((const, lin))
+            images.append(sum((x * c for x, c in zip(xs, lin) if c != 0), self.ring.const(const)))
+        restricted = [g.compose(images, self.ring) for g in gens]
+        self.gens = [g for g in restricted if not g.is_zero()]
 
     def lift(self, box: Box) -> Box:
         """The box of a point of the chart in all coordinates (exact interval arithmetic)."""
@@ -164,68 +168,87 @@ def _critical(gens: list[Poly], ring: PolyRing, ell: list[fmpq]):
 # --- events ---------------------------------------------------------------------------------
 
 @dataclass
-class _Factor:
-    """Symbolic data of an irreducible factor ``e_i`` of the event polynomial, in ``Q(c)``."""
+class _Critical:
+    """An irreducible factor ``e`` of the event polynomial whose roots are critical values of ``l``
+    with the critical point ``psi`` (in ``Q(c)``) mapping to the critical point ``(c, y)`` of the
+    image: ``y`` has multiplicity ``k`` in ``g(c, Y)``, ``h = g(c, Y)/(Y - y)^k``."""
 
     poly: fmpz_poly
+    psi: list[fmpq_poly]
     y: fmpq_poly
     k: int
     h: list[fmpq_poly]
-    psi: list[fmpq_poly] | None  # the critical point of l over c when it maps to (c, y_c)
 
 
-def _factor_data(g: Biv, e: fmpz_poly, root: RealRoot, crit, m: list[fmpq]) -> _Factor:
+def _critical_data(g: Biv, e: fmpz_poly, root: RealRoot, crit, m: list[fmpq]) -> _Critical | None:
+    """The data of a factor ``e`` of the events when the critical point of ``l`` over its roots
+    maps to a critical point of the image (field operations without inversions), else None."""
+    if not (fmpq_poly(crit.poly) % fmpq_poly(e)).is_zero():
+        return None
     F = RealAlgebraicField(root)
-    gc = [F(c) for c in g]
-    G = F.gcd(gc, F.strip([F(c * j) for j, c in enumerate(gc)][1:]))
-    k = len(G)
-    if k < 2:
-        raise RealSolvingError("internal: an event without a multiple root")
-    y = F(-G[k - 2] / (k - 1))
-    if [F(a - b) for a, b in zip(G, F.power_of_linear(y, k - 1))] != [F.zero] * k:
-        raise _Degenerate()
-    h = gc
-    for _ in range(k):
+    psi = [F(s) for s in crit.shape]
+    y = F(sum((p * c for p, c in zip(psi, m)), fmpq_poly([])))
+    h = [F(c) for c in g]
+    k = 0
+    while F.is_zero(_horner(F, h, y)):
         h = F.divide_linear(h, y)
-    psi = None
-    if (fmpq_poly(crit.poly) % fmpq_poly(e)).is_zero():
-        psi = [F(s) for s in crit.shape]
-        if not F.is_zero(sum((p * c for p, c in zip(psi, m)), F.zero) - y):
-            psi = None
-    return _Factor(e, y, k, h, psi)
+        k += 1
+    return _Critical(e, psi, y, k, h) if k >= 2 else None
+
+
+def _horner(F: RealAlgebraicField, f: list[fmpq_poly], y: fmpq_poly) -> fmpq_poly:
+    out = F.zero
+    for c in reversed(f):
+        out = F(F.mul(out, y) + c)
+    return out
 
 
 @dataclass
 class _Event:
     root: RealRoot
-    data: _Factor
+    data: _Critical | None
     ylo: fmpq = fmpq(0)
     yhi: fmpq = fmpq(0)
     below: int = 0
     above: int = 0
     left: int = 0
     right: int = 0
-    pairs: dict[int, int] | None = None
-    point: int | None = None  # node id of the critical point
+
+
+def _root_gap(F: RealAlgebraicField, h: list[fmpq_poly], y: fmpq_poly, prec: int) -> fmpq | None:
+    """A positive rational below the distance from ``y`` to every root of ``h`` (over Q(c)), with
+    the roots of ``h`` certified simple by ball root isolation; None when that fails (``h`` not
+    squarefree, or too little precision)."""
+    if len(h) <= 1:
+        return fmpq(1)
+    with flint.ctx.workprec(prec):
+        try:
+            roots = flint.acb_poly([F.ball(c, prec) for c in h]).roots(maxprec=4 * prec)
+        except ValueError:
+            return None
+        yb = flint.acb(F.ball(y, prec))
+        gap = min(arb_bounds((r - yb).abs_lower())[0] for r in roots)
+    return gap / 2 if gap > 0 else None
 
 
 def _no_real_root(F: RealAlgebraicField, h: list[fmpq_poly], lo: fmpq, hi: fmpq, prec: int) -> bool:
     """Certified: ``h`` (over Q(c)) has no root in ``[lo, hi]`` (ball evaluation on pieces)."""
     if len(h) <= 1:
         return True
-    pieces = [(lo, hi)]
-    for _ in range(8):
-        bad = []
-        for a, b in pieces:
-            with flint.ctx.workprec(prec):
-                v = F.evaluate_ball(h, arb((a + b) / 2, (b - a) / 2), prec)
-            if not (v > 0 or v < 0):
-                bad.append((a, b))
-        if not bad:
-            return True
-        if len(bad) > 64:
-            return False
-        pieces = [q for a, b in bad for q in ((a, (a + b) / 2), ((a + b) / 2, b))]
+    with flint.ctx.workprec(prec):
+        hb = flint.arb_poly([F.ball(c, prec) for c in h])
+        pieces = [(lo, hi)]
+        for _ in range(10):
+            bad = []
+            for a, b in pieces:
+                v = hb(arb((a + b) / 2, (b - a) / 2))
+                if not (v > 0 or v < 0):
+                    bad.append((a, b))
+            if not bad:
+                return True
+            if len(bad) > 64:
+                return False
+            pieces = [q for a, b in bad for q in ((a, (a + b) / 2), ((a + b) / 2, b))]
     return False
 
 
@@ -239,22 +262,36 @@ def _clear(p: fmpq_poly, a: fmpq, b: fmpq) -> bool:
 def _locate(g: Biv, ev: _Event) -> None:
     """The interval ``J = (ylo, yhi)`` around ``y_c`` with no other root of ``g(c, Y)`` in it, and a
     window ``[a, b]`` (the root's interval) over which no real point of the image crosses the ends
-    of ``J`` (see the module's step 4)."""
+    of ``J`` (the module's step 4).  _Degenerate when ``h`` has a multiple root (another critical
+    point of the image over ``c``)."""
     F = RealAlgebraicField(ev.root)
-    delta, prec = fmpq(1), 128
-    while True:
-        F.refine((F.root.hi - F.root.lo) / 2 ** 20)
+    for prec in (128, 256, 512, 1024, 2048):
+        F.refine((F.root.hi - F.root.lo) / 2 ** (prec // 2))
+        gap = _root_gap(F, ev.data.h, ev.data.y, prec)
+        if gap is None:
+            continue
         lo, hi = arb_bounds(F.ball(ev.data.y, prec))
-        mid = (lo + hi) / 2
-        if hi - lo < delta / 4:
+        if hi - lo < gap / 4:
+            mid = (lo + hi) / 2
+            delta = _dyadic_below(gap / 2)
             if _no_real_root(F, ev.data.h, mid - delta, mid + delta, prec):
                 break
-            delta /= 4
-        prec += 64
+    else:
+        raise _Degenerate()
     ev.root, ev.ylo, ev.yhi = F.root, mid - delta, mid + delta
     ends = (at_y(g, ev.ylo), at_y(g, ev.yhi))
     while not all(_clear(p, ev.root.lo, ev.root.hi) for p in ends):
         ev.root = ev.root.refined((ev.root.hi - ev.root.lo) / 4)
+
+
+def _dyadic_below(x: fmpq) -> fmpq:
+    """A power of two in ``(x/2, x]`` (short numbers for the ends of ``J``)."""
+    k = 0
+    while fmpq(2) ** k > x:
+        k -= 1
+    while fmpq(2) ** (k + 1) <= x:
+        k += 1
+    return fmpq(2) ** k
 
 
 def _split(g: Biv, x: fmpq, ylo: fmpq, yhi: fmpq) -> tuple[int, int, int]:
@@ -307,62 +344,73 @@ class _Sweep:
         for f in irreducible_factors(e):
             rs = isolate_real_roots(f)
             if rs:
-                data = _factor_data(self.g, f, rs[0], crit, m)
+                data = _critical_data(self.g, f, rs[0], crit, m)
                 found += [(r, data) for r in rs]
         self.events = [_Event(r, d) for r, d in _match(separate([r for r, _ in found]), found)]
         self.half: dict[int, list[int]] = {}
+        self.minors: list[Poly] | None = None
+        self.second: list[tuple[list[fmpq], fmpz_poly]] = []
 
     def topology(self) -> tuple[list[Circuit], list[Box]]:
         g, events = self.g, self.events
         for ev in events:
-            _locate(g, ev)
-            ev.below, ev.left, ev.above = _split(g, ev.root.lo, ev.ylo, ev.yhi)
-            below, ev.right, above = _split(g, ev.root.hi, ev.ylo, ev.yhi)
-            if (below, above) != (ev.below, ev.above):
-                raise RealSolvingError("internal: the regular points differ on the two sides of an event")
+            if ev.data is not None:
+                _locate(g, ev)
+                ev.below, ev.left, ev.above = _split(g, ev.root.lo, ev.ylo, ev.yhi)
+                below, ev.right, above = _split(g, ev.root.hi, ev.ylo, ev.yhi)
+                if (below, above) != (ev.below, ev.above):
+                    raise RealSolvingError("internal: the regular points differ on the two sides of an event")
         samples = [events[0].root.lo] + [ev.root.hi for ev in events] if events else [fmpq(0)]
         counts = [_roots_at(g, s) for s in samples]
-        for j, ev in enumerate(events):
-            if ev.below + ev.left + ev.above != counts[j] or ev.below + ev.right + ev.above != counts[j + 1]:
-                raise RealSolvingError("internal: the arc counts differ within a strip")
         uf = _Union()
         arcs = [[uf.add() for _ in range(k)] for k in counts]
         points: dict[int, Box] = {}
         for j, ev in enumerate(events):
-            self._connect(j, ev, arcs, uf, points)
+            if ev.data is None:
+                self._through(ev, arcs[j], arcs[j + 1], uf)
+            else:
+                self._critical_point(ev, arcs[j], arcs[j + 1], uf, points)
         return self._components(samples, arcs, uf, points)
 
-    def _connect(self, j: int, ev: _Event, arcs: list[list[int]], uf: _Union, points: dict[int, Box]) -> None:
-        """Join the arcs of strips ``j`` and ``j + 1`` through the event ``j`` (steps 4 and 5)."""
-        left, right = arcs[j], arcs[j + 1]
+    def _through(self, ev: _Event, left: list[int], right: list[int], uf: _Union) -> None:
+        """An event without critical point of ``l`` (step 5): every arc goes on."""
+        if len(left) != len(right):
+            raise RealSolvingError("internal: arcs end at an event without critical point")
+        if len(left) == 1:
+            uf.union(left[0], right[0])
+        elif len(left) > 1:
+            for i, k in enumerate(self._pairs(ev)):
+                uf.union(left[i], right[k])
+
+    def _critical_point(self, ev: _Event, left: list[int], right: list[int], uf: _Union,
+                        points: dict[int, Box]) -> None:
+        """An event at a critical point of ``l`` (step 4): the sweep rule."""
         b, L, R = ev.below, ev.left, ev.right
+        if b + L + ev.above != len(left) or b + R + ev.above != len(right):
+            raise RealSolvingError("internal: the arc counts differ within a strip")
+        if L + R != self._half_branches(ev):
+            raise _Degenerate()
         for i in range(b):
             uf.union(left[i], right[i])
         for i in range(ev.above):
             uf.union(left[b + L + i], right[b + R + i])
-        if ev.data.psi is not None:
-            if L + R != self._half_branches(ev):
-                raise _Degenerate()
-            node = uf.add()
-            points[node] = self._point_box(ev)
-            for i in range(L):
-                uf.union(node, left[b + i])
-            for i in range(R):
-                uf.union(node, right[b + i])
-        elif L != R:
-            raise RealSolvingError("internal: a regular fibre point without two arcs")
-        elif L == 1:
-            uf.union(left[b], right[b])
-        elif L > 1:
-            for i, k in self._pairs(ev).items():
-                uf.union(left[i], right[k])
+        node = uf.add()
+        points[node] = self._point_box(ev)
+        for i in range(L):
+            uf.union(node, left[b + i])
+        for i in range(R):
+            uf.union(node, right[b + i])
 
     def _half_branches(self, ev: _Event) -> int:
         """The real half-branches at the critical point over the event (2 when it is smooth)."""
         data = ev.data
         F = RealAlgebraicField(ev.root)
-        rows = [[_eval_over(F, gen.diff(i), data.psi) for i in range(self.ring.nvars)] for gen in self.gens]
-        if F.rank(rows) == self.ring.nvars - 1:
+        n = self.ring.nvars
+        if self.minors is None:
+            rows = [[f.diff(i) for i in range(n)] for f in self.gens]
+            self.minors = [p for p in minors(Matrix(self.ring, len(rows), n, [p for r in rows for p in r]), n - 1)
+                           if not p.is_zero()]
+        if any(not F.is_zero(_eval_over(F, p, data.psi)) for p in self.minors):
             return 2
         key = id(data)
         if key not in self.half:
@@ -385,22 +433,26 @@ class _Sweep:
             F.refine((F.root.hi - F.root.lo) / 2 ** 32)
             prec += 64
 
-    def _pairs(self, ev: _Event) -> dict[int, int]:
-        """Arcs left of the event to arcs right of it, through a window free of events of a second
-        image ``(l, m2)``, by the ``m2``-order of the real fibre points at the window's ends."""
+    def _pairs(self, ev: _Event) -> list[int]:
+        """For each arc left of the event (in ``m``-order) the arc right of it on the same branch:
+        through a window free of events of a second image ``(l, m2)``, by the ``m2``-order of the
+        real points of the fibres at the window's ends."""
         n = self.ring.nvars
-        for m2 in _forms(n, 700)[:8]:
-            try:
-                e2 = event_polynomial(self.fib.plane_curve(m2))
-            except RealSolvingError:
-                continue
-            if sign_at(e2, ev.root) == 0:
+        for attempt in range(8):
+            if attempt == len(self.second):
+                m2 = _forms(n, 700 + attempt)[0]
+                try:
+                    self.second.append((m2, event_polynomial(self.fib.plane_curve(m2))))
+                except RealSolvingError:
+                    self.second.append((m2, fmpz_poly([0])))
+            m2, e2 = self.second[attempt]
+            if e2.is_zero() or sign_at(e2, ev.root) == 0:
                 continue
             r = ev.root
             while not _clear(fmpq_poly(e2), r.lo, r.hi):
                 r = r.refined((r.hi - r.lo) / 4)
             left, right = self._m2_ranks(r.lo, m2), self._m2_ranks(r.hi, m2)
-            return {i: right.index(rank) for i, rank in enumerate(left)}
+            return [right.index(rank) for rank in left]
         raise _Degenerate()
 
     def _m2_ranks(self, a: fmpq, m2: list[fmpq]) -> list[int]:
@@ -416,7 +468,7 @@ class _Sweep:
                 with flint.ctx.workprec(k + 64):
                     encl.append((arb_bounds(ball_eval(val, rr.ball(k + 64))), i))
             encl.sort()
-            if all(a_[0][1] < b_[0][0] for a_, b_ in zip(encl, encl[1:])):
+            if all(p[0][1] < q[0][0] for p, q in zip(encl, encl[1:])):
                 ranks = [0] * len(roots)
                 for rank, (_, i) in enumerate(encl):
                     ranks[i] = rank
@@ -466,7 +518,7 @@ def _hull(boxes: list[Box]) -> Box:
     return [(min(b[i][0] for b in boxes), max(b[i][1] for b in boxes)) for i in range(len(boxes[0]))]
 
 
-def _match(sep: list[RealRoot], found: list[tuple[RealRoot, _Factor]]) -> list[tuple[RealRoot, _Factor]]:
+def _match(sep: list[RealRoot], found: list[tuple[RealRoot, _Critical | None]]) -> list[tuple[RealRoot, _Critical | None]]:
     """The separated roots with their factors' data (a separated root refines an original one:
     same polynomial, nested interval)."""
     return [(r, next(d for q, d in found if q.poly == r.poly and q.lo <= r.lo and r.hi <= q.hi)) for r in sep]
@@ -506,14 +558,16 @@ def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: i
         raise RealSolvingError("real curves need rational coefficients (the field QQ)")
     R = dp_ring(ring)
     width = fmpq(1, 10 ** digits)
-    basis = groebner([Poly(R, g.terms) for g in gens if not g.is_zero()], R)
+    gens = [Poly(R, g.terms) for g in gens if not g.is_zero()]
+    basis = groebner(gens, R)
     if any(g.is_constant() for g in basis):
         return CurveTopology([], [])
     if basis and dimension(basis, R) == 0:
         return CurveTopology([], [s.box for s in real_solutions(basis, R, digits).real])
-    chart = _Chart(basis, R)
+    chart = _Chart(gens, basis, R)
     if len(chart.free) == 1:
-        return CurveTopology([Circuit([chart.lift([(fmpq(0), fmpq(0))])], chart.lift([(fmpq(0), fmpq(0))]), False, 2)], [])
+        origin = chart.lift([(fmpq(0), fmpq(0))])
+        return CurveTopology([Circuit([origin], origin, False, 2)], [])
     curve, point_ideals = curve_part(chart.gens, chart.ring)
     isolated = [s.box for P in point_ideals for s in real_solutions(P, chart.ring, digits).real]
     circuits, more, events, proj = _topology(curve, chart.ring, width)

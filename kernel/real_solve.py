@@ -9,13 +9,12 @@ a ``dp`` Gröbner basis as basis (``kbase``); multiplication by ``x_i`` is a mat
   Szpirglas 1993) - the signature is read off the characteristic polynomial of the symmetric
   matrix with Descartes' rule, exact since its roots are all real.
 * A rational univariate representation (Rouillier, "Solving zero-dimensional systems through
-  the rational univariate representation", 1999): a linear form ``u`` separating the solutions
-  (the squarefree part ``f`` of the characteristic polynomial of ``M_u`` has as many roots as
-  there are distinct solutions, counted on the radical: Seidenberg's lemma adds the squarefree
-  parts of the characteristic polynomials of the ``M_i``) and ``x_i = g_i(t)/f'(t)`` at the roots
-  ``t`` of ``f``, from the Krylov basis ``1, u, u^2, ...`` of the reduced algebra.  The
-  multiplicity of a solution is that of ``u``'s value as a root of the characteristic
-  polynomial of ``M_u`` on ``A``.
+  the rational univariate representation", 1999): a linear form ``u`` separates the solutions when
+  the squarefree part ``f`` of the characteristic polynomial ``chi`` of ``M_u`` has as many roots as
+  there are distinct solutions (the rank of Hermite's form); then ``x_i = g_{x_i}(t)/g_1(t)`` at
+  the roots ``t`` of ``f``, with ``g_v = sum_j Tr(v u^j) H_{d-1-j}`` (``H_j`` the Horner polynomials
+  of ``f``), traces read off the multiplication matrices - no radical is computed.  The
+  multiplicity of a solution is that of ``u``'s value as a root of ``chi``.
 * Real solutions are the real roots of ``f`` (``u`` has rational coefficients and separates),
   isolated exactly (:mod:`.real_roots`); their coordinates are enclosed by ball arithmetic
   (arb) and refined to any number of digits.
@@ -168,7 +167,7 @@ class QuotientAlgebra:
 def hermite_matrix(A: QuotientAlgebra, weight: Poly | None = None) -> fmpq_mat:
     """The matrix ``Tr(h b_i b_j)`` of Hermite's form (weighted by ``h``, default 1)."""
     D = A.dim
-    tau = fmpq_mat(1, D, [sum((A.monomial_matrix(b)[k, k] for k in range(D)), fmpq(0)) for b in A.monomials])
+    tau = _trace_vector(A)
     if weight is not None:
         tau = tau * A.poly_matrix(weight)
     rows = [tau * A.monomial_matrix(b) for b in A.monomials]
@@ -208,34 +207,21 @@ def _candidate_forms(n: int, tries: int = 60) -> Iterator[list[fmpq]]:
         yield [fmpq(rnd.randint(-size, size)) for _ in range(n)]
 
 
-def _radical(A: QuotientAlgebra) -> QuotientAlgebra:
-    """The quotient by the radical: Seidenberg's lemma, ``I + (sqfree(charpoly(M_i))(x_i))``."""
-    extra = []
-    for i in range(A.ring.nvars):
-        chi = A.var_matrix(i).charpoly()
-        sq = squarefree_part(chi)
-        if sq.degree() < chi.degree():
-            extra.append(from_fmpq_poly(sq, A.source, i))
-    if not extra:
-        return A
-    return QuotientAlgebra(list(move(A.basis, A.source)) + extra, A.source)
-
-
 @dataclass
 class RUR:
     """A rational univariate representation: the solutions are ``x_i = shape[i](t)
-    = numerators[i](t) / poly'(t)`` at the roots ``t`` of ``poly`` (squarefree, primitive),
+    = numerators[i](t) / denominator(t)`` at the roots ``t`` of ``poly`` (squarefree, primitive),
     ``t`` the value of the separating form ``sum form[i] x_i``; ``charpoly`` is the
     characteristic polynomial of that form on ``Q[x]/I`` (its roots' multiplicities are the
     solutions')."""
 
-    ring: PolyRing
+    ring: PolyRing | None
     form: list[fmpq]
     poly: fmpz_poly
     shape: list[fmpq_poly]
     numerators: list[fmpq_poly]
+    denominator: fmpq_poly
     charpoly: fmpq_poly
-    total: int = 0
 
     @property
     def count(self) -> int:
@@ -272,8 +258,15 @@ class RUR:
         """Balls around the coordinates of the solution at ``root`` (its interval as is)."""
         with flint.ctx.workprec(prec):
             t = root.ball(prec)
-            d = ball_eval(fmpq_poly(self.poly).derivative(), t)
+            d = ball_eval(self.denominator, t)
             return [ball_eval(g, t) / d for g in self.numerators]
+
+
+def shape_representation(poly: fmpz_poly, shape: Sequence[fmpq_poly]) -> RUR:
+    """The representation ``x_i = shape[i](t)`` at the roots of ``poly`` (squarefree)."""
+    f = fmpq_poly(poly)
+    df = f.derivative()
+    return RUR(None, [], poly, list(shape), [(h * df) % f for h in shape], df, f)
 
 
 def _powmod(p: fmpq_poly, k: int, f: fmpq_poly) -> fmpq_poly:
@@ -292,51 +285,65 @@ def ball_eval(p: fmpq_poly, t: arb) -> arb:
     return arb_poly([arb(c) for c in p.coeffs()])(t) if p.coeffs() else arb(0)
 
 
+def _inverse_mod(a: fmpq_poly, f: fmpq_poly) -> fmpq_poly:
+    g, s, _ = a.xgcd(f)
+    return s / g.coeffs()[0]
+
+
 def rur(gens: Sequence[Poly], ring: PolyRing | None = None, form: Sequence[fmpq] | None = None) -> RUR:
     """A rational univariate representation of the solutions of a zero-dimensional system.
     With ``form`` that linear form must separate them (else :class:`NotSeparatingError`)."""
-    A = QuotientAlgebra(gens, ring)
-    return rur_of(A, form)
+    return rur_of(QuotientAlgebra(gens, ring), form)
 
 
 def rur_of(A: QuotientAlgebra, form: Sequence[fmpq] | None = None) -> RUR:
     """:func:`rur` for a known quotient algebra."""
     n = A.ring.nvars
     if A.dim == 0:
-        return RUR(A.source, [fmpq(0)] * n, fmpz_poly([1]), [], [], fmpq_poly([1]), 0)
-    reduced: QuotientAlgebra | None = None
+        return RUR(A.source, [fmpq(0)] * n, fmpz_poly([1]), [], [], fmpq_poly([1]), fmpq_poly([1]))
+    distinct: int | None = None
     forms = [list(map(fmpq, form))] if form is not None else _candidate_forms(n)
     for lam in forms:
         chi = A.linear_matrix(lam).charpoly()
         f = squarefree_part(chi)
         if f.degree() < A.dim:
-            reduced = reduced or _radical(A)
-            if f.degree() < reduced.dim:
+            if distinct is None:
+                distinct = signature(hermite_matrix(A))[0]
+            if f.degree() < distinct:
                 continue
-        return _representation(reduced if reduced is not None else A, lam, f, chi, A.dim)
+        return _representation(A, lam, f, chi)
     if form is not None:
         raise NotSeparatingError("the linear form does not separate the solutions")
     raise RealSolvingError("no separating linear form found")
 
 
-def _representation(A: QuotientAlgebra, lam: list[fmpq], f: fmpz_poly, chi: fmpq_poly, total: int) -> RUR:
-    """The shape polynomials from the Krylov basis ``1, u, ..., u^(N-1)`` of the reduced algebra."""
-    N = A.dim
+def _representation(A: QuotientAlgebra, lam: list[fmpq], f: fmpz_poly, chi: fmpq_poly) -> RUR:
+    """Rouillier's ``g_v = sum_j Tr(v u^j) H_{d-1-j}`` for ``v = 1, x_1, ..., x_n``."""
+    D, d = A.dim, f.degree()
     M = A.linear_matrix(lam)
-    one = A.coords(A.source.one())
-    cols = [one]
-    v = _mat([one], N)
-    for _ in range(N - 1):
-        v = M * v
-        cols.append([v[i, 0] for i in range(N)])
-    W = _mat(cols, N)
-    rhs = _mat([A.coords(x) for x in A.source.gens()], N)
-    sol = W.solve(rhs)
+    tau = _trace_vector(A)
+    rows = [tau] + [tau * A.var_matrix(i) for i in range(A.ring.nvars)]
+    w = _mat([A.coords(A.source.one())], D)
+    traces = [[] for _ in rows]
+    for _ in range(d):
+        for k, r in enumerate(rows):
+            traces[k].append((r * w)[0, 0])
+        w = M * w
+    a = fmpq_poly(f).coeffs()
+    horner = [fmpq_poly([a[d]])]
+    for j in range(1, d):
+        horner.append(horner[-1] * fmpq_poly([0, 1]) + a[d - j])
+    g = [sum((horner[d - 1 - j] * t[j] for j in range(d)), fmpq_poly([])) for t in traces]
     fq = fmpq_poly(f)
-    df = fq.derivative()
-    shape = [fmpq_poly([sol[k, i] for k in range(N)]) for i in range(A.ring.nvars)]
-    numerators = [(h * df) % fq for h in shape]
-    return RUR(A.source, lam, primitive(f), shape, numerators, chi, total)
+    inv = _inverse_mod(g[0], fq)
+    shape = [(gi * inv) % fq for gi in g[1:]]
+    return RUR(A.source, lam, primitive(f), shape, g[1:], g[0], chi)
+
+
+def _trace_vector(A: QuotientAlgebra) -> fmpq_mat:
+    """The row ``(Tr M_b)_b`` over the standard monomials ``b``."""
+    D = A.dim
+    return fmpq_mat(1, D, [sum((A.monomial_matrix(b)[k, k] for k in range(D)), fmpq(0)) for b in A.monomials])
 
 
 # --- real solutions ---------------------------------------------------------------------------
@@ -398,9 +405,11 @@ def solution_boxes(rep: RUR, roots: list[RealRoot], width: fmpq) -> list[tuple[R
         r = root
         while True:
             r = r.refined(fmpq(1, 2 ** k) if r.exact is None else width)
-            box = [arb_bounds(b) for b in rep.enclosure(r, k + 64)]
-            if all(hi - lo <= width for lo, hi in box):
-                break
+            balls = rep.enclosure(r, k + 64)
+            if all(b.is_finite() for b in balls):
+                box = [arb_bounds(b) for b in balls]
+                if all(hi - lo <= width for lo, hi in box):
+                    break
             k += 32
         out.append((r, box))
     for i in range(len(out)):
