@@ -333,7 +333,7 @@ class _Union:
 class _Sweep:
     """One attempt with the forms ``l`` and ``m`` (raises _Degenerate to ask for others)."""
 
-    def __init__(self, gens: list[Poly], ring: PolyRing, fib: Fibres, crit, m: list[fmpq], width: fmpq) -> None:
+    def __init__(self, gens: list[Poly], ring: PolyRing, fib: Fibres, crit, m: list[fmpq], width: fmpq | None) -> None:
         self.gens, self.ring, self.fib, self.crit, self.m, self.width = gens, ring, fib, crit, m, width
         self.g = fib.plane_curve(m)
         try:
@@ -428,7 +428,7 @@ class _Sweep:
         prec = 128
         while True:
             box = [arb_bounds(F.ball(c, prec)) for c in ev.data.psi]
-            if all(hi - lo <= self.width for lo, hi in box):
+            if all(hi - lo <= (self.width or fmpq(1, 10 ** 6)) for lo, hi in box):
                 return box
             F.refine((F.root.hi - F.root.lo) / 2 ** 32)
             prec += 64
@@ -477,17 +477,19 @@ class _Sweep:
 
     def _components(self, samples: list[fmpq], arcs: list[list[int]], uf: _Union,
                     points: dict[int, Box]) -> tuple[list[Circuit], list[Box]]:
+        """Circuits from the classes of arcs (with a sample point on each arc unless the width
+        is None), isolated points from the critical points without arcs."""
         members: dict[int, list[Box]] = {}
         ends: dict[int, int] = {}
         last = len(arcs) - 1
         for j, strip in enumerate(arcs):
-            if not strip:
-                continue
-            rep = rur_of(self.fib.algebra(samples[j]), self.m)
-            boxes = solution_boxes(rep, rep.real_roots(), self.width)
-            for node, (_, box) in zip(strip, boxes):
+            boxes: list[Box] = []
+            if strip and self.width is not None:
+                rep = rur_of(self.fib.algebra(samples[j]), self.m)
+                boxes = [b for _, b in solution_boxes(rep, rep.real_roots(), self.width)]
+            for i, node in enumerate(strip):
                 root = uf.find(node)
-                members.setdefault(root, []).append(box)
+                members.setdefault(root, []).extend(boxes[i:i + 1])
                 if j in (0, last):
                     ends[root] = ends.get(root, 0) + 1
         isolated = []
@@ -497,7 +499,7 @@ class _Sweep:
                 members[root].append(box)
             else:
                 isolated.append(box)
-        circuits = [Circuit(boxes, _hull(boxes), root not in ends, ends.get(root, 0))
+        circuits = [Circuit(boxes, _hull(boxes) if boxes else [], root not in ends, ends.get(root, 0))
                     for root, boxes in members.items()]
         return circuits, isolated
 
@@ -526,7 +528,7 @@ def _match(sep: list[RealRoot], found: list[tuple[RealRoot, _Critical | None]]) 
 
 # --- the entry point -------------------------------------------------------------------------
 
-def _topology(gens: list[Poly], ring: PolyRing, width: fmpq) -> tuple[list[Circuit], list[Box], int, list]:
+def _topology(gens: list[Poly], ring: PolyRing, width: fmpq | None) -> tuple[list[Circuit], list[Box], int, list]:
     n = ring.nvars
     basis = groebner(gens, ring)
     for attempt, ell in enumerate(_forms(n, 1)[:12]):
@@ -549,29 +551,30 @@ def _topology(gens: list[Poly], ring: PolyRing, width: fmpq) -> tuple[list[Circu
     raise RealSolvingError("no projection of the curve in generic position found")
 
 
-def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: int = 6) -> CurveTopology:
+def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: int | None = 6) -> CurveTopology:
     """The circuits (connected components of the real points) and isolated real points of the
-    curve ``V(gens)`` over QQ; sample points in boxes of width ``10^-digits``.  A 0-dimensional
-    ideal gives only isolated points; RealSolvingError for a component of dimension two or more."""
+    curve ``V(gens)`` over QQ; a sample point on every arc of a circuit, in a box of width
+    ``10^-digits`` (none when ``digits`` is None: counting is faster).  A 0-dimensional ideal gives
+    only isolated points; RealSolvingError for a component of dimension two or more."""
     ring = ring or gens[0].ring
     if ring.field != QQ:
         raise RealSolvingError("real curves need rational coefficients (the field QQ)")
     R = dp_ring(ring)
-    width = fmpq(1, 10 ** digits)
+    width = None if digits is None else fmpq(1, 10 ** digits)
     gens = [Poly(R, g.terms) for g in gens if not g.is_zero()]
     basis = groebner(gens, R)
     if any(g.is_constant() for g in basis):
         return CurveTopology([], [])
     if basis and dimension(basis, R) == 0:
-        return CurveTopology([], [s.box for s in real_solutions(basis, R, digits).real])
+        return CurveTopology([], [s.box for s in real_solutions(basis, R, digits or 6).real])
     chart = _Chart(gens, basis, R)
     if len(chart.free) == 1:
         origin = chart.lift([(fmpq(0), fmpq(0))])
         return CurveTopology([Circuit([origin], origin, False, 2)], [])
     curve, point_ideals = curve_part(chart.gens, chart.ring)
-    isolated = [s.box for P in point_ideals for s in real_solutions(P, chart.ring, digits).real]
+    isolated = [s.box for P in point_ideals for s in real_solutions(P, chart.ring, digits or 6).real]
     circuits, more, events, proj = _topology(curve, chart.ring, width)
     for c in circuits:
         c.samples = [chart.lift(b) for b in c.samples]
-        c.box = chart.lift(c.box)
+        c.box = chart.lift(c.box) if c.box else []
     return CurveTopology(circuits, [chart.lift(b) for b in isolated + more], events, proj)

@@ -74,6 +74,11 @@ def from_fmpq_poly(q: fmpq_poly | fmpz_poly, ring: PolyRing, var: int) -> Poly:
     return Poly(ring, terms)
 
 
+def _shift(e: Exp, i: int, k: int = 1) -> Exp:
+    """The exponent of ``x^e * x_i^k``."""
+    return e[:i] + (e[i] + k,) + e[i + 1:]
+
+
 def _mat(columns: list[list[fmpq]], size: int) -> fmpq_mat:
     """The matrix with the given columns."""
     return fmpq_mat(size, len(columns), [columns[j][i] for i in range(size) for j in range(len(columns))])
@@ -114,20 +119,41 @@ class QuotientAlgebra:
 
     def var_matrix(self, i: int) -> fmpq_mat:
         """The matrix of multiplication by the ``i``-th variable."""
-        if i not in self._vars:
-            cols = []
-            for e in self.monomials:
-                f = list(e)
-                f[i] += 1
-                j = self.index.get(tuple(f))
-                if j is not None:
-                    col = [fmpq(0)] * self.dim
-                    col[j] = fmpq(1)
-                else:
-                    col = self.coords(self.ring.monomial(tuple(f)))
-                cols.append(col)
-            self._vars[i] = _mat(cols, self.dim)
+        if not self._vars:
+            self._build_matrices()
         return self._vars[i]
+
+    def _build_matrices(self) -> None:
+        """All variables' matrices from the normal forms of the border monomials ``x_i b`` not
+        in the basis, in increasing order (Faugère, Gianni, Lazard and Mora 1993): the leading
+        monomial of a basis element reduces to minus its (reduced) tail; any other border monomial
+        is ``x_j t`` for a smaller border monomial ``t``, so its normal form combines known ones."""
+        n, D = self.ring.nvars, self.dim
+        lead = {g.lm(): g.monic() for g in self.basis}
+        border = sorted({_shift(b, i) for b in self.monomials for i in range(n)} - set(self.index),
+                        key=self.ring.order.key)
+        nf: dict[Exp, dict[int, fmpq]] = {}
+
+        def vector(t: Exp) -> dict[int, fmpq]:
+            j = self.index.get(t)
+            return {j: fmpq(1)} if j is not None else nf[t]
+        for t in border:
+            g = lead.get(t)
+            if g is not None:
+                nf[t] = {self.index[e]: -c for e, c in g.terms.items() if e != t}
+                continue
+            j = next(j for j in range(n) if t[j] and _shift(t, j, -1) in nf)
+            acc: dict[int, fmpq] = {}
+            for k, c in nf[_shift(t, j, -1)].items():
+                for l, d in vector(_shift(self.monomials[k], j)).items():
+                    acc[l] = acc.get(l, fmpq(0)) + c * d
+            nf[t] = {l: c for l, c in acc.items() if c != 0}
+        for i in range(n):
+            m = fmpq_mat(D, D)
+            for k, b in enumerate(self.monomials):
+                for l, c in vector(_shift(b, i)).items():
+                    m[l, k] = c
+            self._vars[i] = m
 
     def linear_matrix(self, form: Sequence[fmpq]) -> fmpq_mat:
         """The matrix of multiplication by ``sum form[i] x_i``."""
