@@ -52,8 +52,8 @@ from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 from .real_branches import PointFamily, half_branch_counts
 from .real_field import RealAlgebraicField
-from .real_fibers import (Biv, Fibres, at_x, at_y, curve_part, d_y, event_polynomial, irreducible_factors,
-                          is_finite, linear_poly)
+from .real_fibers import (Biv, Fibres, at_x, at_y, curve_part, event_polynomial, irreducible_factors, is_finite,
+                          linear_poly)
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, separate, sign_at
 from .real_solve import (NotSeparatingError, QuotientAlgebra, arb_bounds, ball_eval, real_solutions, rur_of,
                          solution_boxes)

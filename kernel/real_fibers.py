@@ -113,10 +113,6 @@ def at_y(g: Biv, b: fmpq) -> fmpq_poly:
     return out
 
 
-def d_y(g: Biv) -> Biv:
-    return [g[j] * j for j in range(1, len(g))]
-
-
 def discriminant(g: Biv) -> fmpz_poly:
     """The discriminant of ``g`` in ``Y`` (a polynomial in ``X``; zero when ``g`` has a
     repeated factor)."""

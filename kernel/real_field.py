@@ -1,8 +1,8 @@
 """Exact arithmetic in a real number field ``Q(c) = Q[T]/(p)`` with a chosen real root ``c`` of the
 irreducible ``p``: elements are polynomials in ``T`` reduced modulo ``p`` (``fmpq_poly``); zero
-tests are exact, signs at ``c`` exact (:func:`.real_roots.sign_at`), values enclosed in balls.
-Polynomials over the field (lists of elements, constant first) have gcds, exact division and
-Gaussian elimination (ranks) - what the curve sweep needs at an algebraic critical value."""
+tests are exact, values at ``c`` enclosed in balls.  Polynomials over the field (lists of
+elements, constant first) can be divided by ``Y - y``, matrices have ranks (Gaussian
+elimination) - what the curve sweep and the branch analysis need at an algebraic point."""
 from __future__ import annotations
 
 from typing import Sequence
@@ -10,7 +10,7 @@ from typing import Sequence
 import flint
 from flint import arb, fmpq, fmpq_poly
 
-from .real_roots import RealRoot, sign_at
+from .real_roots import RealRoot
 
 Elt = fmpq_poly
 UPoly = list[fmpq_poly]  # a polynomial over the field, constant coefficient first
@@ -30,10 +30,6 @@ class RealAlgebraicField:
             return a % self.p
         return fmpq_poly([a])
 
-    def gen(self) -> Elt:
-        """``c`` itself."""
-        return fmpq_poly([0, 1]) % self.p
-
     def mul(self, a: Elt, b: Elt) -> Elt:
         return (a * b) % self.p
 
@@ -43,15 +39,8 @@ class RealAlgebraicField:
             raise ZeroDivisionError("division by zero in a number field")
         return s / g.coeffs()[0]
 
-    def div(self, a: Elt, b: Elt) -> Elt:
-        return self.mul(a, self.inv(b))
-
     def is_zero(self, a: Elt) -> bool:
         return (a % self.p).is_zero()
-
-    def sign(self, a: Elt) -> int:
-        """The sign of ``a`` at ``c``."""
-        return sign_at(a % self.p, self.root)
 
     def ball(self, a: Elt, prec: int = 128) -> arb:
         """A ball around the value of ``a`` at ``c`` (at ``prec`` bits)."""
@@ -74,29 +63,6 @@ class RealAlgebraicField:
             out.pop()
         return out
 
-    def monic(self, f: UPoly) -> UPoly:
-        inv = self.inv(f[-1])
-        return [self.mul(c, inv) for c in f]
-
-    def rem(self, f: UPoly, g: UPoly) -> UPoly:
-        """The remainder of ``f`` by the nonzero ``g``."""
-        f, g = self.strip(f), self.strip(g)
-        inv = self.inv(g[-1])
-        while len(f) >= len(g):
-            q = self.mul(f[-1], inv)
-            shift = len(f) - len(g)
-            for i, c in enumerate(g):
-                f[shift + i] = self(f[shift + i] - q * c)
-            f = self.strip(f)
-        return f
-
-    def gcd(self, f: UPoly, g: UPoly) -> UPoly:
-        """The monic greatest common divisor."""
-        f, g = self.strip(f), self.strip(g)
-        while g:
-            f, g = g, self.rem(f, g)
-        return self.monic(f) if f else f
-
     def divide_linear(self, f: UPoly, y: Elt) -> UPoly:
         """``f / (Y - y)``; ValueError unless ``y`` is a root of ``f``."""
         f = self.strip(f)
@@ -108,24 +74,6 @@ class RealAlgebraicField:
         if not self.is_zero(f[0] + self.mul(out[0] if out else self.zero, y)):
             raise ValueError("not a root")
         return out
-
-    def power_of_linear(self, y: Elt, k: int) -> UPoly:
-        """``(Y - y)^k``."""
-        out: UPoly = [self.one]
-        for _ in range(k):
-            shifted = [self.zero] + out
-            for i, c in enumerate(out):
-                shifted[i] = self(shifted[i] - self.mul(c, y))
-            out = shifted
-        return out
-
-    def evaluate_ball(self, f: UPoly, x: arb, prec: int = 128) -> arb:
-        """A ball around ``f(x)`` (coefficients at ``c``)."""
-        with flint.ctx.workprec(prec):
-            out = arb(0)
-            for c in reversed(f):
-                out = out * x + self.ball(c, prec)
-            return out
 
     def rank(self, rows: Sequence[Sequence[Elt]]) -> int:
         """The rank of a matrix over the field (Gaussian elimination, exact)."""

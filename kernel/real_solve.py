@@ -35,8 +35,8 @@ from .hilbert import kbase
 from .ideals import dp_ring, move
 from .order import Exp
 from .poly import Poly, PolyRing
-from .real_roots import (RealRoot, RealSolvingError, isolate_real_roots, primitive, sign, sign_at,
-                         squarefree_part, variations)
+from .real_roots import (RealRoot, RealSolvingError, isolate_real_roots, primitive, sign_at, squarefree_part,
+                         variations)
 
 
 class NotSeparatingError(RealSolvingError):

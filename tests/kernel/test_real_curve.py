@@ -1,0 +1,127 @@
+"""Real topology of curves: circuits, isolated points and unbounded branches of plane and space
+curves with known answers, and four-bar linkages in mech's mechanism variables checked against a
+dense numerical sampling of the input angle (an independent witness)."""
+from __future__ import annotations
+
+import math
+
+import pytest
+from flint import fmpq
+
+from mech.kernel import QQ, MonomialOrder, PolyRing
+from mech.kernel.ideals import intersect
+from mech.kernel.real_curve import curve_topology
+from mech.kernel.real_roots import RealSolvingError
+
+R2 = PolyRing(QQ, ["x", "y"], MonomialOrder.simple("dp", 2))
+x, y = R2.gens()
+R3 = PolyRing(QQ, ["x", "y", "z"], MonomialOrder.simple("dp", 3))
+X, Y, Z = R3.gens()
+R6 = PolyRing(QQ, ["c1", "s1", "c2", "s2", "c3", "s3"], MonomialOrder.simple("dp", 6))
+c1, s1, c2, s2, c3, s3 = R6.gens()
+
+# (curve, circuits, isolated points, unbounded circuits)
+PLANE = [
+    (x ** 2 + y ** 2 - 1, 1, 0, 0),
+    (x ** 2 + y ** 2 + 1, 0, 0, 0),
+    (x ** 2 + y ** 2, 0, 1, 0),                                   # one real point
+    (x ** 2 - y ** 2, 1, 0, 1),                                   # two crossing lines
+    (y ** 2 - x ** 3, 1, 0, 1),                                   # cusp
+    (y ** 2 - x ** 2 - x ** 3, 1, 0, 1),                          # nodal cubic
+    (y ** 2 + x ** 2 - x ** 3, 1, 1, 1),                          # cubic with an isolated point
+    ((x ** 2 + y ** 2 - 1) * (x ** 2 + y ** 2 - 4), 2, 0, 0),     # nested circles
+    ((x ** 2 + y ** 2 - 1) * ((x - 3) ** 2 + y ** 2 - 1), 2, 0, 0),
+    ((x ** 2 + y ** 2 - 1) * (x ** 2 + (y - 1) ** 2 - 1), 1, 0, 0),   # two circles meeting
+    (x * y - 1, 2, 0, 2),                                         # hyperbola
+    (y ** 2 - (x ** 2 - 1) * (x ** 2 - 4) * (x ** 2 - 9), 4, 0, 2),
+    ((x ** 2 + y ** 2) ** 2 - (x ** 2 - y ** 2), 1, 0, 0),        # lemniscate
+    (x ** 4 + y ** 4 - 1, 1, 0, 0),
+    ((x ** 2 + y ** 2 - 1) * (x ** 2 + y ** 2 - 2) * ((x - 5) ** 2 + y ** 2), 2, 1, 0),
+]
+
+
+@pytest.mark.parametrize("f,circuits,isolated,unbounded", PLANE)
+def test_plane_curves(f, circuits, isolated, unbounded):
+    topo = curve_topology([f], R2, None)
+    assert (topo.count, len(topo.isolated)) == (circuits, isolated)
+    assert sum(not c.bounded for c in topo.circuits) == unbounded
+
+
+def test_sample_points_lie_on_the_curve():
+    f = y ** 2 - (x ** 2 - 1) * (x ** 2 - 4) * (x ** 2 - 9)
+    topo = curve_topology([f], R2, 8)
+    for c in topo.circuits:
+        for box in c.samples:
+            assert all(hi - lo <= fmpq(1, 10 ** 8) for lo, hi in box)
+            assert abs(float(f.evaluate([(lo + hi) / 2 for lo, hi in box]))) < 1e-5
+        assert all(c.box[i][0] <= b[i][0] and b[i][1] <= c.box[i][1] for b in c.samples for i in range(2))
+
+
+SPACE = [
+    ("Hopf link", intersect([X ** 2 + Y ** 2 - 1, Z], [(X - 1) ** 2 + Z ** 2 - 1, Y], ring=R3), 2, 0),
+    ("separate circles", intersect([X ** 2 + Y ** 2 - 1, Z], [(X - 3) ** 2 + Z ** 2 - 1, Y], ring=R3), 2, 0),
+    ("touching circles", intersect([X ** 2 + Y ** 2 - 1, Z], [(X - 2) ** 2 + Z ** 2 - 1, Y], ring=R3), 1, 0),
+    ("Viviani", [X ** 2 + Y ** 2 + Z ** 2 - 4, (X - 1) ** 2 + Y ** 2 - 1], 1, 0),
+    ("twisted cubic", [Y - X ** 2, Z - X ** 3], 1, 0),
+    ("circle and point", intersect([X ** 2 + Y ** 2 - 1, Z], [X - 3, Y, Z - 1], ring=R3), 1, 1),
+    ("no real point", [X ** 2 + Y ** 2 + Z ** 2 + 1, X - Y], 0, 0),
+]
+
+
+@pytest.mark.parametrize("name,ideal,circuits,isolated", SPACE, ids=[s[0] for s in SPACE])
+def test_space_curves(name, ideal, circuits, isolated):
+    topo = curve_topology(ideal, R3, None)
+    assert (topo.count, len(topo.isolated)) == (circuits, isolated)
+
+
+def fourbar(ground, a, b, c):
+    """mech's constraint ideal of ``ground O A g; bar O B a; bar B C b; bar C A c``."""
+    return [a * c1 + b * c2 + c * c3 - ground, a * s1 + b * s2 + c * s3,
+            c1 ** 2 + s1 ** 2 - 1, c2 ** 2 + s2 ** 2 - 1, c3 ** 2 + s3 ** 2 - 1]
+
+
+def sampled_circuits(ground, a, b, c, steps=20000):
+    """An independent count of the circuits of a four-bar from its input angle: B = a(cos t, sin t)
+    and C on the circles of radius b about B and c about A = (g, 0).  Assemblies exist where
+    (b - c)^2 <= |AB|^2 <= (b + c)^2; on each arc of such angles the two assemblies (elbow up and
+    down) join where the inequality is tight, so an arc is one circuit; if every angle is an
+    interior one, the two assemblies never meet: two circuits (a full-turn input)."""
+    margins = []
+    for k in range(steps):
+        t = 2 * math.pi * k / steps
+        d2 = ground ** 2 + a ** 2 - 2 * a * ground * math.cos(t)
+        margins.append(min(d2 - (b - c) ** 2, (b + c) ** 2 - d2))
+    tol = 1e-9
+    feasible = [m >= -tol for m in margins]
+    if all(feasible):
+        return 2 if min(margins) > tol else 1
+    start = feasible.index(False)
+    arcs, inside = 0, False
+    for k in range(steps):
+        f = feasible[(start + k) % steps]
+        arcs += f and not inside
+        inside = f
+    return arcs
+
+
+FOURBARS = [("crank-rocker", (5, 2, 5, 4), 2), ("double crank", (2, 4, 5, 4), 2),
+            ("rocker-crank", (5, 4, 5, 2), 2), ("triple rocker (non-Grashof)", (7, 4, 3, 5), 1),
+            ("change point", (5, 2, 4, 3), 1)]
+
+
+@pytest.mark.parametrize("name,lengths,circuits", FOURBARS, ids=[f[0] for f in FOURBARS])
+def test_fourbar_circuits(name, lengths, circuits):
+    assert sampled_circuits(*lengths) == circuits
+    topo = curve_topology(fourbar(*lengths), R6, 6)
+    assert topo.count == circuits and not topo.isolated and topo.bounded
+    for circuit in topo.circuits:
+        for box in circuit.samples:
+            p = [(lo + hi) / 2 for lo, hi in box]
+            assert all(abs(float(g.evaluate(p))) < 1e-5 for g in fourbar(*lengths))
+
+
+def test_not_a_curve():
+    with pytest.raises(RealSolvingError):
+        curve_topology([X ** 2 + Y ** 2 + Z ** 2 - 1], R3)
+    topo = curve_topology([x ** 2 - 2, y - 1], R2)  # a 0-dimensional ideal: isolated points only
+    assert topo.count == 0 and len(topo.isolated) == 2
