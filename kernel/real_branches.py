@@ -133,16 +133,20 @@ class _Setting:
 
 def _smallest_positive(charpoly: fmpq_poly) -> fmpq | None:
     """A positive rational below every positive real root (None if there is none)."""
-    pos = [r for r in isolate_real_roots(charpoly) if r.lo >= 0 or (r.exact is not None and r.exact > 0)]
-    pos = [r for r in pos if not (r.exact is not None and r.exact == 0)]
-    if not pos:
-        return None
-    r = pos[0]
-    while r.lo <= 0:
-        r = r.refined((r.hi - r.lo) / 2)
+    for r in isolate_real_roots(charpoly):
         if r.exact is not None:
+            if r.exact > 0:
+                return r.exact / 2
+            continue
+        while r.lo < 0 < r.hi or r.lo == 0:
+            r = r.refined((r.hi - r.lo) / 2)
+            if r.exact is not None:
+                break
+        if r.exact is not None and r.exact > 0:
             return r.exact / 2
-    return r.lo / 2
+        if r.exact is None and r.lo > 0:
+            return r.lo / 2
+    return None
 
 
 def _lagrange(S: _Setting, seed: int) -> list[Poly]:
@@ -159,7 +163,7 @@ def _critical_bound(S: _Setting) -> fmpq:
     """``eps^2`` below every positive critical value of the distance on the curve (from the
     characteristic polynomial of ``d`` on the Lagrange points; if these are not isolated, a
     component lies on a sphere around the point, and the values come by elimination)."""
-    for seed in range(4):
+    for seed in range(1 if len(S.curve) == S.n - 1 else 4):
         lag = _lagrange(S, seed)
         if dimension(lag, S.ring) <= 0:
             A = QuotientAlgebra(lag, S.ring)

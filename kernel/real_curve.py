@@ -146,14 +146,12 @@ def _forms(n: int, seed: int) -> list[list[fmpq]]:
 
 
 def _critical(gens: list[Poly], ring: PolyRing, ell: list[fmpq]):
-    """The representation of the critical points of ``l`` on the curve, parametrised by ``l``."""
+    """The representation of the critical points of ``l`` on the curve, parametrised by ``l``
+    (_Degenerate unless they are isolated and ``l`` separates them)."""
     n = ring.nvars
-    for seed in range(4):
-        if len(gens) == n - 1:
-            h = gens
-        else:
-            rnd = random.Random(seed)
-            h = [sum((g * rnd.randint(-3, 3) for g in gens), ring.zero()) for _ in range(n - 1)]
+    for seed in ([None] if len(gens) == n - 1 else range(4)):
+        rnd = random.Random(seed)
+        h = gens if seed is None else [sum((g * rnd.randint(-3, 3) for g in gens), ring.zero()) for _ in range(n - 1)]
         rows = [[f.diff(i) for i in range(n)] for f in h] + [[ring.const(c) for c in ell]]
         det = [d for d in minors(Matrix(ring, n, n, [p for r in rows for p in r]), n) if not d.is_zero()]
         K = gens + det
