@@ -134,14 +134,19 @@ class _Chart:
 
 # --- forms ---------------------------------------------------------------------------------
 
-def _forms(n: int, seed: int) -> list[list[fmpq]]:
+def _forms(n: int, seed: int, count: int, start: int = 0) -> list[list[fmpq]]:
+    """Pseudo-random integer linear forms, the ``k``-th with coefficients up to ``2^(1 + k/2)``:
+    small ones first (small numbers, fast), larger ones when a symmetric curve (many rational
+    special points) defeats them."""
     rnd = random.Random(seed)
-    out = []
-    for k in range(40):
-        size = 2 + k // 4
+    out: list[list[fmpq]] = []
+    k = start
+    while len(out) < count:
+        size = 2 ** (1 + k // 2)
         f = [fmpq(rnd.randint(-size, size)) for _ in range(n)]
         if any(f):
             out.append(f)
+        k += 1
     return out
 
 
@@ -438,7 +443,7 @@ class _Sweep:
         n = self.ring.nvars
         for attempt in range(8):
             if attempt == len(self.second):
-                m2 = _forms(n, 700 + attempt)[0]
+                m2 = _forms(n, 700 + attempt, 1, 2 * attempt)[0]
                 try:
                     self.second.append((m2, event_polynomial(self.fib.plane_curve(m2))))
                 except RealSolvingError:
@@ -529,7 +534,7 @@ def _match(sep: list[RealRoot], found: list[tuple[RealRoot, _Critical | None]]) 
 def _topology(gens: list[Poly], ring: PolyRing, width: fmpq | None) -> tuple[list[Circuit], list[Box], int, list]:
     n = ring.nvars
     basis = groebner(gens, ring)
-    for attempt, ell in enumerate(_forms(n, 1)[:12]):
+    for attempt, ell in enumerate(_forms(n, 1, 12)):
         if not is_finite(basis, ell):
             continue
         try:
@@ -537,7 +542,7 @@ def _topology(gens: list[Poly], ring: PolyRing, width: fmpq | None) -> tuple[lis
         except _Degenerate:
             continue
         fib = Fibres(gens, ring, ell)
-        for m in _forms(n, 100 + attempt)[:4]:
+        for m in _forms(n, 100 + attempt, 4, attempt):
             if all(m[i] * ell[j] == m[j] * ell[i] for i in range(n) for j in range(i)):
                 continue
             try:
