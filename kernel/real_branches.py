@@ -32,7 +32,7 @@ import flint
 from flint import fmpq, fmpq_poly, fmpz_poly
 
 from .groebner import groebner
-from .ideals import dimension, eliminate
+from .ideals import dimension
 from .local import AlgebraicPoint, centre_at, tangent_cone_over
 from .matrix import Matrix, minors
 from .order import Block, MonomialOrder
@@ -40,7 +40,7 @@ from .poly import Poly, PolyRing
 from .real_fibers import curve_part, linear_poly
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, primitive, separate
 from .real_solve import (RUR, QuotientAlgebra, arb_bounds, ball_eval, from_fmpq_poly, rur, rur_of,
-                         shape_representation, solution_boxes, to_fmpq_poly)
+                         shape_representation, solution_boxes)
 
 Box = list[tuple[fmpq, fmpq]]
 
@@ -107,9 +107,13 @@ class _Setting:
         self.e = from_fmpq_poly(fmpq_poly(fam.poly), self.ring, n)
         self.centre = [from_fmpq_poly(c, self.ring, n) for c in fam.coords]
         self.diffs = [x - c for x, c in zip(xs, self.centre)]
-        self.dist = sum((v * v for v in self.diffs), self.ring.zero())
+        self.reweigh([1] * n)
         self.fam = fam
         self.roots = fam.real_roots()
+
+    def reweigh(self, weights: list[int]) -> None:
+        """The squared distance ``d = sum w_i (x_i - p_i)^2`` with these positive weights."""
+        self.dist = sum((v * v * w for v, w in zip(self.diffs, weights)), self.ring.zero())
 
     def base(self) -> list[Poly]:
         return self.curve + [self.e]
@@ -161,29 +165,19 @@ def _lagrange(S: _Setting, seed: int) -> list[Poly]:
 
 def _critical_bound(S: _Setting) -> fmpq:
     """``eps^2`` below every positive critical value of the distance on the curve (from the
-    characteristic polynomial of ``d`` on the Lagrange points; if these are not isolated, a
-    component lies on a sphere around the point, and the values come by elimination)."""
-    for seed in range(1 if len(S.curve) == S.n - 1 else 4):
-        lag = _lagrange(S, seed)
-        if dimension(lag, S.ring) <= 0:
-            A = QuotientAlgebra(lag, S.ring)
-            bound = _smallest_positive(A.poly_matrix(S.dist).charpoly()) if A.dim else None
-            return bound if bound is not None else fmpq(1)
-    values = _eliminated_values(S, lag)
-    bound = _smallest_positive(values)
-    return bound if bound is not None else fmpq(1)
-
-
-def _eliminated_values(S: _Setting, lag: list[Poly]) -> fmpq_poly:
-    """The critical values as the roots of the eliminant of ``lag + (D - d)`` in ``D``."""
-    n = S.ring.nvars
-    ring = PolyRing(S.ring.field, list(S.ring.names) + ["_D"], MonomialOrder([Block("dp", n), Block("dp", 1)]))
-    lift = [Poly(ring, {e + (0,): c for e, c in g.terms.items()}) for g in lag + [S.dist]]
-    D = ring.gens()[n]
-    elim = eliminate(lift[:-1] + [D - lift[-1]], list(range(n)), ring)
-    if not elim:
-        raise RealSolvingError("the distance has a continuum of critical values")
-    return to_fmpq_poly(elim[0], n)
+    characteristic polynomial of ``d`` on the Lagrange points).  When these are not isolated (a
+    component on a sphere around the point) the distance is reweighted, ``sum w_i (x_i - p_i)^2``
+    with random positive weights: the conic structure holds for it all the same."""
+    rnd = random.Random(29)
+    for attempt in range(8):
+        for seed in range(1 if len(S.curve) == S.n - 1 else 3):
+            lag = _lagrange(S, seed)
+            if dimension(lag, S.ring) <= 0:
+                A = QuotientAlgebra(lag, S.ring)
+                bound = _smallest_positive(A.poly_matrix(S.dist).charpoly()) if A.dim else None
+                return bound if bound is not None else fmpq(1)
+        S.reweigh([rnd.randint(1, 9 + 4 * attempt) for _ in range(S.n)])
+    raise RealSolvingError("the critical points of the distance to the point are not isolated")
 
 
 def _sphere(S: _Setting, eps2: fmpq) -> tuple[object, list[RealRoot], list[int]]:

@@ -13,10 +13,8 @@ image's reduced equation (otherwise every fibre point would repeat).
 """
 from __future__ import annotations
 
-import math
 from typing import Sequence
 
-import flint
 from flint import fmpq, fmpq_poly, fmpz_poly
 
 from .dimension import krull_dim
@@ -113,24 +111,19 @@ def at_y(g: Biv, b: fmpq) -> fmpq_poly:
     return out
 
 
-def discriminant(g: Biv) -> fmpz_poly:
-    """The discriminant of ``g`` in ``Y`` (a polynomial in ``X``; zero when ``g`` has a
-    repeated factor)."""
-    den = 1
-    for c in g:
-        den = math.lcm(den, int(c.denom()))
-    ctx = flint.fmpz_mpoly_ctx.get(("X", "Y"))
-    terms = {}
-    for j, c in enumerate(g):
-        for i, a in enumerate((c * den).coeffs()):
-            if a != 0:
-                terms[(i, j)] = int(a.p)
-    poly = ctx.from_dict(terms)
-    disc = poly.discriminant("Y")
-    coeffs: dict[int, int] = {}
-    for (i, _), a in disc.to_dict().items():
-        coeffs[i] = int(a)
-    return fmpz_poly([coeffs.get(i, 0) for i in range(max(coeffs, default=-1) + 1)])
+def discriminant(g: Biv) -> fmpq_poly:
+    """The discriminant of ``g`` (monic of degree ``r`` in ``Y``, the coefficient of ``Y^(r-j)`` of
+    degree at most ``j`` in ``X``) in ``Y``: weighted homogeneous of weight ``r(r-1)``, so of degree
+    at most ``r(r-1)`` in ``X`` - interpolated from its values at ``r(r-1) + 1`` rationals and checked
+    at one more.  Zero when ``g`` has a repeated factor."""
+    r = len(g) - 1
+    bound = r * (r - 1)
+    xs = [fmpq(k) for k in range(bound + 2)]
+    vals = [at_x(g, a).discriminant() if r > 0 else fmpq(1) for a in xs]
+    disc = _interpolate(xs[:-1], vals[:-1])
+    if disc(xs[-1]) != vals[-1]:
+        raise RealSolvingError("internal: the discriminant does not interpolate")
+    return disc
 
 
 def event_polynomial(g: Biv) -> fmpz_poly:
