@@ -8,10 +8,12 @@ import math
 import pytest
 from flint import fmpq
 
-from mech.kernel import QQ, MonomialOrder, PolyRing
+from mech.kernel import QQ, MonomialOrder, PolyRing, groebner
 from mech.kernel.ideals import intersect
+from mech.kernel.primdec import min_ass_gtz
 from mech.kernel.real_curve import curve_topology
 from mech.kernel.real_roots import RealSolvingError
+from mech.kernel.real_solve import real_solutions
 
 R2 = PolyRing(QQ, ["x", "y"], MonomialOrder.simple("dp", 2))
 x, y = R2.gens()
@@ -118,6 +120,28 @@ def test_fourbar_circuits(name, lengths, circuits):
         for box in circuit.samples:
             p = [(lo + hi) / 2 for lo, hi in box]
             assert all(abs(float(g.evaluate(p))) < 1e-5 for g in fourbar(*lengths))
+
+
+@pytest.mark.parametrize("lengths", [(1, 1, 1, 1), (2, 1, 2, 1), (2, 2, 1, 1)])
+def test_reducible_fourbars(lengths):
+    """Parallelogram and kite linkages: several motion modes, each one circuit here, meeting at
+    real points; the union's connected components are those of the graph of modes joined where
+    they meet (an independent witness)."""
+    I = fourbar(*lengths)
+    modes = min_ass_gtz(I, R6)
+    assert len(modes) > 1 and all(curve_topology(P, R6, None).count == 1 for P in modes)
+    parent = list(range(len(modes)))
+
+    def find(i):
+        while parent[i] != i:
+            i = parent[i]
+        return i
+    for i in range(len(modes)):
+        for j in range(i + 1, len(modes)):
+            meet = groebner(modes[i] + modes[j], R6)
+            if not any(g.is_constant() for g in meet) and real_solutions(meet, R6, 3).real_count:
+                parent[find(i)] = find(j)
+    assert curve_topology(I, R6, None).count == len({find(i) for i in range(len(modes))})
 
 
 def test_not_a_curve():
