@@ -1,5 +1,5 @@
 """The real topology of an algebraic curve over QQ: its circuits (connected components of the
-real points), isolated real points and unbounded branches, exactly.
+real points) with certified bounding boxes, isolated real points and unbounded branches, exactly.
 
 The method is a sweep (cylindrical decomposition) of a generic plane image, in the spirit of
 Gonzalez-Vega and El Kahoui ("An improved upper complexity bound for the topology computation of
@@ -8,41 +8,37 @@ Gatellier, Labrouzy, Mourrain and Técourt ("Computing the topology of three-dim
 curves", 2005); every generic-position assumption is checked, and a failed check means another
 projection.  docs/real.md explains the steps; in short:
 
-1. Linear equations of the curve are solved (an affine chart), the curve is made radical with its
+1. Linear equations of the curve are solved (an affine chart); the curve is made radical with its
    one-dimensional components (0-dimensional ones are isolated points), :func:`.real_fibers.curve_part`.
-2. A linear form ``l`` finite on the curve; its critical points ``K`` (``C`` and the maximal minors of
-   the Jacobian of ``n - 1`` combinations of the generators and ``l``), zero-dimensional, with ``l``
-   separating them (one critical point per fibre).
-3. A second form ``m``: the plane image ``g(X, Y) = 0`` of ``(l, m)`` by interpolation of fibres
-   (squarefree: birational); its events, the real roots ``c`` of the discriminant in ``Y``.  Between
+2. A linear form ``l`` finite on the curve; its critical points (the curve and the maximal minors
+   of the Jacobian of ``n - 1`` combinations of the generators and ``l``), zero-dimensional, with
+   ``l`` separating them (one per fibre).
+3. A second form ``m``: the plane image ``g(X, Y) = 0`` of ``(l, m)`` (:class:`.real_fibers.Fibres`,
+   squarefree: birational); its events are the real roots of the discriminant in ``Y``.  Between
    events the real arcs of the image do not cross, so an arc is named by its rank in ``Y``.
-4. At an event ``c`` that is the value of a critical point ``p`` of ``l`` whose image ``(c, y_c)``
-   is critical for ``g`` (``g_Y(c, y_c) = 0`` in ``Q(c)``): ``k`` the multiplicity of ``y_c`` in
-   ``g(c, Y)`` and ``h = g(c, Y)/(Y - y_c)^k``, certified squarefree (ball root isolation: no other
-   critical point of the image over ``c``, else another ``m``).  A rational window ``[a, b]``
-   around ``c`` (no other event) and an interval ``J`` around ``y_c`` with ``h`` nonzero on ``J``
-   (ball arithmetic) and ``g(X, ends of J) != 0`` on ``[a, b]`` (exact root counts): the real roots
-   of ``g(a, Y)`` in ``J`` are exactly the arcs from the left ending at ``(c, y_c)``, those below
-   and above ``J`` pass through the regular points in order (the sweep rule, certified); the
-   same at ``b``.  The arcs at ``(c, y_c)`` belong to ``p``: their number must equal the number of
-   half-branches of ``C`` at ``p`` (2 at a smooth point, else :func:`.real_branches.half_branch_counts`),
-   so no other real point of ``C`` maps there (else another ``m``).
-5. At any other event every point of ``C`` over ``c`` is smooth and not critical for ``l``: each
-   real arc goes on through it.  The arcs on the two sides are matched through a window free of
+4. An event ``c`` where a critical point ``p`` of ``l`` maps to a critical point of the image: the
+   arcs ending there are certified by :func:`.real_events.locate`; they belong to ``p``, their number
+   must equal the real half-branches at ``p`` (2 if smooth, else
+   :func:`.real_branches.half_branch_counts`), so no other real point maps there (else another ``m``).
+5. At any other event every point over ``c`` is smooth and not critical for ``l``: each real arc goes
+   on, possibly crossing others in the image; the two sides are matched through a window free of
    events of a second image ``(l, m2)``, by the ``m2``-order of the real points of the rational
-   fibres at the window's ends (apparent crossings of the first image are undone here).
-6. Arcs of the strips between events and the critical points form a graph; its connected
-   components are the circuits (with points of their arcs and critical points as samples), critical
+   fibres at the window's ends.
+6. With sample points asked for, the critical points of each coordinate are marks located on their
+   arcs (:func:`.real_events.locate` again): a coordinate's extremes on a bounded circuit are at its
+   critical points or at critical points of ``l`` (the singular points among them), so the box of all
+   these points is a certified bounding box.
+7. Arcs and critical points form a graph; its connected components are the circuits, critical
    points without arcs are isolated points, arcs over the two unbounded strips are unbounded ends.
 """
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Sequence
 
 import flint
-from flint import arb, fmpq, fmpq_poly, fmpz_poly
+from flint import fmpq, fmpq_poly, fmpz_poly
 
 from .coeffs import QQ
 from .groebner import groebner
@@ -51,30 +47,27 @@ from .matrix import Matrix, minors
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 from .real_branches import PointFamily, half_branch_counts
+from .real_events import Degenerate, Event, Special, clear, locate, point_box, roots_at, same_point, special
 from .real_field import RealAlgebraicField
-from .real_fibers import (Biv, Fibres, at_x, at_y, curve_part, event_polynomial, irreducible_factors, is_finite,
-                          linear_poly)
+from .real_fibers import Fibres, curve_part, event_polynomial, irreducible_factors, is_finite, linear_poly
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, separate, sign_at
-from .real_solve import (NotSeparatingError, QuotientAlgebra, arb_bounds, ball_eval, real_solutions, rur_of,
-                         solution_boxes)
+from .real_solve import RUR, NotSeparatingError, QuotientAlgebra, arb_bounds, ball_eval, real_solutions, rur_of, \
+    solution_boxes
 
 Box = list[tuple[fmpq, fmpq]]
 
 
-class _Degenerate(Exception):
-    """The projection is not in generic position: choose another."""
-
-
 @dataclass
 class Circuit:
-    """A connected component of the real points: ``samples`` (boxes of a point on each of its
-    arcs and of its critical points), ``box`` (their hull), whether it is ``bounded``, and the
-    number of its ends at infinity."""
+    """A connected component of the real points: ``samples`` (boxes of a point on one of its arcs,
+    of its critical points and of its coordinates' extreme points), ``box`` (their hull: a bounding
+    box of the circuit when ``certified``), whether it is ``bounded``, its ends at infinity."""
 
     samples: list[Box]
     box: Box
     bounded: bool
     ends: int
+    certified: bool = False
 
 
 @dataclass
@@ -83,8 +76,6 @@ class CurveTopology:
 
     circuits: list[Circuit]
     isolated: list[Box]
-    critical_values: int = 0
-    projection: list[list[fmpq]] = field(default_factory=list)
 
     @property
     def count(self) -> int:
@@ -118,8 +109,15 @@ class _Chart:
                 const, lin = fmpq(0), [fmpq(int(j == i)) for j in self.free]
             self.maps.append((const, lin))
             images.append(sum((x * c for x, c in zip(xs, lin) if c != 0), self.ring.const(const)))
-        restricted = [g.compose(images, self.ring) for g in gens]
-        self.gens = [g for g in restricted if not g.is_zero()]
+        self.gens = [h for h in (g.compose(images, self.ring) for g in gens) if not h.is_zero()]
+
+    def directions(self) -> list[list[fmpq]]:
+        """The original coordinates as linear forms in the free variables (distinct, nonzero)."""
+        out: list[list[fmpq]] = []
+        for _, lin in self.maps:
+            if any(lin) and lin not in out:
+                out.append(lin)
+        return out
 
     def lift(self, box: Box) -> Box:
         """The box of a point of the chart in all coordinates (exact interval arithmetic)."""
@@ -132,7 +130,7 @@ class _Chart:
         return out
 
 
-# --- forms ---------------------------------------------------------------------------------
+# --- forms and critical points ----------------------------------------------------------------
 
 def _forms(n: int, seed: int, count: int, start: int = 0) -> list[list[fmpq]]:
     """Pseudo-random integer linear forms, the ``k``-th with coefficients up to ``2^(1 + k/2)``:
@@ -150,170 +148,34 @@ def _forms(n: int, seed: int, count: int, start: int = 0) -> list[list[fmpq]]:
     return out
 
 
-def _critical(gens: list[Poly], ring: PolyRing, ell: list[fmpq]):
-    """The representation of the critical points of ``l`` on the curve, parametrised by ``l``
-    (_Degenerate unless they are isolated and ``l`` separates them)."""
+def _critical_algebra(gens: list[Poly], ring: PolyRing, direction: list[fmpq]) -> QuotientAlgebra | None:
+    """The algebra of the critical points of the linear form ``direction`` on the curve (the curve
+    and the maximal minors of the Jacobian of ``n - 1`` generators or combinations of them, and the
+    form); None when they are not isolated (the form is constant on a component)."""
     n = ring.nvars
     for seed in ([None] if len(gens) == n - 1 else range(4)):
         rnd = random.Random(seed)
         h = gens if seed is None else [sum((g * rnd.randint(-3, 3) for g in gens), ring.zero()) for _ in range(n - 1)]
-        rows = [[f.diff(i) for i in range(n)] for f in h] + [[ring.const(c) for c in ell]]
+        rows = [[f.diff(i) for i in range(n)] for f in h] + [[ring.const(c) for c in direction]]
         det = [d for d in minors(Matrix(ring, n, n, [p for r in rows for p in r]), n) if not d.is_zero()]
         K = gens + det
         if dimension(K, ring) <= 0:
-            try:
-                return rur_of(QuotientAlgebra(K, ring), ell)
-            except NotSeparatingError:
-                raise _Degenerate() from None
-    raise _Degenerate()
+            return QuotientAlgebra(K, ring)
+    return None
 
 
-# --- events ---------------------------------------------------------------------------------
-
-@dataclass
-class _Critical:
-    """An irreducible factor ``e`` of the event polynomial whose roots are critical values of ``l``
-    with the critical point ``psi`` (in ``Q(c)``) mapping to the critical point ``(c, y)`` of the
-    image: ``y`` has multiplicity ``k`` in ``g(c, Y)``, ``h = g(c, Y)/(Y - y)^k``."""
-
-    poly: fmpz_poly
-    psi: list[fmpq_poly]
-    y: fmpq_poly
-    k: int
-    h: list[fmpq_poly]
-
-
-def _critical_data(g: Biv, e: fmpz_poly, root: RealRoot, crit, m: list[fmpq]) -> _Critical | None:
-    """The data of a factor ``e`` of the events when the critical point of ``l`` over its roots
-    maps to a critical point of the image (field operations without inversions), else None."""
-    if not (fmpq_poly(crit.poly) % fmpq_poly(e)).is_zero():
-        return None
-    F = RealAlgebraicField(root)
-    psi = [F(s) for s in crit.shape]
-    y = F(sum((p * c for p, c in zip(psi, m)), fmpq_poly([])))
-    h = [F(c) for c in g]
-    k = 0
-    while F.is_zero(_horner(F, h, y)):
-        h = F.divide_linear(h, y)
-        k += 1
-    return _Critical(e, psi, y, k, h) if k >= 2 else None
-
-
-def _horner(F: RealAlgebraicField, f: list[fmpq_poly], y: fmpq_poly) -> fmpq_poly:
-    out = F.zero
-    for c in reversed(f):
-        out = F(F.mul(out, y) + c)
-    return out
-
-
-@dataclass
-class _Event:
-    root: RealRoot
-    data: _Critical | None
-    ylo: fmpq = fmpq(0)
-    yhi: fmpq = fmpq(0)
-    below: int = 0
-    above: int = 0
-    left: int = 0
-    right: int = 0
-
-
-def _root_gap(F: RealAlgebraicField, h: list[fmpq_poly], y: fmpq_poly, prec: int) -> fmpq | None:
-    """A positive rational below the distance from ``y`` to every root of ``h`` (over Q(c)), with
-    the roots of ``h`` certified simple by ball root isolation; None when that fails (``h`` not
-    squarefree, or too little precision)."""
-    if len(h) <= 1:
-        return fmpq(1)
-    with flint.ctx.workprec(prec):
-        try:
-            roots = flint.acb_poly([F.ball(c, prec) for c in h]).roots(maxprec=4 * prec)
-        except ValueError:
-            return None
-        yb = flint.acb(F.ball(y, prec))
-        gap = min(arb_bounds((r - yb).abs_lower())[0] for r in roots)
-    return gap / 2 if gap > 0 else None
-
-
-def _no_real_root(F: RealAlgebraicField, h: list[fmpq_poly], lo: fmpq, hi: fmpq, prec: int) -> bool:
-    """Certified: ``h`` (over Q(c)) has no root in ``[lo, hi]`` (ball evaluation on pieces)."""
-    if len(h) <= 1:
-        return True
-    with flint.ctx.workprec(prec):
-        hb = flint.arb_poly([F.ball(c, prec) for c in h])
-        pieces = [(lo, hi)]
-        for _ in range(10):
-            bad = []
-            for a, b in pieces:
-                v = hb(arb((a + b) / 2, (b - a) / 2))
-                if not (v > 0 or v < 0):
-                    bad.append((a, b))
-            if not bad:
-                return True
-            if len(bad) > 64:
-                return False
-            pieces = [q for a, b in bad for q in ((a, (a + b) / 2), ((a + b) / 2, b))]
-    return False
-
-
-def _clear(p: fmpq_poly, a: fmpq, b: fmpq) -> bool:
-    """Whether the polynomial has no root in the closed interval ``[a, b]``."""
-    if p.degree() <= 0:
-        return not p.is_zero()
-    return p(a) != 0 and p(b) != 0 and not isolate_real_roots(p, a, b)
-
-
-def _locate(g: Biv, ev: _Event) -> None:
-    """The interval ``J = (ylo, yhi)`` around ``y_c`` with no other root of ``g(c, Y)`` in it, and a
-    window ``[a, b]`` (the root's interval) over which no real point of the image crosses the ends
-    of ``J`` (the module's step 4).  _Degenerate when ``h`` has a multiple root (another critical
-    point of the image over ``c``)."""
-    F = RealAlgebraicField(ev.root)
-    for prec in (128, 256, 512, 1024, 2048):
-        F.refine((F.root.hi - F.root.lo) / 2 ** (prec // 2))
-        gap = _root_gap(F, ev.data.h, ev.data.y, prec)
-        if gap is None:
-            continue
-        lo, hi = arb_bounds(F.ball(ev.data.y, prec))
-        if hi - lo < gap / 4:
-            mid = (lo + hi) / 2
-            delta = _dyadic_below(gap / 2)
-            if _no_real_root(F, ev.data.h, mid - delta, mid + delta, prec):
-                break
-    else:
-        raise _Degenerate()
-    ev.root, ev.ylo, ev.yhi = F.root, mid - delta, mid + delta
-    ends = (at_y(g, ev.ylo), at_y(g, ev.yhi))
-    while not all(_clear(p, ev.root.lo, ev.root.hi) for p in ends):
-        ev.root = ev.root.refined((ev.root.hi - ev.root.lo) / 4)
-
-
-def _dyadic_below(x: fmpq) -> fmpq:
-    """A power of two in ``(x/2, x]`` (short numbers for the ends of ``J``)."""
-    k = 0
-    while fmpq(2) ** k > x:
-        k -= 1
-    while fmpq(2) ** (k + 1) <= x:
-        k += 1
-    return fmpq(2) ** k
-
-
-def _split(g: Biv, x: fmpq, ylo: fmpq, yhi: fmpq) -> tuple[int, int, int]:
-    """How many real roots of ``g(x, Y)`` lie below ``ylo``, in ``(ylo, yhi)``, above ``yhi``."""
-    counts = [0, 0, 0]
-    for r in isolate_real_roots(at_x(g, x)):
-        while r.lo < ylo < r.hi or r.lo < yhi < r.hi:
-            r = r.refined((r.hi - r.lo) / 4)
-        counts[0 if r.hi <= ylo else 2 if r.lo >= yhi else 1] += 1
-    return counts[0], counts[1], counts[2]
-
-
-def _roots_at(g: Biv, x: fmpq) -> int:
-    """The number of real roots of ``g(x, Y)`` (real points of the image over ``x``)."""
-    p = at_x(g, x)
-    return len(isolate_real_roots(p)) if p.degree() > 0 else 0
+def _parametrised(A: QuotientAlgebra, ell: list[fmpq]) -> RUR:
+    """The representation of the points of ``A`` with ``l`` as parameter (Degenerate unless ``l``
+    separates them)."""
+    try:
+        return rur_of(A, ell)
+    except NotSeparatingError:
+        raise Degenerate() from None
 
 
 class _Union:
+    """Union-find over the nodes of the graph (arcs and points)."""
+
     def __init__(self) -> None:
         self.parent: list[int] = []
 
@@ -334,22 +196,37 @@ class _Union:
 # --- the sweep ------------------------------------------------------------------------------
 
 class _Sweep:
-    """One attempt with the forms ``l`` and ``m`` (raises _Degenerate to ask for others)."""
+    """One attempt with the forms ``l`` and ``m`` (raises Degenerate to ask for others).
+    ``marks``: representations (parametrised by ``l``) of points to place on their circuits."""
 
-    def __init__(self, gens: list[Poly], ring: PolyRing, fib: Fibres, crit, m: list[fmpq], width: fmpq | None) -> None:
-        self.gens, self.ring, self.fib, self.crit, self.m, self.width = gens, ring, fib, crit, m, width
+    def __init__(self, gens: list[Poly], ring: PolyRing, fib: Fibres, crit: RUR, marks: list[RUR],
+                 m: list[fmpq], width: fmpq | None) -> None:
+        self.gens, self.ring, self.fib, self.m, self.width = gens, ring, fib, m, width
         self.g = fib.plane_curve(m)
         try:
             e = event_polynomial(self.g)
         except RealSolvingError:
-            raise _Degenerate() from None
-        found = []
+            raise Degenerate() from None
+        found: list[tuple[RealRoot, Special | None]] = []
+        known: dict[tuple, Special | None] = {}  # by factor: the special points already placed
         for f in irreducible_factors(e):
             rs = isolate_real_roots(f)
             if rs:
-                data = _critical_data(self.g, f, rs[0], crit, m)
+                known[_key(f)] = special(self.g, f, rs[0], crit, m, False)
+                found += [(r, known[_key(f)]) for r in rs]
+        for rep in marks:
+            for f in irreducible_factors(rep.poly):
+                rs = isolate_real_roots(f)
+                if not rs:
+                    continue
+                data = special(self.g, f, rs[0], rep, m, True)
+                if _key(f) in known:  # a mark over an event: only the critical point itself is fine
+                    if known[_key(f)] is None or not same_point(rs[0], known[_key(f)], data):
+                        raise Degenerate()
+                    continue
+                known[_key(f)] = data
                 found += [(r, data) for r in rs]
-        self.events = [_Event(r, d) for r, d in _match(separate([r for r, _ in found]), found)]
+        self.events = [Event(r, d) for r, d in _match(separate([r for r, _ in found]), found)]
         self.half: dict[int, list[int]] = {}
         self.minors: list[Poly] | None = None
         self.second: list[tuple[list[fmpq], fmpz_poly]] = []
@@ -358,24 +235,26 @@ class _Sweep:
         g, events = self.g, self.events
         for ev in events:
             if ev.data is not None:
-                _locate(g, ev)
-                ev.below, ev.left, ev.above = _split(g, ev.root.lo, ev.ylo, ev.yhi)
-                below, ev.right, above = _split(g, ev.root.hi, ev.ylo, ev.yhi)
-                if (below, above) != (ev.below, ev.above):
-                    raise RealSolvingError("internal: the regular points differ on the two sides of an event")
+                locate(g, ev)
         samples = [events[0].root.lo] + [ev.root.hi for ev in events] if events else [fmpq(0)]
-        counts = [_roots_at(g, s) for s in samples]
+        counts = [roots_at(g, s) for s in samples]
         uf = _Union()
         arcs = [[uf.add() for _ in range(k)] for k in counts]
         points: dict[int, Box] = {}
         for j, ev in enumerate(events):
+            left, right = arcs[j], arcs[j + 1]
+            if ev.data is not None and ev.below + ev.left + ev.above != len(left) or \
+                    ev.data is not None and ev.below + ev.right + ev.above != len(right):
+                raise RealSolvingError("internal: the arc counts differ within a strip")
             if ev.data is None:
-                self._through(ev, arcs[j], arcs[j + 1], uf)
+                self._through(ev, left, right, uf)
+            elif ev.data.mark:
+                self._mark(ev, left, right, uf, points)
             else:
-                self._critical_point(ev, arcs[j], arcs[j + 1], uf, points)
+                self._critical_point(ev, left, right, uf, points)
         return self._components(samples, arcs, uf, points)
 
-    def _through(self, ev: _Event, left: list[int], right: list[int], uf: _Union) -> None:
+    def _through(self, ev: Event, left: list[int], right: list[int], uf: _Union) -> None:
         """An event without critical point of ``l`` (step 5): every arc goes on."""
         if len(left) != len(right):
             raise RealSolvingError("internal: arcs end at an event without critical point")
@@ -385,26 +264,36 @@ class _Sweep:
             for i, k in enumerate(self._pairs(ev)):
                 uf.union(left[i], right[k])
 
-    def _critical_point(self, ev: _Event, left: list[int], right: list[int], uf: _Union,
+    def _mark(self, ev: Event, left: list[int], right: list[int], uf: _Union, points: dict[int, Box]) -> None:
+        """A mark on a regular fibre (no event of the image in the window): arcs keep their ranks,
+        the mark lies on the arc of rank ``below``."""
+        if (ev.left, ev.right) != (1, 1) or len(left) != len(right):
+            raise RealSolvingError("internal: a mark off its arc")
+        for a, b in zip(left, right):
+            uf.union(a, b)
+        if self.width is not None:
+            node = uf.add()
+            points[node] = point_box(ev, self.width)
+            uf.union(node, left[ev.below])
+
+    def _critical_point(self, ev: Event, left: list[int], right: list[int], uf: _Union,
                         points: dict[int, Box]) -> None:
         """An event at a critical point of ``l`` (step 4): the sweep rule."""
         b, L, R = ev.below, ev.left, ev.right
-        if b + L + ev.above != len(left) or b + R + ev.above != len(right):
-            raise RealSolvingError("internal: the arc counts differ within a strip")
         if L + R != self._half_branches(ev):
-            raise _Degenerate()
+            raise Degenerate()
         for i in range(b):
             uf.union(left[i], right[i])
         for i in range(ev.above):
             uf.union(left[b + L + i], right[b + R + i])
         node = uf.add()
-        points[node] = self._point_box(ev)
+        points[node] = point_box(ev, self.width or fmpq(1, 10 ** 6))
         for i in range(L):
             uf.union(node, left[b + i])
         for i in range(R):
             uf.union(node, right[b + i])
 
-    def _half_branches(self, ev: _Event) -> int:
+    def _half_branches(self, ev: Event) -> int:
         """The real half-branches at the critical point over the event (2 when it is smooth)."""
         data = ev.data
         F = RealAlgebraicField(ev.root)
@@ -426,17 +315,7 @@ class _Sweep:
                 return self.half[key][hits[0]]
             r = r.refined((r.hi - r.lo) / 4)
 
-    def _point_box(self, ev: _Event) -> Box:
-        F = RealAlgebraicField(ev.root)
-        prec = 128
-        while True:
-            box = [arb_bounds(F.ball(c, prec)) for c in ev.data.psi]
-            if all(hi - lo <= (self.width or fmpq(1, 10 ** 6)) for lo, hi in box):
-                return box
-            F.refine((F.root.hi - F.root.lo) / 2 ** 32)
-            prec += 64
-
-    def _pairs(self, ev: _Event) -> list[int]:
+    def _pairs(self, ev: Event) -> list[int]:
         """For each arc left of the event (in ``m``-order) the arc right of it on the same branch:
         through a window free of events of a second image ``(l, m2)``, by the ``m2``-order of the
         real points of the fibres at the window's ends."""
@@ -452,11 +331,11 @@ class _Sweep:
             if e2.is_zero() or sign_at(e2, ev.root) == 0:
                 continue
             r = ev.root
-            while not _clear(fmpq_poly(e2), r.lo, r.hi):
+            while not clear(fmpq_poly(e2), r.lo, r.hi):
                 r = r.refined((r.hi - r.lo) / 4)
             left, right = self._m2_ranks(r.lo, m2), self._m2_ranks(r.hi, m2)
             return [right.index(rank) for rank in left]
-        raise _Degenerate()
+        raise Degenerate()
 
     def _m2_ranks(self, a: fmpq, m2: list[fmpq]) -> list[int]:
         """For the real fibre points over ``a`` in ``m``-order, their ranks in ``m2``-order."""
@@ -480,21 +359,23 @@ class _Sweep:
 
     def _components(self, samples: list[fmpq], arcs: list[list[int]], uf: _Union,
                     points: dict[int, Box]) -> tuple[list[Circuit], list[Box]]:
-        """Circuits from the classes of arcs (with a sample point on each arc unless the width
-        is None), isolated points from the critical points without arcs."""
+        """Circuits from the classes of arcs, with a sample point on one of their arcs (unless the
+        width is None) and their special points; isolated points from the critical points without
+        arcs."""
         members: dict[int, list[Box]] = {}
         ends: dict[int, int] = {}
         last = len(arcs) - 1
         for j, strip in enumerate(arcs):
-            boxes: list[Box] = []
-            if strip and self.width is not None:
-                rep = rur_of(self.fib.algebra(samples[j]), self.m)
-                boxes = [b for _, b in solution_boxes(rep, rep.real_roots(), self.width)]
-            for i, node in enumerate(strip):
-                root = uf.find(node)
-                members.setdefault(root, []).extend(boxes[i:i + 1])
+            roots = [uf.find(node) for node in strip]
+            for root in roots:
+                members.setdefault(root, [])
                 if j in (0, last):
                     ends[root] = ends.get(root, 0) + 1
+            if self.width is not None and any(not members[root] for root in roots):
+                rep = rur_of(self.fib.algebra(samples[j]), self.m)
+                for root, (_, box) in zip(roots, solution_boxes(rep, rep.real_roots(), self.width)):
+                    if not members[root]:
+                        members[root].append(box)
         isolated = []
         for node, box in points.items():
             root = uf.find(node)
@@ -519,11 +400,15 @@ def _eval_over(F: RealAlgebraicField, p: Poly, coords: list[fmpq_poly]) -> fmpq_
     return F(out)
 
 
+def _key(f: fmpz_poly) -> tuple:
+    return tuple(int(c) for c in f.coeffs())
+
+
 def _hull(boxes: list[Box]) -> Box:
     return [(min(b[i][0] for b in boxes), max(b[i][1] for b in boxes)) for i in range(len(boxes[0]))]
 
 
-def _match(sep: list[RealRoot], found: list[tuple[RealRoot, _Critical | None]]) -> list[tuple[RealRoot, _Critical | None]]:
+def _match(sep: list[RealRoot], found: list[tuple[RealRoot, Special | None]]) -> list[tuple[RealRoot, Special | None]]:
     """The separated roots with their factors' data (a separated root refines an original one:
     same polynomial, nested interval)."""
     return [(r, next(d for q, d in found if q.poly == r.poly and q.lo <= r.lo and r.hi <= q.hi)) for r in sep]
@@ -531,34 +416,43 @@ def _match(sep: list[RealRoot], found: list[tuple[RealRoot, _Critical | None]]) 
 
 # --- the entry point -------------------------------------------------------------------------
 
-def _topology(gens: list[Poly], ring: PolyRing, width: fmpq | None) -> tuple[list[Circuit], list[Box], int, list]:
+def _topology(gens: list[Poly], ring: PolyRing, width: fmpq | None,
+              directions: list[list[fmpq]]) -> tuple[list[Circuit], list[Box], bool]:
+    """Sweeps with forms ``l`` (finite, separating its critical points and the marks) and ``m``
+    until one passes every check; the marks are the critical points of ``directions`` (when
+    sample points are asked for).  Returns also whether the circuits' boxes are certified."""
     n = ring.nvars
     basis = groebner(gens, ring)
+    algebras = [_critical_algebra(gens, ring, w) for w in (directions if width is not None else [])]
     for attempt, ell in enumerate(_forms(n, 1, 12)):
         if not is_finite(basis, ell):
             continue
+        crit_algebra = _critical_algebra(gens, ring, ell)
+        if crit_algebra is None:
+            continue
         try:
-            crit = _critical(gens, ring, ell)
-        except _Degenerate:
+            crit = _parametrised(crit_algebra, ell)
+            marks = [_parametrised(A, ell) for A in algebras if A is not None]
+        except Degenerate:
             continue
         fib = Fibres(gens, ring, ell)
         for m in _forms(n, 100 + attempt, 4, attempt):
             if all(m[i] * ell[j] == m[j] * ell[i] for i in range(n) for j in range(i)):
                 continue
             try:
-                sweep = _Sweep(gens, ring, fib, crit, m, width)
-                circuits, isolated = sweep.topology()
-                return circuits, isolated, len(sweep.events), [ell, m]
-            except _Degenerate:
+                circuits, isolated = _Sweep(gens, ring, fib, crit, marks, m, width).topology()
+            except Degenerate:
                 continue
+            return circuits, isolated, width is not None and all(A is not None for A in algebras)
     raise RealSolvingError("no projection of the curve in generic position found")
 
 
 def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: int | None = 6) -> CurveTopology:
     """The circuits (connected components of the real points) and isolated real points of the
-    curve ``V(gens)`` over QQ; a sample point on every arc of a circuit, in a box of width
-    ``10^-digits`` (none when ``digits`` is None: counting is faster).  A 0-dimensional ideal gives
-    only isolated points; RealSolvingError for a component of dimension two or more."""
+    curve ``V(gens)`` over QQ; sample points in boxes of width ``10^-digits`` and a certified
+    bounding box for each bounded circuit (none when ``digits`` is None: counting is faster).  A
+    0-dimensional ideal gives only isolated points; RealSolvingError for a component of dimension
+    two or more."""
     ring = ring or gens[0].ring
     if ring.field != QQ:
         raise RealSolvingError("real curves need rational coefficients (the field QQ)")
@@ -576,8 +470,9 @@ def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: i
         return CurveTopology([Circuit([origin], origin, False, 2)], [])
     curve, point_ideals = curve_part(chart.gens, chart.ring)
     isolated = [s.box for P in point_ideals for s in real_solutions(P, chart.ring, digits or 6).real]
-    circuits, more, events, proj = _topology(curve, chart.ring, width)
-    for c in circuits:
+    circuits, more, certified = _topology(curve, chart.ring, width, chart.directions())
+    for c in circuits:  # the hull in the original coordinates (lifting a hull would widen it)
         c.samples = [chart.lift(b) for b in c.samples]
-        c.box = chart.lift(c.box) if c.box else []
-    return CurveTopology(circuits, [chart.lift(b) for b in isolated + more], events, proj)
+        c.box = _hull(c.samples) if c.samples else []
+        c.certified = certified and c.bounded
+    return CurveTopology(circuits, [chart.lift(b) for b in isolated + more])

@@ -383,13 +383,18 @@ def arb_bounds(b: arb) -> tuple[fmpq, fmpq]:
     return mid - rad, mid + rad
 
 
-def decimal(value: fmpq, digits: int) -> str:
-    """``value`` rounded to ``digits`` decimals (half away from zero)."""
+def decimal(value: fmpq, digits: int, direction: int = 0) -> str:
+    """``value`` with ``digits`` decimals: rounded to nearest (half away from zero), or down
+    (``direction`` -1) or up (+1)."""
     scaled = value * 10 ** digits
-    n = (abs(scaled.p) * 2 + scaled.q) // (2 * scaled.q)
+    if direction:
+        k = scaled.floor() if direction < 0 else -((-scaled).floor())
+        n, negative = abs(int(k)), k < 0
+    else:
+        n, negative = (abs(scaled.p) * 2 + scaled.q) // (2 * scaled.q), scaled < 0
     s = str(n).rjust(digits + 1, "0")
     body = s[:-digits] + "." + s[-digits:] if digits else s
-    return ("-" if scaled < 0 and n else "") + body
+    return ("-" if negative and n else "") + body
 
 
 @dataclass

@@ -285,8 +285,8 @@ def _box_mid(box: list, d: int) -> List:
 def real_topology(I: Ideal, digits: int = 6) -> List:
     """realTopology(I[, digits]): the real points of the curve V(I): a list of [1] the number of
     circuits, [2] the circuits, each a list (bounded 1 or 0, a point on it, the lower and the upper
-    corner of the box spanned by its computed points), [3] the isolated real points; numbers as
-    decimal strings with the given digits.
+    corner of its bounding box - certified for a bounded circuit, rounded outwards), [3] the
+    isolated real points; numbers as decimal strings with the given digits.
 
     Example:
       ring r = 0,(x,y),dp;
@@ -309,7 +309,7 @@ def real_topology(I: Ideal, digits: int = 6) -> List:
     circuits = []
     for c in topo.circuits:
         circuits.append(List([int(c.bounded), _box_mid(c.samples[0], d),
-                              List([decimal(lo, d) for lo, _ in c.box]), List([decimal(hi, d) for _, hi in c.box])]))
+                              List([decimal(lo, d, -1) for lo, _ in c.box]), List([decimal(hi, d, 1) for _, hi in c.box])]))
     return List([topo.count, List(circuits), List([_box_mid(b, d) for b in topo.isolated])])
 
 

@@ -49,7 +49,9 @@ def test_plane_curves(f, circuits, isolated, unbounded):
     assert sum(not c.bounded for c in topo.circuits) == unbounded
 
 
-def test_sample_points_lie_on_the_curve():
+def test_sample_points_and_bounding_boxes():
+    """Sample points lie on the curve; a bounded circuit's box is its bounding box: the two ovals of
+    y^2 = (x^2-1)(x^2-4)(x^2-9) span 1 <= |x| <= 2 exactly, the unbounded branches have no certified box."""
     f = y ** 2 - (x ** 2 - 1) * (x ** 2 - 4) * (x ** 2 - 9)
     topo = curve_topology([f], R2, 8)
     for c in topo.circuits:
@@ -57,6 +59,12 @@ def test_sample_points_lie_on_the_curve():
             assert all(hi - lo <= fmpq(1, 10 ** 8) for lo, hi in box)
             assert abs(float(f.evaluate([(lo + hi) / 2 for lo, hi in box]))) < 1e-5
         assert all(c.box[i][0] <= b[i][0] and b[i][1] <= c.box[i][1] for b in c.samples for i in range(2))
+    ovals = sorted((c.box for c in topo.circuits if c.bounded), key=lambda b: b[0][0])
+    assert all(c.certified == c.bounded for c in topo.circuits)
+    top = max(math.sqrt((t * t - 1) * (t * t - 4) * (t * t - 9)) for t in (1 + k / 10000 for k in range(10001)))
+    for box, (a, b) in zip(ovals, [(-2, -1), (1, 2)]):
+        assert abs(float(box[0][0]) - a) < 1e-8 and abs(float(box[0][1]) - b) < 1e-8
+        assert abs(float(box[1][1]) - top) < 1e-6 and abs(float(box[1][0]) + top) < 1e-6
 
 
 SPACE = [
@@ -83,27 +91,29 @@ def fourbar(ground, a, b, c):
 
 
 def sampled_circuits(ground, a, b, c, steps=20000):
-    """An independent count of the circuits of a four-bar from its input angle: B = a(cos t, sin t)
-    and C on the circles of radius b about B and c about A = (g, 0).  Assemblies exist where
-    (b - c)^2 <= |AB|^2 <= (b + c)^2; on each arc of such angles the two assemblies (elbow up and
-    down) join where the inequality is tight, so an arc is one circuit; if every angle is an
-    interior one, the two assemblies never meet: two circuits (a full-turn input)."""
-    margins = []
+    """An independent count of the circuits of a four-bar from its input angle, and the range of
+    c1 = cos(t) over its configurations: B = a(cos t, sin t) and C on the circles of radius b about B
+    and c about A = (g, 0).  Assemblies exist where (b - c)^2 <= |AB|^2 <= (b + c)^2; on each arc of
+    such angles the two assemblies (elbow up and down) join where the inequality is tight, so an arc is
+    one circuit; if every angle is an interior one, the two assemblies never meet: two circuits (a
+    full-turn input)."""
+    margins, cosines = [], []
     for k in range(steps):
         t = 2 * math.pi * k / steps
         d2 = ground ** 2 + a ** 2 - 2 * a * ground * math.cos(t)
         margins.append(min(d2 - (b - c) ** 2, (b + c) ** 2 - d2))
     tol = 1e-9
     feasible = [m >= -tol for m in margins]
+    cosines = [math.cos(2 * math.pi * k / steps) for k in range(steps) if feasible[k]]
     if all(feasible):
-        return 2 if min(margins) > tol else 1
+        return (2 if min(margins) > tol else 1), (min(cosines), max(cosines))
     start = feasible.index(False)
     arcs, inside = 0, False
     for k in range(steps):
         f = feasible[(start + k) % steps]
         arcs += f and not inside
         inside = f
-    return arcs
+    return arcs, (min(cosines), max(cosines))
 
 
 FOURBARS = [("crank-rocker", (5, 2, 5, 4), 2), ("double crank", (2, 4, 5, 4), 2),
@@ -113,13 +123,18 @@ FOURBARS = [("crank-rocker", (5, 2, 5, 4), 2), ("double crank", (2, 4, 5, 4), 2)
 
 @pytest.mark.parametrize("name,lengths,circuits", FOURBARS, ids=[f[0] for f in FOURBARS])
 def test_fourbar_circuits(name, lengths, circuits):
-    assert sampled_circuits(*lengths) == circuits
+    count, (lo, hi) = sampled_circuits(*lengths)
+    assert count == circuits
+    assert curve_topology(fourbar(*lengths), R6, None).count == circuits
     topo = curve_topology(fourbar(*lengths), R6, 6)
     assert topo.count == circuits and not topo.isolated and topo.bounded
     for circuit in topo.circuits:
+        assert circuit.certified
         for box in circuit.samples:
-            p = [(lo + hi) / 2 for lo, hi in box]
+            p = [(lo_ + hi_) / 2 for lo_, hi_ in box]
             assert all(abs(float(g.evaluate(p))) < 1e-5 for g in fourbar(*lengths))
+        c1_lo, c1_hi = map(float, circuit.box[0])  # the input link's cosine: contains the sampled range
+        assert c1_lo <= lo + 1e-12 and hi <= c1_hi + 1e-12 and lo - c1_lo < 1e-3 and c1_hi - hi < 1e-3
 
 
 @pytest.mark.parametrize("lengths", [(1, 1, 1, 1), (2, 1, 2, 1), (2, 2, 1, 1)])
