@@ -3,11 +3,11 @@
 and rootsmr.lib (``nrRootsDeterm``, ``nrRootsProbab``), and mech's own commands for real roots
 and solutions, the circuits of a real curve and the real branches at a point.
 
-Decimal numbers are returned as strings with the requested number of digits after the point;
-every digit is certified (the number lies within ``10^-digits / 2`` of the exact value, up to
-the rounding of the last digit)."""
+Decimal numbers are returned as strings with the requested number of digits after the point: the
+exact value correctly rounded (its enclosure is refined until both ends round alike)."""
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any, Callable
 
 from ..dsl.errors import MechRuntimeError
@@ -48,6 +48,18 @@ def _univariate(cmd: str, p: Poly) -> tuple[Any, int]:
         raise MechRuntimeError(f"{cmd}: the polynomial must be univariate")
     var = next(iter(used), 0)
     return to_fmpq_poly(p, var), var
+
+
+def _rounded(boxes: Callable[[int], list], d: int) -> list[list[str]]:
+    """Each box (a list of intervals, ``boxes(k)`` computes them of width ``10^-k``) as its
+    coordinates correctly rounded to ``d`` digits: refined until both ends of every interval round
+    alike (a value exactly halfway between two roundings is given by its midpoint)."""
+    from ..kernel.real_solve import decimal
+    for extra in (2, 8, 24, 64):
+        found = boxes(d + extra)
+        if all(decimal(lo, d) == decimal(hi, d) for box in found for lo, hi in box):
+            break
+    return [[decimal((lo + hi) / 2, d) for lo, hi in box] for box in found]
 
 
 def _number(cmd: str, ring: PolyRing, v: Any) -> Any:
@@ -200,14 +212,18 @@ def real_roots(p: Poly, digits: int = 10) -> List:
       → [3]:
       →    1.414214
     """
+    from flint import fmpq
     from ..kernel.real_roots import isolate_real_roots
-    from ..kernel.real_solve import decimal
     f, _ = _univariate("realRoots", p)
     d = _digits("realRoots", digits)
     if f.is_zero():
         raise MechRuntimeError("realRoots: the zero polynomial has every number as a root")
     roots = isolate_real_roots(f) if f.degree() > 0 else []
-    return List([decimal(r.approx(d + 2), d) for r in roots])
+
+    def boxes(k: int) -> list:
+        narrow = [r.refined(fmpq(1, 10 ** k)) for r in roots]
+        return [[(r.exact, r.exact) if r.exact is not None else (r.lo, r.hi)] for r in narrow]
+    return List([v for v, in _rounded(boxes, d)])
 
 
 @command("realSolutions")
@@ -233,10 +249,11 @@ def real_solutions(I: Ideal, digits: int = 10) -> List:
     """
     from ..kernel.real_solve import real_solutions as solve
     d = _digits("realSolutions", digits)
-    sols = _kernel("realSolutions", solve, _zero_dim("realSolutions", I), I.ring, d + 2)
-    points = sorted((s.midpoint() for s in sols.real))
-    from ..kernel.real_solve import decimal
-    return List([List([decimal(v, d) for v in pt]) for pt in points])
+    gens = _zero_dim("realSolutions", I)
+
+    def boxes(k: int) -> list:
+        return [s.box for s in _kernel("realSolutions", solve, gens, I.ring, k).real]
+    return List([List(pt) for pt in sorted(_rounded(boxes, d), key=lambda pt: [Fraction(v) for v in pt])])
 
 
 @command("countRealSolutions")
