@@ -243,9 +243,9 @@ class _Sweep:
         points: dict[int, Box] = {}
         for j, ev in enumerate(events):
             left, right = arcs[j], arcs[j + 1]
-            if ev.data is not None and ev.below + ev.left + ev.above != len(left) or \
-                    ev.data is not None and ev.below + ev.right + ev.above != len(right):
-                raise RealSolvingError("internal: the arc counts differ within a strip")
+            sides = (ev.below + ev.left + ev.above, ev.below + ev.right + ev.above)
+            if ev.data is not None and sides != (len(left), len(right)):
+                raise RuntimeError("internal: the arc counts differ within a strip")
             if ev.data is None:
                 self._through(ev, left, right, uf)
             elif ev.data.mark:
@@ -257,7 +257,7 @@ class _Sweep:
     def _through(self, ev: Event, left: list[int], right: list[int], uf: _Union) -> None:
         """An event without critical point of ``l`` (step 5): every arc goes on."""
         if len(left) != len(right):
-            raise RealSolvingError("internal: arcs end at an event without critical point")
+            raise RuntimeError("internal: arcs end at an event without critical point")
         if len(left) == 1:
             uf.union(left[0], right[0])
         elif len(left) > 1:
@@ -268,7 +268,7 @@ class _Sweep:
         """A mark on a regular fibre (no event of the image in the window): arcs keep their ranks,
         the mark lies on the arc of rank ``below``."""
         if (ev.left, ev.right) != (1, 1) or len(left) != len(right):
-            raise RealSolvingError("internal: a mark off its arc")
+            raise RuntimeError("internal: a mark off its arc")
         for a, b in zip(left, right):
             uf.union(a, b)
         if self.width is not None:

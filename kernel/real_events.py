@@ -59,7 +59,7 @@ def special(g: Biv, e: fmpz_poly, root: RealRoot, rep: RUR, m: list[fmpq], mark:
         h = F.divide_linear(h, y)
         k += 1
     if k == 0:
-        raise ValueError("internal: a point of the curve off its plane image")
+        raise RuntimeError("internal: a point of the curve off its plane image")
     if k < 2 and not mark:
         return None
     return Special(e, psi, y, k, h, mark)
@@ -172,7 +172,7 @@ def locate(g: Biv, ev: Event) -> None:
     ev.below, ev.left, ev.above = split(g, ev.root.lo, ev.ylo, ev.yhi)
     below, ev.right, above = split(g, ev.root.hi, ev.ylo, ev.yhi)
     if (below, above) != (ev.below, ev.above):
-        raise ValueError("internal: the regular points differ on the two sides of an event")
+        raise RuntimeError("internal: the regular points differ on the two sides of an event")
 
 
 def split(g: Biv, x: fmpq, ylo: fmpq, yhi: fmpq) -> tuple[int, int, int]:

@@ -122,7 +122,7 @@ def discriminant(g: Biv) -> fmpq_poly:
     vals = [at_x(g, a).discriminant() if r > 0 else fmpq(1) for a in xs]
     disc = _interpolate(xs[:-1], vals[:-1])
     if disc(xs[-1]) != vals[-1]:
-        raise RealSolvingError("internal: the discriminant does not interpolate")
+        raise RuntimeError("internal: the discriminant does not interpolate")
     return disc
 
 
