@@ -218,15 +218,28 @@ def _judge(name: str, s_text: str, s_error: Optional[str], out: str, err: str, s
             return Result(name, "differ", accepts,
                           f"Singular reports an error (`{s_error}`) where mech prints `{M[len(S)].show()}`")
         return Result(name, "differ", "value", why)
-    if s_error is not None and len(S) == len(M):
+    key = _unsupported(message)
+    if s_error is not None and len(S) == len(M) and not _missing(key):
         return Result(name, "agree", "both report an error", f"Singular: {s_error}; mech: {message}")
+    return Result(name, "unsupported", key, source) if key else Result(name, "error", message, source)
+
+
+def _unsupported(message: str) -> Optional[str]:
+    """The construct an error of mech's says it lacks (None: another error)."""
     for rx, fmt in _UNSUPPORTED:
         m = rx.search(message)
         if m:
-            key = re.sub(r"\((?=[A-Za-z])[^()]*\)", "(...)", fmt.format(*m.groups())) if "field" in fmt \
-                else fmt.format(*m.groups())  # fields up to the names of their parameters
-            return Result(name, "unsupported", key, source)
-    return Result(name, "error", message, source)
+            key = fmt.format(*m.groups())  # a field up to the names of its parameters: GF(7)(...)
+            return re.sub(r"\((?=[A-Za-z])[^()]*\)", "(...)", key) if "field" in fmt else key
+    return None
+
+
+def _missing(key: Optional[str]) -> bool:
+    """Whether an unsupported construct is a feature mech lacks, not a rejection of the input that
+    Singular may share (a syntax error, an undefined name, arguments of the wrong types)."""
+    if key is None or key.startswith(("syntax:", "arguments ")):
+        return False
+    return not key.startswith("identifier ") or key.split()[1] in _SYSTEM_VARIABLES
 
 
 def _commit(path: Path) -> str:

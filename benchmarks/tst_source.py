@@ -138,7 +138,8 @@ _PREFIX_REASON = {"tst_": "tst.lib helper", "nc_": "noncommutative ring",
 _PREFIXES = tuple(_PREFIX_REASON)
 _PATTERNS = [("protocol output (option(prot))", re.compile(r"\boption\s*\(\s*prot\b")),
              ("vector literal [..]", re.compile(r"(?:\A|[=,(+\-*;{}])[ \t\n]*\[")),
-             ("packages (::)", re.compile(r"\w::"))]
+             ("packages (::)", re.compile(r"\w::")),
+             ("links and files: <", re.compile(r"(?:\A|[;{}])\s*<\s*\""))]
 _IDENT = re.compile(r"(?<![\w@])[A-Za-z_]\w*")
 
 

@@ -16,7 +16,8 @@ from singular_tst import judge, singular_side  # noqa: E402
 from tst_compare import (MARKER, Oracle, check_script, compare, long_form, normalize, parse, read_answers,  # noqa: E402
                          split_error)
 from tst_report import Result, _ranking  # noqa: E402
-from tst_source import _MARK, Case, examples, instrument, mask, read_reference, scope_reason, strip_harness  # noqa: E402
+from tst_source import (_MARK, Case, examples, instrument, mask, read_reference, scope_reason,  # noqa: E402
+                        strip_harness)
 
 RING = ("(QQ),(x,y),(dp(2),C)", "0", "0")
 
@@ -51,6 +52,7 @@ def test_strip_harness_keeps_lines_and_stops_at_dollar():
     ('LIB "nctools.lib"; ring r=0,x,dp;', "library nctools.lib"),
     ('system("random", 1); module m;', "system(...) call: system"),
     ("option(prot); ring r=0,x,dp;", "protocol output (option(prot))"),
+    ('ring r=0,x,dp; < "file.sing";', "links and files: <"),
     ("ring r=0,x,dp; def A = nc_algebra(1,0);", "noncommutative ring: nc_algebra"),
 ])
 def test_scope_reason(script, reason):
@@ -223,6 +225,12 @@ def test_judgement_of_outputs():
     assert (r.category, r.key) == ("differ", "value")
     # Singular's error at the same place as mech's: agreement; mech going on: a difference of its own kind
     assert _judge(_ring("1\n"), "`f` is not defined", "1\n", "f:2:1: error: oops\n", 1).category == "agree"
+    assert _judge(_ring("1\n"), "`f` is not defined", "1\n", "f:2:1: error: unknown identifier 'f'\n",
+                  1).category == "agree"
+    # ... unless mech's error is a feature it lacks
+    err = "f:2:1: error: unknown command 'preimage'\n"
+    r = _judge(_ring("1\n"), "2nd/3rd arguments must have names", "1\n", err, 1)
+    assert (r.category, r.key) == ("unsupported", "command preimage")
     assert (_judge(_ring("1\n"), "`f` is not defined", "1\n2\n").category,
             _judge(_ring("1\n"), "`f` is not defined", "1\n2\n").key) == ("differ", "accepts")
     assert _judge(_ring("1\n"), "`f` is not defined", "1\n2\n", "f:3:1: error: unknown command 'g'\n",
