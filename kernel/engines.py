@@ -36,10 +36,11 @@ from .buchberger import buchberger, reduce_basis
 from .coeffs import Field, PrimeField, RationalField
 from .errors import EngineError
 from .f4 import f4_modp
+from .fglm import NotZeroDimensional, fglm_qq, fglm_zp
 from .lazard import lazard
 from .modular import ModularFailure, SmallSystem, f4_qq
 from .mora import Budget, BudgetExceeded, minimal, monic, mora
-from .order import Exp
+from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
 Terms = dict[Exp, Any]
@@ -79,6 +80,7 @@ class Engine:
     orderings: frozenset[str]
     fields: frozenset[str] | None
     returns_reduced: bool = False
+    zero_dimensional: bool = False
 
     def refusal(self, ring: PolyRing) -> str | None:
         """Why the engine does not accept ``ring``; None when it does."""
@@ -96,17 +98,19 @@ ENGINES: dict[str, Engine] = {}
 
 
 def register(name: str, run: Run, summary: str, *, orderings: Sequence[str] = ("global",),
-             fields: Sequence[str] | None = None, returns_reduced: bool = False) -> Engine:
+             fields: Sequence[str] | None = None, returns_reduced: bool = False,
+             zero_dimensional: bool = False) -> Engine:
     """Register (or replace) the engine ``name``: ``run(gens, ring)`` as in the module docstring,
     a one-line ``summary``, the kinds of ``orderings`` (``"global"``, ``"local"``) and ``fields``
-    (``"QQ"``, ``"Z/p"``; None: every field) it accepts."""
+    (``"QQ"``, ``"Z/p"``; None: every field) it accepts; ``zero_dimensional``: it raises
+    :class:`~.errors.EngineError` for other ideals."""
     if name == AUTO:
         raise EngineError(f"'{AUTO}' names the default policy, not an engine")
     unknown = set(orderings) - {"global", "local"} | set(fields or ()) - {"QQ", "Z/p"}
     if unknown:
         raise EngineError(f"unknown capabilities for the engine '{name}': {', '.join(sorted(unknown))}")
     engine = Engine(name, run, summary, frozenset(orderings), None if fields is None else frozenset(fields),
-                    returns_reduced)
+                    returns_reduced, zero_dimensional)
     ENGINES[name] = engine
     clear_cache()  # bases cached under a replaced engine's name
     return engine
@@ -224,15 +228,45 @@ def _compute(gens: list[Poly], ring: PolyRing, name: str) -> list[Poly]:
 
 
 def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    kind = field_kind(ring.field)
     if ring.order.is_graded:
-        if isinstance(ring.field, PrimeField):
+        if kind == "Z/p":
             return _finish(f4_modp(gens, ring), ring, True)
-        if isinstance(ring.field, RationalField):
+        if kind == "QQ":
             try:
                 return _finish(f4_qq(gens, ring, small_work=SMALL_WORK), ring, True)
             except (ModularFailure, SmallSystem):
                 pass
+    elif kind is not None:
+        basis = _degree_basis(gens, ring)
+        try:
+            return _finish(_convert(basis, ring), ring, True)
+        except (NotZeroDimensional, ModularFailure):
+            pass
     return _finish(buchberger(gens, ring), ring, False)
+
+
+def _degree_basis(gens: Sequence[Poly], ring: PolyRing) -> list[Poly]:
+    """The reduced basis of the ideal for ``dp`` (by ``auto``, kept in the cache)."""
+    dp = PolyRing(ring.field, ring.names, MonomialOrder.simple("dp", ring.nvars))
+    return standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
+
+
+def _convert(basis: list[Poly], ring: PolyRing) -> list[Terms]:
+    """FGLM from a ``dp`` basis to the ring's ordering."""
+    source = basis[0].ring.order if basis else MonomialOrder.simple("dp", ring.nvars)
+    terms = [b.terms for b in basis]
+    if isinstance(ring.field, PrimeField):
+        return fglm_zp(terms, source, ring.order, ring.field.characteristic)
+    return fglm_qq(terms, source, ring.order)
+
+
+def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
+    """The engine ``fglm``: a ``dp`` basis by ``auto``, converted by FGLM."""
+    try:
+        return _convert(_degree_basis(gens, ring), ring)
+    except NotZeroDimensional:
+        raise EngineError("the engine 'fglm' needs a zero-dimensional ideal") from None
 
 
 def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
@@ -272,6 +306,8 @@ register("f4", f4_modp, "Faugère's F4 modulo p: symbolic preprocessing, row red
          fields=("Z/p",), returns_reduced=True)
 register("modular", f4_qq, "F4 modulo primes with a trace, lifted to QQ by rational reconstruction, verified",
          fields=("QQ",), returns_reduced=True)
+register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ordering (zero-dimensional ideals)",
+         fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
 register("mora", mora, "Mora's normal form with ecart and sugar (Singular's std for local orderings)",
          orderings=("global", "local"))
 register("lazard", _lazard, "Lazard's method: homogenize, Gröbner basis by auto, dehomogenize",
