@@ -12,9 +12,12 @@ monomial, each leading exponent first in its dict), for a local one a standard b
 ``"auto"``, the default, is the policy, not an engine.  Global orderings: F4 for degree
 orderings (``is_graded``) over Z/p, and over QQ modular F4, except for systems too small for
 its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot verify a basis
-(then Buchberger); Buchberger over other fields and for block and lex orderings, where F4's
-degree-by-degree matrices grow far past the sugar strategy's work.  Local orderings: Mora within
-a :class:`~.mora.Budget`, then Lazard.
+(then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
+(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations), then a ``dp`` basis
+(kept in the cache) and from it FGLM for zero-dimensional ideals, the Hilbert-driven algorithm
+for the others (F4's degree-by-degree matrices grow far past these on such orderings);
+Buchberger over other fields.  Local orderings: Mora within a :class:`~.mora.Budget`, then
+Lazard.
 
 :func:`using_engine` sets the default for a dynamic extent (a context variable); it applies to
 the computations its engine accepts, the others use ``"auto"``.  An engine named in a call must
@@ -32,11 +35,12 @@ from contextvars import ContextVar
 from dataclasses import dataclass
 from typing import Any, Callable, Iterator, Sequence
 
-from .buchberger import buchberger, reduce_basis
+from .buchberger import TooLong, buchberger, reduce_basis
 from .coeffs import Field, PrimeField, RationalField
 from .errors import EngineError
 from .f4 import f4_modp
 from .fglm import NotZeroDimensional, fglm_qq, fglm_zp
+from .hilbert_driven import hilbert_driven
 from .lazard import lazard
 from .modular import ModularFailure, SmallSystem, f4_qq
 from .mora import Budget, BudgetExceeded, minimal, monic, mora
@@ -47,13 +51,19 @@ Terms = dict[Exp, Any]
 Run = Callable[[list[Poly], PolyRing], list[Terms]]
 
 AUTO = "auto"
-AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p, else Buchberger; "
-                "local orderings: Mora, then Lazard")
+AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p; block and lex orderings: "
+                "Buchberger if small, else FGLM or Hilbert-driven from a dp basis; local orderings: Mora, then Lazard")
 
 SMALL_WORK = 600
 """Below this much work (matrix entries) in the first modular run, ``auto`` leaves a system over
 QQ to Buchberger, whose smaller overhead wins there (measured on random systems in three
 variables: the crossover is near 1000)."""
+
+
+SMALL_BUCHBERGER = 20000
+"""For block and lexicographic orderings ``auto`` first tries Buchberger within this budget
+(terms of reducers used; about 50 ms): the mechanisms' many small eliminations finish there.
+Larger computations go to FGLM (zero-dimensional ideals) or the Hilbert-driven algorithm."""
 
 
 def field_kind(field: Field) -> str | None:
@@ -238,17 +248,29 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
             except (ModularFailure, SmallSystem):
                 pass
     elif kind is not None:
-        basis = _degree_basis(gens, ring)
+        dp = _dp_ring(ring)
+        basis = cached_standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
+        if basis is None:
+            try:
+                return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
+            except TooLong:
+                basis = _degree_basis(gens, ring)
         try:
             return _finish(_convert(basis, ring), ring, True)
-        except (NotZeroDimensional, ModularFailure):
+        except NotZeroDimensional:
+            return _finish(hilbert_driven(gens, ring, _dp_auto), ring, False)
+        except ModularFailure:
             pass
     return _finish(buchberger(gens, ring), ring, False)
 
 
+def _dp_ring(ring: PolyRing) -> PolyRing:
+    return PolyRing(ring.field, ring.names, MonomialOrder.simple("dp", ring.nvars))
+
+
 def _degree_basis(gens: Sequence[Poly], ring: PolyRing) -> list[Poly]:
     """The reduced basis of the ideal for ``dp`` (by ``auto``, kept in the cache)."""
-    dp = PolyRing(ring.field, ring.names, MonomialOrder.simple("dp", ring.nvars))
+    dp = _dp_ring(ring)
     return standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
 
 
@@ -259,6 +281,10 @@ def _convert(basis: list[Poly], ring: PolyRing) -> list[Terms]:
     if isinstance(ring.field, PrimeField):
         return fglm_zp(terms, source, ring.order, ring.field.characteristic)
     return fglm_qq(terms, source, ring.order)
+
+
+def _dp_auto(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    return standard_basis(gens, ring, AUTO)
 
 
 def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
@@ -308,6 +334,8 @@ register("modular", f4_qq, "F4 modulo primes with a trace, lifted to QQ by ratio
          fields=("QQ",), returns_reduced=True)
 register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ordering (zero-dimensional ideals)",
          fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
+register("hilbert", lambda gens, ring: hilbert_driven(gens, ring, _dp_auto),
+         "Hilbert-driven Buchberger: homogenize, Hilbert series from a dp basis, drop pairs once it is reached")
 register("mora", mora, "Mora's normal form with ecart and sugar (Singular's std for local orderings)",
          orderings=("global", "local"))
 register("lazard", _lazard, "Lazard's method: homogenize, Gröbner basis by auto, dehomogenize",

@@ -99,3 +99,38 @@ def test_conversions_match_singular(char):
         theirs = sorted((parse_poly(R, t).monic() for t in block), key=lambda p: R.order.key(p.lm()))
         assert standard_basis(gens, R) == theirs
         assert standard_basis(gens, R, "fglm") == theirs
+
+
+# --- the Hilbert-driven engine and auto's choice for positive-dimensional ideals ----------------
+
+FIVEBAR = ["c1+c2+c3+c4-2", "s1+s2+s3+s4", "c1^2+s1^2-1", "c2^2+s2^2-1", "c3^2+s3^2-1", "c4^2+s4^2-1",
+           "y1-c1-s1", "y2-c2-s2", "y3-c3-s3"]
+
+
+def _fivebar(field):
+    R = ring(["c1", "s1", "c2", "s2", "c3", "s3", "c4", "s4", "y1", "y2", "y3"],
+             [Block("dp", 8), Block("dp", 3)], field)
+    return R, [parse_poly(R, t) for t in FIVEBAR]
+
+
+def test_hilbert_driven_agrees_with_buchberger_over_zp():
+    R, gens = _fivebar(GF(32003))
+    ours = standard_basis(gens, R, "hilbert")
+    assert ours == standard_basis(gens, R, "buchberger")
+    assert len(ours) == 35 and [p for p in ours if max(p.lm()[:8]) == 0][0].total_degree() == 14
+
+
+def test_hilbert_driven_on_a_homogeneous_ideal_needs_no_new_variable():
+    R = ring("xyzw", [Block("lp", 4)], QQ)
+    x, y, z, w = R.gens()
+    gens = [x * z - y ** 2, x * w - y * z, y * w - z ** 2]  # the twisted cubic, homogeneous
+    assert standard_basis(gens, R, "hilbert") == standard_basis(gens, R, "buchberger")
+
+
+@pytest.mark.singular
+def test_the_fivebar_elimination_matches_singular():
+    R, gens = _fivebar(QQ)
+    out = run_singular("option(redSB); ring r = 0, (" + ",".join(R.names) + "), (dp(8),dp(3)); short = 0; "
+                       f"ideal i = {', '.join(FIVEBAR)}; groebner(i);", timeout=300)
+    theirs = sorted((parse_poly(R, t).monic() for t in ideal_blocks(out)[0]), key=lambda p: R.order.key(p.lm()))
+    assert standard_basis(gens, R) == theirs
