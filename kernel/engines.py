@@ -113,7 +113,8 @@ def register(name: str, run: Run, summary: str, *, orderings: Sequence[str] = ("
     """Register (or replace) the engine ``name``: ``run(gens, ring)`` as in the module docstring,
     a one-line ``summary``, the kinds of ``orderings`` (``"global"``, ``"local"``) and ``fields``
     (``"QQ"``, ``"Z/p"``; None: every field) it accepts; ``zero_dimensional``: it raises
-    :class:`~.errors.EngineError` for other ideals."""
+    :class:`~.fglm.NotZeroDimensional` for other ideals (an :class:`~.errors.EngineError` when
+    the call names it; as the default engine it leaves them to ``auto``)."""
     if name == AUTO:
         raise EngineError(f"'{AUTO}' names the default policy, not an engine")
     unknown = set(orderings) - {"global", "local"} | set(fields or ()) - {"QQ", "Z/p"}
@@ -195,11 +196,11 @@ def standard_basis(gens: Sequence[Poly], ring: PolyRing | None = None, engine: s
     if not gens:
         return []
     if not ring.order.is_global:
-        return _compute(gens, ring, name)
+        return _compute(gens, ring, name, engine is not None)
     key = _key(gens, ring, name)
     out = _CACHE.get(key)
     if out is None:
-        out = _compute(gens, ring, name)
+        out = _compute(gens, ring, name, engine is not None)
         _CACHE[key] = out
         if len(_CACHE) > _CACHE_SIZE:
             _CACHE.popitem(last=False)
@@ -228,13 +229,22 @@ _CACHE: OrderedDict[tuple, list[Poly]] = OrderedDict()
 _CACHE_SIZE = 256
 
 
-def _compute(gens: list[Poly], ring: PolyRing, name: str) -> list[Poly]:
+def _compute(gens: list[Poly], ring: PolyRing, name: str, named: bool = True) -> list[Poly]:
+    """The basis by the engine ``name``; a default engine (not ``named`` in the call) that
+    needs a zero-dimensional ideal leaves the others to ``auto``."""
     if any(g.is_constant() for g in gens):
         return [ring.one()]
     if name == AUTO:
         return _auto_global(gens, ring) if ring.order.is_global else _auto_local(gens, ring)
     engine = ENGINES[name]
-    return _finish(engine.run(gens, ring), ring, engine.returns_reduced)
+    try:
+        return _finish(engine.run(gens, ring), ring, engine.returns_reduced)
+    except NotZeroDimensional:
+        if not engine.zero_dimensional:
+            raise
+        if named:
+            raise EngineError(f"the engine '{name}' needs a zero-dimensional ideal") from None
+        return _compute(gens, ring, AUTO)
 
 
 def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
@@ -289,10 +299,7 @@ def _dp_auto(gens: list[Poly], ring: PolyRing) -> list[Poly]:
 
 def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
     """The engine ``fglm``: a ``dp`` basis by ``auto``, converted by FGLM."""
-    try:
-        return _convert(_degree_basis(gens, ring), ring)
-    except NotZeroDimensional:
-        raise EngineError("the engine 'fglm' needs a zero-dimensional ideal") from None
+    return _convert(_degree_basis(gens, ring), ring)
 
 
 def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
