@@ -1,4 +1,4 @@
-"""Gröbner basis benchmarks: mech against Singular, Macaulay2 and SymPy (each when installed).
+"""Gröbner basis benchmarks: mech against Singular, Macaulay2, SymPy and msolve (each when installed).
 
     python benchmarks/run.py                      # every case of benchmarks/cases.py
     python benchmarks/run.py --only katsura-6 --no-sympy
@@ -341,11 +341,14 @@ def write_results(rows: list[str], args) -> None:
             "Produced by `python benchmarks/run.py --write` (see its docstring for the method).", ""]
     text += machine()
     text += ["", "Times are CPU time of one computation (mech: best of "
-             f"{args.repeat}; Singular and Macaulay2: mean over repetitions filling half a second, Macaulay2's "
-             "`gens gb` on a fresh copy of the ring and ideal each time; SymPy: one run, "
-             f"`method='buchberger'`, stopped after {args.sympy_timeout:.0f} s; — = not run). "
-             "Singular's `std` uses its default options (tail-reduced, not necessarily minimal); "
-             "mech returns the reduced basis. The basis column is the number of elements mech returns.", ""]
+             f"{args.repeat}, `standard_basis` with engine `auto`; Singular and Macaulay2: mean over repetitions "
+             "filling half a second, Macaulay2's `gens gb` on a fresh copy of the ring and ideal each time; SymPy: "
+             f"one run, `method='buchberger'`, stopped after {args.sympy_timeout:.0f} s; msolve: `msolve -g 2` when "
+             "an `msolve` program is installed (Debian has no package; it is not installed here); — = not run). "
+             "Singular runs `std` for degree and local orderings and its own choice `groebner` (stdfglm, stdhilb) "
+             "for lex and block orderings, where its `std` takes minutes. Singular's `std` uses its default "
+             "options (tail-reduced, not necessarily minimal); mech returns the reduced basis. The basis column "
+             "is the number of elements mech returns. The machine is shared: compare ratios within one run.", ""]
     text += rows
     text += [""]
     (HERE / "RESULTS.md").write_text("\n".join(text) + "\n")

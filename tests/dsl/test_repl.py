@@ -97,7 +97,8 @@ def test_completion_candidates():
     names = dict(candidates(it, "j")[1])
     assert names["jj"] == "int" and names["jolly"] == "proc" and names["jacob"] == "command"
     assert dict(candidates(it, "ra")[1])["radical"] == 'LIB "primdec.lib";'
-    assert candidates(it, "st")[1] == [("std", "command"), ("string", "command"), ("static", "keyword")]
+    assert candidates(it, "st")[1] == [("std", "command"), ("stdfglm", "command"), ("stdhilb", "command"),
+                                       ("string", "command"), ("static", "keyword")]
     assert ("while", "keyword") in candidates(it, "wh")[1]
     assert candidates(it, 'LIB "pri') == ("pri", [("primdec.lib", "library")])
     assert candidates(it, "help jo") == ("jo", [("jolly", "proc")])
