@@ -111,8 +111,8 @@ class Poly:
 
     def sorted_terms(self) -> list[tuple[Exp, Any]]:
         """Terms from the largest monomial down."""
-        key = self.ring.order.key
-        return sorted(self.terms.items(), key=lambda t: key(t[0]), reverse=True)
+        t = self.terms
+        return [(e, t[e]) for e in sorted(t, key=self.ring.order.key, reverse=True)]
 
     def __iter__(self) -> Iterator[tuple[Exp, Any]]:
         return iter(self.sorted_terms())
