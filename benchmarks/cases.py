@@ -22,6 +22,7 @@ class Case:
     gens: list[str]            # polynomials in Singular syntax (*, ^, +, -, integers, a/b)
     sympy: bool = True         # run SymPy's groebner (only for lp, dp, Dp)
     notes: str = field(default="")
+    task: str = "std"          # std: a standard basis of gens; expr: evaluate gens[0]; ring: create the ring
 
     @property
     def field(self) -> str:
@@ -235,8 +236,19 @@ def _standard() -> list[Case]:
                       "(dp(8),dp(3))", fivebar, sympy=False, notes="examples/fivebar.mech's elimination"))
     for name, names, gens in LOCAL:
         cases.append(Case(name, 0, names, "ds", gens, sympy=False))
-    cases.append(Case("ring of 10^4 variables", 0, ["x(1..10000)"], "dp", [], sympy=False,
+    f = "x*y*z*(x+y+z)^2+(x+y+z)^3+x^20+y^20+z^20"
+    jac = [f"{a}*{b}*(x+y+z)^2+2*x*y*z*(x+y+z)+3*(x+y+z)^2+20*{v}^19" for v, a, b in
+           [("x", "y", "z"), ("y", "x", "z"), ("z", "x", "y")]]
+    cases.append(Case("jacob(f),f with f = xyz(x+y+z)^2+(x+y+z)^3+x^20+y^20+z^20", 32003, ["x", "y", "z"], "ds",
+                      jac + [f], sympy=False, notes="the ideal of Singular's Tst/Short/mora_5"))
+    cases.append(Case("ring of 10^4 variables", 0, ["x(1..10000)"], "dp", [], sympy=False, task="ring",
                       notes="ring creation only"))
+    cases.append(Case("ring of 10^4 variables", 0, ["x(1..10000)"], "(dp(5000),lp(5000))", [], sympy=False,
+                      task="ring", notes="ring creation only"))
+    for k in (60, 80):  # polynomial arithmetic: products and powers
+        cases.append(Case(f"(x+y+z+1)^{k}", 0, ["x", "y", "z"], "dp", [f"(x+y+z+1)^{k}"], sympy=False, task="expr"))
+    cases.append(Case("(x+y+z+1)^40*(x-y-z-1)^40", 32003, ["x", "y", "z"], "dp", ["(x+y+z+1)^40*(x-y-z-1)^40"],
+                      sympy=False, task="expr"))
     return cases
 
 

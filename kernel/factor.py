@@ -16,38 +16,22 @@ from typing import Any
 
 import flint
 
-from .coeffs import PrimeField, RationalField
+from . import flint_bridge
 from .errors import DivisionError
 from .poly import Poly, PolyRing
 
 
-def _ctx(ring: PolyRing) -> Any:
-    names = tuple(f"x{i}" for i in range(ring.nvars)) or ("x0",)
-    field = ring.field
-    if isinstance(field, RationalField):
-        return flint.fmpq_mpoly_ctx.get(names)
-    if isinstance(field, PrimeField):
-        return flint.nmod_mpoly_ctx.get(names, modulus=field.characteristic)
-    raise NotImplementedError(f"factorization over {field!r} is not available")
-
-
 def to_flint(f: Poly) -> Any:
     """``f`` as a flint multivariate polynomial (variables by position)."""
-    ctx = _ctx(f.ring)
-    if f.ring.nvars == 0:
-        return ctx.from_dict({(0,): c for c in f.terms.values()})
-    return ctx.from_dict(f.terms)
+    ctx = flint_bridge.context(f.ring.field, f.ring.nvars)
+    if ctx is None:
+        raise NotImplementedError(f"factorization over {f.ring.field!r} is not available")
+    return flint_bridge.to_flint(ctx, f.terms, f.ring.nvars)
 
 
 def from_flint(g: Any, ring: PolyRing) -> Poly:
     """The flint polynomial ``g`` (made by :func:`to_flint` for ``ring``) as a :class:`Poly`."""
-    field = ring.field
-    terms = g.to_dict()
-    if ring.nvars == 0:
-        terms = {(): c for c in terms.values()}
-    if isinstance(field, RationalField):
-        return Poly(ring, {tuple(map(int, e)): c for e, c in terms.items()})
-    return Poly(ring, {tuple(map(int, e)): field(int(c)) for e, c in terms.items()})
+    return Poly(ring, flint_bridge.from_flint(g, ring.field, ring.nvars))
 
 
 def normalize(f: Poly) -> Poly:

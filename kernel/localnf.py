@@ -26,7 +26,7 @@ def weak_normal_form(f: Poly, basis: Sequence[Poly]) -> Poly:
     if f.is_zero():
         return f
     key = f.ring.order.key
-    degree_first = all(v < 0 for v in f.ring.order.matrix[0])
+    degree_first = all(v < 0 for v in f.ring.order.first_row())
     try:
         h = mora_normal_form(dict(f.terms), elems(basis), key, Budget() if degree_first else None)
     except BudgetExceeded:

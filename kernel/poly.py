@@ -5,10 +5,12 @@ bound to a :class:`PolyRing` (field, variable names, monomial ordering).
 """
 from __future__ import annotations
 
+from math import comb
 from operator import le as _le
 
 from typing import Any, Iterator, Sequence
 
+from . import flint_bridge
 from .coeffs import Field
 from .errors import DomainError
 from .order import Exp, MonomialOrder
@@ -109,8 +111,8 @@ class Poly:
 
     def sorted_terms(self) -> list[tuple[Exp, Any]]:
         """Terms from the largest monomial down."""
-        key = self.ring.order.key
-        return sorted(self.terms.items(), key=lambda t: key(t[0]), reverse=True)
+        t = self.terms
+        return [(e, t[e]) for e in sorted(t, key=self.ring.order.key, reverse=True)]
 
     def __iter__(self) -> Iterator[tuple[Exp, Any]]:
         return iter(self.sorted_terms())
@@ -191,7 +193,11 @@ class Poly:
             a, b = self.terms, other.terms
         else:
             a, b = other.terms, self.terms
-        t: dict[Exp, Any] = {}
+        if len(a) * len(b) >= _FLINT_PAIRS and _collisions(a, b):
+            t = flint_bridge.product(self.ring.field, self.ring.nvars, a, b)
+            if t is not None:
+                return Poly(self.ring, t)
+        t = {}
         for eb, cb in b.items():
             for ea, ca in a.items():
                 e = tuple([x + y for x, y in zip(ea, eb)])
@@ -220,6 +226,10 @@ class Poly:
         if len(self.terms) == 1:
             (e, c), = self.terms.items()
             return Poly(self.ring, {tuple(v * k for v in e): c ** k})
+        if k > 1 and self.terms and len(self.terms) ** 2 * k >= _FLINT_PAIRS:
+            t = flint_bridge.power(self.ring.field, self.ring.nvars, self.terms, k)
+            if t is not None:
+                return Poly(self.ring, t)
         while k:
             if k & 1:
                 result = result * base
@@ -324,3 +334,22 @@ def sub_exp(a: Exp, b: Exp) -> Exp:
 
 def add_exp(a: Exp, b: Exp) -> Exp:
     return tuple([x + y for x, y in zip(a, b)])
+
+
+_FLINT_PAIRS = 64
+"""Products with at least this many pairs of terms may go to python-flint (see ``_collisions``)."""
+
+
+def _collisions(a: dict[Exp, Any], b: dict[Exp, Any]) -> bool:
+    """Whether the product of ``a`` and ``b`` has at most a third as many terms as pairs of
+    terms (its monomials bounded by the degree box and the total degree): then flint's
+    product in C beats the schoolbook loop even with the conversions, which cost about as
+    much per term as the loop (measured: 10-25x faster with many collisions, 0.4-1x with none)."""
+    if not a or not b or not next(iter(a)):
+        return False
+    box, used = 1, 0
+    for da, db in zip(map(max, zip(*a)), map(max, zip(*b))):
+        box *= da + db + 1
+        used += da + db > 0
+    degree = max(map(sum, a)) + max(map(sum, b))
+    return 3 * min(box, comb(used + degree, used)) <= len(a) * len(b)
