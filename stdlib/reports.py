@@ -59,7 +59,8 @@ def report_data(a: Analysis) -> dict:
     d: dict[str, Any] = {
         "mechanism": str(a.mechanism), "variables": list(a.ring.names[:a.nvars]),
         "lengths": a.params, "constraints": ps(a.ideal), "dimension": a.dim,
-        "mobility": a.mobility, "radical": a.radical, "fitting_minor_size": a.fitting_size}
+        "mobility": a.mobility, "gruebler_kutzbach": a.mechanism.gruebler_kutzbach(), "radical": a.radical,
+        "fitting_minor_size": a.fitting_size}
     if a.params:
         d["fitting_components"] = [
             {"prime": ps(c.prime),
@@ -73,6 +74,8 @@ def report_data(a: Analysis) -> dict:
         d["motion_modes"] = [{"prime": ps(dp_basis(m.prime)), "dimension": m.dim, "real_points": m.real,
                               "primary_equals_prime": ideals_equal(m.primary, m.prime, a.ring)}
                              for m in a.modes]
+        if a.mobility == 0 and a.radical:
+            d["complex_configurations"] = configuration_count(a)
         d["singular"] = [{
             "prime": ps(dp_basis(s.prime)), "dimension": s.dim, "real_points": s.real,
             "point": [_frac(c) for c in s.point] if s.point else ps(s.algebraic.coords) if s.algebraic
@@ -81,8 +84,24 @@ def report_data(a: Analysis) -> dict:
                 "minimal_polynomial": poly_str(normalize(s.algebraic.minpoly))} if s.algebraic else {}),
             "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
             "local_components": [ps(_local(s, c)) for c in s.local_components],
-            "transition": s.transition} for s in a.singular]
+            "transition": s.transition,
+            **({"joint_angles": joint_angles(a.mechanism, a.ring.names, s.point)} if s.point else {})}
+            for s in a.singular]
     return d
+
+
+def configuration_count(a: Analysis) -> int:
+    """The number of complex configurations of a rigid mechanism (mobility 0, J radical): the
+    vector-space dimension of Q[x]/J."""
+    from mech.kernel.hilbert import vdim
+    return vdim([g.lm() for g in std(a.ideal, a.ring)], a.ring.nvars)
+
+
+def joint_angles(m: Any, names: Sequence[str], point: Sequence[Any]) -> dict[str, float]:
+    """The joint angles (degrees, rounded to 1e-6) and slides a person reads at a rational point."""
+    from mech.stdlib.mechanism_display import joint_readings
+    values = {n: float(c.p) / float(c.q) for n, c in zip(names, point)}
+    return {k: round(v, 6) for k, v, _ in joint_readings(m, values)}
 
 
 def report_text(a: Analysis) -> str:
@@ -93,7 +112,7 @@ def report_text(a: Analysis) -> str:
                                          if a.params else ""),
            "constraint ideal J:"] + [f"  {poly_str(g)}" for g in a.ideal]
     mob = f"mobility {a.mobility}" + (f" (dim J = {a.dim} minus {len(a.params)} lengths)" if a.params else "")
-    out.append(f"{mob}; J is {'radical' if a.radical else 'not radical'}")
+    out.append(f"{mob}{_count_note(a)}; J is {'radical' if a.radical else 'not radical'}")
     if a.params:
         out.append(f"singular variety (Theorem 1): V(J + I_{a.fitting_size}(dJ)); "
                    f"minimal primes P of the Fitting ideal and (J + P) ∩ Q[{','.join(a.params)}]:")
@@ -155,6 +174,16 @@ def report_text(a: Analysis) -> str:
                        ", ".join(_show(_local(s, c)) for c in s.local_components))
             out.append(f"     {s.transition}")
     return "\n".join(out) + "\n"
+
+
+def _count_note(a: Analysis) -> str:
+    """Beside the mobility, the Grübler–Kutzbach count when it differs."""
+    gk = a.mechanism.gruebler_kutzbach()
+    if gk == a.mobility:
+        return ""
+    if gk < a.mobility:
+        return f" (Grübler–Kutzbach count {gk}: overconstrained, a special geometry gives more freedom)"
+    return f" (Grübler–Kutzbach count {gk}: the dimensions leave less freedom than the count)"
 
 
 def report_latex(a: Analysis) -> str:
