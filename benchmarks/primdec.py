@@ -55,7 +55,7 @@ CASES = [
 def time_mech(case: Case, repeat: int) -> tuple[float, int]:
     """Mean CPU time of the command and the number of components."""
     from mech import Session
-    from mech.kernel.groebner import clear_cache
+    from mech.kernel.engines import clear_cache
     total, size = 0.0, 0
     for _ in range(repeat):
         clear_cache()

@@ -27,9 +27,6 @@ def convert_exception(e: BaseException) -> MechError:
         return MechRuntimeError(str(e))
     if isinstance(e, MemoryError):
         return limit_error(e)
-    # TEMPORARY (issue 16): the kernel still raises plain ValueError / ArithmeticError for bad input
-    # in places; until all of them are KernelError subclasses, these stay user errors.  Delete this
-    # branch then (a bare ValueError will be a bug, shown as an internal error).
-    if isinstance(e, (ValueError, ArithmeticError)):
+    if isinstance(e, ArithmeticError):  # exact arithmetic's own (an inverse of 0 mod p, ...)
         return MechRuntimeError(str(e))
     return MechInternalError(f"internal error: {type(e).__name__}: {e}")

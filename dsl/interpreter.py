@@ -14,6 +14,7 @@ import time
 import weakref
 from typing import Any, Callable, Optional, TextIO
 
+from ..kernel.engines import AUTO, using_engine
 from . import ast as A
 from . import registry
 from .assignment import Assignment
@@ -44,7 +45,8 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.limits = Limits(timeout, max_memory)  # per statement; see limits.py
         registry.load_plugins()
         self.registry = registry
-        #: session settings the facade gives, read by commands as ``ctx.settings`` (e.g. "report_format")
+        #: session settings the facade gives, read by commands as ``ctx.settings`` ("report_format";
+        #: "display": a callable taking MIME bundles, given by notebooks)
         self.settings: dict[str, Any] = dict(settings or {})
         self.out = out if out is not None else sys.stdout
         self.flush = flush
@@ -95,7 +97,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.source = source
         try:
             for stmt in program.body:
-                self.limits.run(self, self.exec_stmt, stmt)
+                self.guarded(self.exec_stmt, stmt)
         except (BreakSignal, ContinueSignal) as sig:
             word = "break" if isinstance(sig, BreakSignal) else "continue"
             raise MechRuntimeError(f"{word} outside a loop", self.stmt.pos if self.stmt else None, source)
@@ -104,10 +106,27 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         finally:
             self.source = saved
 
+    def guarded(self, fn: Callable[..., Any], *args: Any) -> Any:
+        """``fn(*args)`` as one top-level statement: under the limits, with the session's default
+        Gröbner engine (``settings["engine"]``, see :mod:`mech.kernel.engines`)."""
+        with using_engine(self.settings.get("engine", AUTO)):
+            return self.limits.run(self, fn, *args)
+
     def write(self, text: str) -> None:
         self.out.write(text)
         if self.flush:
             self.out.flush()
+
+    def display(self, bundle: dict[str, str]) -> None:
+        """Show a rich result: the facade's display (``settings["display"]``: a notebook) gets the
+        MIME bundle; elsewhere its ``text/plain`` is printed."""
+        show = self.settings.get("display")
+        if show is None:
+            self.write(bundle["text/plain"])
+        else:
+            if self.flush:
+                self.out.flush()
+            show(bundle)
 
     def warn(self, message: str) -> None:
         if self.warnings:

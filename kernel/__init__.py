@@ -1,8 +1,13 @@
-"""mech's kernel: exact commutative algebra (knows nothing of the language)."""
+"""mech's kernel: exact commutative algebra (knows nothing of the language).
+
+Submodules are never shadowed here: ``mech.kernel.groebner`` is the module (its function is
+``mech.kernel.groebner.groebner``)."""
 from .coeffs import GF, QQ, Field, PrimeField, RationalField
-from .groebner import contains, groebner, normal_form
+from .engines import standard_basis, using_engine
+from .errors import KernelError
+from .groebner import contains, normal_form
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 
 __all__ = ["GF", "QQ", "Field", "PrimeField", "RationalField", "Block", "MonomialOrder",
-           "Poly", "PolyRing", "groebner", "normal_form", "contains"]
+           "Poly", "PolyRing", "standard_basis", "using_engine", "normal_form", "contains", "KernelError"]

@@ -11,6 +11,8 @@ from typing import Any
 
 import flint
 
+from .errors import DomainError, NotSupported
+
 
 class Field:
     """Common interface of coefficient fields."""
@@ -68,9 +70,9 @@ class PrimeField(Field):
 
     def __init__(self, p: int) -> None:
         if p < 2 or not flint.fmpz(p).is_prime():
-            raise ValueError(f"characteristic {p} is not a prime")
+            raise DomainError(f"characteristic {p} is not a prime")
         if p >= 2**63:
-            raise ValueError(f"characteristic {p} is too large (at most 2^63)")
+            raise NotSupported(f"characteristic {p} is too large (at most 2^63)")
         self.characteristic = p
         self.zero = flint.nmod(0, p)
         self.one = flint.nmod(1, p)

@@ -17,6 +17,7 @@ from typing import Any
 import flint
 
 from .coeffs import PrimeField, RationalField
+from .errors import DivisionError
 from .poly import Poly, PolyRing
 
 
@@ -120,10 +121,10 @@ def gcd(f: Poly, g: Poly) -> Poly:
 
 
 def divide_exact(f: Poly, g: Poly) -> Poly:
-    """``f / g`` for a divisor ``g`` of ``f``; ``ValueError`` when ``g`` does not divide ``f``."""
+    """``f / g`` for a divisor ``g`` of ``f``; :class:`~.errors.DivisionError` when ``g`` does not divide ``f``."""
     if g.is_zero():
         raise ZeroDivisionError("division by zero")
     q, r = divmod(to_flint(f), to_flint(g))
     if not r.is_zero():
-        raise ValueError("the division is not exact")
+        raise DivisionError("the division is not exact")
     return from_flint(q, f.ring)

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
+from .errors import DomainError
 from .poly import Poly, PolyRing
 
 
@@ -51,10 +52,10 @@ def homogenize(polys: Sequence[Poly] | Poly, var_index: int) -> list[Poly] | Pol
     for f in items:
         ring = f.ring
         if not 0 <= var_index < ring.nvars:
-            raise ValueError(f"no variable {var_index + 1} in a ring with {ring.nvars} variables")
+            raise DomainError(f"no variable {var_index + 1} in a ring with {ring.nvars} variables")
         w = variable_weights(ring)
         if w[var_index] != 1:
-            raise ValueError("variable must have weight 1")
+            raise DomainError("variable must have weight 1")
         top = max((weighted_degree(e, w) for e in f.terms), default=0)
         terms: dict = {}
         for e, c in f.terms.items():

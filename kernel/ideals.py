@@ -1,5 +1,5 @@
 """Operations on ideals: elimination, sums, products, powers, intersections, quotients,
-saturations, containment and equality, radicals.
+saturations, containment and equality (radicals: :mod:`.primdec`).
 
 An ideal is a list of :class:`Poly` of one ring with a global ordering (pass ``ring=`` when
 the list may be empty).  Unless said otherwise a result is the reduced Gröbner basis in the
@@ -12,7 +12,9 @@ from __future__ import annotations
 from typing import Callable, Sequence
 
 from .dimension import independent_sets, krull_dim
-from .groebner import cached_groebner, groebner, normal_form
+from .engines import cached_standard_basis
+from .errors import DomainError
+from .groebner import groebner, normal_form
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
@@ -26,7 +28,7 @@ def ring_of(*ideals: Ideal, ring: PolyRing | None = None) -> PolyRing:
     for ideal in ideals:
         for p in ideal:
             return p.ring
-    raise ValueError("the ring of an empty ideal must be given (ring=...)")
+    raise DomainError("the ring of an empty ideal must be given (ring=...)")
 
 
 def std(ideal: Ideal, ring: PolyRing | None = None) -> list[Poly]:
@@ -155,7 +157,7 @@ def ideal_power(ideal: Ideal, k: int, ring: PolyRing | None = None) -> list[Poly
     """``I^k`` (``I^0`` is the unit ideal)."""
     ring = ring_of(ideal, ring=ring)
     if k < 0:
-        raise ValueError("the exponent of an ideal power must be nonnegative")
+        raise DomainError("the exponent of an ideal power must be nonnegative")
     result = [ring.one()]
     base = std(ideal, ring)
     while k:
@@ -289,7 +291,7 @@ def ideals_equal(a: Ideal, b: Ideal, ring: PolyRing | None = None) -> bool:
 def dimension(ideal: Ideal, ring: PolyRing | None = None) -> int:
     """The Krull dimension of ``K[x]/I`` (-1 for the unit ideal)."""
     ring = ring_of(ideal, ring=ring)
-    basis = cached_groebner(ideal, ring)
+    basis = cached_standard_basis(ideal, ring)
     if basis is None:
         if not ring.order.is_graded:  # any ordering gives the dimension, a degree ordering fastest
             ring = dp_ring(ring)
@@ -303,8 +305,3 @@ def independent_set(basis: Sequence[Poly], nvars: int) -> list[int]:
     sets = independent_sets([p.lm() for p in basis], nvars)
     return sorted(sets[0]) if sets else []
 
-
-def radical(ideal: Ideal, ring: PolyRing | None = None) -> list[Poly]:
-    """The radical ``√I`` (intersection of the minimal associated primes)."""
-    from .primdec import radical as _radical
-    return _radical(ideal, ring=ring)

@@ -2,7 +2,7 @@
 multiplicity, Milnor and Tjurina numbers, local components, classification of points.
 
 Everything "local" is computed in the local ring ``K[x]_<x>`` at the origin with a standard
-basis for ``ds`` (:mod:`.mora`), whatever the ordering of the input's ring; results are
+basis for ``ds`` (:mod:`.engines`), whatever the ordering of the input's ring; results are
 polynomials of the input's ring.  The point-based functions move the point to the origin
 (``x_i -> x_i + p_i``) and answer in those centred coordinates, as the paper does; points with
 algebraic coordinates (a zero-dimensional prime) are handled over ``Q[t]/m(t)`` for a primitive
@@ -17,11 +17,13 @@ from typing import Any, Callable, Sequence
 
 from .coeffs import PrimeField, RationalField
 from .dimension import krull_dim
+from .engines import standard_basis
+from .errors import DomainError, NotSupported
 from .factor import factorize, normalize
 from .groebner import groebner, normal_form
 from .hilbert import mult, vdim
 from .ideals import dimension, independent_set, intersect, is_subset, move, std, with_order
-from .mora import standard_basis, weak_normal_form
+from .localnf import weak_normal_form
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing
 from .primdec import min_ass_gtz, primdec_gtz
@@ -30,7 +32,7 @@ from .primdec import min_ass_gtz, primdec_gtz
 def _ring_of(gens: Sequence[Poly], ring: PolyRing | None) -> PolyRing:
     ring = ring or (gens[0].ring if gens else None)
     if ring is None:
-        raise ValueError("an empty list of generators needs its ring")
+        raise DomainError("an empty list of generators needs its ring")
     return ring
 
 
@@ -46,7 +48,7 @@ def _ds_basis(gens: Sequence[Poly], ring: PolyRing) -> list[Poly]:
 
 # Singular's reduce/NF in a local ring: a weak normal form, zero iff f lies in the ideal of
 # the local ring, otherwise determined only up to a unit and modulo the ideal (see
-# mora.weak_normal_form)
+# localnf.weak_normal_form)
 local_normal_form = weak_normal_form
 
 
@@ -151,7 +153,7 @@ def primdec_local(gens: Sequence[Poly], ring: PolyRing | None = None
 
 def _point(ring: PolyRing, point: Sequence[Any]) -> list[Any]:
     if len(point) != ring.nvars:
-        raise ValueError(f"the point has {len(point)} coordinates, the ring {ring.nvars} variables")
+        raise DomainError(f"the point has {len(point)} coordinates, the ring {ring.nvars} variables")
     return [ring.field(v) for v in point]
 
 
@@ -166,13 +168,13 @@ def shift_to_origin(gens: Sequence[Poly], point: Sequence[Any]) -> list[Poly]:
 
 
 def _centred(gens: Sequence[Poly], point: Sequence[Any]) -> list[Poly]:
-    """Shifted generators; ValueError unless the point is on the variety."""
+    """Shifted generators; :class:`~.errors.DomainError` unless the point is on the variety."""
     if not gens:
-        raise ValueError("no generators: give the ideal's generators")
+        raise DomainError("no generators: give the ideal's generators")
     p = _point(gens[0].ring, point)
     bad = [g for g in gens if g.evaluate(p) != 0]
     if bad:
-        raise ValueError(f"the point {tuple(point)} is not on the variety "
+        raise DomainError(f"the point {tuple(point)} is not on the variety "
                          f"({bad[0].to_str()} does not vanish)")
     return shift_to_origin(gens, point)
 
@@ -243,8 +245,8 @@ def classify_point(gens: Sequence[Poly], point: Sequence[Any],
     the one component through it has its dimension (Definition 3, the Jacobian criterion
     for its prime) and "singular" when it is larger.  ``primes``: the minimal primes of
     the ideal when they are known (a decomposition was made): those through the point are
-    its local components, no decomposition is made again.  ValueError when the point is not
-    on the variety."""
+    its local components, no decomposition is made again.  :class:`~.errors.DomainError` when
+    the point is not on the variety."""
     centred = _centred(gens, point)
     ring = centred[0].ring
     target = _global(ring)
@@ -305,10 +307,10 @@ def primitive_element(prime: Sequence[Poly], ring: PolyRing | None = None,
                       name: str = "t") -> AlgebraicPoint:
     """A primitive element of the zero-dimensional prime (a variable if one separates the
     points, else a small integer linear form) and the shape basis ``x_i - phi_i(t), m(t)``.
-    ValueError unless the prime is zero-dimensional."""
+    :class:`~.errors.DomainError` unless the prime is zero-dimensional."""
     ring = _ring_of(prime, ring)
     if dimension(prime, ring) != 0:
-        raise ValueError("a primitive element needs a zero-dimensional prime")
+        raise DomainError("a primitive element needs a zero-dimensional prime")
     n = ring.nvars
     while name in ring.names:
         name += "_"
@@ -325,7 +327,7 @@ def primitive_element(prime: Sequence[Poly], ring: PolyRing | None = None,
         coords = [x - lead[x.lm()] for x in xs]
         if all(_in_t(g, n) for g in [basis[0]] + coords):
             return AlgebraicPoint(big, lform, basis[0], coords)
-    raise ValueError("no primitive element found")
+    raise NotSupported("no primitive element found")
 
 
 def _in_t(p: Poly, n: int) -> bool:
@@ -343,12 +345,13 @@ def _moved(gens: Sequence[Poly], point: AlgebraicPoint) -> list[Poly]:
 
 def centre_at(gens: Sequence[Poly], point: AlgebraicPoint) -> list[Poly]:
     """``gens(x + phi(t))`` reduced modulo ``m(t)``, and ``m(t)``: the conjugate points moved
-    to the origin, in ``point.ring``.  ValueError unless the points are on the variety."""
+    to the origin, in ``point.ring``.  :class:`~.errors.DomainError` unless the points are on
+    the variety."""
     centred = _moved(gens, point)
     n = point.ring.nvars - 1
     at_zero = [point.ring.zero()] * n + point.ring.gens()[n:]
     if any(not g.compose(at_zero).is_zero() for g in centred[:-1]):
-        raise ValueError("the points are not on the variety")
+        raise DomainError("the points are not on the variety")
     return centred
 
 
@@ -428,7 +431,7 @@ def _irreducible_over(m: Poly, mu: Poly) -> bool:
         if r.total_degree() == full:
             _, factors = factorize(r)
             return len(factors) == 1
-    raise ValueError("no primitive element found")
+    raise NotSupported("no primitive element found")
 
 
 def local_components_over(centred: Sequence[Poly], point: AlgebraicPoint,
@@ -466,7 +469,7 @@ def classify_algebraic_point(gens: Sequence[Poly], point: AlgebraicPoint,
     centred = centre_at(gens, point)
     comps = local_components_over(centred, point, primes)
     if not comps:
-        raise ValueError("no component through the points: primes must be the ideal's minimal primes")
+        raise DomainError("no component through the points: primes must be the ideal's minimal primes")
     radical = intersect(*comps, ring=ring) if len(comps) > 1 else comps[0]
     t = _tangent_dim(radical, [ring.zero()] * n, ring, point.minpoly)
     d = max(dimension(c, ring) for c in comps)

@@ -12,6 +12,7 @@ from fractions import Fraction
 from typing import Any, Callable, Sequence
 
 from .coeffs import Field
+from .errors import DomainError
 from .poly import Exp, Poly, PolyRing
 from .ratfunc import RatFunc, RationalFunctionField
 
@@ -23,7 +24,7 @@ def _scalar(value: Fraction | int, target: Field) -> Any:
     try:
         return target(value)
     except ZeroDivisionError:
-        raise ValueError(f"cannot map {value} to characteristic {target.characteristic}: "
+        raise DomainError(f"cannot map {value} to characteristic {target.characteristic}: "
                          f"its denominator is divisible by {target.characteristic}") from None
 
 
@@ -76,9 +77,9 @@ def coefficient_map(source: PolyRing, target: PolyRing, by_name: bool = True) ->
             return num
         den = evaluate(c.den)
         if den.is_zero():
-            raise ValueError(f"cannot map the coefficient {c}: its denominator maps to 0")
+            raise DomainError(f"cannot map the coefficient {c}: its denominator maps to 0")
         if not den.is_constant():
-            raise ValueError(f"cannot map the coefficient {c}: its denominator maps to a "
+            raise DomainError(f"cannot map the coefficient {c}: its denominator maps to a "
                              "non-constant polynomial")
         return num / den
     return convert
@@ -161,13 +162,13 @@ def map_polys(polys: Sequence[Poly], images: Sequence[Poly], target: PolyRing,
     if source is None:
         return []
     if len(images) > source.nvars:
-        raise ValueError(f"{len(images)} images for a ring with {source.nvars} variables")
+        raise DomainError(f"{len(images)} images for a ring with {source.nvars} variables")
     for img in images:
         if not isinstance(img, Poly) or (img.ring is not target and img.ring != target):
-            raise ValueError("the images must be polynomials of the target ring")
+            raise DomainError("the images must be polynomials of the target ring")
     sf, tf = source.field, target.field
     if isinstance(sf, RationalFunctionField) and sf != tf:
-        raise ValueError(f"cannot map from the coefficient field {sf!r} to {tf!r}")
+        raise DomainError(f"cannot map from the coefficient field {sf!r} to {tf!r}")
     full = list(images) + [None] * (source.nvars - len(images))
     return _apply(_check(polys, source), target, full, coefficient_map(source, target))
 
@@ -198,7 +199,7 @@ def fetch(polys: Sequence[Poly], source: PolyRing, target: PolyRing) -> list[Pol
 def _check(polys: Sequence[Poly], source: PolyRing) -> list[Poly]:
     for f in polys:
         if f.ring is not source and f.ring != source:
-            raise ValueError("a polynomial that is not in the source ring")
+            raise DomainError("a polynomial that is not in the source ring")
     return list(polys)
 
 
@@ -206,7 +207,7 @@ def subst(f: Poly, var_index: int, g: Any) -> Poly:
     """Singular's ``subst(f, x_i, g)``: ``g`` (a polynomial or a scalar) for the variable."""
     ring = f.ring
     if not 0 <= var_index < ring.nvars:
-        raise ValueError(f"no variable {var_index + 1} in a ring with {ring.nvars} variables")
+        raise DomainError(f"no variable {var_index + 1} in a ring with {ring.nvars} variables")
     g = g if isinstance(g, Poly) else ring.const(g)
     images = list(ring.gens())
     images[var_index] = g

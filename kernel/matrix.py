@@ -14,11 +14,13 @@ from typing import Any, Callable, Iterable, Sequence
 import flint
 
 from .coeffs import PrimeField, RationalField
+from .errors import DivisionError, DomainError
 from .poly import Poly, PolyRing, divides, sub_exp
 
 
 def exact_divide(a: Poly, b: Poly) -> Poly:
-    """The quotient ``a / b`` when ``b`` divides ``a`` exactly; ValueError otherwise.
+    """The quotient ``a / b`` when ``b`` divides ``a`` exactly; :class:`~.errors.DivisionError`
+    otherwise.
 
     Divides leading terms (any monomial ordering is multiplicative, so the leading term of
     ``b`` divides that of every multiple of ``b``)."""
@@ -31,7 +33,7 @@ def exact_divide(a: Poly, b: Poly) -> Poly:
         q = {}
         for e, c in a.terms.items():
             if not divides(be, e):
-                raise ValueError("the division is not exact")
+                raise DivisionError("the division is not exact")
             q[sub_exp(e, be)] = c * inv
         return Poly(ring, q)
     key = ring.order.key
@@ -43,7 +45,7 @@ def exact_divide(a: Poly, b: Poly) -> Poly:
     while rem:
         e = max(rem, key=key)
         if not divides(blm, e):
-            raise ValueError("the division is not exact")
+            raise DivisionError("the division is not exact")
         s = sub_exp(e, blm)
         f = rem.pop(e) * inv
         q[s] = f
@@ -66,11 +68,11 @@ class Matrix:
     def __init__(self, ring: PolyRing, nrows: int, ncols: int, entries: Iterable[Any] = ()) -> None:
         """``entries`` fill the matrix row by row (polynomials or scalars); the rest is zero."""
         if nrows < 0 or ncols < 0:
-            raise ValueError("matrix dimensions must be non-negative")
+            raise DomainError("matrix dimensions must be non-negative")
         self.ring, self.nrows, self.ncols = ring, nrows, ncols
         flat = [_as_poly(ring, e) for e in entries]
         if len(flat) > nrows * ncols:
-            raise ValueError(f"{len(flat)} entries for a {nrows} x {ncols} matrix")
+            raise DomainError(f"{len(flat)} entries for a {nrows} x {ncols} matrix")
         flat += [ring.zero()] * (nrows * ncols - len(flat))
         self.rows = [flat[i * ncols:(i + 1) * ncols] for i in range(nrows)]
 
@@ -78,7 +80,7 @@ class Matrix:
     def from_rows(cls, ring: PolyRing, rows: Sequence[Sequence[Any]]) -> "Matrix":
         ncols = len(rows[0]) if rows else 0
         if any(len(r) != ncols for r in rows):
-            raise ValueError("rows of different lengths")
+            raise DomainError("rows of different lengths")
         return cls(ring, len(rows), ncols, [e for r in rows for e in r])
 
     @classmethod
@@ -135,7 +137,7 @@ class Matrix:
 
     def _same_shape(self, other: "Matrix") -> None:
         if (self.nrows, self.ncols) != (other.nrows, other.ncols):
-            raise ValueError(f"matrices of sizes {self.nrows} x {self.ncols} and "
+            raise DomainError(f"matrices of sizes {self.nrows} x {self.ncols} and "
                              f"{other.nrows} x {other.ncols}")
 
     def __add__(self, other: "Matrix") -> "Matrix":
@@ -158,7 +160,7 @@ class Matrix:
     def __mul__(self, other: Any) -> "Matrix":
         if isinstance(other, Matrix):
             if self.ncols != other.nrows:
-                raise ValueError(f"cannot multiply a {self.nrows} x {self.ncols} matrix by a "
+                raise DomainError(f"cannot multiply a {self.nrows} x {self.ncols} matrix by a "
                                  f"{other.nrows} x {other.ncols} matrix")
             cols = [other.col(j) for j in range(other.ncols)]
             out = []
@@ -179,9 +181,9 @@ class Matrix:
 
     def __pow__(self, k: int) -> "Matrix":
         if self.nrows != self.ncols:
-            raise ValueError("only square matrices have powers")
+            raise DomainError("only square matrices have powers")
         if not isinstance(k, int) or k < 0:
-            raise ValueError("exponent must be a non-negative integer")
+            raise DomainError("exponent must be a non-negative integer")
         result, base = Matrix.identity(self.ring, self.nrows), self
         while k:
             if k & 1:
@@ -213,7 +215,7 @@ class Matrix:
 def _as_poly(ring: PolyRing, e: Any) -> Poly:
     if isinstance(e, Poly):
         if e.ring is not ring and e.ring != ring:
-            raise ValueError("a polynomial of another ring")
+            raise DomainError("a polynomial of another ring")
         return e
     return ring.const(e)
 
@@ -223,7 +225,7 @@ def _as_poly(ring: PolyRing, e: Any) -> Poly:
 def det(m: Matrix) -> Poly:
     """The determinant of a square matrix."""
     if m.nrows != m.ncols:
-        raise ValueError(f"the determinant of a non-square ({m.nrows} x {m.ncols}) matrix")
+        raise DomainError(f"the determinant of a non-square ({m.nrows} x {m.ncols}) matrix")
     n = m.nrows
     if n == 0:
         return m.ring.one()
@@ -454,7 +456,7 @@ def jacobian(polys: Sequence[Poly], ring: PolyRing | None = None) -> Matrix:
     variable."""
     ring = ring or (polys[0].ring if polys else None)
     if ring is None:
-        raise ValueError("the Jacobian of no polynomials needs a ring")
+        raise DomainError("the Jacobian of no polynomials needs a ring")
     return Matrix(ring, len(polys), ring.nvars, [f.diff(j) for f in polys for j in range(ring.nvars)])
 
 

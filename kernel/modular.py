@@ -28,7 +28,7 @@
    finitely many primes are unlucky, and the primes are drawn from ``(2^27, 2^28)`` by a fixed
    pseudo-random sequence (so runs are reproducible).
    If a check fails, the computation starts again from a new prime; after three failures
-   the caller falls back to Buchberger over QQ.
+   :class:`ModularFailure` is raised (the ``auto`` policy of :mod:`.engines` then runs Buchberger).
 """
 from __future__ import annotations
 
@@ -38,13 +38,15 @@ from typing import Any, Sequence
 
 import flint
 
-from .f4 import F4, PackingOverflow, TraceMismatch, initial_degree, is_groebner, replay
+from .errors import NotSupported
+from .f4 import F4, PackingOverflow, initial_degree, is_groebner
+from .f4_trace import TraceMismatch, replay
 from .monomials import Packing, nonnegative_matrix
 
 PRIME_RANGE = (1 << 27, 1 << 28)
 
 
-class ModularFailure(Exception):
+class ModularFailure(NotSupported):
     """The modular method could not produce a verified basis (use another engine)."""
 
 
@@ -193,7 +195,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
         basis = [{unpack(mo): c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
         if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact"):
             return basis
-    raise ModularFailure("no verified basis")
+    raise ModularFailure("modular F4: no verified basis after 3 attempts (use another engine)")
 
 
 def _pack(ints: list[dict], P: Packing):

@@ -1,28 +1,21 @@
-"""Standard bases for arbitrary monomial orderings (local, mixed, global).
+"""Standard bases for arbitrary monomial orderings (local, mixed, global) by Mora's algorithm.
 
 For a non-global ordering ``>`` the ring of interest is the localization
 ``K[x]_> = S^-1 K[x]`` with ``S = {u : LM(u) = 1}`` (for local orderings such as ``ds``:
 the local ring at the origin).  A standard basis of ``I`` is a finite ``G`` in ``I`` whose
 leading monomials generate the leading ideal ``L(I)``.
 
-Two engines (Greuel–Pfister, *A Singular Introduction to Commutative Algebra*, 1.6–1.7):
-
-* ``"mora"``: Buchberger's algorithm with Mora's normal form, which bounds the reduction by
-  the *ecart* ``deg f - deg LM(f)`` and keeps reduced intermediate polynomials as reducers
-  (GP Alg. 1.7.6).  Strategy as in Singular: ecarts follow the sugar (the degree of the
-  homogenized polynomial), one queue holds generators, pairs and postponed polynomials by
-  sugar, a polynomial whose reduction would raise its sugar waits while other work comes
-  first, the reducers (basis elements and intermediate polynomials) persist, leading
-  unit factors ``x^a u`` are cancelled.  Its bases are usually the ones Singular prints.
-* ``"lazard"``: homogenize with a new variable ``t``, compute a Gröbner basis for the global
-  ordering "degree, then ``>`` on the ``x``-part" with the global engine, set ``t = 1``
-  (Lazard's method; every ``f`` in ``I`` has ``t^ecart f^h`` in the homogenized ideal, whose
-  leading monomial is ``t^e LM(f)``).  It computes a global object, so it suffers from
-  components away from the origin, but never from Mora's long detours.
-
-``"auto"`` (the default) runs Mora within a :class:`Budget` and falls back to Lazard: Mora's
-normal form terminates, but on some ideals only after reductions into degree 50 with
-coefficients of thousands of digits (Singular's own ``reduce`` hangs on some of them).
+:func:`mora` is Buchberger's algorithm with Mora's normal form, which bounds the reduction by
+the *ecart* ``deg f - deg LM(f)`` and keeps reduced intermediate polynomials as reducers
+(Greuel–Pfister, *A Singular Introduction to Commutative Algebra*, Alg. 1.7.6).  Strategy as
+in Singular: ecarts follow the sugar (the degree of the homogenized polynomial), one queue
+holds generators, pairs and postponed polynomials by sugar, a polynomial whose reduction would
+raise its sugar waits while other work comes first, the reducers (basis elements and
+intermediate polynomials) persist, leading unit factors ``x^a u`` are cancelled.  Its bases are
+usually the ones Singular prints.  Mora's normal form terminates, but on some ideals only after
+reductions into degree 50 with coefficients of thousands of digits (Singular's own ``reduce``
+hangs on some of them): a :class:`Budget` bounds it, and the engine driver (:mod:`.engines`)
+then falls back to Lazard's method (:mod:`.lazard`).
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
 terms, valid for every ordering, GP 2.5.9) and the product criterion only when it really
@@ -32,12 +25,9 @@ gives a standard representation ``spoly(f, g) = f'g - g'f``: for a local orderin
 from __future__ import annotations
 
 import heapq
-from fractions import Fraction
-from functools import lru_cache
 from typing import Any, Callable, Sequence
 
-from .groebner import groebner, normal_form
-from .order import Block, Exp, MonomialOrder
+from .order import Exp
 from .poly import Poly, PolyRing, add_exp, divides, lcm_exp
 
 Terms = dict[Exp, Any]
@@ -51,7 +41,7 @@ def _mask(e: Exp) -> int:
     return m
 
 
-class _Elem:
+class Elem:
     """A polynomial with its leading data: leading monomial, mask, length and ecart.
 
     ``ecart`` is ``D - deg LM`` for the degree ``D`` of the homogenized polynomial the
@@ -91,7 +81,7 @@ class Budget:
             raise BudgetExceeded
 
 
-def _reduce_by(h: Terms, hlm: Exp, g: _Elem) -> Terms:
+def reduce_by(h: Terms, hlm: Exp, g: Elem) -> Terms:
     """``h - (LT(h)/LT(g)) g`` for ``LM(g) | LM(h)``."""
     shift = tuple([a - b for a, b in zip(hlm, g.lm)])
     factor = h[hlm] / g.p[g.lm]
@@ -110,7 +100,7 @@ def _reduce_by(h: Terms, hlm: Exp, g: _Elem) -> Terms:
     return out
 
 
-def _choose(reducers: Sequence[_Elem], lm: Exp, ecart: int) -> _Elem | None:
+def _choose(reducers: Sequence[Elem], lm: Exp, ecart: int) -> Elem | None:
     """A reducer whose leading monomial divides ``lm``: the first (reducers are kept by
     increasing sugar) unless its ecart exceeds ``ecart``; then one of least ecart, shorter
     ones first, stopping at the first whose ecart is at most ``ecart``."""
@@ -126,7 +116,7 @@ def _choose(reducers: Sequence[_Elem], lm: Exp, ecart: int) -> _Elem | None:
     return best
 
 
-def mora_normal_form(f: Terms, reducers: Sequence[_Elem], key: Callable,
+def mora_normal_form(f: Terms, reducers: Sequence[Elem], key: Callable,
                      budget: Budget | None = None) -> Terms:
     """Mora's weak normal form (GP Alg. 1.7.6 with sugar ecarts): ``h`` with ``u f - h`` in
     the ideal of the reducers for a unit ``u`` (``LM(u) = 1``), and ``h = 0`` or ``LM(h)``
@@ -144,13 +134,13 @@ def mora_normal_form(f: Terms, reducers: Sequence[_Elem], key: Callable,
         if budget is not None:
             budget.charge(h[lm])
         if g.ecart > ecart:
-            _insert(pool, _Elem(h, key, ecart))
+            _insert(pool, Elem(h, key, ecart))
             sugar += g.ecart - ecart
-        h = _reduce_by(h, lm, g)
+        h = reduce_by(h, lm, g)
     return h
 
 
-def _insert(pool: list[_Elem], g: _Elem) -> None:
+def _insert(pool: list[Elem], g: Elem) -> None:
     """Insert keeping ``pool`` sorted by sugar (after the elements of equal sugar)."""
     s = g.sugar
     i = len(pool)
@@ -169,13 +159,14 @@ def cancel_unit(h: Terms, key: Callable) -> Terms:
     return h
 
 
-def _monic(h: Terms, key: Callable) -> Terms:
+def monic(h: Terms, key: Callable) -> Terms:
+    """``h`` divided by its leading coefficient."""
     lm = max(h, key=key)
     inv = 1 / h[lm]
     return {e: c * inv for e, c in h.items()}
 
 
-def _lifts(f: _Elem, g: _Elem) -> bool:
+def _lifts(f: Elem, g: Elem) -> bool:
     """Whether the pair (f, g) satisfies the product criterion with a standard
     representation: coprime leading monomials and ``LM(f')LM(g) != LM(g')LM(f)``."""
     if f.mask & g.mask:
@@ -207,10 +198,10 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
     Raises :class:`BudgetExceeded` when a ``budget`` is given and runs out."""
     key = ring.order.key
     sign = 1 if ring.order.is_global else -1
-    basis: list[_Elem] = []
+    basis: list[Elem] = []
     active: list[bool] = []
     pairs: list[_Pair] = []
-    pool: list[_Elem] = []  # reducers, sorted by sugar
+    pool: list[Elem] = []  # reducers, sorted by sugar
     queue: list[tuple] = []  # (sugar, rank of LM, counter, pair or (h, sugar))
     counter = 0
 
@@ -228,7 +219,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
             heapq.heappop(queue)
         return not queue or (sugar, rank(lm)) <= queue[0][:2]
 
-    def update(h: _Elem) -> None:
+    def update(h: Elem) -> None:
         k = len(basis)
         basis.append(h)
         active.append(True)
@@ -273,9 +264,9 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
                 if not first_in_queue(sugar, lm):
                     push(sugar, lm, (h, sugar))
                     return None
-                _insert(pool, _Elem(h, key, ecart))
+                _insert(pool, Elem(h, key, ecart))
                 sugar += g.ecart - ecart
-            h = _reduce_by(h, lm, g)
+            h = reduce_by(h, lm, g)
             if not h:
                 return h, sugar
             passes += 1
@@ -306,17 +297,17 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
         if done is None or not done[0]:
             continue
         h, sugar = done
-        h = _monic(cancel_unit(h, key), key)
+        h = monic(cancel_unit(h, key), key)
         lm = max(h, key=key)
         if lm == ring.zero_exp:
             return [{ring.zero_exp: ring.field.one}]
-        elem = _Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)))
+        elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)))
         _insert(pool, elem)
         update(elem)
     return [b.p for b, a in zip(basis, active) if a]
 
 
-def _spoly(f: _Elem, g: _Elem, lc: Exp) -> Terms:
+def _spoly(f: Elem, g: Elem, lc: Exp) -> Terms:
     sf = tuple([a - b for a, b in zip(lc, f.lm)])
     sg = tuple([a - b for a, b in zip(lc, g.lm)])
     cf, cg = f.p[f.lm], g.p[g.lm]
@@ -334,64 +325,13 @@ def _spoly(f: _Elem, g: _Elem, lc: Exp) -> Terms:
     return out
 
 
-def homogenized_order(order: MonomialOrder) -> MonomialOrder:
-    """The global ordering on ``(x, t)``: total degree first, then ``order`` on the x-part."""
-    n = order.nvars
-    blocks = [Block("a", 0, (1,) * (n + 1))]
-    rows = [list(r) for r in order.matrix]
-    blocks.append(Block("M", n, tuple(v for r in _square(rows, n) for v in r)))
-    blocks.append(Block("lp", 1))
-    return MonomialOrder(blocks)
+def elems(basis: Sequence[Poly]) -> list[Elem]:
+    """Reducers for :func:`mora_normal_form` from polynomials."""
+    return [Elem(dict(b.terms), b.ring.order.key) for b in basis if not b.is_zero()]
 
 
-def _square(rows: list[list[int]], n: int) -> list[list[int]]:
-    """``n`` linearly independent rows of ``rows`` defining the same ordering (the first
-    rows that raise the rank; later rows never matter once the rank is full)."""
-    chosen: list[list[int]] = []
-    echelon: list[list[Fraction]] = []
-    for r in rows:
-        v = [Fraction(x) for x in r]
-        for e in echelon:
-            piv = next(i for i, x in enumerate(e) if x)
-            if v[piv]:
-                f = v[piv] / e[piv]
-                v = [a - f * b for a, b in zip(v, e)]
-        if any(v):
-            echelon.append(v)
-            chosen.append(r)
-        if len(chosen) == n:
-            break
-    return chosen
 
-
-def _homogenized_ring(ring: PolyRing) -> PolyRing:
-    return PolyRing(ring.field, ring.names + ("@t",), homogenized_order(ring.order))
-
-
-def _homogenize(p: Poly, hring: PolyRing) -> Poly:
-    d = p.total_degree()
-    return Poly(hring, {e + (d - sum(e),): c for e, c in p.terms.items()})
-
-
-def _dehomogenize(p: Poly) -> Terms:
-    out: Terms = {}
-    for e, c in p.terms.items():
-        out[e[:-1]] = out[e[:-1]] + c if e[:-1] in out else c
-    return {e: c for e, c in out.items() if c != 0}
-
-
-def lazard(gens: Sequence[Poly], ring: PolyRing) -> list[Terms]:
-    """A minimal standard basis by Lazard's method: a homogeneous Gröbner basis of the
-    homogenized ideal for :func:`homogenized_order`, dehomogenized.  Unit factors
-    ``x^a u`` of the generators are cancelled first (they only enlarge the global problem)."""
-    key = ring.order.key
-    hring = _homogenized_ring(ring)
-    hgens = [_homogenize(Poly(ring, cancel_unit(g.terms, key)), hring) for g in gens if not g.is_zero()]
-    out = [_monic(cancel_unit(p, key), key) for p in (_dehomogenize(h) for h in groebner(hgens, hring)) if p]
-    return _minimal(out, key)
-
-
-def _minimal(basis: list[Terms], key: Callable) -> list[Terms]:
+def minimal(basis: list[Terms], key: Callable) -> list[Terms]:
     """Drop elements whose leading monomial is divisible by another's (keep the first)."""
     lms = [max(b, key=key) for b in basis]
     keep = []
@@ -399,144 +339,3 @@ def _minimal(basis: list[Terms], key: Callable) -> list[Terms]:
         if not any(divides(lms[j], m) and (lms[j] != m or j < i) for j in range(len(basis)) if j != i):
             keep.append(b)
     return keep
-
-
-ENGINES: dict[str, Callable[[Sequence[Poly], PolyRing], list[Terms]]] = {"mora": mora, "lazard": lazard}
-
-
-def standard_basis(gens: Sequence[Poly], ring: PolyRing | None = None, engine: str = "auto") -> list[Poly]:
-    """A standard basis of the ideal generated by ``gens`` in ``K[x]_>`` for the ring's
-    ordering ``>``.
-
-    Global orderings: the reduced Gröbner basis (:func:`groebner`).  Otherwise a minimal
-    standard basis, monic, with reduced leading terms but unreduced tails (tail reduction
-    need not terminate for local orderings), sorted from the largest leading monomial down
-    as Singular's ``std`` prints it; ``[1]`` when the ideal is the whole ring ``K[x]_>``
-    and ``[]`` for the zero ideal.
-
-    ``engine``: ``"mora"``, ``"lazard"`` or ``"auto"`` (Mora within a :class:`Budget`,
-    which gives Singular's generators in the common cases, then Lazard)."""
-    ring = ring or (gens[0].ring if gens else None)
-    if ring is None:
-        return []
-    gens = [g for g in gens if not g.is_zero()]
-    if ring.order.is_global and engine == "auto":
-        return groebner(gens, ring)
-    if not gens:
-        return []
-    if engine == "auto":
-        try:
-            basis = mora(gens, ring, Budget())
-        except BudgetExceeded:
-            basis = lazard(gens, ring)
-    else:
-        basis = ENGINES[engine](gens, ring)
-    key = ring.order.key
-    basis.sort(key=lambda p: key(max(p, key=key)), reverse=not ring.order.is_global)
-    return [Poly(ring, b) for b in basis]
-
-
-def elems(basis: Sequence[Poly]) -> list[_Elem]:
-    """Reducers for :func:`mora_normal_form` from polynomials."""
-    return [_Elem(dict(b.terms), b.ring.order.key) for b in basis if not b.is_zero()]
-
-
-def weak_normal_form(f: Poly, basis: Sequence[Poly]) -> Poly:
-    """Singular's ``reduce``/``NF`` for a local or mixed ordering: a weak normal form ``h`` of
-    ``f`` (``u f - h`` in the ideal for a unit ``u``, and ``h = 0`` or ``LM(h)`` not in
-    ``L(basis)``), so zero iff ``f`` lies in the ideal of ``K[x]_>`` when ``basis`` is a
-    standard basis.  Mora's normal form (leading terms, then a leading-monomial unit factor
-    cancelled: ``x^a u -> x^a``, then :func:`tail_reduce`), as Singular computes it; for a local degree
-    ordering (``ds Ds ws Ws``) past its :class:`Budget` the exact normal form of
-    :func:`homogenized_normal_form`.  The result is determined up to a unit and modulo the
-    ideal, not term by term."""
-    if f.is_zero():
-        return f
-    key = f.ring.order.key
-    degree_first = all(v < 0 for v in f.ring.order.matrix[0])
-    try:
-        h = mora_normal_form(dict(f.terms), elems(basis), key, Budget() if degree_first else None)
-    except BudgetExceeded:
-        return homogenized_normal_form(f, basis)
-    if not h:
-        return Poly(f.ring, h)
-    return Poly(f.ring, tail_reduce(cancel_unit(h, key), basis))
-
-
-def highest_corner(basis: Sequence[Poly]) -> Exp | None:
-    """The highest corner of a standard basis for a local ordering: the smallest monomial
-    outside the leading ideal, when there are finitely many; every smaller monomial lies in
-    the ideal of the local ring (its normal form is a combination of smaller standard
-    monomials).  None when the quotient is infinite-dimensional or the ordering not local."""
-    from .hilbert import kbase
-    basis = [b for b in basis if not b.is_zero()]
-    if not basis or not basis[0].ring.order.is_local:
-        return None
-    ring = basis[0].ring
-    std = kbase([b.lm() for b in basis], ring.nvars)
-    return min(std, key=ring.order.key) if std else None
-
-
-def tail_reduce(h: Terms, basis: Sequence[Poly]) -> Terms:
-    """Reduce the terms after the leading one, from the largest down, as Singular's ``reduce``
-    mostly does: drop those below the highest corner (:func:`highest_corner`: they lie in the
-    ideal); reduce a term ``t`` by the first basis element (smallest leading monomial first)
-    whose leading monomial divides it, any element when there is a highest corner (finitely
-    many monomials lie above it), else only an element whose ecart is at most that of the
-    tail from ``t`` on (its degree minus ``deg t``: the degrees of the tail never exceed
-    their first maximum, so this ends).  The leading term and the class modulo the ideal do
-    not change."""
-    ring = basis[0].ring if basis else None
-    if ring is None or len(h) < 2:
-        return h
-    key = ring.order.key
-    corner = highest_corner(basis)
-    pool = [_Elem(dict(b.terms), key) for b in sorted(basis, key=lambda b: key(b.lm())) if not b.is_zero()]
-    h = dict(h)
-    done = {max(h, key=key)}
-    while True:
-        if corner is not None:
-            bound = key(corner)
-            h = {e: c for e, c in h.items() if key(e) >= bound}
-        rest = [e for e in h if e not in done]
-        if not rest:
-            return h
-        t = max(rest, key=key)
-        kt = key(t)
-        ecart = max(sum(e) for e in h if key(e) <= kt) - sum(t)
-        g = next((g for g in pool if divides(g.lm, t) and (corner is not None or g.ecart <= ecart)), None)
-        if g is None:
-            done.add(t)
-        else:
-            h = _reduce_by(h, t, g)
-
-
-@lru_cache(maxsize=32)
-def _homogenized_basis(basis: tuple[Poly, ...]) -> tuple[PolyRing, list[Poly]]:
-    hring = _homogenized_ring(basis[0].ring)
-    return hring, groebner([_homogenize(b, hring) for b in basis], hring)
-
-
-def homogenized_normal_form(f: Poly, basis: Sequence[Poly]) -> Poly:
-    """A normal form with ``f - h`` in the ideal (no unit) and ``h = 0`` or ``LM(h)`` not in
-    ``L(basis)``: the global normal form of ``t^k f^h`` modulo a Gröbner basis of the
-    homogenized generators (ordering :func:`homogenized_order`) with ``t = 1``, for the
-    first ``k = 0, 1, 3, 7, ...`` whose result has a leading monomial outside ``L(basis)``.
-    Such a ``k`` exists when the ordering is a local degree ordering (its first weight row
-    negative): the leading monomials of all ``h`` congruent to ``f`` whose leading monomial
-    lies in ``L(basis)`` have bounded degree, and for ``k`` beyond that bound plus the ecarts
-    of the basis, ``t^k`` times such a monomial is a leading monomial of the homogenized
-    ideal.  For other orderings the loop need not end."""
-    basis = [b for b in basis if not b.is_zero()]
-    if f.is_zero() or not basis:
-        return f
-    ring, key = f.ring, f.ring.order.key
-    hring, hbasis = _homogenized_basis(tuple(basis))
-    lms = [b.lm() for b in basis]
-    t = hring.gen(ring.nvars)
-    fh, k = _homogenize(f, hring), 0
-    while True:
-        h = _dehomogenize(normal_form(fh * t ** k, hbasis))
-        if not h or not any(divides(m, max(h, key=key)) for m in lms):
-            return Poly(ring, h)
-        k = 2 * k + 1

@@ -10,6 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
+from .errors import OrderingError
+
 Exp = tuple[int, ...]
 
 
@@ -58,7 +60,7 @@ class MonomialOrder:
         covered = sum(b.size for b in self.blocks if b.kind != "a")
         self.nvars = covered if nvars is None else nvars
         if covered != self.nvars:
-            raise ValueError(f"the ordering covers {covered} variables, the ring has {self.nvars}")
+            raise OrderingError(f"the ordering covers {covered} variables, the ring has {self.nvars}")
         self.matrix = self._matrix()
         sig = (self.blocks, tuple(map(tuple, self.matrix)))
         if sig not in _KEYS:  # checking and compiling cost more than many small Gröbner bases
@@ -108,7 +110,7 @@ class MonomialOrder:
                     m[i] = [a - f * b for a, b in zip(m[i], m[rank])]
             rank += 1
         if rank < n:
-            raise ValueError("the ordering is not a monomial ordering (degenerate weights)")
+            raise OrderingError("the ordering is not a monomial ordering (degenerate weights)")
 
     def _compile(self) -> Callable[[Exp], tuple]:
         real = [b for b in self.blocks if b.kind != "a"]

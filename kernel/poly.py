@@ -10,6 +10,7 @@ from operator import le as _le
 from typing import Any, Iterator, Sequence
 
 from .coeffs import Field
+from .errors import DomainError
 from .order import Exp, MonomialOrder
 
 
@@ -18,9 +19,9 @@ class PolyRing:
 
     def __init__(self, field: Field, names: Sequence[str], order: MonomialOrder) -> None:
         if order.nvars != len(names):
-            raise ValueError(f"the ordering has {order.nvars} variables, the ring {len(names)}")
+            raise DomainError(f"the ordering has {order.nvars} variables, the ring {len(names)}")
         if len(set(names)) != len(names):
-            raise ValueError("variable names must be distinct")
+            raise DomainError("variable names must be distinct")
         self.field = field
         self.names = tuple(names)
         self.order = order
@@ -95,7 +96,7 @@ class Poly:
         """Leading exponent with respect to the ring's ordering."""
         if self._lm is None:
             if not self.terms:
-                raise ValueError("the zero polynomial has no leading monomial")
+                raise DomainError("the zero polynomial has no leading monomial")
             self._lm = max(self.terms, key=self.ring.order.key)
         return self._lm
 
@@ -137,7 +138,7 @@ class Poly:
     def _coerce(self, other: Any) -> "Poly":
         if isinstance(other, Poly):
             if other.ring is not self.ring and other.ring != self.ring:
-                raise ValueError("polynomials of different rings")
+                raise DomainError("polynomials of different rings")
             return other
         return self.ring.const(other)
 
@@ -205,7 +206,7 @@ class Poly:
 
     def __pow__(self, k: int) -> "Poly":
         if not isinstance(k, int) or k < 0:
-            raise ValueError("exponent must be a non-negative integer")
+            raise DomainError("exponent must be a non-negative integer")
         result, base = self.ring.one(), self
         if len(self.terms) == 1:
             (e, c), = self.terms.items()

@@ -4,14 +4,14 @@ Ideals are lists of :class:`Poly` of one ring with a global ordering; results ar
 Gröbner bases in that ring (see :mod:`.ideals`).  The algorithms (Greuel–Pfister, *A Singular
 Introduction to Commutative Algebra*, ch. 4):
 
-* **Reduction to dimension zero** (Gianni–Trager–Zacharias).  For a maximal independent set
-  ``u`` of ``I`` and the other variables ``x``, a Gröbner basis for the product ordering
-  ``(dp(x), dp(u))`` is one of ``I K(u)[x]``, which is zero-dimensional; with ``h`` the
-  product of the leading coefficients in ``K[u]`` of the elements with minimal leading
-  ``x``-monomials (a Gröbner basis over ``K(u)``), ``I K(u)[x] ∩ K[x,u] = I : h^∞`` and
-  ``I = (I : h^∞) ∩ (I + h^m)`` for the saturation exponent ``m``.
+* **Reduction to dimension zero** (Gianni–Trager–Zacharias; :mod:`.zerodim`).  For a
+  maximal independent set ``u`` of ``I`` and the other variables ``x``, a Gröbner basis for
+  the product ordering ``(dp(x), dp(u))`` is one of ``I K(u)[x]``, which is zero-dimensional;
+  with ``h`` the product of the leading coefficients in ``K[u]`` of the elements with minimal
+  leading ``x``-monomials (a Gröbner basis over ``K(u)``), ``I K(u)[x] ∩ K[x,u] = I : h^∞``
+  and ``I = (I : h^∞) ∩ (I + h^m)`` for the saturation exponent ``m``.
 * **Zero-dimensional primes over K(u)**: factor the minimal polynomial of each variable
-  (an elimination basis) and split; add the squarefree parts (Seidenberg's lemma makes the
+  (:mod:`.minpoly`) and split; add the squarefree parts (Seidenberg's lemma makes the
   ideal radical); an ideal whose vector-space dimension equals the degree of an irreducible
   minimal polynomial is maximal.  Otherwise a random linear form plays the variable
   (generic coordinates).  The primes of ``K[x,u]`` are the contractions ``P : h_P^∞``.
@@ -37,455 +37,21 @@ field enters only through field operations, factorization (:mod:`.factor`) and `
 from __future__ import annotations
 
 import math
-import random
 from typing import Callable, Sequence
 
-from .factor import factorize, normalize, to_flint
+from .coeffs import GF, QQ
+from .factor import normalize
 from .groebner import groebner, normal_form
 from .ideals import (Ideal, dimension, independent_set, intersect, is_unit, move,
                      product_order, quotient, ring_of, saturate_poly, saturation_exponent, std,
                      with_order)
 from .order import Block, Exp, MonomialOrder
-from .coeffs import GF, QQ
 from .poly import Poly, PolyRing
-
-Component = tuple[list[Poly], list[Poly]]
-
-_ATTEMPTS = 40
-
-
-# --- small helpers ----------------------------------------------------------------------
-
-def _irreducible(f: Poly, cache: dict | None = None) -> list[Poly]:
-    """Distinct irreducible non-constant factors of ``f``."""
-    if cache is not None and f in cache:
-        return cache[f]
-    facs = [] if f.is_constant() else [g for g, _ in factorize(f)[1]]
-    if cache is not None:
-        cache[f] = facs
-    return facs
-
-
-def _sqfree_product(polys: Sequence[Poly], ring: PolyRing) -> Poly:
-    """The product of the distinct irreducible factors of the polynomials."""
-    seen: dict[Poly, None] = {}
-    for p in polys:
-        for g in _irreducible(p):
-            seen.setdefault(g)
-    result = ring.one()
-    for g in seen:
-        result = result * g
-    return result
+from .zerodim import Component, Reduction, contract, irreducible, separator
 
 
 def _is_linear(basis: Sequence[Poly]) -> bool:
     return all(p.total_degree() <= 1 for p in basis)
-
-
-def _x_part(e: Exp, xs: Sequence[int]) -> Exp:
-    return tuple(e[i] for i in xs)
-
-
-def _lc_x(p: Poly, xs: Sequence[int]) -> Poly:
-    """The coefficient in ``K[u]`` of the leading ``x``-monomial (product ordering)."""
-    lead = _x_part(p.lm(), xs)
-    xset = set(xs)
-    return Poly(p.ring, {tuple(0 if i in xset else v for i, v in enumerate(e)): c
-                         for e, c in p.terms.items() if _x_part(e, xs) == lead})
-
-
-def _leading_coefficients(basis: Sequence[Poly], xs: Sequence[int]) -> list[Poly]:
-    """The leading coefficients in ``K[u]`` of a Gröbner basis of ``I K(u)[x]`` taken from
-    a basis for a product ordering ``x >> u``: one element (the one with the smallest
-    coefficient) for each minimal ``x``-leading monomial suffices."""
-    best: dict[Exp, Poly] = {}
-    for p in basis:
-        lead, c = _x_part(p.lm(), xs), _lc_x(p, xs)
-        if lead not in best or (c.total_degree(), len(c)) < (best[lead].total_degree(), len(best[lead])):
-            best[lead] = c
-
-    def divides(a: Exp, b: Exp) -> bool:
-        return a != b and all(i <= j for i, j in zip(a, b))
-    return [c for lead, c in best.items() if not any(divides(o, lead) for o in best)]
-
-
-def _unit_over_ku(basis: Sequence[Poly], xs: Sequence[int]) -> bool:
-    """Whether a basis for a product ordering ``x >> u`` generates 1 over ``K(u)``."""
-    return any(not any(p.lm()[i] for i in xs) for p in basis)
-
-
-def _vdim(basis: Sequence[Poly], xs: Sequence[int]) -> int:
-    """``dim_K(u) K(u)[x]/I`` from a zero-dimensional basis for a product ordering."""
-    lms = [_x_part(p.lm(), xs) for p in basis]
-    n = len(xs)
-    bounds = []
-    for i in range(n):
-        pure = [e[i] for e in lms if e[i] and not any(e[j] for j in range(n) if j != i)]
-        if not pure:
-            raise ValueError("the ideal is not zero-dimensional over K(u)")
-        bounds.append(min(pure))
-    count = 0
-
-    def walk(prefix: list[int]) -> None:
-        nonlocal count
-        k = len(prefix)
-        if k == n:
-            count += 1
-            return
-        for v in range(bounds[k]):
-            cand = prefix + [v]
-            if any(all(e[j] <= cand[j] for j in range(k + 1)) and not any(e[k + 1:]) for e in lms):
-                break
-            walk(cand)
-
-    walk([])
-    return count
-
-
-def _in_target(f: Poly, target: int) -> list[tuple[Poly, int]]:
-    """Irreducible factors of ``f`` (with multiplicity) involving the variable ``target``."""
-    return [(g, m) for g, m in factorize(f)[1] if g.degree_in(target) > 0]
-
-
-# --- zero-dimensional decomposition over K(u) --------------------------------------------
-
-class _Quotient:
-    """Linear algebra in ``K(u)[x]/I`` without rational functions: elements are vectors over
-    ``K[u]`` (flint polynomials) on the standard ``x``-monomials with a common denominator;
-    normal forms by fraction-free (pseudo-) reduction modulo a Gröbner basis for the product
-    ordering ``x >> u``, minimal polynomials by fraction-free Krylov iteration."""
-
-    def __init__(self, basis: Sequence[Poly], ring: PolyRing, xs: Sequence[int]) -> None:
-        self.ctx = to_flint(ring.one()).context()
-        self.xs = list(xs)
-        xset = set(xs)
-        self.key = _product_x_key(len(xs))
-        self.reducers = []
-        for p in basis:
-            vec = self._vector(p, xset)
-            lead = max(vec, key=self.key)
-            self.reducers.append((lead, vec[lead], vec))
-
-    def _vector(self, p: Poly, xset: set) -> dict:
-        parts: dict[Exp, dict] = {}
-        for e, c in p.terms.items():
-            xe = tuple(e[i] for i in self.xs)
-            ue = tuple(0 if i in xset else v for i, v in enumerate(e))
-            parts.setdefault(xe, {})[ue] = c
-        return {xe: self.ctx.from_dict(d) for xe, d in parts.items()}
-
-    def normal_form(self, f: dict) -> tuple[dict, object]:
-        """``(r, D)`` with ``f = r / D`` in ``K(u)[x]/I``, ``r`` reduced."""
-        f = dict(f)
-        done: dict = {}
-        scale = self.ctx.from_dict({(0,) * self.ctx.nvars(): 1})
-        while f:
-            m = max(f, key=self.key)
-            c = f.pop(m)
-            hit = next((r for r in self.reducers if all(a >= b for a, b in zip(m, r[0]))), None)
-            if hit is None:
-                done[m] = c
-                continue
-            lead, lc, vec = hit
-            shift = tuple(a - b for a, b in zip(m, lead))
-            g = c.gcd(lc)
-            mul, fac = lc / g, c / g
-            if not mul.is_one():
-                f = {k: v * mul for k, v in f.items()}
-                done = {k: v * mul for k, v in done.items()}
-                scale = scale * mul
-            for e, v in vec.items():
-                if e == lead:
-                    continue
-                t = tuple(a + b for a, b in zip(e, shift))
-                w = f.get(t)
-                w = -fac * v if w is None else w - fac * v
-                if w.is_zero():
-                    f.pop(t, None)
-                else:
-                    f[t] = w
-        return self._reduce_content(done, scale)
-
-    def _reduce_content(self, vec: dict, scale):
-        g = scale
-        for v in vec.values():
-            if g.is_one():
-                break
-            g = g.gcd(v)
-        if not g.is_one() and not g.is_zero():
-            vec = {k: v / g for k, v in vec.items()}
-            scale = scale / g
-        return vec, scale
-
-    def times_form(self, vec: dict, form: dict) -> dict:
-        out: dict = {}
-        for e, v in vec.items():
-            for pos, c in form.items():
-                t = e[:pos] + (e[pos] + 1,) + e[pos + 1:]
-                w = out.get(t)
-                w = v * c if w is None else w + v * c
-                if w.is_zero():
-                    out.pop(t, None)
-                else:
-                    out[t] = w
-        return out
-
-    def minimal_poly(self, form: dict) -> list:
-        """The coefficients (in ``K[u]``, content removed) of the minimal polynomial over
-        ``K(u)`` of multiplication by the linear form ``{position in xs: coefficient}``."""
-        one = self.ctx.from_dict({(0,) * self.ctx.nvars(): 1})
-        vec, denom = self.normal_form({(0,) * len(self.xs): one})
-        rows: list[tuple[Exp, dict, dict]] = []
-        denoms = []
-        k = 0
-        while True:
-            denoms.append(denom)
-            v, combo = dict(vec), {k: one}
-            for piv, row, rc in rows:
-                a = v.get(piv)
-                if a is None:
-                    continue
-                b = row[piv]
-                g = a.gcd(b)
-                a, b = a / g, b / g
-                v = _axpy(b, v, -a, row)
-                combo = _axpy(b, combo, -a, rc)
-            if not v:
-                coeffs = [combo.get(j, one * 0) * denoms[j] for j in range(k + 1)]
-                content = coeffs[-1]
-                for c in coeffs:
-                    content = content.gcd(c)
-                return [c / content for c in coeffs]
-            v, combo = _primitive_pair(v, combo)
-            rows.append((max(v, key=self.key), v, combo))
-            k += 1
-            vec, d = self.normal_form(self.times_form(vec, form))
-            denom = denom * d
-
-
-def _axpy(a, x: dict, b, y: dict) -> dict:
-    """``a*x + b*y`` for sparse vectors with flint entries."""
-    out = {k: a * v for k, v in x.items()}
-    for k, v in y.items():
-        w = out.get(k)
-        w = b * v if w is None else w + b * v
-        if w.is_zero():
-            out.pop(k, None)
-        else:
-            out[k] = w
-    return out
-
-
-def _primitive_pair(v: dict, combo: dict) -> tuple[dict, dict]:
-    g = None
-    for w in list(v.values()) + list(combo.values()):
-        g = w if g is None else g.gcd(w)
-        if g.is_one():
-            return v, combo
-    return {k: w / g for k, w in v.items()}, {k: w / g for k, w in combo.items()}
-
-
-def _product_x_key(n: int) -> Callable[[Exp], tuple]:
-    """The ``dp`` key on ``x``-exponents (the ``x`` block of :func:`product_order`)."""
-    return lambda e: (sum(e), *[-v for v in reversed(e[1:])])
-
-
-class _ZeroDim:
-    """Decompositions of ideals ``I`` of ``K[x,u]`` with ``I K(u)[x]`` zero-dimensional;
-    ``ring`` has the product ordering ``x >> u`` and ideals are Gröbner bases there.
-    Components are ideals of ``K[x,u]`` whose extensions to ``K(u)[x]`` are the primes and
-    primaries (contract them with :func:`_contract`)."""
-
-    def __init__(self, ring: PolyRing, xs: Sequence[int], us: Sequence[int]) -> None:
-        self.ring, self.xs, self.us = ring, list(xs), list(us)
-        self.rng = random.Random(20240613)
-        self.minpolys: dict[tuple, Poly] = {}
-        n = ring.nvars
-        name = "t"
-        while name in ring.names:
-            name = "_" + name
-        # ring plus a last variable t for linear forms, ordered (dp(x), dp(t), dp(u))
-        self.big = PolyRing(ring.field, list(ring.names) + [name],
-                            product_order(n + 1, [self.xs, [n], self.us]))
-
-    def minimal_poly(self, g: list[Poly], target: int) -> Poly:
-        """The minimal polynomial over ``K(u)`` of the variable ``target`` modulo ``g``,
-        as a polynomial of ``K[u][target]``."""
-        key = (tuple(g), target)
-        if key not in self.minpolys:
-            pos = self.xs.index(target)
-            f = _Quotient(g, self.ring, self.xs).minimal_poly({pos: self.ring.field.one})
-            self.minpolys[key] = self._as_poly(f, self.ring, target)
-        return self.minpolys[key]
-
-    def form_minimal_poly(self, g: list[Poly], ell: Poly) -> Poly:
-        """The minimal polynomial of the linear form ``ell`` as a polynomial in the extra
-        variable ``t`` of ``self.big``."""
-        form = {self.xs.index(e.index(1)): c for e, c in ell.terms.items()}
-        f = _Quotient(g, self.ring, self.xs).minimal_poly(form)
-        return self._as_poly(f, self.big, self.ring.nvars)
-
-    def _as_poly(self, coeffs: list, ring: PolyRing, var: int) -> Poly:
-        """``sum(coeffs[j] * var^j)`` with flint coefficients in ``K[u]``."""
-        conv = self.ring.field
-        terms = {}
-        for j, c in enumerate(coeffs):
-            for e, v in c.to_dict().items():
-                exp = [int(k) for k in e] + [0] * (ring.nvars - self.ring.nvars)
-                exp[var] = j
-                terms[tuple(exp)] = v if not conv.characteristic else conv(int(v))
-        return Poly(ring, terms)
-
-    def random_form(self, attempt: int) -> Poly:
-        p = self.ring.field.characteristic
-        span = 30 + 10 * attempt if not p else min(p - 1, 1000)
-        ell = self.ring.zero()
-        for i in self.xs:
-            ell = ell + self.ring.gen(i) * self.rng.randint(1, span)
-        return ell
-
-    def by_form(self, g: list[Poly], d: int) -> tuple[list[Component], bool] | None:
-        """Random linear forms ``ell`` until one is cyclic (its minimal polynomial ``f`` has
-        degree ``d = vdim(g)``, so ``K(u)[x]/g ≅ K(u)[t]/(f)``) or ``f`` has several
-        irreducible factors ``p^m``.  Returns the pieces ``(g + p(ell)^m, g + p(ell))`` and
-        whether ``ell`` was cyclic (then they are the primary components and their primes);
-        None after ``_ATTEMPTS`` failures."""
-        n = self.ring.nvars
-        for attempt in range(_ATTEMPTS):
-            ell = self.random_form(attempt)
-            f = self.form_minimal_poly(g, ell)
-            facs = _in_target(f, n)
-            cyclic = f.degree_in(n) == d
-            if cyclic or len(facs) > 1:
-                images = [self.ring.gen(i) for i in range(n)] + [ell]
-
-                def back(p: Poly) -> Poly:
-                    return Poly(self.big, p.terms).compose(images, self.ring)
-                return [(groebner(g + [back(p ** m)], self.ring), groebner(g + [back(p)], self.ring))
-                        for p, m in facs], cyclic
-        return None
-
-    def primes(self, basis: list[Poly]) -> list[list[Poly]]:
-        """The primes containing ``I`` over ``K(u)``: split by factors of minimal polynomials
-        of the variables, make radical by adding their squarefree parts (Seidenberg), then a
-        cyclic linear form of the radical ideal gives its primes."""
-        out: list[list[Poly]] = []
-        todo = [basis]
-        while todo:
-            g = todo.pop()
-            if _unit_over_ku(g, self.xs):
-                continue
-            d = _vdim(g, self.xs)
-            if d == 1:
-                out.append(g)
-                continue
-            status, extra = "radical", []
-            for i in reversed(self.xs):
-                facs = _in_target(self.minimal_poly(g, i), i)
-                if len(facs) > 1:
-                    todo.extend(groebner(g + [p], self.ring) for p, _ in facs)
-                    status = "split"
-                    break
-                p, m = facs[0]
-                if p.degree_in(i) == d:
-                    out.append(g)
-                    status = "prime"
-                    break
-                if m > 1:
-                    extra.append(p)
-            if status != "radical":
-                continue
-            if extra:
-                todo.append(groebner(g + extra, self.ring))
-                continue
-            found = self.by_form(g, d)
-            if found is None:
-                raise RuntimeError("no primitive element found (inseparable extension or a too small field)")
-            pieces, cyclic = found
-            if cyclic:
-                out.extend(p for _, p in pieces)
-            else:
-                todo.extend(p for _, p in pieces)
-        return out
-
-    def separated(self, g: list[Poly]) -> list[Component]:
-        """The primary components of ``g`` over ``K(u)`` from its primes: ``g : s^∞`` for an
-        element ``s`` of all primes but one (all primes are maximal over ``K(u)``)."""
-        primes = self.primes(g)
-        if len(primes) == 1:
-            return [(g, primes[0])]
-        contracted = [_contract(p, self.ring, self.xs)[0] for p in primes]
-        return [(saturate_poly(g, _separator(contracted, i, self.ring), self.ring, is_basis=True), p)
-                for i, p in enumerate(primes)]
-
-    def primaries(self, basis: list[Poly]) -> list[Component]:
-        """The primary components over ``K(u)`` with their primes: a cyclic variable gives
-        them at once; the prime-power factors of a variable's minimal polynomial split the
-        ideal into coprime pieces; a piece without either is separated by its primes."""
-        out: list[Component] = []
-        todo = [basis]
-        while todo:
-            g = todo.pop()
-            if _unit_over_ku(g, self.xs):
-                continue
-            d = _vdim(g, self.xs)
-            found = None
-            for i in reversed(self.xs):
-                f = self.minimal_poly(g, i)
-                facs = _in_target(f, i)
-                if f.degree_in(i) == d or len(facs) > 1:
-                    found = ([(groebner(g + [p ** m], self.ring), groebner(g + [p], self.ring))
-                              for p, m in facs], f.degree_in(i) == d)
-                    break
-            if found is None:
-                out.extend(self.separated(g))
-                continue
-            pieces, cyclic = found
-            if cyclic:
-                out.extend(pieces)
-            else:
-                todo.extend(q for q, _ in pieces)
-        return out
-
-
-def _contract(basis: list[Poly], ring: PolyRing, xs: Sequence[int]) -> tuple[list[Poly], Poly]:
-    """``(I K(u)[x] ∩ K[x,u], h)``: the contraction ``I : h^∞`` of an ideal given by a Gröbner
-    basis for the product ordering, and ``h`` (the squarefree product of the leading
-    coefficients)."""
-    h = _sqfree_product(_leading_coefficients(basis, xs), ring)
-    if h.is_constant():
-        return basis, h
-    return saturate_poly(basis, h, ring, is_basis=True), h
-
-
-# --- the reduction to dimension zero ---------------------------------------------------
-
-class _Reduction:
-    """An ideal seen over ``K(u)``: the independent set, the product-order ring and basis,
-    ``h`` and the zero-dimensional primes contracted to ``K[x,u]`` (in the input ring)."""
-
-    def __init__(self, basis: list[Poly], ring: PolyRing, us: Sequence[int] | None = None) -> None:
-        n = ring.nvars
-        self.ring = ring
-        self.us = independent_set(basis, n) if us is None else list(us)
-        self.xs = [i for i in range(n) if i not in self.us]
-        self.bring = with_order(ring, product_order(n, [self.xs, self.us]))
-        self.bbasis = groebner(move(basis, self.bring), self.bring)
-        self.h = Poly(ring, _sqfree_product(_leading_coefficients(self.bbasis, self.xs),
-                                            self.bring).terms)
-
-    def _contracted(self, basis: list[Poly]) -> list[Poly]:
-        return groebner(move(_contract(basis, self.bring, self.xs)[0], self.ring), self.ring)
-
-    def primes(self) -> list[list[Poly]]:
-        """The contracted primes (reduced bases in the input ring)."""
-        zd = _ZeroDim(self.bring, self.xs, self.us)
-        return [self._contracted(p) for p in zd.primes(self.bbasis)]
-
-    def primaries(self) -> list[Component]:
-        """The contracted primary components of ``I K(u)[x]`` with their primes."""
-        zd = _ZeroDim(self.bring, self.xs, self.us)
-        return [(self._contracted(q), self._contracted(p)) for q, p in zd.primaries(self.bbasis)]
 
 
 # --- minimal associated primes ----------------------------------------------------------
@@ -509,7 +75,7 @@ def _facstd(basis: list[Poly], ring: PolyRing, cache: dict) -> list[list[Poly]]:
         if is_unit(g) or any(normal_form(f, g).is_zero() for f in nonzero):
             continue
         for p in g:
-            facs = [f for f in _irreducible(p, cache) if f not in nonzero]
+            facs = [f for f in irreducible(p, cache) if f not in nonzero]
             if not facs:
                 break
             if len(facs) > 1 or facs[0] != normalize(p):
@@ -536,12 +102,12 @@ def _min_ass(basis: list[Poly], ring: PolyRing, cache: dict, split: bool = True)
         if _is_linear(piece):
             primes.append(piece)
             continue
-        red = _Reduction(piece, ring)
+        red = Reduction(piece, ring)
         primes.extend(red.primes())
         h = red.h
         if h.is_constant() or _contained(quotient(piece, [h], ring), piece):
             continue
-        for f in _irreducible(h, cache):
+        for f in irreducible(h, cache):
             primes.extend(_min_ass(groebner(piece + [f], ring), ring, cache))
     return _minimal_ideals(primes)
 
@@ -580,7 +146,7 @@ class _Parameters:
         """``J = I K(a)[x] ∩ K[x, a]``: the lifted generators saturated by the product of the
         leading coefficients (in ``K[a]``) of their Gröbner basis, eliminating ``x``."""
         basis = groebner([self._lift(p) for p in ideal if not p.is_zero()], self.big)
-        return _contract(basis, self.big, range(self.n))[0]
+        return contract(basis, self.big, range(self.n))[0]
 
     def generic(self, prime: list[Poly]) -> bool:
         """Whether a prime, a reduced basis for the elimination ordering, meets ``K[a]`` in 0."""
@@ -682,17 +248,6 @@ def is_primary(ideal: Ideal, ring: PolyRing | None = None) -> bool:
 
 # --- primary decomposition ---------------------------------------------------------------
 
-def _separator(primes: list[list[Poly]], i: int, ring: PolyRing) -> Poly:
-    """An element of every prime but the ``i``-th, not in the ``i``-th."""
-    s = ring.one()
-    for j, p in enumerate(primes):
-        if j == i:
-            continue
-        outside = [g for g in p if not normal_form(g, primes[i]).is_zero()]
-        s = s * min(outside, key=lambda g: (g.total_degree(), len(g)))
-    return s
-
-
 def _split_off(basis: list[Poly], h: Poly, ring: PolyRing,
                saturated: list[Poly] | None = None) -> list[Poly] | None:
     """``I + h^m`` with ``m`` the saturation exponent of ``h``, or None when ``I : h == I``."""
@@ -713,7 +268,7 @@ def _primdec_gtz(basis: list[Poly], ring: PolyRing) -> list[Component]:
     found = [ring.one()]
     rest: list[Poly] | None = basis
     while rest is not None and not is_unit(rest):
-        red = _Reduction(rest, ring)
+        red = Reduction(rest, ring)
         new = red.primaries()
         comps += new
         found = intersect(found, *[q for q, _ in new], ring=ring)
@@ -732,7 +287,7 @@ def _primdec_sy(basis: list[Poly], ring: PolyRing, cache: dict) -> list[Componen
         return _extract(basis, primes[0], ring, cache)
     rest = basis
     for i, p in enumerate(primes):
-        s = _separator(primes, i, ring)
+        s = separator(primes, i, ring)
         sat = saturate_poly(rest, s, ring, is_basis=True)
         comps += _extract(sat, p, ring, cache)
         m = saturation_exponent(rest, sat, [s], ring, is_basis=True)
@@ -745,7 +300,7 @@ def _primdec_sy(basis: list[Poly], ring: PolyRing, cache: dict) -> list[Componen
 def _extract(pseudo: list[Poly], prime: list[Poly], ring: PolyRing, cache: dict) -> list[Component]:
     """The isolated primary component of a pseudo-primary ideal (radical ``prime``) and the
     decomposition of what remains."""
-    red = _Reduction(pseudo, ring, independent_set(prime, ring.nvars))
+    red = Reduction(pseudo, ring, independent_set(prime, ring.nvars))
     h = red.h
     primary = pseudo if h.is_constant() else saturate_poly(pseudo, h, ring, is_basis=True)
     comps = [(primary, prime)]

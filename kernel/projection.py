@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from typing import Iterator, Sequence
 
 from .dimension import krull_dim
+from .errors import OrderingError
 from .factor import factorize, normalize
 from .hilbert import degree
 from .ideals import dp_ring, eliminate, move, product_order, saturate_poly, std
@@ -60,7 +61,7 @@ class Projection:
 def _check_params(ring: PolyRing, params: int) -> int:
     n = ring.nvars - params
     if params and not ring.order.is_elimination_for(list(range(n))):
-        raise ValueError("projection: the ordering must eliminate the non-parameters first")
+        raise OrderingError("projection: the ordering must eliminate the non-parameters first")
     return n
 
 

@@ -15,6 +15,7 @@ from typing import Any, Sequence
 import flint
 
 from .coeffs import Field
+from .errors import DomainError, NotSupported
 
 
 class RationalFunctionField(Field):
@@ -23,17 +24,17 @@ class RationalFunctionField(Field):
     def __init__(self, characteristic: int, params: Sequence[str]) -> None:
         params = tuple(params)
         if not params:
-            raise ValueError("a rational function field needs at least one parameter")
+            raise DomainError("a rational function field needs at least one parameter")
         if len(set(params)) != len(params):
-            raise ValueError("parameter names must be distinct")
+            raise DomainError("parameter names must be distinct")
         p = characteristic
         if p == 0:
             self.ctx = flint.fmpz_mpoly_ctx.get(params, ordering="lex")
         else:
             if p < 2 or not flint.fmpz(p).is_prime():
-                raise ValueError(f"characteristic {p} is not a prime")
+                raise DomainError(f"characteristic {p} is not a prime")
             if p >= 2**63:
-                raise ValueError(f"characteristic {p} is too large (at most 2^63)")
+                raise NotSupported(f"characteristic {p} is too large (at most 2^63)")
             self.ctx = flint.nmod_mpoly_ctx.get(params, ordering="lex", modulus=p)
         self.characteristic = p
         self.params = params
@@ -75,7 +76,7 @@ class RationalFunctionField(Field):
         if isinstance(x, str):
             if x in self.params:
                 return self.gen(self.params.index(x))
-            raise ValueError(f"{x!r} is not a parameter of {self!r}")
+            raise DomainError(f"{x!r} is not a parameter of {self!r}")
         if isinstance(x, (flint.fmpz_mpoly, flint.nmod_mpoly)) and x.context() is self.ctx:
             return RatFunc(self, x, self.ctx.constant(1))
         raise TypeError(f"cannot convert {x!r} to an element of {self!r}")
@@ -90,7 +91,7 @@ class RationalFunctionField(Field):
     def to_fraction(self, c: "RatFunc") -> Fraction:
         """The element as a Fraction (symmetric representative over Z/p) when it is constant."""
         if not self.is_constant(c):
-            raise ValueError(f"{format_coeff(c)} is not a constant")
+            raise DomainError(f"{format_coeff(c)} is not a constant")
         num, den = _const(c.num), _const(c.den)
         if self.characteristic:
             return Fraction(self._symmetric(num * pow(den, -1, self.characteristic)))

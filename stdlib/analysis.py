@@ -33,12 +33,12 @@ from mech.dsl.errors import MechRuntimeError
 from mech.kernel import Poly, PolyRing
 from mech.kernel.factor import factorize
 from mech.kernel.groebner import normal_form
-from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, is_subset, move, radical,
-                                saturate_poly, std)
+from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, is_subset, move, saturate_poly,
+                                std)
 from mech.kernel.local import (AlgebraicPoint, centre_at, classify_algebraic_point, classify_point,
                                primitive_element, tangent_cone, tangent_cone_at, tangent_cone_over)
 from mech.kernel.matrix import Matrix, minors
-from mech.kernel.primdec import min_ass_gtz, primdec_gtz
+from mech.kernel.primdec import min_ass_gtz, primdec_gtz, radical
 from mech.kernel.projection import project_primes
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.realpoints import has_real_points, linear_point

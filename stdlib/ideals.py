@@ -11,6 +11,7 @@ from ..dsl.values import Ideal, IntVec, List
 from ..kernel import Poly
 from ..kernel import homog as _homog
 from ..kernel import ideals as K
+from ..kernel import primdec as _primdec
 from ..dsl.registry import command
 from .standard import normalize
 
@@ -121,7 +122,7 @@ def radical(I: Ideal) -> Ideal:
     """
     _global(I, "radical")
     with _available("radical", I.ring):
-        return _std_ideal(I.ring, K.radical(I.nonzero(), ring=I.ring))
+        return _std_ideal(I.ring, _primdec.radical(I.nonzero(), ring=I.ring))
 
 
 @command("homog")

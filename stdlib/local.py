@@ -16,10 +16,10 @@ from ..kernel import Poly, PolyRing
 from ..kernel import hilbert as H
 from ..kernel import local as L
 from ..kernel.dimension import krull_dim
+from ..kernel.engines import standard_basis
 from ..kernel.groebner import groebner
 from ..kernel.ideals import intersect, move, with_order
 from ..kernel.matrix import jacobian, minors
-from ..kernel.mora import standard_basis as mora_std
 from ..kernel.order import Block, MonomialOrder
 from ..kernel.primdec import equidim
 from ..dsl.registry import command
@@ -31,7 +31,7 @@ def _vdim(gens: list[Poly], ring: PolyRing) -> int:
     the same local ring at the origin)."""
     if ring.order.is_local:
         return L.local_vdim(gens, ring)
-    basis = groebner(gens, ring) if ring.order.is_global else mora_std(gens, ring)
+    basis = standard_basis(gens, ring)
     return H.vdim([g.lm() for g in basis], ring.nvars)
 
 

@@ -227,8 +227,9 @@ def degree(I: Ideal | Poly) -> int:
 @command("radical", dialect="m2")
 def radical(I: Ideal) -> Ideal:
     """radical I: the radical of I."""
+    from ..kernel.primdec import radical as kernel_radical
     _global(I, "radical")
-    return _reduced(I, K.radical(I.nonzero(), ring=I.ring))
+    return _reduced(I, kernel_radical(I.nonzero(), ring=I.ring))
 
 
 def _primes(I: Ideal) -> list[Ideal]:

@@ -99,11 +99,12 @@ def random_ordering(rng: random.Random, n: int, kind: str) -> str:
         return f"(a({w}),{kind[2:]})"
     if kind == "M":  # first row positive (global), the others random, the matrix invertible
         from mech.kernel import Block, MonomialOrder
+        from mech.kernel.errors import OrderingError
         while True:
             entries = [rng.randint(1, 3) for _ in range(n)] + [rng.randint(-2, 2) for _ in range(n * n - n)]
             try:
                 MonomialOrder([Block("M", n, tuple(entries))])
-            except ValueError:
+            except OrderingError:
                 continue
             return "M(" + ",".join(map(str, entries)) + ")"
     raise ValueError(kind)

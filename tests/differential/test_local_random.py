@@ -12,7 +12,7 @@ import pytest
 from tests.util import SINGULAR, ideal_blocks, parse_poly
 
 from mech.kernel import QQ, Block, MonomialOrder, PolyRing
-from mech.kernel.mora import standard_basis
+from mech.kernel.engines import standard_basis
 
 SEED = int(os.environ.get("MECH_SEED", "20261121"))
 CASES = 80

@@ -8,8 +8,9 @@ import pytest
 from tests.kernel.test_primdec import compare_with_singular
 from tests.util import SINGULAR
 
-from mech.kernel import GF, QQ, MonomialOrder, PolyRing, groebner
+from mech.kernel import GF, QQ, MonomialOrder, PolyRing
 from mech.kernel.factor import factorize
+from mech.kernel.groebner import groebner
 from mech.kernel.ideals import ideal_power, ideal_product, intersect
 from mech.kernel.primdec import min_ass_gtz, primdec_gtz
 

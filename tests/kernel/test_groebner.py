@@ -1,12 +1,11 @@
 """Reduced Gröbner bases against Singular 4.3.1 (hard-coded truths in tests/data, live runs when
 Singular is installed)."""
-from pathlib import Path
-
 import pytest
 from tests.util import ROOT, SINGULAR, cyclic, ideal_blocks, katsura, parse_poly, ring, run_singular
 
-from mech.kernel import GF, Block, contains, groebner, normal_form
+from mech.kernel import GF, Block, contains, normal_form
 from mech.kernel.dimension import krull_dim
+from mech.kernel.groebner import groebner
 
 DATA = ROOT / "tests" / "data"
 

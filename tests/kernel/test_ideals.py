@@ -7,9 +7,11 @@ import re
 import pytest
 from tests.util import SINGULAR, parse_poly, run_singular
 
-from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing, groebner
+from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from mech.kernel.groebner import groebner
 from mech.kernel.ideals import (dimension, eliminate, ideal_power, ideal_product, ideal_sum,
-                                ideals_equal, intersect, is_subset, quotient, radical, saturate)
+                                ideals_equal, intersect, is_subset, quotient, saturate)
+from mech.kernel.primdec import radical
 
 XYZ = PolyRing(QQ, "xyz", MonomialOrder.simple("dp", 3))
 

@@ -6,6 +6,7 @@ import pytest
 from tests.util import SINGULAR, ideal_blocks, parse_poly, run_singular
 
 from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from mech.kernel.errors import DomainError
 from mech.kernel.maps import fetch, imap, map_polys, subst
 from mech.kernel.ratfunc import RationalFunctionField
 
@@ -55,7 +56,7 @@ def test_prime_field_to_rationals_uses_symmetric_representatives():
 def test_denominator_divisible_by_p():
     r = ring("xy")
     x, y = r.gens()
-    with pytest.raises(ValueError, match="divisible by 7"):
+    with pytest.raises(DomainError, match="divisible by 7"):
         imap([x / 7 + y], r, ring("xy", GF(7)))
 
 
@@ -70,11 +71,11 @@ def test_map_images():
     s = ring("yxw", GF(7))
     Y, X, W = s.gens()
     assert map_polys([f], [X, Y, W], s) == [X**2 - 2 * Y - W - 1]
-    with pytest.raises(ValueError, match="4 images"):
+    with pytest.raises(DomainError, match="4 images"):
         map_polys([f], [x, y, z, x], q)
-    with pytest.raises(ValueError, match="target ring"):
+    with pytest.raises(DomainError, match="target ring"):
         map_polys([f], [x, y, s.gen(0)], q)
-    with pytest.raises(ValueError, match="source ring"):
+    with pytest.raises(DomainError, match="source ring"):
         map_polys([s.gen(0)], [x, y, z], q, source=r)
 
 
@@ -84,7 +85,7 @@ def test_subst():
     assert subst(f, 0, y + 1) == (y + 1) ** 2 + Fraction(1, 3) * y - z + Fraction(2, 5)
     assert subst(f, 2, 3) == x**2 + Fraction(1, 3) * y - 3 + Fraction(2, 5)
     assert subst(x * y, 1, x) == x**2
-    with pytest.raises(ValueError):
+    with pytest.raises(DomainError):
         subst(f, 3, x)
 
 
@@ -126,9 +127,9 @@ def test_parameters():
     pu = ring("xb", RationalFunctionField(0, "a"))
     X, B = pu.gens()
     assert imap([f], pa, pu) == [B**2 + pu.field.gen(0) * X]   # b2+(a)*x
-    with pytest.raises(ValueError, match="coefficient field"):
+    with pytest.raises(DomainError, match="coefficient field"):
         map_polys([f], [Y], pb)
-    with pytest.raises(ValueError, match="non-constant"):
+    with pytest.raises(DomainError, match="non-constant"):
         imap([x / a], pa, ring("xa"))
     # rationals into a parameter field, and Z/7(a)
     q = ring("xy")

@@ -3,6 +3,7 @@ import re
 
 import pytest
 
+from mech.kernel.errors import OrderingError
 from mech.kernel.order import Block, MonomialOrder
 
 # Singular printed f = x2y2+x2+xy2+xz3+x+y3z+y+z4+z+1 in each ring; terms appear largest first.
@@ -74,9 +75,9 @@ def test_global_local_mixed():
 
 
 def test_degenerate_and_mismatched_orderings_are_rejected():
-    with pytest.raises(ValueError):
+    with pytest.raises(OrderingError):
         MonomialOrder([Block("M", 2, (1, 1, 2, 2))])
-    with pytest.raises(ValueError):
+    with pytest.raises(OrderingError):
         MonomialOrder([Block("dp", 2)], 3)
 
 

@@ -8,10 +8,11 @@ from fractions import Fraction
 import pytest
 from tests.util import SINGULAR, run_singular
 
-from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing, groebner
-from mech.kernel.ideals import dimension, intersect, radical
+from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from mech.kernel.groebner import groebner
+from mech.kernel.ideals import dimension, intersect
 from mech.kernel.primdec import (equi_radical, equidim, equidim_max, is_primary, is_prime,
-                                 min_ass_char, min_ass_gtz, primdec_gtz, primdec_sy)
+                                 min_ass_char, min_ass_gtz, primdec_gtz, primdec_sy, radical)
 
 
 # --- helpers shared with test_primdec_random.py --------------------------------------------

@@ -3,10 +3,11 @@ decomposition."""
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing, groebner, normal_form
-from mech.kernel.ideals import eliminate, intersect, radical
+from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing, normal_form
+from mech.kernel.groebner import groebner
+from mech.kernel.ideals import eliminate, intersect
 from mech.kernel.poly import lcm_exp
-from mech.kernel.primdec import is_prime, primdec_gtz
+from mech.kernel.primdec import is_prime, primdec_gtz, radical
 
 N = 3
 exps = st.tuples(*[st.integers(0, 4)] * N)

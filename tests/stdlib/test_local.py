@@ -15,8 +15,8 @@ from tests.util import ROOT, SINGULAR, ideal_blocks, parse_poly, run_singular
 from mech import Session
 from mech.dsl.errors import MechError
 from mech.kernel import QQ, Block, MonomialOrder, PolyRing
+from mech.kernel.engines import standard_basis
 from mech.kernel.groebner import groebner
-from mech.kernel.mora import standard_basis
 
 PAPER = {
     # ring, constraints, the map moving the point to the origin, the expected tangent cone

@@ -1,0 +1,349 @@
+"""Standard-basis engines and the one entry point, :func:`standard_basis`, for global and local
+orderings alike.
+
+An :class:`Engine` is a function ``run(gens, ring)`` with what it accepts: global and/or
+local orderings (``"local"`` stands for every non-global ordering, local or mixed) and the
+coefficient fields (``"QQ"``, ``"Z/p"``; ``None``: every field, parameters included).  It gets
+nonzero, non-constant generators and returns ``{exponent: coefficient}`` dicts: for a global
+ordering a Gröbner basis (with ``returns_reduced`` the reduced one, sorted by increasing leading
+monomial, each leading exponent first in its dict), for a local one a standard basis.
+:func:`register` adds an engine; :func:`standard_basis` then reaches it by name.
+
+``"auto"``, the default, is the policy, not an engine.  Global orderings: F4 for degree
+orderings (``is_graded``) over Z/p, and over QQ modular F4, except for systems too small for
+its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot verify a basis
+(then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
+(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations), then a ``dp`` basis
+(kept in the cache) and from it FGLM for zero-dimensional ideals, the Hilbert-driven algorithm
+for the others (F4's degree-by-degree matrices grow far past these on such orderings);
+Buchberger over other fields.  Local orderings: Mora within a :class:`~.mora.Budget`, then
+Lazard.
+
+:func:`using_engine` sets the default for a dynamic extent (a context variable); it applies to
+the computations its engine accepts, the others use ``"auto"``.  An engine named in a call must
+accept the ring (:class:`~.errors.EngineError` otherwise).
+
+The last 256 bases for global orderings are kept by (ring, engine, set of generators):
+dimension, containment and decomposition ask for the same bases many times (:func:`clear_cache`
+for benchmarks).
+"""
+from __future__ import annotations
+
+from collections import OrderedDict
+from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass
+from typing import Any, Callable, Iterator, Sequence
+
+from .buchberger import TooLong, buchberger, reduce_basis
+from .coeffs import Field, PrimeField, RationalField
+from .errors import EngineError
+from .f4 import f4_modp
+from .fglm import NotZeroDimensional, fglm_qq, fglm_zp
+from .hilbert_driven import hilbert_driven
+from .lazard import lazard
+from .modular import ModularFailure, SmallSystem, f4_qq
+from .mora import Budget, BudgetExceeded, minimal, monic, mora
+from .order import Exp, MonomialOrder
+from .poly import Poly, PolyRing
+
+Terms = dict[Exp, Any]
+Run = Callable[[list[Poly], PolyRing], list[Terms]]
+
+AUTO = "auto"
+AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p; block and lex orderings: "
+                "Buchberger if small, else FGLM or Hilbert-driven from a dp basis; local orderings: Mora, then Lazard")
+
+SMALL_WORK = 600
+"""Below this much work (matrix entries) in the first modular run, ``auto`` leaves a system over
+QQ to Buchberger, whose smaller overhead wins there (measured on random systems in three
+variables: the crossover is near 1000)."""
+
+
+SMALL_BUCHBERGER = 20000
+"""For block and lexicographic orderings ``auto`` first tries Buchberger within this budget
+(terms of reducers used; about 50 ms): the mechanisms' many small eliminations finish there.
+Larger computations go to FGLM (zero-dimensional ideals) or the Hilbert-driven algorithm."""
+
+
+def field_kind(field: Field) -> str | None:
+    """``"QQ"``, ``"Z/p"``, or None for other fields (rational functions in parameters)."""
+    if isinstance(field, RationalField):
+        return "QQ"
+    if isinstance(field, PrimeField):
+        return "Z/p"
+    return None
+
+
+def ordering_kind(ring: PolyRing) -> str:
+    """``"global"``, or ``"local"`` for every other ordering (local or mixed)."""
+    return "global" if ring.order.is_global else "local"
+
+
+@dataclass(frozen=True)
+class Engine:
+    """A standard-basis algorithm and the rings it accepts (see the module docstring)."""
+
+    name: str
+    run: Run
+    summary: str
+    orderings: frozenset[str]
+    fields: frozenset[str] | None
+    returns_reduced: bool = False
+    zero_dimensional: bool = False
+
+    def refusal(self, ring: PolyRing) -> str | None:
+        """Why the engine does not accept ``ring``; None when it does."""
+        if ordering_kind(ring) not in self.orderings:
+            wanted = "a global" if self.orderings == {"global"} else "a local or mixed"
+            return f"the engine '{self.name}' needs {wanted} ordering"
+        if self.fields is not None and field_kind(ring.field) not in self.fields:
+            return (f"the engine '{self.name}' needs coefficients in {' or '.join(sorted(self.fields))}, "
+                    f"not {ring.field!r}")
+        return None
+
+
+ENGINES: dict[str, Engine] = {}
+"""The registered engines by name (see :func:`register`)."""
+
+
+def register(name: str, run: Run, summary: str, *, orderings: Sequence[str] = ("global",),
+             fields: Sequence[str] | None = None, returns_reduced: bool = False,
+             zero_dimensional: bool = False) -> Engine:
+    """Register (or replace) the engine ``name``: ``run(gens, ring)`` as in the module docstring,
+    a one-line ``summary``, the kinds of ``orderings`` (``"global"``, ``"local"``) and ``fields``
+    (``"QQ"``, ``"Z/p"``; None: every field) it accepts; ``zero_dimensional``: it raises
+    :class:`~.fglm.NotZeroDimensional` for other ideals (an :class:`~.errors.EngineError` when
+    the call names it; as the default engine it leaves them to ``auto``)."""
+    if name == AUTO:
+        raise EngineError(f"'{AUTO}' names the default policy, not an engine")
+    unknown = set(orderings) - {"global", "local"} | set(fields or ()) - {"QQ", "Z/p"}
+    if unknown:
+        raise EngineError(f"unknown capabilities for the engine '{name}': {', '.join(sorted(unknown))}")
+    engine = Engine(name, run, summary, frozenset(orderings), None if fields is None else frozenset(fields),
+                    returns_reduced, zero_dimensional)
+    ENGINES[name] = engine
+    clear_cache()  # bases cached under a replaced engine's name
+    return engine
+
+
+def list_engines() -> list[tuple[str, str]]:
+    """``(name, one-line description)`` of ``"auto"`` and every registered engine."""
+    return [(AUTO, AUTO_SUMMARY)] + [(e.name, e.summary) for e in ENGINES.values()]
+
+
+def suitable_engines(ring: PolyRing) -> list[str]:
+    """The names usable for ``ring``: ``"auto"`` and the engines accepting it."""
+    return [AUTO] + [e.name for e in ENGINES.values() if e.refusal(ring) is None]
+
+
+def check_engine(name: str, ring: PolyRing | None = None) -> None:
+    """Raise :class:`~.errors.EngineError` unless ``name`` is ``"auto"`` or a registered engine
+    that accepts ``ring`` (when given)."""
+    if name == AUTO:
+        return
+    engine = ENGINES.get(name)
+    if engine is None:
+        raise EngineError(f"unknown engine '{name}' (known: {', '.join(n for n, _ in list_engines())})")
+    why = engine.refusal(ring) if ring is not None else None
+    if why:
+        raise EngineError(f"{why} (engines for this ring: {', '.join(suitable_engines(ring))})")
+
+
+_DEFAULT: ContextVar[str] = ContextVar("mech_kernel_engine", default=AUTO)
+
+
+def default_engine() -> str:
+    """The engine used when a call names none (``"auto"`` unless :func:`using_engine` is active)."""
+    return _DEFAULT.get()
+
+
+@contextmanager
+def using_engine(name: str) -> Iterator[None]:
+    """Within the ``with`` block, ``name`` is the default engine (for the rings it accepts)."""
+    check_engine(name)
+    token = _DEFAULT.set(name)
+    try:
+        yield
+    finally:
+        _DEFAULT.reset(token)
+
+
+def _resolve(ring: PolyRing, engine: str | None) -> str:
+    """The engine to run: the one named (checked), else the default if it accepts ``ring``."""
+    if engine is not None:
+        check_engine(engine, ring)
+        return engine
+    name = _DEFAULT.get()
+    chosen = ENGINES.get(name)
+    return name if chosen is not None and chosen.refusal(ring) is None else AUTO
+
+
+def standard_basis(gens: Sequence[Poly], ring: PolyRing | None = None, engine: str | None = None) -> list[Poly]:
+    """A standard basis of the ideal generated by ``gens`` in ``K[x]_>`` for the ring's ordering.
+
+    Global orderings: the reduced Gröbner basis, sorted by increasing leading monomial.
+    Otherwise a minimal standard basis, monic, with reduced leading terms but unreduced tails
+    (tail reduction need not terminate for local orderings), sorted from the largest leading
+    monomial down as Singular's ``std`` prints it.  ``[1]`` for the unit ideal (the whole ring
+    ``K[x]_>``), ``[]`` for the zero ideal.  ``engine``: ``"auto"`` or a registered name (see
+    :func:`list_engines`); None: the default (:func:`using_engine`)."""
+    ring = ring or (gens[0].ring if gens else None)
+    if ring is None:
+        return []
+    name = _resolve(ring, engine)
+    gens = [g for g in gens if not g.is_zero()]
+    if not gens:
+        return []
+    if not ring.order.is_global:
+        return _compute(gens, ring, name, engine is not None)
+    key = _key(gens, ring, name)
+    out = _CACHE.get(key)
+    if out is None:
+        out = _compute(gens, ring, name, engine is not None)
+        _CACHE[key] = out
+        if len(_CACHE) > _CACHE_SIZE:
+            _CACHE.popitem(last=False)
+    else:
+        _CACHE.move_to_end(key)
+    return list(out)
+
+
+def cached_standard_basis(gens: Sequence[Poly], ring: PolyRing, engine: str | None = None) -> list[Poly] | None:
+    """The basis :func:`standard_basis` would return for a global ordering, if it is known
+    already; else None."""
+    out = _CACHE.get(_key(gens, ring, _resolve(ring, engine)))
+    return None if out is None else list(out)
+
+
+def clear_cache() -> None:
+    """Forget the recent bases (benchmarks time computations, not look-ups)."""
+    _CACHE.clear()
+
+
+def _key(gens: Sequence[Poly], ring: PolyRing, name: str) -> tuple:
+    return ring, name, frozenset(g for g in gens if not g.is_zero())
+
+
+_CACHE: OrderedDict[tuple, list[Poly]] = OrderedDict()
+_CACHE_SIZE = 256
+
+
+def _compute(gens: list[Poly], ring: PolyRing, name: str, named: bool = True) -> list[Poly]:
+    """The basis by the engine ``name``; a default engine (not ``named`` in the call) that
+    needs a zero-dimensional ideal leaves the others to ``auto``."""
+    if any(g.is_constant() for g in gens):
+        return [ring.one()]
+    if name == AUTO:
+        return _auto_global(gens, ring) if ring.order.is_global else _auto_local(gens, ring)
+    engine = ENGINES[name]
+    try:
+        return _finish(engine.run(gens, ring), ring, engine.returns_reduced)
+    except NotZeroDimensional:
+        if not engine.zero_dimensional:
+            raise
+        if named:
+            raise EngineError(f"the engine '{name}' needs a zero-dimensional ideal") from None
+        return _compute(gens, ring, AUTO)
+
+
+def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    kind = field_kind(ring.field)
+    if ring.order.is_graded:
+        if kind == "Z/p":
+            return _finish(f4_modp(gens, ring), ring, True)
+        if kind == "QQ":
+            try:
+                return _finish(f4_qq(gens, ring, small_work=SMALL_WORK), ring, True)
+            except (ModularFailure, SmallSystem):
+                pass
+    elif kind is not None:
+        dp = _dp_ring(ring)
+        basis = cached_standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
+        if basis is None:
+            try:
+                return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
+            except TooLong:
+                basis = _degree_basis(gens, ring)
+        try:
+            return _finish(_convert(basis, ring), ring, True)
+        except NotZeroDimensional:
+            return _finish(hilbert_driven(gens, ring, _dp_auto), ring, False)
+        except ModularFailure:
+            pass
+    return _finish(buchberger(gens, ring), ring, False)
+
+
+def _dp_ring(ring: PolyRing) -> PolyRing:
+    return PolyRing(ring.field, ring.names, MonomialOrder.simple("dp", ring.nvars))
+
+
+def _degree_basis(gens: Sequence[Poly], ring: PolyRing) -> list[Poly]:
+    """The reduced basis of the ideal for ``dp`` (by ``auto``, kept in the cache)."""
+    dp = _dp_ring(ring)
+    return standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
+
+
+def _convert(basis: list[Poly], ring: PolyRing) -> list[Terms]:
+    """FGLM from a ``dp`` basis to the ring's ordering."""
+    source = basis[0].ring.order if basis else MonomialOrder.simple("dp", ring.nvars)
+    terms = [b.terms for b in basis]
+    if isinstance(ring.field, PrimeField):
+        return fglm_zp(terms, source, ring.order, ring.field.characteristic)
+    return fglm_qq(terms, source, ring.order)
+
+
+def _dp_auto(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    return standard_basis(gens, ring, AUTO)
+
+
+def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
+    """The engine ``fglm``: a ``dp`` basis by ``auto``, converted by FGLM."""
+    return _convert(_degree_basis(gens, ring), ring)
+
+
+def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    try:
+        basis = mora(gens, ring, Budget())
+    except BudgetExceeded:
+        basis = _lazard(gens, ring)
+    return _finish(basis, ring, False)
+
+
+def _finish(basis: list[Terms], ring: PolyRing, reduced: bool) -> list[Poly]:
+    """An engine's basis as the entry point returns it (see :func:`standard_basis`)."""
+    if ring.order.is_global:
+        if not reduced:
+            return [Poly(ring, b) for b in reduce_basis(basis, ring)]
+        out = []
+        for b in basis:
+            p = Poly(ring, b)
+            p._lm = next(iter(b))
+            out.append(p)
+        return out
+    key = ring.order.key
+    one = ring.field.one
+    basis = minimal([b if b[max(b, key=key)] == one else monic(b, key) for b in basis if b], key)
+    basis.sort(key=lambda b: key(max(b, key=key)), reverse=True)
+    return [Poly(ring, b) for b in basis]
+
+
+def _lazard(gens: list[Poly], ring: PolyRing) -> list[Terms]:
+    """Lazard's method, its global basis by ``auto`` (whatever the default engine)."""
+    return lazard(gens, ring, lambda hgens, hring: standard_basis(hgens, hring, AUTO))
+
+
+register("buchberger", buchberger,
+         "Buchberger's algorithm (Gebauer–Möller criteria, sugar strategy) on packed monomials; every field")
+register("f4", f4_modp, "Faugère's F4 modulo p: symbolic preprocessing, row reduction on packed vectors",
+         fields=("Z/p",), returns_reduced=True)
+register("modular", f4_qq, "F4 modulo primes with a trace, lifted to QQ by rational reconstruction, verified",
+         fields=("QQ",), returns_reduced=True)
+register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ordering (zero-dimensional ideals)",
+         fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
+register("hilbert", lambda gens, ring: hilbert_driven(gens, ring, _dp_auto),
+         "Hilbert-driven Buchberger: homogenize, Hilbert series from a dp basis, drop pairs once it is reached")
+register("mora", mora, "Mora's normal form with ecart and sugar (Singular's std for local orderings)",
+         orderings=("global", "local"))
+register("lazard", _lazard, "Lazard's method: homogenize, Gröbner basis by auto, dehomogenize",
+         orderings=("global", "local"))

@@ -1,0 +1,83 @@
+"""The trace of an F4 run modulo one prime, replayed modulo others (Traverso's Gröbner trace).
+
+A :class:`Trace` keeps, per matrix, the rows (basis index and, per term, its pivot or slot)
+that mattered -- the pair rows that raised the rank and the reducers they need, transitively
+-- and the shape of each new polynomial.  :func:`replay` redoes only that linear algebra for
+another prime and raises :class:`TraceMismatch` when the prime does not follow the recorded
+path.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Sequence
+
+from .f4_vectors import RowSpec, Vectors, echelon
+
+
+class TraceMismatch(Exception):
+    """The prime does not follow the recorded computation (unlucky prime or unlucky trace)."""
+
+
+@dataclass
+class Step:
+    """One recorded matrix: ``K`` pivot columns, ``m`` slots, the needed reducers (by pivot
+    id), the pair rows that raised the rank with the slot of their new pivot, and for each new
+    polynomial (appended to the basis in this order) its slots, leading one first."""
+
+    K: int
+    m: int
+    reducers: list[tuple[int, RowSpec]]
+    rows: list[tuple[RowSpec, int]]
+    new: list[list[int]]
+
+
+@dataclass
+class Trace:
+    """A recorded F4 run: the steps, ``unit`` if it ended with 1 in the ideal, and the final
+    back substitution giving the reduced basis: ``final_out`` lists, in the output order, the
+    pivot id of each element and the slots of its tail; ``shape`` holds the monomials."""
+
+    npolys: int
+    steps: list[Step] = field(default_factory=list)
+    unit: bool = False
+    final: Step | None = None
+    final_out: list[tuple[int, list[int]]] = field(default_factory=list)
+    shape: list[list[int]] = field(default_factory=list)
+
+
+def replay(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
+    """The coefficients mod ``p`` of the reduced basis recorded in ``trace`` (monomials in
+    ``trace.shape``), given the generators' coefficients mod ``p`` in the recorded shape."""
+    vec = Vectors(p)
+    coefs: list[list[int]] = [list(c) for c in polys]
+    neg = [[p - c for c in cs] for cs in coefs]
+    for st in trace.steps:
+        T = [0] * st.K
+        combine = vec.combiner(st.m)
+        for j, spec in st.reducers:
+            T[j] = combine(spec, coefs[spec.k], neg[spec.k], T)
+        D = [combine(spec, coefs[spec.k], neg[spec.k], T) for spec, _ in st.rows]
+        E, used = echelon(vec, D, st.m)
+        if [s0 for _, s0 in used] != [s0 for _, s0 in st.rows]:
+            raise TraceMismatch("a pair row reduced differently")
+        for slots in st.new:
+            cs = _values_on(vec, E[slots[0]], st.m, slots)
+            coefs.append(cs)
+            neg.append([p - c for c in cs])
+    if trace.unit:
+        return [[1]]
+    st = trace.final
+    T = [0] * st.K
+    combine = vec.combiner(st.m)
+    for j, spec in st.reducers:
+        T[j] = combine(spec, coefs[spec.k], neg[spec.k], T)
+    return [[1] + _values_on(vec, T[j], st.m, slots) for j, slots in trace.final_out]
+
+
+def _values_on(vec: Vectors, x: int, m: int, slots: list[int]) -> list[int]:
+    """The entries of ``x`` in the given slots, which must hold all its nonzero entries."""
+    vals = vec.values(x, m)
+    out = [vals[s] for s in slots]
+    if m - vals.count(0) != len(out) - out.count(0):
+        raise TraceMismatch("a polynomial has a term the recorded run did not have")
+    return out

@@ -1,0 +1,77 @@
+"""Standard bases for any monomial ordering by Lazard's method (Greuel–Pfister, *A Singular
+Introduction to Commutative Algebra*, 1.7): homogenize with a new variable ``t``, compute a
+Gröbner basis for the global ordering "degree, then ``>`` on the ``x``-part"
+(:func:`homogenized_order`), set ``t = 1``.  Every ``f`` in ``I`` has ``t^ecart f^h`` in the
+homogenized ideal, whose leading monomial is ``t^e LM(f)``.  It computes a global object, so
+it suffers from components away from the origin, but never from Mora's long detours.
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Callable, Sequence
+
+from .mora import Terms, cancel_unit, minimal, monic
+from .order import Block, MonomialOrder
+from .poly import Poly, PolyRing
+
+
+def homogenized_order(order: MonomialOrder) -> MonomialOrder:
+    """The global ordering on ``(x, t)``: total degree first, then ``order`` on the x-part."""
+    n = order.nvars
+    blocks = [Block("a", 0, (1,) * (n + 1))]
+    rows = [list(r) for r in order.matrix]
+    blocks.append(Block("M", n, tuple(v for r in _square(rows, n) for v in r)))
+    blocks.append(Block("lp", 1))
+    return MonomialOrder(blocks)
+
+
+def _square(rows: list[list[int]], n: int) -> list[list[int]]:
+    """``n`` linearly independent rows of ``rows`` defining the same ordering (the first
+    rows that raise the rank; later rows never matter once the rank is full)."""
+    chosen: list[list[int]] = []
+    echelon: list[list[Fraction]] = []
+    for r in rows:
+        v = [Fraction(x) for x in r]
+        for e in echelon:
+            piv = next(i for i, x in enumerate(e) if x)
+            if v[piv]:
+                f = v[piv] / e[piv]
+                v = [a - f * b for a, b in zip(v, e)]
+        if any(v):
+            echelon.append(v)
+            chosen.append(r)
+        if len(chosen) == n:
+            break
+    return chosen
+
+
+def homogenized_ring(ring: PolyRing) -> PolyRing:
+    """The ring with a last variable ``@t``, ordered by :func:`homogenized_order`."""
+    return PolyRing(ring.field, ring.names + ("@t",), homogenized_order(ring.order))
+
+
+def homogenize(p: Poly, hring: PolyRing) -> Poly:
+    """``t^deg(p) p(x/t)`` in the homogenized ring."""
+    d = p.total_degree()
+    return Poly(hring, {e + (d - sum(e),): c for e, c in p.terms.items()})
+
+
+def dehomogenize(p: Poly) -> Terms:
+    """``p`` with ``t = 1``, as terms of the original ring."""
+    out: Terms = {}
+    for e, c in p.terms.items():
+        out[e[:-1]] = out[e[:-1]] + c if e[:-1] in out else c
+    return {e: c for e, c in out.items() if c != 0}
+
+
+def lazard(gens: Sequence[Poly], ring: PolyRing,
+           groebner: Callable[[list[Poly], PolyRing], list[Poly]]) -> list[Terms]:
+    """A minimal standard basis by Lazard's method: a homogeneous Gröbner basis of the
+    homogenized ideal for :func:`homogenized_order` (computed by ``groebner(gens, ring)``),
+    dehomogenized.  Unit factors ``x^a u`` of the generators are cancelled first (they only
+    enlarge the global problem)."""
+    key = ring.order.key
+    hring = homogenized_ring(ring)
+    hgens = [homogenize(Poly(ring, cancel_unit(g.terms, key)), hring) for g in gens if not g.is_zero()]
+    out = [monic(cancel_unit(p, key), key) for p in (dehomogenize(h) for h in groebner(hgens, hring)) if p]
+    return minimal(out, key)
