@@ -25,8 +25,19 @@ def check(m: Mechanism, warn: Callable[[str], None]) -> None:
     if m.joints:
         _loop(m)
         return
+    _undefined(m)
     _unused_and_dangling(m, warn)
     _redundant(m, warn)
+
+
+def _undefined(m: Mechanism) -> None:
+    """A slider's points must be points of links (or fixed): a name nothing else uses is a misspelling."""
+    known = set(m.fixed) | {p for link in m.links for p in link.points}
+    for e in m.sliders:
+        for p in e.mentions():
+            if p not in known:
+                raise MechanismError(f"{where(e.source)}: {p} is not a point of any link or fixed point "
+                                     "(an undefined point: a misspelt name?)")
 
 
 def _fixed_twice(m: Mechanism, warn: Callable[[str], None]) -> None:

@@ -59,8 +59,7 @@ def report_data(a: Analysis) -> dict:
     d: dict[str, Any] = {
         "mechanism": str(a.mechanism), "variables": list(a.ring.names[:a.nvars]),
         "lengths": a.params, "constraints": ps(a.ideal), "dimension": a.dim,
-        "mobility": a.mobility, "gruebler_kutzbach": a.mechanism.gruebler_kutzbach(), "radical": a.radical,
-        "fitting_minor_size": a.fitting_size}
+        "mobility": a.mobility, **_count_data(a), "radical": a.radical, "fitting_minor_size": a.fitting_size}
     if a.params:
         d["fitting_components"] = [
             {"prime": ps(c.prime),
@@ -84,9 +83,7 @@ def report_data(a: Analysis) -> dict:
                 "minimal_polynomial": poly_str(normalize(s.algebraic.minpoly))} if s.algebraic else {}),
             "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
             "local_components": [ps(_local(s, c)) for c in s.local_components],
-            "transition": s.transition,
-            **({"joint_angles": joint_angles(a.mechanism, a.ring.names, s.point)} if s.point else {})}
-            for s in a.singular]
+            "transition": s.transition} for s in a.singular]
     return d
 
 
@@ -95,13 +92,6 @@ def configuration_count(a: Analysis) -> int:
     vector-space dimension of Q[x]/J."""
     from mech.kernel.hilbert import vdim
     return vdim([g.lm() for g in std(a.ideal, a.ring)], a.ring.nvars)
-
-
-def joint_angles(m: Any, names: Sequence[str], point: Sequence[Any]) -> dict[str, float]:
-    """The joint angles (degrees, rounded to 1e-6) and slides a person reads at a rational point."""
-    from mech.stdlib.mechanism_display import joint_readings
-    values = {n: float(c.p) / float(c.q) for n, c in zip(names, point)}
-    return {k: round(v, 6) for k, v, _ in joint_readings(m, values)}
 
 
 def report_text(a: Analysis) -> str:
@@ -174,6 +164,13 @@ def report_text(a: Analysis) -> str:
                        ", ".join(_show(_local(s, c)) for c in s.local_components))
             out.append(f"     {s.transition}")
     return "\n".join(out) + "\n"
+
+
+def _count_data(a: Analysis) -> dict[str, Any]:
+    """The Grübler–Kutzbach count when it differs from the mobility (the reports of mechanisms
+    whose count is right stay as they were)."""
+    gk = a.mechanism.gruebler_kutzbach()
+    return {} if gk == a.mobility else {"gruebler_kutzbach": gk, "overconstrained": gk < a.mobility}
 
 
 def _count_note(a: Analysis) -> str:
