@@ -17,7 +17,7 @@ from mech.dsl.types import register_type
 from mech.dsl.values import typeof
 from mech.kernel import Poly, PolyRing
 from mech.stdlib.joints import (Element, Fix, Length, LineSlider, Link, LoopJoint, MechanismError, Slider, Source,
-                                arity_message, classes, keywords, syntax)
+                                arity_message, classes, keywords)
 
 __all__ = ["Mechanism", "MechanismError", "Length", "parse_mechanism", "to_mechanism"]
 
@@ -187,8 +187,6 @@ def to_mechanism(v: Any, warn: Optional[Callable[[str], None]] = None) -> Mechan
     except MechanismError as e:
         raise MechRuntimeError(f"mechanism: {e.message}") from None
 
-
-SYNTAX = syntax()
 
 register_type("mechanism", to_mechanism,
               default='a mechanism is declared with its description: mechanism m = "fix O; bar O A l1";',

@@ -287,3 +287,11 @@ def joint_angles(m: Mechanism, config: List) -> str:
     if bad > 1e-6:
         raise MechRuntimeError(f"jointAngles: the values are not a configuration (a constraint is {bad:.3g})")
     return readings_text(joint_readings(m, values))
+
+
+@command("mechanismSyntax", lib="mechanism.lib")
+def mechanism_syntax() -> str:
+    """mechanismSyntax(): the statements of a mechanism's description, each form with its meaning (from
+    the joint registry, stdlib/joints.py)."""
+    from mech.stdlib.joints import syntax
+    return syntax()

@@ -178,3 +178,14 @@ def test_overconstrained_is_said_beside_the_mobility():
     assert (d["gruebler_kutzbach"], d["overconstrained"]) == (0, True)
     plain = report_data(analyze(parse_mechanism("fix O; bar O A 1; bar A B 1; slider B")))
     assert "gruebler_kutzbach" not in plain  # the reports of mechanisms whose count is right are unchanged
+
+
+# ---------------------------------------------------------------- commands
+def test_syntax_help_and_joint_angles_commands():
+    s = Session()
+    assert s.execute('LIB "mechanism.lib";\nmechanismSyntax();\n') == syntax() + "\n"
+    s.execute('mechanism b = "revolute A a 1 twist 0 1; revolute B a 4/5 twist 3/5 4/5; revolute C a 1 twist 0 1; '
+              'revolute D a 4/5 twist 3/5 4/5";')
+    assert s.execute("jointAngles(b, list(-1, 0, 1, 0));") == "A 180°, B 0°, C 180°, D 0°\n"
+    e = error('LIB "mechanism.lib";\nmechanism b = "fix O; bar O A 1; slider A";\njointAngles(b, list(0, 1));\n')
+    assert e.message == "jointAngles: the values are not a configuration (a constraint is 1)"
