@@ -189,3 +189,18 @@ def test_syntax_help_and_joint_angles_commands():
     assert s.execute("jointAngles(b, list(-1, 0, 1, 0));") == "A 180°, B 0°, C 180°, D 0°\n"
     e = error('LIB "mechanism.lib";\nmechanism b = "fix O; bar O A 1; slider A";\njointAngles(b, list(0, 1));\n')
     assert e.message == "jointAngles: the values are not a configuration (a constraint is 1)"
+
+
+def test_draw_moving_slots_and_spatial_points(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    s = Session()
+    s.execute('LIB "mechanism.lib";\n'
+              'mechanism q = "fix O 0 1; fix Q 0 1/2; bar O A 1; bar Q B 2; slider A Q B; bar B C 3; slider C";\n'
+              'drawMechanism(q, list(1, 0, "0.8944271909999159", "0.4472135954999579", "0.8854109409383547", '
+              '"-0.4648090636666386"), "q.svg");\n'
+              'mechanism t = "fix O 0 0 0; fix P 2 0 0; fix Q 0 2 0; bar O A 2; bar P A 2; bar Q A 2";\n'
+              'drawMechanism(t, list(1, 1, "1.4142135623730951"), "t.svg");\n')
+    assert "slider-line" in (tmp_path / "q.svg").read_text() and "links" in (tmp_path / "t.svg").read_text()
+    e = error('LIB "mechanism.lib";\nmechanism b = "revolute A a 1 twist 0 1; revolute B a 4/5 twist 3/5 4/5; '
+              'revolute C a 1 twist 0 1; revolute D a 4/5 twist 3/5 4/5";\ndrawMechanism(b, list(-1, 0, 1, 0), "b.svg");\n')
+    assert e.message.endswith("not loops of joints")
