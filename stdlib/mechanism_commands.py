@@ -292,6 +292,13 @@ def joint_angles(m: Mechanism, config: List) -> str:
 @command("mechanismSyntax", lib="mechanism.lib")
 def mechanism_syntax() -> str:
     """mechanismSyntax(): the statements of a mechanism's description, each form with its meaning (from
-    the joint registry, stdlib/joints.py)."""
+    the joint registry, stdlib/joints.py).
+
+    Example:
+      LIB "mechanism.lib";
+      string h = mechanismSyntax();
+      size(h) > 1000;
+      → 1
+    """
     from mech.stdlib.joints import syntax
     return syntax()
