@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
-from typing import ClassVar, Optional, Sequence, Union
+from typing import ClassVar, Optional, Protocol, Sequence, Union
 
 from mech.dsl.errors import MechRuntimeError
 
@@ -500,3 +500,24 @@ def syntax() -> str:
     lines.append("a description is spatial when a point is fixed with 3 coordinates or it has loop joints")
     return "\n".join(lines)
 
+
+class Described(Protocol):
+    """What the models and checks read of a mechanism (:class:`mech.stdlib.mechanism.Mechanism`)."""
+
+    name: str
+    dim: int
+    elements: list[Element]
+
+    @property
+    def fixed(self) -> dict[str, tuple[Length, ...]]: ...
+
+    @property
+    def links(self) -> list[Link]: ...
+
+    @property
+    def sliders(self) -> list[Union[Slider, LineSlider]]: ...
+
+    @property
+    def joints(self) -> list[LoopJoint]: ...
+
+    def symbols(self) -> list[str]: ...

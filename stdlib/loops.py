@@ -23,13 +23,11 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, Optional, Sequence
+from typing import Any, Optional, Sequence
 
 from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing, normal_form
-from mech.stdlib.joints import Cylindrical, Length, LoopJoint, MechanismError, Prismatic, Revolute, Universal
+from mech.stdlib.joints import Cylindrical, Described, Length, LoopJoint, MechanismError, Prismatic, Revolute, Universal
 
-if TYPE_CHECKING:
-    from mech.stdlib.mechanism import Mechanism
 
 Matrix = list[list[Any]]
 
@@ -103,7 +101,7 @@ def joint_variable_names(j: LoopJoint) -> dict[str, tuple[str, ...]]:
     return out
 
 
-def cut_link(m: Mechanism) -> Optional[int]:
+def cut_link(m: Described) -> Optional[int]:
     """The index k (0-based) of the link cut: joints k and k+1 (cyclically) plain revolute joints
     and the link's twist not 0 or 180 degrees; the one nearest the middle of the loop."""
     joints = m.joints
@@ -115,7 +113,7 @@ def cut_link(m: Mechanism) -> Optional[int]:
     return min(ok, key=lambda k: (abs(2 * k + 1 - n), k)) if ok else None
 
 
-def variables(m: Mechanism) -> list[str]:
+def variables(m: Described) -> list[str]:
     k = cut_link(m)
     n = len(m.joints)
     cut = set() if k is None else {k, (k + 1) % n}
@@ -123,7 +121,7 @@ def variables(m: Mechanism) -> list[str]:
             for name in names]
 
 
-def ring(m: Mechanism, values: dict[str, Length]) -> PolyRing:
+def ring(m: Described, values: dict[str, Length]) -> PolyRing:
     config = variables(m)
     params = [p for p in m.symbols() if p not in values]
     blocks = [Block("dp", len(config))] + ([Block("dp", len(params))] if params else [])
@@ -131,7 +129,7 @@ def ring(m: Mechanism, values: dict[str, Length]) -> PolyRing:
 
 
 # ---------------------------------------------------------------- equations
-def constraints(m: Mechanism, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
+def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
     joints = m.joints
     n = len(joints)
     if n < 2:
@@ -202,7 +200,7 @@ def _distinct(polys: list[Poly]) -> list[Poly]:
 
 
 # ---------------------------------------------------------------- counts and values
-def gruebler_kutzbach(m: Mechanism) -> tuple[int, int]:
+def gruebler_kutzbach(m: Described) -> tuple[int, int]:
     """``(count, lambda)``: ``lambda (n - 1) - sum (lambda - f_j)`` for one loop of n joints
     (= ``sum f_j - lambda``), with lambda = 3 for a spherical loop (revolute joints whose axes meet
     in one point: every a and d zero) or a planar one (revolute joints with parallel axes: every
@@ -215,7 +213,7 @@ def gruebler_kutzbach(m: Mechanism) -> tuple[int, int]:
     return sum(j.freedom for j in joints) - lam, lam
 
 
-def joint_values(m: Mechanism, config: dict[str, float]) -> list[dict[str, Any]]:
+def joint_values(m: Described, config: dict[str, float]) -> list[dict[str, Any]]:
     """Every joint's values (``theta`` and ``theta2`` as (cos, sin), ``d``) at a configuration
     given by the ring variables' values (floats; parameters included); the cut joints' angles
     computed from the others."""
@@ -250,7 +248,7 @@ def joint_values(m: Mechanism, config: dict[str, float]) -> list[dict[str, Any]]
     return vals
 
 
-def frames(m: Mechanism, config: dict[str, float]) -> list[Frame]:
+def frames(m: Described, config: dict[str, float]) -> list[Frame]:
     """The frames ``F_0 = I, F_1 = T_1, ..., F_n`` (floats) at a configuration: the z-axis of
     ``F_{i-1}`` is joint i's axis."""
     vals = joint_values(m, config)

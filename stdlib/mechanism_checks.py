@@ -11,15 +11,14 @@ true mobility is in the analysis' report.
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable
+from typing import Callable
 
-from mech.stdlib.joints import Bar, Fix, LineSlider, Link, LoopJoint, MechanismError, PrismaticBar, Slider, where
-
-if TYPE_CHECKING:
-    from mech.stdlib.mechanism import Mechanism
+from mech.stdlib.joints import (Bar, Described, Fix, LineSlider, Link, LoopJoint, MechanismError, PrismaticBar, Slider,
+                                where)
 
 
-def check(m: Mechanism, warn: Callable[[str], None]) -> None:
+
+def check(m: Described, warn: Callable[[str], None]) -> None:
     """Raise the errors, ``warn`` the warnings of a parsed description."""
     _fixed_twice(m, warn)
     if m.joints:
@@ -30,7 +29,7 @@ def check(m: Mechanism, warn: Callable[[str], None]) -> None:
     _redundant(m, warn)
 
 
-def _undefined(m: Mechanism) -> None:
+def _undefined(m: Described) -> None:
     """A slider's points must be points of links (or fixed): a name nothing else uses is a misspelling."""
     known = set(m.fixed) | {p for link in m.links for p in link.points}
     for e in m.sliders:
@@ -40,7 +39,7 @@ def _undefined(m: Mechanism) -> None:
                                      "(an undefined point: a misspelt name?)")
 
 
-def _fixed_twice(m: Mechanism, warn: Callable[[str], None]) -> None:
+def _fixed_twice(m: Described, warn: Callable[[str], None]) -> None:
     seen: dict[str, Fix] = {}
     places: dict[tuple, Fix] = {}
     for e in m.elements:
@@ -66,7 +65,7 @@ def _at(coords: tuple) -> str:
     return "(" + ", ".join(str(v) for v in coords) + ")"
 
 
-def _loop(m: Mechanism) -> None:
+def _loop(m: Described) -> None:
     names: dict[str, LoopJoint] = {}
     for j in m.joints:
         if j.name in names:
@@ -82,7 +81,7 @@ def _loop(m: Mechanism) -> None:
                              f"{len(m.joints)}")
 
 
-def _unused_and_dangling(m: Mechanism, warn: Callable[[str], None]) -> None:
+def _unused_and_dangling(m: Described, warn: Callable[[str], None]) -> None:
     count: dict[str, int] = {}
     for e in m.elements:
         if isinstance(e, Fix):
@@ -101,7 +100,7 @@ def _unused_and_dangling(m: Mechanism, warn: Callable[[str], None]) -> None:
                          f"(a misspelt point name?)")
 
 
-def _redundant(m: Mechanism, warn: Callable[[str], None]) -> None:
+def _redundant(m: Described, warn: Callable[[str], None]) -> None:
     bars: dict[frozenset, Link] = {}
     sliders: dict[tuple, Slider | LineSlider] = {}
     for e in m.elements:
@@ -124,7 +123,7 @@ def _redundant(m: Mechanism, warn: Callable[[str], None]) -> None:
                      "constraint)")
 
 
-def check_values(m: Mechanism) -> None:
+def check_values(m: Described) -> None:
     """Lengths given values must stay positive (bars, loop link lengths >= 0), two ground points
     apart."""
     for e in m.elements:

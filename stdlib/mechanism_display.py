@@ -11,10 +11,8 @@ prismatic joints), named after the joints; the ideal keeps its own variables.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:
-    from mech.stdlib.mechanism import Mechanism
+from mech.stdlib.joints import Described
 
 
 def _deg(c: float, s: float) -> float:
@@ -25,7 +23,7 @@ def _deg(c: float, s: float) -> float:
 Reading = tuple[str, float, bool]  # name, value, is an angle (degrees; else a length)
 
 
-def joint_readings(m: Mechanism, values: dict[str, float]) -> list[Reading]:
+def joint_readings(m: Described, values: dict[str, float]) -> list[Reading]:
     """The joints' angles (degrees) and slides at the configuration whose variables (and
     parameters) have ``values``."""
     from mech.stdlib import loops

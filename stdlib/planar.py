@@ -17,18 +17,16 @@ the lengths.
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import TYPE_CHECKING, Optional
+from typing import Optional
 
 from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
-from mech.stdlib.joints import Length, LineSlider, Link, MechanismError, Slider, where
+from mech.stdlib.joints import Described, Length, LineSlider, Link, MechanismError, Slider, where
 
-if TYPE_CHECKING:
-    from mech.stdlib.mechanism import Mechanism
 
 Event = tuple[str, object]  # ("link", (i, link)) or ("free", point)
 
 
-def walk(m: Mechanism) -> list[Event]:
+def walk(m: Described) -> list[Event]:
     """The order in which the links place their points (passes over the links not yet placed,
     in order), with the points that get free coordinates when the walk is stuck."""
     placed = set(m.fixed)
@@ -58,11 +56,11 @@ def walk(m: Mechanism) -> list[Event]:
     return events
 
 
-def free_points(m: Mechanism) -> list[str]:
+def free_points(m: Described) -> list[str]:
     return [p for kind, p in walk(m) if kind == "free"]  # type: ignore[misc]
 
 
-def variables(m: Mechanism) -> list[str]:
+def variables(m: Described) -> list[str]:
     names: list[str] = []
     for i, _ in enumerate(m.links, 1):
         names += [f"c{i}", f"s{i}"]
@@ -72,7 +70,7 @@ def variables(m: Mechanism) -> list[str]:
     return names
 
 
-def ring(m: Mechanism, values: dict[str, Length]) -> PolyRing:
+def ring(m: Described, values: dict[str, Length]) -> PolyRing:
     """``QQ[c1,s1,...,(d...),(x_P,y_P...),(parameters)]`` with the parameters as a trailing dp
     block (omitted when every parameter has a value)."""
     config = variables(m)
@@ -81,7 +79,7 @@ def ring(m: Mechanism, values: dict[str, Length]) -> PolyRing:
     return PolyRing(QQ, config + params, MonomialOrder(blocks))
 
 
-def positions(m: Mechanism, R: PolyRing, values: dict[str, Length]
+def positions(m: Described, R: PolyRing, values: dict[str, Length]
               ) -> tuple[dict[str, tuple[Poly, ...]], list[Poly]]:
     """Each point's coordinates as polynomials of ``R`` and the closure polynomials of the loops
     and sliders."""
@@ -137,7 +135,7 @@ def positions(m: Mechanism, R: PolyRing, values: dict[str, Length]
     return pos, closures
 
 
-def _direction(m: Mechanism, sl: LineSlider, pos: dict[str, tuple[Poly, ...]], gens: dict[str, Poly],
+def _direction(m: Described, sl: LineSlider, pos: dict[str, tuple[Poly, ...]], gens: dict[str, Poly],
                val: object) -> tuple[Poly, Poly]:
     """The direction of the line through ``sl.a`` and ``sl.b``: the link's orientation turned to
     the two points' local difference (without its length, when it lies along a local axis), or
@@ -168,7 +166,7 @@ def _direction(m: Mechanism, sl: LineSlider, pos: dict[str, tuple[Poly, ...]], g
                          "moves with it) nor fixed points")
 
 
-def constraints(m: Mechanism, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
+def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
     """The constraint ideal's ring and generators (loop and slider constraints, then circles)."""
     R = ring(m, values)
     _, closures = positions(m, R, values)
@@ -177,7 +175,7 @@ def constraints(m: Mechanism, values: dict[str, Length]) -> tuple[PolyRing, list
     return R, [p for p in closures if not p.is_zero()] + circles
 
 
-def gruebler_kutzbach(m: Mechanism) -> int:
+def gruebler_kutzbach(m: Described) -> int:
     """The planar Grübler–Kutzbach count ``3 (n - 1) - 2 j1``: each link a body (a prismatic bar
     two, with a prismatic joint between them), each slider a block with a revolute joint at its
     point and a prismatic joint along its line; a point where k bodies meet (the ground counting

@@ -18,13 +18,10 @@ own block.
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import TYPE_CHECKING
 
 from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
-from mech.stdlib.joints import Body, Length, MechanismError
+from mech.stdlib.joints import Body, Described, Length, MechanismError
 
-if TYPE_CHECKING:
-    from mech.stdlib.mechanism import Mechanism
 
 Event = tuple[str, object]  # ("body", (i, link)) or ("free", point)
 FRAME = ("r11", "r21", "r31", "r12", "r22", "r32")
@@ -35,7 +32,7 @@ def frame_names(i: int) -> list[str]:
     return [f"{r}_{i}" for r in FRAME]
 
 
-def walk(m: Mechanism) -> list[Event]:
+def walk(m: Described) -> list[Event]:
     """The order in which bodies are placed (passes, as in the plane; when stuck the origin of the
     first body not placed gets free coordinates), then the free points of the bars."""
     placed = set(m.fixed)
@@ -62,7 +59,7 @@ def walk(m: Mechanism) -> list[Event]:
     return events
 
 
-def variables(m: Mechanism) -> list[str]:
+def variables(m: Described) -> list[str]:
     names: list[str] = []
     for i, link in enumerate(m.links, 1):
         if isinstance(link, Body):
@@ -73,14 +70,14 @@ def variables(m: Mechanism) -> list[str]:
     return names
 
 
-def ring(m: Mechanism, values: dict[str, Length]) -> PolyRing:
+def ring(m: Described, values: dict[str, Length]) -> PolyRing:
     config = variables(m)
     params = [p for p in m.symbols() if p not in values]
     blocks = [Block("dp", len(config))] + ([Block("dp", len(params))] if params else [])
     return PolyRing(QQ, config + params, MonomialOrder(blocks))
 
 
-def positions(m: Mechanism, R: PolyRing, values: dict[str, Length]
+def positions(m: Described, R: PolyRing, values: dict[str, Length]
               ) -> tuple[dict[str, tuple[Poly, ...]], list[Poly]]:
     """Each point's coordinates as polynomials of ``R``, and the bodies' closures and the bars'
     polynomials."""
@@ -124,7 +121,7 @@ def positions(m: Mechanism, R: PolyRing, values: dict[str, Length]
     return pos, closures
 
 
-def constraints(m: Mechanism, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
+def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
     R = ring(m, values)
     _, closures = positions(m, R, values)
     gens = dict(zip(R.names, R.gens()))
@@ -140,7 +137,7 @@ def constraints(m: Mechanism, values: dict[str, Length]) -> tuple[PolyRing, list
     return R, gens_ + frames
 
 
-def gruebler_kutzbach(m: Mechanism) -> int:
+def gruebler_kutzbach(m: Described) -> int:
     """The spatial count ``6 (n - 1) - 3 j3 - spins``: each link a body, a point where k bodies meet
     (the ground counting for a fixed point) k - 1 spherical joints, and each bar's spin about its
     own axis (a passive freedom that moves nothing) not counted."""
