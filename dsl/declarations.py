@@ -91,7 +91,7 @@ class Declarations:
     def _converted(self, v: Any, typ: str, kring: Any) -> Any:
         if typ in RING_TYPES and kring is None:
             self.basering()
-        v = convert(v, typ, kring)
+        v = convert(v, typ, kring, self.warn)
         if isinstance(v, Ideal):
             std = v.is_std or len(v.gens) <= 1  # Singular marks one-generator ideals as standard bases
             if std != v.is_std:

@@ -12,7 +12,9 @@ a declaration converts its value with the type's converter::
                   statements=("node", "edge"))
 
 ``convert(value)`` turns one value of the language into a value of the type (raise
-``MechTypeError`` / ``MechRuntimeError`` from :mod:`mech.dsl.errors` when it cannot); the value's
+``MechTypeError`` / ``MechRuntimeError`` from :mod:`mech.dsl.errors` when it cannot; a converter
+with a ``warn`` parameter, ``convert(value, warn=None)``, is given the interpreter's warning
+printer, ``warn(message)`` printing ``// ** message``, for mistakes that are not errors); the value's
 Python class names the type by a class attribute ``type_name`` (what ``typeof`` prints) and prints
 with ``str``.  ``default`` is what ``T x;`` declares: a function returning the value, or the error
 message that a value is required.  A type with ``statements`` (the first words its description
@@ -25,6 +27,7 @@ error listing the accepted ones).
 """
 from __future__ import annotations
 
+import inspect
 from dataclasses import dataclass
 from typing import Any, Callable, Optional, Sequence, Union
 
@@ -39,6 +42,12 @@ class LanguageType:
     convert: Callable[[Any], Any]
     default: Union[Callable[[], Any], str]
     statements: Optional[Statements] = None
+
+    def apply(self, value: Any, warn: Optional[Callable[[str], None]] = None) -> Any:
+        """``convert(value)``, with ``warn`` when the converter takes it."""
+        if warn is not None and "warn" in inspect.signature(self.convert).parameters:
+            return self.convert(value, warn=warn)
+        return self.convert(value)
 
     def block_statements(self) -> Optional[tuple[str, ...]]:
         """The first words of the statements a block ``T x { ... }`` accepts (None: no block form)."""

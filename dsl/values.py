@@ -12,7 +12,7 @@ from __future__ import annotations
 import numbers
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any, Iterable, Optional, Sequence
+from typing import Any, Callable, Iterable, Optional, Sequence
 
 from ..kernel import Poly, PolyRing
 from .convert import number_fraction, poly_to_sympy
@@ -521,8 +521,9 @@ def to_string(v: Any) -> str:
     raise _cannot(v, "string")
 
 
-def convert(v: Any, typ: str, ring: Optional[PolyRing]) -> Any:
-    """``v`` as a value of the declared type ``typ`` (``def`` keeps it as it is)."""
+def convert(v: Any, typ: str, ring: Optional[PolyRing], warn: Optional[Callable[[str], None]] = None) -> Any:
+    """``v`` as a value of the declared type ``typ`` (``def`` keeps it as it is; ``warn``: where a
+    library type's converter reports mistakes that are not errors)."""
     if typ == "def":
         return List(v.items) if isinstance(v, ExprList) else v
     if typ in ("int", "bigint"):
@@ -555,7 +556,7 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing]) -> Any:
         raise _cannot(v, "map")
     plugin = find_type(typ)  # a type a library registered (mech.dsl.types)
     if plugin is not None:
-        return plugin.convert(_single(v, typ))
+        return plugin.apply(_single(v, typ), warn)
     raise MechTypeError(f"type '{typ}' is not supported yet")
 
 

@@ -4,6 +4,7 @@ mobility, motion modes, singular variety and configurations, length conditions, 
 :mod:`mech.stdlib.plots`."""
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any, Sequence
 
 from mech.dsl.convert import parse_decimal
@@ -253,3 +254,51 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
         ctx.display({"text/plain": text, "text/html": report_html(a)})
     else:
         ctx.write(text)
+
+
+@command("jointAngles", lib="mechanism.lib")
+def joint_angles(m: Mechanism, config: List) -> str:
+    """jointAngles(m, list(c1,s1,...)): the joint angles in degrees (and the slides of prismatic
+    joints) a person reads at a configuration given by the values of the mechanism's variables
+    (integers or strings such as "1/2", "0.6"), named after the joints (docs/mechanisms.md).
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "ground O A 1; bar O B 1; bar B C 1; bar C A 1";
+      jointAngles(m, list(0, 1, 1, 0, 0, -1));
+      → O 90°, B -90°, C -90°, A -90°
+    """
+    from mech.stdlib.mechanism_display import joint_readings, readings_text
+    if m.symbols():
+        raise MechRuntimeError(f"jointAngles needs numeric lengths (setLengths(m, ...) for {','.join(m.symbols())})")
+    names = m.variables()
+    if len(config.items) != len(names):
+        raise MechRuntimeError(f"jointAngles: {len(names)} values expected ({','.join(names)}), "
+                               f"{len(config.items)} given")
+    values: dict[str, float] = {}
+    for n, v in zip(names, config.items):
+        try:
+            values[n] = float(parse_decimal(v)) if isinstance(v, str) else float(v)
+        except (ValueError, TypeError):
+            raise MechRuntimeError(f"jointAngles: '{v}' is not a number (integers or strings such as \"1/2\")") from None
+    R, gens = m.constraints()
+    point = {n: Fraction(values[n]) for n in names}
+    bad = max(abs(float(g.evaluate([point.get(n, 0) for n in R.names]))) for g in gens)
+    if bad > 1e-6:
+        raise MechRuntimeError(f"jointAngles: the values are not a configuration (a constraint is {bad:.3g})")
+    return readings_text(joint_readings(m, values))
+
+
+@command("mechanismSyntax", lib="mechanism.lib")
+def mechanism_syntax() -> str:
+    """mechanismSyntax(): the statements of a mechanism's description, each form with its meaning (from
+    the joint registry, stdlib/joints.py).
+
+    Example:
+      LIB "mechanism.lib";
+      string h = mechanismSyntax();
+      size(h) > 1000;
+      → 1
+    """
+    from mech.stdlib.joints import syntax
+    return syntax()

@@ -23,6 +23,7 @@ from mech.dsl.files import output_file
 from mech.dsl.values import IntVec, List
 from mech.kernel import Poly
 from mech.stdlib.analysis import Analysis, require_numeric, run_analysis
+from mech.stdlib.joints import LineSlider
 from mech.stdlib.mechanism import Mechanism
 from mech.dsl.registry import command
 
@@ -203,8 +204,12 @@ def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str
     axes = Axes2D((70, 40, 500, 390), (min(xs) - pad, max(xs) + pad), (min(ys) - pad, max(ys) + pad), equal=True)
     axes.frame(scene, nice_ticks(*axes.xrange), nice_ticks(*axes.yrange), "x", "y")
     for s in m.sliders:
-        a, b, _ = (float(Fraction(t)) for t in s.line)
-        line = _clip(xy[s.point], (b, -a) if (a, b) != (0, 0) else (1.0, 0.0), (axes.xrange, axes.yrange))
+        if isinstance(s, LineSlider):  # the line through two points (of a link, or fixed)
+            (ax, ay), (bx, by) = xy[s.a], xy[s.b]
+            line = _clip(xy[s.a], (bx - ax, by - ay), (axes.xrange, axes.yrange))
+        else:
+            a, b, _ = (float(Fraction(t)) for t in s.line)
+            line = _clip(xy[s.point], (b, -a) if (a, b) != (0, 0) else (1.0, 0.0), (axes.xrange, axes.yrange))
         scene.add(Lines([[axes.map(*p) for p in line]], "grey", dash=True, cls="slider-line"))
     links = []
     for link in m.links:
@@ -312,6 +317,15 @@ def _evaluate(p: Poly, values: Sequence[float]) -> float:
     return sum(_rational(c) * math.prod(v ** k for v, k in zip(values, e)) for e, c in p.terms.items())
 
 
+def _view(xyz: Sequence[float]) -> tuple[float, float]:
+    """A point in the picture: the plane's own coordinates, or in space the cabinet projection seen from
+    the front (x to the right, z up, y receding at 45 degrees, halved)."""
+    if len(xyz) == 2:
+        return xyz[0], xyz[1]
+    x, y, z = xyz
+    return x + 0.35 * y, z + 0.35 * y
+
+
 @command("drawMechanism", lib="mechanism.lib")
 def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
     """drawMechanism(m, list(c1,s1,c2,s2,...), "file.svg"): the mechanism in that configuration.
@@ -337,7 +351,10 @@ def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
     bad = max(abs(_evaluate(g, values)) for g in gens)
     if bad > 1e-6:
         raise MechRuntimeError(f"drawMechanism: the values are not a configuration (a constraint is {bad:.3g})")
+    if m.joints:
+        raise MechRuntimeError("drawMechanism draws mechanisms of points (planar, or spatial in an oblique view), "
+                               "not loops of joints")
     pos, _ = m.positions(R)
-    xy = {p: (_evaluate(x, values), _evaluate(y, values)) for p, (x, y) in pos.items()}
+    xy = {p: _view([_evaluate(x, values) for x in xyz]) for p, xyz in pos.items()}
     title = ", ".join(f"{n}={v:.3g}" for n, v in zip(names, values))
     _write(ctx, mechanism_scene(m, xy, title), path, f"{m} at {title}")

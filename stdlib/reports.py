@@ -59,7 +59,7 @@ def report_data(a: Analysis) -> dict:
     d: dict[str, Any] = {
         "mechanism": str(a.mechanism), "variables": list(a.ring.names[:a.nvars]),
         "lengths": a.params, "constraints": ps(a.ideal), "dimension": a.dim,
-        "mobility": a.mobility, "radical": a.radical, "fitting_minor_size": a.fitting_size}
+        "mobility": a.mobility, **_count_data(a), "radical": a.radical, "fitting_minor_size": a.fitting_size}
     if a.params:
         d["fitting_components"] = [
             {"prime": ps(c.prime),
@@ -73,6 +73,8 @@ def report_data(a: Analysis) -> dict:
         d["motion_modes"] = [{"prime": ps(dp_basis(m.prime)), "dimension": m.dim, "real_points": m.real,
                               "primary_equals_prime": ideals_equal(m.primary, m.prime, a.ring)}
                              for m in a.modes]
+        if a.mobility == 0 and a.radical:
+            d["complex_configurations"] = configuration_count(a)
         d["singular"] = [{
             "prime": ps(dp_basis(s.prime)), "dimension": s.dim, "real_points": s.real,
             "point": [_frac(c) for c in s.point] if s.point else ps(s.algebraic.coords) if s.algebraic
@@ -85,6 +87,13 @@ def report_data(a: Analysis) -> dict:
     return d
 
 
+def configuration_count(a: Analysis) -> int:
+    """The number of complex configurations of a rigid mechanism (mobility 0, J radical): the
+    vector-space dimension of Q[x]/J."""
+    from mech.kernel.hilbert import vdim
+    return vdim([g.lm() for g in std(a.ideal, a.ring)], a.ring.nvars)
+
+
 def report_text(a: Analysis) -> str:
     """The readable report."""
     from mech.dsl.printing import poly_str
@@ -93,7 +102,7 @@ def report_text(a: Analysis) -> str:
                                          if a.params else ""),
            "constraint ideal J:"] + [f"  {poly_str(g)}" for g in a.ideal]
     mob = f"mobility {a.mobility}" + (f" (dim J = {a.dim} minus {len(a.params)} lengths)" if a.params else "")
-    out.append(f"{mob}; J is {'radical' if a.radical else 'not radical'}")
+    out.append(f"{mob}{_count_note(a)}; J is {'radical' if a.radical else 'not radical'}")
     if a.params:
         out.append(f"singular variety (Theorem 1): V(J + I_{a.fitting_size}(dJ)); "
                    f"minimal primes P of the Fitting ideal and (J + P) ∩ Q[{','.join(a.params)}]:")
@@ -155,6 +164,23 @@ def report_text(a: Analysis) -> str:
                        ", ".join(_show(_local(s, c)) for c in s.local_components))
             out.append(f"     {s.transition}")
     return "\n".join(out) + "\n"
+
+
+def _count_data(a: Analysis) -> dict[str, Any]:
+    """The Grübler–Kutzbach count when it differs from the mobility (the reports of mechanisms
+    whose count is right stay as they were)."""
+    gk = a.mechanism.gruebler_kutzbach()
+    return {} if gk == a.mobility else {"gruebler_kutzbach": gk, "overconstrained": gk < a.mobility}
+
+
+def _count_note(a: Analysis) -> str:
+    """Beside the mobility, the Grübler–Kutzbach count when it differs."""
+    gk = a.mechanism.gruebler_kutzbach()
+    if gk == a.mobility:
+        return ""
+    if gk < a.mobility:
+        return f" (Grübler–Kutzbach count {gk}: overconstrained, a special geometry gives more freedom)"
+    return f" (Grübler–Kutzbach count {gk}: the dimensions leave less freedom than the count)"
 
 
 def report_latex(a: Analysis) -> str:

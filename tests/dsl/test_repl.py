@@ -102,7 +102,7 @@ def test_completion_candidates():
     assert {("stdfglm", "command"), ("string", "command"), ("sturm", 'LIB "rootsur.lib";')} <= set(st)
     assert ("while", "keyword") in candidates(it, "wh")[1]
     assert candidates(it, 'LIB "pri') == ("pri", [("primdec.lib", "library")])
-    assert candidates(it, "help jo") == ("jo", [("jolly", "proc")])
+    assert candidates(it, "help jol") == ("jol", [("jolly", "proc")])
     assert ("std", "command") in candidates(it, "?st")[1]
     assert [t for t, _ in candidates(it, ":re")[1]] == [":reset"]
     assert [t for t, _ in candidates(it, "%ti")[1]] == ["%time"]

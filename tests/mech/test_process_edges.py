@@ -113,8 +113,8 @@ def test_huge_numbers_end_quickly_with_a_message(code, message, tmp_path, monkey
 def test_decimal_lengths_still_work():
     s = Session()
     out = s.execute('LIB "mechanism.lib"; mechanism m = "fix O; bar O A l1; bar A B l2; slider B";'
-                    'setLengths(m, "1.5e2", "-0.25");')
-    assert out == "fix O 0 0; bar O A 150; bar A B -1/4; slider B\n"
+                    'setLengths(m, "1.5e2", "0.25");')
+    assert out == "fix O 0 0; bar O A 150; bar A B 1/4; slider B\n"
 
 
 def test_shell_commands_in_a_script_say_what_they_are():

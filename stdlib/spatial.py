@@ -1,0 +1,150 @@
+"""Spatial mechanisms of points, bars and bodies: their variables and equations.
+
+Points are in space.  A body (``body A B u v w ...``) turns with a rotation frame: the first two
+columns ``(r11_i, r21_i, r31_i)`` and ``(r12_i, r22_i, r32_i)`` of its rotation matrix, orthonormal
+(three quadrics), the third column their cross product — so every rotation, and only proper ones,
+once each (no double cover as with quaternions, no missing half-turns as with a Cayley or Study
+chart).  A body point is the body's origin plus the rotated local coordinates; bodies are placed
+by walking from the fixed points (a body reaching a placed point closes with three polynomials).
+A point no body places has coordinates of its own, ``x_P, y_P, z_P``.  A bar (spherical joints at
+both ends) gives the polynomial ``|B - A|^2 - l^2``: its spin about its own axis, which moves
+nothing, is not a variable.  With the platform's points in its local x-y plane (w = 0) the
+equations of a Stewart–Gough platform are quadrics.
+
+Constraint order: body closures, bars, then each body's orthonormality; variables: the bodies'
+frames (in the order of the links), the free points' coordinates, then the parameters as their
+own block.
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+
+from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
+from mech.stdlib.joints import Body, Described, Length, MechanismError
+
+
+Event = tuple[str, object]  # ("body", (i, link)) or ("free", point)
+FRAME = ("r11", "r21", "r31", "r12", "r22", "r32")
+
+
+def frame_names(i: int) -> list[str]:
+    """The rotation-frame variables of link ``i`` (a body)."""
+    return [f"{r}_{i}" for r in FRAME]
+
+
+def walk(m: Described) -> list[Event]:
+    """The order in which bodies are placed (passes, as in the plane; when stuck the origin of the
+    first body not placed gets free coordinates), then the free points of the bars."""
+    placed = set(m.fixed)
+    pending = [(i, link) for i, link in enumerate(m.links, 1) if isinstance(link, Body)]
+    events: list[Event] = []
+    while pending:
+        progress = False
+        for item in list(pending):
+            _, link = item
+            if any(p in placed for p in link.points):
+                placed.update(link.points)
+                events.append(("body", item))
+                pending.remove(item)
+                progress = True
+        if not progress:
+            origin = pending[0][1].points[0]
+            placed.add(origin)
+            events.append(("free", origin))
+    for link in m.links:
+        for p in link.points:
+            if p not in placed:
+                placed.add(p)
+                events.append(("free", p))
+    return events
+
+
+def variables(m: Described) -> list[str]:
+    names: list[str] = []
+    for i, link in enumerate(m.links, 1):
+        if isinstance(link, Body):
+            names += frame_names(i)
+    for kind, p in walk(m):
+        if kind == "free":
+            names += [f"{x}_{p}" for x in "xyz"]
+    return names
+
+
+def ring(m: Described, values: dict[str, Length]) -> PolyRing:
+    config = variables(m)
+    params = [p for p in m.symbols() if p not in values]
+    blocks = [Block("dp", len(config))] + ([Block("dp", len(params))] if params else [])
+    return PolyRing(QQ, config + params, MonomialOrder(blocks))
+
+
+def positions(m: Described, R: PolyRing, values: dict[str, Length]
+              ) -> tuple[dict[str, tuple[Poly, ...]], list[Poly]]:
+    """Each point's coordinates as polynomials of ``R``, and the bodies' closures and the bars'
+    polynomials."""
+    gens = dict(zip(R.names, R.gens()))
+
+    def val(v: Length) -> Poly:
+        if isinstance(v, str):
+            v = values.get(v, v)
+        return gens[v] if isinstance(v, str) else R.const(Fraction(v))
+
+    pos: dict[str, tuple[Poly, ...]] = {p: tuple(val(t) for t in xyz) for p, xyz in m.fixed.items()}
+    closures: list[Poly] = []
+    for kind, what in walk(m):
+        if kind == "free":
+            pos[what] = tuple(gens[f"{x}_{what}"] for x in "xyz")  # type: ignore[index]
+            continue
+        i, link = what  # type: ignore[misc]
+        r = [gens[n] for n in frame_names(i)]
+        c1, c2 = r[:3], r[3:]
+        c3 = [c1[1] * c2[2] - c1[2] * c2[1], c1[2] * c2[0] - c1[0] * c2[2], c1[0] * c2[1] - c1[1] * c2[0]]
+
+        def turn(uvw: tuple[Length, ...]) -> list[Poly]:
+            u, v, w = (val(t) for t in uvw)
+            return [u * a + v * b + (w * c if not w.is_zero() else R.zero()) for a, b, c in zip(c1, c2, c3)]
+        anchor = link.points[0]
+        if anchor not in pos:
+            p, uvw = next((p, uvw) for p, uvw in zip(link.points[1:], link.local) if p in pos)
+            pos[anchor] = tuple(x - o for x, o in zip(pos[p], turn(uvw)))
+        for point, uvw in zip(link.points[1:], link.local):
+            x = tuple(a + o for a, o in zip(pos[anchor], turn(uvw)))
+            if point in pos:
+                closures += [a - b for a, b in zip(x, pos[point])]
+            else:
+                pos[point] = x
+    for link in m.links:
+        if isinstance(link, Body):
+            continue
+        a, b = pos[link.points[0]], pos[link.points[1]]
+        length = val(link.local[0][0])
+        closures.append(sum(((q - p) ** 2 for p, q in zip(a, b)), R.zero()) - length ** 2)
+    return pos, closures
+
+
+def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
+    R = ring(m, values)
+    _, closures = positions(m, R, values)
+    gens = dict(zip(R.names, R.gens()))
+    frames: list[Poly] = []
+    for i, link in enumerate(m.links, 1):
+        if isinstance(link, Body):
+            r = [gens[n] for n in frame_names(i)]
+            frames += [r[0] ** 2 + r[1] ** 2 + r[2] ** 2 - 1, r[3] ** 2 + r[4] ** 2 + r[5] ** 2 - 1,
+                       r[0] * r[3] + r[1] * r[4] + r[2] * r[5]]
+    gens_ = [p for p in closures if not p.is_zero()]
+    if any(p.is_constant() for p in gens_):
+        raise MechanismError(f"{m.name}: a bar between two fixed points does not fit their distance")
+    return R, gens_ + frames
+
+
+def gruebler_kutzbach(m: Described) -> int:
+    """The spatial count ``6 (n - 1) - 3 j3 - spins``: each link a body, a point where k bodies meet
+    (the ground counting for a fixed point) k - 1 spherical joints, and each bar's spin about its
+    own axis (a passive freedom that moves nothing) not counted."""
+    meet: dict[str, int] = {p: 1 for p in m.fixed}
+    for link in m.links:
+        for p in link.points:
+            meet[p] = meet.get(p, 0) + 1
+    spherical = sum(max(k - 1, 0) for k in meet.values())
+    bars = sum(not isinstance(link, Body) for link in m.links)
+    return 6 * len(m.links) - 3 * spherical - bars

@@ -1,0 +1,156 @@
+"""Mechanisms beyond planar linkages with a fixed pivot: the examples (trammel, Whitworth, Bennett,
+spatial 4R, spherical 4R, Bricard, Stewart–Gough) run, and their mobility and motion modes agree with
+ideals written independently here in point coordinates (axes as points and unit directions,
+platform points), decided by real Singular."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from fractions import Fraction as F
+
+import pytest
+
+from mech.dsl.printing import poly_str
+from mech.stdlib.mechanism import parse_mechanism
+from tests.util import ROOT, SINGULAR, run_singular
+
+EXAMPLES = ROOT / "examples"
+
+
+def example(name: str, tmp_path) -> dict:
+    """The JSON report the example prints (its last statement is analyze(m, "json"))."""
+    r = subprocess.run([sys.executable, "-m", "mech", str(EXAMPLES / f"{name}.mech")], cwd=tmp_path,
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout.splitlines()[-1])
+
+
+def description(name: str) -> str:
+    """The mechanism's description in the example file (the string after 'mechanism m =')."""
+    text = (EXAMPLES / f"{name}.mech").read_text()
+    return text.split('mechanism m = "', 1)[1].split('"', 1)[0]
+
+
+@pytest.mark.parametrize("name, mobility, modes, configurations", [
+    ("trammel", 1, 1, None),
+    ("whitworth", 1, 1, None),
+    ("bennett", 1, 1, None),
+    ("spatial4r", 0, 2, 2),
+    ("spherical4r", 1, 1, None),
+    ("stewart", 0, 1, 16),
+])
+def test_examples(name, mobility, modes, configurations, tmp_path):
+    d = example(name, tmp_path)
+    assert (d["mobility"], len(d["motion_modes"]), d.get("complex_configurations")) == (mobility, modes,
+                                                                                        configurations)
+    assert all(m["real_points"] for m in d["motion_modes"])
+    if name == "trammel":
+        assert d["singular"] == []  # the trammel has no singular configuration
+    if name == "bennett":
+        assert (d["gruebler_kutzbach"], d["overconstrained"]) == (-2, True)
+
+
+# ---------------------------------------------------------------- independent ideals in Singular
+def _cross(a, b):
+    return [f"(({a[1]})*({b[2]})-({a[2]})*({b[1]}))", f"(({a[2]})*({b[0]})-({a[0]})*({b[2]}))",
+            f"(({a[0]})*({b[1]})-({a[1]})*({b[0]}))"]
+
+
+def loop_ideal(links: list[tuple]) -> tuple[list[str], list[str]]:
+    """A loop of revolute joints with offsets 0, link i (length a_i, twist (c_i, s_i)) from axis i to
+    axis i+1: axis i is a point P_i and a unit direction u_i with a_i u_i x u_{i+1} = s_i (P_{i+1} - P_i)
+    and u_i.u_{i+1} = c_i.  Link n is the ground: axis 1 the z-axis, axis n through (-a_n, 0, 0) along
+    (0, s_n, c_n)."""
+    n = len(links)
+    an, (cn, sn) = links[-1]
+    P = {1: ("0", "0", "0"), n: (str(-an), "0", "0")}
+    U = {1: ("0", "0", "1"), n: ("0", str(sn), str(cn))}
+    names: list[str] = []
+    for i in range(2, n):
+        P[i], U[i] = tuple(f"p{i}{x}" for x in "xyz"), tuple(f"u{i}{x}" for x in "xyz")
+        names += list(P[i]) + list(U[i])
+    eqs = []
+    for i in range(1, n):
+        a, (c, s) = links[i - 1]
+        x = _cross(U[i], U[i + 1])
+        eqs += [f"({a})*{x[k]}-({s})*(({P[i + 1][k]})-({P[i][k]}))" for k in range(3)]
+        eqs.append("+".join(f"({U[i][k]})*({U[i + 1][k]})" for k in range(3)) + f"-({c})")
+    eqs += ["+".join(f"({u})^2" for u in U[i]) + "-1" for i in range(2, n)]
+    return names, eqs
+
+
+def singular_dim_and_primes(names: list[str], eqs: list[str], primes: bool = True) -> tuple[int, int | None]:
+    script = (f'LIB "primdec.lib"; ring r = 0, ({",".join(names)}), dp; ideal J = {", ".join(eqs)};\n'
+              'print("dim " + string(dim(std(J))));\n')
+    if primes:
+        script += 'print("primes " + string(size(minAssGTZ(J))));\n'
+    out = dict(line.split() for line in run_singular(script, timeout=300).splitlines() if line.strip())
+    return int(out["dim"]), int(out["primes"]) if primes else None
+
+
+R90, R35, R513 = (0, 1), (F(3, 5), F(4, 5)), (F(5, 13), F(12, 13))
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+@pytest.mark.parametrize("name, links, mobility, modes", [
+    ("bennett", [(1, R90), (F(4, 5), R35), (1, R90), (F(4, 5), R35)], 1, 1),
+    ("spatial4r", [(1, R90), (1, R35), (1, R90), (1, R35)], 0, 2),
+    ("spherical4r", [(0, R90), (0, R35), (0, R90), (0, R513)], 1, 1),
+])
+def test_loops_against_axes_in_singular(name, links, mobility, modes, tmp_path):
+    assert singular_dim_and_primes(*loop_ideal(links)) == (mobility, modes)
+    d = example(name, tmp_path)
+    assert (d["mobility"], len(d["motion_modes"])) == (mobility, modes)
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_bricard_is_mobile_in_singular():
+    """The line-symmetric Bricard 6R: its axes' ideal (24 variables) and mech's loop closure both have
+    dimension 1 (mech's own analysis of this loop takes too long here: docs/mechanisms.md, Limits)."""
+    links = [(1, R90), (2, R35), (3, R513)] * 2
+    assert singular_dim_and_primes(*loop_ideal(links), primes=False) == (1, None)
+    R, gens = parse_mechanism(description("bricard")).constraints()
+    assert singular_dim_and_primes(list(R.names), [poly_str(g) for g in gens], primes=False) == (1, None)
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+@pytest.mark.parametrize("name, names, eqs, mobility, modes", [
+    ("trammel", ["xa", "ya", "xb", "yb"], ["ya", "xb", "(xb-xa)^2+(yb-ya)^2-4"], 1, 1),
+    ("whitworth", ["xa", "ya", "xb", "yb", "xc", "yc"],
+     ["xa^2+(ya-1)^2-1", "xb^2+(yb-1/2)^2-4", "xb*(ya-1/2)-(yb-1/2)*xa", "(xc-xb)^2+(yc-yb)^2-9", "yc"], 1, 1),
+])
+def test_planar_points_in_singular(name, names, eqs, mobility, modes, tmp_path):
+    assert singular_dim_and_primes(names, eqs) == (mobility, modes)
+    d = example(name, tmp_path)
+    assert (d["mobility"], len(d["motion_modes"])) == (mobility, modes)
+
+
+def stewart_ideal(base, platform, legs) -> tuple[list[str], list[str]]:
+    """Platform points p1, p2, p3 as variables (their distances fixed), each leg |p - b|^2 = l^2."""
+    names = [f"p{i}{x}" for i in (1, 2, 3) for x in "xyz"]
+    eqs = []
+    for i, j in ((1, 2), (1, 3), (2, 3)):
+        (ui, vi), (uj, vj) = platform[i - 1], platform[j - 1]
+        eqs.append("+".join(f"(p{i}{x}-p{j}{x})^2" for x in "xyz") + f"-{(ui - uj) ** 2 + (vi - vj) ** 2}")
+    for b, p, length in legs:
+        bx, by = base[b]
+        eqs.append(f"(p{p}x-({bx}))^2+(p{p}y-({by}))^2+p{p}z^2-{length ** 2}")
+    return names, eqs
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_stewart_assembly_modes_in_singular(tmp_path):
+    base = [(0, 0), (4, 0), (5, 3), (2, 6), (-1, 5), (-2, 1)]
+    names, eqs = stewart_ideal(base, [(0, 0), (2, 0), (1, 2)],
+                               [(0, 1, 5), (1, 1, 5), (2, 2, 6), (3, 2, 6), (4, 3, 5), (5, 3, 6)])
+    script = (f'LIB "primdec.lib"; ring r = 0, ({",".join(names)}), dp; ideal J = {", ".join(eqs)};\n'
+              'ideal G = std(J); print(string(dim(G)) + " " + string(vdim(G)) + " " + '
+              'string(vdim(std(radical(J)))));\n')
+    assert run_singular(script, timeout=300).split() == ["0", "16", "16"]
+    d = example("stewart", tmp_path)
+    assert (d["mobility"], d["complex_configurations"]) == (0, 16)
