@@ -14,7 +14,7 @@ not computed (0, proved), and the row names the conditions a design lies on. Run
 Answers (columns of a row): ``mobility``; ``modes`` (the number of motion modes, the primary
 decomposition of J); ``real`` (mobility 0: the number of real assembly modes, distinct real
 solutions of J; mobility 1: the number of real circuits of the configuration curve; exact);
-``grashof`` (a four-bar's Grashof type, :mod:`mech.stdlib.grashof`); ``singular`` (the number of
+``grashof`` (a four-bar's Grashof type, :func:`mech.stdlib.grashof.grashof`); ``singular`` (the number of
 singular configurations as ``analyze`` lists them, and ``singular_types`` their types). Every row
 also has ``id``, the parameters, ``conditions`` (the generic length conditions vanishing at the
 design, when the shared work finished), ``seconds`` and ``error``.
@@ -242,40 +242,13 @@ def real_count(J: list, R: Any, mobility: int) -> int | str:
     return 0 if mobility < 0 else ""
 
 
-def fourbar_lengths(m: Mechanism) -> tuple[Fraction, Fraction, Fraction, Fraction]:
-    """(ground, crank, coupler, rocker) of a four-bar: two fixed pivots joined by a chain of three
-    bars (the crank at the first pivot)."""
-    bars = [k for k in m.links if not k.prismatic and len(k.points) == 2 and k.local[0][1] == 0]
-    if len(m.fixed) != 2 or len(bars) != 3 or len(m.links) != 3 or m.sliders:
-        raise MechRuntimeError("grashof: the mechanism is not a four-bar (two fixed pivots, three bars)")
-    (p, (px, py)), (q, (qx, qy)) = m.fixed.items()
-    chain, at, rest = [], p, list(bars)
-    for _ in range(3):
-        nxt = [k for k in rest if at in k.points]
-        if len(nxt) != 1:
-            raise MechRuntimeError("grashof: the bars do not form a chain from one pivot to the other")
-        rest.remove(nxt[0])
-        chain.append(Fraction(nxt[0].local[0][0]))
-        at = [x for x in nxt[0].points if x != at][0]
-    if at != q:
-        raise MechRuntimeError("grashof: the bars do not form a chain from one pivot to the other")
-    d2 = (Fraction(qx) - Fraction(px)) ** 2 + (Fraction(qy) - Fraction(py)) ** 2
-    ground = _sqrt(d2)
-    if ground is None:
-        raise MechRuntimeError("grashof: the distance between the pivots is not rational")
-    return ground, chain[0], chain[1], chain[2]
-
-
-def _sqrt(x: Fraction) -> Fraction | None:
-    from math import isqrt
-    a, b = isqrt(x.numerator), isqrt(x.denominator)
-    return Fraction(a, b) if a * a == x.numerator and b * b == x.denominator else None
-
-
 def grashof_type(m: Mechanism) -> str:
-    """The Grashof type of a four-bar (:func:`mech.stdlib.grashof.grashof`)."""
-    from mech.stdlib.grashof import grashof
-    return grashof(*fourbar_lengths(m)).kind
+    """The Grashof type of a four-bar (:mod:`mech.stdlib.grashof`)."""
+    from mech.stdlib.grashof import four_bar
+    fb = four_bar(m)
+    if fb is None:
+        raise MechRuntimeError("not a four-bar (two fixed pivots, three links chained between them)")
+    return fb.classify().kind
 
 
 def run_batch(spec: SweepSpec, shared: Shared, batch: list[tuple[int, dict[str, Fraction]]]) -> list[dict[str, Any]]:
