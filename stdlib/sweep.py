@@ -190,6 +190,8 @@ def _answers(spec: SweepSpec, design: dict[str, Fraction], may_be_singular: bool
     m = spec.mechanism.with_values({k: (int(v) if v.denominator == 1 else v) for k, v in design.items()})
     if "grashof" in spec.answers:
         row["grashof"] = _guard(errors, "grashof", lambda: grashof_type(m))
+    if not set(spec.answers) - {"grashof"}:
+        return
     R, J, n = constraint_ideal(m)
     mobility = dimension(J, R)
     if "mobility" in spec.answers:
