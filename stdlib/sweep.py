@@ -31,6 +31,7 @@ from mech.stdlib.mechanism import Mechanism
 
 ANSWERS = ("mobility", "modes", "real", "grashof", "singular")
 DEFAULT_ANSWERS = ("mobility", "real")
+SHARED_LIMIT = 20.0  # seconds for the shared symbolic work
 
 
 @dataclass
@@ -103,13 +104,13 @@ def _value(terms: dict[tuple[int, ...], Fraction], point: list[Fraction]) -> Fra
 
 
 def shared_work(spec: SweepSpec, params: list[str]) -> Shared:
-    """The generic mechanism's length conditions (``spec.timeout`` or 60 s at most; when they do
-    not finish, or the mechanism is not a complete intersection, nothing is skipped)."""
+    """The generic mechanism's length conditions (``SHARED_LIMIT`` seconds or ``spec.timeout``,
+    the larger, at most; when they do not finish nothing is skipped)."""
     from mech.dsl.printing import poly_str
     from mech.stdlib.analysis import global_analysis
     out = Shared(list(params))
     try:
-        a = limited(lambda: global_analysis(spec.mechanism, decompose=False), max(spec.timeout or 0, 60.0))
+        a = limited(lambda: global_analysis(spec.mechanism, decompose=False), max(spec.timeout or 0, SHARED_LIMIT))
     except Exception as e:  # noqa: BLE001 - the shared work is an optimisation: every design still runs
         out.note = f"no shared length conditions ({_message(e)}): every design analysed in full"
         return out

@@ -18,7 +18,7 @@ OPTIONS = ("workers", "timeout", "batch", "scheduler", "shared")
 
 def sweep_rows(m: Mechanism, designs: str, answers: Any = "mobility,real", out: str | None = None, *,
                scheduler: Any = None, workers: int | None = None, timeout: float | None = None,
-               batch: int | None = None, progress: bool | None = None, shared: bool = True,
+               batch: int | None = None, progress: bool | None = None, shared: bool | None = None,
                on_row: Callable[[dict[str, Any], int, int], None] | None = None) -> list[dict[str, Any]]:
     """The rows of the sweep of ``m`` over ``designs`` (a design-set description)."""
     spec = SweepSpec(m, parse_answers(answers), timeout)
@@ -39,7 +39,7 @@ def map_curves(m: Mechanism, rows: list[dict[str, Any]], x: str, y: str) -> list
         from mech.dsl.convert import parse_decimal
         v = parse_decimal(str(seen.pop()))
         values[p] = int(v) if v.denominator == 1 else v
-    common: Shared = shared_work(SweepSpec(m.with_values(values), (), 30.0), [x, y])
+    common: Shared = shared_work(SweepSpec(m.with_values(values), ()), [x, y])
     return list(zip(common.names, common.conditions))
 
 

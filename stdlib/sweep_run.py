@@ -130,8 +130,12 @@ def prepare(spec: SweepSpec, designs: DesignSet) -> tuple[SweepSpec, list[str]]:
 
 def run_sweep(spec: SweepSpec, designs: DesignSet, out: str | None = None, *, scheduler: Any = None,
               workers: int | None = None, batch: int | None = None, progress: bool | None = None,
-              on_row: OnRow | None = None, shared: bool = True) -> list[dict[str, Any]]:
-    """All rows of the sweep (those already in ``out`` included), ordered by design id."""
+              on_row: OnRow | None = None, shared: bool | None = None) -> list[dict[str, Any]]:
+    """All rows of the sweep (those already in ``out`` included), ordered by design id. ``shared``:
+    compute the generic length conditions first (default: when singular configurations are asked
+    for, the answer they save work on)."""
+    if shared is None:
+        shared = "singular" in spec.answers
     work_spec, varying = prepare(spec, designs)
     columns = spec.columns(designs.names)
     table = _Table(out, columns)
