@@ -201,7 +201,7 @@ def test_python_api_rows_or_a_data_frame():
         import pandas  # noqa: F401
         assert list(table["grashof"]) == ["crank-rocker", "change point"]
     except ImportError:
-        assert table == rows
+        assert same(table, rows)
 
 
 def test_docs_examples_run(tmp_path, monkeypatch):
