@@ -39,7 +39,9 @@ def draw_map(rows: Sequence[dict[str, Any]], x: str, y: str, answer: str, path: 
     from matplotlib.patches import Patch
     values = [r[answer] if r[answer] != "" else "error" for r in rows]
     kinds = sorted({v for v in values if v != "error"}, key=_key) + (["error"] if "error" in values else [])
-    colour = {k: (ERROR if k == "error" else COLOURS[i % len(COLOURS)]) for i, k in enumerate(kinds)}
+    from mech.stdlib.grashof import KINDS  # Grashof types keep their colours from map to map
+    slot = {k: KINDS.index(k) if answer == "grashof" and k in KINDS else i for i, k in enumerate(kinds)}
+    colour = {k: (ERROR if k == "error" else COLOURS[slot[k] % len(COLOURS)]) for k in kinds}
     xs = np.array([_float(r[x]) for r in rows])
     ys = np.array([_float(r[y]) for r in rows])
     fig = Figure(figsize=(6.4, 5.2))

@@ -176,7 +176,7 @@ def _execute(spec: SweepSpec, shared: Shared, todo: list, scheduler: Any, worker
     cluster = None
     if scheduler is None:
         n = workers or os.cpu_count() or 1
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None)
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0")
         client = Client(cluster)
     elif isinstance(scheduler, Client):
         client = scheduler

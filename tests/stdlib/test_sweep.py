@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import re
+import shlex
 from fractions import Fraction
 
 import pytest
@@ -154,7 +155,7 @@ def test_a_dask_local_cluster_gives_the_same_table(tmp_path):
     m, designs = parse_mechanism(FOURBAR), "grid g=2 l1=1:3:3 l2=2:3:2 l3=3"
     local = sweep_rows(m, designs, "mobility,real,singular", scheduler="inline")
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+                                  dashboard_address=":0") as cluster, distributed.Client(cluster) as client:
         remote = sweep_rows(m, designs, "mobility,real,singular", str(tmp_path / "d.csv"),
                             scheduler=cluster.scheduler_address, batch=2)
         assert len(client.scheduler_info()["workers"]) == 2
@@ -212,3 +213,11 @@ def test_docs_examples_run(tmp_path, monkeypatch):
     assert pairs
     for code, expected in pairs:
         assert Session(scheduler="inline").execute(code) == expected
+    (tmp_path / "fb.mech").write_text(pairs[0][0].split("sweep(")[0])
+    from mech.cli import main
+    (command,) = re.findall(r"```sh\n(mech sweep .*?)\n```", text)
+    assert main(shlex.split(command)[1:] + ["--scheduler", "inline", "--no-progress"]) == 0
+    assert (tmp_path / "fb.csv").read_text().count("\n") == 2501 and (tmp_path / "fb.png").is_file()
+    (python,) = re.findall(r"```python\n(.*?)```", text, re.S)
+    exec(python, {})  # the default: a Dask LocalCluster on all cores
+    assert (tmp_path / "fb20.csv").read_text().count("\n") == 401 and (tmp_path / "fb20.png").is_file()
