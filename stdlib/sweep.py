@@ -103,14 +103,14 @@ def _value(terms: dict[tuple[int, ...], Fraction], point: list[Fraction]) -> Fra
     return total
 
 
-def shared_work(spec: SweepSpec, params: list[str]) -> Shared:
-    """The generic mechanism's length conditions (``SHARED_LIMIT`` seconds or ``spec.timeout``,
-    the larger, at most; when they do not finish nothing is skipped)."""
+def shared_work(spec: SweepSpec, params: list[str], limit: float = SHARED_LIMIT) -> Shared:
+    """The generic mechanism's length conditions (``limit`` seconds or ``spec.timeout``, the
+    larger, at most; when they do not finish nothing is skipped)."""
     from mech.dsl.printing import poly_str
     from mech.stdlib.analysis import global_analysis
     out = Shared(list(params))
     try:
-        a = limited(lambda: global_analysis(spec.mechanism, decompose=False), max(spec.timeout or 0, SHARED_LIMIT))
+        a = limited(lambda: global_analysis(spec.mechanism, decompose=False), max(spec.timeout or 0, limit))
     except Exception as e:  # noqa: BLE001 - the shared work is an optimisation: every design still runs
         out.note = f"no shared length conditions ({_message(e)}): every design analysed in full"
         return out

@@ -13,6 +13,7 @@ from mech.stdlib.sweep_designs import design_set
 from mech.stdlib.sweep_map import draw_map
 from mech.stdlib.sweep_run import read_rows, run_sweep, typed
 
+MAP_LIMIT = 5.0  # seconds for the length conditions drawn on a map
 OPTIONS = ("workers", "timeout", "batch", "scheduler", "shared")
 
 
@@ -28,7 +29,8 @@ def sweep_rows(m: Mechanism, designs: str, answers: Any = "mobility,real", out: 
 
 def map_curves(m: Mechanism, rows: list[dict[str, Any]], x: str, y: str) -> list[tuple[str, Any]]:
     """The generic length conditions in the plane of ``x`` and ``y`` (the other parameters as in
-    the rows, when they are the same in all of them; none otherwise, or when they do not finish)."""
+    the rows, when they are the same in all of them; none otherwise, or when they do not finish in
+    ``MAP_LIMIT`` seconds)."""
     values: dict[str, Any] = {}
     for p in m.symbols():
         if p in (x, y):
@@ -39,7 +41,7 @@ def map_curves(m: Mechanism, rows: list[dict[str, Any]], x: str, y: str) -> list
         from mech.dsl.convert import parse_decimal
         v = parse_decimal(str(seen.pop()))
         values[p] = int(v) if v.denominator == 1 else v
-    common: Shared = shared_work(SweepSpec(m.with_values(values), ()), [x, y])
+    common: Shared = shared_work(SweepSpec(m.with_values(values), ()), [x, y], MAP_LIMIT)
     return list(zip(common.names, common.conditions))
 
 

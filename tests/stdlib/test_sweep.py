@@ -242,3 +242,12 @@ def test_the_examples_write_their_table_and_map(name, grid, small, tmp_path, mon
             assert r["grashof"] == grashof_truth(2, Fraction(r["l1"]), Fraction(r["l2"]), 4)
         else:
             assert int(r["real"]) == independent_3rpr_count(r["r1"], r["r2"], r["r3"])
+
+
+def test_dask_is_imported_only_when_a_sweep_runs():
+    import subprocess
+    import sys
+    code = ("import sys, mech; mech.Session().execute('LIB \\\"mechanism.lib\\\";'); "
+            "print([m for m in ('dask', 'distributed', 'pandas') if m in sys.modules])")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert out.stdout.strip() == "[]", out.stderr
