@@ -102,12 +102,12 @@ def main(argv: list[str]) -> int:
         found = {n: v.value for n, v in s.interpreter.globals.items() if isinstance(getattr(v, "value", None), Mechanism)}
         if args.mechanism:
             if args.mechanism not in found:
-                raise _usage(f"{args.file} defines no mechanism '{args.mechanism}' (it has {', '.join(found) or 'none'})")
+                raise _Usage(f"{args.file} defines no mechanism '{args.mechanism}' (it has {', '.join(found) or 'none'})")
             m = found[args.mechanism]
         elif len(found) == 1:
             m = next(iter(found.values()))
         else:
-            raise _usage(f"{args.file} defines {len(found)} mechanisms ({', '.join(found)}): choose one with --mechanism")
+            raise _Usage(f"{args.file} defines {len(found)} mechanisms ({', '.join(found)}): choose one with --mechanism")
         from .stdlib.sweep_commands import map_curves, summary
         from .stdlib.sweep import parse_answers
         from .stdlib.sweep_map import draw_map
@@ -119,7 +119,7 @@ def main(argv: list[str]) -> int:
         for spec in args.map:
             parts = spec.split(",")
             if len(parts) != 4:
-                raise _usage(f"--map {spec}: expected X,Y,ANSWER,PICTURE")
+                raise _Usage(f"--map {spec}: expected X,Y,ANSWER,PICTURE")
             x, y, answer, picture = parts
             draw_map(rows, x, y, answer, picture, map_curves(m, rows, x, y))
     except _Usage as e:
@@ -133,8 +133,4 @@ def main(argv: list[str]) -> int:
 
 
 class _Usage(Exception):
-    pass
-
-
-def _usage(message: str) -> _Usage:
-    return _Usage(message)
+    """A mistake in the command line (exit status 2)."""

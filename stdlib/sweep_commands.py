@@ -67,7 +67,8 @@ def sweep_cmd(ctx: Any, m: Mechanism, designs: str, answers: str = "mobility,rea
     that was interrupted resumes: designs already in the file are not computed again).
     designs: "grid l1=a:b:n ...", "random N l1=a:b ... [seed=S]" or "lhs N ...";
     answers: mobility, modes, real, grashof, singular; options: "workers=N timeout=S batch=N
-    scheduler=ADDRESS|inline shared=no" (default: a Dask cluster on all cores; docs/sweeps.md).
+    scheduler=ADDRESS|inline shared=yes|no" (default: a Dask cluster on all cores; the generic
+    length conditions first only for singular; docs/sweeps.md).
 
     Example:
       LIB "mechanism.lib";
