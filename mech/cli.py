@@ -1,5 +1,6 @@
 """The ``mech`` command: run a script (``mech FILE``), code (``mech -c CODE``), standard input
-(``mech -``) or, without arguments, the interactive REPL."""
+(``mech -``) or, without arguments, the interactive REPL; ``mech sweep FILE ...`` sweeps a
+mechanism over designs (mech.sweep)."""
 from __future__ import annotations
 
 import argparse
@@ -95,6 +96,10 @@ def main(argv: Optional[list[str]] = None) -> int:
     for stream in (sys.stdout, sys.stderr):  # a locale that cannot encode the output (LANG=C): escape
         if (getattr(stream, "encoding", "") or "").lower().replace("-", "") != "utf8" and hasattr(stream, "reconfigure"):
             stream.reconfigure(errors="backslashreplace")
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["sweep"] and not os.path.isfile("sweep"):  # the subcommand (a script named sweep still runs)
+        from .sweep import main as sweep_main
+        return _exit(sweep_main(argv[1:]))
     try:
         args = _parser().parse_args(argv)
     except SystemExit as e:  # --help, --version, a usage error

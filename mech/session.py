@@ -31,13 +31,15 @@ class Session:
     is analyze's default (``mech --format``); ``display``, a callable taking MIME bundles
     (``{"text/plain": ..., "text/latex": ...}``), receives the values of expression statements,
     reports and pictures instead of their text (notebooks give one); ``echo``: also print the
-    output to ``sys.stdout`` as it is produced.  A session is a context manager:
+    output to ``sys.stdout`` as it is produced; ``scheduler``: where the language's ``sweep`` runs (a Dask
+    scheduler address ``"tcp://host:8786"``, or ``"inline"``; default a local Dask cluster).  A session is a context manager:
     ``with Session() as s: ...``."""
 
     def __init__(self, warnings: bool = True, timeout: float | None = None,
                  max_memory: float | None = None, dialect: str = "singular", *,
                  report_format: str = "text", engine: str = "auto",
-                 display: Callable[[dict[str, str]], None] | None = None, echo: bool = False) -> None:
+                 display: Callable[[dict[str, str]], None] | None = None, echo: bool = False,
+                 scheduler: str | None = None) -> None:
         self._out = io.StringIO()
         if dialect not in ("singular", "m2"):
             raise ValueError(f"unknown dialect '{dialect}' (known: singular, m2)")
@@ -49,6 +51,8 @@ class Session:
         settings: dict[str, Any] = {"report_format": report_format, "engine": engine}
         if display is not None:
             settings["display"] = display
+        if scheduler is not None:
+            settings["sweep_scheduler"] = scheduler
         cls = Interpreter
         if dialect == "m2":  # Macaulay2's syntax on the same interpreter (mech.dsl.m2)
             from .dsl.m2 import M2Interpreter as cls
