@@ -9,7 +9,9 @@ kinematician reads, computed exactly with :mod:`mech.kernel.real_solve`, ``real_
 * ``grashof``: the Grashof class of a four-bar (:mod:`mech.stdlib.grashof`);
 * ``real_branches``: at each singular configuration that is a point, the real branches through it,
   their tangent directions and the type (node: branches cross and the linkage can switch; cusp;
-  isolated real configuration; ...).
+  isolated real configuration; ...);
+* ``input_output`` for a four-bar: crank to rocker, the rocker's range and limit positions, the
+  crank's dead centres, the transmission angle (:mod:`mech.stdlib.input_output`).
 
 Each step runs under a time budget (:data:`BUDGET` seconds, and never beyond the statement's own
 time limit); a step over budget is reported as such instead of holding up the report. The report
@@ -204,6 +206,12 @@ def _compute(a: Analysis) -> RealSections:
     elif a.mobility == 1:
         _circuit_section(sec, a)
         _branch_section(sec, a)
+        if fb is not None:
+            from mech.stdlib.input_output import four_bar_io
+            io = _step(sec, "input and output", four_bar_io, a.mechanism, a.ideal)
+            if io is not None:
+                sec.data["input_output"] = io.data()
+                sec.lines += ["  " + line for line in io.lines()]
     else:
         sec.lines.append(f"  real circuits and branches: only for one degree of freedom (mobility {a.mobility})")
     return sec
