@@ -193,8 +193,7 @@ def _compute(a: Analysis) -> RealSections:
                                "lengths": {"ground": str(fb.ground), "crank": str(fb.crank),
                                            "coupler": str(fb.coupler), "rocker": str(fb.rocker)},
                                "joints": list(fb.joints)}
-        sec.lines.append(f"  Grashof: {g.kind} ({'Grashof' if g.grashof else 'non-Grashof'}): "
-                         f"{g.inequality}; {g.description}")
+        sec.lines.append(f"  Grashof: {g.kind}: {g.inequality}; {g.description}")
     if a.mobility == 0:
         am = _step(sec, "assembly modes", assembly_modes, a)
         if am is not None:

@@ -5,6 +5,9 @@ from __future__ import annotations
 
 import json
 import math
+import re
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -15,7 +18,7 @@ from mech.stdlib import mechanism_real
 from mech.stdlib.analysis import analyze
 from mech.stdlib.mechanism import parse_mechanism
 from mech.stdlib.reports import report_data, report_text
-from tests.util import parse_poly, run_singular
+from tests.util import ROOT, parse_poly, run_singular
 
 # base A1 = (0,0), A2 = (6,0), A3 = (0,5); platform B1, B2 = B1 + 5 (c,s), B3 = B1 + R (4,3); legs 5, 7, 4
 RPR = "fix A1; fix A2 6 0; fix A3 0 5; bar A1 B1 5; bar A2 B2 7; bar A3 B3 4; body B1 B2 5 0 B3 4 3"
@@ -115,3 +118,47 @@ def test_json_command():
     out = s.execute(f'LIB "mechanism.lib"; mechanism m = "{CRANK_ROCKER}"; analyze(m, "json");')
     d = json.loads(out)
     assert d["grashof"]["kind"] == "crank-rocker" and d["real_circuits"][0]["circuits"] == 2
+
+
+def _real_answers_blocks():
+    """The ```singular blocks of docs/mechanisms.md's "Real answers" section, each with the ```text
+    block after it and whether that block is an excerpt."""
+    text = (ROOT / "docs" / "mechanisms.md").read_text()
+    section = text[text.index("## Real answers"):text.index("## Limits")]
+    parts = re.split(r"```(\w*)\n(.*?)```", section, flags=re.S)
+    out = []
+    for k in range(1, len(parts) - 3, 3):
+        if parts[k] == "singular":
+            nxt_tag, nxt, between = parts[k + 3], parts[k + 4], parts[k + 2]
+            out.append((parts[k + 1], nxt if nxt_tag == "text" else None, "excerpt" in between))
+    return out
+
+
+@pytest.mark.parametrize("code, expected, excerpt", _real_answers_blocks(), ids=lambda v: str(v)[:20])
+def test_docs_real_answers(code, expected, excerpt):
+    out = Session().execute(code)
+    if expected is None:
+        return
+    if excerpt:
+        lines = out.splitlines()
+        assert all(line in lines for line in expected.splitlines()), out
+    else:
+        assert out == expected
+
+
+def test_docs_pictures(tmp_path):
+    """examples/real_answers.mech draws the pictures of docs/img (sampled plots: the same elements,
+    dot counts within a few percent)."""
+    r = subprocess.run([sys.executable, "-m", "mech", str(ROOT / "examples" / "real_answers.mech")],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0 and not r.stderr, r.stderr
+    docs = ROOT / "docs" / "img"
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == sorted(p.name for p in docs.iterdir()) and len(names) == 10
+    text = (ROOT / "docs" / "mechanisms.md").read_text()
+    for name in names:
+        assert f"img/{name}" in text
+        ours, theirs = (tmp_path / name).read_text(), (docs / name).read_text()
+        assert re.findall(r'class="([\w-]+)"', ours) == re.findall(r'class="([\w-]+)"', theirs)
+        a, b = ours.count("M"), theirs.count("M")
+        assert abs(a - b) <= 0.05 * b, name
