@@ -13,8 +13,9 @@ kinematician reads, computed exactly with :mod:`mech.kernel.real_solve`, ``real_
 * ``input_output`` for a four-bar: crank to rocker, the rocker's range and limit positions, the
   crank's dead centres, the transmission angle (:mod:`mech.stdlib.input_output`).
 
-Each step runs under a time budget (:data:`BUDGET` seconds, and never beyond the statement's own
-time limit); a step over budget is reported as such instead of holding up the report. The report
+The steps share a time budget (:data:`BUDGET` seconds for all of them, and never beyond the
+statement's own time limit); a step over budget is reported as such instead of holding up the
+report. The report
 formats (:mod:`mech.stdlib.reports`) call :func:`real_sections` once per analysis.
 """
 from __future__ import annotations
@@ -30,8 +31,8 @@ from mech.kernel.real_roots import RealSolvingError
 from mech.stdlib.analysis import Analysis
 from mech.stdlib.grashof import four_bar
 
-#: Seconds each real step may take (besides the statement's time limit, if any).
-BUDGET = 60.0
+#: Seconds the real steps of one report may take together (besides the statement's time limit).
+BUDGET = 30.0
 #: Digits after the point of the decimals in the report.
 DIGITS = 4
 
@@ -56,6 +57,7 @@ class RealSections:
 
     data: dict[str, Any] = field(default_factory=dict)
     lines: list[str] = field(default_factory=list)
+    deadline: float = field(default_factory=lambda: time.monotonic() + BUDGET, repr=False)
 
 
 def _remaining() -> Optional[float]:
@@ -104,14 +106,14 @@ def _step(sec: RealSections, what: str, fn: Callable[..., Any], *args: Any) -> A
     """Run one step under the budget; None (and a note in the report) when it is over budget or
     the exact methods refuse the input."""
     try:
-        ok, value = within(BUDGET, fn, *args)
+        ok, value = within(sec.deadline - time.monotonic(), fn, *args)
     except RealSolvingError as e:
         sec.lines.append(f"  {what}: not computed ({e})")
         sec.data.setdefault("real_notes", []).append(f"{what}: {e}")
         return None
     if not ok:
-        budget = f"{BUDGET:g} s" if _remaining() is None else "the statement's time limit"
-        sec.lines.append(f"  {what}: too expensive, not computed (over the budget of {budget})")
+        budget = f"the real answers' budget of {BUDGET:g} s" if _remaining() is None else "the statement's time limit"
+        sec.lines.append(f"  {what}: too expensive, not computed (over {budget})")
         sec.data.setdefault("real_notes", []).append(f"{what}: over budget")
         return None
     return value
