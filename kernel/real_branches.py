@@ -366,10 +366,11 @@ def _forms(n: int, count: int) -> list[list[fmpq]]:
 
 
 def _transversal(S: _Setting, cone: list[Poly], form: list[fmpq]) -> bool:
-    """Whether ``form`` vanishes on no line of the tangent cone (over C)."""
+    """Whether ``form`` vanishes on no line of the tangent cone (over C) and its hyperplane through
+    the point contains no component of the curve (one not through the point may lie in it)."""
     xs = S.ring.gens()[:S.n]
     w = sum((x * c for x, c in zip(xs, form) if c != 0), S.ring.zero())
-    return dimension(cone + [w], S.ring) == 0
+    return dimension(cone + [w], S.ring) == 0 and dimension(S.base() + [_shifted(S, form)], S.ring) <= 0
 
 
 def _cone_lines(S: _Setting, cone: list[Poly]) -> _Lines:

@@ -71,8 +71,8 @@ def grashof(ground: Fraction, crank: Fraction, coupler: Fraction, rocker: Fracti
         else:
             kind, text = "crank-rocker", "rocker-crank: the output link turns fully, the input link rocks"
     elif rel == "=":
-        kind, text = "change point", ("s + l = p + q: all four links can be aligned; there two real "
-                                      "branches cross and the linkage can switch circuits")
+        kind, text = "change point", ("all four links can be aligned; there two real branches cross "
+                                      "and the linkage can switch circuits")
     else:
         kind = "non-Grashof"
         if l > s + p + q:

@@ -240,6 +240,10 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
       →   [1] dim 0, has real points: <s1, c1-1>
       →   [2] dim 0, has real points: <s1, c1+1>
       → singular configurations (Theorem 1: V(J + I_2(dJ))): 0
+      → real answers (exact real solving):
+      →   assembly modes: 2 complex, 2 real
+      →     [1] A = (-1.0000, 0.0000)
+      →     [2] A = (1.0000, 0.0000)
     """
     form = form or ctx.settings.get("report_format", "text")
     render = FORMATS.get(form)

@@ -194,15 +194,22 @@ def _clip(p: tuple[float, float], d: tuple[float, float], box: tuple[tuple[float
     return [(p[0] + t * d[0], p[1] + t * d[1]) for t in (lo, hi)]
 
 
-def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str) -> Scene:
-    """The mechanism ``m`` with its joint points at ``xy``."""
+def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str,
+                    path: Sequence[tuple[float, float]] = ()) -> Scene:
+    """The mechanism ``m`` with its joint points at ``xy`` (over the points ``path`` of a traced
+    path, if given)."""
     from mech.stdlib._scene import Axes2D, Lines, Markers, Scene, Text, nice_ticks
     scene = Scene(520, 440)
     _title(scene, title, 285)
-    xs, ys = [x for x, _ in xy.values()], [y for _, y in xy.values()]
+    xs = [x for x, _ in xy.values()] + [x for x, _ in path]
+    ys = [y for _, y in xy.values()] + [y for _, y in path]
     pad = 0.25 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
     axes = Axes2D((70, 40, 500, 390), (min(xs) - pad, max(xs) + pad), (min(ys) - pad, max(ys) + pad), equal=True)
     axes.frame(scene, nice_ticks(*axes.xrange), nice_ticks(*axes.yrange), "x", "y")
+    if len(path):
+        np = _numpy()
+        scene.add(Markers(_thin(np.column_stack(axes.map(*np.asarray(path).T))), "dot", 2, COLOURS[1],
+                          cls="path"))
     for s in m.sliders:
         if isinstance(s, LineSlider):  # the line through two points (of a link, or fixed)
             (ax, ay), (bx, by) = xy[s.a], xy[s.b]

@@ -8,6 +8,7 @@ from typing import Any, Callable, Sequence
 from mech.kernel import Poly
 from mech.kernel.ideals import dp_ring, ideals_equal, move, std
 from mech.stdlib.analysis import Analysis, SingularPoint
+from mech.stdlib.mechanism_real import real_sections
 from mech.stdlib.realpoints import count_real_roots
 from mech.stdlib.standard import normalize
 
@@ -84,6 +85,7 @@ def report_data(a: Analysis) -> dict:
             "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
             "local_components": [ps(_local(s, c)) for c in s.local_components],
             "transition": s.transition} for s in a.singular]
+        d.update(real_sections(a).data)
     return d
 
 
@@ -163,6 +165,7 @@ def report_text(a: Analysis) -> str:
             out.append(f"     local components (Theorem 3): {len(s.local_components)}: " +
                        ", ".join(_show(_local(s, c)) for c in s.local_components))
             out.append(f"     {s.transition}")
+    out += real_sections(a).lines
     return "\n".join(out) + "\n"
 
 

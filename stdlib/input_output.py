@@ -1,0 +1,293 @@
+"""Input–output analysis of a one-degree-of-freedom mechanism: an input link and an output link
+(their angles ``theta_i = atan2(s_i, c_i)`` to the ground's x-axis), the range of the output, its
+limit positions, the input's dead-centre positions and, for a four-bar, the transmission angle.
+
+Everything is exact up to the final decimals (:mod:`mech.kernel.real_solve`):
+
+* a function ``f`` on the configuration curve ``V(J)`` (``n`` variables) is critical where
+  ``[dJ; grad f]`` has rank below ``n`` (all its ``n``-minors vanish: Lagrange; singular
+  configurations are included); for an angle ``theta_j`` the gradient is the rotation field
+  ``-s_j d/dc_j + c_j d/ds_j``;
+* the **limit positions** of the output are the real critical points of ``theta_out`` (where it
+  stops and reverses: a four-bar's crank and coupler are aligned), the **dead-centre positions**
+  those of ``theta_in`` (the input cannot drive the output there: coupler and output aligned);
+* the **range** of an angle is a union of arcs between consecutive critical values: an arc is
+  attained when the fibre over one rational point inside it (``(c, s)`` from a rational
+  ``tan(phi/2)``) has a real point (a zero-dimensional count); no critical value and a real fibre:
+  the link turns fully;
+* the **transmission angle** ``mu`` at the joint of the coupler and the output: ``cos mu`` is the
+  dot product of the two links' vectors from that joint over their lengths; its extremes over the
+  motion are among the critical values of the dot product.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any, Optional
+
+from flint import fmpq
+
+from mech.dsl.errors import MechRuntimeError
+from mech.dsl.registry import command
+from mech.kernel import Poly, PolyRing
+from mech.kernel.matrix import Matrix, minors
+from mech.kernel.real_roots import RealSolvingError
+from mech.kernel.real_solve import count_solutions, real_solutions
+from mech.stdlib.mechanism import Mechanism
+
+
+@dataclass
+class InputOutput:
+    """The answers in degrees (two decimals): the output's ``range`` (arcs ``(from, to)``
+    counterclockwise; ``[(-180, 180)]`` when it turns fully), the configurations at the output's
+    limit positions and at the input's dead centres as ``(input angle, output angle)``, the input's
+    range likewise, the transmission angle's ``(min, max)`` (None when not asked), and the singular
+    configurations where an angle is critical only because the curve is singular there."""
+
+    input_link: int
+    output_link: int
+    output_range: list[tuple[float, float]]
+    input_range: list[tuple[float, float]]
+    limit_positions: list[tuple[float, float]]
+    dead_centres: list[tuple[float, float]]
+    transmission: Optional[tuple[float, float]] = None
+    singular: list[tuple[float, float]] = field(default_factory=list)
+
+    def lines(self) -> list[str]:
+        i, o = self.input_link, self.output_link
+        out = [f"input link {i}, output link {o} (angles to the x-axis, degrees):"]
+        out.append(f"  output range: {_arcs(self.output_range)}")
+        out.append(f"  input range: {_arcs(self.input_range)}")
+        if self.limit_positions:
+            out.append("  limit positions of the output (input, output): " + _pairs(self.limit_positions))
+        else:
+            out.append("  limit positions of the output: none")
+        if self.dead_centres:
+            out.append("  dead-centre positions of the input (input, output): " + _pairs(self.dead_centres))
+        else:
+            out.append("  dead-centre positions of the input: none (the input drives the output everywhere)")
+        if self.singular:
+            out.append("  singular configurations on the way (input, output): " + _pairs(self.singular))
+        if self.transmission is not None:
+            lo, hi = self.transmission
+            out.append(f"  transmission angle: from {lo:.2f} to {hi:.2f} (largest deviation from 90: "
+                       f"{max(abs(90 - lo), abs(90 - hi)):.2f})")
+        return out
+
+    def data(self) -> dict[str, Any]:
+        return {"input_link": self.input_link, "output_link": self.output_link,
+                "output_range": [list(a) for a in self.output_range],
+                "input_range": [list(a) for a in self.input_range],
+                "output_turns_fully": self.output_range == [(-180.0, 180.0)],
+                "input_turns_fully": self.input_range == [(-180.0, 180.0)],
+                "limit_positions": [list(p) for p in self.limit_positions],
+                "dead_centres": [list(p) for p in self.dead_centres],
+                "singular": [list(p) for p in self.singular],
+                "transmission_angle": list(self.transmission) if self.transmission else None}
+
+
+def _arcs(arcs: list[tuple[float, float]]) -> str:
+    if arcs == [(-180.0, 180.0)]:
+        return "turns fully"
+    if not arcs:
+        return "no real motion"
+    return ", ".join(f"[{a:.2f}, {b:.2f}]" for a, b in arcs)
+
+
+def _pairs(ps: list[tuple[float, float]]) -> str:
+    return ", ".join(f"({a:.2f}, {b:.2f})" for a, b in ps)
+
+
+# ---------------------------------------------------------------- exact steps
+def _critical_system(J: list[Poly], grad: list[Poly]) -> list[Poly]:
+    R = J[0].ring
+    n = R.nvars
+    rows = [[g.diff(k) for k in range(n)] for g in J] + [grad]
+    M = Matrix.from_rows(R, rows)
+    return list(J) + [d for d in minors(M, n) if not d.is_zero()]
+
+
+def _rotation(R: PolyRing, j: int) -> list[Poly]:
+    """The gradient-like field of ``theta_j``: ``-s_j`` at ``c_j``, ``c_j`` at ``s_j``."""
+    g = [R.zero()] * R.nvars
+    c, s = R.gens()[2 * j - 2], R.gens()[2 * j - 1]
+    g[2 * j - 2], g[2 * j - 1] = -s, c
+    return g
+
+
+def _critical_points(J: list[Poly], grad: list[Poly]) -> tuple[list[list[float]], list[list[float]]]:
+    """The real critical points of ``f`` (gradient ``grad``) on ``V(J)``: those where the curve is
+    smooth, and the singular configurations among them (where ``dJ`` has rank below ``n - 1``:
+    the smallest singular values of the Jacobian at the 10^-12-boxes' centres tell)."""
+    import numpy as np
+    R = J[0].ring
+    sols = real_solutions(_critical_system(J, grad), R, 12)
+    pts = [[float(Fraction(int(v.p), int(v.q))) for v in s.midpoint()] for s in sols.real]
+    jac = [[g.diff(k) for k in range(R.nvars)] for g in J]
+    smooth, singular = [], []
+    for p in pts:
+        sv = np.linalg.svd(np.array([[_eval(d, p) for d in row] for row in jac]), compute_uv=False)
+        (smooth if sv[R.nvars - 2] > 1e-8 else singular).append(p)
+    return smooth, singular
+
+
+def _angle(pt: list[float], j: int) -> float:
+    return round(math.degrees(math.atan2(pt[2 * j - 1], pt[2 * j - 2])), 2)
+
+
+def _on_circle(phi: float) -> tuple[Fraction, Fraction]:
+    """A rational point of the unit circle at an angle close to ``phi`` (radians)."""
+    if abs(abs(phi) - math.pi) < 1e-9:
+        return Fraction(-1), Fraction(0)
+    t = Fraction(math.tan(phi / 2)).limit_denominator(10 ** 6)
+    return (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
+
+
+def _attained(J: list[Poly], j: int, phi: float) -> bool:
+    R = J[0].ring
+    c, s = _on_circle(phi)
+    cj, sj = R.gens()[2 * j - 2], R.gens()[2 * j - 1]
+    fibre = list(J) + [cj - R.const(fmpq(c.numerator, c.denominator)),
+                       sj - R.const(fmpq(s.numerator, s.denominator))]
+    return count_solutions(fibre, R)[1] > 0
+
+
+def angle_range(J: list[Poly], j: int, critical: list[list[float]]) -> list[tuple[float, float]]:
+    """The arcs of ``theta_j`` over the real curve, from its critical points."""
+    values = sorted({_angle(p, j) for p in critical})
+    if len(values) < 2:  # no reversal: the link turns fully (through the one value, if any) or not at all
+        return [(-180.0, 180.0)] if _attained(J, j, math.radians(values[0] + 180) if values else 0.3) else []
+    arcs = []
+    for k, a in enumerate(values):
+        b = values[(k + 1) % len(values)]
+        span = (b - a) % 360 or 360.0
+        if _attained(J, j, math.radians(a + span / 2)):
+            arcs.append((a, b))
+    merged: list[tuple[float, float]] = []
+    for a, b in arcs:  # consecutive attained arcs join at their common end
+        if merged and merged[-1][1] == a:
+            merged[-1] = (merged[-1][0], b)
+        else:
+            merged.append((a, b))
+    if len(merged) > 1 and merged[-1][1] == merged[0][0]:
+        merged[0] = (merged[-1][0], merged[0][1])
+        merged.pop()
+    return merged
+
+
+def input_output(m: Mechanism, J: list[Poly], inp: int, out: int,
+                 transmission: Optional[tuple[str, int, int]] = None) -> InputOutput:
+    """The input–output answers for links ``inp`` and ``out`` (1-based) of ``m`` with constraint
+    ideal ``J`` (numeric lengths, mobility 1); ``transmission = (joint, k, j)``: the transmission
+    angle at the joint of links ``k`` and ``j``."""
+    R = J[0].ring
+    lim, sing = _critical_points(J, _rotation(R, out))
+    dead, sing2 = _critical_points(J, _rotation(R, inp))
+    pair = lambda p: (_angle(p, inp), _angle(p, out))  # noqa: E731
+    io = InputOutput(inp, out, angle_range(J, out, lim), angle_range(J, inp, dead),
+                     sorted(map(pair, lim)), sorted(map(pair, dead)),
+                     singular=sorted(set(map(pair, sing + sing2))))
+    if transmission is not None:
+        io.transmission = _transmission(m, J, *transmission)
+    return io
+
+
+def _transmission(m: Mechanism, J: list[Poly], joint: str, k: int, j: int) -> tuple[float, float]:
+    """``(min, max)`` of the angle at ``joint`` between links ``k`` and ``j`` (degrees)."""
+    R = J[0].ring
+    pos, _ = m.positions(R)
+    ends = []
+    for link in (m.links[k - 1], m.links[j - 1]):
+        other = next(p for p in link.points if p != joint and p in _joints(m))
+        ends.append((pos[other][0] - pos[joint][0], pos[other][1] - pos[joint][1]))
+    (ux, uy), (vx, vy) = ends
+    dot = ux * vx + uy * vy
+    crit = [p for part in _critical_points(J, [dot.diff(i) for i in range(R.nvars)]) for p in part]
+    if not crit:
+        raise RealSolvingError("no extreme of the transmission angle found")
+    n2 = [(x * x + y * y) for x, y in ends]
+    vals = []
+    for p in crit:
+        norm = math.sqrt(_eval(n2[0], p) * _eval(n2[1], p))
+        vals.append(math.degrees(math.acos(max(-1.0, min(1.0, _eval(dot, p) / norm)))))
+    return round(min(vals), 2), round(max(vals), 2)
+
+
+def _joints(m: Mechanism) -> set[str]:
+    seen: dict[str, int] = {}
+    for link in m.links:
+        for p in link.points:
+            seen[p] = seen.get(p, 0) + 1
+    return {p for p, c in seen.items() if c > 1 or p in m.fixed}
+
+
+def _eval(p: Poly, pt: list[float]) -> float:
+    return sum(float(Fraction(int(c.p), int(c.q))) * math.prod(v ** e for v, e in zip(pt, ex))
+               for ex, c in p.terms.items())
+
+
+def four_bar_io(m: Mechanism, J: list[Poly]) -> Optional[InputOutput]:
+    """The crank (input) to rocker (output) analysis of a four-bar, with its transmission angle at
+    the coupler-rocker joint (None if ``m`` is not a four-bar)."""
+    from mech.stdlib.grashof import four_bar
+    fb = four_bar(m)
+    if fb is None:
+        return None
+    crank, coupler, rocker = fb.links
+    return input_output(m, J, crank, rocker, (fb.joints[2], coupler, rocker))
+
+
+# ---------------------------------------------------------------- command
+def _command(m: Mechanism, inp: Optional[int], out: Optional[int]) -> str:
+    from mech.stdlib.analysis import run_analysis
+    from mech.stdlib.grashof import four_bar
+    if m.symbols():
+        raise MechRuntimeError(f"inputOutput needs numeric lengths (setLengths(m, ...) for {','.join(m.symbols())})")
+    a = run_analysis(m, local=False)
+    if a.mobility != 1:
+        raise MechRuntimeError(f"inputOutput: the mechanism must have one degree of freedom (mobility {a.mobility})")
+    fb = four_bar(m)
+    if inp is None:
+        if fb is None:
+            raise MechRuntimeError("inputOutput: give the input and output links (numbers) of a mechanism "
+                                   "that is not a four-bar")
+        inp, out = fb.links[0], fb.links[2]
+    n = len(m.links)
+    for k in (inp, out):
+        if not 1 <= k <= n:
+            raise MechRuntimeError(f"inputOutput: there is no link {k} (the links are 1..{n})")
+    if inp == out:
+        raise MechRuntimeError("inputOutput: the input and the output must be different links")
+    trans = None
+    if fb is not None and (inp, out) == (fb.links[0], fb.links[2]):
+        trans = (fb.joints[2], fb.links[1], fb.links[2])
+    elif fb is not None and (inp, out) == (fb.links[2], fb.links[0]):
+        trans = (fb.joints[1], fb.links[1], fb.links[0])
+    try:
+        io = input_output(m, a.ideal, inp, out, trans)
+    except RealSolvingError as e:
+        raise MechRuntimeError(f"inputOutput: {e}") from None
+    return "\n".join(io.lines())
+
+
+@command("inputOutput", lib="mechanism.lib")
+def input_output_command(m: Mechanism, inp: int = 0, out: int = 0) -> str:
+    """inputOutput(m[, input, output]): the range of the output link's angle, its limit positions,
+    the input's dead-centre positions and (for a four-bar) the transmission angle, in degrees;
+    input and output are link numbers (default for a four-bar: the crank and the rocker).
+
+    Example:
+      LIB "mechanism.lib";
+      mechanism m = "ground O A 5; bar O B 2; bar B C 5; bar C A 4";
+      inputOutput(m);
+      → input link 1, output link 3 (angles to the x-axis, degrees):
+      →   output range: [-101.54, -36.87], [36.87, 101.54]
+      →   input range: turns fully
+      →   limit positions of the output (input, output): (-126.87, -36.87), (-34.05, 101.54), (34.05, -101.54), (126.87, 36.87)
+      →   dead-centre positions of the input: none (the input drives the output everywhere)
+      →   transmission angle: from 36.87 to 101.54 (largest deviation from 90: 53.13)
+    """
+    if (inp == 0) != (out == 0):
+        raise MechRuntimeError("inputOutput: give both the input and the output link, or neither")
+    return _command(m, inp or None, out or None)

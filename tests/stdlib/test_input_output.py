@@ -1,0 +1,101 @@
+"""Input–output analysis (stdlib/input_output.py) against hand-derived values of a crank-rocker, and
+the other Grashof types, the change point and a slider-crank."""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from mech.stdlib.analysis import analyze
+from mech.stdlib.input_output import input_output
+from mech.stdlib.mechanism import parse_mechanism
+from mech.stdlib.reports import report_data
+from tests.util import error, run
+
+CRANK_ROCKER = "ground O A 5; bar O B 2; bar B C 5; bar C A 4"
+
+
+def _io(text, inp=1, out=3, trans=("C", 2, 3)):
+    m = parse_mechanism(text)
+    R, J = m.constraints()
+    return input_output(m, J, inp, out, trans)
+
+
+def test_crank_rocker_hand_derived():
+    """Ground g = 5, crank a = 2, coupler b = 5, rocker c = 4.  The rocker's limit positions have the
+    crank and coupler aligned, |OC| = b + a = 7 or b - a = 3, so the angle OAC is
+    arccos((g^2 + c^2 - |OC|^2) / (2 g c)); the link C A points from C to A, at -OAC for C above the
+    ground.  The transmission angle at C has cos = (b^2 + c^2 - |BA|^2) / (2 b c), |BA| in [g-a, g+a]."""
+    g, a, b, c = 5, 2, 5, 4
+    io = _io(CRANK_ROCKER)
+    outs, ins = [], []
+    for oc, folded in ((b + a, False), (b - a, True)):
+        oac = math.degrees(math.acos((g * g + c * c - oc * oc) / (2 * g * c)))
+        cx, cy = g + c * math.cos(math.radians(180 - oac)), c * math.sin(math.radians(180 - oac))
+        crank = math.degrees(math.atan2(cy, cx)) + (-180 if folded else 0)
+        for sign in (1, -1):  # C above and below the ground
+            outs.append(-sign * oac)
+            ins.append(sign * crank)
+    expected = sorted(zip(ins, outs))
+    assert len(io.limit_positions) == 4
+    for (i1, o1), (i2, o2) in zip(io.limit_positions, expected):
+        assert abs(i1 - i2) < 0.01 and abs(o1 - o2) < 0.01
+    swing = sorted(abs(o) for o in outs)
+    lo, hi = round(swing[0], 2), round(swing[3], 2)
+    assert io.output_range == [(-hi, -lo), (lo, hi)] == [(-101.54, -36.87), (36.87, 101.54)]
+    assert io.input_range == [(-180.0, 180.0)] and io.dead_centres == [] and io.singular == []
+    mu = [math.degrees(math.acos((b * b + c * c - d * d) / (2 * b * c))) for d in (g - a, g + a)]
+    assert io.transmission == (round(mu[0], 2), round(mu[1], 2)) == (36.87, 101.54)
+
+
+def test_driven_from_the_rocker():
+    """The rocker as input: its extremes are dead centres (coupler and crank aligned: the
+    transmission angle at B reaches 0 and 180)."""
+    io = _io(CRANK_ROCKER, 3, 1, ("B", 2, 1))
+    assert io.output_range == [(-180.0, 180.0)] and len(io.dead_centres) == 4
+    assert io.transmission == (0.0, 180.0)
+
+
+@pytest.mark.parametrize("text, output_full, input_full", [
+    ("ground O A 2; bar O B 5; bar B C 4; bar C A 6", True, True),      # double-crank
+    ("ground O A 5; bar O B 4; bar B C 2; bar C A 6", False, False),    # double-rocker
+    ("ground O A 7; bar O B 4; bar B C 3; bar C A 5", False, False),    # non-Grashof
+    ("ground O A 5; bar O B 2; bar B C 4; bar C A 3", False, True),     # change point
+])
+def test_grashof_types(text, output_full, input_full):
+    io = _io(text)
+    assert (io.output_range == [(-180.0, 180.0)]) == output_full
+    assert (io.input_range == [(-180.0, 180.0)]) == input_full
+
+
+def test_change_point_singular():
+    io = _io("ground O A 5; bar O B 2; bar B C 4; bar C A 3")
+    assert io.singular == [(180.0, 0.0)]          # the folded configuration: crank back, all aligned
+    assert io.output_range == [(-93.82, 93.82)]   # through 0, the output at the change point
+
+
+def test_slider_crank_coupler_angle():
+    """Crank 1, coupler 2, slider on the x-axis: sin(theta2) = -sin(theta1)/2, |theta2| <= 30 or >= 150."""
+    io = _io("fix O; bar O A 1; bar A B 2; slider B", 1, 2, None)
+    assert io.output_range == [(-30.0, 30.0), (150.0, -150.0)]
+    assert io.limit_positions == [(-90.0, 30.0), (-90.0, 150.0), (90.0, -150.0), (90.0, -30.0)]
+
+
+def test_report_and_command():
+    d = report_data(analyze(parse_mechanism(CRANK_ROCKER)))["input_output"]
+    assert d["output_range"] == [[-101.54, -36.87], [36.87, 101.54]] and d["input_turns_fully"]
+    assert d["transmission_angle"] == [36.87, 101.54]
+    out = run(f'LIB "mechanism.lib"; mechanism m = "{CRANK_ROCKER}"; inputOutput(m, 1, 3);')
+    assert "  transmission angle: from 36.87 to 101.54 (largest deviation from 90: 53.13)" in out
+
+
+@pytest.mark.parametrize("code, message", [
+    ('mechanism s = "fix O; bar O A 1; bar A B 2; slider B"; inputOutput(s);', "not a four-bar"),
+    ('inputOutput(m, 1, 7);', "no link 7"),
+    ('inputOutput(m, 1, 1);', "different links"),
+    ('inputOutput(m, 1);', "both"),
+    ('mechanism s = "fix O; bar O A 1; bar A B 1"; inputOutput(s, 1, 2);', "one degree of freedom"),
+])
+def test_errors(code, message):
+    e = error(f'LIB "mechanism.lib"; mechanism m = "{CRANK_ROCKER}";\n{code}')
+    assert message in str(e)
