@@ -139,12 +139,16 @@ def assembly_modes(a: Analysis, digits: int = DIGITS) -> dict[str, Any]:
     sols = real_solutions(a.ideal, a.ring, digits)
     rep = sols.representation
     roots = [s.root for s in sols.real]
-    pos, _ = a.mechanism.positions(a.ring)
-    moving = [p for p in a.mechanism.points() if p not in a.mechanism.fixed]
+    moving: list[str] = []
+    pos: dict[str, tuple[Poly, ...]] = {}
+    if hasattr(a.mechanism.model, "positions"):       # points (planar or spatial); loops of joints have none
+        pos, _ = a.mechanism.positions(a.ring)
+        moving = [p for p in a.mechanism.points() if p not in a.mechanism.fixed and p in pos]
     coords = [c for p in moving for c in pos[p]]
-    values = _rounded_boxes(rep, roots, coords, digits) if roots else []
+    starts = [sum(len(pos[q]) for q in moving[:i]) for i in range(len(moving))]
+    values = _rounded_boxes(rep, roots, coords, digits) if roots and coords else [[] for _ in roots]
     config = _rounded_boxes(rep, roots, list(a.ring.gens()[:a.nvars]), digits) if roots else []
-    poses = [{"points": {p: v[2 * i:2 * i + 2] for i, p in enumerate(moving)},
+    poses = [{"points": {p: v[k:k + len(pos[p])] for p, k in zip(moving, starts)},
               "configuration": c} for v, c in zip(values, config)]
     return {"complex": sols.complex_count, "real": sols.real_count, "with_multiplicity": sols.total,
             "poses": poses}
@@ -202,7 +206,8 @@ def _compute(a: Analysis) -> RealSections:
             sec.data["assembly_modes"] = am
             sec.lines.append(f"  assembly modes: {am['complex']} complex, {am['real']} real")
             for i, pose in enumerate(am["poses"], 1):
-                pts = ", ".join(f"{p} = ({x}, {y})" for p, (x, y) in pose["points"].items())
+                pts = ", ".join(f"{p} = ({', '.join(xs)})" for p, xs in pose["points"].items()) \
+                    or "configuration (" + ", ".join(pose["configuration"]) + ")"
                 sec.lines.append(f"    [{i}] {pts}")
     elif a.mobility == 1:
         _circuit_section(sec, a)
