@@ -91,6 +91,18 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         for program in parse_pieces(text, source):
             self.run(program, source)
 
+    def execute_here(self, text: str) -> None:
+        """Run the statements of ``text`` in the current scope (Singular's ``execute``)."""
+        saved = self.source
+        source = Source("<execute>", text)
+        try:
+            for program in parse_pieces(text, source):
+                self.source = source
+                for stmt in program.body:
+                    self.exec_stmt(stmt)
+        finally:
+            self.source = saved
+
     def run(self, program: A.Program, source: Source) -> None:
         """Run a parsed program at top level."""
         saved = self.source
