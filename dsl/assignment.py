@@ -5,9 +5,16 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..kernel import Poly
 from . import ast as A
 from .errors import MechNameError, MechRuntimeError, MechTypeError
+from .printing import set_short
 from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_int, to_matrix, to_poly, typeof
+
+
+#: Singular's bounds on standard basis computations: mech computes without them (only 0 is accepted).
+UNSUPPORTED_BOUNDS = {"degBound": "a degree bound for std", "multBound": "a multiplicity bound for std",
+                      "noether": "a highest corner for local standard bases"}
 
 
 class Assignment:
@@ -43,6 +50,13 @@ class Assignment:
         name = base.id
         var = self.lookup(name)
         if var is None:
+            if name == "short" and not chain and self.ring is not None:
+                set_short(self.ring.poly, bool(to_int(value)))
+                return
+            if name in UNSUPPORTED_BOUNDS and not chain:
+                if (not value.is_zero()) if isinstance(value, Poly) else to_int(value) != 0:
+                    raise MechRuntimeError(f"{name} other than 0 ({UNSUPPORTED_BOUNDS[name]}) is not supported")
+                return
             if name in self.sysvars or name in ("timer", "rtimer"):
                 self.sysvars[name] = to_int(value)
                 return

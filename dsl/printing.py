@@ -30,6 +30,13 @@ def is_short(ring: PolyRing) -> bool:
     return short
 
 
+def set_short(ring: PolyRing, on: bool) -> None:
+    """Singular's ``short = 0;`` / ``short = 1;``: print the ring's polynomials in long form
+    (``3*x^2*y``) or, when every name is one letter, in short form (``3x2y``)."""
+    _short_cache.pop(id(ring), None)
+    _short_cache[id(ring)] = (ring, bool(on) and is_short(ring))
+
+
 def coeff_str(field: Any, c: Any, short: bool = True) -> str:
     """A coefficient as Singular prints a number of this field (``short``: the ring's short form)."""
     if field_params(field):

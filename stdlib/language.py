@@ -33,6 +33,23 @@ def print_(ctx, x: Any) -> None:
     ctx.write(print_form(x) + "\n")
 
 
+@command("dbprint")
+def dbprint(ctx, level: Any, *xs: Any) -> None:
+    """dbprint(i, x, ...): print each x as print does when the int i is positive (procedures pass
+    printlevel-voice+2, so that printlevel switches their messages on).
+
+    Example:
+      int debug = 1;
+      dbprint(debug, "step 1");
+      → step 1
+      dbprint(0, "hidden");
+    """
+    if not isinstance(level, int) or level <= 0:
+        return
+    for x in xs:
+        print_(ctx, x)
+
+
 @command("defined", raw=True)
 def defined(ctx, node: A.Expr) -> int:
     """defined(x): 0 if x is undefined, -1 for a ring variable or a value that is no name, else 1 + the

@@ -65,6 +65,71 @@ preimage(S, phi, zero);
 setring S; ideal J = x-y; setring R;
 preimage(S, phi, J);
 """,
+    "listvar": """
+int a = 3;
+intvec v = 1,2;
+string s = "ab";
+list L = 1,2;
+ring r=0,(x,y,z),dp;
+poly f = x;
+ideal i = x,y;
+matrix m[2][3];
+number n = 3;
+map phi = r, x,y,z;
+ring r2 = 7,(a,b),lp;
+poly g = a;
+listvar();
+listvar(all);
+listvar(r);
+setring r;
+listvar();
+proc t() { int k = 2; poly u = x; listvar(); listvar(all); }
+t();
+""",
+    "sysvars": """
+int debug=0;
+intvec i=1,2,3;
+dbprint(debug,i);
+debug=1;
+dbprint(debug,i, "abc");
+proc p() { dbprint(i); "in p"; dbprint(printlevel-voice+3, "lev"); }
+p();
+printlevel = 1;
+p();
+ring r = 0,(x,y),dp;
+short;
+poly f = 3x2y+1;
+f;
+short = 0;
+f;
+ideal j = f, x;
+j;
+matrix m[1][2] = f,x;
+print(m);
+short;
+short = 1; f;
+ring s = 0,(x(1..2)),dp;
+short;
+x(1)^2;
+degBound; noether;
+""",
+    "attrib": """
+ring r=0,(x,y,z),dp;
+ideal I=std(maxideal(2));
+attrib(I);
+attrib(I,"isSB");
+ideal J = x2, y;
+attrib(J);
+attrib(J,"isSB");
+attrib(J, "isSB", 1);
+attrib(J);
+attrib(J, "isSB");
+reduce(x3+y, J);
+J = x2, x2+y;
+attrib(J, "isSB");
+int i = 3;
+attrib(i);
+""",
 }
 
 
