@@ -8,6 +8,7 @@ from typing import Any
 from ..kernel import Poly
 from . import ast as A
 from .errors import MechNameError, MechRuntimeError, MechTypeError
+from .intmat import IntMat, to_intmat
 from .printing import set_short
 from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_int, to_matrix, to_poly, typeof
 
@@ -70,6 +71,8 @@ class Assignment:
                 value = convert(value, "ring", None)
             elif var.type == "map":
                 value = convert(value, "map", None)
+            elif var.type == "intmat" and isinstance(var.value, IntMat) and not isinstance(value, IntMat):
+                value = to_intmat(value, var.value.nrows, var.value.ncols)
             elif var.type == "matrix" and isinstance(var.value, Matrix):
                 value = to_matrix(value, self.basering().poly, var.value.nrows, var.value.ncols) \
                     if not isinstance(value, Matrix) else to_matrix(value, self.basering().poly)
@@ -86,6 +89,10 @@ class Assignment:
         idx = [self.eval(i) for i in node.indices]
         last = k == len(chain) - 1
         ring = self.ring.poly if self.ring else None
+        if isinstance(container, IntMat):
+            if len(idx) != 2 or not last:
+                raise MechRuntimeError("an intmat entry is set as m[i,j] = ...")
+            return container.with_entry(to_int(idx[0]), to_int(idx[1]), to_int(value))
         if isinstance(container, Matrix):
             if len(idx) != 2 or not last:
                 raise MechRuntimeError("a matrix entry is set as M[i,j] = ...")

@@ -10,6 +10,7 @@ from .boundary import convert_exception
 from .errors import MechError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
+from .intmat import IntMat
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Proc, to_int, typeof
 
 
@@ -98,6 +99,11 @@ class Expressions:
             if not (1 <= i <= base.nrows and 1 <= j <= base.ncols):
                 raise MechRuntimeError(f"index [{i},{j}] out of range for a {base.nrows} x {base.ncols} matrix")
             return base.get(i, j)
+        if isinstance(base, IntMat) and len(idx) == 2:
+            rows = idx[0].values if isinstance(idx[0], IntVec) else [to_int(idx[0])]
+            cols = idx[1].values if isinstance(idx[1], IntVec) else [to_int(idx[1])]
+            got = [base.get(i, j) for i in rows for j in cols]
+            return got[0] if len(got) == 1 else ExprList(got)
         if isinstance(base, str) and len(idx) == 2:
             return _substring(base, to_int(idx[0]), to_int(idx[1]))
         if len(idx) != 1:

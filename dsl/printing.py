@@ -123,6 +123,8 @@ def value_str(v: Any) -> str:
         return v.name
     if isinstance(v, NoneValue):
         return ""
+    if hasattr(v, "string_form"):  # intmat
+        return v.string_form()
     return str(v)
 
 
@@ -147,6 +149,8 @@ def render(v: Any, name: Optional[str] = None) -> str:
         return proc_str(v)
     if isinstance(v, ExprList):
         return join_outputs([(render(x), isinstance(x, List)) for x in v.items])
+    if hasattr(v, "string_form"):  # intmat
+        return str(v)
     return value_str(v)
 
 
@@ -187,6 +191,8 @@ def print_form(v: Any) -> str:
         return ",\n".join(poly_str(g) for g in v.gens)
     if isinstance(v, IntVec):
         return ",\n".join(str(x) for x in v.values) + " "
+    if hasattr(v, "print_form"):  # intmat
+        return v.print_form()
     if isinstance(v, Ring):
         order = v.poly.order
         kind = "global" if order.is_global else "local" if order.is_local else "mixed"

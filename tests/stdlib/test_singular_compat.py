@@ -130,6 +130,41 @@ attrib(J, "isSB");
 int i = 3;
 attrib(i);
 """,
+    "intmat": """
+intmat m[2][3] = 1,-2,3,40,5;
+m;
+print(m);
+typeof(m);
+m[2,1];
+m[1,2] = 7; m;
+intmat n[2][3] = 1,1,1,1,1,1;
+m+n; m-n; 3*m;
+m*transpose(n);
+transpose(m);
+nrows(m); ncols(m);
+intmat k = m;
+k;
+intmat q[2][2] = 1,2,3,4;
+det(q);
+q*q;
+size(m);
+m == m;
+intmat e[2][2];
+e;
+intmat u = intmat(intvec(1,2,3,4),2,2);
+u;
+q * intvec(1,1);
+-q;
+q[1,1..2];
+q + 1; 1 + q; q - 1; q div 2;
+intmat b[2][2]; b = 1,2,3; b;
+intmat big[2][2] = 1,-2,123456789,4;
+print(big);
+intvec w = 1,2; intmat y = w; y; print(y);
+listvar();
+ring r = 0,x,dp;
+matrix M = q; M;
+""",
 }
 
 
