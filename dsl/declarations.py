@@ -12,7 +12,7 @@ from .types import find_type
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Ring, convert, to_int, to_matrix, typeof
 
 #: Singular's types mech does not provide.
-UNSUPPORTED_TYPES = {"qring", "vector", "module", "resolution", "link"}
+UNSUPPORTED_TYPES = {"vector", "module", "resolution", "link"}
 
 
 class Declarations:
@@ -27,6 +27,9 @@ class Declarations:
             return
         if typ == "map":
             self._declare_map(s)
+            return
+        if typ == "qring":
+            self._declare_qring(s)
             return
         for d in s.items:
             if d.dims and typ not in ("matrix", "intmat"):
@@ -117,6 +120,16 @@ class Declarations:
             ring = Ring(v.poly, v.params, v.blocks)
         else:
             ring = build_ring(s.value, self.eval)
+        ring.name = s.items[0].name
+        self.rings.add(ring)
+        self.declare(ring.name, "ring", ring)
+        self.ring = ring
+
+    def _declare_qring(self, s: A.Decl) -> None:
+        from .qrings import make_qring
+        if len(s.items) != 1 or s.items[0].dims or s.value is None:
+            raise MechRuntimeError("a qring is declared as qring Q = I; with I a standard basis of the basering")
+        ring = make_qring(self.basering(), self._rhs(s.value))
         ring.name = s.items[0].name
         self.rings.add(ring)
         self.declare(ring.name, "ring", ring)

@@ -256,7 +256,8 @@ def ring_str(r: Ring) -> str:
             lines.append("//                  : weights  " + " ".join(str(w) for w in b.weights))
         if b.kind != "a":
             start += size
-    return "\n".join(lines)
+    from .qrings import quotient_lines
+    return "\n".join(lines + quotient_lines(r))
 
 
 def proc_str(p: Proc) -> str:

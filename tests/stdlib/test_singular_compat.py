@@ -165,6 +165,60 @@ listvar();
 ring r = 0,x,dp;
 matrix M = q; M;
 """,
+    "qring": """
+ring R = 32003,(x,y,z),dp;
+ideal I = x2+y2-z5, z-x-y2;
+qring Q = groebner(I);
+Q;
+typeof(Q);
+poly f = z2 + y2;
+poly g = z2+2x-2z-3z5+3x2+6y2;
+f*g;
+reduce(f-g,std(0));
+std(0);
+ideal q = quotient(0,f);
+q;
+q = reduce(q,std(0));
+size(q);
+std(ideal(x));
+dim(std(ideal(x)));
+basering;
+ideal(basering);
+setring R;
+ring S = 0,(x,y),dp;
+qring T = std(ideal(x2, y3));
+poly h = x3+xy;
+h;
+h*x;
+h^2;
+ideal zz = h, y;
+zz;
+std(zz);
+vdim(std(0));
+kbase(std(0));
+""",
+    "qring_coordinate_ring": """
+ring A = 0,(x,y,z),dp;
+ideal I = x2+y2+z2-1, x-y;
+qring KV = std(I);
+KV;
+poly f = x3+y;
+reduce(f, std(0));
+NF(x2, std(0));
+dim(std(0));
+dim(std(ideal(z)));
+std(ideal(x*z));
+vdim(std(ideal(z)));
+kbase(std(ideal(z)));
+setring A;
+ring L = 0,(x,y),ds;
+qring LQ = std(ideal(y2-x3));
+dim(std(0));
+reduce(y3, std(0));
+std(ideal(y));
+vdim(std(ideal(y)));
+ideal(basering);
+""",
 }
 
 
