@@ -50,6 +50,8 @@ class Names:
             return len(self.frames)
         if name == "short" and self.ring is not None:
             return int(is_short(self.ring.poly))
+        if name == "newline":
+            return "\n"
         if name in ("degBound", "multBound"):
             return 0
         if name == "noether" and self.ring is not None:

@@ -1,11 +1,13 @@
 """Singular's commands on single polynomials and integers: ``gcd``, ``lcm`` (general.lib),
-``resultant``, ``coef``, ``coeffs``, ``prime``, ``find`` and the ``cyclic`` ideal (polylib.lib)."""
+``resultant``, ``coef``, ``coeffs``, ``prime``, ``find``, the ``cyclic`` ideal (polylib.lib),
+``leadexp``, ``rvar``, ``jet``, ``cleardenom``, ``chinrem``."""
 from __future__ import annotations
 
 from math import gcd as int_gcd
+from typing import Any
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
-from ..dsl.values import Ideal, Matrix
+from ..dsl.values import Ideal, IntVec, List, Matrix
 from ..kernel import Poly
 from ..kernel import factor
 from ..kernel import matrix as KM
@@ -215,3 +217,89 @@ def cyclic(ctx, n: int) -> Ideal:
         last = last * x
     gens.append(last - ring.one())
     return Ideal(ring, gens)
+
+
+@command("leadexp")
+def leadexp(f: Poly) -> IntVec:
+    """leadexp(f): the exponent vector of the leading monomial of f.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      leadexp(3x2y+z5);
+      → 0,0,5
+    """
+    return IntVec(f.lm() if not f.is_zero() else (0,) * f.ring.nvars)
+
+
+@command("rvar")
+def rvar(ctx, v: Any) -> int:
+    """rvar(x): the index of the ring variable x (a variable or its name), 0 if it is none.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      rvar(y);
+      → 2
+      rvar("w");
+      → 0
+    """
+    ring = ctx.basering()
+    if isinstance(v, str):
+        i = ring.var_index(v)
+        return 0 if i is None else i + 1
+    if isinstance(v, Poly):
+        try:
+            return _var_index(v, "rvar") + 1
+        except MechRuntimeError:
+            return 0
+    return 0
+
+
+@command("jet")
+def jet(f: Poly | Ideal, d: int) -> Any:
+    """jet(f, d): the terms of f of total degree at most d (of each generator for an ideal).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      jet(x2+y3+z+1, 2);
+      → x2+z+1
+    """
+    def cut(p: Poly) -> Poly:
+        return Poly(p.ring, {e: c for e, c in p.terms.items() if sum(e) <= d})
+    if isinstance(f, Poly):
+        return cut(f)
+    return Ideal(f.ring, [cut(p) for p in f.gens])
+
+
+@command("cleardenom")
+def cleardenom(f: Poly) -> Poly:
+    """cleardenom(f): f times a constant so that its coefficients are coprime integers with a positive
+    leading one (over QQ; over Z/p f made monic).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      cleardenom(1/2x2+1/3y);
+      → 3x2+2y
+    """
+    from .standard import normalize
+    return normalize(f)
+
+
+@command("chinrem")
+def chinrem(values: IntVec | List, moduli: IntVec | List) -> int:
+    """chinrem(v, m): the integer x with x = v[i] mod m[i] for all i (pairwise coprime moduli), the
+    least non-negative one.
+
+    Example:
+      chinrem(intvec(2,3), intvec(5,7));
+      → 17
+    """
+    vs, ms = list(values), list(moduli)
+    if len(vs) != len(ms) or not all(type(x) is int for x in vs + ms):
+        raise MechRuntimeError("chinrem(v, m): two intvecs or lists of ints of the same length")
+    x, m = 0, 1
+    for v, n in zip(vs, ms):
+        if int_gcd(m, n) != 1:
+            raise MechRuntimeError("chinrem: the moduli must be pairwise coprime")
+        x += m * ((v - x) * pow(m, -1, n) % n)
+        m *= n
+    return x % m

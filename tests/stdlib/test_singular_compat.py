@@ -219,6 +219,49 @@ std(ideal(y));
 vdim(std(ideal(y)));
 ideal(basering);
 """,
+    "more_commands": """
+ring r=0,(x,y,z),dp;
+"a"+newline+"b";
+leadexp(3x2y+z5);
+rvar(y); rvar("z"); rvar(x2); rvar("w");
+jet(x2+y3+z+1, 2);
+jet(ideal(x2+y3, z4+x), 2);
+cleardenom(1/2x2+1/3y);
+cleardenom(-2x2+4y);
+chinrem(intvec(2,3), intvec(5,7));
+chinrem(list(2,3), list(5,7));
+ideal I = x2-1, y2-x, z-y;
+finduni(std(I));
+ring s = 0,(x,y,z),lp;
+setring r;
+ideal J = std(ideal(x2-y, y2-1, z3-x));
+setring s;
+fglm(r, J);
+""",
+    "algebra_lib": """
+LIB "algebra.lib";
+ring r = 0,(a,b,c),dp;
+ring s = 0,(x,y,z,u,v,w),dp;
+ideal I = x-w,u2w+1,yz-v;
+map phi = r,I;
+alg_kernel(phi,r);
+is_injective(phi,r);
+is_surjective(phi,r);
+is_bijective(phi,r);
+ring A = 0,(x,y),dp;
+ring B = 0,(s,t),dp;
+map psi = A, s2, s3;
+is_injective(psi, A);
+is_surjective(psi, A);
+alg_kernel(psi, A);
+is_bijective(psi, A);
+ring B2 = 0,(p,q),dp;
+map sw = A, q, p+q2;
+is_bijective(sw, A);
+ring C = 0,(e),dp;
+map pp = A, e, e2;
+is_bijective(pp, A);
+""",
 }
 
 
