@@ -94,6 +94,14 @@ class Expressions:
     def _eval_index(self, node: A.Index) -> Any:
         base = self.eval(node.base)
         idx = [self.eval(i) for i in node.indices]
+        if isinstance(base, Matrix) and len(idx) == 2 and (isinstance(idx[0], IntVec) or isinstance(idx[1], IntVec)):
+            rows = idx[0].values if isinstance(idx[0], IntVec) else [to_int(idx[0])]
+            cols = idx[1].values if isinstance(idx[1], IntVec) else [to_int(idx[1])]
+            for i in rows:
+                for j in cols:
+                    if not (1 <= i <= base.nrows and 1 <= j <= base.ncols):
+                        raise MechRuntimeError(f"index [{i},{j}] out of range for a {base.nrows} x {base.ncols} matrix")
+            return ExprList([base.get(i, j) for i in rows for j in cols])
         if isinstance(base, Matrix) and len(idx) == 2:
             i, j = to_int(idx[0]), to_int(idx[1])
             if not (1 <= i <= base.nrows and 1 <= j <= base.ncols):

@@ -8,11 +8,12 @@ from ..dsl.printing import is_short, poly_str, set_short
 from ..dsl.qrings import quotient_of
 from ..dsl.registry import command
 from ..dsl.values import Map, Ring
-from ..kernel import Poly
+from ..kernel import MonomialOrder, Poly, PolyRing
 from ..kernel.ideals import _lift, _prefixed
 from ..kernel.groebner import normal_form
 from ..kernel.engines import standard_basis
 from .idealops import _lift_front, preimage_polys
+from .standard import normalize
 
 LIB = "algebra.lib"
 
@@ -47,7 +48,9 @@ def alg_kernel(ctx, phi: Map, pr: Ring) -> str:
     ker = _kernel(ctx, phi, pr)
     if not ker:
         return "0"
-    ring = pr.poly
+    src = pr.poly  # algebra.lib prints the kernel from a dp ring
+    ring = PolyRing(src.field, src.names, MonomialOrder.simple("dp", src.nvars))
+    ker = [normalize(p) for p in standard_basis([Poly(ring, p.terms) for p in ker], ring)]
     was = is_short(ring)
     set_short(ring, False)
     try:

@@ -262,6 +262,40 @@ ring C = 0,(e),dp;
 map pp = A, e, e2;
 is_bijective(pp, A);
 """,
+    "matrix_ranges": """
+ring r=0,(x,y),dp;
+matrix m[3][3] = 1,2,3,4,5,6,7,8,x;
+m[1..2,1];
+matrix B[2][2] = m[2..3, 2..3];
+print(B);
+m[3,1..3];
+list l1 = 1,2,3;
+insert(l1,"-",3);
+""",
+    "algebra_lib_maps": """
+
+
+ring S = 0,(a,b,c),lp;
+ring R = 0,(x,y,z),dp;
+ideal i = x, y, x2-y3;
+map phi = S,i;
+LIB "algebra.lib";
+
+is_injective(phi,S);
+
+ideal j = x, x+y, z-x2+y3;
+map psi = S,j;
+is_injective(psi,S);
+
+alg_kernel(phi,S);
+
+alg_kernel(psi,S);
+
+is_surjective(psi,S);
+
+is_bijective(psi,S);
+
+""",
 }
 
 
