@@ -15,8 +15,9 @@ def describe(value: Any, basering: Optional[Ring]) -> str:
     """What listvar prints after a variable's name and level."""
     if isinstance(value, bool) or isinstance(value, int):
         return f"int {value}"
-    if isinstance(value, str):
-        return f"string {value}"
+    if isinstance(value, str):  # as Singular: at most 20 characters of the first line
+        head = value[:20].split("\n")[0]
+        return f"string {head}" + (f"..., {len(value)} char(s)" if len(value) > 20 or "\n" in value[:20] else "")
     if isinstance(value, IntVec):
         return f"intvec ({len(value)})"
     if isinstance(value, List):
@@ -28,7 +29,7 @@ def describe(value: Any, basering: Optional[Ring]) -> str:
     if isinstance(value, Number):
         return "number"
     if isinstance(value, Ideal):
-        return f"ideal, {len(value.gens)} generator(s)"
+        return f"ideal{' (SB)' if value.is_std else ''}, {len(value.gens)} generator(s)"
     if isinstance(value, Matrix):
         return f"matrix {value.nrows} x {value.ncols}"
     if isinstance(value, Map):
@@ -68,7 +69,7 @@ def listvar(ctx, *nodes: A.Expr) -> None:
             ring = ctx.eval(node)
             if not isinstance(ring, Ring):
                 raise MechTypeError(f"listvar({node.id}): listing the variables of one type is not supported")
-            ctx.write(_line(node.id, 0, "ring", False))
+            ctx.write(_line(node.id, 0, describe(ring, basering), False))
             for f in frames:
                 for var in reversed(list(_ring_vars(ctx, f, ring).values())):
                     ctx.write(_line(var.name, var.level, describe(var.value, basering), False))
@@ -84,6 +85,8 @@ def listvar(ctx, *nodes: A.Expr) -> None:
                 for g in frames:
                     for dep in reversed(list(_ring_vars(ctx, g, var.value).values())):
                         out.append(_line(dep.name, dep.level, describe(dep.value, basering), True))
+        if f.proc is not None and f.proc.params is None and "#" not in f.vars:  # its empty argument list
+            out.append(_line("#", f.level, "list, size: 0", False))
     ctx.write("".join(out))
 
 

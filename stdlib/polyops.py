@@ -155,7 +155,7 @@ def coef(f: Poly, vs: Poly) -> Matrix:
         key = tuple(e[i] if i in idx else 0 for i in range(len(e)))
         rest = tuple(0 if i in idx else e[i] for i in range(len(e)))
         groups.setdefault(key, {})[rest] = c
-    keys = sorted(groups, key=ring.order.key, reverse=True)
+    keys = sorted(groups, key=lambda k: (sum(k), k), reverse=True)  # by degree, whatever the ordering
     top = [ring.monomial(k) for k in keys]
     return Matrix(ring, 2, len(keys), top + [Poly(ring, groups[k]) for k in keys])
 
@@ -273,7 +273,7 @@ def jet(f: Poly | Ideal, d: int) -> Any:
 @command("cleardenom")
 def cleardenom(f: Poly) -> Poly:
     """cleardenom(f): f times a constant so that its coefficients are coprime integers with a positive
-    leading one (over QQ; over Z/p f made monic).
+    leading one (over QQ and QQ(parameters); over Z/p f itself).
 
     Example:
       ring r = 0,(x,y),dp;
@@ -281,7 +281,10 @@ def cleardenom(f: Poly) -> Poly:
       → 3x2+2y
     """
     from .standard import normalize
-    return normalize(f)
+    field = f.ring.field
+    if field.characteristic and getattr(field, "params", ()):
+        raise MechRuntimeError("cleardenom over Z/p(parameters) is not supported")
+    return f if field.characteristic else normalize(f)
 
 
 @command("chinrem")
