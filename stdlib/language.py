@@ -36,7 +36,8 @@ def print_(ctx, x: Any) -> None:
 @command("dbprint")
 def dbprint(ctx, level: Any, *xs: Any) -> None:
     """dbprint(i, x, ...): print each x as print does when the int i is positive (procedures pass
-    printlevel-voice+2, so that printlevel switches their messages on).
+    printlevel-voice+2, so that printlevel switches their messages on); dbprint(x): print x when
+    printlevel >= voice.
 
     Example:
       int debug = 1;
@@ -44,6 +45,8 @@ def dbprint(ctx, level: Any, *xs: Any) -> None:
       → step 1
       dbprint(0, "hidden");
     """
+    if not xs:  # dbprint(x): print x when printlevel >= voice
+        level, xs = int(ctx.sysvars.get("printlevel", 0) >= len(ctx.frames)), (level,)
     if not isinstance(level, int) or level <= 0:
         return
     for x in xs:
