@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Any, Iterable
 
 from .errors import MechRuntimeError, MechTypeError
+from .types import register_type
 from .values import ExprList, IntVec, List
 
 
@@ -150,3 +151,6 @@ def det(m: IntMat) -> int:
         raise MechRuntimeError(f"det of a {m.nrows} x {m.ncols} intmat: the matrix must be square")
     import flint
     return int(flint.fmpz_mat(m.rows()).det()) if m.nrows else 1
+
+
+register_type("intmat", to_intmat, default=lambda: IntMat(1, 1))

@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any, Optional
 
 from ..kernel import Poly, PolyRing
+from .qrings import quotient_ideal
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, NoneValue, Number, Proc, Ring
 
 _short_cache: dict[int, tuple[PolyRing, bool]] = {}
@@ -256,8 +257,10 @@ def ring_str(r: Ring) -> str:
             lines.append("//                  : weights  " + " ".join(str(w) for w in b.weights))
         if b.kind != "a":
             start += size
-    from .qrings import quotient_lines
-    return "\n".join(lines + quotient_lines(r))
+    gens = quotient_ideal(r.poly)  # a qring: its ideal
+    if gens is not None:
+        lines += ["// quotient ring from ideal"] + [f"_[{i}]={poly_str(g)}" for i, g in enumerate(gens, 1)]
+    return "\n".join(lines)
 
 
 def proc_str(p: Proc) -> str:

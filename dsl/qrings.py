@@ -50,15 +50,6 @@ def make_qring(base: Ring, ideal: Any) -> Ring:
     return Ring(ring, base.params, base.blocks)
 
 
-def quotient_lines(r: Ring) -> list[str]:
-    """What ``Q;`` prints after the ordering of a qring: its ideal."""
-    gens = quotient_ideal(r.poly)
-    if gens is None:
-        return []
-    from .printing import poly_str
-    return ["// quotient ring from ideal"] + [f"_[{i}]={poly_str(g)}" for i, g in enumerate(gens, 1)]
-
-
 def quotient_ideal(ring: PolyRing) -> Optional[list[Poly]]:
     """The generators a qring was declared with (None for a polynomial ring)."""
     hit = _QUOTIENTS.get(id(ring))

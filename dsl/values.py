@@ -539,9 +539,6 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing]) -> Any:
         return to_matrix(v, ring)
     if typ == "intvec":
         return to_intvec(v)
-    if typ == "intmat":
-        from .intmat import to_intmat
-        return to_intmat(_single(v, typ) if not isinstance(v, ExprList) else v)
     if typ == "list":
         return to_list(v)
     if typ == "string":
