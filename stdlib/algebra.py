@@ -50,7 +50,7 @@ def alg_kernel(ctx, phi: Map, pr: Ring) -> str:
         return "0"
     src = pr.poly  # algebra.lib prints the kernel from a dp ring
     ring = PolyRing(src.field, src.names, MonomialOrder.simple("dp", src.nvars))
-    ker = [normalize(p) for p in standard_basis([Poly(ring, p.terms) for p in ker], ring)]
+    ker = [Poly(ring, normalize(p).terms) for p in standard_basis([Poly(ring, p.terms) for p in ker], ring)]
     was = is_short(ring)
     set_short(ring, False)
     try:
