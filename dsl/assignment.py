@@ -5,9 +5,17 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..kernel import Poly
 from . import ast as A
 from .errors import MechNameError, MechRuntimeError, MechTypeError
+from .intmat import IntMat, to_intmat
+from .printing import set_short
 from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_int, to_matrix, to_poly, typeof
+
+
+#: Singular's bounds on standard basis computations: mech computes without them (only 0 is accepted).
+UNSUPPORTED_BOUNDS = {"degBound": "a degree bound for std", "multBound": "a multiplicity bound for std",
+                      "noether": "a highest corner for local standard bases"}
 
 
 class Assignment:
@@ -43,6 +51,13 @@ class Assignment:
         name = base.id
         var = self.lookup(name)
         if var is None:
+            if name == "short" and not chain and self.ring is not None:
+                set_short(self.ring.poly, bool(to_int(value)))
+                return
+            if name in UNSUPPORTED_BOUNDS and not chain:
+                if (not value.is_zero()) if isinstance(value, Poly) else to_int(value) != 0:
+                    raise MechRuntimeError(f"{name} other than 0 ({UNSUPPORTED_BOUNDS[name]}) is not supported")
+                return
             if name in self.sysvars or name in ("timer", "rtimer"):
                 self.sysvars[name] = to_int(value)
                 return
@@ -56,6 +71,8 @@ class Assignment:
                 value = convert(value, "ring", None)
             elif var.type == "map":
                 value = convert(value, "map", None)
+            elif var.type == "intmat" and isinstance(var.value, IntMat) and not isinstance(value, IntMat):
+                value = to_intmat(value, var.value.nrows, var.value.ncols)
             elif var.type == "matrix" and isinstance(var.value, Matrix):
                 value = to_matrix(value, self.basering().poly, var.value.nrows, var.value.ncols) \
                     if not isinstance(value, Matrix) else to_matrix(value, self.basering().poly)
@@ -72,6 +89,10 @@ class Assignment:
         idx = [self.eval(i) for i in node.indices]
         last = k == len(chain) - 1
         ring = self.ring.poly if self.ring else None
+        if isinstance(container, IntMat):
+            if len(idx) != 2 or not last:
+                raise MechRuntimeError("an intmat entry is set as m[i,j] = ...")
+            return container.with_entry(to_int(idx[0]), to_int(idx[1]), to_int(value))
         if isinstance(container, Matrix):
             if len(idx) != 2 or not last:
                 raise MechRuntimeError("a matrix entry is set as M[i,j] = ...")

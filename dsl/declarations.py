@@ -12,7 +12,7 @@ from .types import find_type
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Ring, convert, to_int, to_matrix, typeof
 
 #: Singular's types mech does not provide.
-UNSUPPORTED_TYPES = {"qring", "vector", "module", "resolution", "link", "intmat"}
+UNSUPPORTED_TYPES = {"vector", "module", "resolution", "link"}
 
 
 class Declarations:
@@ -28,8 +28,11 @@ class Declarations:
         if typ == "map":
             self._declare_map(s)
             return
+        if typ == "qring":
+            self._declare_qring(s)
+            return
         for d in s.items:
-            if d.dims and typ != "matrix":
+            if d.dims and typ not in ("matrix", "intmat"):
                 raise MechTypeError(f"only a matrix is declared with dimensions, not a {typ}")
         values: list[Any]
         if s.value is None:
@@ -54,7 +57,14 @@ class Declarations:
                 v = Matrix(ring, *(dims or (1, 1)))
             else:
                 # as Singular: a matrix value keeps its size, other values fill [rows][cols] (default 1 x 1)
-                v = to_matrix(v, ring) if isinstance(v, Matrix) else to_matrix(v, ring, *(dims or (1, 1)))
+                keeps = isinstance(v, Matrix) or (typeof(v) == "intmat" and not dims)
+                v = to_matrix(v, ring) if keeps else to_matrix(v, ring, *(dims or (1, 1)))
+        elif typ == "intmat":
+            from .intmat import to_intmat
+            dims = [to_int(self.eval(x)) for x in d.dims]
+            if dims and (len(dims) != 2 or dims[0] <= 0 or dims[1] <= 0):
+                raise MechRuntimeError("an intmat is declared as intmat m[rows][cols]")
+            v = to_intmat(v, *dims)
         elif v is None:
             v = self._default(typ)
         else:
@@ -110,6 +120,16 @@ class Declarations:
             ring = Ring(v.poly, v.params, v.blocks)
         else:
             ring = build_ring(s.value, self.eval)
+        ring.name = s.items[0].name
+        self.rings.add(ring)
+        self.declare(ring.name, "ring", ring)
+        self.ring = ring
+
+    def _declare_qring(self, s: A.Decl) -> None:
+        from .qrings import make_qring
+        if len(s.items) != 1 or s.items[0].dims or s.value is None:
+            raise MechRuntimeError("a qring is declared as qring Q = I; with I a standard basis of the basering")
+        ring = make_qring(self.basering(), self._rhs(s.value))
         ring.name = s.items[0].name
         self.rings.add(ring)
         self.declare(ring.name, "ring", ring)

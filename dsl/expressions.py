@@ -10,6 +10,7 @@ from .boundary import convert_exception
 from .errors import MechError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
+from .intmat import IntMat
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Proc, to_int, typeof
 
 
@@ -93,14 +94,31 @@ class Expressions:
     def _eval_index(self, node: A.Index) -> Any:
         base = self.eval(node.base)
         idx = [self.eval(i) for i in node.indices]
+        if isinstance(base, Matrix) and len(idx) == 2 and (isinstance(idx[0], IntVec) or isinstance(idx[1], IntVec)):
+            rows = idx[0].values if isinstance(idx[0], IntVec) else [to_int(idx[0])]
+            cols = idx[1].values if isinstance(idx[1], IntVec) else [to_int(idx[1])]
+            for i in rows:
+                for j in cols:
+                    if not (1 <= i <= base.nrows and 1 <= j <= base.ncols):
+                        raise MechRuntimeError(f"index [{i},{j}] out of range for a {base.nrows} x {base.ncols} matrix")
+            return ExprList([base.get(i, j) for i in rows for j in cols])
         if isinstance(base, Matrix) and len(idx) == 2:
             i, j = to_int(idx[0]), to_int(idx[1])
             if not (1 <= i <= base.nrows and 1 <= j <= base.ncols):
                 raise MechRuntimeError(f"index [{i},{j}] out of range for a {base.nrows} x {base.ncols} matrix")
             return base.get(i, j)
+        if isinstance(base, IntMat) and len(idx) == 2:
+            rows = idx[0].values if isinstance(idx[0], IntVec) else [to_int(idx[0])]
+            cols = idx[1].values if isinstance(idx[1], IntVec) else [to_int(idx[1])]
+            got = [base.get(i, j) for i in rows for j in cols]
+            return got[0] if len(got) == 1 else ExprList(got)
+        if isinstance(base, str) and len(idx) == 2:
+            return _substring(base, to_int(idx[0]), to_int(idx[1]))
         if len(idx) != 1:
             raise MechRuntimeError(f"a {typeof(base)} takes one index")
         k = idx[0]
+        if isinstance(k, IntVec) and isinstance(base, Poly):  # Singular: the sum of those terms
+            return sum((self._item(base, i) for i in k.values), base.ring.zero())
         if isinstance(k, IntVec):
             return ExprList([self._item(base, i) for i in k.values])
         return self._item(base, to_int(k))
@@ -120,7 +138,7 @@ class Expressions:
             seq, what = [base.ring.monomial(e, c) for e, c in base.sorted_terms()], "poly"
             if 1 <= i <= len(seq):
                 return seq[i - 1]
-            if i > len(seq):
+            if i > len(seq) or i < 1:
                 return base.ring.zero()
         elif isinstance(base, Matrix):
             raise MechRuntimeError("a matrix entry is M[i,j]")
@@ -182,3 +200,10 @@ class Expressions:
             raise limit_error(e, cmd.name) from None
         finally:
             self.argnames = saved
+
+
+def _substring(s: str, start: int, length: int) -> str:
+    """Singular's ``s[start, length]``: ``length`` characters from position ``start`` (1-based)."""
+    if start < 1 or start > len(s) or length < 0:
+        raise MechRuntimeError(f"index [{start},{length}] out of range for a string of length {len(s)}")
+    return s[start - 1:start - 1 + length]

@@ -19,7 +19,7 @@ from . import ast as A
 from . import registry
 from .assignment import Assignment
 from .declarations import Declarations
-from .errors import MechRuntimeError, Source
+from .errors import MechError, MechRuntimeError, Source
 from .expressions import Expressions
 from .libraries import Libraries
 from .limits import Limits
@@ -90,6 +90,23 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         source = Source(name, text)
         for program in parse_pieces(text, source):
             self.run(program, source)
+
+    def execute_here(self, text: str) -> None:
+        """Run the statements of ``text`` in the current scope (Singular's ``execute``)."""
+        saved, stmt = self.source, self.stmt
+        source = Source("<execute>", text)
+        try:
+            for program in parse_pieces(text, source):
+                self.source = source
+                for s in program.body:
+                    self.exec_stmt(s)
+        except MechError as e:  # reported at the execute call, the executed text named in the message
+            if e.source is source:
+                e.message = f"{e.message} (in the string executed: {text.strip()[:60]})"
+                e.pos, e.source = None, None
+            raise
+        finally:
+            self.source, self.stmt = saved, stmt
 
     def run(self, program: A.Program, source: Source) -> None:
         """Run a parsed program at top level."""

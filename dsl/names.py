@@ -8,6 +8,7 @@ from typing import Any, Optional
 
 from . import ast as A
 from .errors import MechError, MechNameError, MechRuntimeError
+from .printing import is_short
 from .rings import indexed_names
 from .values import ExprList, Number, Ring
 
@@ -47,6 +48,14 @@ class Names:
             return self.last
         if name == "voice":
             return len(self.frames)
+        if name == "short" and self.ring is not None:
+            return int(is_short(self.ring.poly))
+        if name == "newline":
+            return "\n"
+        if name in ("degBound", "multBound"):
+            return 0
+        if name == "noether" and self.ring is not None:
+            return self.ring.poly.zero()
         return self.sysvars.get(name)
 
     def _unknown(self, name: str) -> MechError:

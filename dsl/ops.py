@@ -11,6 +11,7 @@ from typing import Any, Callable, Optional
 
 from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
+from .intmat import IntMat, intmat_op
 from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, same_value, to_ideal, to_number, to_poly,
                      typeof)
 
@@ -217,6 +218,8 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
             return IntVec([a] * b)
     if op == "^":
         return power(a, b)
+    if isinstance(a, IntMat) or isinstance(b, IntMat):
+        return intmat_op(op, a, b)
     if isinstance(a, (IntVec,)) or isinstance(b, IntVec):
         return _intvec_op(op, a, b)
     if isinstance(a, Matrix) or isinstance(b, Matrix):
@@ -294,6 +297,8 @@ def negate(a: Any) -> Any:
         return Matrix(a.ring, a.nrows, a.ncols, [-x for x in a.entries])
     if isinstance(a, IntVec):
         return IntVec([-x for x in a.values])
+    if isinstance(a, IntMat):
+        return IntMat(a.nrows, a.ncols, [-x for x in a.values])
     raise MechTypeError(f"unary minus is not defined for {typeof(a)}")
 
 
@@ -334,6 +339,8 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
             if op in ("==", "!="):
                 return int((p == q) == (op == "=="))
             x, y = _poly_key(p), _poly_key(q)
+    elif op in ("==", "!=") and isinstance(a, IntMat) and isinstance(b, IntMat):
+        return int((a == b) == (op == "=="))
     elif op in ("==", "!=") and type(a) is type(b) and isinstance(a, (Ideal, Matrix, IntVec, List)):
         return int(same_value(a, b) == (op == "=="))
     elif isinstance(a, IntVec) and isinstance(b, IntVec):

@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any, Optional
 
 from ..kernel import Poly, PolyRing
+from .qrings import quotient_ideal
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, NoneValue, Number, Proc, Ring
 
 _short_cache: dict[int, tuple[PolyRing, bool]] = {}
@@ -28,6 +29,13 @@ def is_short(ring: PolyRing) -> bool:
     short = all(len(n) == 1 for n in ring.names) and all(len(n) == 1 for n in field_params(ring.field))
     _short_cache[id(ring)] = (ring, short)
     return short
+
+
+def set_short(ring: PolyRing, on: bool) -> None:
+    """Singular's ``short = 0;`` / ``short = 1;``: print the ring's polynomials in long form
+    (``3*x^2*y``) or, when every name is one letter, in short form (``3x2y``)."""
+    _short_cache.pop(id(ring), None)
+    _short_cache[id(ring)] = (ring, bool(on) and is_short(ring))
 
 
 def coeff_str(field: Any, c: Any, short: bool = True) -> str:
@@ -116,6 +124,8 @@ def value_str(v: Any) -> str:
         return v.name
     if isinstance(v, NoneValue):
         return ""
+    if hasattr(v, "string_form"):  # intmat
+        return v.string_form()
     return str(v)
 
 
@@ -140,6 +150,8 @@ def render(v: Any, name: Optional[str] = None) -> str:
         return proc_str(v)
     if isinstance(v, ExprList):
         return join_outputs([(render(x), isinstance(x, List)) for x in v.items])
+    if hasattr(v, "string_form"):  # intmat
+        return str(v)
     return value_str(v)
 
 
@@ -180,6 +192,8 @@ def print_form(v: Any) -> str:
         return ",\n".join(poly_str(g) for g in v.gens)
     if isinstance(v, IntVec):
         return ",\n".join(str(x) for x in v.values) + " "
+    if hasattr(v, "print_form"):  # intmat
+        return v.print_form()
     if isinstance(v, Ring):
         order = v.poly.order
         kind = "global" if order.is_global else "local" if order.is_local else "mixed"
@@ -243,6 +257,9 @@ def ring_str(r: Ring) -> str:
             lines.append("//                  : weights  " + " ".join(str(w) for w in b.weights))
         if b.kind != "a":
             start += size
+    gens = quotient_ideal(r.poly)  # a qring: its ideal
+    if gens is not None:
+        lines += ["// quotient ring from ideal"] + [f"_[{i}]={poly_str(g)}" for i, g in enumerate(gens, 1)]
     return "\n".join(lines)
 
 

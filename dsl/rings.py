@@ -32,6 +32,8 @@ def _ints(v: Any, what: str) -> list[int]:
         return [v]
     if isinstance(v, IntVec):
         return list(v.values)
+    if getattr(type(v), "type_name", "") == "intmat":  # M(A): the entries row by row
+        return list(v.values)
     raise MechRuntimeError(f"{what} must be an int or an intvec")
 
 

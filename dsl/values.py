@@ -475,6 +475,8 @@ def to_matrix(v: Any, ring: Optional[PolyRing], nrows: int = 0, ncols: int = 0) 
     """A matrix from a matrix, ideal (one row), polynomial or list of entries; with dimensions
     given, entries fill row by row (missing ones are zero, extra ones dropped, as in Singular)."""
     ring = _need_ring(ring, "matrix")
+    if getattr(type(v), "type_name", "") == "intmat":
+        v = Matrix(ring, v.nrows, v.ncols, [ring.const(x) for x in v.values])
     if isinstance(v, Matrix):
         _check_ring(v, ring)
         if not nrows or (nrows, ncols) == (v.nrows, v.ncols):

@@ -8,7 +8,7 @@ from ..dsl import ast as A
 from ..dsl.errors import MechNameError, MechRuntimeError, MechTypeError
 from ..dsl.printing import value_str
 from ..dsl.registry import command
-from ..dsl.values import (ExprList, Ideal, IntVec, List, Matrix, Number, to_ideal, to_intvec, to_matrix,
+from ..dsl.values import (ExprList, Ideal, Ring, IntVec, List, Matrix, Number, to_ideal, to_intvec, to_matrix,
                           to_number, to_poly)
 from ..dsl.values import typeof as _typeof
 from ..kernel import Poly
@@ -31,6 +31,10 @@ def ideal(ctx, *xs: Any) -> Ideal:
       → I[3]=x+y
     """
     ring = ctx.basering().poly
+    if len(xs) == 1 and isinstance(xs[0], Ring):  # ideal(R): the ideal of a qring (0 for others)
+        from ..dsl.qrings import quotient_ideal
+        gens = quotient_ideal(xs[0].poly)
+        return Ideal(xs[0].poly, gens or [xs[0].poly.zero()])
     return to_ideal(ExprList(xs), ring) if xs else Ideal(ring, [])
 
 

@@ -71,7 +71,8 @@ def _factory(F: Poly) -> Factors:
         if left:
             out.append((ring.gen(xn), left))
         return out
-    if len(variables) == 1 and F.total_degree() == 1 and not ring.field.characteristic:
+    if len(variables) == 1 and F.total_degree() == 1 and not ring.field.characteristic \
+            and not getattr(ring.field, "params", ()):
         g = normalize(F)
         return [(g if F.lc() > 0 else -g, 1)]
     return [(_scale(g), m) for g, m in kernel_factorize(F)[1]]

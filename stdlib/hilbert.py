@@ -5,6 +5,7 @@ leading monomials of the generators as they are when the argument is not marked 
 from __future__ import annotations
 
 from ..dsl.errors import MechRuntimeError
+from ..dsl.qrings import with_quotient
 from ..dsl.values import Ideal, IntVec
 from ..kernel import hilbert as H
 from ..dsl.registry import command
@@ -12,7 +13,7 @@ from ..dsl.registry import command
 
 def _leading(ctx, I: Ideal) -> list[tuple[int, ...]]:
     ctx.assume_std(I, 0)
-    return [g.lm() for g in I.nonzero()]
+    return [g.lm() for g in with_quotient(I.nonzero(), I.ring)]
 
 
 def _local(I: Ideal) -> bool:

@@ -12,6 +12,7 @@ from ..kernel import Poly
 from ..kernel import homog as _homog
 from ..kernel import ideals as K
 from ..kernel import primdec as _primdec
+from ..dsl.qrings import quotient_of, with_quotient
 from ..dsl.registry import command
 from .standard import normalize
 
@@ -88,7 +89,8 @@ def quotient(I: Ideal, J: Ideal) -> Ideal:
     """
     _global(I, "quotient")
     with _available("quotient", I.ring):
-        return _std_ideal(I.ring, K.quotient(I.nonzero(), J.nonzero(), ring=I.ring))
+        found = K.quotient(with_quotient(I.nonzero(), I.ring), J.nonzero(), ring=I.ring)
+        return _std_ideal(I.ring, found if quotient_of(I.ring) is None else quotient_of(I.ring).std(found))
 
 
 @command("sat", lib="elim.lib")

@@ -33,9 +33,30 @@ def print_(ctx, x: Any) -> None:
     ctx.write(print_form(x) + "\n")
 
 
+@command("dbprint")
+def dbprint(ctx, level: Any, *xs: Any) -> None:
+    """dbprint(i, x, ...): print each x as print does when the int i is positive (procedures pass
+    printlevel-voice+2, so that printlevel switches their messages on); dbprint(x): print x when
+    printlevel >= voice.
+
+    Example:
+      int debug = 1;
+      dbprint(debug, "step 1");
+      → step 1
+      dbprint(0, "hidden");
+    """
+    if not xs:  # dbprint(x): print x when printlevel >= voice
+        level, xs = int(ctx.sysvars.get("printlevel", 0) >= len(ctx.frames)), (level,)
+    if not isinstance(level, int) or level <= 0:
+        return
+    for x in xs:
+        print_(ctx, x)
+
+
 @command("defined", raw=True)
 def defined(ctx, node: A.Expr) -> int:
-    """defined(x): 0 if x is undefined, -1 for a ring variable, else 1 + the level it was declared at.
+    """defined(x): 0 if x is undefined, -1 for a ring variable or a value that is no name, else 1 + the
+    level it was declared at.
 
     Example:
       ring r = 0,(x,y),dp;
@@ -48,7 +69,7 @@ def defined(ctx, node: A.Expr) -> int:
       → 0
     """
     if not isinstance(node, A.Name):
-        return 0
+        return -1
     var = ctx.lookup(node.id)
     if var is not None:
         return var.level + 1
@@ -74,17 +95,15 @@ def nameof(ctx, node: A.Expr) -> str:
 
 
 @command("execute")
-def execute(code: str) -> None:
-    """execute(s): not provided: mech does not run code built at run time from strings (an error).
+def execute(ctx, code: str) -> None:
+    """execute(s): run the statements of the string s where execute is called.
 
     Example:
-      execute("int a = 1;");
-      → <stdin>:1:1: error: execute is not provided: mech does not run code built from strings; write the statements into the script
-      → execute("int a = 1;");
-      → ^~~~~~~~~~~~~~~~~~~~~
+      int a = 1;
+      execute("a = a + 41; a;");
+      → 42
     """
-    raise MechRuntimeError("execute is not provided: mech does not run code built from strings; "
-                           "write the statements into the script")
+    ctx.execute_here(code)
 
 
 @command("option", raw=True)

@@ -200,7 +200,7 @@ def maxideal(ctx, k: int) -> Ideal:
     """
     ring = ctx.basering().poly
     if k <= 0:
-        return Ideal(ring, [ring.one()])
+        return Ideal(ring, [ring.one()], is_std=True)
     exps: list[tuple[int, ...]] = []
 
     def rec(i: int, left: int, cur: list[int]) -> None:
@@ -210,4 +210,5 @@ def maxideal(ctx, k: int) -> Ideal:
         for a in range(left, -1, -1):
             rec(i + 1, left - a, cur + [a])
     rec(0, k, [])
-    return Ideal(ring, [ring.monomial(e) for e in sorted(exps)])  # Singular lists them in increasing lex order
+    # Singular lists them in increasing lex order and marks them as a standard basis
+    return Ideal(ring, [ring.monomial(e) for e in sorted(exps)], is_std=True)

@@ -9,6 +9,7 @@ from math import gcd
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError
+from ..dsl.qrings import quotient_of, with_quotient
 from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
 from ..kernel import Poly
@@ -62,7 +63,11 @@ def _normalize_params(p: Poly) -> Poly:
 
 
 def standard_basis(ideal: Ideal) -> list[Poly]:
-    """A standard basis of ``ideal`` (reduced for global orderings), normalized as Singular's std."""
+    """A standard basis of ``ideal`` (reduced for global orderings), normalized as Singular's std;
+    in a qring R/Q the elements of a standard basis of ideal + Q outside Q's leading ideal."""
+    q = quotient_of(ideal.ring)
+    if q is not None:
+        return [normalize(p) for p in q.std(ideal.nonzero())]
     return [normalize(p) for p in kernel_standard_basis(ideal.nonzero(), ideal.ring)]
 
 
@@ -224,7 +229,7 @@ def _nf(f: Poly, basis: list[Poly]) -> Poly:
 def _reduce(ctx: Any, f: Any, I: Ideal) -> Any:
     ctx.assume_std(I, 1)
     key = I.ring.order.key
-    basis = sorted(I.nonzero(), key=lambda g: key(g.lm()))  # Singular tries reducers from the smallest
+    basis = sorted(with_quotient(I.nonzero(), I.ring), key=lambda g: key(g.lm()))  # from the smallest
     if isinstance(f, Poly):
         return _nf(f, basis)
     if isinstance(f, Ideal):
@@ -272,5 +277,5 @@ def dim(ctx, I: Ideal) -> int:
     order = I.ring.order
     if not order.is_global and not order.is_local:
         ctx.warn(f"dim({ctx.argnames[0]}) may be wrong because the mixed monomial ordering")
-    lms = [g.lm() for g in I.nonzero()]
+    lms = [g.lm() for g in with_quotient(I.nonzero(), I.ring)]
     return krull_dim(lms, I.ring.nvars)

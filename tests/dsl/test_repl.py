@@ -201,7 +201,7 @@ def test_help(capsys):
     shell.run("help;")
     shell.run("? radical;")
     out = capsys.readouterr().out
-    assert out.startswith("std(ideal)\nstd(I): a standard basis")
+    assert out.startswith("std(ideal) or std(ideal, poly|ideal)\nstd(I): a standard basis")
     assert "\nbuilt in:\n  " in out and '\nprimdec.lib (LIB "primdec.lib";):\n  ' in out
     assert "radical(ideal)    [primdec.lib]\n" in out
 

@@ -1,0 +1,308 @@
+"""Singular's commands on single polynomials and integers: ``gcd``, ``lcm`` (general.lib),
+``resultant``, ``coef``, ``coeffs``, ``prime``, ``find``, the ``cyclic`` ideal (polylib.lib),
+``leadexp``, ``rvar``, ``jet``, ``cleardenom``, ``chinrem``."""
+from __future__ import annotations
+
+from math import gcd as int_gcd
+from typing import Any
+from ..dsl.errors import MechRuntimeError
+from ..dsl.registry import command
+from ..dsl.values import Ideal, IntVec, List, Matrix
+from ..kernel import Poly
+from ..kernel import factor
+from ..kernel import matrix as KM
+
+
+def _var_index(v: Poly, what: str) -> int:
+    """The index of the ring variable ``v``."""
+    if len(v.terms) == 1:
+        (e, c), = v.terms.items()
+        if sum(e) == 1 and c == v.ring.field.one:
+            return e.index(1)
+    raise MechRuntimeError(f"{what} takes a ring variable, not {v}")
+
+
+@command("gcd")
+def gcd_int(a: int, b: int) -> int:
+    """gcd(a, b): the greatest common divisor of two integers or polynomials (a polynomial gcd is
+    normalized as Singular's: primitive with positive leading coefficient over QQ, monic over Z/p).
+
+    Example:
+      gcd(12, 18);
+      → 6
+      ring r = 0,(x,y),dp;
+      gcd(2x2-2, 4x-4);
+      → x-1
+    """
+    return int_gcd(a, b)
+
+
+@command("gcd")
+def gcd_poly(f: Poly, g: Poly) -> Poly:
+    return factor.gcd(f, g)
+
+
+@command("lcm", lib="general.lib")
+def lcm_int(*xs: int) -> int:
+    """lcm(a, b, ...): the least common multiple of integers, or of polynomials (their product
+    divided by the gcd, as general.lib's lcm computes it).
+
+    Example:
+      LIB "general.lib";
+      lcm(4, 6);
+      → 12
+      ring r = 0,(x,y),dp;
+      lcm(x2, xy, y3);
+      → x2y3
+    """
+    out = 1
+    for x in xs:
+        out = abs(out * x) // int_gcd(out, x) if x else 0
+    return out
+
+
+@command("lcm", lib="general.lib")
+def lcm_poly(*fs: Poly) -> Poly:
+    out = fs[0]
+    for f in fs[1:]:
+        g = factor.gcd(out, f)
+        out = out.ring.zero() if g.is_zero() else factor.divide_exact(out * f, g)
+    return out
+
+
+@command("resultant")
+def resultant(f: Poly, g: Poly, v: Poly) -> Poly:
+    """resultant(f, g, x): the resultant of f and g with respect to the variable x (the determinant
+    of their Sylvester matrix).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      resultant(2x2+y, 3x-y, x);
+      → 2y2+9y
+    """
+    i = _var_index(v, "resultant")
+    fc, gc = _coeffs_in(f, i), _coeffs_in(g, i)
+    m, n = len(fc) - 1, len(gc) - 1
+    ring = f.ring
+    if m < 0 or n < 0:
+        return ring.zero()
+    if m == 0 and n == 0:
+        return ring.one()
+    size = m + n
+    rows: list[Poly] = []
+    for k in range(n):  # n shifted rows of f's coefficients, highest first
+        rows += [ring.zero()] * k + fc[::-1] + [ring.zero()] * (size - k - m - 1)
+    for k in range(m):
+        rows += [ring.zero()] * k + gc[::-1] + [ring.zero()] * (size - k - n - 1)
+    return KM.det(KM.Matrix(ring, size, size, rows))
+
+
+def _coeffs_in(f: Poly, i: int) -> list[Poly]:
+    """The coefficients of f as a polynomial in the i-th variable, from degree 0 up ([] for 0)."""
+    if f.is_zero():
+        return []
+    deg = max(e[i] for e in f.terms)
+    parts: list[dict] = [{} for _ in range(deg + 1)]
+    for e, c in f.terms.items():
+        parts[e[i]][e[:i] + (0,) + e[i + 1:]] = c
+    return [Poly(f.ring, p) for p in parts]
+
+
+@command("coeffs")
+def coeffs(f: Poly | Ideal, v: Poly) -> Matrix:
+    """coeffs(f, x): the coefficients of f as a polynomial in the variable x, a column from x^0 up;
+    for an ideal one column per generator.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      print(coeffs(3x2y+2xz-z, x));
+      → -z,
+      → 2z,
+      → 3y
+    """
+    i = _var_index(v, "coeffs")
+    polys = [f] if isinstance(f, Poly) else list(f.gens)
+    cols = [_coeffs_in(p, i) for p in polys]
+    nrows = max([len(c) for c in cols] + [1])
+    ring = v.ring
+    entries = []
+    for r in range(nrows):
+        for c in cols:
+            entries.append(c[r] if r < len(c) else ring.zero())
+    return Matrix(ring, nrows, len(cols), entries)
+
+
+@command("coef")
+def coef(f: Poly, vs: Poly) -> Matrix:
+    """coef(f, m): a 2-row matrix: the monomials in the variables of the product m occurring in f (in
+    decreasing order) over their coefficients (polynomials in the other variables).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      print(coef(3x2y+2xz-z, x));
+      → x2,x, 1,
+      → 3y,2z,-z
+    """
+    ring = f.ring
+    if len(vs.terms) != 1:
+        raise MechRuntimeError("coef takes a product of ring variables as its second argument")
+    (mask, _), = vs.terms.items()
+    idx = [i for i, k in enumerate(mask) if k]
+    if f.is_zero():
+        return Matrix(ring, 2, 1, [ring.zero(), ring.zero()])
+    groups: dict[tuple, dict] = {}
+    for e, c in f.terms.items():
+        key = tuple(e[i] if i in idx else 0 for i in range(len(e)))
+        rest = tuple(0 if i in idx else e[i] for i in range(len(e)))
+        groups.setdefault(key, {})[rest] = c
+    keys = sorted(groups, key=lambda k: (sum(k), k), reverse=True)  # by degree, whatever the ordering
+    top = [ring.monomial(k) for k in keys]
+    return Matrix(ring, 2, len(keys), top + [Poly(ring, groups[k]) for k in keys])
+
+
+@command("prime")
+def prime(n: int) -> int:
+    """prime(n): the largest prime not above n (2 for n < 2... as Singular: n >= 2).
+
+    Example:
+      prime(100);
+      → 97
+    """
+    import flint
+    if n < 2:
+        return 2
+    while n > 2 and not flint.fmpz(n).is_prime():
+        n -= 1
+    return n
+
+
+@command("find")
+def find(s: str, t: str, start: int = 1) -> int:
+    """find(s, t[, i]): the position of the first occurrence of t in s at or after position i (0: none).
+
+    Example:
+      find("abcabc", "c", 4);
+      → 6
+    """
+    return s.find(t, max(start, 1) - 1) + 1
+
+
+@command("cyclic", lib="polylib.lib")
+def cyclic(ctx, n: int) -> Ideal:
+    """cyclic(n): the cyclic n-roots ideal in the first n variables of the basering.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y,z),dp;
+      cyclic(3);
+      → _[1]=x+y+z
+      → _[2]=xy+xz+yz
+      → _[3]=xyz-1
+    """
+    ring = ctx.basering().poly
+    if not 1 <= n <= ring.nvars:
+        raise MechRuntimeError(f"cyclic({n}) needs at least {n} variables")
+    xs = ring.gens()[:n]
+    gens = []
+    for k in range(1, n):
+        p = ring.zero()
+        for s in range(n):
+            t = ring.one()
+            for j in range(k):
+                t = t * xs[(s + j) % n]
+            p = p + t
+        gens.append(p)
+    last = ring.one()
+    for x in xs:
+        last = last * x
+    gens.append(last - ring.one())
+    return Ideal(ring, gens)
+
+
+@command("leadexp")
+def leadexp(f: Poly) -> IntVec:
+    """leadexp(f): the exponent vector of the leading monomial of f.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      leadexp(3x2y+z5);
+      → 0,0,5
+    """
+    return IntVec(f.lm() if not f.is_zero() else (0,) * f.ring.nvars)
+
+
+@command("rvar")
+def rvar(ctx, v: Any) -> int:
+    """rvar(x): the index of the ring variable x (a variable or its name), 0 if it is none.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      rvar(y);
+      → 2
+      rvar("w");
+      → 0
+    """
+    ring = ctx.basering()
+    if isinstance(v, str):
+        i = ring.var_index(v)
+        return 0 if i is None else i + 1
+    if isinstance(v, Poly):
+        try:
+            return _var_index(v, "rvar") + 1
+        except MechRuntimeError:
+            return 0
+    return 0
+
+
+@command("jet")
+def jet(f: Poly | Ideal, d: int) -> Any:
+    """jet(f, d): the terms of f of total degree at most d (of each generator for an ideal).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      jet(x2+y3+z+1, 2);
+      → x2+z+1
+    """
+    def cut(p: Poly) -> Poly:
+        return Poly(p.ring, {e: c for e, c in p.terms.items() if sum(e) <= d})
+    if isinstance(f, Poly):
+        return cut(f)
+    return Ideal(f.ring, [cut(p) for p in f.gens])
+
+
+@command("cleardenom")
+def cleardenom(f: Poly) -> Poly:
+    """cleardenom(f): f times a constant so that its coefficients are coprime integers with a positive
+    leading one (over QQ and QQ(parameters); over Z/p f itself).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      cleardenom(1/2x2+1/3y);
+      → 3x2+2y
+    """
+    from .standard import normalize
+    field = f.ring.field
+    if field.characteristic and getattr(field, "params", ()):
+        raise MechRuntimeError("cleardenom over Z/p(parameters) is not supported")
+    return f if field.characteristic else normalize(f)
+
+
+@command("chinrem")
+def chinrem(values: IntVec | List, moduli: IntVec | List) -> int:
+    """chinrem(v, m): the integer x with x = v[i] mod m[i] for all i (pairwise coprime moduli), the
+    least non-negative one.
+
+    Example:
+      chinrem(intvec(2,3), intvec(5,7));
+      → 17
+    """
+    vs, ms = list(values), list(moduli)
+    if len(vs) != len(ms) or not all(type(x) is int for x in vs + ms):
+        raise MechRuntimeError("chinrem(v, m): two intvecs or lists of ints of the same length")
+    x, m = 0, 1
+    for v, n in zip(vs, ms):
+        if int_gcd(m, n) != 1:
+            raise MechRuntimeError("chinrem: the moduli must be pairwise coprime")
+        x += m * ((v - x) * pow(m, -1, n) % n)
+        m *= n
+    return x % m
