@@ -38,6 +38,7 @@ from .hilbert import degree
 from .ideals import dp_ring, eliminate, move, product_order, saturate_poly, std
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
+from .progress import report
 
 _COEFFS = [c for c in range(-9, 10) if c]
 
@@ -141,8 +142,15 @@ def certify(ideal: Sequence[Poly], ring: PolyRing, forms: Sequence[Poly], params
     facs = [(g, k) for g, k in factorize(elim[0])[1] if y_degree(g) > 0]
     if any(k > 1 for _, k in facs) or sum(y_degree(g) for g, _ in facs) != deg:
         return None
+    return split_by_factors(ideal, ring, forms, deg, image, [g for g, _ in facs], params)
+
+
+def split_by_factors(ideal: Sequence[Poly], ring: PolyRing, forms: Sequence[Poly], deg: int,
+           image: PolyRing, facs: list[Poly], params: int = 0) -> Projection:
+    """The certified primes from the eliminant's factors ``facs`` (polynomials of ``image``)."""
+    n = ring.nvars - params
     images = list(ring.gens()[n:]) + list(forms)
-    factors = [g.compose(images, ring) for g, _ in facs]
+    factors = [g.compose(images, ring) for g in facs]
     basis = std(ideal, ring)
     primes = []
     for i, gi in enumerate(factors):
@@ -151,9 +159,10 @@ def certify(ideal: Sequence[Poly], ring: PolyRing, forms: Sequence[Poly], params
             if j != i:
                 prime = saturate_poly(prime, gj, ring, is_basis=True)
         primes.append(_contract(prime, ring, n) if params else prime)
+        report("projection", i + 1, len(factors), "the primes over the eliminant's factors")
     key = ring.order.key  # the order of min_ass_gtz for primes of one dimension
     order = sorted(range(len(primes)), key=lambda i: [key(g.lm()) for g in primes[i]])
-    return Projection(list(forms), deg, image, [facs[i][0] for i in order],
+    return Projection(list(forms), deg, image, [facs[i] for i in order],
                       [factors[i] for i in order], [primes[i] for i in order])
 
 
