@@ -124,14 +124,19 @@ def remaining() -> Optional[float]:
     return max(0.0, watch.deadline - time.monotonic())
 
 
-def within(seconds: Optional[float], fn: Callable[..., Any], *args: Any) -> tuple[bool, Any]:
+def within(seconds: Optional[float], fn: Callable[..., Any], *args: Any, cpu: bool = False) -> tuple[bool, Any]:
     """``(True, fn(*args))``, or ``(False, None)`` when ``fn`` runs longer than ``seconds``
-    (wall time; None: no budget): a watchdog interrupts it with a :class:`BudgetExceeded` of
-    its own.  Limits of the statement and outer budgets still apply inside and propagate."""
+    (wall time, or with ``cpu`` the CPU time of this thread, which a busy machine does not
+    shorten; None: no budget): a watchdog interrupts it with a :class:`BudgetExceeded` of its
+    own.  Limits of the statement and outer budgets still apply inside and propagate."""
     if seconds is None:
         return True, fn(*args)
     own = type("BudgetExceeded", (BudgetExceeded,), {})
-    watch = _Watch(max(seconds, 0.001), None, own)
+    clock = time.monotonic
+    if cpu and hasattr(time, "pthread_getcpuclockid"):
+        cid = time.pthread_getcpuclockid(threading.get_ident())
+        clock = lambda: time.clock_gettime(cid)  # noqa: E731
+    watch = _Watch(max(seconds, 0.001), None, own, clock)
     try:
         try:
             _WATCHDOG.arm(watch)
@@ -172,11 +177,11 @@ class _Watch:
     """One armed statement: its thread, deadline, memory limit and address-space backstop."""
 
     def __init__(self, timeout: Optional[float], max_memory: Optional[float],
-                 late: type[BaseException] = TimeLimitExceeded) -> None:
+                 late: type[BaseException] = TimeLimitExceeded, clock: Callable[[], float] = time.monotonic) -> None:
         self.timeout, self.max_memory = timeout, max_memory
-        self.late = late            # what the deadline raises
+        self.late, self.clock = late, clock  # what the deadline raises; the clock it is measured on
         self.thread = threading.get_ident()
-        self.deadline = time.monotonic() + timeout if timeout else None
+        self.deadline = clock() + timeout if timeout else None
         self.grow = int(max_memory * 2**20) if max_memory else 0   # bytes the statement may add
         self.max_rss = (_rss() or 0) + self.grow if max_memory else None
         self.fired = 0.0            # when LimitExceeded was last raised (0: never)
@@ -254,7 +259,7 @@ class _Watchdog:
                 continue
             if w.fired and now - w.fired < REFIRE:
                 continue
-            if w.deadline is not None and now >= w.deadline:
+            if w.deadline is not None and (now if w.clock is time.monotonic else w.clock()) >= w.deadline:
                 exc: type[BaseException] = w.late
             elif w.max_rss and rss is not None and rss > w.max_rss:
                 exc = MemoryLimitExceeded

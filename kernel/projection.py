@@ -151,15 +151,23 @@ def split_by_factors(ideal: Sequence[Poly], ring: PolyRing, forms: Sequence[Poly
     n = ring.nvars - params
     images = list(ring.gens()[n:]) + list(forms)
     factors = [g.compose(images, ring) for g in facs]
-    basis = std(ideal, ring)
-    primes = []
-    for i, gi in enumerate(factors):
-        prime = basis if len(factors) == 1 else std(list(basis) + [gi], ring)
-        for j, gj in enumerate(factors):
-            if j != i:
-                prime = saturate_poly(prime, gj, ring, is_basis=True)
-        primes.append(_contract(prime, ring, n) if params else prime)
-        report("projection", i + 1, len(factors), "the primes over the eliminant's factors")
+    found: dict[int, list[Poly]] = {}
+
+    def split(basis: list[Poly], part: list[int]) -> None:
+        """``basis``: the intersection of the primes over the factors ``part`` (J is radical:
+        saturating by ``g_j(L)`` drops exactly the prime over ``g_j``)."""
+        if len(part) == 1:
+            found[part[0]] = _contract(basis, ring, n) if params else basis
+            report("projection", len(found), len(factors), "the primes over the eliminant's factors")
+            return
+        for half, other in ((part[:len(part) // 2], part[len(part) // 2:]),
+                            (part[len(part) // 2:], part[:len(part) // 2])):
+            rest = basis
+            for j in other:
+                rest = saturate_poly(rest, factors[j], ring, is_basis=True)
+            split(rest, half)
+    split(std(ideal, ring), list(range(len(factors))))
+    primes = [found[i] for i in range(len(factors))]
     key = ring.order.key  # the order of min_ass_gtz for primes of one dimension
     order = sorted(range(len(primes)), key=lambda i: [key(g.lm()) for g in primes[i]])
     return Projection(list(forms), deg, image, [facs[i] for i in order],

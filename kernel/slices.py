@@ -105,7 +105,7 @@ def _interpolate(xs: list[int], ys: list[flint.fmpq]) -> flint.fmpq_poly:
     return out
 
 
-def curve_primes(ideal: Sequence[Poly], ring: PolyRing, attempts: int = 2,
+def curve_primes(ideal: Sequence[Poly], ring: PolyRing, attempts: int = 3,
                  seed: int = 2) -> Projection | None:
     """The minimal primes of a radical equidimensional ``ideal`` of dimension 1 over QQ (in
     ``ring``'s order), certified by a projection to the plane whose eliminant is interpolated
@@ -122,8 +122,8 @@ def curve_primes(ideal: Sequence[Poly], ring: PolyRing, attempts: int = 2,
         xs, polys = list(range(-(deg // 2), deg - deg // 2 + 1)), []
         for k, a in enumerate(xs):
             chi = _slice_charpoly(J, dp, [cut], [a], form, deg)
-            if chi is None or (k == 0 and not _squarefree(chi)):
-                break
+            if chi is None or (k == 2 and not any(_squarefree(p) for p in polys + [chi])):
+                break  # a point at infinity, or a form that does not separate the points
             polys.append(chi)
             report("projection", k + 1, len(xs), "the eliminant from slices")
         else:

@@ -78,7 +78,8 @@ def run_text(text: str, name: str, warnings: bool = True, dialect: str = "singul
 def main(argv: Optional[list[str]] = None) -> int:
     args = _parser().parse_args(argv)
     from .dsl.limits import default_limits
-    with default_limits(args.timeout, args.max_memory):  # for every interpreter of this run, the REPL's too
+    from .dsl.progress import terminal_progress
+    with default_limits(args.timeout, args.max_memory), terminal_progress():  # for this run, the REPL's too
         return _main(args)
 
 

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import io
-from typing import Any
+from typing import Any, Callable
 
 from .dsl import ast as A
 from .dsl.errors import MechError, MechNameError, MechSyntaxError, MechTypeError, Source
@@ -11,6 +11,7 @@ from .dsl.parser import parse
 from .dsl.values import NONE, ExprList, IntVec, Ring
 from .kernel.engines import check_engine
 from .kernel.errors import EngineError
+from .kernel.progress import Event, listening
 
 
 class Session:
@@ -24,11 +25,16 @@ class Session:
     printed before the error).  ``timeout`` (seconds) and ``max_memory`` (MB it may add to the
     process) limit each statement (``mech.dsl.limits``): exceeding one raises ``MechLimitError``
     and leaves the session usable.  ``engine`` names the Gröbner engine of every standard basis
-    (``mech.kernel.engines``; default ``"auto"``; the language's ``engine("NAME")`` changes it)."""
+    (``mech.kernel.engines``; default ``"auto"``; the language's ``engine("NAME")`` changes it).
+    ``progress``: a callable receiving a :class:`mech.kernel.progress.Event` for each stage of a
+    long computation (``analyze``'s elimination, decomposition, singular points, ...) as it
+    starts, advances and ends, in the thread running the statement."""
 
     def __init__(self, warnings: bool = True, timeout: float | None = None,
-                 max_memory: float | None = None, dialect: str = "singular", engine: str = "auto") -> None:
+                 max_memory: float | None = None, dialect: str = "singular", engine: str = "auto",
+                 progress: Callable[[Event], None] | None = None) -> None:
         self._out = io.StringIO()
+        self.progress = progress
         if dialect not in ("singular", "m2"):
             raise ValueError(f"unknown dialect '{dialect}' (known: singular, m2)")
         self.dialect = dialect
@@ -56,7 +62,8 @@ class Session:
         self._out.seek(0)
         self._out.truncate()
         try:
-            self._interp.execute(source, name)
+            with listening(self.progress):
+                self._interp.execute(source, name)
         except QuitSignal:
             pass
         except MechError as e:
@@ -84,7 +91,8 @@ class Session:
         self._out.seek(0)
         self._out.truncate()
         try:
-            values = it.guarded(lambda: [it.eval(e) for e in exprs])
+            with listening(self.progress):
+                values = it.guarded(lambda: [it.eval(e) for e in exprs])
         finally:
             it.source = saved
         values = [v for v in values if v is not NONE]

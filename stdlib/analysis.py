@@ -187,7 +187,7 @@ def _timed(a: Analysis, name: str, budget: float | None, fn: Callable[..., Any],
     step is noted unfinished and ``(False, None)`` returned."""
     a.running = name
     with stage(name) as st:
-        ok, out = within(budget, fn, *args)
+        ok, out = within(budget, fn, *args, cpu=True)
         if not ok:
             st.status = "budget"
             a.unfinished.append(f"{name}: ran out of its {budget:g} s budget")
@@ -200,7 +200,7 @@ def _real(a: Analysis, prime: list[Poly]) -> bool | None:
     return real if ok else None
 
 
-#: Budgets (wall seconds) of the steps after the motion modes (those of the modes' strategies
+#: Budgets (CPU seconds) of the steps after the motion modes (those of the modes' strategies
 #: are in mech.stdlib.modes.STRATEGIES).
 REAL_BUDGET = 60.0
 SINGULAR_BUDGET = 120.0

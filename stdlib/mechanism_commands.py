@@ -11,7 +11,7 @@ from mech.dsl.errors import MechRuntimeError
 from mech.dsl.registry import command
 from mech.dsl.values import Ideal, List, Ring
 from mech.kernel import Poly
-from mech.stdlib.analysis import run_analysis, require_numeric
+from mech.stdlib.analysis import Analysis, require_complete, require_numeric, run_analysis
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.reports import FORMATS, dp_basis, unknown_format
 
@@ -28,6 +28,11 @@ def _into(ctx: Any, polys: Sequence[Poly]) -> Ideal:
         raise MechRuntimeError(f"the basering lacks the mechanism's variable {missing[0]} "
                                "(def r = configurationRing(m); setring r;)")
     return Ideal(ring, imap(list(polys), polys[0].ring, ring))
+
+
+def _complete(a: Analysis, what: str) -> Analysis:
+    require_complete(a, what)
+    return a
 
 
 @command("setLengths", lib="mechanism.lib")
@@ -121,7 +126,7 @@ def mobility(m: Mechanism) -> int:
       mobility(m);
       → 1
     """
-    return run_analysis(m, local=False).mobility
+    return _complete(run_analysis(m, local=False), "mobility").mobility
 
 
 @command("motionModes", lib="mechanism.lib")
@@ -144,7 +149,10 @@ def motion_modes(ctx: Any, m: Mechanism) -> List:
       → 1
       → 1
     """
-    a = run_analysis(m, local=False)
+    a = _complete(run_analysis(m, local=False), "motionModes")
+    if not a.modes_found:
+        raise MechRuntimeError("motionModes: no strategy found the motion modes within its budget "
+                               "(analyze(m) shows what was found)")
     if a.params and not a.modes:
         raise MechRuntimeError(f"motionModes: the modes over Q({','.join(a.params)}) were not certified "
                                "(no sparse birational projection, or too many variables): give numeric "
@@ -164,7 +172,7 @@ def singular_variety(ctx: Any, m: Mechanism) -> Ideal:
       size(singularVariety(m));
       → 7
     """
-    a = run_analysis(m, local=False)
+    a = _complete(run_analysis(m, local=False), "singularVariety")
     return _into(ctx, list(a.ideal) + a.fitting)
 
 
@@ -181,7 +189,7 @@ def length_conditions(ctx: Any, m: Mechanism) -> Ideal:
       → _[1]=l1-l2
       → _[2]=l1+l2
     """
-    a = run_analysis(m, local=False)
+    a = _complete(run_analysis(m, local=False), "lengthConditions")
     if not a.params:
         raise MechRuntimeError("lengthConditions needs symbolic lengths")
     return _into(ctx, a.length_factors)
@@ -210,7 +218,7 @@ def singular_points(ctx: Any, m: Mechanism) -> List:
       → _[2]=s1
       → _[3]=c1^2-c2^2
     """
-    a = run_analysis(m)
+    a = _complete(run_analysis(m), "singularPoints")
     require_numeric(a, "singularPoints")
     return List([List([_into(ctx, dp_basis(s.prime)), s.kind or "not a point",
                        _into(ctx, [] if s.algebraic else dp_basis(s.tangent_cone)),
@@ -246,4 +254,6 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
         raise MechRuntimeError(f"analyze: {unknown_format(form)}")
     if depth not in ("full", "quick"):
         raise MechRuntimeError(f"analyze: unknown depth '{depth}' (full or quick)")
-    ctx.write(render(run_analysis(m, decompose=depth == "full")))
+    a = run_analysis(m, decompose=depth == "full")
+    ctx.write(render(a))
+    require_complete(a, "analyze (the report above is partial)")

@@ -34,7 +34,7 @@ Found = list[list[Poly]]  # the minimal primes
 @dataclass(frozen=True)
 class Strategy:
     """One way to the motion modes: ``run(a)`` gives the minimal primes or None (cannot
-    decide); ``applies(a)``; ``budget`` in seconds of wall time; ``label``: how the report
+    decide); ``applies(a)``; ``budget`` in seconds of CPU time; ``label``: how the report
     says the modes were found."""
 
     name: str
@@ -70,7 +70,7 @@ def _by_projection(a: Any) -> Optional[Found]:
     return found.primes if found else None
 
 
-#: The chain, in order.  Budgets are wall seconds on a quiet 2-core machine; the whole analysis
+#: The chain, in order.  Budgets are seconds of CPU time (a busy machine does not shorten them); the whole analysis
 #: also stops at the statement's time limit (mech --timeout), with a partial report.
 STRATEGIES: list[Strategy] = [
     Strategy("slice", 10, _radical_ci, _by_slice, "J is prime, certified by a linear slice"),
@@ -90,7 +90,7 @@ def motion_modes(a: Any) -> Optional[Found]:
     with stage("decomposition", total=len(chain)) as st:
         for k, s in enumerate(chain):
             st.step(k, f"strategy {s.name} (budget {s.budget:g} s)")
-            ok, found = within(s.budget, s.run, a)
+            ok, found = within(s.budget, s.run, a, cpu=True)
             if ok and found is not None:
                 a.modes_by = s.label if len(found) > 1 or s.name != "minimal primes" else "minimal primes of J"
                 return found
@@ -108,7 +108,7 @@ def embedded_components(a: Any) -> Optional[list[tuple[list[Poly], list[Poly]]]]
     components of the modes set on them (``primdecGTZ`` within :data:`EMBEDDED_BUDGET`); None
     when it runs out."""
     with stage("embedded components") as st:
-        ok, comps = within(EMBEDDED_BUDGET, primdec_gtz, a.ideal, a.ring)
+        ok, comps = within(EMBEDDED_BUDGET, primdec_gtz, a.ideal, a.ring, cpu=True)
         if not ok:
             st.status = "budget"
             a.notes.append(f"embedded components: primdecGTZ ran out of its {EMBEDDED_BUDGET:g} s budget")
