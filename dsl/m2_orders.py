@@ -5,6 +5,7 @@ from typing import Any
 
 from .errors import MechRuntimeError
 from .m2_printing import Opt, Symbol, to_string
+from .rings import MAX_WEIGHT
 from .values import List, OrderBlock
 
 _KINDS = {"GRevLex": "dp", "Lex": "lp", "GLex": "Dp"}
@@ -25,13 +26,15 @@ def order_blocks(spec: Any, n: int) -> list[OrderBlock]:
             size = n - covered
         elif isinstance(item, Opt) and isinstance(item.key, Symbol) and item.key.name in _KINDS:
             size = item.value
-            if type(size) is not int or size <= 0:
+            if type(size) is not int or not 0 < size <= MAX_WEIGHT:
                 raise MechRuntimeError(f"{item.key.name} => n takes a positive number of variables")
         elif isinstance(item, Opt) and isinstance(item.key, Symbol) and item.key.name in ("Weights", "Eliminate"):
             if item.key.name == "Weights":
                 w = item.value.items if isinstance(item.value, List) else None
                 if w is None or not all(type(x) is int for x in w) or len(w) > n - covered:
                     raise MechRuntimeError(f"Weights => {{...}} takes at most {n - covered} integers")
+                if any(abs(x) > MAX_WEIGHT for x in w):
+                    raise MechRuntimeError(f"Weights => {{...}}: a weight must be at most {MAX_WEIGHT} in absolute value")
             else:
                 if type(item.value) is not int or not 0 <= item.value <= n - covered:
                     raise MechRuntimeError(f"Eliminate k takes 0 <= k <= {n - covered}")

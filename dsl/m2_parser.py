@@ -11,7 +11,7 @@ from lark import Lark, Token, Transformer_NonRecursive, v_args
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput
 
 from . import ast as A
-from .builder import build, meta_pos as _pos, token_pos as _tpos
+from .builder import build, meta_pos as _pos, parse_int, token_pos as _tpos
 from .errors import MechSyntaxError, Source
 from .m2_ast import (BreakExpr, Coeffs, ForLoop, Function, IfExpr, Length, ListLit, Option, ReturnExpr, RingCons,
                      Seq, SetVar, Statement, Subscript, WhileLoop)
@@ -69,14 +69,14 @@ class _Build(Transformer_NonRecursive):
     @v_args(meta=True)
     def coeffs(self, meta, c):
         text = str(c[0])
-        char = int(text.split("/")[1]) if "/" in text else 0
+        char = parse_int(text.split("/")[1], c[0]) if "/" in text else 0
         if text.startswith("ZZ") and "/" not in text:
             raise MechSyntaxError("the integers ZZ are not a field: use QQ or ZZ/p", _tpos(c[0]))
         return Coeffs(char, pos=_tpos(c[0]))
 
     @v_args(meta=True)
     def int_lit(self, meta, c):
-        return A.IntLit(int(c[0]), pos=_tpos(c[0]))
+        return A.IntLit(parse_int(c[0]), pos=_tpos(c[0]))
 
     @v_args(meta=True)
     def str_lit(self, meta, c):
