@@ -265,9 +265,9 @@ def _numeric_modes(a: Analysis) -> None:
     chain of :mod:`mech.stdlib.modes`), whether J is radical (when Serre's test did not prove
     it), the modes' real points and, for a non-radical J, its embedded components."""
     R, J = a.ring, a.ideal
-    a.running = "decomposition"
+    a.running, a.modes_found = "decomposition", False  # not found until a strategy finishes
     primes = motion_modes(a)
-    a.running = ""
+    a.running, a.modes_found = "", primes is not None
     if primes is None:
         a.modes_found, a.decomposed = False, False
         a.unfinished.append("motion modes: no strategy found them within its budget")

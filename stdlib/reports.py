@@ -89,8 +89,15 @@ def report_data(a: Analysis) -> dict:
             "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
             "local_components": [ps(_local(s, c)) for c in s.local_components],
             "transition": s.transition} for s in a.singular]
+    for section in DATA_SECTIONS:
+        d.update(section(a))
     d["notes"], d["unfinished"] = list(a.notes), list(a.unfinished)
     return d
+
+
+#: More entries of the ``json`` report: each maps an analysis to a dict merged into the data
+#: (before ``notes`` and ``unfinished``); the text report's :data:`TEXT_SECTIONS` is the twin.
+DATA_SECTIONS: list[Callable[[Analysis], dict]] = []
 
 
 def report_text(a: Analysis) -> str:
@@ -134,10 +141,22 @@ def report_text(a: Analysis) -> str:
             out.append(f"  [{i}] dim {m.dim}: {what}")
         out.append("singular configurations: give numeric lengths (setLengths)")
         return "\n".join(out) + "\n"
+    for section in TEXT_SECTIONS:
+        lines = section(a)
+        out += lines
+        if lines is _STOP:
+            break
+    return "\n".join(out + _unfinished_lines(a)) + "\n"
+
+
+def _modes_lines(a: Analysis) -> list[str]:
+    """The motion modes (numeric lengths)."""
+    out = []
     if not a.modes_found:
         bound = f" (at most {a.mode_bound}: a slice meets V(J) in {a.mode_bound} Galois orbits)" \
             if a.mode_bound else ""
-        out.append(f"motion modes: not determined, no strategy finished within its budget{bound}")
+        why = "" if any("time limit" in u for u in a.unfinished) else ", no strategy finished within its budget"
+        out.append(f"motion modes: not determined{why}{bound}")
     elif not a.decomposed:
         out.append("motion modes: not computed (quick analysis); the configuration space has real points")
     else:
@@ -148,9 +167,15 @@ def report_text(a: Analysis) -> str:
         low = "" if m.dim == a.dim else ", lower-dimensional (fewer degrees of freedom than the mobility" + \
             ("; a rigid configuration" if m.dim == 0 else "") + ")"
         out.append(f"  [{i}] dim {m.dim}, {real}{low}: {_show(dp_basis(m.prime))}")
-    out += _embedded_lines(a)
+    return out
+
+
+def _singular_lines(a: Analysis) -> list[str]:
+    """The singular configurations and their local analysis (numeric lengths)."""
+    from mech.dsl.printing import poly_str
     if not a.singular_done:
-        return "\n".join(out + _unfinished_lines(a)) + "\n"
+        return _STOP
+    out = []
     how = f"Theorem 1: V(J + I_{a.fitting_size}(dJ))" if a.radical and a.equidimensional else \
         "the singular loci of the motion modes and their intersections"
     out.append(f"singular configurations ({how}): {len(a.singular)}")
@@ -175,7 +200,9 @@ def report_text(a: Analysis) -> str:
             out.append(f"     local components (Theorem 3): {len(s.local_components)}: " +
                        ", ".join(_show(_local(s, c)) for c in s.local_components))
             out.append(f"     {s.transition}")
-    return "\n".join(out + _unfinished_lines(a)) + "\n"
+    return out
+
+
 
 
 def _embedded_lines(a: Analysis) -> list[str]:
@@ -196,6 +223,14 @@ def _embedded_lines(a: Analysis) -> list[str]:
             ": the configuration space is smooth here, only the constraints drop rank"
         out.append(f"  e{i} = {where} on {modes}{what}")
     return out
+
+
+_STOP: list[str] = []  # a section returning this object ends the report (the steps after it did not run)
+
+#: The sections of the text report of a mechanism with numeric lengths, in order, after the header
+#: (mechanism, J, mobility): each maps an analysis to its lines; more sections (real answers:
+#: assembly modes, circuits, ...) are appended here.  Notes and unfinished steps come last.
+TEXT_SECTIONS: list[Callable[[Analysis], list[str]]] = [_modes_lines, _embedded_lines, _singular_lines]
 
 
 def _unfinished_lines(a: Analysis) -> list[str]:
