@@ -71,7 +71,8 @@ class Display:
         with self.lock:
             if not self.open:
                 return
-            path = " > ".join(row[0] for row in self.open)
+            names = [row[0] for row in self.open]
+            path = " > ".join(x for i, x in enumerate(names) if i == 0 or x != names[i - 1])  # a step in a stage of its name
             counted = [row for row in self.open if row[2]]
             detail = next((row[3] for row in reversed(self.open) if row[3]), "")
             done, total = (counted[-1][1] or 0, counted[-1][2]) if counted else (0, None)
