@@ -229,7 +229,7 @@ def global_analysis(m: Mechanism, decompose: bool = True, a: Analysis | None = N
         a.radical = generically_reduced(J, R, a.dim, n)
         if not a.radical and (params or not decompose):
             a.radical = ideals_equal(radical(J, R), J, R)
-    if not decompose and not (a.radical and a.complete_intersection):
+    if not decompose and not params and not (a.radical and a.complete_intersection):
         raise MechanismError(f"{m.name}: the quick analysis needs a radical complete intersection")
     if not params:
         _numeric_modes(a) if decompose else None

@@ -189,7 +189,7 @@ def length_conditions(ctx: Any, m: Mechanism) -> Ideal:
       → _[1]=l1-l2
       → _[2]=l1+l2
     """
-    a = _complete(run_analysis(m, local=False), "lengthConditions")
+    a = _complete(run_analysis(m, local=False, decompose=False), "lengthConditions")  # without the modes
     if not a.params:
         raise MechRuntimeError("lengthConditions needs symbolic lengths")
     return _into(ctx, a.length_factors)
