@@ -144,7 +144,7 @@ def motion_modes(ctx: Any, m: Mechanism) -> List:
       size(L); L[1][1]; L[1][2]; L[1][3];
       → 2
       → _[1]=s1+s2
-      → _[2]=c1+c2
+      → _[2]=c1-c2
       → _[3]=c2^2+s2^2-1
       → 1
       → 1
@@ -243,7 +243,7 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
       →   s1
       →   c1^2+s1^2-1
       → mobility 0; J is radical
-      → motion modes (primary decomposition of J): 2
+      → motion modes (minimal primes of J): 2
       →   [1] dim 0, has real points: <s1, c1-1>
       →   [2] dim 0, has real points: <s1, c1+1>
       → singular configurations (Theorem 1: V(J + I_2(dJ))): 0
