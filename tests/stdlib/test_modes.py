@@ -93,3 +93,20 @@ def test_timeout_gives_a_partial_report_and_a_nonzero_status(tmp_path):
     assert "mobility 1; J is radical\n" in r.stdout and "motion modes: not determined" in r.stdout
     assert "not finished: decomposition: interrupted by the time limit" in r.stdout
     assert "time limit exceeded in analyze" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_stage_benchmark_measures_the_stages():
+    """benchmarks/analysis_stages.py: mech's stages from the progress events, Singular's script."""
+    import importlib.util
+    from tests.util import ROOT
+    spec = importlib.util.spec_from_file_location("analysis_stages", ROOT / "benchmarks" / "analysis_stages.py")
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    spent, total, a = bench.mech_stages(bench.CASES[0])  # the kite
+    assert {"dimension", "decomposition", "singular configurations"} <= set(spent) and total > 0
+    script = bench.singular_script(a, "full")
+    assert "minAssGTZ(J);" in script and "minor(D, 5)" in script
+    if SINGULAR:
+        got = bench.singular_stages(script, 120)
+        assert set(got) == {"dimension", "decomposition", "singular configurations"}
+        assert all(v is not None for v in got.values())
