@@ -157,6 +157,8 @@ def _modes_lines(a: Analysis) -> list[str]:
             if a.mode_bound else ""
         why = "" if any("time limit" in u for u in a.unfinished) else ", no strategy finished within its budget"
         out.append(f"motion modes: not determined{why}{bound}")
+        if a.radical and a.complete_intersection:
+            out.append('  (analyze(m, "text", "quick") gives the singular configurations without the modes)')
     elif not a.decomposed:
         out.append("motion modes: not computed (quick analysis); the configuration space has real points")
     else:

@@ -14,6 +14,8 @@ KITE = 'LIB "mechanism.lib";\nmechanism m = "ground O A 1; bar O B 1; bar B C 2;
 
 
 def test_session_progress_callback_gets_the_stages():
+    from mech.stdlib import analysis
+    analysis._CACHE.clear()  # analyze keeps the analyses of a process: run every stage
     events: list[Event] = []
     out = Session(progress=events.append).execute(KITE)
     assert "singular configurations" in out

@@ -92,6 +92,7 @@ def test_timeout_gives_a_partial_report_and_a_nonzero_status(tmp_path):
     assert r.returncode != 0 and time.monotonic() - start < 120
     assert "mobility 1; J is radical\n" in r.stdout and "motion modes: not determined" in r.stdout
     assert "not finished: decomposition: interrupted by the time limit" in r.stdout
+    assert 'analyze(m, "text", "quick") gives the singular configurations' in r.stdout
     assert "time limit exceeded in analyze" in r.stderr and "Traceback" not in r.stderr
 
 
