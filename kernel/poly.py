@@ -143,7 +143,10 @@ class Poly:
         return self.ring.const(other)
 
     def __add__(self, other: Any) -> "Poly":
-        other = self._coerce(other)
+        try:
+            other = self._coerce(other)
+        except TypeError:               # not a number of this field: let the other operand decide
+            return NotImplemented
         t = dict(self.terms)
         for e, c in other.terms.items():
             v = t.get(e)
@@ -163,10 +166,16 @@ class Poly:
         return Poly(self.ring, {e: -c for e, c in self.terms.items()})
 
     def __sub__(self, other: Any) -> "Poly":
-        return self + (-self._coerce(other))
+        try:
+            return self + (-self._coerce(other))
+        except TypeError:
+            return NotImplemented
 
     def __rsub__(self, other: Any) -> "Poly":
-        return self._coerce(other) - self
+        try:
+            return self._coerce(other) - self
+        except TypeError:
+            return NotImplemented
 
     def __mul__(self, other: Any) -> "Poly":
         if not isinstance(other, Poly):

@@ -8,7 +8,8 @@ import math
 import pytest
 from flint import fmpq
 
-from mech.kernel import QQ, MonomialOrder, PolyRing, groebner
+from mech.kernel import QQ, MonomialOrder, PolyRing
+from mech.kernel.groebner import groebner
 from mech.kernel.ideals import intersect
 from mech.kernel.primdec import min_ass_gtz
 from mech.kernel.real_curve import curve_topology

@@ -27,6 +27,9 @@ def test_sympy_sees_polynomials_ideals_matrices_and_numbers(s):
     f = s["f"]
     assert sympy.sympify(f) == x**2 * y / 2 - 3 * z + 1
     assert sympy.Symbol("x") + f == x**2 * y / 2 - 3 * z + 1 + x      # sympy on the left calls _sympy_
+    w = sympy.Symbol("w")                                               # on the right: Poly defers to sympy
+    assert f + w == x**2 * y / 2 - 3 * z + 1 + w and f - w == x**2 * y / 2 - 3 * z + 1 - w
+    assert w - f == w - (x**2 * y / 2 - 3 * z + 1)
     assert sympy.expand(f * sympy.Integer(2)) == x**2 * y - 6 * z + 2
     assert sympy.sympify(s["I"]) == sympy.Tuple(x**2 - y, x*y - z)
     assert s["I"].to_sympy_polys()[1] == sympy.Poly(x*y - z, x, y, z)
