@@ -46,6 +46,12 @@ class MemoryLimitExceeded(LimitExceeded):
     pass
 
 
+class BudgetExceeded(BaseException):
+    """Raised asynchronously when a :func:`within` budget runs out (each budget raises its own
+    subclass, so nested budgets tell theirs apart; not a :class:`LimitExceeded`: the statement
+    goes on)."""
+
+
 class MechLimitError(MechRuntimeError):
     """A statement ran out of its time or memory (the session stays usable)."""
 
@@ -118,6 +124,40 @@ class Limits:
         return f"timeout {t}, max-memory {m} (per statement)"
 
 
+def remaining() -> Optional[float]:
+    """Seconds left before the running statement's time limit (None: no time limit)."""
+    watch = getattr(_current, "watch", None)
+    if watch is None or watch.deadline is None:
+        return None
+    return max(0.0, watch.deadline - time.monotonic())
+
+
+def within(seconds: Optional[float], fn: Callable[..., Any], *args: Any, cpu: bool = False) -> tuple[bool, Any]:
+    """``(True, fn(*args))``, or ``(False, None)`` when ``fn`` runs longer than ``seconds``
+    (wall time, or with ``cpu`` the CPU time of this thread, which a busy machine does not
+    shorten; None: no budget): a watchdog interrupts it with a :class:`BudgetExceeded` of its
+    own.  Limits of the statement and outer budgets still apply inside and propagate."""
+    if seconds is None:
+        return True, fn(*args)
+    own = type("BudgetExceeded", (BudgetExceeded,), {})
+    clock = time.monotonic
+    if cpu and hasattr(time, "pthread_getcpuclockid"):
+        cid = time.pthread_getcpuclockid(threading.get_ident())
+        clock = lambda: time.clock_gettime(cid)  # noqa: E731
+    watch = _Watch(max(seconds, 0.001), None, own, clock)
+    try:
+        try:
+            _WATCHDOG.arm(watch)
+            result = fn(*args)
+        finally:
+            late = _WATCHDOG.disarm(watch)
+        if late is not None and not isinstance(late, own):
+            raise late
+        return True, result
+    except own:
+        return False, None
+
+
 def limit_error(exc: BaseException, where: str = "") -> MechLimitError:
     """The error the user sees for ``exc`` (a :class:`LimitExceeded` or ``MemoryError``) raised in
     the statement running in this thread; ``where`` names the command it interrupted."""
@@ -144,10 +184,12 @@ def _restore(interp: Any, saved: tuple) -> None:
 class _Watch:
     """One armed statement: its thread, deadline, memory limit and address-space backstop."""
 
-    def __init__(self, timeout: Optional[float], max_memory: Optional[float]) -> None:
+    def __init__(self, timeout: Optional[float], max_memory: Optional[float],
+                 late: type[BaseException] = TimeLimitExceeded, clock: Callable[[], float] = time.monotonic) -> None:
         self.timeout, self.max_memory = timeout, max_memory
+        self.late, self.clock = late, clock  # what the deadline raises; the clock it is measured on
         self.thread = threading.get_ident()
-        self.deadline = time.monotonic() + timeout if timeout else None
+        self.deadline = clock() + timeout if timeout else None
         self.grow = int(max_memory * 2**20) if max_memory else 0   # bytes the statement may add
         self.max_rss = (_rss() or 0) + self.grow if max_memory else None
         self.fired = 0.0            # when LimitExceeded was last raised (0: never)
@@ -183,21 +225,22 @@ class _Watchdog:
         self._watches.append(watch)
         self._wake.set()
 
-    def disarm(self, watch: _Watch) -> Optional[LimitExceeded]:
-        """Stop watching; a LimitExceeded that arrives meanwhile is returned, none is left pending."""
+    def disarm(self, watch: _Watch) -> Optional[BaseException]:
+        """Stop watching; a LimitExceeded (or BudgetExceeded) that arrives meanwhile is returned,
+        none is left pending."""
         late = None
         while not watch.done:
             try:
                 with watch.lock:
                     watch.done = True
-            except LimitExceeded as e:
+            except (LimitExceeded, BudgetExceeded) as e:
                 late = e
         while True:  # the watchdog raises no more: drop an exception that may still be pending
             try:
                 if watch.fired:
                     _async_raise(watch.thread, None)
                 break
-            except LimitExceeded as e:
+            except (LimitExceeded, BudgetExceeded) as e:
                 late = e
         if watch is self._backstop:
             self._restore_rlimit(watch)
@@ -224,8 +267,8 @@ class _Watchdog:
                 continue
             if w.fired and now - w.fired < REFIRE:
                 continue
-            if w.deadline is not None and now >= w.deadline:
-                exc: type[LimitExceeded] = TimeLimitExceeded
+            if w.deadline is not None and (now if w.clock is time.monotonic else w.clock()) >= w.deadline:
+                exc: type[BaseException] = w.late
             elif w.max_rss and rss is not None and rss > w.max_rss:
                 exc = MemoryLimitExceeded
             else:

@@ -38,6 +38,7 @@ from .hilbert import degree
 from .ideals import dp_ring, eliminate, move, product_order, saturate_poly, std
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
+from .progress import report
 
 _COEFFS = [c for c in range(-9, 10) if c]
 
@@ -141,19 +142,35 @@ def certify(ideal: Sequence[Poly], ring: PolyRing, forms: Sequence[Poly], params
     facs = [(g, k) for g, k in factorize(elim[0])[1] if y_degree(g) > 0]
     if any(k > 1 for _, k in facs) or sum(y_degree(g) for g, _ in facs) != deg:
         return None
+    return split_by_factors(ideal, ring, forms, deg, image, [g for g, _ in facs], params)
+
+
+def split_by_factors(ideal: Sequence[Poly], ring: PolyRing, forms: Sequence[Poly], deg: int,
+           image: PolyRing, facs: list[Poly], params: int = 0) -> Projection:
+    """The certified primes from the eliminant's factors ``facs`` (polynomials of ``image``)."""
+    n = ring.nvars - params
     images = list(ring.gens()[n:]) + list(forms)
-    factors = [g.compose(images, ring) for g, _ in facs]
-    basis = std(ideal, ring)
-    primes = []
-    for i, gi in enumerate(factors):
-        prime = basis if len(factors) == 1 else std(list(basis) + [gi], ring)
-        for j, gj in enumerate(factors):
-            if j != i:
-                prime = saturate_poly(prime, gj, ring, is_basis=True)
-        primes.append(_contract(prime, ring, n) if params else prime)
+    factors = [g.compose(images, ring) for g in facs]
+    found: dict[int, list[Poly]] = {}
+
+    def split(basis: list[Poly], part: list[int]) -> None:
+        """``basis``: the intersection of the primes over the factors ``part`` (J is radical:
+        saturating by ``g_j(L)`` drops exactly the prime over ``g_j``)."""
+        if len(part) == 1:
+            found[part[0]] = _contract(basis, ring, n) if params else basis
+            report("projection", len(found), len(factors), "the primes over the eliminant's factors")
+            return
+        for half, other in ((part[:len(part) // 2], part[len(part) // 2:]),
+                            (part[len(part) // 2:], part[:len(part) // 2])):
+            rest = basis
+            for j in other:
+                rest = saturate_poly(rest, factors[j], ring, is_basis=True)
+            split(rest, half)
+    split(std(ideal, ring), list(range(len(factors))))
+    primes = [found[i] for i in range(len(factors))]
     key = ring.order.key  # the order of min_ass_gtz for primes of one dimension
     order = sorted(range(len(primes)), key=lambda i: [key(g.lm()) for g in primes[i]])
-    return Projection(list(forms), deg, image, [facs[i][0] for i in order],
+    return Projection(list(forms), deg, image, [facs[i] for i in order],
                       [factors[i] for i in order], [primes[i] for i in order])
 
 

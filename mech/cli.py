@@ -107,7 +107,8 @@ def main(argv: Optional[list[str]] = None) -> int:
     if args.code is not None:  # under LANG=C Python decodes arguments as ASCII: the bytes were UTF-8
         args.code = os.fsencode(args.code).decode("utf-8", "replace")
     from .dsl.limits import default_limits
-    with default_limits(args.timeout, args.max_memory):  # for every interpreter of this run, the REPL's too
+    from .dsl.progress import terminal_progress
+    with default_limits(args.timeout, args.max_memory), terminal_progress():  # for this run, the REPL's too
         return _exit(_main(args))
 
 

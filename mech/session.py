@@ -13,6 +13,7 @@ from .dsl.parser import parse
 from .dsl.values import NONE, ExprList, IntVec, Ring
 from .kernel.engines import check_engine
 from .kernel.errors import EngineError
+from .kernel.progress import Event, listening
 
 
 class Session:
@@ -32,15 +33,20 @@ class Session:
     (``{"text/plain": ..., "text/latex": ...}``), receives the values of expression statements,
     reports and pictures instead of their text (notebooks give one); ``echo``: also print the
     output to ``sys.stdout`` as it is produced; ``scheduler``: where the language's ``sweep`` runs (a Dask
-    scheduler address ``"tcp://host:8786"``, or ``"inline"``; default a local Dask cluster).  A session is a context manager:
+    scheduler address ``"tcp://host:8786"``, or ``"inline"``; default a local Dask cluster);
+    ``progress``: a callable receiving a :class:`mech.kernel.progress.Event` for each stage of a
+    long computation (``analyze``'s elimination, decomposition, singular points, ...) as it
+    starts, advances and ends, in the thread running the statement.  A session is a context manager:
     ``with Session() as s: ...``."""
 
     def __init__(self, warnings: bool = True, timeout: float | None = None,
                  max_memory: float | None = None, dialect: str = "singular", *,
                  report_format: str = "text", engine: str = "auto",
                  display: Callable[[dict[str, str]], None] | None = None, echo: bool = False,
-                 scheduler: str | None = None) -> None:
+                 scheduler: str | None = None,
+                 progress: Callable[[Event], None] | None = None) -> None:
         self._out = io.StringIO()
+        self.progress = progress
         if dialect not in ("singular", "m2"):
             raise ValueError(f"unknown dialect '{dialect}' (known: singular, m2)")
         self.dialect = dialect
@@ -91,7 +97,8 @@ class Session:
         self._out.seek(0)
         self._out.truncate()
         try:
-            self._interp.execute(source, name)
+            with listening(self.progress):
+                self._interp.execute(source, name)
         except QuitSignal:
             pass
         except MechError as e:
@@ -123,7 +130,8 @@ class Session:
         self._out.seek(0)
         self._out.truncate()
         try:
-            values = it.guarded(lambda: [it.eval(e) for e in exprs])
+            with listening(self.progress):
+                values = it.guarded(lambda: [it.eval(e) for e in exprs])
         except MechError as e:
             raise _short(e) from None
         finally:

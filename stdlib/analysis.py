@@ -27,33 +27,53 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass, field
-from typing import Callable, Sequence
+from typing import Any, Callable, Sequence
 
 from mech.dsl.errors import MechRuntimeError
+from mech.dsl.limits import MechLimitError, remaining, within
 from mech.kernel import Poly, PolyRing
 from mech.kernel.factor import factorize
 from mech.kernel.groebner import normal_form
-from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, is_subset, move, saturate_poly,
+from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, intersect, is_subset, move, saturate_poly,
                                 std)
 from mech.kernel.local import (AlgebraicPoint, centre_at, classify_algebraic_point, classify_point,
                                primitive_element, tangent_cone, tangent_cone_at, tangent_cone_over)
 from mech.kernel.matrix import Matrix, minors
-from mech.kernel.primdec import min_ass_gtz, primdec_gtz, radical
+from mech.kernel.primdec import min_ass_gtz, radical
+from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
 from mech.stdlib.mechanism import Mechanism, MechanismError
+from mech.stdlib.modes import embedded_components, motion_modes
 from mech.stdlib.realpoints import has_real_points, linear_point
 
 
 # ---------------------------------------------------------------- results
 @dataclass
 class Mode:
-    """A motion mode: a prime component of the constraint ideal (with symbolic lengths: over
-    QQ(lengths), contracted to QQ[x, lengths]; ``dim`` over QQ(lengths), ``real`` None)."""
+    """A motion mode: a minimal prime of the constraint ideal (with symbolic lengths: over
+    QQ(lengths), contracted to QQ[x, lengths]; ``dim`` over QQ(lengths), ``real`` None);
+    ``primary`` its primary component of J when known (J radical: the prime), else None;
+    ``real`` None also when the real-point decision ran out of its budget."""
+
+    prime: list[Poly]
+    primary: list[Poly] | None
+    dim: int
+    real: bool | None
+
+
+@dataclass
+class Embedded:
+    """An embedded component of a non-radical J (an associated prime that is not minimal):
+    where J is not reduced, the constraints' Jacobian drops rank at points of the modes
+    (``modes``: 1-based indices of the modes containing it).  ``singular``: whether it lies
+    in a singular configuration of the configuration space (None: not known)."""
 
     prime: list[Poly]
     primary: list[Poly]
     dim: int
-    real: bool | None
+    modes: list[int]
+    point: tuple | None
+    singular: bool | None = None
 
 
 @dataclass
@@ -73,7 +93,7 @@ class SingularPoint:
     prime: list[Poly]
     point: tuple | None  # rational coordinates, None for an algebraic point or a curve
     dim: int
-    real: bool
+    real: bool | None
     kind: str = ""
     tangent_cone: list[Poly] = field(default_factory=list)
     local_components: list[list[Poly]] = field(default_factory=list)
@@ -91,18 +111,26 @@ class Analysis:
     ideal: list[Poly]
     nvars: int  # configuration variables
     params: list[str]
-    dim: int
-    mobility: int
-    radical: bool
-    complete_intersection: bool
-    decomposed: bool = True  # False: a quick analysis without the primary decomposition of J
+    dim: int = -1
+    mobility: int = -1
+    radical: bool = False
+    complete_intersection: bool = False
+    decomposed: bool = True  # False: without the motion modes (quick, or no strategy found them)
     modes: list[Mode] = field(default_factory=list)
-    modes_by: str = "primary decomposition of J"  # how the modes were found, for the report
+    modes_by: str = "minimal primes of J"  # how the modes were found, for the report
+    modes_found: bool = True  # False: every strategy of mech.stdlib.modes ran out
+    mode_bound: int | None = None  # at most this many modes (Galois orbits of a slice)
+    equidimensional: bool = True
+    embedded: list[Embedded] | None = field(default_factory=list)  # None: not computed
     fitting_size: int = 0
     fitting: list[Poly] = field(default_factory=list)
     length_components: list[LengthComponent] = field(default_factory=list)
     length_factors: list[Poly] = field(default_factory=list)
     singular: list[SingularPoint] = field(default_factory=list)
+    singular_done: bool = False  # the singular configurations were computed
+    notes: list[str] = field(default_factory=list)  # strategies that ran out, budgets
+    unfinished: list[str] = field(default_factory=list)  # steps not done (a partial report)
+    running: str = ""  # the step running now (for the partial report)
 
 
 # ---------------------------------------------------------------- steps
@@ -124,53 +152,104 @@ def fitting_ideal(gens: list[Poly], nvars: int, size: int) -> list[Poly]:
     return [p for p in minors(_jacobian(gens, nvars), size) if not p.is_zero()]
 
 
-def is_radical(J: list[Poly], R: PolyRing, nconfig: int | None = None) -> bool:
-    """Whether ``J`` is radical.  Cheap sufficient test first: a complete intersection (as many
-    generators as its codimension) is unmixed and Cohen–Macaulay, so it is radical when it is
-    generically reduced, i.e. when its Jacobian singular locus ``J + I_c(dJ)`` has smaller
-    dimension (Serre's criterion); otherwise ``√J`` is computed and compared.  The minors of the
-    derivatives by the first ``nconfig`` variables alone (fewer, and the analysis needs them
-    anyway) generate a smaller ideal, so a smaller dimension with them is enough."""
-    d = dimension(J, R)
+def generically_reduced(J: list[Poly], R: PolyRing, d: int, nconfig: int | None = None) -> bool:
+    """Serre's criterion for a complete intersection ``J`` (as many generators as its
+    codimension; unmixed and Cohen–Macaulay): it is radical when its Jacobian singular locus
+    ``J + I_c(dJ)`` has smaller dimension.  The minors of the derivatives by the first
+    ``nconfig`` variables alone (fewer, and the analysis needs them anyway) generate a smaller
+    ideal, so a smaller dimension with them is enough.  False: not decided."""
     c = R.nvars - d
-    if len(J) == c:
-        for k in sorted({nconfig or R.nvars, R.nvars}):
-            if dimension(list(J) + fitting_ideal(J, k, c), R) < d:
-                return True
-    return ideals_equal(radical(J, R), J, R)
+    if len(J) != c:
+        return False
+    return any(dimension(list(J) + fitting_ideal(J, k, c), R) < d for k in sorted({nconfig or R.nvars, R.nvars}))
+
+
+def is_radical(J: list[Poly], R: PolyRing, nconfig: int | None = None) -> bool:
+    """Whether ``J`` is radical: :func:`generically_reduced`, else ``√J`` computed and compared."""
+    return generically_reduced(J, R, dimension(J, R), nconfig) or ideals_equal(radical(J, R), J, R)
 
 
 def _unit(basis: list[Poly]) -> bool:
     return any(g.is_constant() and not g.is_zero() for g in basis)
 
 
-def global_analysis(m: Mechanism, decompose: bool = True) -> Analysis:
-    """Steps 1–2 (and, with symbolic lengths, step 3).  ``decompose=False`` skips the primary
-    decomposition of J (a quick analysis, for a radical complete intersection only)."""
-    R, J, n = constraint_ideal(m)
+def _sorted_primes(primes: list[list[Poly]], R: PolyRing) -> list[list[Poly]]:
+    """Reduced bases in minAssGTZ's order (decreasing dimension, then leading monomials), ties
+    broken by the terms: the numbering of the modes does not depend on the strategy."""
+    key = R.order.key
+    bases = [std(P, R) for P in primes]
+    return sorted(bases, key=lambda b: (-dimension(b, R), [key(g.lm()) for g in b],
+                                        [[(key(e), c) for e, c in g.sorted_terms()] for g in b]))
+
+
+def _timed(a: Analysis, name: str, budget: float | None, fn: Callable[..., Any], *args: Any) -> tuple[bool, Any]:
+    """``fn(*args)`` as the stage ``name`` within ``budget`` seconds; when it runs out the
+    step is noted unfinished and ``(False, None)`` returned."""
+    a.running = name
+    with stage(name) as st:
+        ok, out = within(budget, fn, *args, cpu=True)
+        if not ok:
+            st.status = "budget"
+            a.unfinished.append(f"{name}: ran out of its {budget:g} s budget")
+    a.running = ""
+    return ok, out
+
+
+def _real(a: Analysis, prime: list[Poly]) -> bool | None:
+    ok, real = _timed(a, "real points", REAL_BUDGET, has_real_points, prime, a.ring)
+    return real if ok else None
+
+
+#: Budgets (CPU seconds) of the steps after the motion modes (those of the modes' strategies
+#: are in mech.stdlib.modes.STRATEGIES).
+REAL_BUDGET = 60.0
+SINGULAR_BUDGET = 120.0
+POINT_BUDGET = 60.0
+
+
+def global_analysis(m: Mechanism, decompose: bool = True, a: Analysis | None = None) -> Analysis:
+    """Steps 1–2 (and, with symbolic lengths, step 3).  ``decompose=False`` skips the motion
+    modes (a quick analysis, for a radical complete intersection only).  ``a``: an analysis
+    to fill in (kept partly filled when a time limit interrupts)."""
+    with stage("constraints"):
+        R, J, n = constraint_ideal(m)
     params = list(R.names[n:])
-    basis = std(J, R)
-    if _unit(basis):
-        raise MechanismError(f"{m.name}: the configuration space is empty (the constraints have no "
-                             "solution, not even a complex one)")
-    d = dimension(J, R)
-    a = Analysis(m, R, J, n, params, d, d - len(params), is_radical(J, R, n), len(J) == R.nvars - d,
-                 decompose)
-    if not decompose and not (a.radical and a.complete_intersection):
+    a = a or Analysis(m, R, J, n, params)
+    a.ring, a.ideal, a.nvars, a.params, a.decomposed = R, J, n, params, decompose
+    a.running = "dimension"
+    with stage("dimension"):
+        if _unit(std(J, R)):
+            raise MechanismError(f"{m.name}: the configuration space is empty (the constraints have no "
+                                 "solution, not even a complex one)")
+        a.dim = dimension(J, R)
+    a.mobility = a.dim - len(params)
+    a.complete_intersection = len(J) == R.nvars - a.dim
+    a.running = "radicality"
+    with stage("radicality"):
+        a.radical = generically_reduced(J, R, a.dim, n)
+        if not a.radical and (params or not decompose):
+            a.radical = ideals_equal(radical(J, R), J, R)
+    if not decompose and not params and not (a.radical and a.complete_intersection):
         raise MechanismError(f"{m.name}: the quick analysis needs a radical complete intersection")
     if not params:
-        for primary, prime in _decomposition(a) if decompose else []:
-            a.modes.append(Mode(prime, primary, dimension(prime, R), has_real_points(prime, R)))
+        _numeric_modes(a) if decompose else None
+        if decompose and not a.modes_found and not (a.radical and a.complete_intersection):
+            a.decomposed = False
+        reals = [md.real for md in a.modes] if a.modes_found and decompose else \
+            [_real(a, J)] if a.radical and a.complete_intersection else [None]
         # a radical complete intersection is equidimensional: the critical point method applies to J
-        if not (any(md.real for md in a.modes) if decompose else has_real_points(J, R)):
+        if all(r is False for r in reals):
             raise MechanismError(f"{m.name}: the mechanism does not close: the configuration space "
                                  "has no real point (the lengths are inconsistent)")
     a.fitting_size = n - a.mobility
-    a.fitting = fitting_ideal(J, n, a.fitting_size)
+    with stage("fitting ideal"):
+        a.fitting = fitting_ideal(J, n, a.fitting_size)
     if params:
-        _length_conditions(a)
-        found = project_primes(J, R, len(params), _SPARSE) if decompose and a.radical and \
-            a.complete_intersection and n <= _SYMBOLIC_CONFIG else None
+        with stage("length conditions"):
+            _length_conditions(a)
+        with stage("decomposition", detail="over Q(lengths)"):
+            found = project_primes(J, R, len(params), _SPARSE) if decompose and a.radical and \
+                a.complete_intersection and n <= _SYMBOLIC_CONFIG else None
         a.modes = [Mode(P, P, dimension(P, R) - len(params), None) for P in found.primes] if found else []
     return a
 
@@ -181,17 +260,33 @@ _SPARSE = 2  # projections tried (the sparse ones of kernel.projection.candidate
 _SYMBOLIC_CONFIG = 6
 
 
-def _decomposition(a: Analysis) -> list[tuple[list[Poly], list[Poly]]]:
-    """(primary, prime) pairs of J: ``[(J, J)]`` when a sparse birational projection
-    (kernel.projection) proves a radical complete intersection (unmixed) prime; otherwise
-    primdecGTZ (also when the projection finds several primes: primdecGTZ's numbering of the
-    modes is kept, as its order of primes with equal leading monomials is its own)."""
-    if a.radical and a.complete_intersection:
-        found = project_primes(a.ideal, a.ring, 0, _SPARSE)
-        if found is not None and len(found.primes) == 1:
-            a.modes_by = "J is prime, certified by a birational projection"
-            return [(found.primes[0], found.primes[0])]
-    return primdec_gtz(a.ideal, a.ring)
+def _numeric_modes(a: Analysis) -> None:
+    """Step 2 for numeric lengths: the motion modes (the minimal primes of J, by the strategy
+    chain of :mod:`mech.stdlib.modes`), whether J is radical (when Serre's test did not prove
+    it), the modes' real points and, for a non-radical J, its embedded components."""
+    R, J = a.ring, a.ideal
+    a.running, a.modes_found = "decomposition", False  # not found until a strategy finishes
+    primes = motion_modes(a)
+    a.running, a.modes_found = "", primes is not None
+    if primes is None:
+        a.modes_found, a.decomposed = False, False
+        a.unfinished.append("motion modes: no strategy found them within its budget")
+        return
+    primes = _sorted_primes(primes, R)
+    if not a.radical:
+        with stage("radicality", detail="the intersection of the minimal primes"):
+            a.radical = ideals_equal(intersect(*primes, ring=R), J, R)
+    dims = [dimension(P, R) for P in primes]
+    a.equidimensional = len(set(dims)) == 1
+    with stage("real points", total=len(primes)) as st:
+        for k, (P, d) in enumerate(zip(primes, dims)):
+            st.step(k, f"mode {k + 1}")
+            a.modes.append(Mode(P, P if a.radical else None, d, _real(a, P)))
+    if not a.radical:
+        comps = embedded_components(a)
+        a.embedded = None if comps is None else [
+            Embedded(p, q, dimension(p, R), [i for i, md in enumerate(a.modes, 1) if is_subset(md.prime, p, R)],
+                     tuple(pt) if (pt := linear_point(p)) else None) for q, p in comps]
 
 
 def _length_conditions(a: Analysis) -> None:
@@ -217,11 +312,13 @@ def _length_conditions(a: Analysis) -> None:
 
 
 def singular_primes(a: Analysis) -> list[list[Poly]]:
-    """The minimal primes of the singular variety (numeric lengths)."""
+    """The minimal primes of the singular variety (numeric lengths): Theorem 1's
+    ``J + I_r(dJ)`` for a radical equidimensional J, otherwise the singular loci of the modes
+    and their pairwise intersections (a singular point of the configuration space, not a point
+    where only the constraints drop rank: those are J's embedded components)."""
     R, n = a.ring, a.nvars
     primes = [md.prime for md in a.modes]
-    dims = {md.dim for md in a.modes}
-    if a.radical and (a.complete_intersection or len(dims) == 1):
+    if a.radical and (a.complete_intersection or a.equidimensional):
         return min_ass_gtz(list(a.ideal) + a.fitting, R)
     parts: list[list[Poly]] = []
     for i, P in enumerate(primes):
@@ -242,43 +339,74 @@ def _contains(small: list[Poly], big: list[Poly], R: PolyRing) -> bool:
     return is_subset(small, big, R) and not ideals_equal(small, big, R)
 
 
+def _variety(a: Analysis) -> list[Poly]:
+    """Generators of the configuration space's ideal: J, or for a non-radical J the
+    intersection of its minimal primes (the local analysis is of the variety)."""
+    if a.radical or not a.modes:
+        return a.ideal
+    return intersect(*[md.prime for md in a.modes], ring=a.ring)
+
+
 def local_analysis(a: Analysis) -> list[SingularPoint]:
-    """Step 4: the singular configurations of a mechanism with numeric lengths."""
+    """Step 4: the singular configurations of a mechanism with numeric lengths, each within
+    :data:`POINT_BUDGET` (all of them within :data:`SINGULAR_BUDGET`)."""
     R = a.ring
-    out = []
-    for P in singular_primes(a):
-        d = dimension(P, R)
-        point = linear_point(P)
-        sp = SingularPoint(P, tuple(point) if point else None, d,
-                           True if point else has_real_points(P, R))
-        sp.modes = [i for i, md in enumerate(a.modes, 1)
-                    if all(_vanishes(g, P, R) for g in md.prime)]
-        if point is not None and not a.decomposed:
-            sp.kind = "singular point (local components not computed: quick analysis)"
-            sp.tangent_cone = tangent_cone_at(a.ideal, point)
-        elif point is not None:
-            info = classify_point(a.ideal, point, _minimal_modes(a))
-            sp.kind = info.kind
-            sp.tangent_cone = info.tangent_cone
-            sp.local_components = info.components
-            sp.transition = _transition(info.components, R)
-        elif d == 0:
-            _algebraic_local(a, sp)
-        out.append(sp)
-    a.singular = out
+    if not a.modes_found and not (a.radical and a.complete_intersection):
+        a.unfinished.append("singular configurations: they need the motion modes (J is not a radical "
+                            "complete intersection)")
+        a.singular_done = True
+        return []
+    ok, primes = _timed(a, "singular configurations", SINGULAR_BUDGET, singular_primes, a)
+    if not ok:
+        a.singular_done = True
+        return []
+    variety = _variety(a)
+    out = a.singular = []
+    with stage("local analysis", total=len(primes)) as st:
+        for k, P in enumerate(primes):
+            st.step(k, f"singular configuration {k + 1} of {len(primes)}")
+            d = dimension(P, R)
+            point = linear_point(P)
+            sp = SingularPoint(P, tuple(point) if point else None, d, True if point else _real(a, P))
+            sp.modes = [i for i, md in enumerate(a.modes, 1)
+                        if all(_vanishes(g, P, R) for g in md.prime)]
+            out.append(sp)
+            if point is None and d != 0:
+                continue
+            ok, _ = _timed(a, f"local analysis at q{k + 1}", POINT_BUDGET, _local_at, a, sp, variety)
+            if not ok:
+                sp.kind = "not classified (its local analysis ran out of its budget)"
+    for e in a.embedded or []:
+        e.singular = any(is_subset(sp.prime, e.prime, R) for sp in out)
+    a.singular_done = True
     return out
 
 
-def _algebraic_local(a: Analysis, sp: SingularPoint) -> None:
+def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
+    """Step 4 at one singular configuration that is a point (rational or algebraic)."""
+    if sp.point is None:
+        _algebraic_local(a, sp, variety)
+    elif not a.decomposed:
+        sp.kind = "singular point (local components not computed: quick analysis)"
+        sp.tangent_cone = tangent_cone_at(variety, sp.point)
+    else:
+        info = classify_point(variety, sp.point, _minimal_modes(a))
+        sp.kind = info.kind
+        sp.tangent_cone = info.tangent_cone
+        sp.local_components = info.components
+        sp.transition = _transition(info.components, a.ring)
+
+
+def _algebraic_local(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
     """Step 4 at the conjugate points of a zero-dimensional prime that is not a rational point:
     over ``K = Q[t]/m(t)`` for a primitive element ``t``, with the motion modes (the minimal
     primes of J over Q) as the starting point of the local components over K."""
     pt = sp.algebraic = primitive_element(sp.prime, a.ring)
     if not a.decomposed:
         sp.kind = "singular point (local components not computed: quick analysis)"
-        sp.tangent_cone = tangent_cone_over(centre_at(a.ideal, pt), pt)
+        sp.tangent_cone = tangent_cone_over(centre_at(variety, pt), pt)
         return
-    info = classify_algebraic_point(a.ideal, pt, _minimal_modes(a))
+    info = classify_algebraic_point(variety, pt, _minimal_modes(a))
     sp.kind, sp.tangent_cone, sp.local_components = info.kind, info.tangent_cone, info.components
     sp.transition = _transition(info.components, pt.ring, lambda c: tangent_cone_over(c, pt))
 
@@ -323,21 +451,44 @@ def analyze(m: Mechanism) -> Analysis:
 
 # ---------------------------------------------------------------- running it
 _CACHE: dict[str, Analysis] = {}
+RESERVE = 0.2  # the share of the statement's remaining time kept for printing a partial report
 
 
 def run_analysis(m: Mechanism, local: bool = True, decompose: bool = True) -> Analysis:
     """The (cached) analysis of ``m`` (step 4 too with ``local``; ``decompose=False``: quick); bad
-    mechanisms and empty configuration spaces become errors."""
+    mechanisms and empty configuration spaces become errors.  Under a statement time limit
+    (``mech --timeout``) the analysis stops before it with what it finished: ``a.unfinished``
+    says what not (:func:`require_complete`)."""
     key = f"{m} {decompose}"
     a = _CACHE.get(key)
-    try:
+    left = remaining()
+    budget = None if left is None else max(left * (1 - RESERVE), 0.05)
+    holder = a or Analysis(m, *constraint_ideal(m), [])
+
+    def steps() -> None:
         if a is None:
-            a = _CACHE[key] = global_analysis(m, decompose)
-        if local and not a.params and not a.singular:
-            local_analysis(a)
+            global_analysis(m, decompose, holder)
+        if local and not holder.params and not holder.singular_done:
+            local_analysis(holder)
+    try:
+        with stage("analysis"):
+            ok, _ = within(budget, steps)
     except MechanismError as e:
         raise MechRuntimeError(str(e)) from None
-    return a
+    if not ok:
+        holder.unfinished.append(f"{holder.running or 'the analysis'}: interrupted by the time limit"
+                                 + (", and the steps after it" if holder.running else ""))
+        _CACHE.pop(key, None)
+        return holder
+    _CACHE[key] = holder
+    return holder
+
+
+def require_complete(a: Analysis, what: str) -> None:
+    """A :class:`MechLimitError` when a time limit cut the analysis short."""
+    if any("time limit" in u for u in a.unfinished):
+        raise MechLimitError(f"time limit exceeded in {what}: the analysis did not finish "
+                             f"({'; '.join(a.unfinished)})")
 
 
 def require_numeric(a: Analysis, what: str) -> None:

@@ -12,7 +12,7 @@ from mech.dsl.errors import MechRuntimeError
 from mech.dsl.registry import command
 from mech.dsl.values import Ideal, List, Ring
 from mech.kernel import Poly
-from mech.stdlib.analysis import run_analysis, require_numeric
+from mech.stdlib.analysis import Analysis, require_complete, require_numeric, run_analysis
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.reports import FORMATS, dp_basis, unknown_format
 
@@ -29,6 +29,11 @@ def _into(ctx: Any, polys: Sequence[Poly]) -> Ideal:
         raise MechRuntimeError(f"the basering lacks the mechanism's variable {missing[0]} "
                                "(def r = configurationRing(m); setring r;)")
     return Ideal(ring, imap(list(polys), polys[0].ring, ring))
+
+
+def _complete(a: Analysis, what: str) -> Analysis:
+    require_complete(a, what)
+    return a
 
 
 @command("setLengths", lib="mechanism.lib")
@@ -122,7 +127,7 @@ def mobility(m: Mechanism) -> int:
       mobility(m);
       → 1
     """
-    return run_analysis(m, local=False).mobility
+    return _complete(run_analysis(m, local=False), "mobility").mobility
 
 
 @command("motionModes", lib="mechanism.lib")
@@ -140,12 +145,15 @@ def motion_modes(ctx: Any, m: Mechanism) -> List:
       size(L); L[1][1]; L[1][2]; L[1][3];
       → 2
       → _[1]=s1+s2
-      → _[2]=c1+c2
+      → _[2]=c1-c2
       → _[3]=c2^2+s2^2-1
       → 1
       → 1
     """
-    a = run_analysis(m, local=False)
+    a = _complete(run_analysis(m, local=False), "motionModes")
+    if not a.modes_found:
+        raise MechRuntimeError("motionModes: no strategy found the motion modes within its budget "
+                               "(analyze(m) shows what was found)")
     if a.params and not a.modes:
         raise MechRuntimeError(f"motionModes: the modes over Q({','.join(a.params)}) were not certified "
                                "(no sparse birational projection, or too many variables): give numeric "
@@ -165,7 +173,7 @@ def singular_variety(ctx: Any, m: Mechanism) -> Ideal:
       size(singularVariety(m));
       → 7
     """
-    a = run_analysis(m, local=False)
+    a = _complete(run_analysis(m, local=False), "singularVariety")
     return _into(ctx, list(a.ideal) + a.fitting)
 
 
@@ -182,7 +190,7 @@ def length_conditions(ctx: Any, m: Mechanism) -> Ideal:
       → _[1]=l1-l2
       → _[2]=l1+l2
     """
-    a = run_analysis(m, local=False)
+    a = _complete(run_analysis(m, local=False, decompose=False), "lengthConditions")  # without the modes
     if not a.params:
         raise MechRuntimeError("lengthConditions needs symbolic lengths")
     return _into(ctx, a.length_factors)
@@ -211,7 +219,7 @@ def singular_points(ctx: Any, m: Mechanism) -> List:
       → _[2]=s1
       → _[3]=c1^2-c2^2
     """
-    a = run_analysis(m)
+    a = _complete(run_analysis(m), "singularPoints")
     require_numeric(a, "singularPoints")
     return List([List([_into(ctx, dp_basis(s.prime)), s.kind or "not a point",
                        _into(ctx, [] if s.algebraic else dp_basis(s.tangent_cone)),
@@ -236,7 +244,7 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
       →   s1
       →   c1^2+s1^2-1
       → mobility 0; J is radical
-      → motion modes (primary decomposition of J): 2
+      → motion modes (minimal primes of J): 2
       →   [1] dim 0, has real points: <s1, c1-1>
       →   [2] dim 0, has real points: <s1, c1+1>
       → singular configurations (Theorem 1: V(J + I_2(dJ))): 0
@@ -258,6 +266,7 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
         ctx.display({"text/plain": text, "text/html": report_html(a)})
     else:
         ctx.write(text)
+    require_complete(a, "analyze (the report above is partial)")
 
 
 @command("jointAngles", lib="mechanism.lib")

@@ -72,10 +72,17 @@ def report_data(a: Analysis) -> dict:
                              for m in a.modes]  # over Q(lengths); [] when not computed
     else:
         d["motion_modes"] = [{"prime": ps(dp_basis(m.prime)), "dimension": m.dim, "real_points": m.real,
-                              "primary_equals_prime": ideals_equal(m.primary, m.prime, a.ring)}
+                              "primary_equals_prime": None if m.primary is None
+                              else ideals_equal(m.primary, m.prime, a.ring)}
                              for m in a.modes]
         if a.mobility == 0 and a.radical:
             d["complex_configurations"] = configuration_count(a)
+        d["motion_modes_by"] = a.modes_by if a.modes_found and a.decomposed else None
+        d["equidimensional"] = a.equidimensional
+        d["embedded_components"] = None if a.embedded is None else [
+            {"prime": ps(dp_basis(e.prime)), "primary": ps(dp_basis(e.primary)), "dimension": e.dim,
+             "point": [_frac(c) for c in e.point] if e.point else None, "modes": e.modes,
+             "in_singular_configuration": e.singular} for e in a.embedded]
         d["singular"] = [{
             "prime": ps(dp_basis(s.prime)), "dimension": s.dim, "real_points": s.real,
             "point": [_frac(c) for c in s.point] if s.point else ps(s.algebraic.coords) if s.algebraic
@@ -85,8 +92,15 @@ def report_data(a: Analysis) -> dict:
             "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
             "local_components": [ps(_local(s, c)) for c in s.local_components],
             "transition": s.transition} for s in a.singular]
-        d.update(real_sections(a).data)
+    for section in DATA_SECTIONS:
+        d.update(section(a))
+    d["notes"], d["unfinished"] = list(a.notes), list(a.unfinished)
     return d
+
+
+#: More entries of the ``json`` report: each maps an analysis to a dict merged into the data
+#: (before ``notes`` and ``unfinished``); the text report's :data:`TEXT_SECTIONS` is the twin.
+DATA_SECTIONS: list[Callable[[Analysis], dict]] = [lambda a: real_sections(a).data]
 
 
 def configuration_count(a: Analysis) -> int:
@@ -104,7 +118,8 @@ def report_text(a: Analysis) -> str:
                                          if a.params else ""),
            "constraint ideal J:"] + [f"  {poly_str(g)}" for g in a.ideal]
     mob = f"mobility {a.mobility}" + (f" (dim J = {a.dim} minus {len(a.params)} lengths)" if a.params else "")
-    out.append(f"{mob}{_count_note(a)}; J is {'radical' if a.radical else 'not radical'}")
+    out.append(f"{mob}{_count_note(a)}; J is {'radical' if a.radical else 'not radical'}"
+               + ("" if a.equidimensional else ", not equidimensional"))
     if a.params:
         out.append(f"singular variety (Theorem 1): V(J + I_{a.fitting_size}(dJ)); "
                    f"minimal primes P of the Fitting ideal and (J + P) ∩ Q[{','.join(a.params)}]:")
@@ -136,14 +151,46 @@ def report_text(a: Analysis) -> str:
             out.append(f"  [{i}] dim {m.dim}: {what}")
         out.append("singular configurations: give numeric lengths (setLengths)")
         return "\n".join(out) + "\n"
-    if not a.decomposed:
+    for section in TEXT_SECTIONS:
+        lines = section(a)
+        out += lines
+        if lines is _STOP:
+            break
+    return "\n".join(out + _unfinished_lines(a)) + "\n"
+
+
+def _modes_lines(a: Analysis) -> list[str]:
+    """The motion modes (numeric lengths)."""
+    out = []
+    if not a.modes_found:
+        bound = f" (at most {a.mode_bound}: a slice meets V(J) in {a.mode_bound} Galois orbits)" \
+            if a.mode_bound else ""
+        why = "" if any("time limit" in u for u in a.unfinished) else ", no strategy finished within its budget"
+        out.append(f"motion modes: not determined{why}{bound}")
+        if a.radical and a.complete_intersection:
+            out.append('  (analyze(m, "text", "quick") gives the singular configurations without the modes)')
+    elif not a.decomposed:
         out.append("motion modes: not computed (quick analysis); the configuration space has real points")
     else:
         out.append(f"motion modes ({a.modes_by}): {len(a.modes)}")
     for i, m in enumerate(a.modes, 1):
-        real = "has real points" if m.real else "no real points (not physically feasible)"
-        out.append(f"  [{i}] dim {m.dim}, {real}: {_show(dp_basis(m.prime))}")
-    out.append(f"singular configurations (Theorem 1: V(J + I_{a.fitting_size}(dJ))): {len(a.singular)}")
+        real = "has real points" if m.real else "no real points (not physically feasible)" \
+            if m.real is False else "real points not decided (out of budget)"
+        low = "" if m.dim == a.dim else ", lower-dimensional (fewer degrees of freedom than the mobility" + \
+            ("; a rigid configuration" if m.dim == 0 else "") + ")"
+        out.append(f"  [{i}] dim {m.dim}, {real}{low}: {_show(dp_basis(m.prime))}")
+    return out
+
+
+def _singular_lines(a: Analysis) -> list[str]:
+    """The singular configurations and their local analysis (numeric lengths)."""
+    from mech.dsl.printing import poly_str
+    if not a.singular_done:
+        return _STOP
+    out = []
+    how = f"Theorem 1: V(J + I_{a.fitting_size}(dJ))" if a.radical and a.equidimensional else \
+        "the singular loci of the motion modes and their intersections"
+    out.append(f"singular configurations ({how}): {len(a.singular)}")
     for i, s in enumerate(a.singular, 1):
         modes = "modes " + ", ".join(map(str, s.modes)) if len(s.modes) > 1 else f"mode {s.modes[0]}" \
             if s.modes else "no mode"
@@ -161,12 +208,46 @@ def report_text(a: Analysis) -> str:
         over = ", coefficients in Q(t)" if pt else ""
         out.append(f"     tangent cone (coordinates centred at q{i}{over}): "
                    f"{_show(_local(s, s.tangent_cone))}")
-        if a.decomposed:
+        if a.decomposed and s.local_components:
             out.append(f"     local components (Theorem 3): {len(s.local_components)}: " +
                        ", ".join(_show(_local(s, c)) for c in s.local_components))
             out.append(f"     {s.transition}")
-    out += real_sections(a).lines
-    return "\n".join(out) + "\n"
+    return out
+
+
+
+
+def _embedded_lines(a: Analysis) -> list[str]:
+    """The embedded components of a non-radical J and what they mean for the linkage."""
+    from mech.dsl.printing import poly_str
+    if a.radical or not a.decomposed:
+        return []
+    if a.embedded is None:
+        return ["embedded components of J: not computed (out of budget)"]
+    out = [f"embedded components of J: {len(a.embedded)} (not motion modes: where J is not reduced, "
+           "the constraint equations are dependent beyond the mobility: constraint singularities, "
+           "as in an overconstrained linkage)"]
+    for i, e in enumerate(a.embedded, 1):
+        modes = ("modes " if len(e.modes) > 1 else "mode ") + ", ".join(map(str, e.modes))
+        where = f"({_names(a)}) = ({','.join(_frac(c) for c in e.point)})" if e.point else \
+            f"{_show(dp_basis(e.prime))} (dim {e.dim})"
+        what = "" if e.singular is None else ": also a singular configuration" if e.singular else \
+            ": the configuration space is smooth here, only the constraints drop rank"
+        out.append(f"  e{i} = {where} on {modes}{what}")
+    return out
+
+
+_STOP: list[str] = []  # a section returning this object ends the report (the steps after it did not run)
+
+#: The sections of the text report of a mechanism with numeric lengths, in order, after the header
+#: (mechanism, J, mobility): each maps an analysis to its lines; more sections (real answers:
+#: assembly modes, circuits, ...) are appended here.  Notes and unfinished steps come last.
+TEXT_SECTIONS: list[Callable[[Analysis], list[str]]] = [_modes_lines, _embedded_lines, _singular_lines,
+                                                         lambda a: real_sections(a).lines]
+
+
+def _unfinished_lines(a: Analysis) -> list[str]:
+    return [f"note: {n}" for n in a.notes] + [f"not finished: {u}" for u in a.unfinished]
 
 
 def _count_data(a: Analysis) -> dict[str, Any]:

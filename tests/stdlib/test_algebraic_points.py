@@ -186,8 +186,8 @@ def test_report_text():
         "  q1 = (c1,s1,c2,s2) = (-1/2*t,-t,1/2*t,t) on modes 1, 2: components meet",
         "     where t = s2, 5*t^2-4 = 0: 2 conjugate points, 2 real",
         "     tangent cone (coordinates centred at q1, coefficients in Q(t)): <c2+2*s2, c1+2*s1, s1^2-s2^2>",
-        "     local components (Theorem 3): 2: <5*s1+4*c2+3*s2, 5*c1-3*c2+4*s2, c2^2+s2^2+c2*t+2*s2*t>, "
-        "<s1+s2, c1+c2, c2^2+s2^2+c2*t+2*s2*t>",
+        "     local components (Theorem 3): 2: <s1+s2, c1+c2, c2^2+s2^2+c2*t+2*s2*t>, "
+        "<5*s1+4*c2+3*s2, 5*c1-3*c2+4*s2, c2^2+s2^2+c2*t+2*s2*t>",
         "     the local components meet transversally (their tangent cones share no line): a regular "
         "motion cannot pass from one motion mode to another here"]
     [d] = report_data(a)["singular"]

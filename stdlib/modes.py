@@ -1,0 +1,131 @@
+"""The motion modes of a mechanism with numeric lengths: the minimal primes of ``J``, found by a
+chain of strategies, each with a time budget (:data:`STRATEGIES`); when one runs out or cannot
+decide, the next runs; when all fail the analysis goes on without modes and says so.  For a
+``J`` that is not radical, its embedded components (:func:`embedded_components`).
+
+The strategies (their proofs are in the kernel modules named):
+
+* ``slice`` (radical complete intersections): a zero-dimensional slice of ``V(J)`` whose
+  ``deg V`` points are one Galois orbit proves ``J`` prime (``mech.kernel.slices``); several
+  orbits bound the number of modes.
+* ``minimal primes``: ``minAssGTZ`` (``mech.kernel.primdec``), first with a short budget.
+* ``interpolated projection`` (radical complete intersections of dimension 1): the eliminant of
+  a projection to the plane interpolated from slices, its factors certify the primes.
+* ``sparse projection`` (radical complete intersections): the eliminant of a projection by
+  sparse forms ``c_j + s_j`` (``mech.kernel.projection``).
+* ``minimal primes`` again with a long budget.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable, Optional
+
+from mech.dsl.limits import within
+from mech.kernel import Poly
+from mech.kernel.ideals import dimension, is_subset
+from mech.kernel.primdec import min_ass_gtz, primdec_gtz
+from mech.kernel.progress import stage
+from mech.kernel.projection import project_primes
+from mech.kernel.slices import curve_primes, slice_orbits
+
+Found = list[list[Poly]]  # the minimal primes
+
+
+@dataclass(frozen=True)
+class Strategy:
+    """One way to the motion modes: ``run(a)`` gives the minimal primes or None (cannot
+    decide); ``applies(a)``; ``budget`` in seconds of CPU time; ``label``: how the report
+    says the modes were found."""
+
+    name: str
+    budget: float
+    applies: Callable[[Any], bool]
+    run: Callable[[Any], Optional[Found]]
+    label: str
+
+
+def _radical_ci(a: Any) -> bool:
+    return a.radical and a.complete_intersection
+
+
+def _by_slice(a: Any) -> Optional[Found]:
+    orbits = slice_orbits(a.ideal, a.ring)
+    if orbits is None:
+        return None
+    a.mode_bound = len(orbits)
+    return [list(a.ideal)] if len(orbits) == 1 else None
+
+
+def _by_min_ass(a: Any) -> Optional[Found]:
+    return min_ass_gtz(a.ideal, a.ring)
+
+
+def _by_curve(a: Any) -> Optional[Found]:
+    found = curve_primes(a.ideal, a.ring)
+    return found.primes if found else None
+
+
+def _by_projection(a: Any) -> Optional[Found]:
+    found = project_primes(a.ideal, a.ring, 0, 2)
+    return found.primes if found else None
+
+
+#: The chain, in order.  Budgets are seconds of CPU time (a busy machine does not shorten them); the whole analysis
+#: also stops at the statement's time limit (mech --timeout), with a partial report.
+STRATEGIES: list[Strategy] = [
+    Strategy("slice", 10, _radical_ci, _by_slice, "J is prime, certified by a linear slice"),
+    Strategy("minimal primes", 10, lambda a: True, _by_min_ass, "minimal primes of J"),
+    Strategy("interpolated projection", 60, lambda a: _radical_ci(a) and a.dim == 1, _by_curve,
+             "minimal primes of J, certified by a projection interpolated from slices"),
+    Strategy("sparse projection", 30, lambda a: _radical_ci(a) and a.dim > 1, _by_projection,
+             "minimal primes of J, certified by a birational projection"),
+    Strategy("minimal primes", 300, lambda a: True, _by_min_ass, "minimal primes of J"),
+]
+
+
+def motion_modes(a: Any) -> Optional[Found]:
+    """The minimal primes of ``a.ideal`` by the first strategy that finds them (``a.modes_by``
+    says which, ``a.notes`` what ran out), None when none does."""
+    chain = [s for s in STRATEGIES if s.applies(a)]
+    with stage("decomposition", total=len(chain)) as st:
+        for k, s in enumerate(chain):
+            st.step(k, f"strategy {s.name} (budget {s.budget:g} s)")
+            ok, found = within(s.budget, s.run, a, cpu=True)
+            if ok and found is not None:
+                a.modes_by = s.label if len(found) > 1 or s.name != "minimal primes" else "minimal primes of J"
+                return found
+            if not ok:
+                a.notes.append(f"strategy {s.name}: ran out of its {s.budget:g} s budget")
+        st.status = "failed"
+    return None
+
+
+EMBEDDED_BUDGET = 60.0
+
+
+def embedded_components(a: Any) -> Optional[list[tuple[list[Poly], list[Poly]]]]:
+    """The embedded components of a non-radical ``J`` as (primary, prime) pairs, the primary
+    components of the modes set on them (``primdecGTZ`` within :data:`EMBEDDED_BUDGET`); None
+    when it runs out."""
+    with stage("embedded components") as st:
+        ok, comps = within(EMBEDDED_BUDGET, primdec_gtz, a.ideal, a.ring, cpu=True)
+        if not ok:
+            st.status = "budget"
+            a.notes.append(f"embedded components: primdecGTZ ran out of its {EMBEDDED_BUDGET:g} s budget")
+            return None
+    minimal = [md.prime for md in a.modes]
+    out = []
+    for primary, prime in comps:
+        for md in a.modes:
+            if is_subset(md.prime, prime, a.ring) and is_subset(prime, md.prime, a.ring):
+                md.primary = primary
+                break
+        else:
+            if any(is_subset(P, prime, a.ring) for P in minimal):
+                out.append((primary, prime))
+    return out
+
+
+def lower_dimensional(a: Any) -> list[int]:
+    """Indices (1-based) of the modes of smaller dimension than ``J``."""
+    return [i for i, md in enumerate(a.modes, 1) if md.dim < dimension(a.ideal, a.ring)]

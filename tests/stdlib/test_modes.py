@@ -1,0 +1,113 @@
+"""Motion modes are the minimal primes of J (mech.stdlib.modes): embedded components of a
+non-radical J reported apart, the strategy chain on a six-bar, partial reports on a time limit."""
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+
+import pytest
+
+from mech.kernel.ideals import ideals_equal
+from mech.stdlib.analysis import analyze
+from mech.stdlib.mechanism import parse_mechanism
+from mech.stdlib.reports import report_data, report_text
+from tests.util import SINGULAR, ideal_blocks, parse_poly, run_singular
+
+DOUBLE_PARALLELOGRAM = "ground O A 3; fix E 6 0; bar O B 1; body B C 3 0 F 6 0; bar C A 1; bar F E 1"
+WATT_I = "ground O A 4; body O B 3 0 E 2 2; body B C 4 0 F 2 2; bar C A 2; bar E H 3; bar H F 3"
+# J of the double parallelogram written by hand: B = (c1,s1), C = B + 3(c2,s2), F = B + 6(c2,s2),
+# C + (c3,s3) = A = (3,0), F + (c4,s4) = E = (6,0)
+HAND = ("ring r = 0, (c1,s1,c2,s2,c3,s3,c4,s4), dp;\n"
+        "ideal J = c1+3*c2+c3-3, s1+3*s2+s3, c1+6*c2+c4-6, s1+6*s2+s4,"
+        " c1^2+s1^2-1, c2^2+s2^2-1, c3^2+s3^2-1, c4^2+s4^2-1;\n")
+
+
+def _primes(R, blocks):
+    return [[parse_poly(R, t) for t in b] for b in blocks]
+
+
+def _same_sets(ours, theirs, R):
+    return len(ours) == len(theirs) and all(any(ideals_equal(p, q, R) for q in theirs) for p in ours)
+
+
+def test_double_parallelogram_one_mode_two_constraint_singularities():
+    a = analyze(parse_mechanism(DOUBLE_PARALLELOGRAM))
+    assert not a.radical and [(m.dim, m.real) for m in a.modes] == [(1, True)]
+    assert sorted(e.point for e in a.embedded) == [(-1, 0, 1, 0, 1, 0, 1, 0), (1, 0, 1, 0, -1, 0, -1, 0)]
+    assert all(e.modes == [1] and e.dim == 0 and e.singular is False for e in a.embedded)
+    assert a.singular == []  # the one mode is a smooth curve: the points are not singular configurations
+    text = report_text(a)
+    assert "motion modes (minimal primes of J): 1\n" in text and "embedded components of J: 2" in text
+    assert "constraint singularities" in text and "regular" not in text
+    data = report_data(a)
+    assert len(data["motion_modes"]) == 1 and len(data["embedded_components"]) == 2
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(not SINGULAR, reason="Singular not installed")
+def test_double_parallelogram_against_singular():
+    """minAssGTZ (the modes) and primdecGTZ (the embedded primes) of a hand-written J."""
+    a = analyze(parse_mechanism(DOUBLE_PARALLELOGRAM))
+    R = a.ring
+    out = run_singular('LIB "primdec.lib";\n' + HAND + 'list L = minAssGTZ(J);\n'
+                       'int i; for (i = 1; i <= size(L); i++) { print("---"); L[i]; }')
+    assert _same_sets([m.prime for m in a.modes], _primes(R, ideal_blocks(out)), R)
+    out = run_singular('LIB "primdec.lib";\n' + HAND + 'list L = primdecGTZ(J);\n'
+                       'int i; for (i = 1; i <= size(L); i++) { print("---"); L[i][2]; }')
+    assoc = _primes(R, ideal_blocks(out))
+    assert len(assoc) == 3
+    embedded = [p for p in assoc if not any(ideals_equal(p, m.prime, R) for m in a.modes)]
+    assert _same_sets([e.prime for e in a.embedded], embedded, R)
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(not SINGULAR, reason="Singular not installed")
+def test_watt_i_finishes_with_one_mode():
+    """The issue's Watt I six-bar: one mode, proved; the singular configurations are Singular's
+    minimal primes of J + I_9(dJ)."""
+    start = time.process_time()
+    a = analyze(parse_mechanism(WATT_I))
+    assert time.process_time() - start < 60  # about 2 s of CPU on a quiet machine
+    R = a.ring
+    assert a.radical and len(a.modes) == 1 and ideals_equal(a.modes[0].prime, a.ideal, R) and a.modes[0].real
+    from mech.dsl.printing import poly_str
+    out = run_singular('LIB "primdec.lib";\nring r = 0, (' + ",".join(R.names) + "), dp;\nideal J0 = "
+                       + ", ".join(poly_str(g) for g in a.ideal) + ";\nideal J = J0 + minor(jacob(J0), 9);\n"
+                       'list L = minAssGTZ(J); size(L);\n'
+                       'int i; for (i = 1; i <= size(L); i++) { print("---"); L[i]; }', timeout=300)
+    theirs = [b for b in ideal_blocks(out) if b != ["1"]]  # minAssGTZ(<1>) is <1>: no singular configuration
+    assert _same_sets([s.prime for s in a.singular], _primes(R, theirs), R)
+    assert a.singular == [] and not a.unfinished
+
+
+def test_timeout_gives_a_partial_report_and_a_nonzero_status(tmp_path):
+    """A six-bar whose modes take long: --timeout stops it with what was finished."""
+    script = tmp_path / "six.mech"
+    script.write_text('LIB "mechanism.lib";\nmechanism m = "ground O A 4; body O B 3 0 E 1 2; '
+                      'body B C 4 0 F 1 2; bar C A 3; bar E H 2; bar H F 3";\nanalyze(m);\n')
+    start = time.monotonic()
+    r = subprocess.run([sys.executable, "-m", "mech", "--timeout", "3", str(script)], cwd=tmp_path,
+                       text=True, capture_output=True, timeout=300)
+    assert r.returncode != 0 and time.monotonic() - start < 120
+    assert "mobility 1; J is radical\n" in r.stdout and "motion modes: not determined" in r.stdout
+    assert "not finished: decomposition: interrupted by the time limit" in r.stdout
+    assert 'analyze(m, "text", "quick") gives the singular configurations' in r.stdout
+    assert "time limit exceeded in analyze" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_stage_benchmark_measures_the_stages():
+    """benchmarks/analysis_stages.py: mech's stages from the progress events, Singular's script."""
+    import importlib.util
+    from tests.util import ROOT
+    spec = importlib.util.spec_from_file_location("analysis_stages", ROOT / "benchmarks" / "analysis_stages.py")
+    bench = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(bench)
+    spent, total, a = bench.mech_stages(bench.CASES[0])  # the kite
+    assert {"dimension", "decomposition", "singular configurations"} <= set(spent) and total > 0
+    script = bench.singular_script(a, "full")
+    assert "minAssGTZ(J);" in script and "minor(D, 5)" in script
+    if SINGULAR:
+        got = bench.singular_stages(script, 120)
+        assert set(got) == {"dimension", "decomposition", "singular configurations"}
+        assert all(v is not None for v in got.values())
