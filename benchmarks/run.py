@@ -1,4 +1,4 @@
-"""Gröbner basis benchmarks: mech against Singular, Macaulay2 and SymPy (each when installed).
+"""Gröbner basis benchmarks: mech against Singular, Macaulay2, SymPy and msolve (each when installed).
 
     python benchmarks/run.py                      # every case of benchmarks/cases.py
     python benchmarks/run.py --only katsura-6 --no-sympy
@@ -34,23 +34,36 @@ from cases import CASES, Case  # noqa: E402
 
 SINGULAR = shutil.which("Singular")
 M2 = shutil.which("M2")
+MSOLVE = shutil.which("msolve")
 
 
 # -- children: one system each --------------------------------------------------------------
+def ring_line(case: Case) -> str:
+    return f"ring r = {case.char}, ({','.join(case.variables)}), {case.ordering};"
+
+
 def child_mech(case: Case, repeat: int) -> dict:
     from mech import Session
-    from mech.kernel.engines import clear_cache
-    from mech.kernel.groebner import groebner
+    from mech.kernel.engines import clear_cache, standard_basis
+    best = None
+    if not case.gens:  # ring creation only
+        for _ in range(repeat):
+            s = Session(warnings=False)
+            c0, w0 = time.process_time(), time.perf_counter()
+            s.execute(ring_line(case))
+            c1, w1 = time.process_time(), time.perf_counter()
+            if best is None or c1 - c0 < best[0]:
+                best = (c1 - c0, w1 - w0)
+        return {"cpu": best[0], "wall": best[1], "rss": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+                "size": 0}
     s = Session(warnings=False)
-    s.execute(f"ring r = {case.char}, ({','.join(case.variables)}), {case.ordering};\n"
-              f"ideal I = {', '.join(case.gens)};")
+    s.execute(f"{ring_line(case)}\nideal I = {', '.join(case.gens)};")
     ideal = s["I"]
     gens, ring = list(ideal.gens), ideal.ring
-    best = None
     for _ in range(repeat):
         clear_cache()
         c0, w0 = time.process_time(), time.perf_counter()
-        G = groebner(gens, ring)
+        G = standard_basis(gens, ring)
         c1, w1 = time.process_time(), time.perf_counter()
         if best is None or c1 - c0 < best[0]:
             best = (c1 - c0, w1 - w0)
@@ -83,12 +96,21 @@ def run_child(kind: str, case: Case, repeat: int, timeout: float) -> dict | None
     return json.loads(res.stdout.strip().splitlines()[-1])
 
 
+def singular_command(case: Case) -> str:
+    """``std`` for degree and local orderings; Singular's own choice ``groebner`` (stdfglm,
+    stdhilb, ...) for lex and block orderings, where its ``std`` takes minutes."""
+    return "std" if case.ordering in ("dp", "Dp", "ds", "Ds", "ls") else "groebner"
+
+
 def singular_script(case: Case, reps: int) -> str:
-    return (f'system("--ticks-per-sec", 1000);\n'
-            f"ring r = {case.char}, ({','.join(case.variables)}), {case.ordering};\n"
+    head = 'system("--ticks-per-sec", 1000);\nint k; int c0 = timer; int w0 = rtimer;\n'
+    if not case.gens:
+        return (head + f"for (k = 0; k < {reps}; k++) {{ {ring_line(case)} kill r; }}\n"
+                f'"RESULT"; timer - c0; rtimer - w0; 0;\nquit;\n')
+    return (f'LIB "standard.lib";\n{head}{ring_line(case)}\n'
             f"ideal I = {', '.join(case.gens)};\n"
-            f"ideal G; int k; int c0 = timer; int w0 = rtimer;\n"
-            f"for (k = 0; k < {reps}; k++) {{ G = std(I); }}\n"
+            f"ideal G; c0 = timer; w0 = rtimer;\n"
+            f"for (k = 0; k < {reps}; k++) {{ G = {singular_command(case)}(I); }}\n"
             f'"RESULT"; timer - c0; rtimer - w0; size(G);\nquit;\n')
 
 
@@ -102,6 +124,8 @@ def run_singular(case: Case, timeout: float) -> dict | None:
                                  capture_output=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return {"timeout": timeout}
+        if "RESULT" not in res.stdout:
+            return {"error": (res.stderr or res.stdout).strip()[-200:]}
         lines = res.stdout.split("RESULT", 1)[1].split()
         cpu, wall, size = int(lines[0]), int(lines[1]), int(lines[2])
         out = {"cpu": cpu / 1000 / reps, "wall": wall / 1000 / reps, "size": size, "reps": reps}
@@ -115,7 +139,8 @@ M2_ORDERS = {"dp": "GRevLex", "lp": "Lex", "Dp": "GLex"}
 
 
 def m2_order(ordering: str) -> str | None:
-    """Macaulay2's MonomialOrder for a Singular ordering: one block or a product of blocks."""
+    """Macaulay2's MonomialOrder for a Singular ordering: one block or a product of blocks
+    (None for local orderings)."""
     if ordering in M2_ORDERS:
         return M2_ORDERS[ordering]
     blocks = []
@@ -130,8 +155,14 @@ def m2_order(ordering: str) -> str | None:
 def m2_script(case: Case, reps: int) -> str:
     """``gens gb`` of a fresh copy of the ideal ``reps`` times (M2 caches bases on the ideal)."""
     field = "QQ" if case.char == 0 else f"ZZ/{case.char}"
+    if not case.gens:  # x(1..N): ring creation only
+        n = case.variables[0].split("..")[1].rstrip(")")
+        return (f"t = 0; for k from 1 to {reps} do (t0 = cpuTime(); R = {field}[x_1..x_{n}]; t = t + cpuTime() - t0);\n"
+                f'print "RESULT"; print(t / {reps}); print 0;\n')
     ring = f"R = {field}[{', '.join(case.variables)}, MonomialOrder => {m2_order(case.ordering)}]; use R;"
-    return (f"t = 0; n = 0;\nfor k from 1 to {reps} do ({ring} I = ideal({', '.join(case.gens)}); "
+    ideal = (f'ideal "{", ".join(case.gens)}"' if all(len(v) == 1 for v in case.variables)
+             else f"ideal({', '.join(case.gens)})")  # single letters: Singular's short form, as M2 reads strings
+    return (f"t = 0; n = 0;\nfor k from 1 to {reps} do ({ring} I = {ideal}; "
             f"t0 = cpuTime(); G = gens gb I; t = t + cpuTime() - t0; n = numcols G);\n"
             f'print "RESULT"; print(t / {reps}); print n;\n')
 
@@ -159,6 +190,35 @@ def run_m2(case: Case, timeout: float) -> dict | None:
             break
         reps = min(200, max(2, math.ceil(0.5 / max(cpu, 1e-3))))
     return out
+
+
+def run_msolve(case: Case, timeout: float) -> dict | None:
+    """msolve's reduced ``dp`` basis (``msolve -g 2``) when an ``msolve`` program is on the
+    PATH: CPU time of its process (user + system, from ``wait4``)."""
+    if not MSOLVE or case.ordering != "dp" or not case.gens or case.name == "gerdt":
+        return None
+    path = HERE / f".msolve-{os.getpid()}"
+    src, out = path.with_suffix(".in"), path.with_suffix(".out")
+    src.write_text(",".join(case.variables) + f"\n{case.char}\n" + ",\n".join(case.gens) + "\n")
+    try:
+        proc = subprocess.Popen([MSOLVE, "-g", "2", "-f", str(src), "-o", str(out)],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.perf_counter() + timeout
+        while True:
+            pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+            if pid:
+                break
+            if time.perf_counter() > deadline:
+                proc.kill()
+                os.wait4(proc.pid, 0)
+                return {"timeout": timeout}
+            time.sleep(0.01)
+        if os.waitstatus_to_exitcode(status):
+            return {"error": f"exit {os.waitstatus_to_exitcode(status)}"}
+        return {"cpu": usage.ru_utime + usage.ru_stime}
+    finally:
+        src.unlink(missing_ok=True)
+        out.unlink(missing_ok=True)
 
 
 def fmt_time(r: dict | None) -> str:
@@ -231,8 +291,9 @@ def main() -> None:
 
     cases = [c for c in CASES if not args.only or c.name in args.only]
     head = ("| system | field | ordering | basis | mech | Singular | mech / Singular | Macaulay2 | mech / M2 "
-            "| SymPy | SymPy / mech | mech peak RSS |")
-    rows = [head, "|" + "---|" * 12]
+            "| SymPy | SymPy / mech | msolve | mech / msolve | mech peak RSS |")
+    rows = [head, "|" + "---|" * 14]
+    ratios: list[tuple[float, str]] = []
     print(head)
     for case in cases:
         mech = run_child("mech", case, args.repeat, args.timeout)
@@ -241,20 +302,38 @@ def main() -> None:
         sym = None
         if case.sympy and not args.no_sympy:
             sym = run_child("sympy", case, 1, args.sympy_timeout)
+        ms = run_msolve(case, args.timeout)
+        label = f"{case.name} {case.field} {case.ordering}"
+        if mech and sing and "cpu" in sing and sing["cpu"] > 0 and "error" not in mech:
+            ratios.append(((mech["cpu"] if "cpu" in mech else mech["timeout"]) / sing["cpu"], label))
         size = mech.get("size", "?") if mech else "?"
         if sing and "size" in sing and mech and "size" in mech and sing["size"] != mech["size"]:
             size = f"{size} (Singular {sing['size']})"
         rss = f"{mech['rss']:.0f} MB" if mech and "rss" in mech else "—"
         row = (f"| {case.name} | {case.field} | {case.ordering} | {size} | {fmt_time(mech)} | {fmt_time(sing)} "
                f"| {ratio(mech, sing)} | {fmt_time(m2)} | {ratio(mech, m2)} | {fmt_time(sym)} | {ratio(sym, mech)} "
-               f"| {rss} |")
+               f"| {fmt_time(ms)} | {ratio(mech, ms)} | {rss} |")
         rows.append(row)
         print(row, flush=True)
         if mech and "wall" in mech:
             print(f"    wall: mech {mech['wall']:.3f} s" + (f", Singular {sing['wall']:.3f} s" if sing and "wall" in sing
                                                         else ""), flush=True)
+    summary = summarize(ratios)
+    print("\n".join(summary))
     if args.write:
-        write_results(rows, args)
+        write_results(rows + [""] + summary, args)
+
+
+def summarize(ratios: list[tuple[float, str]]) -> list[str]:
+    """The geometric mean of mech / Singular and the worst cases (a timeout counts with its limit)."""
+    if not ratios:
+        return []
+    gm = math.exp(sum(math.log(max(r, 1e-9)) for r, _ in ratios) / len(ratios))
+    worst = sorted(ratios, reverse=True)[:8]
+    over = [label for r, label in ratios if r > 3]
+    return [f"Geometric mean of mech / Singular over {len(ratios)} cases: **{gm:.2f}**; "
+            f"{len(over)} above 3x.", "",
+            "Worst ratios: " + "; ".join(f"{label} {r:.1f}" for r, label in worst) + "."]
 
 
 def write_results(rows: list[str], args) -> None:
@@ -262,11 +341,14 @@ def write_results(rows: list[str], args) -> None:
             "Produced by `python benchmarks/run.py --write` (see its docstring for the method).", ""]
     text += machine()
     text += ["", "Times are CPU time of one computation (mech: best of "
-             f"{args.repeat}; Singular and Macaulay2: mean over repetitions filling half a second, Macaulay2's "
-             "`gens gb` on a fresh copy of the ring and ideal each time; SymPy: one run, "
-             f"`method='buchberger'`, stopped after {args.sympy_timeout:.0f} s; — = not run). "
-             "Singular's `std` uses its default options (tail-reduced, not necessarily minimal); "
-             "mech returns the reduced basis. The basis column is the number of elements mech returns.", ""]
+             f"{args.repeat}, `standard_basis` with engine `auto`; Singular and Macaulay2: mean over repetitions "
+             "filling half a second, Macaulay2's `gens gb` on a fresh copy of the ring and ideal each time; SymPy: "
+             f"one run, `method='buchberger'`, stopped after {args.sympy_timeout:.0f} s; msolve: `msolve -g 2` when "
+             "an `msolve` program is installed (Debian has no package; it is not installed here); — = not run). "
+             "Singular runs `std` for degree and local orderings and its own choice `groebner` (stdfglm, stdhilb) "
+             "for lex and block orderings, where its `std` takes minutes. Singular's `std` uses its default "
+             "options (tail-reduced, not necessarily minimal); mech returns the reduced basis. The basis column "
+             "is the number of elements mech returns. The machine is shared: compare ratios within one run.", ""]
     text += rows
     text += [""]
     (HERE / "RESULTS.md").write_text("\n".join(text) + "\n")

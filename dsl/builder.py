@@ -18,6 +18,23 @@ def meta_pos(meta: Any) -> A.Pos:
     return A.Pos(meta.line, meta.column, meta.end_line, meta.end_column)
 
 
+MAX_DIGITS = 100_000  # an integer literal's digits (its value has at most ~332000 bits)
+
+
+def parse_int(digits: str, tok: Optional[Token] = None) -> int:
+    """The value of an integer literal (``tok``: its token, for the error position); literals
+    beyond Python's 4300-digit limit of ``int(str)`` are read by flint, longer ones than
+    ``MAX_DIGITS`` refused."""
+    tok = tok if tok is not None else digits
+    if len(digits) <= 4000:
+        return int(digits)
+    if len(digits) > MAX_DIGITS:
+        raise MechSyntaxError(f"integer literal too long ({len(digits)} digits; at most {MAX_DIGITS})",
+                              token_pos(tok) if isinstance(tok, Token) else None)
+    import flint
+    return int(flint.fmpz(str(digits)))
+
+
 def token_pos(tok: Token) -> A.Pos:
     """The position of a token."""
     return A.Pos(tok.line, tok.column, tok.end_line, tok.end_column)
@@ -39,12 +56,12 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
 
     @v_args(meta=True)
     def int_lit(self, meta, c):
-        return A.IntLit(int(c[0]), pos=token_pos(c[0]))
+        return A.IntLit(parse_int(c[0]), pos=token_pos(c[0]))
 
     @v_args(meta=True)
     def rat_lit(self, meta, c):
         num, den = str(c[0]).split("/")
-        return A.RatLit(int(num), int(den), pos=token_pos(c[0]))
+        return A.RatLit(parse_int(num, c[0]), parse_int(den, c[0]), pos=token_pos(c[0]))
 
     @v_args(meta=True)
     def monom_lit(self, meta, c):
@@ -54,7 +71,7 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
             i += 1
         coeff, mono = s[:i], s[i:]
         num, _, den = coeff.partition("/")
-        return A.MonomLit(int(num), int(den) if den else 1, mono, pos=token_pos(c[0]))
+        return A.MonomLit(parse_int(num, c[0]), parse_int(den, c[0]) if den else 1, mono, pos=token_pos(c[0]))
 
     @v_args(meta=True)
     def str_lit(self, meta, c):

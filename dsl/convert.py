@@ -1,6 +1,7 @@
 """Conversions between kernel polynomials and sympy expressions (sympy is imported lazily, in the functions)."""
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from typing import Any
 
@@ -107,3 +108,55 @@ def _ratfunc(field: Any, num: dict, den: dict) -> Any:
 def is_sympy(x: Any) -> bool:
     mod = type(x).__module__ or ""
     return mod.startswith("sympy")
+
+
+def number_fraction(n: Any) -> Fraction:
+    """A :class:`~mech.dsl.values.Number` as a Fraction: over QQ its value, in Z/p its symmetric
+    representative; over a parameter field only a constant."""
+    field = n.ring.field
+    if getattr(field, "params", ()):
+        v = _coeff_to_sympy(field, n.c)
+        if not v.is_Rational:
+            raise MechTypeError(f"the number {v} depends on the parameters: it is not a rational number")
+        return Fraction(int(v.p), int(v.q))
+    return field.to_fraction(n.c)
+
+
+def python_number(value: Any) -> Fraction:
+    """A Python or sympy number as an exact Fraction: ints, Fractions, floats (their exact binary
+    value: 0.1 is 3602879701896397/36028797018963968), sympy Integers, Rationals and Floats.
+    Raises :class:`MechTypeError` for anything else (nan, infinities, complex numbers...)."""
+    if isinstance(value, bool):
+        return Fraction(int(value))
+    if isinstance(value, (int, Fraction)):
+        return Fraction(value)
+    if isinstance(value, float):
+        if value != value or value in (float("inf"), float("-inf")):
+            raise MechTypeError(f"cannot convert the float {value} to a number (it is not finite)")
+        return Fraction(value)
+    if is_sympy(value) and getattr(value, "is_Number", False):
+        if value.is_Rational:
+            return Fraction(int(value.p), int(value.q))
+        if value.is_Float and value.is_finite:
+            import sympy
+            r = sympy.Rational(value)   # the exact binary value of the float
+            return Fraction(int(r.p), int(r.q))
+    raise MechTypeError(f"cannot convert {value!r} to a rational number")
+
+
+DECIMAL_EXPONENT = 10_000  # largest |exponent| of a decimal string such as "1e400"
+
+
+def parse_decimal(text: str) -> Fraction:
+    """An exact rational from a string ``"3"``, ``"-1/2"``, ``"0.25"`` or ``"1.5e3"``; exponents
+    beyond ``DECIMAL_EXPONENT`` are refused (``Fraction("1e999999999")`` would compute a billion
+    digits).  Raises ValueError for anything else."""
+    m = _DECIMAL.fullmatch(text.strip())
+    if m is None:
+        raise ValueError(f"not a number: '{text}'")
+    if m.group("exp") and abs(int(m.group("exp"))) > DECIMAL_EXPONENT:
+        raise ValueError(f"'{text}': exponent too large (at most {DECIMAL_EXPONENT})")
+    return Fraction(text.strip())
+
+
+_DECIMAL = re.compile(r"[+-]?(?:\d+/\d+|(?:\d+\.?\d*|\.\d+)(?:[eE](?P<exp>[+-]?\d{1,12}))?)")

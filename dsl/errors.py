@@ -89,6 +89,10 @@ class MechError(Exception):
                 out.append(_entry(n.source, n.pos, "note", n.message, n.underline))
         return "".join(out)
 
+    def _render_traceback_(self) -> list[str]:
+        """What IPython and Jupyter show instead of a Python traceback: the error as mech prints it."""
+        return self.format().rstrip("\n").split("\n")
+
     def __str__(self) -> str:
         if self.pos is None:
             return self.message

@@ -45,7 +45,8 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.limits = Limits(timeout, max_memory)  # per statement; see limits.py
         registry.load_plugins()
         self.registry = registry
-        #: session settings the facade gives, read by commands as ``ctx.settings`` (e.g. "report_format")
+        #: session settings the facade gives, read by commands as ``ctx.settings`` ("report_format";
+        #: "display": a callable taking MIME bundles, given by notebooks)
         self.settings: dict[str, Any] = dict(settings or {})
         self.out = out if out is not None else sys.stdout
         self.flush = flush
@@ -115,6 +116,17 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.out.write(text)
         if self.flush:
             self.out.flush()
+
+    def display(self, bundle: dict[str, str]) -> None:
+        """Show a rich result: the facade's display (``settings["display"]``: a notebook) gets the
+        MIME bundle; elsewhere its ``text/plain`` is printed."""
+        show = self.settings.get("display")
+        if show is None:
+            self.write(bundle["text/plain"])
+        else:
+            if self.flush:
+                self.out.flush()
+            show(bundle)
 
     def warn(self, message: str) -> None:
         if self.warnings:

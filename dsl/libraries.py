@@ -6,6 +6,7 @@ from pathlib import Path
 
 from . import ast as A
 from .errors import MechNameError
+from .files import library_file
 from .values import Proc
 
 
@@ -25,10 +26,8 @@ class Libraries:
         path = self.registry.library_source(name)  # a library's mech source (mech's own: stdlib/*.lib)
         if name not in self.registry.LIBRARIES and path is None:
             script = Path(self.source.name)
-            user = (script.parent if script.is_file() else Path.cwd()) / name
-            if user.is_file():
-                path = user
-            else:
+            path = library_file(script.parent if script.is_file() else Path.cwd(), name)
+            if path is None:
                 self.registry.check_library(name)
         if name in self.loaded_libs:
             return

@@ -10,8 +10,8 @@ is exceeded, raises :class:`LimitExceeded` in the thread running the statement
 killed).  The interpreter turns it into ``error: time limit of 5 s exceeded in std`` at the call;
 :meth:`Limits.run` then puts the interpreter back as it was before the statement (procedure
 frames, basering), so rings and variables stay usable.  A memory limit also lowers the address
-space limit (``RLIMIT_AS``) during the statement to twice the limit beyond the current size: a
-backstop against single huge allocations in C, which then fail with ``MemoryError`` instead of
+space limit (``RLIMIT_AS``) during the statement to the limit (plus ``SLACK``) beyond the current
+size: a backstop against single huge allocations in C, which then fail with ``MemoryError`` instead of
 exhausting the machine (GMP, inside python-flint, aborts the process when its allocation fails).
 """
 from __future__ import annotations
@@ -27,6 +27,7 @@ from .registry import command
 
 POLL = 0.02     # seconds between the watchdog's checks
 REFIRE = 1.0    # raise again if the statement is still running this long after the first time
+SLACK = 64 << 20  # address space beyond the memory limit: at least this (bytes), or a quarter of the limit
 
 #: Limits for interpreters created without explicit ones (``mech --timeout`` sets them for the REPL).
 DEFAULTS: dict[str, Optional[float]] = {"timeout": None, "max_memory": None}
@@ -60,11 +61,18 @@ def default_limits(timeout: Optional[float], max_memory: Optional[float]) -> Ite
         DEFAULTS.update(saved)
 
 
+#: The smallest memory limit (MB): below it the process's own bookkeeping (a library loaded, the
+#: interpreter's caches) would exceed the limit of statements that compute nothing.
+MIN_MEMORY = 16
+
+
 def _positive(value: Optional[float], what: str) -> Optional[float]:
     if value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or value < 0:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 <= value < float("inf"):
         raise ValueError(f"{what} must be a nonnegative number (0: no limit)")
+    if "memory" in what and 0 < value < MIN_MEMORY:
+        raise ValueError(f"{what} must be 0 (no limit) or at least {MIN_MEMORY} MB")
     return value or None
 
 
@@ -238,7 +246,7 @@ class _Watchdog:
             size = _vsz()
             if size is None:
                 return
-            new = size + 2 * watch.grow
+            new = size + watch.grow + max(SLACK, watch.grow // 4)
             if hard != resource.RLIM_INFINITY:
                 new = min(new, hard)
             if soft == resource.RLIM_INFINITY or new < soft:

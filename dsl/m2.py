@@ -89,7 +89,15 @@ class M2Interpreter(Interpreter):
         if not s.silent and v is not NONE:
             self.last = v
             blank = "\n" if self.numbers_inputs else ""  # the shell sets outputs off as Macaulay2 does
-            self.write(f"{blank}o{self.count} = {to_string(v)}\n")
+            text = f"{blank}o{self.count} = {to_string(v)}\n"
+            rich = {}
+            if "display" in self.settings:  # a notebook: LaTeX beside the text, when the value has it
+                from .latex import bundle
+                rich = bundle([v], text)
+            if len(rich) > 1:
+                self.display(rich)
+            else:
+                self.write(text)
 
     def basering(self) -> Ring:
         if self.ring is None:

@@ -5,6 +5,7 @@ from typing import Any, Sequence
 
 from .errors import MechRuntimeError
 from .m2_values import Opt, Symbol
+from .rings import MAX_WEIGHT
 from .values import ExprList, List, OrderBlock
 
 #: Macaulay2's orders of a block: (Singular's kind, with degrees other than 1: the weighted kind)
@@ -49,7 +50,7 @@ def order_blocks(spec: Any, n: int, degrees: Sequence[int] = ()) -> list[OrderBl
                 size = len(weights)
             else:
                 size = item.value
-            if type(size) is not int or size <= 0 or (weights and not all(type(w) is int and w > 0 for w in weights)):
+            if type(size) is not int or not 0 < size <= MAX_WEIGHT or (weights and not all(type(w) is int and w > 0 for w in weights)):
                 raise MechRuntimeError(f"{key} => n takes a positive number of variables or a list of positive weights")
         elif key in ("Weights", "Eliminate"):
             blocks.append(_prefix(key, item.value, n, covered))
@@ -83,6 +84,8 @@ def _prefix(key: str, value: Any, n: int, covered: int) -> OrderBlock:
         w = list(value.items) if isinstance(value, List) else None
         if w is None or not all(type(x) is int for x in w) or len(w) > n - covered:
             raise MechRuntimeError(f"Weights => {{...}} takes at most {n - covered} integers")
+        if any(abs(x) > MAX_WEIGHT for x in w):
+            raise MechRuntimeError(f"Weights => {{...}}: a weight must be at most {MAX_WEIGHT} in absolute value")
     else:
         if type(value) is not int or not 0 <= value <= n - covered:
             raise MechRuntimeError(f"Eliminate k takes 0 <= k <= {n - covered}")

@@ -11,7 +11,7 @@ from lark import Lark, Token, Transformer_NonRecursive, v_args
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput
 
 from . import ast as A
-from .builder import build, meta_pos as _pos, token_pos as _tpos
+from .builder import build, meta_pos as _pos, parse_int, token_pos as _tpos
 from .errors import MechSyntaxError, Source
 from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, HashHas, IfExpr, Length, ListLit,
                      Option, ReturnExpr, RingCons, Seq, SetVar, Statement, Subscript, SymbolLit, TimeExpr, TryExpr,
@@ -70,11 +70,11 @@ class _Build(Transformer_NonRecursive):
     @v_args(meta=True)
     def coeffs(self, meta, c):
         digits = re.sub(r"\D", "", str(c[0]))
-        return Coeffs(int(digits), pos=_tpos(c[0]))
+        return Coeffs(parse_int(digits, c[0]), pos=_tpos(c[0]))
 
     @v_args(meta=True)
     def int_lit(self, meta, c):
-        return A.IntLit(int(c[0]), pos=_tpos(c[0]))
+        return A.IntLit(parse_int(c[0]), pos=_tpos(c[0]))
 
     @v_args(meta=True)
     def str_lit(self, meta, c):

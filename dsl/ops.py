@@ -11,7 +11,8 @@ from typing import Any, Callable, Optional
 
 from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
-from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, to_ideal, to_number, to_poly, typeof)
+from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, same_value, to_ideal, to_number, to_poly,
+                     typeof)
 
 Warn = Callable[[str], None]
 
@@ -334,7 +335,7 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
                 return int((p == q) == (op == "=="))
             x, y = _poly_key(p), _poly_key(q)
     elif op in ("==", "!=") and type(a) is type(b) and isinstance(a, (Ideal, Matrix, IntVec, List)):
-        return int((a == b) == (op == "=="))
+        return int(same_value(a, b) == (op == "=="))
     elif isinstance(a, IntVec) and isinstance(b, IntVec):
         x, y = a.values, b.values
     else:

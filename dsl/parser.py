@@ -20,6 +20,7 @@ from lark.exceptions import UnexpectedInput
 from . import ast as A
 from . import registry
 from .builder import TreeBuilder, build
+from .fastparse import parse_fast
 from .errors import MechSyntaxError, Source
 from .split import statement_ends
 from .syntax_errors import syntax_error
@@ -44,8 +45,23 @@ def _parser_for(plugin_types: tuple[str, ...]) -> Lark:
 
 def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 1)) -> A.Program:
     """The program tree of ``text``; raises :class:`MechSyntaxError` located in ``source``
-    (``at``: the line and column where ``text`` starts there)."""
+    (``at``: the line and column where ``text`` starts there).  Simple statements take the fast
+    path (:mod:`~mech.dsl.fastparse`), the others and errors Lark's parser."""
     source = source or Source("<string>", text)
+    parser = _parser()
+    program = parse_fast(text, at, parser.terminals, _type_words(parser) + type_names(),
+                         lambda piece, where: _parse_lark(piece, source, where))
+    return program if program is not None else _parse_lark(text, source, at)
+
+
+@lru_cache(maxsize=4)
+def _type_words(parser: Lark) -> tuple[str, ...]:
+    """The grammar's built-in type names (its rule ``type_name``)."""
+    words = {t.name: t.pattern.value for t in parser.terminals}
+    return tuple(words[r.expansion[0].name] for r in parser.rules if r.origin.name == "type_name")
+
+
+def _parse_lark(text: str, source: Source, at: tuple[int, int]) -> A.Program:
     try:
         tree = _parser().parse(text)
         if at != (1, 1):

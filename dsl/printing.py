@@ -79,12 +79,21 @@ def poly_str(p: Poly) -> str:
     return "".join(out)
 
 
+def int_str(v: int) -> str:
+    """An integer in decimal, also beyond Python's 4300-digit limit of ``str`` (through flint,
+    in quasi-linear time)."""
+    if v.bit_length() < 14000:
+        return str(v)
+    import flint
+    return str(flint.fmpz(v))
+
+
 def value_str(v: Any) -> str:
     """A value on one line: Singular's ``string(v)``."""
     if isinstance(v, bool):
         return str(int(v))
     if isinstance(v, int):
-        return str(v)
+        return int_str(v)
     if isinstance(v, str):
         return v
     if isinstance(v, Poly):

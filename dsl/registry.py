@@ -61,6 +61,9 @@ class Context(Protocol):
     def warn(self, message: str) -> None:
         """Print Singular's warning line ``// ** message``."""
 
+    def display(self, bundle: dict[str, str]) -> None:
+        """Show a rich result (MIME type -> data): in a notebook all of it, elsewhere its ``text/plain``."""
+
     def assume_std(self, ideal: Ideal, argno: int) -> None:
         """Warn ``// ** I is no standard basis`` when argument ``argno`` (0-based) is not marked as one."""
 

@@ -35,10 +35,15 @@ def _ints(v: Any, what: str) -> list[int]:
     raise MechRuntimeError(f"{what} must be an int or an intvec")
 
 
+MAX_WEIGHT = 2**31 - 1  # ordering sizes and weights are Singular ints
+
+
 def _int_args(args: list[A.Expr], evaluate: Evaluate, what: str) -> list[int]:
     out: list[int] = []
     for a in args:
         out.extend(_ints(evaluate(a), what))
+    if any(abs(v) > MAX_WEIGHT for v in out):
+        raise MechRuntimeError(f"{what} must be at most {MAX_WEIGHT} in absolute value")
     return out
 
 

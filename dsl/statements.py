@@ -35,15 +35,24 @@ class Statements:
             raise convert_exception(e).locate(stmt.pos, self.source) from None
 
     def _exec_expr(self, s: A.ExprStmt) -> None:
-        parts = []
+        parts, values = [], []
         for node in s.exprs:
             v = self.eval(node)
             if v is NONE:
                 continue
             self.last = v
+            values.append(v)
             parts.append((render(v, node.id if isinstance(node, A.Name) else None), isinstance(v, List)))
-        if parts:
-            self.write(join_outputs(parts) + "\n")
+        if not parts:
+            return
+        text = join_outputs(parts) + "\n"
+        if "display" in self.settings:  # a notebook: LaTeX beside the text, when the values have it
+            from .latex import bundle
+            rich = bundle(values, text)
+            if len(rich) > 1:
+                self.display(rich)
+                return
+        self.write(text)
 
     def _exec_if(self, s: A.If) -> None:
         if ops.truth(self.eval(s.cond)):

@@ -54,6 +54,10 @@ def syntax_error(e: UnexpectedInput, text: str, source: Source, terminals: Itera
         return MechSyntaxError("expected ';'", A.Pos(line, col, line, col + 1), source)
     shown = tok.value if tok.type != "STRING" else "string"
     msg = f"unexpected '{shown}'"
+    shell = _SHELL_COMMAND.match(text, tok.start_pos) if shown in (":", "%") and _starts_new_line(text, tok) else None
+    if shell:
+        return MechSyntaxError(f"{msg}: '{shell.group(0).strip()}' is a command of the interactive shell "
+                               f"(mech in a terminal), not of scripts", token_pos(tok), source)
     word = _statement_word(text, tok.start_pos)
     if word and tok.type == "IDENT":
         msg += f" ('{word}' is not a type)"
@@ -62,6 +66,9 @@ def syntax_error(e: UnexpectedInput, text: str, source: Source, terminals: Itera
     elif len(expected) == 1:
         msg += f", expected {_describe(next(iter(expected)), terminals)}"
     return MechSyntaxError(msg, token_pos(tok), source, underline=True)
+
+
+_SHELL_COMMAND = re.compile(r"[:%](?:time|reset|help)\b[^\n;]*")
 
 
 def _unclosed(text: str) -> str:

@@ -9,11 +9,13 @@ Libraries add types of their own (:mod:`mech.dsl.types`); :func:`convert` conver
 """
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass, field
+from fractions import Fraction
 from typing import Any, Iterable, Optional, Sequence
 
 from ..kernel import Poly, PolyRing
-from .convert import poly_to_sympy
+from .convert import number_fraction, poly_to_sympy
 from .errors import MechRuntimeError, MechTypeError
 from .types import find_type
 
@@ -36,7 +38,11 @@ NONE = NoneValue()
 
 
 class Number:
-    """An element of the coefficient field of a ring (Singular's ``number``)."""
+    """An element of the coefficient field of a ring (Singular's ``number``).
+
+    From Python: ``int(n)`` and ``operator.index(n)`` for integers (in Z/p the symmetric
+    representative, as Singular's ``int(n)``), ``float(n)`` and ``fractions.Fraction(n)`` over QQ,
+    ``sympy.sympify(n)``; other conversions raise :class:`MechTypeError` saying why."""
 
     __slots__ = ("ring", "c")
 
@@ -50,8 +56,50 @@ class Number:
     def to_poly(self) -> Poly:
         return self.ring.const(self.c)
 
+    def to_fraction(self) -> Fraction:
+        """The number as a Python Fraction (over QQ; in Z/p its symmetric representative)."""
+        return number_fraction(self)
+
+    @property
+    def numerator(self) -> int:
+        return self.to_fraction().numerator
+
+    @property
+    def denominator(self) -> int:
+        return self.to_fraction().denominator
+
+    def as_integer_ratio(self) -> tuple[int, int]:
+        f = self.to_fraction()
+        return f.numerator, f.denominator
+
+    def __int__(self) -> int:
+        f = self.to_fraction()
+        if f.denominator != 1:
+            raise MechTypeError(f"cannot convert the number {f} to an int (it is not an integer)")
+        return f.numerator
+
+    __index__ = __int__
+
+    def __float__(self) -> float:
+        if self.ring.field.characteristic:
+            raise MechTypeError(f"cannot convert a number of Z/{self.ring.field.characteristic} to a float")
+        return float(self.to_fraction())
+
+    def __bool__(self) -> bool:
+        return not self.is_zero()
+
+    def _sympy_(self) -> Any:
+        return poly_to_sympy(self.to_poly())
+
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, Number) and other.ring == self.ring and other.c == self.c
+        if isinstance(other, Number):
+            return other.ring == self.ring and other.c == self.c
+        if isinstance(other, (int, Fraction)) and not isinstance(other, bool):
+            try:
+                return self.c == self.ring.field(other)
+            except (TypeError, ZeroDivisionError):
+                return False
+        return NotImplemented
 
     def __hash__(self) -> int:
         return hash(self.c)
@@ -60,8 +108,18 @@ class Number:
         return f"Number({self.c})"
 
 
+
+numbers.Rational.register(Number)  # fractions.Fraction(n) reads numerator and denominator
+
+
 class Ideal:
-    """An ideal given by generators (at least one, possibly zero); ``is_std`` marks a standard basis."""
+    """An ideal given by generators (at least one, possibly zero); ``is_std`` marks a standard basis.
+
+    In Python: ``len(I)``, ``iter(I)`` and ``I[k]`` are its generators, indexed from 0 (the
+    language's ``I[1]`` is ``I[0]`` here); ``I == J`` compares the ideals (equal reduced Gröbner
+    bases in the polynomial ring, so other generators of the same ideal are equal), while
+    :meth:`same_generators` compares the generators one by one, as the language's ``==`` does.
+    ``sympy.sympify(I)`` is a sympy Tuple of the generators, :meth:`to_sympy` a list."""
 
     __slots__ = ("ring", "gens", "is_std")
 
@@ -77,17 +135,41 @@ class Ideal:
         """The generators as sympy expressions."""
         return [poly_to_sympy(g) for g in self.gens]
 
+    def to_sympy_polys(self) -> list:
+        """The generators as ``sympy.Poly`` objects in the ring's variables."""
+        import sympy
+        syms = [sympy.Symbol(n) for n in self.ring.names]
+        return [sympy.Poly(e, *syms) for e in self.to_sympy()]
+
+    def _sympy_(self) -> Any:
+        import sympy
+        return sympy.Tuple(*self.to_sympy())
+
     def __len__(self) -> int:
         return len(self.gens)
 
     def __iter__(self):
         return iter(self.gens)
 
-    def __getitem__(self, i: int) -> Poly:
+    def __getitem__(self, i: Any) -> Any:
         return self.gens[i]
 
-    def __eq__(self, other: object) -> bool:
+    def same_generators(self, other: object) -> bool:
+        """Whether ``other`` is an ideal with the same generators in the same order."""
         return isinstance(other, Ideal) and other.gens == self.gens
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Ideal):
+            return NotImplemented
+        if other.gens == self.gens:
+            return True
+        if other.ring is not self.ring and other.ring != self.ring:
+            return False
+        from ..kernel.ideals import dp_ring, ideals_equal, move
+        glob = dp_ring(self.ring)
+        return ideals_equal(move(self.nonzero(), glob), move(other.nonzero(), glob), glob)
+
+    __hash__ = None  # type: ignore[assignment]
 
     def __repr__(self) -> str:
         return f"Ideal({', '.join(g.to_str() for g in self.gens)})"
@@ -113,6 +195,25 @@ class Matrix:
 
     def rows(self) -> list[list[Poly]]:
         return [list(self.entries[i * self.ncols:(i + 1) * self.ncols]) for i in range(self.nrows)]
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return self.nrows, self.ncols
+
+    def __getitem__(self, ij: tuple[int, int]) -> Poly:
+        """``M[i, j]``: the entry in row ``i``, column ``j``, indexed from 0 as in Python."""
+        i, j = ij
+        if not (-self.nrows <= i < self.nrows and -self.ncols <= j < self.ncols):
+            raise IndexError(f"index ({i}, {j}) out of range for a {self.nrows}x{self.ncols} matrix")
+        return self.entries[(i % self.nrows) * self.ncols + j % self.ncols]
+
+    def to_sympy(self) -> Any:
+        """The matrix as a ``sympy.Matrix``."""
+        import sympy
+        return sympy.Matrix(self.nrows, self.ncols, [poly_to_sympy(g) for g in self.entries])
+
+    def _sympy_(self) -> Any:
+        return self.to_sympy().as_immutable()
 
     def __eq__(self, other: object) -> bool:
         return (isinstance(other, Matrix) and (other.nrows, other.ncols) == (self.nrows, self.ncols)
@@ -253,6 +354,17 @@ def typeof(v: Any) -> str:
     if isinstance(v, ExprList):
         return "list"
     return getattr(type(v), "type_name", type(v).__name__)
+
+
+def same_value(a: Any, b: Any) -> bool:
+    """The language's ``==`` on values: ideals generator by generator (Python's ``==`` on ideals
+    compares the ideals), lists entry by entry, anything else by ``==``."""
+    if isinstance(a, Ideal):
+        return a.same_generators(b)
+    if isinstance(a, (List, ExprList)):
+        return (type(b) is type(a) and len(a.items) == len(b.items)
+                and all(same_value(x, y) for x, y in zip(a.items, b.items)))
+    return a == b
 
 
 def ring_of(v: Any) -> Optional[PolyRing]:

@@ -20,10 +20,17 @@ class Overflow(Exception):
     """A monomial outgrew the fields of its packing (start again with a wider one)."""
 
 
-def packed(ring: PolyRing, polys: Sequence[dict[Exp, Any]], run: Callable[[Packing], Any]) -> Any:
-    """``run(packing)`` with a packing of the ring's ordering wide enough for ``polys``,
-    widened and run again whenever a monomial overflows it."""
-    maxdeg = max(8, 2 * max((sum(e) for p in polys for e in p), default=0))
+_INF = float("inf")
+
+
+class TooLong(Exception):
+    """Buchberger's algorithm reduced more S-polynomials than its budget allowed."""
+
+
+def packed(ring: PolyRing, polys: Sequence[dict[Exp, Any]], run: Callable[[Packing], Any], maxdeg: int = 8) -> Any:
+    """``run(packing)`` with a packing of the ring's ordering wide enough for ``polys`` (and
+    degree ``maxdeg``), widened and run again whenever a monomial overflows it."""
+    maxdeg = max(maxdeg, 2 * max((sum(e) for p in polys for e in p), default=0))
     while True:
         try:
             return run(Packing(ring.order, maxdeg))
@@ -48,6 +55,8 @@ class Reducer:
 
     def __init__(self, pk: Packing, polys: Sequence[dict[int, Any]] = ()) -> None:
         self.guard = pk.guard
+        self.work = 0  # terms of the reducers used so far (in 64-bit words of the multiplier)
+        self.limit: float = _INF  # TooLong beyond this much work
         self.items: list[tuple[int, dict[int, Any]]] = []
         for p in polys:
             self.add(p)
@@ -90,6 +99,11 @@ class Reducer:
             lm, g = hit
             shift = m - lm
             factor = c / g[lm]
+            self.work += len(g)
+            if self.work > self.limit:
+                raise TooLong
+            if self.limit != _INF and hasattr(factor, "height_bits"):
+                self.work += len(g) * (factor.height_bits() >> 6)
             for ge, gc in g.items():
                 te = ge + shift
                 v = p.get(te)
@@ -112,20 +126,23 @@ def _monic(p: dict, lm: Any) -> dict:
     return {e: c * inv for e, c in p.items()}
 
 
-def buchberger(gens: Sequence[Poly], ring: PolyRing) -> list[dict[Exp, Any]]:
+def buchberger(gens: Sequence[Poly], ring: PolyRing, budget: int | None = None) -> list[dict[Exp, Any]]:
     """A (non-reduced) Gröbner basis as dicts, by Buchberger's algorithm with the
-    Gebauer–Möller criteria and the sugar strategy."""
+    Gebauer–Möller criteria and the sugar strategy; :class:`TooLong` once the reductions
+    have used more than ``budget`` terms of reducers (if given)."""
     polys = [g.terms for g in gens if g.terms]
-    return packed(ring, polys, lambda pk: [unpack(pk, b) for b in _buchberger(polys, pk)])
+    return packed(ring, polys, lambda pk: [unpack(pk, b) for b in _buchberger(polys, pk, budget)])
 
 
-def _buchberger(polys: Sequence[dict[Exp, Any]], pk: Packing) -> list[dict[int, Any]]:
+def _buchberger(polys: Sequence[dict[Exp, Any]], pk: Packing, budget: int | None = None) -> list[dict[int, Any]]:
     basis: list[dict[int, Any]] = []
     lms: list[int] = []
     sugar: list[int] = []
     active: list[bool] = []
     pairs: list[tuple[int, int, int, int]] = []  # (sugar, lcm, i, j): ``min`` is the next pair
     reducer = Reducer(pk)
+    if budget is not None:
+        reducer.limit = budget
     guard, degree, divides_, lcm = pk.guard, pk.degree, pk.divides, pk.lcm
 
     def update(h: dict[int, Any], s: int) -> None:

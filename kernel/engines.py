@@ -12,9 +12,12 @@ monomial, each leading exponent first in its dict), for a local one a standard b
 ``"auto"``, the default, is the policy, not an engine.  Global orderings: F4 for degree
 orderings (``is_graded``) over Z/p, and over QQ modular F4, except for systems too small for
 its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot verify a basis
-(then Buchberger); Buchberger over other fields and for block and lex orderings, where F4's
-degree-by-degree matrices grow far past the sugar strategy's work.  Local orderings: Mora within
-a :class:`~.mora.Budget`, then Lazard.
+(then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
+(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations), then a ``dp`` basis
+(kept in the cache) and from it FGLM for zero-dimensional ideals, the Hilbert-driven algorithm
+for the others (F4's degree-by-degree matrices grow far past these on such orderings);
+Buchberger over other fields.  Local orderings: Mora within a :class:`~.mora.Budget`, then
+Lazard.
 
 :func:`using_engine` sets the default for a dynamic extent (a context variable); it applies to
 the computations its engine accepts, the others use ``"auto"``.  An engine named in a call must
@@ -32,27 +35,35 @@ from contextvars import ContextVar
 from dataclasses import dataclass
 from typing import Any, Callable, Iterator, Sequence
 
-from .buchberger import buchberger, reduce_basis
+from .buchberger import TooLong, buchberger, reduce_basis
 from .coeffs import Field, PrimeField, RationalField
 from .errors import EngineError
 from .f4 import f4_modp
+from .fglm import NotZeroDimensional, fglm_qq, fglm_zp
+from .hilbert_driven import hilbert_driven
 from .lazard import lazard
 from .modular import ModularFailure, SmallSystem, f4_qq
 from .mora import Budget, BudgetExceeded, minimal, monic, mora
-from .order import Exp
+from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
 Terms = dict[Exp, Any]
 Run = Callable[[list[Poly], PolyRing], list[Terms]]
 
 AUTO = "auto"
-AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p, else Buchberger; "
-                "local orderings: Mora, then Lazard")
+AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p; block and lex orderings: "
+                "Buchberger if small, else FGLM or Hilbert-driven from a dp basis; local orderings: Mora, then Lazard")
 
 SMALL_WORK = 600
 """Below this much work (matrix entries) in the first modular run, ``auto`` leaves a system over
 QQ to Buchberger, whose smaller overhead wins there (measured on random systems in three
 variables: the crossover is near 1000)."""
+
+
+SMALL_BUCHBERGER = 20000
+"""For block and lexicographic orderings ``auto`` first tries Buchberger within this budget
+(terms of reducers used; about 50 ms): the mechanisms' many small eliminations finish there.
+Larger computations go to FGLM (zero-dimensional ideals) or the Hilbert-driven algorithm."""
 
 
 def field_kind(field: Field) -> str | None:
@@ -79,6 +90,7 @@ class Engine:
     orderings: frozenset[str]
     fields: frozenset[str] | None
     returns_reduced: bool = False
+    zero_dimensional: bool = False
 
     def refusal(self, ring: PolyRing) -> str | None:
         """Why the engine does not accept ``ring``; None when it does."""
@@ -96,17 +108,20 @@ ENGINES: dict[str, Engine] = {}
 
 
 def register(name: str, run: Run, summary: str, *, orderings: Sequence[str] = ("global",),
-             fields: Sequence[str] | None = None, returns_reduced: bool = False) -> Engine:
+             fields: Sequence[str] | None = None, returns_reduced: bool = False,
+             zero_dimensional: bool = False) -> Engine:
     """Register (or replace) the engine ``name``: ``run(gens, ring)`` as in the module docstring,
     a one-line ``summary``, the kinds of ``orderings`` (``"global"``, ``"local"``) and ``fields``
-    (``"QQ"``, ``"Z/p"``; None: every field) it accepts."""
+    (``"QQ"``, ``"Z/p"``; None: every field) it accepts; ``zero_dimensional``: it raises
+    :class:`~.fglm.NotZeroDimensional` for other ideals (an :class:`~.errors.EngineError` when
+    the call names it; as the default engine it leaves them to ``auto``)."""
     if name == AUTO:
         raise EngineError(f"'{AUTO}' names the default policy, not an engine")
     unknown = set(orderings) - {"global", "local"} | set(fields or ()) - {"QQ", "Z/p"}
     if unknown:
         raise EngineError(f"unknown capabilities for the engine '{name}': {', '.join(sorted(unknown))}")
     engine = Engine(name, run, summary, frozenset(orderings), None if fields is None else frozenset(fields),
-                    returns_reduced)
+                    returns_reduced, zero_dimensional)
     ENGINES[name] = engine
     clear_cache()  # bases cached under a replaced engine's name
     return engine
@@ -181,11 +196,11 @@ def standard_basis(gens: Sequence[Poly], ring: PolyRing | None = None, engine: s
     if not gens:
         return []
     if not ring.order.is_global:
-        return _compute(gens, ring, name)
+        return _compute(gens, ring, name, engine is not None)
     key = _key(gens, ring, name)
     out = _CACHE.get(key)
     if out is None:
-        out = _compute(gens, ring, name)
+        out = _compute(gens, ring, name, engine is not None)
         _CACHE[key] = out
         if len(_CACHE) > _CACHE_SIZE:
             _CACHE.popitem(last=False)
@@ -214,25 +229,77 @@ _CACHE: OrderedDict[tuple, list[Poly]] = OrderedDict()
 _CACHE_SIZE = 256
 
 
-def _compute(gens: list[Poly], ring: PolyRing, name: str) -> list[Poly]:
+def _compute(gens: list[Poly], ring: PolyRing, name: str, named: bool = True) -> list[Poly]:
+    """The basis by the engine ``name``; a default engine (not ``named`` in the call) that
+    needs a zero-dimensional ideal leaves the others to ``auto``."""
     if any(g.is_constant() for g in gens):
         return [ring.one()]
     if name == AUTO:
         return _auto_global(gens, ring) if ring.order.is_global else _auto_local(gens, ring)
     engine = ENGINES[name]
-    return _finish(engine.run(gens, ring), ring, engine.returns_reduced)
+    try:
+        return _finish(engine.run(gens, ring), ring, engine.returns_reduced)
+    except NotZeroDimensional:
+        if not engine.zero_dimensional:
+            raise
+        if named:
+            raise EngineError(f"the engine '{name}' needs a zero-dimensional ideal") from None
+        return _compute(gens, ring, AUTO)
 
 
 def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    kind = field_kind(ring.field)
     if ring.order.is_graded:
-        if isinstance(ring.field, PrimeField):
+        if kind == "Z/p":
             return _finish(f4_modp(gens, ring), ring, True)
-        if isinstance(ring.field, RationalField):
+        if kind == "QQ":
             try:
                 return _finish(f4_qq(gens, ring, small_work=SMALL_WORK), ring, True)
             except (ModularFailure, SmallSystem):
                 pass
+    elif kind is not None:
+        dp = _dp_ring(ring)
+        basis = cached_standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
+        if basis is None:
+            try:
+                return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
+            except TooLong:
+                basis = _degree_basis(gens, ring)
+        try:
+            return _finish(_convert(basis, ring), ring, True)
+        except NotZeroDimensional:
+            return _finish(hilbert_driven(gens, ring, _dp_auto), ring, False)
+        except ModularFailure:
+            pass
     return _finish(buchberger(gens, ring), ring, False)
+
+
+def _dp_ring(ring: PolyRing) -> PolyRing:
+    return PolyRing(ring.field, ring.names, MonomialOrder.simple("dp", ring.nvars))
+
+
+def _degree_basis(gens: Sequence[Poly], ring: PolyRing) -> list[Poly]:
+    """The reduced basis of the ideal for ``dp`` (by ``auto``, kept in the cache)."""
+    dp = _dp_ring(ring)
+    return standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
+
+
+def _convert(basis: list[Poly], ring: PolyRing) -> list[Terms]:
+    """FGLM from a ``dp`` basis to the ring's ordering."""
+    source = basis[0].ring.order if basis else MonomialOrder.simple("dp", ring.nvars)
+    terms = [b.terms for b in basis]
+    if isinstance(ring.field, PrimeField):
+        return fglm_zp(terms, source, ring.order, ring.field.characteristic)
+    return fglm_qq(terms, source, ring.order)
+
+
+def _dp_auto(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    return standard_basis(gens, ring, AUTO)
+
+
+def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
+    """The engine ``fglm``: a ``dp`` basis by ``auto``, converted by FGLM."""
+    return _convert(_degree_basis(gens, ring), ring)
 
 
 def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
@@ -272,6 +339,10 @@ register("f4", f4_modp, "Faugère's F4 modulo p: symbolic preprocessing, row red
          fields=("Z/p",), returns_reduced=True)
 register("modular", f4_qq, "F4 modulo primes with a trace, lifted to QQ by rational reconstruction, verified",
          fields=("QQ",), returns_reduced=True)
+register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ordering (zero-dimensional ideals)",
+         fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
+register("hilbert", lambda gens, ring: hilbert_driven(gens, ring, _dp_auto),
+         "Hilbert-driven Buchberger: homogenize, Hilbert series from a dp basis, drop pairs once it is reached")
 register("mora", mora, "Mora's normal form with ecart and sugar (Singular's std for local orderings)",
          orderings=("global", "local"))
 register("lazard", _lazard, "Lazard's method: homogenize, Gröbner basis by auto, dehomogenize",

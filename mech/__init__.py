@@ -26,6 +26,7 @@ from . import stdlib as _stdlib
 from .dsl import registry as _registry
 from .dsl.errors import (MechError, MechInternalError, MechNameError, MechRuntimeError, MechSyntaxError,
                          MechTypeError)
+from .dsl import interop as _interop  # noqa: F401 - the Python hooks on values (sympy, LaTeX)
 from .dsl.values import to_sympy
 from .session import Session
 
@@ -34,6 +35,12 @@ from .session import Session
 _registry.add_loader(_stdlib.load)
 
 __version__ = "0.1.0"
+
+
+def load_ipython_extension(ipython: object) -> None:
+    """``%load_ext mech`` in IPython or Jupyter: the ``%mech`` and ``%%mech`` magics (mech.ipython)."""
+    from .ipython import load_ipython_extension as load
+    load(ipython)
 
 __all__ = ["Session", "to_sympy", "MechError", "MechSyntaxError", "MechRuntimeError", "MechNameError",
            "MechTypeError", "MechInternalError", "__version__"]

@@ -22,13 +22,15 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--dialect", choices=("singular", "m2"), help="the language: Singular's (default) or "
                    "Macaulay2's (default for .m2 files)")
     p.add_argument("--timeout", type=_limit, metavar="SECONDS", help="time limit of each statement (0: none)")
-    p.add_argument("--max-memory", type=_limit, metavar="MB", help="memory each statement may add to the process, "
+    p.add_argument("--max-memory", type=_memory, metavar="MB", help="memory each statement may add to the process, "
                    "in MB (0: none)")
     p.add_argument("--format", choices=list(FORMATS), default="text", help="the format of mechanism reports "
                    "(analyze's default)")
     p.add_argument("--json", dest="format", action="store_const", const="json", help="the same as --format json")
     p.add_argument("--engine", choices=[name for name, _ in list_engines()], default="auto",
                    help="the Groebner engine of every standard basis (default auto; see 'help engine;')")
+    p.add_argument("--install-kernel", action="store_true", help="install the Jupyter kernels mech and mech-m2 in "
+                   "this Python environment (needs the jupyter extra)")
     p.add_argument("--version", action="version", version=f"mech {__version__}")
     return p
 
@@ -40,6 +42,14 @@ def _limit(text: str) -> float:
         value = -1.0
     if not 0 <= value < float("inf"):
         raise argparse.ArgumentTypeError(f"expected a nonnegative number, got '{text}'")
+    return value
+
+
+def _memory(text: str) -> float:
+    from .dsl.limits import MIN_MEMORY
+    value = _limit(text)
+    if 0 < value < MIN_MEMORY:
+        raise argparse.ArgumentTypeError(f"expected 0 (no limit) or at least {MIN_MEMORY} MB, got '{text}'")
     return value
 
 
@@ -76,10 +86,55 @@ def run_text(text: str, name: str, warnings: bool = True, dialect: str = "singul
 
 
 def main(argv: Optional[list[str]] = None) -> int:
-    args = _parser().parse_args(argv)
+    """The ``mech`` command; the exit status (0 ok, 1 an error in the program, 2 a usage error)."""
+    if sys.stderr is None:  # nowhere to report anything: run with errors dropped
+        sys.stderr = open(os.devnull, "w")
+    if sys.stdout is None:
+        sys.stderr.write("mech: error: standard output is closed\n")
+        return _exit(2)
+    for stream in (sys.stdout, sys.stderr):  # a locale that cannot encode the output (LANG=C): escape
+        if (getattr(stream, "encoding", "") or "").lower().replace("-", "") != "utf8" and hasattr(stream, "reconfigure"):
+            stream.reconfigure(errors="backslashreplace")
+    try:
+        args = _parser().parse_args(argv)
+    except SystemExit as e:  # --help, --version, a usage error
+        return _exit(e.code if isinstance(e.code, int) else 2)
+    if args.code is not None:  # under LANG=C Python decodes arguments as ASCII: the bytes were UTF-8
+        args.code = os.fsencode(args.code).decode("utf-8", "replace")
     from .dsl.limits import default_limits
     with default_limits(args.timeout, args.max_memory):  # for every interpreter of this run, the REPL's too
-        return _main(args)
+        return _exit(_main(args))
+
+
+def _exit(status: int) -> int:
+    """``status`` for ``sys.exit``; with Python's inspect mode on (``PYTHONINSPECT``), which would
+    print ``sys.exit``'s SystemExit as a traceback, the process ends here instead."""
+    if sys.flags.inspect or os.environ.get("PYTHONINSPECT"):
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except (OSError, ValueError, AttributeError):
+                pass
+        os._exit(status)
+    return status
+
+
+def _read_stdin() -> Optional[str]:
+    """Standard input as text (UTF-8, a byte-order mark dropped); None when it is closed."""
+    if sys.stdin is None:
+        return None
+    try:
+        data = sys.stdin.buffer.read() if hasattr(sys.stdin, "buffer") else sys.stdin.read().encode()
+    except (OSError, ValueError):
+        return None
+    return data.decode("utf-8-sig")
+
+
+def _stdin_is_terminal() -> bool:
+    try:
+        return sys.stdin is not None and sys.stdin.isatty()
+    except (OSError, ValueError):
+        return False
 
 
 def _main(args: argparse.Namespace) -> int:
@@ -91,11 +146,24 @@ def _main(args: argparse.Namespace) -> int:
             sys.stderr.write("mech: error: give either -c CODE or a FILE, not both\n")
             return 2
         return run_text(args.code, "<string>", warnings, dialect, settings)
-    if args.file == "-" or (args.file is None and not sys.stdin.isatty()):
-        return run_text(sys.stdin.read(), "<stdin>", warnings, dialect, settings)
+    if args.install_kernel:
+        from .kernelspec import install
+        for folder in install():
+            print(f"installed the Jupyter kernel spec {os.path.basename(folder)} in {folder}")
+        return 0
+    if args.file == "-" or (args.file is None and not _stdin_is_terminal()):
+        try:
+            text = _read_stdin()
+        except UnicodeDecodeError:
+            sys.stderr.write("mech: error: standard input is not UTF-8 text\n")
+            return 2
+        if text is None:
+            sys.stderr.write("mech: error: standard input is closed (give a FILE, -c CODE, or run in a terminal)\n")
+            return 2
+        return run_text(text, "<stdin>", warnings, dialect, settings)
     if args.file:
         try:
-            with open(args.file, encoding="utf-8") as fh:
+            with open(args.file, encoding="utf-8-sig") as fh:  # a byte-order mark is dropped
                 text = fh.read()
         except OSError as e:
             sys.stderr.write(f"mech: error: cannot read {args.file}: {e.strerror}\n")

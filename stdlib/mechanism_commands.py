@@ -4,9 +4,9 @@ mobility, motion modes, singular variety and configurations, length conditions, 
 :mod:`mech.stdlib.plots`."""
 from __future__ import annotations
 
-from fractions import Fraction
 from typing import Any, Sequence
 
+from mech.dsl.convert import parse_decimal
 from mech.dsl.errors import MechRuntimeError
 from mech.dsl.registry import command
 from mech.dsl.values import Ideal, List, Ring
@@ -48,9 +48,9 @@ def set_lengths(m: Mechanism, *values: int | str) -> Mechanism:
     vals: dict[str, Any] = {}
     for n, v in zip(names, values):
         try:
-            vals[n] = Fraction(v) if isinstance(v, str) else v
-        except ValueError:
-            raise MechRuntimeError(f"setLengths: '{v}' is not a number") from None
+            vals[n] = parse_decimal(v) if isinstance(v, str) else v
+        except ValueError as e:
+            raise MechRuntimeError(f"setLengths: {e}") from None
     return m.with_values(vals)
 
 
@@ -246,4 +246,10 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
         raise MechRuntimeError(f"analyze: {unknown_format(form)}")
     if depth not in ("full", "quick"):
         raise MechRuntimeError(f"analyze: unknown depth '{depth}' (full or quick)")
-    ctx.write(render(run_analysis(m, decompose=depth == "full")))
+    a = run_analysis(m, decompose=depth == "full")
+    text = render(a)
+    if "display" in ctx.settings and form == "text":  # a notebook: the report as HTML tables too
+        from mech.stdlib._report_html import report_html
+        ctx.display({"text/plain": text, "text/html": report_html(a)})
+    else:
+        ctx.write(text)

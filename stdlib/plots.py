@@ -17,7 +17,9 @@ import os
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, Callable, Sequence
 
+from mech.dsl.convert import parse_decimal
 from mech.dsl.errors import MechRuntimeError
+from mech.dsl.files import output_file
 from mech.dsl.values import IntVec, List
 from mech.kernel import Poly
 from mech.stdlib.analysis import Analysis, require_numeric, run_analysis
@@ -221,16 +223,12 @@ def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str
     return scene
 
 
-def _check_path(path: str) -> str:
-    if not path.lower().endswith((".png", ".svg")):
-        raise MechRuntimeError(f"'{path}': give a file name ending in .png or .svg")
-    folder = os.path.dirname(os.path.abspath(path))
-    if not os.path.isdir(folder):
-        raise MechRuntimeError(f"'{path}': the folder {folder} does not exist")
-    return path
+def _check_path(path: str) -> None:
+    output_file(path, (".png", ".svg"))  # the file policy: mech.dsl.files
 
 
-def _write(scene: Scene, path: str, title: str) -> None:
+def _write(ctx: Any, scene: Scene, path: str, title: str) -> None:
+    """Write the picture where the (checked) ``path`` says; in a notebook also show it inline."""
     try:
         if path.lower().endswith(".svg"):
             from mech.stdlib._svg import write_svg
@@ -240,10 +238,13 @@ def _write(scene: Scene, path: str, title: str) -> None:
             write_png(scene, path)
     except OSError as e:
         raise MechRuntimeError(f"'{path}': cannot write the file ({e.strerror or e})") from None
+    if "display" in ctx.settings:
+        from mech.stdlib._svg import to_svg
+        ctx.display({"image/svg+xml": to_svg(scene, title), "text/plain": f"<picture: {title}>\n"})
 
 
 # ---------------------------------------------------------------- commands
-def _plot(m: Mechanism, path: str, links: Sequence[Any] | None, count: int) -> None:
+def _plot(ctx: Any, m: Mechanism, path: str, links: Sequence[Any] | None, count: int) -> None:
     _check_path(path)
     if not 0 < count <= MAX_SAMPLES:
         raise MechRuntimeError(f"plotConfigurations: the number of samples must be in 1..{MAX_SAMPLES}, not {count}")
@@ -263,11 +264,11 @@ def _plot(m: Mechanism, path: str, links: Sequence[Any] | None, count: int) -> N
         raise MechRuntimeError(f"plotConfigurations: a link is repeated in {', '.join(map(str, links))}")
     a = run_analysis(m)
     require_numeric(a, "plotConfigurations")
-    _write(configuration_scene(m, a, [k - 1 for k in links], count), path, f"configuration space of {m}")
+    _write(ctx, configuration_scene(m, a, [k - 1 for k in links], count), path, f"configuration space of {m}")
 
 
 @command("plotConfigurations", lib="mechanism.lib")
-def plot_configurations(m: Mechanism, path: str, count: int = 3000) -> None:
+def plot_configurations(ctx, m: Mechanism, path: str, count: int = 3000) -> None:
     """plotConfigurations(m, "file.svg"[, links][, samples]): the configuration space in angle
     coordinates theta_i, one colour per motion mode, singular configurations as black crosses.
 
@@ -288,12 +289,12 @@ def plot_configurations(m: Mechanism, path: str, count: int = 3000) -> None:
       → plotConfigurations(m, "modes.pdf");
       → ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
     """
-    _plot(m, path, None, count)
+    _plot(ctx, m, path, None, count)
 
 
 @command("plotConfigurations", lib="mechanism.lib")
-def plot_configurations_of(m: Mechanism, path: str, links: List | IntVec, count: int = 3000) -> None:
-    _plot(m, path, list(links.items if isinstance(links, List) else links.values), count)
+def plot_configurations_of(ctx, m: Mechanism, path: str, links: List | IntVec, count: int = 3000) -> None:
+    _plot(ctx, m, path, list(links.items if isinstance(links, List) else links.values), count)
 
 
 def _value(v: Any) -> float:
@@ -301,8 +302,8 @@ def _value(v: Any) -> float:
         return float(v)
     if isinstance(v, str):
         try:
-            return float(Fraction(v))
-        except ValueError:
+            return float(parse_decimal(v))
+        except (ValueError, OverflowError):
             pass
     raise MechRuntimeError(f"drawMechanism: '{v}' is not a number (integers or strings such as \"1/2\", \"0.25\")")
 
@@ -312,7 +313,7 @@ def _evaluate(p: Poly, values: Sequence[float]) -> float:
 
 
 @command("drawMechanism", lib="mechanism.lib")
-def draw_mechanism(m: Mechanism, config: List, path: str) -> None:
+def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
     """drawMechanism(m, list(c1,s1,c2,s2,...), "file.svg"): the mechanism in that configuration.
 
     Example:
@@ -339,4 +340,4 @@ def draw_mechanism(m: Mechanism, config: List, path: str) -> None:
     pos, _ = m.positions(R)
     xy = {p: (_evaluate(x, values), _evaluate(y, values)) for p, (x, y) in pos.items()}
     title = ", ".join(f"{n}={v:.3g}" for n, v in zip(names, values))
-    _write(mechanism_scene(m, xy, title), path, f"{m} at {title}")
+    _write(ctx, mechanism_scene(m, xy, title), path, f"{m} at {title}")

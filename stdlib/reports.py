@@ -174,9 +174,10 @@ def report_latex(a: Analysis) -> str:
 
 
 def report_json(a: Analysis) -> str:
-    """The ``json`` report: :func:`report_data` as JSON."""
+    """The ``json`` report: :func:`report_data` as JSON on one line, so that the reports of a
+    script (``mech --json FILE``) are JSON Lines: one document per line."""
     import json
-    return json.dumps(report_data(a), indent=1) + "\n"
+    return json.dumps(report_data(a)) + "\n"
 
 
 #: The report formats: name -> renderer (an analysis -> the text printed).

@@ -1,4 +1,6 @@
-"""Standard bases and normal forms: ``std``, ``groebner``, ``reduce``, ``NF``, ``dim``, and the helpers
+"""Standard bases and normal forms: ``std``, ``groebner``, Singular's other Groebner commands
+(``slimgb``, ``stdfglm``, ``stdhilb``, ``modStd``: each through its engine), ``reduce``, ``NF``,
+``dim``, and the helpers
 the other command modules share: :func:`normalize` (a basis element as Singular's std returns it) and
 :func:`standard_basis` (the global/local dispatch)."""
 from __future__ import annotations
@@ -6,11 +8,13 @@ from __future__ import annotations
 from math import gcd
 from typing import Any
 
+from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
 from ..kernel import Poly
 from ..kernel.dimension import krull_dim
-from ..kernel.engines import AUTO, check_engine, list_engines
+from ..kernel.engines import AUTO, ENGINES, check_engine, list_engines
+from ..kernel.errors import EngineError
 from ..kernel.engines import standard_basis as kernel_standard_basis
 from ..kernel.groebner import normal_form
 
@@ -123,6 +127,91 @@ def groebner(I: Ideal) -> Ideal:
       → _[2]=x-y
     """
     return Ideal(I.ring, standard_basis(I), is_std=True)
+
+
+def _global(name: str, I: Ideal) -> None:
+    if not I.ring.order.is_global:
+        raise MechRuntimeError(f"{name} needs a global ordering (dp, lp, ...), not a local one")
+
+
+def _by_engine(name: str, I: Ideal, engine: str) -> list[Poly]:
+    """The reduced basis by ``engine`` where it accepts the ring, else by ``auto``."""
+    _global(name, I)
+    ring = I.ring
+    use = engine if ENGINES[engine].refusal(ring) is None else AUTO
+    return kernel_standard_basis(I.nonzero(), ring, use)
+
+
+@command("slimgb")
+def slimgb(I: Ideal) -> Ideal:
+    """slimgb(I): a Groebner basis of I for a global ordering.  mech returns the reduced basis, as
+    std does (Singular's slimgb may leave tails unreduced and list the elements in another
+    order).
+
+    Example:
+      ring r = 32003,(x,y),dp;
+      slimgb(ideal(x2+y2-1, x-y));
+      → _[1]=x-y
+      → _[2]=y2+16001
+    """
+    _global("slimgb", I)
+    return Ideal(I.ring, standard_basis(I), is_std=True)
+
+
+@command("stdfglm")
+def stdfglm(I: Ideal) -> Ideal:
+    """stdfglm(I): the reduced Groebner basis of a zero-dimensional ideal I, computed for dp and
+    converted to the ring's ordering by the FGLM algorithm (the engine "fglm"; over other fields
+    than QQ and Z/p as std).
+
+    Example:
+      ring r = 0,(x,y,z),lp;
+      stdfglm(ideal(x2+y2+z2-1, x-y2, yz-x));
+      → _[1]=z6+z4-3z2+1
+      → _[2]=2y+z5+2z3-3z
+      → _[3]=2x+z4-1
+    """
+    try:
+        basis = _by_engine("stdfglm", I, "fglm")
+    except EngineError:
+        raise MechRuntimeError("stdfglm: the ideal has to be zero-dimensional") from None
+    return Ideal(I.ring, [normalize(p) for p in basis], is_std=True)
+
+
+@command("stdhilb")
+def stdhilb(I: Ideal) -> Ideal:
+    """stdhilb(I): a Groebner basis of I by the Hilbert-driven algorithm (the engine "hilbert"):
+    the ideal is homogenized, its Hilbert series read off a dp basis, and the basis for the
+    ring's ordering computed degree by degree, stopping each degree once the series says it is
+    complete.  mech returns the reduced basis.
+
+    Example:
+      ring r = 0,(x,y,z),lp;
+      stdhilb(ideal(x2+y, xy-z));
+      → _[1]=y3+z2
+      → _[2]=xz+y2
+      → _[3]=xy-z
+      → _[4]=x2+y
+    """
+    return Ideal(I.ring, [normalize(p) for p in _by_engine("stdhilb", I, "hilbert")], is_std=True)
+
+
+@command("modStd", lib="modstd.lib")
+def modStd(I: Ideal) -> Ideal:
+    """modStd(I): the reduced Groebner basis of I over QQ by modular methods (the engine
+    "modular": F4 modulo primes, lifted by rational reconstruction and verified), monic as
+    Singular's modStd returns it; over Z/p as std.
+
+    Example:
+      LIB "modstd.lib";
+      ring r = 0,(x,y,z),dp;
+      modStd(ideal(3x2-y, 2xy-z, z3-x));
+      → _[1]=y2-3/2xz
+      → _[2]=xy-1/2z
+      → _[3]=x2-1/3y
+      → _[4]=z3-x
+    """
+    return Ideal(I.ring, _by_engine("modStd", I, "modular"), is_std=True)
 
 
 def _nf(f: Poly, basis: list[Poly]) -> Poly:

@@ -97,7 +97,9 @@ def test_completion_candidates():
     names = dict(candidates(it, "j")[1])
     assert names["jj"] == "int" and names["jolly"] == "proc" and names["jacob"] == "command"
     assert dict(candidates(it, "ra")[1])["radical"] == 'LIB "primdec.lib";'
-    assert candidates(it, "st")[1] == [("std", "command"), ("string", "command"), ("static", "keyword")]
+    st = candidates(it, "st")[1]
+    assert st[0] == ("std", "command") and st[-1] == ("static", "keyword")     # commands, then library procs, then keywords
+    assert {("stdfglm", "command"), ("string", "command"), ("sturm", 'LIB "rootsur.lib";')} <= set(st)
     assert ("while", "keyword") in candidates(it, "wh")[1]
     assert candidates(it, 'LIB "pri') == ("pri", [("primdec.lib", "library")])
     assert candidates(it, "help jo") == ("jo", [("jolly", "proc")])

@@ -69,10 +69,11 @@ def test_example_runs():
     assert r.stdout == "G[1]=y2-xz\nG[2]=xy-z\nG[3]=x2-y\n1\nz\n0\n_[1]=0\n_[2]=0\n"
 
 
-def test_no_sympy_at_startup():
-    code = "import sys\nfrom mech.cli import main\nmain(['-c', '1;'])\nprint('sympy' in sys.modules)"
+def test_no_sympy_or_jupyter_at_startup():
+    code = ("import sys\nfrom mech.cli import main\nmain(['-c', '1;'])\n"
+            "print([m for m in ('sympy', 'IPython', 'ipykernel', 'jupyter_client', 'zmq') if m in sys.modules])")
     r = subprocess.run([sys.executable, "-c", code], text=True, capture_output=True, timeout=60)
-    assert r.stdout == "1\nFalse\n"
+    assert r.stdout == "1\n[]\n"
 
 
 def test_main_in_process(capsys):
@@ -170,3 +171,12 @@ def test_format_reaches_the_repl(capsys):
     assert run_repl(read=read, quiet=True, settings={"report_format": "latex"}) == 0
     out = capsys.readouterr().out
     assert out.count("\\begin{align*}") == 2 and "mechanism:" not in out
+
+
+def test_json_reports_are_json_lines(tmp_path):
+    import json
+    r = subprocess.run([sys.executable, "-m", "mech", "--json", str(ROOT / "examples" / "slider2.mech")], cwd=tmp_path,
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0 and r.stderr == ""
+    reports = [json.loads(line) for line in r.stdout.splitlines()]
+    assert [d["mobility"] for d in reports] == [1, 1] and len(reports[1]["motion_modes"]) == 2

@@ -251,8 +251,8 @@ def test_draw_a_rigid_body(tmp_path, monkeypatch):
     assert np.abs(corners - np.array(want)).max() < 0.15
 
 
-def test_unwritable_path_is_an_error(tmp_path, monkeypatch):
+def test_a_folder_in_the_way_is_an_error(tmp_path, monkeypatch):
     (tmp_path / "d.svg").mkdir()
     with pytest.raises(MechError) as e:
         run(tmp_path, monkeypatch, f'mechanism m = "{SLIDER2}"; drawMechanism(m, list(1, 0, 1, 0), "d.svg");')
-    assert "'d.svg': cannot write the file" in str(e.value)
+    assert "'d.svg': exists and is not a regular file" in str(e.value)

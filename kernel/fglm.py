@@ -1,0 +1,403 @@
+"""FGLM: the reduced Gröbner basis of a zero-dimensional ideal in any global ordering from its
+basis in another one (Faugère, Gianni, Lazard, Mora, J. Symb. Comput. 16, 1993).
+
+``K[x]/I`` has the standard monomials ``B`` of the known basis ``G`` as a ``K``-basis
+(``D = |B|``).  The normal forms of the *border* ``{x_i b : b in B} \\ B`` give the
+multiplication matrices; they come out of one F4 matrix (:meth:`.f4.F4._matrix`): each border
+monomial's row ``u g`` is reduced by back substitution, and its reduced tail is minus its normal
+form.  Then the monomials are visited in increasing target order, each one ``x_i m`` with ``m`` a
+new standard monomial: its normal form is ``M_i NF(m)`` (or read off directly for ``B`` and the
+border), and it is reduced against the normal forms of the new standard monomials so far.  A
+dependent monomial gives an element of the new basis (tail: the dependency, on new standard
+monomials only, so the basis comes out reduced); an independent one is a new standard monomial.
+
+Vectors are packed modulo ``p`` as in :mod:`.f4_vectors`: slot ``j < D`` holds the coefficient
+of ``B[j]``; slot ``D + k`` records how a row combines the normal forms of the new standard
+monomials (the ``k``-th one), so a dependency is read off when the low slots vanish.
+
+Over QQ the conversion runs modulo primes and is lifted by Chinese remaindering and rational
+reconstruction (:mod:`.modular`), then verified: the generators reduce to 0 by the lifted basis
+over QQ, the lifted basis is a Gröbner basis (modulo a fresh prime, or exactly), and it has ``D``
+standard monomials -- so it generates an ideal containing ``I`` with the same finite codimension,
+i.e. ``I`` itself.
+"""
+from __future__ import annotations
+
+import heapq
+from dataclasses import dataclass
+from typing import Any, Sequence
+
+import flint
+
+from .errors import NotSupported
+from .f4 import F4, PackingOverflow
+from .f4_vectors import Vectors
+from .hilbert import kbase
+from .monomials import Packing
+from .order import Exp, MonomialOrder
+
+
+
+@dataclass
+class Conversion:
+    """An FGLM result: element ``i`` of the new basis is ``lms[i] + sum tails[i][k] stairs[k]``
+    (``stairs``: the new standard monomials).  ``stair_from[k]`` and ``lm_from[i]`` say how
+    the monomial was reached: ``(j, k)`` for ``x_j stairs[k]`` (``(-1, -1)`` for 1)."""
+
+    lms: list[Exp]
+    tails: list[list[Any]]
+    stairs: list[Exp]
+    stair_from: list[tuple[int, int]]
+    lm_from: list[tuple[int, int]]
+
+
+class NotZeroDimensional(NotSupported):
+    """FGLM needs a zero-dimensional ideal."""
+
+
+class Unlucky(Exception):
+    """The basis modulo this prime does not behave as over QQ (drop the prime)."""
+
+
+def staircase(lms: Sequence[Exp], nvars: int) -> list[Exp]:
+    """The standard monomials of a zero-dimensional leading ideal (:class:`NotZeroDimensional`
+    otherwise)."""
+    out = kbase(lms, nvars)
+    if not out and not any(not any(e) for e in lms):
+        raise NotZeroDimensional("FGLM needs a zero-dimensional ideal")
+    return out
+
+
+def border_forms(basis: Sequence[dict[Exp, int]], order: MonomialOrder, B: list[Exp], p: int) -> dict[Exp, list[int]]:
+    """``{t: NF(t) as a list over B}`` modulo ``p`` for the border ``t`` of the staircase
+    ``B`` of a monic Gröbner basis (coefficients as ints mod p) for ``order``."""
+    n = order.nvars
+    Bset = set(B)
+    border = {t for b in B for t in _multiples(b, n) if t not in Bset}
+    key = order.key
+    lms = [max(g, key=key) for g in basis]
+    top = max(sum(e) for g in basis for e in g)
+    maxdeg = 63
+    while maxdeg < 4 * top + 2:
+        maxdeg = 2 * maxdeg + 1
+    while True:
+        P = Packing(order, maxdeg)
+        try:
+            return _border(basis, lms, P, border, B, p)
+        except PackingOverflow:
+            maxdeg = 2 * maxdeg + 1
+
+
+def _multiples(b: Exp, n: int):
+    for i in range(n):
+        t = list(b)
+        t[i] += 1
+        yield tuple(t)
+
+
+def _border(basis, lms, P: Packing, border, B, p) -> dict[Exp, list[int]]:
+    eng = F4([], P, p)
+    packed_lms = []
+    for g in basis:
+        items = sorted(((P.pack(e), c) for e, c in g.items()), reverse=True)
+        eng._add([m for m, _ in items], [c for _, c in items], True)
+        packed_lms.append(items[0][0])
+    g = P.guard
+    pivots = {}
+    for t in border:
+        x = P.pack(t)
+        xg = x | g
+        k = next(k for k, lm in enumerate(packed_lms) if (xg - lm) & g == g)
+        pivots[x] = (k, x - packed_lms[k])
+    T, pivcols, nonpivot, *_ = eng._matrix([], pivots)
+    m = len(nonpivot)
+    index = {P.pack(b): j for j, b in enumerate(B)}
+    slot_to_b = [index[x] for x in nonpivot]  # non-pivot monomials are standard
+    where = {c: j for j, c in enumerate(pivcols)}
+    vec = eng.vec
+    D = len(B)
+    out = {}
+    for t in border:
+        vals = vec.values(T[where[P.pack(t)]], m) if m else []
+        nf = [0] * D
+        for s, v in enumerate(vals):
+            if v:
+                nf[slot_to_b[s]] = p - v
+        out[t] = nf
+    return out
+
+
+def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: MonomialOrder, p: int,
+              border: dict[Exp, list[int]] | None = None) -> Conversion:
+    """The reduced basis for ``target`` of the ideal with the monic Gröbner basis ``basis``
+    (for ``source``, coefficients as ints mod ``p``; ``border``: its :func:`border_forms` if
+    known already)."""
+    n = source.nvars
+    key = source.key
+    B = sorted(staircase([max(g, key=key) for g in basis], n), key=key)
+    D = len(B)
+    if not D:
+        return Conversion([(0,) * n], [[]], [], [], [])
+    if border is None:
+        border = border_forms(basis, source, B, p)
+    vec = Vectors(p)
+    w = vec.slot
+    mask = (1 << w) - 1
+    low = (1 << (w * D)) - 1
+    norm = vec.normalizer(2 * D + 1)
+    hmax = vec.hmax
+    index = {b: j for j, b in enumerate(B)}
+    packed_border = {t: _pack(vec, nf) for t, nf in border.items()}
+
+    def column(t: Exp) -> int:
+        j = index.get(t)
+        return 1 << (w * j) if j is not None else packed_border[t]
+
+    tkey = target.key
+    one = (0,) * n
+    out = Conversion([], [], [], [], [])
+    nfs: list[int] = []     # NF of each new standard monomial (low slots)
+    piv: list[tuple[int, int]] = []  # (pivot slot, row) semi-echelon rows with their combinations
+    heap = [(tkey(one), one, -1, -1)]
+    seen = {one}
+    while heap:
+        _, t, i, k = heapq.heappop(heap)
+        if any(all(a <= b for a, b in zip(lm, t)) for lm in out.lms):
+            continue
+        if k < 0 or t in index or t in packed_border:
+            v = column(t)
+        else:
+            src = nfs[k]
+            terms = []
+            for j in range(D):
+                c = (src >> (w * j)) & mask
+                if c:
+                    terms.append((c, column(_times(B[j], i))))
+            v = vec.add_multiples(0, terms, D)
+        K = len(out.stairs)
+        x = v | (1 << (w * (D + K)))
+        count = 0
+        for s, y in piv:
+            c = ((x >> (w * s)) & mask) % p
+            if c:
+                x += (p - c) * y
+                count += 1
+                if count == hmax:
+                    x, count = norm(x), 0
+        x = norm(x)
+        if not x & low:
+            out.lms.append(t)
+            out.lm_from.append((i, k))
+            out.tails.append([(x >> (w * (D + j))) & mask for j in range(K)] + [0] * (D - K))
+            continue
+        s0 = ((x & low).bit_length() - 1) // w
+        c = (x >> (w * s0)) & mask
+        if c != 1:
+            x = norm(x * pow(c, -1, p))
+        piv.append((s0, x))
+        out.stairs.append(t)
+        out.stair_from.append((i, k))
+        nfs.append(v)
+        for j in range(n):
+            u = _times(t, j)
+            if u not in seen:
+                seen.add(u)
+                heapq.heappush(heap, (tkey(u), u, j, K))
+    if len(out.stairs) != D:
+        raise Unlucky("the new staircase has the wrong size")
+    return out
+
+
+def _times(e: Exp, i: int) -> Exp:
+    t = list(e)
+    t[i] += 1
+    return tuple(t)
+
+
+def _pack(vec: Vectors, vals: list[int]) -> int:
+    w = vec.slot
+    return sum(v << (w * j) for j, v in enumerate(vals) if v)
+
+
+def as_dicts(conv: Conversion, one: Any) -> list[dict[Exp, Any]]:
+    """The basis elements as ``{exponent: coefficient}`` dicts, leading monomial first."""
+    out = []
+    for lm, tail in zip(conv.lms, conv.tails):
+        d = {lm: one}
+        for s, c in zip(conv.stairs, tail):
+            if c:
+                d[s] = c
+        out.append(d)
+    return out
+
+
+def fglm_zp(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder, p: int) -> list[dict]:
+    """The reduced basis for ``target`` over Z/p (``nmod`` coefficients), increasing leading
+    monomials, from a reduced basis for ``source``."""
+    conv = fglm_modp([{e: int(c) for e, c in g.items()} for g in basis], source, target, p)
+    conv.tails = [[flint.nmod(c, p) for c in tl] for tl in conv.tails]
+    return as_dicts(conv, flint.nmod(1, p))
+
+
+# --- over QQ -------------------------------------------------------------------------------
+
+def _mod(basis: Sequence[dict[Exp, Any]], p: int) -> list[dict[Exp, int]] | None:
+    """A basis over QQ modulo ``p`` (None if ``p`` divides a denominator)."""
+    out = []
+    for g in basis:
+        h = {}
+        for e, c in g.items():
+            d = int(c.q) % p
+            if not d:
+                return None
+            h[e] = int(c.p) * pow(d, -1, p) % p if d != 1 else int(c.p) % p
+        out.append(h)
+    return out
+
+
+def fglm_qq(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder) -> list[dict]:
+    """The reduced basis for ``target`` over QQ (``fmpq`` coefficients), increasing leading
+    monomials, of the zero-dimensional ideal with the reduced basis ``basis`` for ``source``
+    (see the module docstring)."""
+    from .modular import ModularFailure, primes
+    n = source.nvars
+    B = sorted(staircase([max(g, key=source.key) for g in basis], n), key=source.key)
+    if not B:
+        return [{(0,) * n: flint.fmpq(1)}]
+    border = border_forms_qq(basis, source, B)
+    tried = 0
+    for p in primes(20240917):
+        mod = _mod(basis, p)
+        if mod is None:
+            continue
+        tried += 1
+        if tried > 5:
+            break
+        try:
+            conv = fglm_modp(mod, source, target, p)
+        except Unlucky:
+            continue
+        out = _exact(conv, border, B, target)
+        if out is not None:
+            return out
+    raise ModularFailure("FGLM: five unlucky primes in a row")
+
+
+def border_forms_qq(basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> dict[Exp, list]:
+    """:func:`border_forms` over QQ, exactly: the same F4 matrix (its structure from the mod
+    p machinery), back substitution with rational vectors."""
+    n = order.nvars
+    Bset = set(B)
+    border = {t for b in B for t in _multiples(b, n) if t not in Bset}
+    top = max(sum(e) for g in basis for e in g)
+    maxdeg = 63
+    while maxdeg < 4 * top + 2:
+        maxdeg = 2 * maxdeg + 1
+    while True:
+        P = Packing(order, maxdeg)
+        try:
+            return _border_qq(basis, P, border, B)
+        except PackingOverflow:
+            maxdeg = 2 * maxdeg + 1
+
+
+def _border_qq(basis, P: Packing, border, B) -> dict[Exp, list]:
+    eng = F4([], P, 2)
+    coefs, packed_lms = [], []
+    for g in basis:
+        items = sorted(((P.pack(e), c) for e, c in g.items()), reverse=True)
+        eng._add([m for m, _ in items], [0] * len(items), True)
+        coefs.append([c for _, c in items])
+        packed_lms.append(items[0][0])
+    g = P.guard
+    pivots = {}
+    for t in border:
+        x = P.pack(t)
+        xg = x | g
+        k = next(k for k, lm in enumerate(packed_lms) if (xg - lm) & g == g)
+        pivots[x] = (k, x - packed_lms[k])
+    rowmons, nonpivot = eng._symbolic([], pivots)
+    nonpivot.sort()
+    m = len(nonpivot)
+    slot = {x: s for s, x in enumerate(nonpivot)}
+    zero = flint.fmpq(0)
+    T: dict[int, flint.fmpq_mat] = {}
+    for col in sorted(pivots):
+        k, u = pivots[col]
+        rm, cs = rowmons[(k, u)], coefs[k]
+        vals = [zero] * m
+        acc = None
+        for x, c in zip(rm[1:], cs[1:]):
+            s = slot.get(x)
+            if s is not None:
+                vals[s] = c
+            else:
+                term = T[x] * c
+                acc = term if acc is None else acc + term
+        row = flint.fmpq_mat(1, m, vals)
+        T[col] = row - acc if acc is not None else row
+    index = {P.pack(b): j for j, b in enumerate(B)}
+    to_b = [index[x] for x in nonpivot]
+    D = len(B)
+    out = {}
+    for t in border:
+        nf = [zero] * D
+        for s, v in enumerate(T[P.pack(t)].entries()):
+            if v:
+                nf[to_b[s]] = -v
+        out[t] = nf
+    return out
+
+
+def _exact(conv: Conversion, border: dict[Exp, list[Any]], B: list[Exp], target: MonomialOrder) -> list[dict] | None:
+    """The conversion ``conv`` (found modulo a prime) redone over QQ with the exact border
+    normal forms: the normal forms of the new standard monomials and leading monomials by
+    the multiplication matrices, then one linear solve for the tails.  None if the prime was
+    unlucky (the new standard monomials are dependent over QQ, or a tail has a monomial above
+    its leading one)."""
+    D = len(B)
+    index = {b: j for j, b in enumerate(B)}
+    one = flint.fmpq(1)
+    zero = flint.fmpq(0)
+
+    def column(t: Exp) -> flint.fmpq_mat:
+        j = index.get(t)
+        if j is not None:
+            return flint.fmpq_mat(D, 1, [one if r == j else zero for r in range(D)])
+        return flint.fmpq_mat(D, 1, border[t])
+
+    mats: dict[int, flint.fmpq_mat] = {}
+
+    def mult(i: int) -> flint.fmpq_mat:
+        m = mats.get(i)
+        if m is None:
+            cols = [column(_times(b, i)).entries() for b in B]
+            m = mats[i] = flint.fmpq_mat(D, D, [cols[c][r] for r in range(D) for c in range(D)])
+        return m
+
+    def vector(t: Exp, i: int, k: int) -> flint.fmpq_mat:
+        if k < 0 or t in index or t in border:
+            return column(t)
+        return mult(i) * stairs[k]
+
+    stairs: list[flint.fmpq_mat] = []
+    for t, (i, k) in zip(conv.stairs, conv.stair_from):
+        stairs.append(vector(t, i, k))
+    rhs = [vector(t, i, k).entries() for t, (i, k) in zip(conv.lms, conv.lm_from)]
+    cols = [v.entries() for v in stairs]
+    L = len(rhs)
+    V = flint.fmpq_mat(D, D, [cols[c][r] for r in range(D) for c in range(D)])
+    N = flint.fmpq_mat(D, L, [rhs[c][r] for r in range(D) for c in range(L)])
+    try:
+        A = V.solve(N)
+    except ZeroDivisionError:
+        return None
+    tkey = target.key
+    conv.tails = []
+    for c, lm in enumerate(conv.lms):
+        tail = [-A[k, c] for k in range(D)]
+        top = tkey(lm)
+        if any(a and tkey(s) > top for a, s in zip(tail, conv.stairs)):
+            return None
+        conv.tails.append(tail)
+    return as_dicts(conv, one)

@@ -1,0 +1,394 @@
+"""Real branches of a curve at a point, exactly.
+
+By Milnor's conic structure theorem (Milnor, "Singular points of complex hypersurfaces", 1968,
+Thm. 2.10; for real sets Durfee, "Neighborhoods of algebraic sets", 1983) the real points of a
+curve ``C`` in a small ball around ``p`` form a cone over the points on the sphere: the number of
+real half-branches at ``p`` is ``#(C_R ∩ S(p, eps))``.  "Small" is certified: ``eps^2`` is below
+every positive critical value of ``d = |x - p|^2`` on ``C`` (the Lagrange points: ``C`` and the
+maximal minors of the Jacobian of ``(C, d)``, a zero-dimensional system, all of whose critical
+values are roots of the characteristic polynomial of ``d``).  Then ``d`` has no critical point on
+``C_R ∩ B(p, eps) \\ {p}`` (singular points of ``C`` included), every component of that set is an
+arc from ``p`` to the sphere on which ``d`` increases, and each meets the sphere once,
+transversally.  Each real branch has two half-branches.
+
+The tangent ray of a half-branch is found exactly too: the real lines of the tangent cone are the
+real points ``v_j`` of ``cone + (L - 1)`` for a linear form ``L`` not vanishing on the cone; with
+a form ``W`` separating them and thresholds ``theta_k`` between the values ``W(v_j)``, the forms
+``L`` and ``W - theta_k L`` vanish on no tangent direction, so each keeps one sign along a
+half-branch near ``p`` - certified by taking ``eps`` below the distance from ``p`` to the other
+real points of ``C`` on each hyperplane ``w(x - p) = 0`` - and the signs at the sphere point name
+the ray.
+
+Points may be algebraic: the conjugate points ``x = coords(t)``, ``e(t) = 0`` (``e`` irreducible),
+handled all at once in ``Q[x, t]`` and told apart by the real root of ``e``.
+"""
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from typing import Sequence
+
+import flint
+from flint import fmpq, fmpq_poly, fmpz_poly
+
+from .groebner import groebner
+from .ideals import dimension
+from .local import AlgebraicPoint, centre_at, tangent_cone_over
+from .matrix import Matrix, minors
+from .order import Block, MonomialOrder
+from .poly import Poly, PolyRing
+from .real_fibers import curve_part, linear_poly
+from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, primitive, separate
+from .real_solve import (RUR, QuotientAlgebra, arb_bounds, ball_eval, from_fmpq_poly, rur, rur_of,
+                         shape_representation, solution_boxes)
+
+Box = list[tuple[fmpq, fmpq]]
+
+
+@dataclass
+class PointFamily:
+    """Conjugate algebraic points ``x_i = coords[i](t)`` with ``poly(t) = 0`` (irreducible; for a
+    rational point ``poly = t`` and constant coordinates)."""
+
+    poly: fmpz_poly
+    coords: list[fmpq_poly]
+
+    @classmethod
+    def rational(cls, point: Sequence[fmpq]) -> "PointFamily":
+        return cls(fmpz_poly([0, 1]), [fmpq_poly([fmpq(c)]) for c in point])
+
+    def real_roots(self) -> list[RealRoot]:
+        return separate(isolate_real_roots(self.poly))
+
+
+def point_families(prime: Sequence[Poly], ring: PolyRing) -> list[PointFamily]:
+    """The points of a zero-dimensional ideal as families of conjugates (one per irreducible
+    factor of its representation's polynomial)."""
+    rep = rur(prime, ring)
+    if rep.count == 0:
+        return []
+    out = []
+    for f, _ in rep.poly.factor()[1]:
+        f = primitive(f)
+        out.append(PointFamily(f, [h % fmpq_poly(f) for h in rep.shape]))
+    return out
+
+
+@dataclass
+class Branches:
+    """The real branches of a curve at a real point: ``half_branches`` (points of the curve on a
+    small sphere), ``branches`` (half of them), the real tangent lines ``tangents`` (direction
+    boxes, normalised ``L(v) = 1``) with the half-branches on each ray ``rays[j] = (on +v_j,
+    on -v_j)``, the ``kind`` of point and the certified squared radius ``radius2``."""
+
+    point: Box
+    half_branches: int
+    branches: int
+    smooth: bool
+    kind: str
+    tangents: list[Box]
+    rays: list[tuple[int, int]]
+    radius2: fmpq
+
+
+class _Setting:
+    """The curve in ``Q[x, t]`` with ``e(t)`` and the squared distance to ``x = coords(t)``."""
+
+    def __init__(self, curve: Sequence[Poly], ring: PolyRing, fam: PointFamily) -> None:
+        n = ring.nvars
+        name = "t"
+        while name in ring.names:
+            name = "_" + name
+        self.n = n
+        self.ring = PolyRing(ring.field, list(ring.names) + [name], MonomialOrder([Block("dp", n), Block("dp", 1)]))
+        xs = self.ring.gens()[:n]
+        self.t = self.ring.gens()[n]
+        self.curve = [Poly(self.ring, {e + (0,): c for e, c in g.terms.items()}) for g in curve]
+        self.e = from_fmpq_poly(fmpq_poly(fam.poly), self.ring, n)
+        self.centre = [from_fmpq_poly(c, self.ring, n) for c in fam.coords]
+        self.diffs = [x - c for x, c in zip(xs, self.centre)]
+        self.reweigh([1] * n)
+        self.fam = fam
+        self.roots = fam.real_roots()
+
+    def reweigh(self, weights: list[int]) -> None:
+        """The squared distance ``d = sum w_i (x_i - p_i)^2`` with these positive weights."""
+        self.dist = sum((v * v * w for v, w in zip(self.diffs, weights)), self.ring.zero())
+
+    def base(self) -> list[Poly]:
+        return self.curve + [self.e]
+
+    def combos(self, k: int, seed: int) -> list[Poly]:
+        """``k`` random integer combinations of the curve's generators (the generators when
+        there are exactly ``k``)."""
+        if len(self.curve) == k:
+            return list(self.curve)
+        rnd = random.Random(seed)
+        return [sum((g * rnd.randint(-3, 3) for g in self.curve), self.ring.zero()) for _ in range(k)]
+
+    def root_index(self, rep, r: RealRoot) -> int:
+        """Which real root of ``e`` the ``t`` of the solution at ``r`` is."""
+        for j, c in enumerate(self.roots):
+            lo, hi = (c.lo, c.hi)
+            if rep.sign(self.t - lo, r) > 0 and rep.sign(self.t - hi, r) < 0:
+                return j
+        raise RealSolvingError("a solution's t is not a root of the point's polynomial")
+
+
+def _smallest_positive(charpoly: fmpq_poly) -> fmpq | None:
+    """A positive rational below every positive real root (None if there is none)."""
+    for r in isolate_real_roots(charpoly):
+        if r.exact is not None:
+            if r.exact > 0:
+                return r.exact / 2
+            continue
+        while r.lo < 0 < r.hi or r.lo == 0:
+            r = r.refined((r.hi - r.lo) / 2)
+            if r.exact is not None:
+                break
+        if r.exact is not None and r.exact > 0:
+            return r.exact / 2
+        if r.exact is None and r.lo > 0:
+            return r.lo / 2
+    return None
+
+
+def _lagrange(S: _Setting, seed: int) -> list[Poly]:
+    """The curve, ``e`` and the maximal minors of the Jacobian (in ``x``) of ``n - 1`` combinations
+    of the generators and ``d``: every critical point of ``d`` on the curve (singular points
+    included; combinations may add finitely many spurious points, which only lower ``eps``)."""
+    h = S.combos(S.n - 1, seed)
+    rows = [[f.diff(i) for i in range(S.n)] for f in h + [S.dist]]
+    det = minors(Matrix(S.ring, S.n, S.n, [p for r in rows for p in r]), S.n)
+    return S.base() + [d for d in det if not d.is_zero()]
+
+
+def _critical_bound(S: _Setting) -> fmpq:
+    """``eps^2`` below every positive critical value of the distance on the curve (from the
+    characteristic polynomial of ``d`` on the Lagrange points).  When these are not isolated (a
+    component on a sphere around the point) the distance is reweighted, ``sum w_i (x_i - p_i)^2``
+    with random positive weights: the conic structure holds for it all the same."""
+    rnd = random.Random(29)
+    for attempt in range(8):
+        for seed in range(1 if len(S.curve) == S.n - 1 else 3):
+            lag = _lagrange(S, seed)
+            if dimension(lag, S.ring) <= 0:
+                A = QuotientAlgebra(lag, S.ring)
+                bound = _smallest_positive(A.poly_matrix(S.dist).charpoly()) if A.dim else None
+                return bound if bound is not None else fmpq(1)
+        S.reweigh([rnd.randint(1, 9 + 4 * attempt) for _ in range(S.n)])
+    raise RealSolvingError("the critical points of the distance to the point are not isolated")
+
+
+def _sphere(S: _Setting, eps2: fmpq) -> tuple[object, list[RealRoot], list[int]]:
+    """The real points of the curve on the sphere ``d = eps2``: representation, roots, and the
+    real root of ``e`` (index) each belongs to."""
+    A = QuotientAlgebra(S.base() + [S.dist - eps2], S.ring)
+    rep = rur_of(A)
+    roots = rep.real_roots()
+    return rep, roots, [S.root_index(rep, r) for r in roots]
+
+
+def half_branch_counts(curve: Sequence[Poly], ring: PolyRing, fam: PointFamily) -> list[int]:
+    """The number of real half-branches of the curve (radical, every component of dimension
+    one, generators of ``ring``) at each real point of the family (in the order of the real roots
+    of ``fam.poly``)."""
+    S = _Setting(curve, ring, fam)
+    _, _, owners = _sphere(S, _critical_bound(S))
+    return [owners.count(j) for j in range(len(S.roots))]
+
+
+def real_branches(gens: Sequence[Poly], ring: PolyRing, point: Sequence[fmpq] | Sequence[Poly]) -> list[Branches]:
+    """The real branches of ``V(gens)`` (a curve over QQ) at a point: a rational point (a list of
+    coordinates) or the real points of a zero-dimensional ideal (one result each)."""
+    if point and isinstance(point[0], Poly):
+        fams = point_families(list(point), ring)
+    else:
+        if len(point) != ring.nvars:
+            raise RealSolvingError(f"the point has {len(point)} coordinates, the ring {ring.nvars} variables")
+        fams = [PointFamily.rational([fmpq(c) for c in point])]
+    curve, _ = curve_part(gens, ring)
+    out = []
+    for fam in fams:
+        _check_on(gens, ring, fam)
+        out += _family_branches(curve, ring, fam)
+    return out
+
+
+def _check_on(gens: Sequence[Poly], ring: PolyRing, fam: PointFamily) -> None:
+    f = fmpq_poly(fam.poly)
+    for g in gens:
+        val = fmpq_poly([])
+        for e, c in g.terms.items():
+            t = fmpq_poly([c])
+            for x, k in zip(fam.coords, e):
+                t = (t * x ** k) % f if k else t
+            val += t
+        if not (val % f).is_zero():
+            raise RealSolvingError("the point is not on the variety")
+
+
+def _family_branches(curve: list[Poly], ring: PolyRing, fam: PointFamily) -> list[Branches]:
+    roots = fam.real_roots()
+    S = _Setting(curve, ring, fam) if curve else None
+    if S is not None and not _passes(S):
+        S = None
+    smooth = S is not None and _smooth(S)
+    lines = None
+    if S is not None:
+        point = AlgebraicPoint(S.ring, S.t, S.e, S.centre)
+        cone = tangent_cone_over(centre_at(S.curve, point), point)
+        lines = _cone_lines(S, cone)
+    out = []
+    for j, root in enumerate(roots):
+        box = _point_box(fam, root)
+        if S is None:
+            out.append(Branches(box, 0, 0, False, "isolated", [], [], fmpq(0)))
+        else:
+            out.append(_branches_at(S, j, box, smooth, lines))
+    return out
+
+
+def _point_box(fam: PointFamily, root: RealRoot) -> Box:
+    return solution_boxes(shape_representation(fam.poly, fam.coords), [root], fmpq(1, 10 ** 12))[0][1]
+
+
+def _passes(S: _Setting) -> bool:
+    """Whether the curve passes through the points (conjugate points all do or all do not)."""
+    basis = groebner(S.curve + [S.e] + S.diffs, S.ring)
+    return not any(p.is_constant() for p in basis)
+
+
+def _branches_at(S: _Setting, j: int, box: Box, smooth: bool, lines: _Lines) -> Branches:
+    """The half-branches at the ``j``-th real point, each on the tangent ray its signs name."""
+    dirs, forms = lines.at(j)
+    eps2 = _critical_bound(S)
+    for w in forms:
+        eps2 = min(eps2, _hyperplane_bound(S, w))
+    rep, roots, owners = _sphere(S, eps2)
+    mine = [r for r, o in zip(roots, owners) if o == j]
+    rays = [[0, 0] for _ in dirs]
+    for r in mine:
+        side = rep.sign(_shifted(S, forms[0]), r)
+        pos = sum(1 for w in forms[1:] if rep.sign(_shifted(S, w), r) == side)
+        rays[pos][0 if side > 0 else 1] += 1
+    half = len(mine)
+    return Branches(box, half, half // 2, smooth, _kind(half, smooth, rays), dirs, [(a, b) for a, b in rays], eps2)
+
+
+def _shifted(S: _Setting, form: list[fmpq]) -> Poly:
+    """``form(x - p)`` in ``Q[x, t]``."""
+    return sum((d * c for d, c in zip(S.diffs, form) if c != 0), S.ring.zero())
+
+
+def _hyperplane_bound(S: _Setting, form: list[fmpq]) -> fmpq:
+    """A squared radius below the distance from ``p`` to the other points of the curve on the
+    hyperplane ``form(x - p) = 0``."""
+    A = QuotientAlgebra(S.base() + [_shifted(S, form)], S.ring)
+    bound = _smallest_positive(A.poly_matrix(S.dist).charpoly()) if A.dim else None
+    return bound if bound is not None else fmpq(1)
+
+
+def _smooth(S: _Setting) -> bool:
+    """Whether the point is a smooth point of the curve (Jacobian of rank n - 1 there)."""
+    from .real_field import RealAlgebraicField
+    F = RealAlgebraicField(S.roots[0])
+    coords = S.fam.coords
+    rows = []
+    for g in S.curve:
+        row = []
+        for i in range(S.n):
+            d = g.diff(i)
+            val = fmpq_poly([])
+            for e, c in d.terms.items():
+                t = fmpq_poly([c])
+                for x, k in zip(coords, e[:S.n]):
+                    t = F.mul(t, x ** k) if k else t
+                val += t
+            row.append(F(val))
+        rows.append(row)
+    return F.rank(rows) == S.n - 1
+
+
+class _Lines:
+    """The real tangent lines at the conjugate points: the real points ``v`` of
+    ``cone + (L - 1)`` (directions with ``L(v) = 1``), by the real root of ``e`` they belong to."""
+
+    def __init__(self, S: _Setting, cone: list[Poly], L: list[fmpq]) -> None:
+        self.S, self.cone, self.L = S, cone, L
+        self.rep = rur(cone + [linear_poly(S.ring, L) - 1], S.ring)
+        roots = self.rep.real_roots()
+        owners = [S.root_index(self.rep, r) for r in roots]
+        self.roots = [[r for r, o in zip(roots, owners) if o == j] for j in range(len(S.roots))]
+
+    def at(self, j: int) -> tuple[list[Box], list[list[fmpq]]]:
+        """The tangent directions at the ``j``-th real point, ordered by a form ``W`` separating
+        them, and the sign forms: ``L``, then ``W - theta L`` for thresholds ``theta`` between
+        consecutive values of ``W``."""
+        mine = self.roots[j]
+        if len(mine) < 2:
+            return self._boxes(mine), [self.L]
+        for W in _forms(self.S.n, 40):
+            order = _sorted_values(self.rep, mine, linear_poly(self.S.ring, W))
+            if order is None:
+                continue
+            ranked, ths = order
+            cands = [[w - th * l for w, l in zip(W, self.L)] for th in ths]
+            if all(_transversal(self.S, self.cone, c) for c in cands):
+                return self._boxes(ranked), [self.L] + cands
+        raise RealSolvingError("no forms separating the tangent lines")
+
+    def _boxes(self, roots: list[RealRoot]) -> list[Box]:
+        return [b[:self.S.n] for _, b in solution_boxes(self.rep, roots, fmpq(1, 10 ** 12))] if roots else []
+
+
+def _sorted_values(rep: RUR, roots: list[RealRoot], W: Poly) -> tuple[list[RealRoot], list[fmpq]] | None:
+    """The roots ordered by the value of ``W`` at their solutions and rational thresholds
+    between consecutive values (None when two values coincide)."""
+    val = rep.value(W)
+    for k in (64, 128, 256, 512, 1024):
+        encl = []
+        for r in roots:
+            rr = r.refined(fmpq(1, 2 ** k)) if r.exact is None else r
+            with flint.ctx.workprec(k + 64):
+                encl.append((arb_bounds(ball_eval(val, rr.ball(k + 64))), r))
+        encl.sort(key=lambda x: x[0][0])
+        if all(a[0][1] < b[0][0] for a, b in zip(encl, encl[1:])):
+            return [r for _, r in encl], [(a[0][1] + b[0][0]) / 2 for a, b in zip(encl, encl[1:])]
+    return None
+
+
+def _forms(n: int, count: int) -> list[list[fmpq]]:
+    rnd = random.Random(97)
+    out = [[fmpq(int(i == j)) for j in range(n)] for i in range(n)]
+    out += [[fmpq(rnd.randint(-4, 4)) for _ in range(n)] for _ in range(count)]
+    return [f for f in out if any(f)]
+
+
+def _transversal(S: _Setting, cone: list[Poly], form: list[fmpq]) -> bool:
+    """Whether ``form`` vanishes on no line of the tangent cone (over C)."""
+    xs = S.ring.gens()[:S.n]
+    w = sum((x * c for x, c in zip(xs, form) if c != 0), S.ring.zero())
+    return dimension(cone + [w], S.ring) == 0
+
+
+def _cone_lines(S: _Setting, cone: list[Poly]) -> _Lines:
+    for L in _forms(S.n, 40):
+        if _transversal(S, cone, L):
+            return _Lines(S, cone, L)
+    raise RealSolvingError("no form transversal to the tangent cone")
+
+
+def _kind(half: int, smooth: bool, rays: list[list[int]]) -> str:
+    """regular, isolated, cusp, node, tacnode or singular (one branch through a singular point
+    with its half-branches on opposite rays)."""
+    if half == 0:
+        return "isolated"
+    if smooth:
+        return "regular"
+    per_line = [a + b for a, b in rays]
+    if half == 2:
+        return "cusp" if any(a == 2 or b == 2 for a, b in rays) else "singular"
+    if all(k in (0, 2) for k in per_line) and all(a == b for a, b in rays):
+        return "node"
+    return "tacnode"

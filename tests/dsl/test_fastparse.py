@@ -1,0 +1,110 @@
+"""The fast path of the parser (mech.dsl.fastparse) builds exactly Lark's trees, positions included:
+on every script of the corpus, the examples and the libraries, and on random statements; it gives up
+(Lark then reports the error) on whatever it does not take."""
+import dataclasses
+import random
+
+import pytest
+
+from mech.dsl import ast as A
+from mech.dsl.errors import MechSyntaxError, Source
+from mech.dsl.fastparse import parse_fast
+from mech.dsl.parser import _parse_lark, _parser, _type_words, parse
+from mech.dsl.types import type_names
+
+from tests.util import ROOT
+
+
+def same(a, b) -> bool:
+    """Structural equality of syntax trees (their nodes compare by identity)."""
+    if type(a) is not type(b):
+        return False
+    if isinstance(a, A.Node):
+        return all(same(getattr(a, f.name), getattr(b, f.name)) for f in dataclasses.fields(a))
+    if isinstance(a, list):
+        return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
+    return a == b
+
+
+def fast(text: str, at=(1, 1)):
+    source = Source("<t>", text)
+    parser = _parser()
+    return parse_fast(text, at, parser.terminals, _type_words(parser) + type_names(),
+                      lambda piece, where: _parse_lark(piece, source, where))
+
+
+def check(text: str, at=(1, 1)) -> bool:
+    """The fast parse equals Lark's (or gives up where Lark fails); whether it parsed."""
+    try:
+        want = _parse_lark(text, Source("<t>", text), at)
+    except MechSyntaxError:
+        assert fast(text, at) is None, text
+        return False
+    got = fast(text, at)
+    assert got is not None and same(got, want), text
+    return True
+
+
+SCRIPTS = sorted([*ROOT.glob("tests/corpus/*.sing"), *ROOT.glob("examples/*.mech"), *ROOT.glob("stdlib/*.lib"),
+                  *ROOT.glob("tests/data/*.sing")])
+
+
+@pytest.mark.parametrize("path", SCRIPTS, ids=lambda p: p.name)
+def test_scripts_parse_alike(path):
+    assert check(path.read_text())
+
+
+def test_pieces_at_other_positions():
+    assert check("x = 1;\n  y[2][3] = 4, 5;", (7, 9)) and check('s = "a\nb"; t;', (3, 4))
+
+
+ATOMS = ["x", "y2", "#", "7", "12/5", "3x2y", "2/3ab", '"s"', '"a\nb"', "f(x)", "f()", "I[2]", "L[1][2]", "M[1,2]",
+         "poly(x)", "ideal()", "(x)", "(x, y)", "( x )"]
+BINARY = ["+", "-", "*", "/", "%", "mod", "div", "^", "**", "^-", "**-", "==", "!=", "<>", "<", "<=", ">", ">=",
+          "&&", "||", "and", "or", ":", ".."]
+UNARY = ["-", "+", "!", "not ", ""]
+
+
+def random_expr(rng: random.Random, depth: int) -> str:
+    if depth == 0 or rng.random() < 0.3:
+        return rng.choice(ATOMS)
+    k = rng.random()
+    if k < 0.6:
+        return f"{random_expr(rng, depth - 1)}{rng.choice(['', ' ', '  '])}{rng.choice(BINARY)} {random_expr(rng, depth - 1)}"
+    if k < 0.75:
+        return rng.choice(UNARY) + random_expr(rng, depth - 1)
+    if k < 0.9:
+        return f"({random_expr(rng, depth - 1)})"
+    return f"g({random_expr(rng, depth - 1)}, {random_expr(rng, depth - 1)})[{random_expr(rng, depth - 1)}]"
+
+
+def random_statement(rng: random.Random) -> str:
+    e = lambda: random_expr(rng, 3)  # noqa: E731
+    return rng.choice([
+        lambda: f"{e()};", lambda: f"{e()}, {e()};", lambda: f"x = {e()};", lambda: f"I[2], y = {e()}, {e()};",
+        lambda: f"poly f = {e()};", lambda: f"int i, j;", lambda: f"matrix m[2][3] = {e()};",
+        lambda: f"list L = {e()}, {e()};", lambda: "k++;", lambda: "L[2]--;", lambda: f"{e()} = 1;",
+        lambda: f"if ({e()}) {{ x = 1; }}", lambda: "LIB \"primdec.lib\";", lambda: f"// c\n{e()}; /* d */",
+        lambda: f"{e()}", lambda: f"{e()};;", lambda: f"mechanism m = {e()};", lambda: f"return({e()});",
+        lambda: f"if ({e()}) {{ x = 1; ; }} else {{ {e()}; }}", lambda: f"if (1) {{}} else if ({e()}) {{ k++; }} else {{}}",
+        lambda: f"while ({e()}) {{ break; continue; {{ x; }} }}", lambda: f"for (int i = 1; i <= {e()}; i++) {{ x; }}",
+        lambda: f"for (; ; ) {{ }}", lambda: f"if ({e()}) x = 1;", lambda: f"{{ {e()}; }}", lambda: "else { x; }",
+        lambda: f"for (i = 1, j = 2; {e()}; ) {{ }}", lambda: f"while (1) {{ {e()} }}",
+    ])()
+
+
+def test_random_statements_parse_alike():
+    rng = random.Random(23)
+    parsed = 0
+    for _ in range(3000):
+        text = "\n".join(random_statement(rng) for _ in range(rng.randint(1, 4)))
+        parsed += check(text)
+    assert parsed > 1000
+
+
+def test_the_parser_uses_the_fast_path_and_reports_errors_as_before():
+    program = parse("ring r = 0,(x,y),dp; poly f = x2+y; if (f == 0) { f = 1; } f;")
+    assert [type(s).__name__ for s in program.body] == ["Decl", "Decl", "If", "ExprStmt"]
+    with pytest.raises(MechSyntaxError) as e:
+        parse("x = 1;\ny = 2 +* 3;")
+    assert (e.value.line, e.value.column, e.value.message) == (2, 8, "unexpected '*', expected an expression")

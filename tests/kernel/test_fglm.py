@@ -1,0 +1,136 @@
+"""FGLM (kernel/fglm.py) and the conversions ``auto`` makes with it: lexicographic and block
+orderings of zero-dimensional ideals, against other engines and real Singular."""
+from __future__ import annotations
+
+import pytest
+from tests.util import cyclic, ideal_blocks, katsura, parse_poly, ring, run_singular
+
+from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from mech.kernel.engines import standard_basis
+from mech.kernel.errors import EngineError
+from mech.kernel.fglm import NotZeroDimensional, fglm_modp, staircase
+from mech.kernel.poly import Poly
+
+LEX = [Block("lp", 5)]
+BLOCKS = [Block("dp", 2), Block("dp", 3)]
+
+
+@pytest.mark.parametrize("blocks", [LEX, BLOCKS], ids=["lp", "(dp(2),dp(3))"])
+def test_fglm_agrees_with_f4_over_zp(blocks):
+    R = ring("abcde", blocks, GF(32003))
+    gens = katsura(R, 4)
+    assert standard_basis(gens, R, "fglm") == standard_basis(gens, R, "f4")
+
+
+@pytest.mark.parametrize("blocks", [[Block("lp", 4)], [Block("dp", 2), Block("dp", 2)]],
+                         ids=["lp", "(dp(2),dp(2))"])
+def test_fglm_agrees_with_modular_f4_over_qq(blocks):
+    R = ring("abcd", blocks, QQ)
+    gens = katsura(R, 3)
+    ours = standard_basis(gens, R, "fglm")
+    assert ours == standard_basis(gens, R, "modular") == standard_basis(gens, R, "buchberger")
+
+
+def test_the_conversion_is_reduced_and_sorted():
+    R = ring("abcde", LEX, QQ)
+    basis = standard_basis(cyclic(R), R, "fglm")
+    key = R.order.key
+    lms = [p.lm() for p in basis]
+    assert lms == sorted(lms, key=key)
+    assert all(p.lc() == 1 for p in basis)
+    for p in basis:  # no term of a tail is divisible by a leading monomial
+        assert not any(all(a <= b for a, b in zip(lm, e)) for e in p.terms if e != p.lm() for lm in lms)
+    assert len(staircase(lms, 5)) == 70  # cyclic-5 has 70 solutions with multiplicity
+
+
+def test_positive_dimensional_ideals_are_refused():
+    R = ring("xyz", [Block("lp", 3)], QQ)
+    x, y, z = R.gens()
+    with pytest.raises(EngineError, match="zero-dimensional"):
+        standard_basis([x * y - z, x ** 2 - y], R, "fglm")
+    with pytest.raises(NotZeroDimensional):
+        staircase([(1, 0, 0)], 3)
+    # auto falls back to another engine
+    assert standard_basis([x * y - z, x ** 2 - y], R) == standard_basis([x * y - z, x ** 2 - y], R, "buchberger")
+
+
+def test_unit_ideal_and_a_point():
+    R = ring("xy", [Block("lp", 2)], QQ)
+    x, y = R.gens()
+    assert standard_basis([x * y - 1, x, y - 2], R, "fglm") == [R.one()]
+    assert standard_basis([x + y - 3, x - y - 1], R, "fglm") == [y - 1, x - 2]
+
+
+def test_fglm_modp_reports_how_each_monomial_was_reached():
+    R = ring("xy", [Block("dp", 2)], GF(101))
+    x, y = R.gens()
+    dp = standard_basis([x ** 2 - y, y ** 2 - 1], R)
+    conv = fglm_modp([{e: int(c) for e, c in g.terms.items()} for g in dp], R.order,
+                     MonomialOrder([Block("lp", 2)]), 101)
+    assert conv.stairs[0] == (0, 0) and conv.stair_from[0] == (-1, -1)
+    for t, (i, k) in zip(conv.stairs[1:] + conv.lms, conv.stair_from[1:] + conv.lm_from):
+        parent = list(conv.stairs[k])
+        parent[i] += 1
+        assert tuple(parent) == t
+    assert conv.lms == [(0, 2), (2, 0)]  # y^2 - 1 and x^2 - y: already a lex basis
+
+
+SINGULAR_CASES = [("katsura-5, lp", "lp", lambda R: katsura(R, 5), 6),
+                  ("cyclic-5, lp", "lp", cyclic, 5),
+                  ("katsura-5, (dp(3),dp(3))", "(dp(3),dp(3))", lambda R: katsura(R, 5), 6)]
+
+
+@pytest.mark.singular
+@pytest.mark.parametrize("char", [0, 32003])
+def test_conversions_match_singular(char):
+    script = "option(redSB);\n"
+    rings = []
+    for name, order, make, n in SINGULAR_CASES:
+        names = [f"x{i}" for i in range(n)]
+        blocks = [Block("lp", n)] if order == "lp" else [Block("dp", 3), Block("dp", 3)]
+        R = PolyRing(QQ if char == 0 else GF(char), names, MonomialOrder(blocks))
+        gens = make(R)
+        rings.append((R, gens))
+        script += (f"ring r = {char}, ({','.join(names)}), {order}; short = 0; "
+                   f"ideal i = {', '.join(g.to_str() for g in gens)}; groebner(i); kill r;\n")
+    blocks = ideal_blocks(run_singular(script, timeout=300))
+    assert len(blocks) == len(rings)
+    for (R, gens), block in zip(rings, blocks):
+        theirs = sorted((parse_poly(R, t).monic() for t in block), key=lambda p: R.order.key(p.lm()))
+        assert standard_basis(gens, R) == theirs
+        assert standard_basis(gens, R, "fglm") == theirs
+
+
+# --- the Hilbert-driven engine and auto's choice for positive-dimensional ideals ----------------
+
+FIVEBAR = ["c1+c2+c3+c4-2", "s1+s2+s3+s4", "c1^2+s1^2-1", "c2^2+s2^2-1", "c3^2+s3^2-1", "c4^2+s4^2-1",
+           "y1-c1-s1", "y2-c2-s2", "y3-c3-s3"]
+
+
+def _fivebar(field):
+    R = ring(["c1", "s1", "c2", "s2", "c3", "s3", "c4", "s4", "y1", "y2", "y3"],
+             [Block("dp", 8), Block("dp", 3)], field)
+    return R, [parse_poly(R, t) for t in FIVEBAR]
+
+
+def test_hilbert_driven_agrees_with_buchberger_over_zp():
+    R, gens = _fivebar(GF(32003))
+    ours = standard_basis(gens, R, "hilbert")
+    assert ours == standard_basis(gens, R, "buchberger")
+    assert len(ours) == 35 and [p for p in ours if max(p.lm()[:8]) == 0][0].total_degree() == 14
+
+
+def test_hilbert_driven_on_a_homogeneous_ideal_needs_no_new_variable():
+    R = ring("xyzw", [Block("lp", 4)], QQ)
+    x, y, z, w = R.gens()
+    gens = [x * z - y ** 2, x * w - y * z, y * w - z ** 2]  # the twisted cubic, homogeneous
+    assert standard_basis(gens, R, "hilbert") == standard_basis(gens, R, "buchberger")
+
+
+@pytest.mark.singular
+def test_the_fivebar_elimination_matches_singular():
+    R, gens = _fivebar(QQ)
+    out = run_singular("option(redSB); ring r = 0, (" + ",".join(R.names) + "), (dp(8),dp(3)); short = 0; "
+                       f"ideal i = {', '.join(FIVEBAR)}; groebner(i);", timeout=300)
+    theirs = sorted((parse_poly(R, t).monic() for t in ideal_blocks(out)[0]), key=lambda p: R.order.key(p.lm()))
+    assert standard_basis(gens, R) == theirs
