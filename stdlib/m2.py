@@ -13,7 +13,8 @@ from __future__ import annotations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
-from ..dsl.m2_printing import Factored, Opt, to_string
+from ..dsl.m2_printing import to_string
+from ..dsl.m2_values import FUNCTIONS, Factored, Opt
 from ..dsl.registry import command, operator
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
 from ..kernel import Poly
@@ -397,13 +398,9 @@ def apply(ctx, L: List | ExprList, f: Any) -> List:
 
 
 def _call(ctx, f: Any, x: Any) -> Any:
-    from ..dsl.m2 import CommandRef, M2Function
-    if isinstance(f, M2Function):
-        return ctx.call_function(f, [x])
-    if isinstance(f, CommandRef):
-        from ..dsl.registry import invoke
-        return invoke(f.command, ctx, [x])
-    raise MechTypeError(f"a {typeof(f)} is not a function")
+    if not isinstance(f, FUNCTIONS):
+        raise MechTypeError(f"a {typeof(f)} is not a function")
+    return ctx.apply(f, [x])
 
 
 @command("toString", dialect="m2")
