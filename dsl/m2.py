@@ -16,6 +16,7 @@ from . import ast as A
 from . import ops
 from .errors import MechError, MechNameError, MechRuntimeError, MechTypeError, Source
 from .interpreter import Interpreter
+from .limits import LimitExceeded, limit_error
 from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, HashHas, IfExpr, Length, ListLit,
                      Option, ReturnExpr, RingCons, Seq, SetVar, Statement, Subscript, SymbolLit, TimeExpr, TryExpr,
                      WhileLoop)
@@ -296,15 +297,29 @@ class M2Interpreter(M2Control, Interpreter):
         if isinstance(f, Partial):
             return self.apply(f.func, [f.first, *args])
         if isinstance(f, CommandRef):
-            v = self.registry.invoke(f.command, self, list(args))
-            return bool(v) if f.command.overloads[0].func.__annotations__.get("return") in ("bool", bool) else v
+            return self.invoke(f.command, list(args))
         raise MechTypeError(f"a {typeof(f)} cannot be applied to arguments")
 
     def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:
         """A command applied to a sequence it takes as one argument (``toString (1,2)``) gets it whole."""
         if len(arg_nodes) > 1 and all(len(ov.names) == 1 and not ov.has_varargs for ov in cmd.overloads):
             arg_nodes = [A.Tuple(arg_nodes, pos=arg_nodes[0].pos)]
-        v = super().call_command(cmd, arg_nodes)
+        saved = self.argnames
+        try:
+            self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
+            return self.invoke(cmd, self._values(arg_nodes))
+        finally:
+            self.argnames = saved
+
+    def invoke(self, cmd: Any, args: list[Any]) -> Any:
+        """Run a command on evaluated arguments; commands not marked :func:`~mech.dsl.m2_rings.in_quotients`
+        refuse elements of quotient rings (their answers would ignore the relations)."""
+        if not getattr(cmd.overloads[0].func, "quotient_ok", False) and any(_in_quotient(a) for a in args):
+            raise MechRuntimeError(f"{cmd.name} on elements of a quotient ring R/I is not supported by mech")
+        try:
+            v = self.registry.invoke(cmd, self, list(args))
+        except (LimitExceeded, MemoryError) as e:
+            raise limit_error(e, cmd.name) from None
         if cmd.overloads[0].func.__annotations__.get("return") in ("bool", bool):
             return bool(v)  # the registry gives Singular's 0 and 1
         return v
@@ -325,6 +340,9 @@ class M2Interpreter(M2Control, Interpreter):
             return Ideal(a.ring, [g for g in gens if not g.is_zero()] if op == "*" else gens)
         if op in ("<", "<=", ">", ">="):
             return bool(ops.compare(op, a, b, ring))
+        if op in ("==", "!=") and isinstance(a, (List, ExprList)) and isinstance(b, (List, ExprList)):
+            same = len(a.items) == len(b.items) and all(self._binary("==", x, y) for x, y in zip(a.items, b.items))
+            return same if op == "==" else not same
         if op in ("==", "!="):
             return bool(ops.compare(op, a, b, ring))
         if isinstance(a, bool) or isinstance(b, bool):
@@ -345,6 +363,14 @@ class M2Interpreter(M2Control, Interpreter):
         if node.op == "-" and isinstance(v, Symbol) and v.name not in SYMBOLS:
             raise MechNameError(f"unknown identifier '{v.name}'")
         return v if node.op == "+" else ops.negate(v)
+
+
+def _in_quotient(v: Any) -> bool:
+    if isinstance(v, (List, ExprList)):
+        return any(_in_quotient(x) for x in v.items)
+    ring = getattr(v, "ring", None)
+    owner = getattr(ring, "owner", None) if ring is not None else (v if isinstance(v, M2Ring) else None)
+    return owner is not None and owner.quotient is not None
 
 
 # ---------------------------------------------------------------- the interactive shell

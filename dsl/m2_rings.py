@@ -155,6 +155,13 @@ def quotient_ring(R: M2Ring, gens: Sequence[Poly]) -> M2Ring:
     return S
 
 
+def in_quotients(fn: Any) -> Any:
+    """Mark a command of the dialect as correct on elements of quotient rings (the interpreter
+    refuses the others there)."""
+    fn.quotient_ok = True
+    return fn
+
+
 # ---------------------------------------------------------------- elements
 def owner(p: Poly) -> Optional[M2Ring]:
     """The Macaulay2 ring of a kernel polynomial (None for rings not made here)."""
