@@ -82,9 +82,9 @@ class M2Control:
         t0, c0 = time.time(), time.process_time()
         v = self.eval(node.body)
         if node.elapsed:
-            self.write(f" -- {time.time() - t0:.6f}s elapsed\n")
+            self.write(f"-- {time.time() - t0:.6f}s elapsed\n")
         else:
-            self.write(f" -- used {time.process_time() - c0:.6f}s (cpu)\n")
+            self.write(f"-- used {time.process_time() - c0:.6f}s (cpu)\n")
         return v
 
     def _truth(self, v: Any) -> bool:
