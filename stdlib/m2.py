@@ -456,19 +456,6 @@ def _unit(f: Poly, unit: Any) -> Any:
 
 
 # ---------------------------------------------------------------- lists and output
-@command("apply", dialect="m2")
-@in_quotients
-def apply(ctx, L: List | ExprList, f: Any) -> List:
-    """apply(L, f): the list of f(x) for x in L."""
-    return List([_call(ctx, f, x) for x in L.items])
-
-
-def _call(ctx, f: Any, x: Any) -> Any:
-    if not isinstance(f, FUNCTIONS):
-        raise MechTypeError(f"a {typeof(f)} is not a function")
-    return ctx.apply(f, [x])
-
-
 @command("toString", dialect="m2")
 @in_quotients
 def to_string_cmd(x: Any) -> str:
