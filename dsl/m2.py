@@ -21,13 +21,14 @@ from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, Hash
                      Option, ReturnExpr, RingCons, Seq, SetVar, Statement, Subscript, SymbolLit, TimeExpr, TryExpr,
                      WhileLoop)
 from .m2_control import M2Control
+from .m2_maps import apply_map
 from .m2_ops import SYMBOLS, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
 from .m2_ringcons import build_ring
 from .m2_rings import M2Ring, normal
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function, M2Set, Opt,
-                        Partial, Symbol)
+                        Partial, RingMap, Symbol)
 from .scopes import Var
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
@@ -282,11 +283,24 @@ class M2Interpreter(M2Control, Interpreter):
             return self.call_function(v, self._values(arg_nodes), node)
         if isinstance(v, (Composed, Partial)):
             return self.apply(v, self._values(arg_nodes))
+        if isinstance(v, RingMap):
+            return apply_map(v, self._one_value(arg_nodes))
         if v == Symbol("Eliminate") and len(arg_nodes) == 1:
             return Opt(v, self.eval(arg_nodes[0]))
         if isinstance(v, Symbol) and v.name not in SYMBOLS:
             raise MechNameError(f"unknown identifier '{v.name}'")
         raise MechTypeError(f"a {typeof(v)} cannot be applied to arguments")
+
+    def _one_value(self, arg_nodes: list[A.Expr]) -> Any:
+        vals = self._values(arg_nodes)
+        return vals[0] if len(vals) == 1 else ExprList(vals)
+
+    def eval_text(self, text: str) -> Any:
+        """The value of one expression of the dialect given as text (``ideal "x^2,y"``, ``value s``)."""
+        program = parse(text, Source("<string>", text))
+        if len(program.body) != 1:
+            raise MechRuntimeError(f"expected one expression, got {text!r}")
+        return self.eval(program.body[0].expr)
 
     def apply(self, f: Any, args: list[Any]) -> Any:
         """A function value applied to evaluated arguments."""
@@ -298,6 +312,8 @@ class M2Interpreter(M2Control, Interpreter):
             return self.apply(f.func, [f.first, *args])
         if isinstance(f, CommandRef):
             return self.invoke(f.command, list(args))
+        if isinstance(f, RingMap):
+            return apply_map(f, args[0] if len(args) == 1 else ExprList(args))
         raise MechTypeError(f"a {typeof(f)} cannot be applied to arguments")
 
     def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:

@@ -151,7 +151,7 @@ class Partial:
     name: str = "-*Function*-"
 
 
-FUNCTIONS = (M2Function, CommandRef, Composed, Partial)
+FUNCTIONS = (M2Function, CommandRef, Composed, Partial, RingMap)
 
 
 @dataclass(eq=False)
