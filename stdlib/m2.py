@@ -437,14 +437,30 @@ def det(M: Matrix) -> Poly:
 
 
 @command("diff", dialect="m2")
-def diff(x: Poly, f: Poly | Ideal | Matrix) -> Any:
-    """diff(x, f): the derivative of f by the variable x."""
-    i = _indices(x.ring, x)[0]
+def diff(x: Poly | Matrix, f: Poly | Ideal | Matrix) -> Any:
+    """diff(x, f): the derivative of f by the variable x; diff(P, f) for a polynomial P: P's
+    differential operator (x^2*y: d^3/dx^2dy) applied to f; diff(M, f): to each entry of M."""
+    if isinstance(x, Matrix):
+        if not isinstance(f, Poly):
+            raise MechTypeError("diff(M, f) takes a matrix M and a polynomial f")
+        return Matrix(x.ring, x.nrows, x.ncols, [_operator(p, f) for p in x.entries])
     if isinstance(f, Poly):
-        return f.diff(i)
-    if isinstance(f, Ideal):
-        return Matrix(f.ring, 1, len(f.gens), [g.diff(i) for g in f.gens])
-    return Matrix(f.ring, f.nrows, f.ncols, [g.diff(i) for g in f.entries])
+        return _operator(x, f)
+    entries = f.gens if isinstance(f, Ideal) else f.entries
+    rows, cols = (1, len(f.gens)) if isinstance(f, Ideal) else (f.nrows, f.ncols)
+    return Matrix(f.ring, rows, cols, [_operator(x, g) for g in entries])
+
+
+def _operator(P: Poly, f: Poly) -> Poly:
+    """The differential operator of the polynomial P applied to f."""
+    out = f.ring.zero()
+    for e, c in P.terms.items():
+        g = f
+        for i, k in enumerate(e):
+            for _ in range(k):
+                g = g.diff(i)
+        out = out + g * c
+    return out
 
 
 @command("sub", dialect="m2")
