@@ -45,6 +45,7 @@ class M2Interpreter(M2Control, Interpreter):
         self.operators = self.registry.OPERATORS.get("m2", {})
         self.count = 0  # the number N of the statement, as Macaulay2's oN
         self.symbols: dict[str, Any] = {}  # the variables of the rings in use, by name
+        self.m2_options: dict[str, Any] = {}  # the options Name => v of the command running
         self._exec[Statement] = self._exec_statement
         self._eval.update({
             Coeffs: lambda n: CoeffRing(n.characteristic, f"ZZ/{n.characteristic}"), ListLit: self._eval_list,
@@ -95,6 +96,7 @@ class M2Interpreter(M2Control, Interpreter):
         """Make ``ring`` current and its variables the values of their names."""
         self.ring = ring
         for i, name in enumerate(ring.names):
+            self.globals.pop(name, None)  # as Macaulay2: the name's value is now the variable
             self.symbols[name] = normal(ring.poly.gen(i))
 
     # ------------------------------------------------------------ names
@@ -318,8 +320,9 @@ class M2Interpreter(M2Control, Interpreter):
 
     def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:
         """A command applied to a sequence it takes as one argument (``toString (1,2)``) gets it whole."""
-        if len(arg_nodes) > 1 and all(len(ov.names) == 1 and not ov.has_varargs for ov in cmd.overloads):
-            arg_nodes = [A.Tuple(arg_nodes, pos=arg_nodes[0].pos)]
+        plain = [n for n in arg_nodes if not isinstance(n, Option)]
+        if len(plain) > 1 and all(len(ov.names) == 1 and not ov.has_varargs for ov in cmd.overloads):
+            arg_nodes = [A.Tuple(plain, pos=plain[0].pos)] + [n for n in arg_nodes if isinstance(n, Option)]
         saved = self.argnames
         try:
             self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
@@ -330,6 +333,7 @@ class M2Interpreter(M2Control, Interpreter):
     def invoke(self, cmd: Any, args: list[Any]) -> Any:
         """Run a command on evaluated arguments; commands not marked :func:`~mech.dsl.m2_rings.in_quotients`
         refuse elements of quotient rings (their answers would ignore the relations)."""
+        args, self.m2_options = _options(cmd, args)
         if not getattr(cmd.overloads[0].func, "quotient_ok", False) and any(_in_quotient(a) for a in args):
             raise MechRuntimeError(f"{cmd.name} on elements of a quotient ring R/I is not supported by mech")
         try:
@@ -379,6 +383,29 @@ class M2Interpreter(M2Control, Interpreter):
         if node.op == "-" and isinstance(v, Symbol) and v.name not in SYMBOLS:
             raise MechNameError(f"unknown identifier '{v.name}'")
         return v if node.op == "+" else ops.negate(v)
+
+
+#: options of Macaulay2's functions that do not change the value (how it is computed, what is printed)
+NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check"}
+
+
+def _options(cmd: Any, args: list[Any]) -> tuple[list[Any], dict[str, Any]]:
+    """The arguments without their options ``Name => v``, and the options the command reads
+    (``m2_options`` of its function); options changing the value that it does not read are refused."""
+    if not any(isinstance(a, Opt) for a in args):
+        return args, {}
+    read = set()
+    for ov in cmd.overloads:
+        read |= set(getattr(ov.func, "m2_options", ()))
+    given: dict[str, Any] = {}
+    for a in args:
+        if isinstance(a, Opt):
+            key = a.key.name if isinstance(a.key, Symbol) else a.key if isinstance(a.key, str) else to_string(a.key)
+            if key in read:
+                given[key] = a.value
+            elif key not in NEUTRAL_OPTIONS:
+                raise MechRuntimeError(f"{cmd.name}: the option {key} is not supported by mech")
+    return [a for a in args if not isinstance(a, Opt)], given
 
 
 def _in_quotient(v: Any) -> bool:

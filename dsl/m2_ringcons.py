@@ -1,6 +1,6 @@
 """Building Macaulay2 rings from ``K[x, y, Option => v]``: the variables (names, ``x_i``,
 ``x_(i,j)``, ranges ``a..d`` / ``x_1..x_n``, lists of these), the options ``MonomialOrder``,
-``Global``, ``Degrees``, ``Weights`` and ``MonomialSize``, and the coefficient ring (``QQ``,
+``Global``, ``Degrees``, ``Weights`` and ``MonomialSize`` (``Join``: only degrees, ignored), and the coefficient ring (``QQ``,
 ``ZZ/p`` or another ring: a tower)."""
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ from .m2_values import CoeffRing, Opt, Symbol
 from .values import ExprList, List, to_int, typeof
 
 #: the ring options mech reads
-OPTIONS = ("MonomialOrder", "Global", "Degrees", "Weights", "MonomialSize")
+OPTIONS = ("MonomialOrder", "Global", "Degrees", "Weights", "MonomialSize", "Join")
 
 
 def build_ring(node: RingCons, evaluate: Callable[[A.Expr], Any], show: Callable[[Any], str]) -> M2Ring:

@@ -145,7 +145,17 @@ def _sorted(I: Ideal, polys: list[Poly]) -> list[Poly]:
 
 
 def _reduced(I: Ideal, polys: list[Poly]) -> Ideal:
+    """The ideal of these basis elements (in a quotient ring: their nonzero normal forms)."""
+    if _quotient_of(I.ring) is not None:
+        polys = [q for q in (normal(p) for p in polys) if not q.is_zero()]
+        return Ideal(I.ring, [normalize(p) for p in polys])
     return Ideal(I.ring, [normalize(p) for p in polys], is_std=True)
+
+
+def _lift(I: Ideal) -> list[Poly]:
+    """Generators of I's preimage in the polynomial ring (I + Q for an ideal of R/Q)."""
+    q = _quotient_of(I.ring)
+    return list(I.nonzero()) + (list(q.basis) if q is not None else [])
 
 
 @command("gb", dialect="m2")
@@ -226,14 +236,16 @@ def _global(I: Ideal, cmd: str) -> None:
 
 
 @command("eliminate", dialect="m2")
+@in_quotients
 def eliminate(variables: List | Poly, I: Ideal) -> Ideal:
     """eliminate({x, y}, I) (or eliminate(I, {x, y})): I intersected with the subring of the
     other variables."""
     _global(I, "eliminate")
-    return _reduced(I, K.eliminate(I.nonzero(), _indices(I.ring, variables), ring=I.ring))
+    return _reduced(I, K.eliminate(_lift(I), _indices(I.ring, variables), ring=I.ring))
 
 
 @command("eliminate", dialect="m2")
+@in_quotients
 def eliminate_ideal_first(I: Ideal, variables: List | Poly) -> Ideal:
     return eliminate(variables, I)
 
@@ -268,6 +280,7 @@ def saturate(I: Ideal, J: Ideal | Poly | None = None) -> Ideal:
 
 
 @command("intersect", dialect="m2")
+@in_quotients
 def intersect(*ideals: Ideal | List) -> Ideal:
     """intersect(I, J, ...) (or intersect {I, J, ...}): the intersection."""
     if len(ideals) == 1 and isinstance(ideals[0], List):
@@ -275,7 +288,7 @@ def intersect(*ideals: Ideal | List) -> Ideal:
     if not ideals or not all(isinstance(I, Ideal) for I in ideals):
         raise MechTypeError("intersect takes ideals")
     _global(ideals[0], "intersect")
-    return _reduced(ideals[0], K.intersect(*[I.nonzero() for I in ideals], ring=ideals[0].ring))
+    return _reduced(ideals[0], K.intersect(*[_lift(I) for I in ideals], ring=ideals[0].ring))
 
 
 def _dim(I: Ideal) -> int:
@@ -322,17 +335,18 @@ def degree(I: Ideal | Poly) -> Any:
 
 
 @command("radical", dialect="m2")
+@in_quotients
 def radical(I: Ideal) -> Ideal:
     """radical I: the radical of I."""
     from ..kernel.primdec import radical as kernel_radical
     _global(I, "radical")
-    return _reduced(I, kernel_radical(I.nonzero(), ring=I.ring))
+    return _reduced(I, kernel_radical(_lift(I), ring=I.ring))
 
 
 def _primes(I: Ideal) -> list[Ideal]:
     if I.ring.order.is_global:
         from ..kernel.primdec import min_ass_gtz
-        primes = min_ass_gtz(I.nonzero(), I.ring)
+        primes = min_ass_gtz(_lift(I), I.ring)
     else:
         from ..kernel.local import min_ass_local
         primes = min_ass_local(I.nonzero(), I.ring)
@@ -340,12 +354,29 @@ def _primes(I: Ideal) -> list[Ideal]:
 
 
 @command("minimalPrimes", dialect="m2")
-def minimal_primes(I: Ideal) -> List:
-    """minimalPrimes I (also decompose I): the minimal primes of I."""
-    return List(_primes(I))
+@in_quotients
+def minimal_primes(ctx, I: Ideal) -> List:
+    """minimalPrimes I (also decompose I, minprimes I): the minimal primes of I (with
+    CodimensionLimit => c: those of codimension at most c)."""
+    primes = _primes(I)
+    limit = ctx.m2_options.get("CodimensionLimit")
+    if limit is not None:
+        n = _lift_dim(I)
+        primes = [P for P in primes if n - K.dimension(_lift(P), ring=I.ring) <= limit]
+    return List(primes)
+
+
+minimal_primes.m2_options = ("CodimensionLimit",)
+
+
+def _lift_dim(I: Ideal) -> int:
+    """The dimension of the ring of I (of R/Q in a quotient ring)."""
+    q = _quotient_of(I.ring)
+    return q.dimension() if q is not None else I.ring.nvars
 
 
 @command("decompose", dialect="m2")
+@in_quotients
 def decompose(I: Ideal) -> List:
     """decompose I: the minimal primes of I."""
     return List(_primes(I))
@@ -354,18 +385,20 @@ def decompose(I: Ideal) -> List:
 def _primdec(I: Ideal) -> list[tuple[list[Poly], list[Poly]]]:
     if I.ring.order.is_global:
         from ..kernel.primdec import primdec_gtz
-        return primdec_gtz(I.nonzero(), I.ring)
+        return primdec_gtz(_lift(I), I.ring)
     from ..kernel.local import primdec_local
     return primdec_local(I.nonzero(), I.ring)
 
 
 @command("primaryDecomposition", dialect="m2")
+@in_quotients
 def primary_decomposition(I: Ideal) -> List:
     """primaryDecomposition I: primary ideals whose intersection is I."""
     return List([_reduced(I, q) for q, _ in _primdec(I)])
 
 
 @command("associatedPrimes", dialect="m2")
+@in_quotients
 def associated_primes(I: Ideal) -> List:
     """associatedPrimes I: the associated primes of I."""
     out: list[Ideal] = []
@@ -377,19 +410,21 @@ def associated_primes(I: Ideal) -> List:
 
 
 @command("isPrime", dialect="m2")
+@in_quotients
 def is_prime(I: Ideal) -> bool:
     """isPrime I: whether I is a prime ideal."""
     _global(I, "isPrime")
     from ..kernel.primdec import is_prime as kernel_is_prime
-    return kernel_is_prime(I.nonzero(), I.ring)
+    return kernel_is_prime(_lift(I), I.ring)
 
 
 @command("isPrimary", dialect="m2")
+@in_quotients
 def is_primary(I: Ideal) -> bool:
     """isPrimary I: whether I is a primary ideal."""
     _global(I, "isPrimary")
     from ..kernel.primdec import is_primary as kernel_is_primary
-    return kernel_is_primary(I.nonzero(), I.ring)
+    return kernel_is_primary(_lift(I), I.ring)
 
 
 @command("tangentCone", dialect="m2")

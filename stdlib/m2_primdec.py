@@ -6,20 +6,26 @@ from __future__ import annotations
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.m2_values import MonomialIdeal
+from ..dsl.m2_rings import in_quotients
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List
 from ..kernel import Poly
 from ..kernel import ideals as K
-from .m2 import _global, _minimal, _primdec, _primes, _reduced, associated_primes
+from .m2 import _global, _minimal, _primdec, _reduced, associated_primes, minimal_primes
 
 
 @command("minprimes", dialect="m2")
-def minprimes(I: Ideal) -> List:
+@in_quotients
+def minprimes(ctx, I: Ideal) -> List:
     """minprimes I: the minimal primes of I (as minimalPrimes)."""
-    return List(_primes(I))
+    return minimal_primes(ctx, I)
+
+
+minprimes.m2_options = ("CodimensionLimit",)
 
 
 @command("ass", dialect="m2")
+@in_quotients
 def ass(I: Ideal) -> List:
     """ass I: the associated primes of I (as associatedPrimes)."""
     return associated_primes(I)
