@@ -346,3 +346,29 @@ def singular_locus(I: Ideal | Ring) -> Ring:
                 minors.append(d)
     S = quotient_ring(R, gens_ + minors)
     return S
+
+
+def _parts(R: M2Ring) -> list[set[int]]:
+    """The variables of each part of R's monomial order (a weight row: those of nonzero weight)."""
+    parts: list[set[int]] = []
+    covered = 0
+    for b in R.blocks:
+        if b.kind in ("c", "C"):
+            continue
+        if b.kind == "a":
+            parts.append({covered + j for j, w in enumerate(b.weights) if w})
+        else:
+            parts.append(set(range(covered, covered + b.size)))
+            covered += b.size
+    return parts
+
+
+@command("selectInSubring", dialect="m2")
+@in_quotients
+def select_in_subring(i: int, M: Matrix) -> Matrix:
+    """selectInSubring(i, M): the columns of M free of the variables of the first i parts of the
+    ring's monomial order (with an elimination order: the elements of the elimination ideal)."""
+    banned = set().union(*_parts(_owner(M.ring))[:i]) if i > 0 else set()
+    cols = [[M.get(r, c) for r in range(1, M.nrows + 1)] for c in range(1, M.ncols + 1)]
+    keep = [col for col in cols if not any(e[v] for p in col for e in p.terms for v in banned)]
+    return Matrix(M.ring, M.nrows, len(keep), [keep[c][r] for r in range(M.nrows) for c in range(len(keep))])
