@@ -169,7 +169,14 @@ class _Build(Transformer_NonRecursive):
             return A.BinOp(op, c[0], c[1], pos=_pos(meta))
         return build
 
-    add, sub, mul, div, mod, pow = _bin("+"), _bin("-"), _bin("*"), _bin("/"), _bin("%"), _bin("^")
+    add, sub, mul, mod, pow = _bin("+"), _bin("-"), _bin("*"), _bin("%"), _bin("^")
+
+    @v_args(meta=True)
+    def div(self, meta, c):
+        left, right = c
+        if isinstance(right, RingCons):  # as Macaulay2 reads it: ZZ/p[x] is (ZZ/p)[x]
+            return RingCons(A.BinOp("/", left, right.base, pos=_pos(meta)), right.items, pos=_pos(meta))
+        return A.BinOp("/", left, right, pos=_pos(meta))
     eq, ne, lt, le, gt, ge = _bin("=="), _bin("!="), _bin("<"), _bin("<="), _bin(">"), _bin(">=")
     same, not_same, idiv, bslash, compose = _bin("==="), _bin("=!="), _bin("//"), _bin("\\"), _bin("@@")
     and_op, or_op, quotient = _bin("&&"), _bin("or"), _bin(":")

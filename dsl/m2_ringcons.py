@@ -8,7 +8,7 @@ from typing import Any, Callable
 
 from . import ast as A
 from .errors import MechRuntimeError, MechSyntaxError, MechTypeError
-from .m2_ast import ListLit, Option, RingCons, Subscript
+from .m2_ast import ListLit, Option, RingCons, Subscript, SymbolLit
 from .m2_orders import order_blocks
 from .m2_rings import M2Ring, polynomial_ring
 from .m2_values import CoeffRing, Opt, Symbol
@@ -69,6 +69,8 @@ def variable_names(node: A.Expr, evaluate: Callable[[A.Expr], Any], show: Callab
     """The names of ring variables written as ``node``."""
     if isinstance(node, A.Name):
         return [node.id]
+    if isinstance(node, SymbolLit):
+        return [node.name]
     if isinstance(node, Subscript) and isinstance(node.base, A.Name):
         return [f"{node.base.id}_{show(evaluate(node.index))}"]
     if isinstance(node, ListLit):
@@ -77,6 +79,8 @@ def variable_names(node: A.Expr, evaluate: Callable[[A.Expr], Any], show: Callab
         lo, hi = variable_names(node.lo, evaluate, show), variable_names(node.hi, evaluate, show)
         return _range(lo[0], hi[0], node)
     v = evaluate(node)
+    if isinstance(v, Symbol):
+        return [v.name]
     if isinstance(v, (List, ExprList)) and all(isinstance(x, Symbol) for x in v.items):
         return [x.name for x in v.items]
     raise MechSyntaxError("a ring variable is a name, x_i, x_(i,j) or a range a..d, x_1..x_n", node.pos)
