@@ -210,8 +210,12 @@ def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable)
     if Fraction in (type(a), type(b)) and {type(a), type(b)} <= {int, Fraction} and op in "+-*/^":
         return _rational(op, a, b)
     v = fallback(op, a, b, ring.poly if ring is not None else (current.poly if current else None))
-    if isinstance(v, Poly) and ring is not None and ring.quotient is not None:
-        v = normal(v)
+    if isinstance(v, Poly) and ring is not None:
+        if ring.quotient is not None:
+            v = normal(v)
+        if ring.max_exponent is not None and any(k >= ring.max_exponent for e in v.terms for k in e):
+            raise MechRuntimeError(f"monomial overflow: exponents of this ring are below {ring.max_exponent} "
+                                   f"(MonomialSize)")
     return v
 
 

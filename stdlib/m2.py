@@ -55,6 +55,8 @@ def _polys(ctx, args: tuple, ring: Any = None) -> list[Poly]:
             out.extend(_polys(ctx, tuple(a.items), ring))
         elif isinstance(a, Matrix):
             out.extend(a.entries)
+        elif isinstance(a, Ideal):
+            out.extend(a.gens)
         elif isinstance(a, (Poly, Number)):
             out.append(lift_to(a, ring.owner) if a.ring is not ring and hasattr(ring, "owner") else
                        a.to_poly() if isinstance(a, Number) else a)
@@ -312,8 +314,12 @@ def dim(I: Ideal | Ring) -> int:
 
 @command("codim", dialect="m2")
 @in_quotients
-def codim(I: Ideal) -> int:
-    """codim I: the codimension of I (number of variables minus dim I; in R/Q: dim R/Q - dim R/I)."""
+def codim(I: Ideal | Ring) -> int:
+    """codim I: the codimension of I (number of variables minus dim I; in R/Q: dim R/Q - dim R/I);
+    codim R: that of R's ideal of relations (0 for a polynomial ring)."""
+    if isinstance(I, Ring):
+        q = _quotient_of(I.poly)
+        return I.poly.nvars - q.dimension() if q is not None else 0
     q = _quotient_of(I.ring)
     if q is not None:
         return q.dimension() - q.dimension(I.nonzero())
@@ -579,9 +585,10 @@ def append(L: List, x: Any) -> List:
 
 @command("join", dialect="m2")
 @in_quotients
-def join(*lists: List) -> List:
-    """join(L1, L2, ...): the concatenated lists."""
-    return List([x for L in lists for x in L.items])
+def join(*lists: List | ExprList) -> List | ExprList:
+    """join(L1, L2, ...): the concatenated lists (of the first one's kind)."""
+    items = [x for L in lists for x in L.items]
+    return type(lists[0])(items) if lists else List([])
 
 
 @command("length", dialect="m2")

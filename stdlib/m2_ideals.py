@@ -42,8 +42,18 @@ def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
 
 @command("vars", dialect="m2")
 @in_quotients
-def vars_(R: Ring) -> Matrix:
-    """vars R: the one-row matrix of R's variables."""
+def vars_(R: Ring | int | List | ExprList) -> Any:
+    """vars R: the one-row matrix of R's variables; vars n, vars(0..3): Macaulay2's symbols number
+    n (a..z, A..Z, then x_n...), values of the variables where a ring has them."""
+    if not isinstance(R, Ring):
+        from ..dsl.m2_values import Symbol
+        ns = [R] if type(R) is int else list(R.items)
+        out = []
+        for n in ns:
+            if type(n) is not int or n < 0:
+                raise MechRuntimeError("vars(n) takes numbers n >= 0")
+            out.append(Symbol(chr(97 + n) if n < 26 else chr(65 + n - 26) if n < 52 else f"x_{n - 52}"))
+        return out[0] if type(R) is int else type(R)(out)
     xs = gens(R).items
     return Matrix(R.poly, 1, len(xs), xs)
 
@@ -86,8 +96,16 @@ def monomial_curve_ideal(R: Ring, exps: List) -> Ideal:
 @command("trim", dialect="m2")
 @in_quotients
 def trim(I: Ideal) -> Ideal:
-    """trim I: I on fewer generators (minimal ones for homogeneous ideals)."""
-    return _minimal(I, list(_gb(I).gens))
+    """trim I: I on fewer generators, as Macaulay2 trims: the generators (normalized) by increasing
+    lead monomial, each kept unless it lies in the ideal of those kept before it."""
+    q = _quotient_of(I.ring)
+    cands = sorted({normalize(g): None for g in I.nonzero()}, key=lambda p: I.ring.order.key(p.lm()))
+    keep: list[Poly] = []
+    for g in cands:
+        basis = keep + (list(q.basis) if q is not None else [])
+        if not basis or not K.is_subset([g], basis, ring=I.ring):
+            keep.append(g)
+    return Ideal(I.ring, keep)
 
 
 @command("mingens", dialect="m2")

@@ -244,6 +244,8 @@ def take(L: Seq, n: int | List) -> Any:
 def drop(L: Seq, n: int | List) -> Any:
     """drop(L, n): without the first n entries (the last -n for n < 0); drop(L, {i, j}): without i..j."""
     items = _items(L)
+    if isinstance(n, List) and not (0 <= n.items[0] <= n.items[1] if all(type(k) is int for k in n.items) else False):
+        return _same_kind(L, items)  # Macaulay2: drop(L, {j,k}) with k < j or a negative index drops nothing
     a, b = _span(n, len(items), "drop")
     a, b = max(a, 0), max(b, 0)
     return _same_kind(L, items[:a] + items[b:])
