@@ -27,8 +27,8 @@ from .m2_parser import is_complete, parse
 from .m2_printing import to_string
 from .m2_ringcons import build_ring
 from .m2_rings import M2Ring, normal
-from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function, M2Set, Opt,
-                        Partial, RingMap, Symbol)
+from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function,
+                        M2Set, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 

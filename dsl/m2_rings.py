@@ -71,9 +71,7 @@ class M2Ring(Ring):
 def ring_name(r: Any, paren: bool) -> str:
     """A ring as part of another's description: its name, else its description (in parentheses
     when ``paren`` and it is not a plain word)."""
-    if r.name:
-        return r.name
-    text = r.describe()
+    text = r.name or r.describe()
     return f"({text})" if paren and not re.fullmatch(r"\w+", text) else text
 
 

@@ -164,8 +164,13 @@ def terms(f: Poly) -> List:
 
 @command("leadTerm", dialect="m2")
 @in_quotients
-def lead_term(f: Poly | Ideal) -> Any:
-    """leadTerm f: the largest term; leadTerm I: the matrix of the lead terms of a Gröbner basis."""
+def lead_term(f: Poly | Ideal | Matrix) -> Any:
+    """leadTerm f: the largest term; leadTerm I: the matrix of the lead terms of a Gröbner basis;
+    leadTerm M (one row): the lead term of each entry."""
+    if isinstance(f, Matrix):
+        if f.nrows != 1:
+            raise MechRuntimeError("leadTerm of a matrix with several rows (module elements) is not supported")
+        return Matrix(f.ring, 1, f.ncols, [g.lt() if not g.is_zero() else g for g in f.entries])
     if isinstance(f, Ideal):
         lts = [g.lt() for g in _gb(f).gens]
         return Matrix(f.ring, 1, len(lts), lts)
@@ -232,8 +237,14 @@ def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
 
 
 @command("substitute", dialect="m2")
-def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
-    """substitute(f, {x => a, ...}) or substitute(f, S): as sub."""
+def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> Any:
+    """substitute(f, {x => a, ...}), substitute(f, S): as sub; substitute(f, matrix {{a, b, ...}}):
+    the variables replaced by a, b, ..."""
+    if isinstance(where, Matrix):
+        from ..dsl.maps import map_value
+        if where.nrows != 1 or where.ncols != f.ring.nvars:
+            raise MechRuntimeError(f"substitute(f, M): M is one row of {f.ring.nvars} entries")
+        return map_value(f, list(where.entries), where.ring)
     return sub(ctx, f, where)
 
 
@@ -390,3 +401,39 @@ def select_in_subring(i: int, M: Matrix) -> Matrix:
     cols = [[M.get(r, c) for r in range(1, M.nrows + 1)] for c in range(1, M.ncols + 1)]
     keep = [col for col in cols if not any(e[v] for p in col for e in p.terms for v in banned)]
     return Matrix(M.ring, M.nrows, len(keep), [keep[c][r] for r in range(M.nrows) for c in range(len(keep))])
+
+
+# ---------------------------------------------------------------- rings and maps as values
+@command("target", dialect="m2")
+def target(f: RingMap) -> Ring:
+    """target f: the ring a map goes to."""
+    return f.target
+
+
+@command("source", dialect="m2")
+def source(f: RingMap) -> Ring:
+    """source f: the ring a map comes from."""
+    return f.source
+
+
+@command("coefficientRing", dialect="m2")
+@in_quotients
+def coefficient_ring(R: Ring) -> Any:
+    """coefficientRing R: the ring R's variables are over (QQ, ZZ/p, or the ring below in a tower)."""
+    return _owner(R.poly).ambient().base
+
+
+@command("baseName", dialect="m2")
+@in_quotients
+def base_name(x: Poly) -> Any:
+    """baseName x: the symbol of a variable."""
+    from ..dsl.m2_values import Symbol
+    i = _indices(x.ring, x)[0]
+    return Symbol(x.ring.names[i])
+
+
+@command("matrix", dialect="m2")
+@in_quotients
+def matrix_of_map(f: RingMap) -> Matrix:
+    """matrix f: the one-row matrix of the images of the source's variables."""
+    return Matrix(f.target.poly, 1, len(f.images), list(f.images))

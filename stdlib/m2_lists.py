@@ -23,7 +23,7 @@ from ..kernel import Poly
 #: the packages whose functions the dialect has (needsPackage accepts them)
 PACKAGES = {"PrimaryDecomposition", "MinimalPrimes", "Saturation", "Elimination", "LocalRings", "Core"}
 
-Seq = List | ExprList
+Seq = List | ExprList | str
 
 
 def key(x: Any) -> Any:
@@ -35,12 +35,14 @@ def key(x: Any) -> Any:
 def _items(L: Any) -> list:
     if isinstance(L, (List, ExprList, M2Set)):
         return list(L.items)
+    if isinstance(L, str):  # a string as the sequence of its characters
+        return list(L)
     raise MechTypeError(f"expected a list, not a {typeof(L)}")
 
 
 def _same_kind(L: Any, items: list) -> Any:
-    """``items`` as the kind of list ``L`` is (list, array or sequence)."""
-    if isinstance(L, ExprList):
+    """``items`` as the kind of list ``L`` is (list, array or sequence; a string: a sequence)."""
+    if isinstance(L, (ExprList, str)):
         return ExprList(items)
     return Array(items) if isinstance(L, Array) else List(items)
 
@@ -218,8 +220,8 @@ def flatten(L: Seq) -> Any:
 @command("reverse", dialect="m2")
 @in_quotients
 def reverse(L: Seq) -> Any:
-    """reverse L: the entries in the opposite order."""
-    return _same_kind(L, _items(L)[::-1])
+    """reverse L: the entries in the opposite order (a string reversed)."""
+    return L[::-1] if isinstance(L, str) else _same_kind(L, _items(L)[::-1])
 
 
 def _span(n: Any, length: int, what: str) -> tuple[int, int]:
@@ -421,6 +423,13 @@ def needs_package(name: str, *options: Any) -> None:
     if name not in PACKAGES:
         raise MechRuntimeError(f"the package {name} is not available in mech (available: {', '.join(sorted(PACKAGES))})")
     return NONE
+
+
+@command("identity", dialect="m2")
+@in_quotients
+def identity(x: Any) -> Any:
+    """identity x: x."""
+    return x
 
 
 # ---------------------------------------------------------------- numbers
