@@ -22,14 +22,16 @@ from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, Hash
                      WhileLoop)
 from .m2_control import M2Control
 from .m2_maps import apply_map
-from .m2_ops import SYMBOLS, m2_binary
+from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
 from .m2_ringcons import build_ring
-from .m2_rings import M2Ring, normal
+from .m2_rings import M2Ring, normal, owner
+from .maps import map_value
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function,
                         M2Set, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
+from ..kernel import Poly
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
 __all__ = ["M2Interpreter", "M2Function", "CommandRef", "parse", "run_m2_repl"]
@@ -264,8 +266,17 @@ class M2Interpreter(M2Control, Interpreter):
     def _eval_tuple(self, node: A.Tuple) -> Any:
         return ExprList(self._values(node.items)) if node.items else NONE
 
-    def _eval_ring(self, node: RingCons) -> Ring:
-        ring = build_ring(node, self.eval, to_string)
+    def _eval_ring(self, node: RingCons) -> Any:
+        base = self.eval(node.base)
+        if isinstance(base, Poly):  # f[a, b]: the variables of f's ring replaced by a, b
+            ring = owner(base)
+            values = self._values(node.items)
+            if ring is None or len(values) != ring.poly.nvars:
+                raise MechRuntimeError(f"f[a, b, ...] takes one value per variable of f's ring")
+            images = [lift_to(v, ring) if isinstance(v, (Poly, Number)) else normal(ring.poly.const(ring.poly.field(v)))
+                      for v in values]
+            return normal(map_value(base, images, ring.poly))
+        ring = build_ring(node, base, self.eval, to_string)
         self.use(ring)
         return ring
 

@@ -18,9 +18,8 @@ from .values import ExprList, List, to_int, typeof
 OPTIONS = ("MonomialOrder", "Global", "Degrees", "Weights", "MonomialSize", "Join")
 
 
-def build_ring(node: RingCons, evaluate: Callable[[A.Expr], Any], show: Callable[[Any], str]) -> M2Ring:
-    """The ring of ``node`` (``evaluate`` evaluates a subexpression, ``show`` prints a value)."""
-    base = evaluate(node.base)
+def build_ring(node: RingCons, base: Any, evaluate: Callable[[A.Expr], Any], show: Callable[[Any], str]) -> M2Ring:
+    """The ring of ``node`` over ``base`` (``evaluate`` evaluates a subexpression, ``show`` prints a value)."""
     if not isinstance(base, (CoeffRing, M2Ring)):
         raise MechTypeError(f"a polynomial ring is built over a ring (QQ, ZZ/p or a polynomial ring), "
                             f"not over a {typeof(base)}")
