@@ -14,7 +14,7 @@ print toString ({1,2}/(i->i+1))
 print toString (ZZ/101[t_0..t_4])
 Q = R/ideal(x^2, y);
 print toString ideal Q
-T2 = QQ[x,y];
-g = x^3 + 99*y;
+T2 = QQ[u,v];
+g = u^3 + 99*v;
 print toString (g[1000,3])
-print toString (g[y,x])
+print toString (g[v,u])
