@@ -397,7 +397,7 @@ class M2Interpreter(M2Control, Interpreter):
 
 
 #: options of Macaulay2's functions that do not change the value (how it is computed, what is printed)
-NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check"}
+NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check", "Unmixed"}
 
 
 def _options(cmd: Any, args: list[Any]) -> tuple[list[Any], dict[str, Any]]:

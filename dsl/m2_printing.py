@@ -115,8 +115,9 @@ def to_string(v: Any) -> str:
         return f"{to_string(v.key)} => {to_string(v.value)}"
     if isinstance(v, (Symbol, IndexedTable)):
         return v.name
-    if isinstance(v, M2Set):
-        return "set {" + ", ".join(to_string(x) for x in v.items) + "}"
+    if isinstance(v, M2Set):  # in the order Macaulay2 shows small sets: numbers by value, others by text
+        texts = sorted(((0, x, "") if type(x) is int else (1, 0, to_string(x)) for x in v.items))
+        return "set {" + ", ".join(str(n) if k == 0 else t for k, n, t in texts) + "}"
     if isinstance(v, Tally):
         return "new Tally from {" + ", ".join(f"{to_string(v.items[k])} => {n}" for k, n in v.counts.items()) + "}"
     if isinstance(v, Factored):

@@ -12,6 +12,7 @@ from .m2_ast import ListLit, Option, RingCons, Subscript, SymbolLit
 from .m2_orders import order_blocks
 from .m2_rings import M2Ring, polynomial_ring
 from .m2_values import CoeffRing, Opt, Symbol
+from ..kernel import Poly
 from .values import ExprList, List, to_int, typeof
 
 #: the ring options mech reads
@@ -56,6 +57,8 @@ def _degrees(spec: Any, n: int) -> tuple[int, ...]:
     for d in items or []:
         if isinstance(d, List) and len(d.items) == 1:
             d = d.items[0]
+        if isinstance(d, List):
+            raise MechRuntimeError("multigraded rings (Degrees => {{...}, ...}) are not supported by mech")
         if type(d) is not int or d <= 0:
             raise MechRuntimeError("Degrees => {...} takes positive integers (one degree per variable)")
         out.append(d)
@@ -80,9 +83,14 @@ def variable_names(node: A.Expr, evaluate: Callable[[A.Expr], Any], show: Callab
     v = evaluate(node)
     if isinstance(v, Symbol):
         return [v.name]
-    if isinstance(v, (List, ExprList)) and all(isinstance(x, Symbol) for x in v.items):
-        return [x.name for x in v.items]
+    items = v.items if isinstance(v, (List, ExprList)) else [v]
+    if all(isinstance(x, Symbol) or _variable(x) for x in items):  # symbols, or variables of a ring (their names)
+        return [x.name if isinstance(x, Symbol) else x.ring.names[x.lm().index(1)] for x in items]
     raise MechSyntaxError("a ring variable is a name, x_i, x_(i,j) or a range a..d, x_1..x_n", node.pos)
+
+
+def _variable(x: Any) -> bool:
+    return isinstance(x, Poly) and len(x.terms) == 1 and sum(x.lm()) == 1 and x.lc() == x.ring.field.one
 
 
 def _range(x: str, y: str, node: A.Expr) -> list[str]:

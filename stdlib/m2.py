@@ -30,7 +30,7 @@ from .standard import normalize, standard_basis
 @in_quotients
 def use(ctx, R: Ring) -> Ring:
     """use R: make R's variables visible (assigning a ring to a name does this too)."""
-    ctx.ring = R
+    ctx.use(R)
     return R
 
 
@@ -514,15 +514,13 @@ def _operator(P: Poly, f: Poly) -> Poly:
 @command("sub", dialect="m2")
 def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
     """sub(f, {x => a, y => b}): substitute for the variables; sub(f, S): the same polynomials
-    (variables matched by name) in the ring S."""
+    (variables matched by name, the others sent to 0) in the ring S."""
     ring = f.ring
     if isinstance(where, Ring):
         target = where.poly
         images = []
-        for name in ring.names:
-            if name not in target.names:
-                raise MechRuntimeError(f"sub: the ring has no variable {name}")
-            images.append(target.gen(target.names.index(name)))
+        for name in ring.names:  # as map(S, R): variables S lacks go to 0
+            images.append(target.gen(target.names.index(name)) if name in target.names else target.zero())
     else:
         target = ring
         images = [ring.gen(i) for i in range(ring.nvars)]

@@ -418,11 +418,12 @@ def error(*parts: Any) -> None:
 
 
 @command("needsPackage", dialect="m2")
-def needs_package(name: str, *options: Any) -> None:
-    """needsPackage "Name": nothing to load for the packages whose functions mech has."""
+def needs_package(name: str, *options: Any) -> Any:
+    """needsPackage "Name": the package (its name; nothing to load for the packages whose functions mech has)."""
     if name not in PACKAGES:
         raise MechRuntimeError(f"the package {name} is not available in mech (available: {', '.join(sorted(PACKAGES))})")
-    return NONE
+    from ..dsl.m2_values import Symbol
+    return Symbol(name)
 
 
 @command("identity", dialect="m2")

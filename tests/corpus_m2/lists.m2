@@ -31,3 +31,9 @@ print toString subsets({1,2,3}, 2)
 print toString apply({1,2},{3,4}, (a,b) -> a*b)
 print toString sum((ideal(x,y))_*)
 print toString max(x, y)
+print toString set {3,1,2}
+print toString set {"b","a"}
+R=QQ[x,y];
+print toString set {ideal(y), ideal(x)}
+needsPackage "MinimalPrimes";
+print toString needsPackage "MinimalPrimes"

@@ -15,6 +15,12 @@ print toString (ZZ/101[t_0..t_4])
 Q = R/ideal(x^2, y);
 print toString ideal Q
 T2 = QQ[u,v];
-g = u^3 + 99*v;
-print toString (g[1000,3])
-print toString (g[v,u])
+gg = u^3 + 99*v;
+print toString (gg[1000,3])
+print toString (gg[v,u])
+RR1 = QQ[e_1, e_2, e_3, e_4, g_1, g_2, g_3, g_4, r];
+I = ideal(r^2-3,e_2^2-3*e_3^2,e_1^2+6*e_3^2+e_4^2);
+RR2 = QQ[support I];
+I1 = sub(I,RR2);
+print toString I1
+print toString gens RR2
