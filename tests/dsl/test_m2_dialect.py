@@ -73,3 +73,26 @@ def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> 
     f.write_text(code)
     out = subprocess.run([M2 or "M2", "--script", str(f)], capture_output=True, text=True, timeout=120)
     assert out.stdout == expected
+
+
+@pytest.mark.parametrize("code, message", [
+    ("R = ZZ[x]", "polynomial rings over ZZ are not supported"),
+    ("R = QQ[x,y]; S = R/ideal(x^2); factor(x+y)", "factor on elements of a quotient ring R/I is not supported"),
+    ("R = QQ[x]; saturate(ideal(x), DegreeLimit => 2)", "saturate: the option DegreeLimit is not supported"),
+    ("R = QQ[x]; y^2", "unknown identifier 'y'"),
+    ("R = QQ[a,b, Degrees => {{1,0},{0,1}}]", "multigraded rings"),
+    ("C = QQ[a, MonomialSize => 8]; a^200", "monomial overflow"),
+    ("needsPackage \"NoSuchPackage\"", "the package NoSuchPackage is not available"),
+    ("R = QQ[x]; assert(1 == 2)", "assertion failed"),
+])
+def test_named_refusals(code: str, message: str) -> None:
+    """What mech lacks stops with a message naming it (never a wrong value or a traceback)."""
+    from mech.dsl.errors import MechError
+    with pytest.raises(MechError) as e:
+        run(code)
+    assert message in e.value.format()
+
+
+def test_script_and_session_output() -> None:
+    """A session prints oN = value for statements without ';' (as M2's REPL); scripts do not."""
+    assert run("R = QQ[x]\nx^2 + 1\nprint 3") == "o1 = R\no2 = x^2+1\n3\n"
