@@ -9,10 +9,9 @@ from fractions import Fraction
 from typing import Any, Callable, Optional
 
 from ..kernel import Poly
-from . import ops
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_rings import M2Ring, common_ring, normal, owner, promote, quotient_ring
-from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, Symbol
+from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
 #: Macaulay2 symbols mech knows (option names and monomial orders)
@@ -232,4 +231,4 @@ def _rational(op: str, a: Fraction | int, b: Fraction | int) -> Fraction | int:
     return int(v) if v.denominator == 1 else v
 
 
-__all__ = ["SYMBOLS", "m2_binary", "ring_of", "lift_to", "strictly_equal", "Array"]
+__all__ = ["SYMBOLS", "m2_binary", "ring_of", "lift_to", "strictly_equal"]

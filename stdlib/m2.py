@@ -15,7 +15,7 @@ from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_printing import to_string
-from ..dsl.m2_values import FUNCTIONS, Factored, Opt
+from ..dsl.m2_values import Factored, Opt
 from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, normal
 from ..dsl.registry import command, operator
@@ -549,60 +549,6 @@ def _unit(f: Poly, unit: Any) -> Any:
 
 
 # ---------------------------------------------------------------- lists and output
-@command("toString", dialect="m2")
-@in_quotients
-def to_string_cmd(x: Any) -> str:
-    """toString x: the value as one line of text."""
-    return to_string(x)
-
-
-@command("print", dialect="m2")
-@in_quotients
-def print_(ctx, x: Any) -> None:
-    """print x: print the value (one line, as toString x)."""
-    ctx.write(to_string(x) + "\n")
-
-
-@command("first", dialect="m2")
-@in_quotients
-def first(L: List | ExprList) -> Any:
-    """first L: the first entry."""
-    if not L.items:
-        raise MechRuntimeError("first: the list is empty")
-    return L.items[0]
-
-
-@command("last", dialect="m2")
-@in_quotients
-def last(L: List | ExprList) -> Any:
-    """last L: the last entry."""
-    if not L.items:
-        raise MechRuntimeError("last: the list is empty")
-    return L.items[-1]
-
-
-@command("append", dialect="m2")
-@in_quotients
-def append(L: List, x: Any) -> List:
-    """append(L, x): L with x added at the end."""
-    return List([*L.items, x])
-
-
-@command("join", dialect="m2")
-@in_quotients
-def join(*lists: List | ExprList) -> List | ExprList:
-    """join(L1, L2, ...): the concatenated lists (of the first one's kind)."""
-    items = [x for L in lists for x in L.items]
-    return type(lists[0])(items) if lists else List([])
-
-
-@command("length", dialect="m2")
-@in_quotients
-def length(L: List | ExprList) -> int:
-    """length L: the number of entries."""
-    return len(L.items)
-
-
 @operator("%", dialect="m2")
 def remainder(f: Any, I: Any) -> Any:
     """``f % I``: the normal form of f modulo a Gröbner basis of I (other operands: Singular's %)."""

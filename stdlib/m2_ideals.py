@@ -9,11 +9,10 @@ from __future__ import annotations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
-from ..dsl.m2_printing import to_string
 from ..dsl.m2_rings import M2Ring, in_quotients, normal, quotient_ring
 from ..dsl.m2_values import MonomialIdeal, RingMap
 from ..dsl.registry import command
-from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
+from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
 from .m2 import _first_ring, _gb, _indices, _minimal, _polys, _quotient_of, gens, sub
@@ -44,7 +43,7 @@ def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
 @in_quotients
 def vars_(R: Ring | int | List | ExprList) -> Any:
     """vars R: the one-row matrix of R's variables; vars n, vars(0..3): Macaulay2's symbols number
-    n (a..z, A..Z, then x_n...), values of the variables where a ring has them."""
+    n (a..z, A..Z, then x0, x1, ...), values of the variables where a ring has them."""
     if not isinstance(R, Ring):
         from ..dsl.m2_values import Symbol
         ns = [R] if type(R) is int else list(R.items)
@@ -52,7 +51,7 @@ def vars_(R: Ring | int | List | ExprList) -> Any:
         for n in ns:
             if type(n) is not int or n < 0:
                 raise MechRuntimeError("vars(n) takes numbers n >= 0")
-            out.append(Symbol(chr(97 + n) if n < 26 else chr(65 + n - 26) if n < 52 else f"x_{n - 52}"))
+            out.append(Symbol(chr(97 + n) if n < 26 else chr(65 + n - 26) if n < 52 else f"x{n - 52}"))
         return out[0] if type(R) is int else type(R)(out)
     xs = gens(R).items
     return Matrix(R.poly, 1, len(xs), xs)
@@ -244,6 +243,9 @@ def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> An
         from ..dsl.maps import map_value
         if where.nrows != 1 or where.ncols != f.ring.nvars:
             raise MechRuntimeError(f"substitute(f, M): M is one row of {f.ring.nvars} entries")
+        if f.ring.field.characteristic and all(p.is_constant() for p in where.entries):
+            raise MechRuntimeError("substitute(f, matrix of integers): the value is an integer of ZZ in Macaulay2, "
+                                   "which mech has no ring for")
         return map_value(f, list(where.entries), where.ring)
     return sub(ctx, f, where)
 

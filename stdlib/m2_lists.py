@@ -238,7 +238,8 @@ def take(L: Seq, n: int | List) -> Any:
     """take(L, n): the first n entries (the last -n for n < 0); take(L, {i, j}): entries i..j."""
     items = _items(L)
     a, b = _span(n, len(items), "take")
-    return _same_kind(L, items[max(a, 0):max(b, 0)])
+    part = items[max(a, 0):max(b, 0)]
+    return List(part) if isinstance(L, str) else _same_kind(L, part)
 
 
 @command("drop", dialect="m2")
@@ -398,6 +399,61 @@ def max_(*xs: Any) -> Any:
 def min_(*xs: Any) -> Any:
     """min L (or min(a, b, ...)): the smallest entry."""
     return _extreme(xs, -1, "min")
+
+
+# ---------------------------------------------------------------- entries and output
+@command("toString", dialect="m2")
+@in_quotients
+def to_string_cmd(x: Any) -> str:
+    """toString x: the value as one line of text."""
+    return to_string(x)
+
+
+@command("print", dialect="m2")
+@in_quotients
+def print_(ctx, x: Any) -> None:
+    """print x: print the value (one line, as toString x)."""
+    ctx.write(to_string(x) + "\n")
+
+
+@command("first", dialect="m2")
+@in_quotients
+def first(L: List | ExprList) -> Any:
+    """first L: the first entry."""
+    if not L.items:
+        raise MechRuntimeError("first: the list is empty")
+    return L.items[0]
+
+
+@command("last", dialect="m2")
+@in_quotients
+def last(L: List | ExprList) -> Any:
+    """last L: the last entry."""
+    if not L.items:
+        raise MechRuntimeError("last: the list is empty")
+    return L.items[-1]
+
+
+@command("append", dialect="m2")
+@in_quotients
+def append(L: List, x: Any) -> List:
+    """append(L, x): L with x added at the end."""
+    return List([*L.items, x])
+
+
+@command("join", dialect="m2")
+@in_quotients
+def join(*lists: List | ExprList) -> List | ExprList:
+    """join(L1, L2, ...): the concatenated lists (of the first one's kind)."""
+    items = [x for L in lists for x in L.items]
+    return type(lists[0])(items) if lists else List([])
+
+
+@command("length", dialect="m2")
+@in_quotients
+def length(L: List | ExprList) -> int:
+    """length L: the number of entries."""
+    return len(L.items)
 
 
 # ---------------------------------------------------------------- programs

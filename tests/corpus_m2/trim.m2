@@ -16,3 +16,8 @@ C = QQ[a..d,MonomialSize=>8,MonomialOrder=>GRevLex];
 print (try a^(2^15-1) else "failed")
 print toString (a^(2^7-1))
 print toString ideal monomialIdeal(a^2, a*b)
+print toString vars(52)
+print toString take("Hello", 5)
+R5 = ZZ/101[x,y,z];
+f = x^3+3*y^2*z+2*z^3;
+print toString substitute(f,{x=>-1,y=>2,z=>5})
