@@ -381,8 +381,9 @@ def mech_lacks(results: list[Result], info: dict) -> Counter:
             uses[id(r)] = {t for t in toks if info["globals"].get(t) == "function" and t not in defined}
     names = set().union(*uses.values()) if uses else set()
     probe = ("import sys\nfrom mech import MechError, Session\ns = Session(dialect='m2')\n"
-             "for n in sys.stdin.read().split():\n    try:\n        s.execute(n + ';')\n"
-             "    except MechError:\n        print(n)\n")
+             "for n in sys.stdin.read().split():\n    try:\n        v = s.eval(n)\n"
+             "    except MechError:\n        v = None\n"
+             "    if v is None or type(v).__name__ == 'Symbol':  # a name without a value\n        print(n)\n")
     with tempfile.TemporaryDirectory() as tmp:
         lacking = set(run([sys.executable, "-c", probe], "\n".join(sorted(names)), 300, tmp)[1].split())
     return Counter(n for used in uses.values() for n in used & lacking)
