@@ -19,8 +19,9 @@ ZZ; ``R^n``), a package internal (a name of the package's private dictionary), w
 top-level values is of a class of ``OUT_CLASSES`` (modules...), when Macaulay2 1.21 itself fails or
 times out on it, or when it is a MinimalPrimes ``BENCHMARK`` test.
 
-Running.  Both systems get the same code.  mech runs it as a script (``mech --dialect m2``), printing
-``oN = value`` (Macaulay2's ``toString``) for the N-th statement not ending in ``;``.  Macaulay2
+Running.  Both systems get the same code.  mech reads it from standard input (``mech --dialect m2 -``,
+as ``M2 < file``), printing ``oN = value`` (Macaulay2's ``toString``) for the N-th statement not
+ending in ``;``.  Macaulay2
 runs it in its read-eval-print loop (standard input; it numbers statements as mech does) in an
 output mode (``M2_MODE``) printing ``toString`` of the same statements, and judges mech's text:
 when it differs from its own, Macaulay2 reads mech's text back in the value's ring and compares the
@@ -185,16 +186,14 @@ def m2_info(timeout: float) -> dict:
 
 def run_mech(code: str, timeout: float, tmp: str) -> dict:
     """mech's values (statement number -> text), printed lines, first error, exit status."""
-    path = Path(tmp) / "case.m2"
-    path.write_text(code + "\n")
-    rc, out, err, secs, timed_out = run(MECH + [str(path)], "", timeout, tmp)
+    rc, out, err, secs, timed_out = run(MECH + ["-"], code + "\n", timeout, tmp)  # standard input: oN = ...
     values: dict[int, str] = {}
     prints: list[str] = []
     for line in out.splitlines():
         m = re.match(r"o(\d+) = (.*)$", line)
         if m:
             values[int(m.group(1))] = m.group(2)
-        elif not line.startswith("-- used "):  # the time used, after `time`
+        elif not re.match(r" *-- (used |[0-9.e-]+s elapsed)", line):  # the time used, after `time`
             prints.append(line)
     return {"values": values, "prints": prints, "rc": rc, "err": err, "seconds": secs, "timeout": timed_out}
 
@@ -382,8 +381,9 @@ def mech_lacks(results: list[Result], info: dict) -> Counter:
             uses[id(r)] = {t for t in toks if info["globals"].get(t) == "function" and t not in defined}
     names = set().union(*uses.values()) if uses else set()
     probe = ("import sys\nfrom mech import MechError, Session\ns = Session(dialect='m2')\n"
-             "for n in sys.stdin.read().split():\n    try:\n        s.execute(n + ';')\n"
-             "    except MechError:\n        print(n)\n")
+             "for n in sys.stdin.read().split():\n    try:\n        v = s.eval(n)\n"
+             "    except MechError:\n        v = None\n"
+             "    if v is None or type(v).__name__ == 'Symbol':  # a name without a value\n        print(n)\n")
     with tempfile.TemporaryDirectory() as tmp:
         lacking = set(run([sys.executable, "-c", probe], "\n".join(sorted(names)), 300, tmp)[1].split())
     return Counter(n for used in uses.values() for n in used & lacking)

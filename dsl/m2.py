@@ -1,61 +1,43 @@
 """The Macaulay2 dialect's interpreter: mech's interpreter with Macaulay2's name rules (global
-variables of any type; assigning a ring makes its variables visible, as Macaulay2's ``use``), its
-rings and monomial orders (``QQ[x,y, MonomialOrder => Lex]``), its commands (registered with
-``dialect="m2"``, e.g. by ``stdlib/m2.py``), its operators (``I : J``, ``f % I`` and ``==`` on
-ideals, registered by the same library with :func:`mech.dsl.registry.operator`) and its output
-(``m2_printing.py``: ``o1 = ...`` for statements not ending in ``;``).  The tree and the parser
-are :mod:`mech.dsl.m2_ast` and :mod:`mech.dsl.m2_parser`.
+variables of any type; making or assigning a ring makes its variables visible, as Macaulay2's
+``use``; names without a value are symbols), its rings (:mod:`mech.dsl.m2_rings`: ``QQ[x,y]``,
+``ZZ/p[x]``, towers, ``R/I``), its commands (registered with ``dialect="m2"``, e.g. by
+``stdlib/m2.py``), its operators (:mod:`mech.dsl.m2_ops`, and ``I : J``, ``f % I``, ``==`` on ideals
+registered by the library with :func:`mech.dsl.registry.operator`) and its output (statements not
+ending in ``;`` print ``oN = ...`` in the REPL and in ``echo`` mode; a script prints only what it
+``print``s, as ``M2 --script``).  The tree and the parser are :mod:`mech.dsl.m2_ast` and
+:mod:`mech.dsl.m2_parser`; control flow is :mod:`mech.dsl.m2_control`.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-from fractions import Fraction
 from typing import Any, Optional
 
 from . import ast as A
 from . import ops
-from .errors import MechError, MechNameError, MechRuntimeError, MechSyntaxError, MechTypeError, Source
+from .errors import MechError, MechNameError, MechRuntimeError, MechTypeError, Source
 from .interpreter import Interpreter
-from .m2_ast import (BreakExpr, Coeffs, ForLoop, Function, IfExpr, Length, ListLit, Option, ReturnExpr, RingCons,
-                     Seq, SetVar, Statement, Subscript, WhileLoop)
-from .m2_orders import order_blocks
+from .limits import LimitExceeded, limit_error
+from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, HashHas, IfExpr, Length, ListLit,
+                     Option, ReturnExpr, RingCons, Seq, SetVar, Statement, Subscript, SymbolLit, TimeExpr, TryExpr,
+                     WhileLoop)
+from .m2_control import M2Control
+from .m2_maps import apply_map
+from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
-from .m2_printing import Opt, Symbol, to_string
-from .rings import make_ring
-from .scopes import Frame, Var
-from .signals import BreakSignal, ReturnSignal
-from .values import NONE, ExprList, Ideal, List, Matrix, Number, OrderBlock, Ring, to_int, typeof
+from .m2_printing import to_string
+from .m2_ringcons import build_ring
+from .m2_rings import M2Ring, normal, owner
+from .maps import map_value
+from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function,
+                        M2Set, Opt, Partial, RingMap, Symbol)
+from .scopes import Var
+from ..kernel import Poly
+from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
 __all__ = ["M2Interpreter", "M2Function", "CommandRef", "parse", "run_m2_repl"]
 
 
-
-#: Macaulay2 symbols mech knows (option names and monomial orders)
-SYMBOLS = {"MonomialOrder", "Lex", "GRevLex", "GLex", "RevLex", "Weights", "Eliminate", "Global", "Degrees",
-           "Variables"}
-
-
-@dataclass(eq=False)
-class M2Function:
-    """A function ``(a, b) -> body``, named after the variable it was first assigned to."""
-    params: list[str]
-    body: A.Expr
-    source: Source
-    captured: dict  # the enclosing function's variables when this one was made
-    name: str = "-*Function*-"
-
-
-@dataclass(eq=False)
-class CommandRef:
-    """A command used as a value (``apply(L, dim)``)."""
-    command: Any
-
-    @property
-    def name(self) -> str:
-        return self.command.name
-
-
-class M2Interpreter(Interpreter):
+class M2Interpreter(M2Control, Interpreter):
     """mech's interpreter reading the Macaulay2 dialect: same values, kernel and evaluation of the
     shared nodes; Macaulay2's variables (global, untyped), commands, operators and output."""
 
@@ -64,17 +46,23 @@ class M2Interpreter(Interpreter):
         self.commands = self.registry.DIALECTS.get("m2", {})
         self.operators = self.registry.OPERATORS.get("m2", {})
         self.count = 0  # the number N of the statement, as Macaulay2's oN
+        self.symbols: dict[str, Any] = {}  # the variables of the rings in use, by name
+        self.m2_options: dict[str, Any] = {}  # the options Name => v of the command running
         self._exec[Statement] = self._exec_statement
         self._eval.update({
-            Coeffs: lambda n: n, ListLit: self._eval_list, RingCons: self._eval_ring, Option: self._eval_option,
-            Subscript: self._eval_subscript, Length: self._eval_length, SetVar: self._eval_set,
-            Function: self._eval_function, Seq: self._eval_seq,
-            ForLoop: self._eval_for, WhileLoop: self._eval_while, IfExpr: self._eval_if,
-            ReturnExpr: self._eval_return, BreakExpr: self._eval_break,
+            Coeffs: lambda n: CoeffRing(n.characteristic, f"ZZ/{n.characteristic}"), ListLit: self._eval_list,
+            RingCons: self._eval_ring, Option: self._eval_option, Subscript: self._eval_subscript,
+            Length: self._eval_length, SetVar: self._eval_set, Function: self._eval_function, Seq: self._eval_seq,
+            ForLoop: self._eval_for, WhileLoop: self._eval_while, IfExpr: self._eval_if, TryExpr: self._eval_try,
+            TimeExpr: self._eval_time, ReturnExpr: self._eval_return, BreakExpr: self._eval_break,
+            Generators: self._eval_generators, HashHas: self._eval_hash_has, Dot: self._eval_dot,
+            SymbolLit: lambda n: Symbol(n.name),
         })
 
     #: the REPL numbers inputs (``i3 :`` and its ``o3 = ...``), scripts their statements
     numbers_inputs = False
+    #: print ``oN = value`` for statements not ending in ``;`` (off: as ``M2 --script``)
+    echo = True
 
     def execute(self, text: str, name: str = "<string>") -> None:
         source = Source(name, text)
@@ -88,6 +76,8 @@ class M2Interpreter(Interpreter):
         v = self.eval(s.expr)
         if not s.silent and v is not NONE:
             self.last = v
+            if not self.echo:
+                return
             blank = "\n" if self.numbers_inputs else ""  # the shell sets outputs off as Macaulay2 does
             text = f"{blank}o{self.count} = {to_string(v)}\n"
             rich = {}
@@ -104,6 +94,13 @@ class M2Interpreter(Interpreter):
             raise MechRuntimeError("no ring active: define one first, e.g. R = QQ[x,y,z]")
         return self.ring
 
+    def use(self, ring: M2Ring) -> None:
+        """Make ``ring`` current and its variables the values of their names."""
+        self.ring = ring
+        for i, name in enumerate(ring.names):
+            self.globals.pop(name, None)  # as Macaulay2: the name's value is now the variable
+            self.symbols[name] = normal(ring.poly.gen(i))
+
     # ------------------------------------------------------------ names
     def lookup(self, name: str) -> Optional[Var]:
         frame = self.frames[-1]
@@ -111,21 +108,24 @@ class M2Interpreter(Interpreter):
             return frame.vars[name]
         return self.globals.get(name)
 
-    def set_var(self, name: str, value: Any) -> None:
-        """``name = value``: a local of the running function if it has one, else a global."""
+    def set_var(self, name: str, value: Any, local: bool = False) -> None:
+        """``name = value``: a local of the running function if it has one (or ``local``: ``:=``), else a global."""
         if isinstance(value, Ring):
             if not value.name:
                 value.name = name
-            self.ring = value
+            self.use(value)
         elif isinstance(value, M2Function) and value.name == "-*Function*-":
             value.name = name
+        elif isinstance(value, CoeffRing) and value.characteristic and not value.name.isidentifier():
+            value.name = name
         frame = self.frames[-1]
-        table = frame.vars if frame.level and name in frame.vars else self.globals
+        table = frame.vars if frame.level and (local or name in frame.vars) else self.globals
         var = table.get(name)
         if var is None:
             table[name] = Var(name, "def", value, None, frame.level if table is frame.vars else 0)
         else:
             var.value = value
+        self.symbols.pop(name, None) if table is self.globals else None
 
     def declare(self, name: str, typ: str, value: Any) -> Var:
         """A variable set from Python (``session[name] = value``): Macaulay2's variables are untyped."""
@@ -137,34 +137,47 @@ class M2Interpreter(Interpreter):
         var = self.lookup(name)
         if var is not None:
             return var.value
-        ring = self.ring
-        if ring is not None and ring.var_index(name) is not None:
-            return ring.poly.gen(ring.var_index(name))
+        if name in self.symbols:
+            return self.symbols[name]
         if name in ("true", "false"):
             return name == "true"
         if name == "null":
             return NONE
-        if name in SYMBOLS:
-            return Symbol(name)
-        if name in self.commands:
+        if name == "QQ":
+            return QQ_RING
+        if name == "ZZ":
+            return ZZ_RING
+        if name in self.commands and name not in SYMBOLS:
             return CommandRef(self.commands[name])
-        raise MechNameError(f"unknown identifier '{name}'" + ("" if ring else " (no ring is active)"))
+        return Symbol(name)
 
     def _eval_set(self, node: SetVar) -> Any:
         value = self.eval(node.value)
-        if isinstance(node.target, Subscript):
+        target = node.target
+        if isinstance(target, A.Tuple):
+            items = value.items if isinstance(value, (ExprList, List)) else None
+            if items is None or len(items) != len(target.items):
+                raise MechRuntimeError(f"(a, b, ...) = v takes a sequence of {len(target.items)} values")
+            for t, v in zip(target.items, items):
+                if not isinstance(t, A.Name):
+                    raise MechRuntimeError("(a, b, ...) = v assigns to names")
+                self.set_var(t.id, v, node.local)
+            return value
+        if isinstance(target, Subscript):
             raise MechRuntimeError("cannot assign to an entry: Macaulay2's lists are immutable")
-        self.set_var(node.target.id, value)
+        self.set_var(target.id, value, node.local)
         return value
 
     def _eval_subscript(self, node: Subscript) -> Any:
         base = node.base
-        if isinstance(base, A.Name) and self.lookup(base.id) is None:
+        if isinstance(base, A.Name) and self.lookup(base.id) is None and base.id not in self.symbols:
             i = self.eval(node.index)
             name = f"{base.id}_{to_string(i)}"
-            if self.ring is not None and self.ring.var_index(name) is not None:
-                return self.ring.poly.gen(self.ring.var_index(name))
-            raise MechNameError(f"unknown identifier '{name}'")
+            if name in self.symbols:
+                return self.symbols[name]
+            if base.id in self.commands:
+                return Partial(CommandRef(self.commands[base.id]), i)
+            return Symbol(name)
         return self._entry(self.eval(base), self.eval(node.index))
 
     def _eval_index(self, node: A.Index) -> Any:
@@ -173,18 +186,24 @@ class M2Interpreter(Interpreter):
     def _entry(self, base: Any, k: Any) -> Any:
         """``base_k`` (``base#k``): entries counted from 0, negative ones from the end."""
         if type(base) is int and isinstance(k, Ring):  # 0_R: the number in the ring R
-            return k.poly.const(k.poly.field(base))
-        if isinstance(base, Ring):
-            seq, what = [base.poly.gen(i) for i in range(len(base.names))], "ring's variables"
+            return normal(k.poly.const(k.poly.field(base)))
+        if type(base) is int and isinstance(k, CoeffRing):
+            return base
+        if isinstance(base, FUNCTIONS):
+            return Partial(base, k)
+        if isinstance(k, (List, Array)) and not isinstance(base, Matrix):
+            return List([self._entry(base, i) for i in k.items])
+        if isinstance(base, M2Ring):
+            seq, what = [normal(base.poly.gen(i)) for i in range(len(base.own) or len(base.names))], "ring's variables"
         elif isinstance(base, Ideal):
             seq, what = base.gens, "ideal's generators"
         elif isinstance(base, (List, ExprList)):
             seq, what = base.items, "list"
         elif isinstance(base, Matrix) and isinstance(k, ExprList) and len(k.items) == 2:
             i, j = (to_int(x) for x in k.items)
-            if not (0 <= i < base.nrows and 0 <= j < base.ncols):
+            if not (-base.nrows <= i < base.nrows and -base.ncols <= j < base.ncols):
                 raise MechRuntimeError(f"index ({i},{j}) out of range for a {base.nrows} x {base.ncols} matrix")
-            return base.get(i + 1, j + 1)
+            return base.get(i % base.nrows + 1, j % base.ncols + 1)
         elif isinstance(base, str):
             seq, what = base, "string"
         else:
@@ -194,12 +213,32 @@ class M2Interpreter(Interpreter):
             raise MechRuntimeError(f"index {i} out of range (the {what} has {len(seq)} entries, counted from 0)")
         return seq[i]
 
+    def _eval_hash_has(self, node: HashHas) -> bool:
+        try:
+            self._entry(self.eval(node.base), self.eval(node.key))
+        except MechError:
+            return False
+        return True
+
+    def _eval_generators(self, node: Generators) -> List:
+        v = self.eval(node.base)
+        if isinstance(v, Ideal):
+            return List(list(v.gens))
+        if isinstance(v, Matrix):
+            return List(list(v.entries))
+        raise MechTypeError(f"I_* takes an ideal, not a {typeof(v)}")
+
+    def _eval_dot(self, node: Dot) -> Any:
+        raise MechRuntimeError(f"the operator . (fields such as .{node.field}) is not supported")
+
     def _eval_length(self, node: Length) -> int:
         v = self.eval(node.operand)
-        if isinstance(v, (List, ExprList)):
+        if isinstance(v, (List, ExprList, M2Set)):
             return len(v.items)
         if isinstance(v, str):
             return len(v)
+        if isinstance(v, Ideal):
+            return len(v.gens)
         raise MechTypeError(f"# needs a list, sequence or string, not a {typeof(v)}")
 
     # ------------------------------------------------------------ values
@@ -208,114 +247,38 @@ class M2Interpreter(Interpreter):
         return [self.eval(n) for n in nodes]
 
     def _eval_list(self, node: ListLit) -> List:
-        return List(self._values(node.items))
+        return (Array if node.array else List)(self._values(node.items))
 
     def _eval_option(self, node: Option) -> Opt:
         return Opt(self.eval(node.key), self.eval(node.value))
 
     def _eval_range(self, node: A.Range) -> ExprList:
-        lo, hi = to_int(self.eval(node.lo)), to_int(self.eval(node.hi))
+        lo, hi = self.eval(node.lo), self.eval(node.hi)
+        if isinstance(lo, Symbol) and isinstance(hi, Symbol):
+            from .m2_ringcons import _range
+            return ExprList([Symbol(n) for n in _range(lo.name, hi.name, node)])
+        if isinstance(lo, str) or isinstance(hi, str) or not (type(lo) is int and type(hi) is int):
+            from .m2_ringcons import _range
+            names = [to_string(lo), to_string(hi)]
+            return ExprList([self.symbols.get(n, Symbol(n)) for n in _range(names[0], names[1], node)])
         return ExprList(list(range(lo, hi + 1)))
 
     def _eval_tuple(self, node: A.Tuple) -> Any:
         return ExprList(self._values(node.items)) if node.items else NONE
 
-    def _eval_function(self, node: Function) -> M2Function:
-        frame = self.frames[-1]
-        return M2Function(node.params, node.body, self.source, dict(frame.vars) if frame.level else {})
-
-    def _eval_seq(self, node: Seq) -> Any:
-        v: Any = NONE
-        for e in node.exprs:
-            v = self.eval(e)
-        return NONE if node.silent else v
-
-    def _eval_ring(self, node: RingCons) -> Ring:
+    def _eval_ring(self, node: RingCons) -> Any:
         base = self.eval(node.base)
-        if not isinstance(base, Coeffs):
-            raise MechTypeError(f"a polynomial ring is built over QQ or ZZ/p, not over a {typeof(base)}")
-        names: list[str] = []
-        options: dict[str, Any] = {}
-        for item in node.items:
-            if isinstance(item, Option):
-                key = item.key.id if isinstance(item.key, A.Name) else ""
-                if key not in ("MonomialOrder", "Global"):
-                    raise MechRuntimeError(f"unknown ring option '{key}' (known: MonomialOrder, Global)")
-                options[key] = self.eval(item.value)
-            else:
-                names.extend(self._variable_names(item))
-        if not names or len(set(names)) != len(names):
-            raise MechRuntimeError("a ring needs distinct variables: QQ[x,y,z]")
-        blocks = order_blocks(options.get("MonomialOrder", Symbol("GRevLex")), len(names))
-        ring = make_ring(base.characteristic, (), names, blocks + [OrderBlock("C")])
-        if options.get("Global", True) is not ring.poly.order.is_global:
-            want = "global" if options.get("Global", True) else "local"
-            raise MechRuntimeError(f"the monomial order is not {want} (Global => "
-                                   f"{to_string(options.get('Global', True))})")
+        if isinstance(base, Poly):  # f[a, b]: the variables of f's ring replaced by a, b
+            ring = owner(base)
+            values = self._values(node.items)
+            if ring is None or len(values) != ring.poly.nvars:
+                raise MechRuntimeError(f"f[a, b, ...] takes one value per variable of f's ring")
+            images = [lift_to(v, ring) if isinstance(v, (Poly, Number)) else normal(ring.poly.const(ring.poly.field(v)))
+                      for v in values]
+            return normal(map_value(base, images, ring.poly))
+        ring = build_ring(node, base, self.eval, to_string)
+        self.use(ring)
         return ring
-
-    def _variable_names(self, node: A.Expr) -> list[str]:
-        if isinstance(node, A.Name):
-            return [node.id]
-        if isinstance(node, Subscript) and isinstance(node.base, A.Name):
-            return [f"{node.base.id}_{to_int(self.eval(node.index))}"]
-        if isinstance(node, A.Range):
-            lo, hi = self._variable_names(node.lo), self._variable_names(node.hi)
-            a, _, i = lo[0].rpartition("_")
-            b, _, j = hi[0].rpartition("_")
-            if a and a == b and i.isdigit() and j.isdigit():
-                return [f"{a}_{k}" for k in range(int(i), int(j) + 1)]
-            x, y = lo[0], hi[0]
-            if len(x) == 1 and len(y) == 1 and x <= y:
-                return [chr(c) for c in range(ord(x), ord(y) + 1)]
-        raise MechSyntaxError("a ring variable is a name, x_i or a range x_1..x_n", node.pos)
-
-    # ------------------------------------------------------------ control
-    def _eval_for(self, node: ForLoop) -> Any:
-        if node.items is not None:
-            seq = self.eval(node.items)
-            if not isinstance(seq, (List, ExprList)):
-                raise MechTypeError(f"for ... in needs a list, not a {typeof(seq)}")
-            values: Any = list(seq.items)
-        else:
-            start = to_int(self.eval(node.start)) if node.start is not None else 0
-            if node.stop is None:
-                raise MechRuntimeError("for i from a to b: the upper bound is missing")
-            values = range(start, to_int(self.eval(node.stop)) + 1)
-        out = []
-        for x in values:
-            self.set_var(node.var, x)
-            try:
-                v = self.eval(node.body)
-            except BreakSignal:
-                break
-            if node.collect:
-                out.append(v)
-        return List(out) if node.collect else NONE
-
-    def _eval_while(self, node: WhileLoop) -> Any:
-        while self._truth(self.eval(node.cond)):
-            try:
-                self.eval(node.body)
-            except BreakSignal:
-                break
-        return NONE
-
-    def _eval_if(self, node: IfExpr) -> Any:
-        if self._truth(self.eval(node.cond)):
-            return self.eval(node.then)
-        return self.eval(node.orelse) if node.orelse is not None else NONE
-
-    def _truth(self, v: Any) -> bool:
-        if not isinstance(v, bool):
-            raise MechTypeError(f"a condition is true or false, not a {typeof(v)}")
-        return v
-
-    def _eval_return(self, node: ReturnExpr) -> Any:
-        raise ReturnSignal(self.eval(node.value) if node.value is not None else NONE)
-
-    def _eval_break(self, node: BreakExpr) -> Any:
-        raise BreakSignal()
 
     # ------------------------------------------------------------ calls and operators
     def _eval_call(self, node: A.Call) -> Any:
@@ -323,44 +286,74 @@ class M2Interpreter(Interpreter):
         if isinstance(f, A.Name) and self.lookup(f.id) is None and f.id in self.commands:
             return self.call_command(self.commands[f.id], node.args)
         v = self.eval(f)
+        return self.apply_value(v, node.args, node)
+
+    def apply_value(self, v: Any, arg_nodes: list[A.Expr], node: Optional[A.Expr] = None) -> Any:
+        """``v args`` for a value ``v``: a command, a function, a ring (``R x``: x in R), ``Eliminate n``."""
         if isinstance(v, CommandRef):
-            return self.call_command(v.command, node.args)
+            return self.call_command(v.command, arg_nodes)
         if isinstance(v, M2Function):
-            return self.call_function(v, self._values(node.args), node)
-        if v == Symbol("Eliminate") and len(node.args) == 1:
-            return Opt(v, self.eval(node.args[0]))
+            return self.call_function(v, self._values(arg_nodes), node)
+        if isinstance(v, (Composed, Partial)):
+            return self.apply(v, self._values(arg_nodes))
+        if isinstance(v, RingMap):
+            return apply_map(v, self._one_value(arg_nodes))
+        if v == Symbol("Eliminate") and len(arg_nodes) == 1:
+            return Opt(v, self.eval(arg_nodes[0]))
+        if isinstance(v, Symbol) and v.name not in SYMBOLS:
+            raise MechNameError(f"unknown identifier '{v.name}'")
         raise MechTypeError(f"a {typeof(v)} cannot be applied to arguments")
+
+    def _one_value(self, arg_nodes: list[A.Expr]) -> Any:
+        vals = self._values(arg_nodes)
+        return vals[0] if len(vals) == 1 else ExprList(vals)
+
+    def eval_text(self, text: str) -> Any:
+        """The value of one expression of the dialect given as text (``ideal "x^2,y"``, ``value s``)."""
+        program = parse(text, Source("<string>", text))
+        if len(program.body) != 1:
+            raise MechRuntimeError(f"expected one expression, got {text!r}")
+        return self.eval(program.body[0].expr)
+
+    def apply(self, f: Any, args: list[Any]) -> Any:
+        """A function value applied to evaluated arguments."""
+        if isinstance(f, M2Function):
+            return self.call_function(f, args)
+        if isinstance(f, Composed):
+            return self.apply(f.outer, [self.apply(f.inner, args)])
+        if isinstance(f, Partial):
+            return self.apply(f.func, [f.first, *args])
+        if isinstance(f, CommandRef):
+            return self.invoke(f.command, list(args))
+        if isinstance(f, RingMap):
+            return apply_map(f, args[0] if len(args) == 1 else ExprList(args))
+        raise MechTypeError(f"a {typeof(f)} cannot be applied to arguments")
 
     def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:
         """A command applied to a sequence it takes as one argument (``toString (1,2)``) gets it whole."""
-        if len(arg_nodes) > 1 and all(len(ov.names) == 1 and not ov.has_varargs for ov in cmd.overloads):
-            arg_nodes = [A.Tuple(arg_nodes, pos=arg_nodes[0].pos)]
-        v = super().call_command(cmd, arg_nodes)
+        plain = [n for n in arg_nodes if not isinstance(n, Option)]
+        if len(plain) > 1 and all(len(ov.names) == 1 and not ov.has_varargs for ov in cmd.overloads):
+            arg_nodes = [A.Tuple(plain, pos=plain[0].pos)] + [n for n in arg_nodes if isinstance(n, Option)]
+        saved = self.argnames
+        try:
+            self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
+            return self.invoke(cmd, self._values(arg_nodes))
+        finally:
+            self.argnames = saved
+
+    def invoke(self, cmd: Any, args: list[Any]) -> Any:
+        """Run a command on evaluated arguments; commands not marked :func:`~mech.dsl.m2_rings.in_quotients`
+        refuse elements of quotient rings (their answers would ignore the relations)."""
+        args, self.m2_options = _options(cmd, args)
+        if not getattr(cmd.overloads[0].func, "quotient_ok", False) and any(_in_quotient(a) for a in args):
+            raise MechRuntimeError(f"{cmd.name} on elements of a quotient ring R/I is not supported by mech")
+        try:
+            v = self.registry.invoke(cmd, self, list(args))
+        except (LimitExceeded, MemoryError) as e:
+            raise limit_error(e, cmd.name) from None
         if cmd.overloads[0].func.__annotations__.get("return") in ("bool", bool):
             return bool(v)  # the registry gives Singular's 0 and 1
         return v
-
-    def call_function(self, fn: M2Function, args: list[Any], node: Optional[A.Expr] = None) -> Any:
-        """Call a Macaulay2 function with evaluated arguments in a new scope."""
-        if len(args) != len(fn.params):
-            if len(fn.params) == 1:
-                args = [ExprList(args)]
-            else:
-                raise MechTypeError(f"{fn.name} expects {len(fn.params)} arguments, got {len(args)}")
-        if len(self.frames) > 1000:
-            raise MechRuntimeError("function calls nested deeper than 1000")
-        level = len(self.frames)
-        frame = Frame(level, {**fn.captured, **{p: Var(p, "def", a, None, level) for p, a in zip(fn.params, args)}})
-        self.frames.append(frame)
-        saved = self.source
-        self.source = fn.source
-        try:
-            return self.eval(fn.body)
-        except ReturnSignal as r:
-            return r.value
-        finally:
-            self.frames.pop()
-            self.source = saved
 
     def _binary(self, op: str, a: Any, b: Any) -> Any:
         hook = self.operators.get("==" if op == "!=" else op)  # the library's operators (I : J, f % I, I == J)
@@ -368,21 +361,20 @@ class M2Interpreter(Interpreter):
             v = hook(a, b)
             if v is not NotImplemented:
                 return not v if op == "!=" else v
-        ring = self.ring.poly if self.ring else None
-        if op == "/" and type(a) is int and type(b) is int:
-            if b == 0:
-                raise MechRuntimeError("division by 0")
-            if ring is None:
-                return Fraction(a, b)
-            return Number(ring, ring.field(a) / ring.field(b))
-        if Fraction in (type(a), type(b)) and {type(a), type(b)} <= {int, Fraction} and op in "+-*/^":
-            return _rational(op, a, b)
-        if op in "+*" and isinstance(a, Ideal) and isinstance(b, Ideal):  # generators as Macaulay2 lists them
+        return m2_binary(op, a, b, self.ring, self.apply, self._arith)
+
+    def _arith(self, op: str, a: Any, b: Any, ring: Any) -> Any:
+        if op in ("+", "*") and isinstance(a, Ideal) and isinstance(b, Ideal):  # generators as Macaulay2 lists them
             if a.ring is not b.ring:
                 raise MechTypeError(f"the ideals of {op} are in different rings")
-            gens = a.gens + b.gens if op == "+" else tuple(f * g for f in a.gens for g in b.gens)
-            return Ideal(a.ring, gens)
+            gens = a.gens + b.gens if op == "+" else tuple(normal(f * g) for f in a.gens for g in b.gens)
+            return Ideal(a.ring, [g for g in gens if not g.is_zero()] if op == "*" else gens)
         if op in ("<", "<=", ">", ">="):
+            return bool(ops.compare(op, a, b, ring))
+        if op in ("==", "!=") and isinstance(a, (List, ExprList)) and isinstance(b, (List, ExprList)):
+            same = len(a.items) == len(b.items) and all(self._binary("==", x, y) for x, y in zip(a.items, b.items))
+            return same if op == "==" else not same
+        if op in ("==", "!="):
             return bool(ops.compare(op, a, b, ring))
         if isinstance(a, bool) or isinstance(b, bool):
             raise MechTypeError(f"no operator {op} for true/false")
@@ -391,25 +383,48 @@ class M2Interpreter(Interpreter):
     def _eval_binop(self, node: A.BinOp) -> Any:
         if node.op == "&&":
             return self._truth(self.eval(node.left)) and self._truth(self.eval(node.right))
-        if node.op == "||":
+        if node.op == "or":
             return self._truth(self.eval(node.left)) or self._truth(self.eval(node.right))
         return super()._eval_binop(node)
 
     def _eval_unop(self, node: A.UnOp) -> Any:
         if node.op == "!":
             return not self._truth(self.eval(node.operand))
-        return super()._eval_unop(node)
+        v = self.eval(node.operand)
+        if node.op == "-" and isinstance(v, Symbol) and v.name not in SYMBOLS:
+            raise MechNameError(f"unknown identifier '{v.name}'")
+        return v if node.op == "+" else ops.negate(v)
 
 
-def _rational(op: str, a: Fraction | int, b: Fraction | int) -> Fraction | int:
-    """Arithmetic of rational numbers outside a ring (``1/2 + 1``); integral results are ints."""
-    if op == "^" and type(b) is not int:
-        raise MechTypeError("a rational number's exponent is an integer")
-    if op == "/" and b == 0:
-        raise MechRuntimeError("division by 0")
-    v = {"+": lambda: a + b, "-": lambda: a - b, "*": lambda: a * b, "/": lambda: Fraction(a) / b,
-         "^": lambda: Fraction(a) ** b}[op]()
-    return int(v) if v.denominator == 1 else v
+#: options of Macaulay2's functions that do not change the value (how it is computed, what is printed)
+NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check", "Unmixed"}
+
+
+def _options(cmd: Any, args: list[Any]) -> tuple[list[Any], dict[str, Any]]:
+    """The arguments without their options ``Name => v``, and the options the command reads
+    (``m2_options`` of its function); options changing the value that it does not read are refused."""
+    if not any(isinstance(a, Opt) for a in args):
+        return args, {}
+    read = set()
+    for ov in cmd.overloads:
+        read |= set(getattr(ov.func, "m2_options", ()))
+    given: dict[str, Any] = {}
+    for a in args:
+        if isinstance(a, Opt):
+            key = a.key.name if isinstance(a.key, Symbol) else a.key if isinstance(a.key, str) else to_string(a.key)
+            if key in read:
+                given[key] = a.value
+            elif key not in NEUTRAL_OPTIONS:
+                raise MechRuntimeError(f"{cmd.name}: the option {key} is not supported by mech")
+    return [a for a in args if not isinstance(a, Opt)], given
+
+
+def _in_quotient(v: Any) -> bool:
+    if isinstance(v, (List, ExprList)):
+        return any(_in_quotient(x) for x in v.items)
+    ring = getattr(v, "ring", None)
+    owner = getattr(ring, "owner", None) if ring is not None else (v if isinstance(v, M2Ring) else None)
+    return owner is not None and owner.quotient is not None
 
 
 # ---------------------------------------------------------------- the interactive shell

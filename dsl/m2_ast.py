@@ -1,7 +1,7 @@
 """The tree of the Macaulay2 dialect: the shared nodes of :mod:`mech.dsl.ast` (names, literals,
 operators, calls, ranges) plus the Macaulay2 constructs Singular lacks, defined here: lists
-``{...}``, rings ``QQ[x,y]``, options ``a => b``, functions ``(a,b) -> ...``, assignments, loops and
-conditionals as expressions (``for i from 1 to n do ...``, ``for x in L list ...``)."""
+``{...}`` and arrays ``[...]``, rings ``QQ[x,y]``, options ``a => b``, functions ``(a,b) -> ...``,
+assignments (``=`` and ``:=``), loops, conditionals and ``try`` as expressions, ``symbol x``."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -12,18 +12,20 @@ from . import ast as A
 
 @dataclass(eq=False)
 class Coeffs(A.Expr):
-    """A coefficient ring: ``QQ`` (characteristic 0) or ``ZZ/p``."""
+    """``ZZ/p``: the prime field of characteristic ``p``."""
     characteristic: int
 
 
 @dataclass(eq=False)
 class ListLit(A.Expr):
-    items: list[A.Expr]
+    """``{a, b}`` (``array``: ``[a, b]``); ``None`` items are empty places (``{a,,b}``)."""
+    items: list[Optional[A.Expr]]
+    array: bool = False
 
 
 @dataclass(eq=False)
 class RingCons(A.Expr):
-    """``K[x, y, Option => v]``: a polynomial ring over ``K``."""
+    """``K[x, y, Option => v]``: a polynomial ring over ``K`` (or ``f[...]`` for another ``f``)."""
     base: A.Expr
     items: list[A.Expr]
 
@@ -42,6 +44,32 @@ class Subscript(A.Expr):
 
 
 @dataclass(eq=False)
+class Generators(A.Expr):
+    """``I_*``: the generators of an ideal as a list."""
+    base: A.Expr
+
+
+@dataclass(eq=False)
+class HashHas(A.Expr):
+    """``T#?k``: whether ``T`` has the key (or index) ``k``."""
+    base: A.Expr
+    key: A.Expr
+
+
+@dataclass(eq=False)
+class Dot(A.Expr):
+    """``x.name``: a field of a value (``R.maxIdeal``, ``(options R).MonomialOrder``)."""
+    base: A.Expr
+    field: str
+
+
+@dataclass(eq=False)
+class SymbolLit(A.Expr):
+    """``symbol x``: the symbol ``x`` itself, whatever its value."""
+    name: str
+
+
+@dataclass(eq=False)
 class Length(A.Expr):
     """``#L``."""
     operand: A.Expr
@@ -49,9 +77,10 @@ class Length(A.Expr):
 
 @dataclass(eq=False)
 class SetVar(A.Expr):
-    """``name = value`` (its value is the value assigned)."""
+    """``name = value`` (``local``: ``name := value``, a new local variable); its value is the value assigned."""
     target: A.Expr
     value: A.Expr
+    local: bool = False
 
 
 @dataclass(eq=False)
@@ -76,6 +105,7 @@ class ForLoop(A.Expr):
     items: Optional[A.Expr]
     collect: bool
     body: A.Expr
+    when: Optional[A.Expr] = None
 
 
 @dataclass(eq=False)
@@ -92,13 +122,28 @@ class IfExpr(A.Expr):
 
 
 @dataclass(eq=False)
+class TryExpr(A.Expr):
+    """``try e then t else f``: ``t`` (or ``e``'s value) when ``e`` runs without error, else ``f``."""
+    body: A.Expr
+    then: Optional[A.Expr]
+    orelse: Optional[A.Expr]
+
+
+@dataclass(eq=False)
+class TimeExpr(A.Expr):
+    """``time e`` / ``elapsedTime e``: ``e``'s value, after printing the time it took."""
+    body: A.Expr
+    elapsed: bool
+
+
+@dataclass(eq=False)
 class ReturnExpr(A.Expr):
     value: Optional[A.Expr]
 
 
 @dataclass(eq=False)
 class BreakExpr(A.Expr):
-    pass
+    value: Optional[A.Expr] = None
 
 
 @dataclass(eq=False)

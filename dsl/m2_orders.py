@@ -1,53 +1,98 @@
 """Macaulay2's monomial orders (``MonomialOrder => ...`` of a ring) as Singular's ordering blocks."""
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Sequence
 
 from .errors import MechRuntimeError
-from .m2_printing import Opt, Symbol, to_string
+from .m2_values import Opt, Symbol
 from .rings import MAX_WEIGHT
-from .values import List, OrderBlock
+from .values import ExprList, List, OrderBlock
 
-_KINDS = {"GRevLex": "dp", "Lex": "lp", "GLex": "Dp"}
+#: Macaulay2's orders of a block: (Singular's kind, with degrees other than 1: the weighted kind)
+_KINDS = {"GRevLex": ("dp", "wp"), "Lex": ("lp", "lp"), "GLex": ("Dp", "Wp"), "RevLex": ("rs", "rs")}
+#: options of an order list that do not change the order
+_IGNORED = {"Position", "MonomialSize"}
 
 
-def order_blocks(spec: Any, n: int) -> list[OrderBlock]:
-    """Singular's blocks for Macaulay2's ``MonomialOrder => spec`` on ``n`` variables: GRevLex (dp),
-    Lex (lp), GLex (Dp), ``Weights => w`` (a weight row, then GRevLex), ``Eliminate k`` (the weight
-    row 1,..,1,0,..,0, then GRevLex) and lists of these (``{GRevLex => 2, Lex => 3}``: blocks)."""
-    items = spec.items if isinstance(spec, List) else [spec]
+def _items(spec: Any) -> list[Any]:
+    """The blocks of an order spec, sequences (``3:1``) spliced in."""
+    out: list[Any] = []
+    for item in (spec.items if isinstance(spec, List) else [spec]):
+        out.extend(item.items if isinstance(item, ExprList) else [item])
+    return out
+
+
+def order_blocks(spec: Any, n: int, degrees: Sequence[int] = ()) -> list[OrderBlock]:
+    """Singular's blocks for Macaulay2's ``MonomialOrder => spec`` on ``n`` variables of these
+    ``degrees``: GRevLex (dp, or wp by the degrees), Lex (lp), GLex (Dp or Wp), RevLex (the
+    negative reversed unit matrix), ``Weights => w`` (a weight row), ``Eliminate k`` (the weight
+    row 1,..,1,0,..,0), a number k (GRevLex on k variables), ``Kind => k`` or ``Kind => {weights}``
+    and lists of these (``{GRevLex => 2, Lex => 3}``: blocks); variables left over get GRevLex."""
+    degrees = list(degrees) or [1] * n
+    items = _items(spec)
     blocks: list[OrderBlock] = []
     covered = 0
     for k, item in enumerate(items):
         last = k == len(items) - 1
+        key = item.key.name if isinstance(item, Opt) and isinstance(item.key, Symbol) else None
+        if key in _IGNORED:
+            continue
         if isinstance(item, Symbol) and item.name in _KINDS:
             if not last:
                 raise MechRuntimeError(f"{item.name} without a size covers the remaining variables: put it last")
-            size = n - covered
-        elif isinstance(item, Opt) and isinstance(item.key, Symbol) and item.key.name in _KINDS:
-            size = item.value
-            if type(size) is not int or not 0 < size <= MAX_WEIGHT:
-                raise MechRuntimeError(f"{item.key.name} => n takes a positive number of variables")
-        elif isinstance(item, Opt) and isinstance(item.key, Symbol) and item.key.name in ("Weights", "Eliminate"):
-            if item.key.name == "Weights":
-                w = item.value.items if isinstance(item.value, List) else None
-                if w is None or not all(type(x) is int for x in w) or len(w) > n - covered:
-                    raise MechRuntimeError(f"Weights => {{...}} takes at most {n - covered} integers")
-                if any(abs(x) > MAX_WEIGHT for x in w):
-                    raise MechRuntimeError(f"Weights => {{...}}: a weight must be at most {MAX_WEIGHT} in absolute value")
+            kind, size, weights = item.name, n - covered, None
+        elif type(item) is int:
+            kind, size, weights = "GRevLex", item, None
+        elif key in _KINDS:
+            kind, weights = key, None
+            if isinstance(item.value, List):
+                weights = list(item.value.items)
+                size = len(weights)
             else:
-                if type(item.value) is not int or not 0 <= item.value <= n - covered:
-                    raise MechRuntimeError(f"Eliminate k takes 0 <= k <= {n - covered}")
-                w = [1] * item.value
-            blocks.append(OrderBlock("a", 0, tuple([0] * covered + list(w) + [0] * (n - covered - len(w)))))
+                size = item.value
+            if type(size) is not int or not 0 < size <= MAX_WEIGHT or (weights and not all(type(w) is int and w > 0 for w in weights)):
+                raise MechRuntimeError(f"{key} => n takes a positive number of variables or a list of positive weights")
+        elif key in ("Weights", "Eliminate"):
+            blocks.append(_prefix(key, item.value, n, covered))
             continue
         else:
-            raise MechRuntimeError(f"unknown monomial order {to_string(item)} (known: GRevLex, Lex, GLex, "
-                                   f"Weights => {{...}}, Eliminate k, and lists of these)")
+            raise MechRuntimeError(f"unknown monomial order {_show(item)} (known: GRevLex, Lex, GLex, RevLex, "
+                                   f"Weights => {{...}}, Eliminate k, numbers, and lists of these)")
         if covered + size > n:
             raise MechRuntimeError(f"the monomial order covers more than the {n} variables")
-        blocks.append(OrderBlock(_KINDS[item.key.name if isinstance(item, Opt) else item.name], size))
+        blocks.append(_block(kind, weights or degrees[covered:covered + size]))
         covered += size
     if covered < n:
-        blocks.append(OrderBlock("dp", n - covered))
+        blocks.append(_block("GRevLex", degrees[covered:]))
     return blocks
+
+
+def _block(kind: str, weights: list[int]) -> OrderBlock:
+    plain, weighted = _KINDS[kind]
+    if kind == "RevLex":
+        size = len(weights)
+        rows = [[-1 if j == size - 1 - i else 0 for j in range(size)] for i in range(size)]
+        return OrderBlock("M", size, tuple(v for r in rows for v in r))
+    if all(w == 1 for w in weights) or plain == weighted:
+        return OrderBlock(plain, len(weights))
+    return OrderBlock(weighted, len(weights), tuple(weights))
+
+
+def _prefix(key: str, value: Any, n: int, covered: int) -> OrderBlock:
+    """``Weights => w`` or ``Eliminate k``: a weight row on the variables from ``covered`` on."""
+    if key == "Weights":
+        w = list(value.items) if isinstance(value, List) else None
+        if w is None or not all(type(x) is int for x in w) or len(w) > n - covered:
+            raise MechRuntimeError(f"Weights => {{...}} takes at most {n - covered} integers")
+        if any(abs(x) > MAX_WEIGHT for x in w):
+            raise MechRuntimeError(f"Weights => {{...}}: a weight must be at most {MAX_WEIGHT} in absolute value")
+    else:
+        if type(value) is not int or not 0 <= value <= n - covered:
+            raise MechRuntimeError(f"Eliminate k takes 0 <= k <= {n - covered}")
+        w = [1] * value
+    return OrderBlock("a", 0, tuple(w + [0] * (n - covered - len(w))))  # from the variable after `covered`
+
+
+def _show(item: Any) -> str:
+    from .m2_printing import to_string
+    return to_string(item)

@@ -13,14 +13,15 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedInput
 from . import ast as A
 from .builder import build, meta_pos as _pos, parse_int, token_pos as _tpos
 from .errors import MechSyntaxError, Source
-from .m2_ast import (BreakExpr, Coeffs, ForLoop, Function, IfExpr, Length, ListLit, Option, ReturnExpr, RingCons,
-                     Seq, SetVar, Statement, Subscript, WhileLoop)
+from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, HashHas, IfExpr, Length, ListLit,
+                     Option, ReturnExpr, RingCons, Seq, SetVar, Statement, Subscript, SymbolLit, TimeExpr, TryExpr,
+                     WhileLoop)
 
 GRAMMAR = Path(__file__).with_name("m2.lark")
 
 
 #: tokens after which a line break ends the statement (an expression can end there)
-_ENDERS = {"IDENT", "COEFFS", "NUMBER", "STRING", "RPAR", "RSQB", "RBRACE", "BREAK", "RETURN"}
+_ENDERS = {"IDENT", "COEFFS", "NUMBER", "STRING", "RPAR", "RSQB", "RBRACE", "BREAK", "RETURN", "GENS"}
 _OPEN = {"LPAR", "LSQB", "LBRACE"}
 _CLOSE = {"RPAR", "RSQB", "RBRACE"}
 
@@ -68,11 +69,8 @@ class _Build(Transformer_NonRecursive):
 
     @v_args(meta=True)
     def coeffs(self, meta, c):
-        text = str(c[0])
-        char = parse_int(text.split("/")[1], c[0]) if "/" in text else 0
-        if text.startswith("ZZ") and "/" not in text:
-            raise MechSyntaxError("the integers ZZ are not a field: use QQ or ZZ/p", _tpos(c[0]))
-        return Coeffs(char, pos=_tpos(c[0]))
+        digits = re.sub(r"\D", "", str(c[0]))
+        return Coeffs(parse_int(digits, c[0]), pos=_tpos(c[0]))
 
     @v_args(meta=True)
     def int_lit(self, meta, c):
@@ -85,7 +83,7 @@ class _Build(Transformer_NonRecursive):
                         pos=_tpos(c[0]))
 
     def exprlist(self, c):
-        return list(c)
+        return [] if c == [None] else list(c)  # (): no items; (a,,b): a hole
 
     def seq(self, c):
         return list(c)
@@ -93,19 +91,19 @@ class _Build(Transformer_NonRecursive):
     @v_args(meta=True)
     def paren(self, meta, c):
         pos = _pos(meta)
-        if c[0] is None:
-            return A.Tuple([], pos=pos)
         parts = c[0]  # expression lists and the ';' tokens between them
         if len(parts) == 1:
             items = parts[0]
-            return items[0] if len(items) == 1 else A.Tuple(items, pos=pos)
+            if len(items) == 1 and items[0] is not None:
+                return items[0]
+            return A.Tuple(_holes(items, pos), pos=pos)
         exprs: list[A.Expr] = []
         silent = False
         for p in parts:
             if isinstance(p, Token):
                 silent = True
-            elif p is not None:
-                if len(p) != 1:
+            elif p:
+                if len(p) != 1 or p[0] is None:
                     raise MechSyntaxError("a ';' sequence takes one expression between the ';'", pos)
                 exprs.extend(p)
                 silent = False
@@ -117,11 +115,31 @@ class _Build(Transformer_NonRecursive):
 
     @v_args(meta=True)
     def list_lit(self, meta, c):
-        return ListLit(c[0] or [], pos=_pos(meta))
+        return ListLit(_holes(c[0], _pos(meta)), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def array_lit(self, meta, c):
+        return ListLit(_holes(c[0], _pos(meta)), True, pos=_pos(meta))
 
     @v_args(meta=True)
     def ring_cons(self, meta, c):
-        return RingCons(c[0], c[1] or [], pos=_pos(meta))
+        return RingCons(c[0], _holes(c[1], _pos(meta)), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def symbol_(self, meta, c):
+        return SymbolLit(str(c[0]), pos=_pos(meta))
+
+    @v_args(meta=True)
+    def generators(self, meta, c):
+        return Generators(c[0], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def hash_has(self, meta, c):
+        return HashHas(c[0], c[1], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def dot(self, meta, c):
+        return Dot(c[0], str(c[1]), pos=_pos(meta))
 
     @v_args(meta=True)
     def subscript(self, meta, c):
@@ -151,9 +169,18 @@ class _Build(Transformer_NonRecursive):
             return A.BinOp(op, c[0], c[1], pos=_pos(meta))
         return build
 
-    add, sub, mul, div, mod, pow = _bin("+"), _bin("-"), _bin("*"), _bin("/"), _bin("%"), _bin("^")
+    add, sub, mul, mod, pow = _bin("+"), _bin("-"), _bin("*"), _bin("%"), _bin("^")
+
+    @v_args(meta=True)
+    def div(self, meta, c):
+        left, right = c
+        if isinstance(right, RingCons):  # as Macaulay2 reads it: ZZ/p[x] is (ZZ/p)[x]
+            return RingCons(A.BinOp("/", left, right.base, pos=_pos(meta)), right.items, pos=_pos(meta))
+        return A.BinOp("/", left, right, pos=_pos(meta))
     eq, ne, lt, le, gt, ge = _bin("=="), _bin("!="), _bin("<"), _bin("<="), _bin(">"), _bin(">=")
-    and_op, or_op, quotient = _bin("&&"), _bin("||"), _bin(":")
+    same, not_same, idiv, bslash, compose = _bin("==="), _bin("=!="), _bin("//"), _bin("\\"), _bin("@@")
+    and_op, or_op, quotient = _bin("&&"), _bin("or"), _bin(":")
+    vcat, bar, amp, tensor, range_excl = _bin("||"), _bin("|"), _bin("&"), _bin("**"), _bin("..<")
 
     @v_args(meta=True)
     def neg(self, meta, c):
@@ -170,9 +197,16 @@ class _Build(Transformer_NonRecursive):
     @v_args(meta=True)
     def assign(self, meta, c):
         target = c[0]
-        if not isinstance(target, (A.Name, Subscript)):
+        if not isinstance(target, (A.Name, Subscript, A.Tuple)):
             raise MechSyntaxError("cannot assign to this expression", target.pos, underline=True)
         return SetVar(target, c[1], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def local_assign(self, meta, c):
+        target = c[0]
+        if not isinstance(target, A.Name):
+            raise MechSyntaxError("cannot assign to this expression", target.pos, underline=True)
+        return SetVar(target, c[1], True, pos=_pos(meta))
 
     @v_args(meta=True)
     def lambda_(self, meta, c):
@@ -187,13 +221,13 @@ class _Build(Transformer_NonRecursive):
 
     @v_args(meta=True)
     def for_range(self, meta, c):
-        var, start, stop, kind, body = c
-        return ForLoop(str(var), start, stop, None, kind.type == "LIST", body, pos=_pos(meta))
+        var, start, stop, when, kind, body = c
+        return ForLoop(str(var), start, stop, None, kind.type == "LIST", body, when, pos=_pos(meta))
 
     @v_args(meta=True)
     def for_in(self, meta, c):
-        var, items, kind, body = c
-        return ForLoop(str(var), None, None, items, kind.type == "LIST", body, pos=_pos(meta))
+        var, items, when, kind, body = c
+        return ForLoop(str(var), None, None, items, kind.type == "LIST", body, when, pos=_pos(meta))
 
     @v_args(meta=True)
     def while_(self, meta, c):
@@ -204,12 +238,25 @@ class _Build(Transformer_NonRecursive):
         return IfExpr(c[0], c[1], c[2], pos=_pos(meta))
 
     @v_args(meta=True)
+    def try_(self, meta, c):
+        return TryExpr(c[0], c[1], c[2], pos=_pos(meta))
+
+    @v_args(meta=True)
+    def time_(self, meta, c):
+        return TimeExpr(c[1], str(c[0]) == "elapsedTime", pos=_pos(meta))
+
+    @v_args(meta=True)
     def return_(self, meta, c):
         return ReturnExpr(c[0] if c else None, pos=_pos(meta))
 
     @v_args(meta=True)
     def break_(self, meta, c):
-        return BreakExpr(pos=_pos(meta))
+        return BreakExpr(c[0] if c else None, pos=_pos(meta))
+
+
+def _holes(items: list, pos: A.Pos) -> list:
+    """The items of a bracket, an empty place (``f(a,,b)``) as the name ``null``."""
+    return [A.Name("null", pos=pos) if x is None else x for x in items]
 
 
 @lru_cache(maxsize=1)

@@ -1,38 +1,23 @@
 """Macaulay2 1.21's one-line output format (what its ``toString`` gives) for mech's values.
 
 Polynomials list their terms from the largest down with ``*`` and ``^`` (``-(1/2)*x^2+3*y-1``;
-``ZZ/p`` coefficients as representatives in ``-(p-1)/2 .. (p-1)/2``), ideals print as
-``ideal(f,g)`` (one generator that is a power of a variable or a nonnegative integer: ``ideal x``),
-matrices as ``matrix {{a, b}, {c, d}}``, lists as ``{a, b}``, sequences as ``(a,b)``.
+``ZZ/p`` coefficients as representatives in ``-(p-1)/2 .. (p-1)/2``; in a tower ``QQ[t][x]`` the
+coefficients are polynomials in ``t``: ``(t+1)*x^2-t``), ideals print as ``ideal(f,g)`` (one
+generator that is a power of a variable or a nonnegative integer: ``ideal x``), matrices as
+``matrix {{a, b}, {c, d}}``, lists as ``{a, b}``, sequences as ``(a,b)``, rings by name (or as
+``QQ[x..z]`` when they have none).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
 from ..kernel import Poly
+from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, M2Function, M2Set,
+                        MonomialIdeal, Opt, Partial, RingMap, Symbol, Tally)
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring
 
-
-@dataclass(frozen=True)
-class Opt:
-    """An option ``key => value``."""
-    key: Any
-    value: Any
-
-
-@dataclass(frozen=True)
-class Symbol:
-    """A Macaulay2 symbol without a value of mech's (``Lex``, ``GRevLex``, ``Eliminate``...)."""
-    name: str
-
-
-@dataclass(frozen=True)
-class Factored:
-    """The result of ``factor``: a unit and (factor, exponent) pairs, printed as a product."""
-    unit: Any
-    factors: tuple[tuple[Poly, int], ...]
+__all__ = ["Opt", "Symbol", "Factored", "to_string", "poly_str", "coeff_str"]
 
 
 def coeff_str(field: Any, c: Any) -> str:
@@ -45,25 +30,51 @@ def _monomial(names: tuple[str, ...], e: tuple[int, ...]) -> str:
     return "*".join(n if k == 1 else f"{n}^{k}" for n, k in zip(names, e) if k)
 
 
-def poly_str(p: Poly) -> str:
-    if not p.terms:
-        return "0"
-    ring = p.ring
+def _terms(p: Poly, names: tuple[str, ...], coeffs: list[tuple[tuple[int, ...], str, bool]]) -> str:
+    """``c1*m1+c2*m2...`` from (exponent, coefficient text, coefficient is a sum) triples."""
     out = []
-    for e, c in p.sorted_terms():
-        s = coeff_str(ring.field, c)
-        neg = s.startswith("-")
+    for e, s, compound in coeffs:
+        neg = s.startswith("-") and not compound
         if neg:
             s = s[1:]
-        mono = _monomial(ring.names, e)
+        mono = _monomial(names, e)
         if not mono:
             term = s
         elif s == "1":
             term = mono
         else:
-            term = f"({s})*{mono}" if "/" in s else f"{s}*{mono}"
+            term = f"({s})*{mono}" if compound or "/" in s else f"{s}*{mono}"
         out.append(("-" if neg else ("+" if out else "")) + term)
     return "".join(out)
+
+
+def poly_str(p: Poly) -> str:
+    if not p.terms:
+        return "0"
+    ring = p.ring
+    own = _own_count(p)
+    if own < ring.nvars:  # a tower: coefficients are polynomials of the coefficient ring
+        groups: dict[tuple[int, ...], dict] = {}
+        for e, c in p.sorted_terms():
+            groups.setdefault(e[:own], {})[e[own:]] = c
+        parts = []
+        for e, sub in groups.items():
+            coeff = _coefficient(ring, own, sub)
+            parts.append((e, coeff, len(sub) > 1))
+        return _terms(p, ring.names[:own], parts)
+    return _terms(p, ring.names, [(e, coeff_str(ring.field, c), False) for e, c in p.sorted_terms()])
+
+
+def _own_count(p: Poly) -> int:
+    r = getattr(p.ring, "owner", None)
+    return len(r.own) if r is not None and r.own else p.ring.nvars
+
+
+def _coefficient(ring: Any, own: int, terms: dict) -> str:
+    """A tower's coefficient (the terms in the coefficient ring's variables) as text."""
+    base = ring.owner.base
+    sub = Poly(base.poly, terms) if hasattr(base, "poly") else None
+    return poly_str(sub) if sub is not None else coeff_str(ring.field, next(iter(terms.values())))
 
 
 def _atomic(s: str) -> bool:
@@ -82,37 +93,45 @@ def to_string(v: Any) -> str:
     if isinstance(v, Number):
         return coeff_str(v.ring.field, v.c)
     if isinstance(v, Ideal):
+        word = "monomialIdeal" if isinstance(v, MonomialIdeal) else "ideal"
         if v.is_std and not v.nonzero():
-            return "ideal()"
+            return f"{word}()"
         gens = [poly_str(g) for g in v.gens]
         if len(gens) == 1 and _atomic(gens[0]):
-            return f"ideal {gens[0]}"
-        return f"ideal({','.join(gens)})"
+            return f"{word} {gens[0]}"
+        return f"{word}({','.join(gens)})"
     if isinstance(v, Matrix):
         rows = ", ".join("{" + ", ".join(poly_str(p) for p in row) + "}" for row in v.rows())
         return f"matrix {{{rows}}}"
+    if isinstance(v, Array):
+        return "[" + ", ".join(to_string(x) for x in v.items) + "]"
     if isinstance(v, List):
         return "{" + ", ".join(to_string(x) for x in v.items) + "}"
     if isinstance(v, ExprList):
+        if len(v.items) == 1:
+            return f"1 : ({to_string(v.items[0])})"
         return "(" + ",".join(to_string(x) for x in v.items) + ")"
     if isinstance(v, Opt):
         return f"{to_string(v.key)} => {to_string(v.value)}"
-    if isinstance(v, Symbol):
+    if isinstance(v, (Symbol, IndexedTable)):
         return v.name
+    if isinstance(v, M2Set):  # in the order Macaulay2 shows small sets: numbers by value, others by text
+        texts = sorted(((0, x, "") if type(x) is int else (1, 0, to_string(x)) for x in v.items))
+        return "set {" + ", ".join(str(n) if k == 0 else t for k, n, t in texts) + "}"
+    if isinstance(v, Tally):
+        return "new Tally from {" + ", ".join(f"{to_string(v.items[k])} => {n}" for k, n in v.counts.items()) + "}"
     if isinstance(v, Factored):
         parts = [f"({poly_str(f)})" + (f"^{k}" if k > 1 else "") for f, k in v.factors]
         if v.unit != 1 or not parts:
             parts.append(f"({to_string(v.unit)})")
         return "*".join(parts)
-    if isinstance(v, Ring):
-        return v.name or ring_str(v)
-    if v is NONE:
-        return ""
+    if isinstance(v, (Ring, CoeffRing)):
+        return v.name or v.describe() if hasattr(v, "describe") else v.name
+    if isinstance(v, RingMap):
+        return f"map({to_string(v.target)},{to_string(v.source)},{{{', '.join(poly_str(p) for p in v.images)}}})"
+    if isinstance(v, (M2Function, CommandRef, Composed, Partial)):
+        return v.name
+    if v is NONE or v is None:
+        return "null"
     name = getattr(v, "name", None)
     return name or type(v).__name__
-
-
-def ring_str(r: Ring) -> str:
-    char = r.characteristic
-    base = "QQ" if char == 0 else f"ZZ/{char}"
-    return f"{base}[{', '.join(r.names)}]"

@@ -64,6 +64,8 @@ def run_text(text: str, name: str, warnings: bool = True, dialect: str = "singul
     if dialect == "m2":
         from .dsl.m2 import M2Interpreter as cls
     interp = cls(out=sys.stdout, flush=True, warnings=warnings, settings=settings)
+    if dialect == "m2":  # as Macaulay2: a script (M2 --script) prints no values, standard input (M2 < f) does
+        interp.echo = name == "<stdin>"
     try:
         interp.execute(text, name)
     except QuitSignal:

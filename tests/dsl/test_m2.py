@@ -144,7 +144,8 @@ def test_monomial_orders() -> None:
     ("R = QQ[x]; y^2", "1:12: error: unknown identifier 'y'"),
     ("ideal(1)", "no ring active"),
     ("R = QQ[x,x]", "distinct variables"),
-    ("R = QQ[x, MonomialOrder => RevLex]", "unknown monomial order RevLex"),
+    ("R = QQ[x, MonomialOrder => RevLex]", "the monomial order is not global"),
+    ("R = QQ[x, MonomialOrder => Foo]", "unknown monomial order Foo"),
     ("R = QQ[x,y, MonomialOrder => {Weights => {-1,-1}}]", "not global"),
     ("R = QQ[x]; eliminate(3, ideal(x))", "expected ring variables, got 3"),
     ("R = QQ[x]; eliminate(ideal(x), \"x\")", "wrong arguments for eliminate"),
@@ -178,11 +179,14 @@ def test_dialects_keep_their_commands() -> None:
 def test_cli_runs_m2_files(tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
     from mech.cli import main
     f = tmp_path / "a.m2"
-    f.write_text("R = QQ[x,y];\ngens gb ideal(x^2 - y, x*y)\n")
-    assert main([str(f)]) == 0
-    assert capsys.readouterr().out == "o2 = matrix {{y^2, x*y, x^2-y}}\n"
-    assert main(["--dialect", "m2", "-c", "R = QQ[t]; factor(t^2 - 1)"]) == 0
-    assert capsys.readouterr().out == "o2 = (t-1)*(t+1)\n"
+    f.write_text("R = QQ[x,y]\ngens gb ideal(x^2 - y, x*y)\nprint toString dim ideal(x)\n")
+    assert main([str(f)]) == 0  # a script prints what it prints, as M2 --script
+    assert capsys.readouterr().out == "1\n"
+    assert main(["--dialect", "m2", "-c", "R = QQ[t]; print factor(t^2 - 1)"]) == 0
+    assert capsys.readouterr().out == "(t-1)*(t+1)\n"
+    from mech.cli import run_text
+    assert run_text("R = QQ[x,y]\ndim ideal(x)\n", "<stdin>", dialect="m2") == 0  # M2 < file: values too
+    assert capsys.readouterr().out == "o1 = R\no2 = 1\n"
     assert main(["--dialect", "m2", "-c", "R = QQ[t]; t +"]) == 1
     assert "<string>:1:" in capsys.readouterr().err
 

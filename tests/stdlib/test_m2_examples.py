@@ -79,8 +79,10 @@ def _ideals(v: object) -> list[list[Poly]]:
     return sorted((_dp(x.items[0] if isinstance(x, List) else x) for x in items), key=repr)
 
 
-def _factors(polys: list[Poly]) -> set[Poly]:
-    return {p if p.lc() > 0 else -p for p in polys if not p.is_constant()}
+def _factors(polys: list[Poly]) -> set[tuple]:
+    """The nonconstant factors, with positive leading coefficients, by their variables and terms
+    (each dialect's rings are its own)."""
+    return {(p.ring.names, frozenset((p if p.lc() > 0 else -p).terms.items())) for p in polys if not p.is_constant()}
 
 
 @pytest.mark.parametrize("name", sorted(SINGULAR))

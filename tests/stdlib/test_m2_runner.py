@@ -241,11 +241,11 @@ def test_classify(mech: dict, m2: dict, status: str, reason: str) -> None:
 
 
 def test_functions_mech_lacks() -> None:
-    info = {"globals": {"monomialIdeal": "function", "ideal": "function", "f": "function", "R": "Symbol"}}
-    code = "R = QQ[x]; monomialIdeal x; ideal x; f = y -> y; f x"
+    info = {"globals": {"localRing": "function", "ideal": "function", "f": "function", "R": "Symbol"}}
+    code = "R = QQ[x]; localRing x; ideal x; f = y -> y; f x"
     results = [R.Result(S.Case("f:1", "Pkg", "example", "n", code), "unsupported"),
                R.Result(S.Case("f:2", "Pkg", "example", "n", code), "agree")]
-    assert R.mech_lacks(results, info) == {"monomialIdeal": 1}
+    assert R.mech_lacks(results, info) == {"localRing": 1}
 
 
 def test_report_ranks_the_missing_features() -> None:

@@ -1,0 +1,234 @@
+"""The binary operators of the Macaulay2 dialect on its values: arithmetic with the promotion of
+elements between rings (an element of ``R`` meets one of ``R/I`` or of ``R[x]`` in the larger
+ring; results in a quotient ring are normal forms), strict equality ``===``, ``//``, ``|`` and
+``||`` (lists, strings, matrices), ``..<``, ``n : x`` (``n`` copies), quotient rings ``R / I``,
+``ZZ/p`` and ``f \\ L`` / ``f @@ g`` on functions."""
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any, Callable, Optional
+
+from ..kernel import Poly
+from .errors import MechNameError, MechRuntimeError, MechTypeError
+from .m2_rings import M2Ring, common_ring, normal, owner, promote, quotient_ring
+from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
+from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
+
+#: Macaulay2 symbols mech knows (option names and monomial orders)
+SYMBOLS = {"MonomialOrder", "Lex", "GRevLex", "GLex", "RevLex", "Weights", "Eliminate", "Global", "Degrees",
+           "Variables", "Position", "Up", "Down", "MonomialSize", "Strategy", "Verbose", "Limit", "DegreeLimit",
+           "Inhomogeneous", "SubringLimit", "BasisElementLimit", "PairLimit", "Reverse"}
+
+
+def ring_of(v: Any) -> Optional[M2Ring]:
+    """The Macaulay2 ring of a polynomial, number, ideal or matrix (None for others)."""
+    if isinstance(v, Poly):
+        return owner(v)
+    if isinstance(v, (Number, Ideal, Matrix)):
+        return getattr(v.ring, "owner", None) if not isinstance(v, Number) else getattr(v.ring, "owner", None)
+    return None
+
+
+def lift_to(v: Any, target: M2Ring) -> Any:
+    """A polynomial or number as an element of ``target``."""
+    if isinstance(v, Number):
+        v = v.to_poly()
+    if isinstance(v, Poly):
+        return promote(v, target)
+    return v
+
+
+def unknown(v: Any) -> None:
+    """The error for a symbol without a value used in arithmetic."""
+    if isinstance(v, Symbol) and v.name not in SYMBOLS:
+        raise MechNameError(f"unknown identifier '{v.name}' (a symbol without a value: not a variable of "
+                            f"the current ring)")
+
+
+def strictly_equal(a: Any, b: Any) -> bool:
+    """``a === b``: the same value of the same type (rings: the same ring; ideals: the same generators)."""
+    if isinstance(a, bool) or isinstance(b, bool):
+        return a is b
+    if type(a) is not type(b):
+        return False
+    if isinstance(a, (Ring, CoeffRing)):
+        return a is b or (isinstance(a, CoeffRing) and a.characteristic == b.characteristic)
+    if isinstance(a, Poly):
+        return a.ring is b.ring and a == b
+    if isinstance(a, Ideal):
+        return a.ring is b.ring and tuple(a.gens) == tuple(b.gens)
+    if isinstance(a, Matrix):
+        return a.ring is b.ring and (a.nrows, a.ncols) == (b.nrows, b.ncols) and list(a.entries) == list(b.entries)
+    if isinstance(a, (List, ExprList)):
+        return len(a.items) == len(b.items) and all(strictly_equal(x, y) for x, y in zip(a.items, b.items))
+    if isinstance(a, Opt):
+        return strictly_equal(a.key, b.key) and strictly_equal(a.value, b.value)
+    if isinstance(a, M2Set):
+        return set(a.keys) == set(b.keys)
+    try:
+        return bool(a == b)
+    except Exception:
+        return a is b
+
+
+def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[[Any, list], Any],
+              fallback: Callable[[str, Any, Any, Any], Any]) -> Any:
+    """``a op b`` for the operators only Macaulay2 has or gives another meaning (None when the
+    ordinary arithmetic of ``fallback(op, a, b, ring)`` applies); ``apply(f, args)`` calls a function."""
+    if op == "===":
+        return strictly_equal(a, b)
+    if op == "=!=":
+        return not strictly_equal(a, b)
+    unknown(a)
+    unknown(b)
+    if op == "..<":
+        return ExprList(list(range(to_int(a), to_int(b))))
+    if op == ":" and type(a) is int:
+        if a < 0:
+            raise MechRuntimeError("n : x takes n >= 0")
+        return ExprList([b] * a)
+    if op == "|":
+        return _bar(a, b)
+    if op == "||":
+        return _vbar(a, b)
+    if op == "&" and type(a) is int and type(b) is int:
+        return a & b
+    if op == "\\" and isinstance(a, FUNCTIONS):
+        if not isinstance(b, (List, ExprList)):
+            raise MechTypeError(f"f \\ L takes a list, not a {typeof(b)}")
+        return type(b)([apply(a, [x]) for x in b.items])
+    if op == "/" and isinstance(a, (List, ExprList)) and isinstance(b, FUNCTIONS):  # L / f: apply(L, f)
+        return type(a)([apply(b, [x]) for x in a.items])
+    if op == "@@" and isinstance(a, FUNCTIONS) and isinstance(b, FUNCTIONS):
+        return Composed(a, b)
+    if op == "/" and isinstance(a, CoeffRing) and a.characteristic is None and type(b) is int:
+        if b < 2 or any(b % d == 0 for d in range(2, int(b ** 0.5) + 1)):
+            raise MechRuntimeError(f"ZZ/{b}: mech's coefficient rings ZZ/p need a prime p")
+        return CoeffRing(b, f"ZZ/{b}")
+    if op == "/" and isinstance(a, M2Ring):
+        return quotient_ring(a, _relations(a, b))
+    if op == "//":
+        return _floor_div(a, b)
+    if op == "%" and type(a) is int and type(b) is int:
+        if b == 0:
+            raise MechRuntimeError("division by 0")
+        return a % b
+    return _arith(op, a, b, current, fallback)
+
+
+def _relations(R: M2Ring, b: Any) -> list[Poly]:
+    items = b.gens if isinstance(b, Ideal) else b.items if isinstance(b, (List, ExprList)) else [b]
+    out = []
+    for g in items:
+        if type(g) is int:
+            g = R.poly.const(R.poly.field(g))
+        elif isinstance(g, (Poly, Number)):
+            g = lift_to(g, R)
+        else:
+            raise MechTypeError(f"R / I takes an ideal or elements of R, not a {typeof(g)}")
+        out.append(g)
+    return out
+
+
+def _bar(a: Any, b: Any) -> Any:
+    if isinstance(a, (List, ExprList)) and isinstance(b, (List, ExprList)) and type(a) is type(b):
+        return type(a)(list(a.items) + list(b.items))
+    if isinstance(a, str) and isinstance(b, (str, int)) or isinstance(b, str) and type(a) is int:
+        return f"{a}{b}"
+    if type(a) is int and type(b) is int:
+        return a | b
+    if isinstance(a, Matrix) and isinstance(b, Matrix):
+        if a.nrows != b.nrows:
+            raise MechRuntimeError("A | B: the matrices need as many rows")
+        rows = [list(r) + list(s) for r, s in zip(a.rows(), b.rows())]
+        return Matrix(a.ring, a.nrows, a.ncols + b.ncols, [p for r in rows for p in r])
+    raise MechTypeError(f"no operator | for a {typeof(a)} and a {typeof(b)}")
+
+
+def _vbar(a: Any, b: Any) -> Any:
+    if isinstance(a, Matrix) and isinstance(b, Matrix):
+        if a.ncols != b.ncols:
+            raise MechRuntimeError("A || B: the matrices need as many columns")
+        return Matrix(a.ring, a.nrows + b.nrows, a.ncols, list(a.entries) + list(b.entries))
+    raise MechTypeError(f"no operator || for a {typeof(a)} and a {typeof(b)}")
+
+
+def _floor_div(a: Any, b: Any) -> Any:
+    if type(a) is int and type(b) is int:
+        if b == 0:
+            raise MechRuntimeError("division by 0")
+        return a // b
+    if isinstance(a, Poly) and isinstance(b, (Poly, Number, int)):
+        R = owner(a)
+        if isinstance(b, Poly) and owner(b) is not R:
+            raise MechTypeError("f // g: the polynomials are in different rings")
+        if R is not None and R.quotient is not None:
+            raise MechRuntimeError("f // g in a quotient ring is not supported")
+        g = b if isinstance(b, Poly) else a.ring.const(b.c if isinstance(b, Number) else a.ring.field(b))
+        if g.is_zero():
+            raise MechRuntimeError("division by 0")
+        return _quotient(a, g)
+    raise MechTypeError(f"no operator // for a {typeof(a)} and a {typeof(b)}")
+
+
+def _quotient(f: Poly, g: Poly) -> Poly:
+    """The quotient of the division of ``f`` by ``g`` (terms not divisible by ``lt(g)`` go to the remainder)."""
+    from ..kernel.poly import divides
+    q, rest = f.ring.zero(), f
+    lm, lc = g.lm(), g.lc()
+    while not rest.is_zero():
+        hit = next(((e, c) for e, c in rest.sorted_terms() if divides(lm, e)), None)
+        if hit is None:
+            break
+        e, c = hit
+        t = f.ring.monomial(tuple(x - y for x, y in zip(e, lm)), c / lc)
+        q, rest = q + t, rest - t * g
+    return q
+
+
+def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable) -> Any:
+    """Arithmetic after promoting both operands to their common ring; quotient rings reduce."""
+    ra, rb = ring_of(a), ring_of(b)
+    ring = ra or rb
+    if ra is not None and rb is not None and ra is not rb and op in "+-*/%" and not isinstance(a, (Ideal, Matrix)) \
+            and not isinstance(b, (Ideal, Matrix)):
+        ring = common_ring(ra, rb)
+        if ring is None:
+            raise MechTypeError(f"no operator {op} for elements of the rings {ra.name or ra.describe()} and "
+                                f"{rb.name or rb.describe()}")
+        a, b = lift_to(a, ring), lift_to(b, ring)
+    if op in ("==", "!=") and ra is not None and rb is not None and ra is not rb:
+        ring = common_ring(ra, rb)
+        if ring is not None and isinstance(a, (Poly, Number)) and isinstance(b, (Poly, Number)):
+            a, b = lift_to(a, ring), lift_to(b, ring)
+    if op == "/" and type(a) is int and type(b) is int:
+        if b == 0:
+            raise MechRuntimeError("division by 0")
+        if current is None:
+            return Fraction(a, b)
+        r = current.poly
+        return Number(r, r.field(a) / r.field(b))
+    if Fraction in (type(a), type(b)) and {type(a), type(b)} <= {int, Fraction} and op in "+-*/^":
+        return _rational(op, a, b)
+    v = fallback(op, a, b, ring.poly if ring is not None else (current.poly if current else None))
+    if isinstance(v, Poly) and ring is not None:
+        if ring.quotient is not None:
+            v = normal(v)
+        if ring.max_exponent is not None and any(k >= ring.max_exponent for e in v.terms for k in e):
+            raise MechRuntimeError(f"monomial overflow: exponents of this ring are below {ring.max_exponent} "
+                                   f"(MonomialSize)")
+    return v
+
+
+def _rational(op: str, a: Fraction | int, b: Fraction | int) -> Fraction | int:
+    """Arithmetic of rational numbers outside a ring (``1/2 + 1``); integral results are ints."""
+    if op == "^" and type(b) is not int:
+        raise MechTypeError("a rational number's exponent is an integer")
+    if op == "/" and b == 0:
+        raise MechRuntimeError("division by 0")
+    v = {"+": lambda: a + b, "-": lambda: a - b, "*": lambda: a * b, "/": lambda: Fraction(a) / b,
+         "^": lambda: Fraction(a) ** b}[op]()
+    return int(v) if v.denominator == 1 else v
+
+
+__all__ = ["SYMBOLS", "m2_binary", "ring_of", "lift_to", "strictly_equal"]
