@@ -272,7 +272,7 @@ class M2Interpreter(M2Control, Interpreter):
             ring = owner(base)
             values = self._values(node.items)
             if ring is None or len(values) != ring.poly.nvars:
-                raise MechRuntimeError(f"f[a, b, ...] takes one value per variable of f's ring")
+                raise MechRuntimeError("f[a, b, ...] takes one value per variable of f's ring")
             images = [lift_to(v, ring) if isinstance(v, (Poly, Number)) else normal(ring.poly.const(ring.poly.field(v)))
                       for v in values]
             return normal(map_value(base, images, ring.poly))

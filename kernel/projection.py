@@ -131,7 +131,7 @@ def certify(ideal: Sequence[Poly], ring: PolyRing, forms: Sequence[Poly], params
     is not a hypersurface or the factor degrees do not add up to ``deg V``.  ``ideal`` must be
     radical and equidimensional (over ``QQ(u)``), ``len(forms)`` its dimension over ``QQ(u)``
     plus one."""
-    n = _check_params(ring, params)
+    _check_params(ring, params)
     deg = variety_degree(ideal, ring, params) if deg is None else deg
     image, elim = eliminant(ideal, ring, forms, params)
     if len(elim) != 1 or elim[0].is_constant():

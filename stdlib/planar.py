@@ -17,10 +17,9 @@ the lengths.
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import Optional
 
 from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
-from mech.stdlib.joints import Described, Length, LineSlider, Link, MechanismError, Slider, where
+from mech.stdlib.joints import Described, Length, LineSlider, MechanismError, Slider, where
 
 
 Event = tuple[str, object]  # ("link", (i, link)) or ("free", point)

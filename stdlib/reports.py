@@ -219,7 +219,6 @@ def _singular_lines(a: Analysis) -> list[str]:
 
 def _embedded_lines(a: Analysis) -> list[str]:
     """The embedded components of a non-radical J and what they mean for the linkage."""
-    from mech.dsl.printing import poly_str
     if a.radical or not a.decomposed:
         return []
     if a.embedded is None:

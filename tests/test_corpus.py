@@ -1,6 +1,5 @@
 """The corpus: scripts in tests/corpus/*.sing with Singular 4.3.1's output in *.out must print exactly
 that under mech.  The live check (marker singular) confirms the recorded outputs against Singular."""
-from pathlib import Path
 
 import pytest
 from tests.util import ROOT, SINGULAR

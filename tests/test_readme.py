@@ -1,7 +1,6 @@
 """README.md's examples run: each ```mech block in a fresh session (its output must equal the
 plain ``` block right after it, when there is one), each ```python block as a program, and the
 set-up commands are the ones CI runs."""
-from pathlib import Path
 
 import pytest
 

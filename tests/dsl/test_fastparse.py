@@ -82,13 +82,13 @@ def random_statement(rng: random.Random) -> str:
     e = lambda: random_expr(rng, 3)  # noqa: E731
     return rng.choice([
         lambda: f"{e()};", lambda: f"{e()}, {e()};", lambda: f"x = {e()};", lambda: f"I[2], y = {e()}, {e()};",
-        lambda: f"poly f = {e()};", lambda: f"int i, j;", lambda: f"matrix m[2][3] = {e()};",
+        lambda: f"poly f = {e()};", lambda: "int i, j;", lambda: f"matrix m[2][3] = {e()};",
         lambda: f"list L = {e()}, {e()};", lambda: "k++;", lambda: "L[2]--;", lambda: f"{e()} = 1;",
         lambda: f"if ({e()}) {{ x = 1; }}", lambda: "LIB \"primdec.lib\";", lambda: f"// c\n{e()}; /* d */",
         lambda: f"{e()}", lambda: f"{e()};;", lambda: f"mechanism m = {e()};", lambda: f"return({e()});",
         lambda: f"if ({e()}) {{ x = 1; ; }} else {{ {e()}; }}", lambda: f"if (1) {{}} else if ({e()}) {{ k++; }} else {{}}",
         lambda: f"while ({e()}) {{ break; continue; {{ x; }} }}", lambda: f"for (int i = 1; i <= {e()}; i++) {{ x; }}",
-        lambda: f"for (; ; ) {{ }}", lambda: f"if ({e()}) x = 1;", lambda: f"{{ {e()}; }}", lambda: "else { x; }",
+        lambda: "for (; ; ) { }", lambda: f"if ({e()}) x = 1;", lambda: f"{{ {e()}; }}", lambda: "else { x; }",
         lambda: f"for (i = 1, j = 2; {e()}; ) {{ }}", lambda: f"while (1) {{ {e()} }}",
     ])()
 

@@ -267,7 +267,6 @@ def test_katsura_reference_script_runs_unchanged():
 def test_design_doc_command_example(monkeypatch):
     """docs/design.md's example of binding commands runs as documented."""
     import re
-    from pathlib import Path
 
     from mech.dsl import registry
     doc = (ROOT / "docs" / "design.md").read_text()

@@ -9,7 +9,6 @@ from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
 from mech.kernel.engines import standard_basis
 from mech.kernel.errors import EngineError
 from mech.kernel.fglm import NotZeroDimensional, fglm_modp, staircase
-from mech.kernel.poly import Poly
 
 LEX = [Block("lp", 5)]
 BLOCKS = [Block("dp", 2), Block("dp", 3)]

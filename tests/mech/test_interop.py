@@ -10,7 +10,6 @@ import pytest
 import sympy
 
 from mech import MechError, MechSyntaxError, MechTypeError, Session
-from mech.dsl.values import Ideal, Matrix, Number
 
 x, y, z = sympy.symbols("x y z")
 

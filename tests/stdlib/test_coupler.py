@@ -6,13 +6,12 @@ import re
 import subprocess
 import sys
 
-import numpy as np
 import pytest
 
 from mech.kernel import QQ, Block, MonomialOrder, PolyRing
 from mech.stdlib.coupler import coupler_curve, coupler_path
 from mech.stdlib.mechanism import parse_mechanism
-from tests.util import ROOT, error, parse_poly, run, run_singular
+from tests.util import ROOT, error, parse_poly, run_singular
 
 FOURBAR = "ground O A 5; bar O B 2; body B C 5 0 F 5/2 2; bar C A 4"
 

@@ -6,7 +6,6 @@ import os
 import random
 import re
 import subprocess
-from pathlib import Path
 from fractions import Fraction
 
 import pytest
