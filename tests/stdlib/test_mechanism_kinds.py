@@ -148,9 +148,15 @@ def test_stewart_assembly_modes_in_singular(tmp_path):
     base = [(0, 0), (4, 0), (5, 3), (2, 6), (-1, 5), (-2, 1)]
     names, eqs = stewart_ideal(base, [(0, 0), (2, 0), (1, 2)],
                                [(0, 1, 5), (1, 1, 5), (2, 2, 6), (3, 2, 6), (4, 3, 5), (5, 3, 6)])
-    script = (f'LIB "primdec.lib"; ring r = 0, ({",".join(names)}), dp; ideal J = {", ".join(eqs)};\n'
+    script = (f'LIB "primdec.lib"; LIB "rootsmr.lib"; ring r = 0, ({",".join(names)}), dp; '
+              f'ideal J = {", ".join(eqs)};\n'
               'ideal G = std(J); print(string(dim(G)) + " " + string(vdim(G)) + " " + '
-              'string(vdim(std(radical(J)))));\n')
-    assert run_singular(script, timeout=300).split() == ["0", "16", "16"]
+              'string(vdim(std(radical(J)))) + " " + string(nrRootsDeterm(G)));\n')
+    assert run_singular(script, timeout=300).split() == ["0", "16", "16", "8"]   # 8 real (Hermite's form)
     d = example("stewart", tmp_path)
     assert (d["mobility"], d["complex_configurations"]) == (0, 16)
+    modes = d["assembly_modes"]
+    assert (modes["complex"], modes["real"], len(modes["poses"])) == (16, 8, 8)
+    for pose in modes["poses"]:                 # each real pose: legs of the design's lengths (to 4 decimals)
+        p1 = [float(c) for c in pose["points"]["P1"]]
+        assert abs(sum(c * c for c in p1) - 25) < 1e-2
