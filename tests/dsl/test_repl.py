@@ -19,7 +19,6 @@ from prompt_toolkit.output import DummyOutput
 from mech import __version__
 from mech.dsl.completion import candidates
 from mech.dsl.repl import BANNER, Shell, StatusLine, is_complete, prompt_loop, prompt_session, run_repl
-from mech.kernel.engines import clear_cache
 
 from tests.util import ROOT
 
@@ -143,10 +142,10 @@ def test_syntax_error_then_a_correct_statement(capsys):
 
 
 def test_interrupt_during_a_long_std_keeps_the_session(capsys):
-    # No cached basis from earlier tests: with katsura-8's dp basis cached, the lex std reaches FGLM's
-    # exact solve (one python-flint call, which Ctrl-C cannot interrupt) within the 0.3 s.
-    clear_cache()
+    # Python's Buchberger: the auto engine may be inside one python-flint call (FGLM's exact solve, which
+    # holds the interpreter lock: Ctrl-C waits for it) when the interrupt comes.
     shell = Shell()
+    shell.interp.settings["engine"] = "buchberger"
     run = shell.interp.execute
 
     def execute(text, name):                  # Ctrl-C 0.3 s into katsura-8's lex std (Python loops, minutes)
