@@ -7,10 +7,16 @@ Tests marked ``singular`` or ``macaulay2`` are skipped when that program is not 
 from __future__ import annotations
 
 import shutil
+import signal
 
 import pytest
 
 _PROGRAMS = {"singular": "Singular", "macaulay2": "M2"}
+
+# The shell's tests simulate Ctrl-C (``_thread.interrupt_main``), which needs Python's KeyboardInterrupt
+# handler; Python leaves SIGINT ignored when its parent ignores it (a background job of a script).
+if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+    signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
