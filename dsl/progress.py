@@ -8,6 +8,7 @@ For the Python API pass a callback instead: ``mech.Session(progress=callback)`` 
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import sys
 import threading
 import time
@@ -92,10 +93,9 @@ def terminal_progress(stream: TextIO | None = None) -> Iterator[None]:
     """Show progress on ``stream`` (default standard error) when it is a terminal and tqdm is
     installed; otherwise nothing."""
     stream = stream or sys.stderr
-    try:
-        import tqdm  # noqa: F401
-        shown = stream.isatty()
-    except (ImportError, AttributeError, ValueError):
+    try:  # tqdm is imported when a bar is drawn, not on every start
+        shown = stream.isatty() and importlib.util.find_spec("tqdm") is not None
+    except (AttributeError, ValueError):
         shown = False
     if not shown:
         yield

@@ -95,13 +95,9 @@ def _multiples(b: Exp, n: int):
         yield tuple(t)
 
 
-def _border(basis, lms, P: Packing, border, B, p) -> dict[Exp, list[int]]:
-    eng = F4([], P, p)
-    packed_lms = []
-    for g in basis:
-        items = sorted(((P.pack(e), c) for e, c in g.items()), reverse=True)
-        eng._add([m for m, _ in items], [c for _, c in items], True)
-        packed_lms.append(items[0][0])
+def _border_pivots(P: Packing, packed_lms: list[int], border) -> dict[int, tuple[int, int]]:
+    """Each border monomial (packed) as a multiple of a basis element's leading monomial:
+    ``(index of the element, packed cofactor)``."""
     g = P.guard
     pivots = {}
     for t in border:
@@ -109,6 +105,17 @@ def _border(basis, lms, P: Packing, border, B, p) -> dict[Exp, list[int]]:
         xg = x | g
         k = next(k for k, lm in enumerate(packed_lms) if (xg - lm) & g == g)
         pivots[x] = (k, x - packed_lms[k])
+    return pivots
+
+
+def _border(basis, lms, P: Packing, border, B, p) -> dict[Exp, list[int]]:
+    eng = F4([], P, p)
+    packed_lms = []
+    for g in basis:
+        items = sorted(((P.pack(e), c) for e, c in g.items()), reverse=True)
+        eng._add([m for m, _ in items], [c for _, c in items], True)
+        packed_lms.append(items[0][0])
+    pivots = _border_pivots(P, packed_lms, border)
     T, pivcols, nonpivot, *_ = eng._matrix([], pivots)
     m = len(nonpivot)
     index = {P.pack(b): j for j, b in enumerate(B)}
@@ -309,13 +316,7 @@ def _border_qq(basis, P: Packing, border, B) -> dict[Exp, list]:
         eng._add([m for m, _ in items], [0] * len(items), True)
         coefs.append([c for _, c in items])
         packed_lms.append(items[0][0])
-    g = P.guard
-    pivots = {}
-    for t in border:
-        x = P.pack(t)
-        xg = x | g
-        k = next(k for k, lm in enumerate(packed_lms) if (xg - lm) & g == g)
-        pivots[x] = (k, x - packed_lms[k])
+    pivots = _border_pivots(P, packed_lms, border)
     rowmons, nonpivot = eng._symbolic([], pivots)
     nonpivot.sort()
     m = len(nonpivot)
