@@ -9,6 +9,7 @@ from mech.kernel import Poly
 from mech.kernel.ideals import dp_ring, ideals_equal, move, std
 from mech.stdlib.analysis import Analysis, SingularPoint
 from mech.stdlib.mechanism_real import real_sections
+from mech.stdlib.mode_names import mode_names
 from mech.stdlib.realpoints import count_real_roots
 from mech.stdlib.standard import normalize
 
@@ -71,10 +72,12 @@ def report_data(a: Analysis) -> dict:
         d["motion_modes"] = [{"prime": ps(dp_basis(m.prime)), "dimension": m.dim, "real_points": None}
                              for m in a.modes]  # over Q(lengths); [] when not computed
     else:
+        names = mode_names(a) if a.decomposed else []
         d["motion_modes"] = [{"prime": ps(dp_basis(m.prime)), "dimension": m.dim, "real_points": m.real,
                               "primary_equals_prime": None if m.primary is None
-                              else ideals_equal(m.primary, m.prime, a.ring)}
-                             for m in a.modes]
+                              else ideals_equal(m.primary, m.prime, a.ring),
+                              **({"name": n.name, "shape": n.data()} if n else {"name": None} if names else {})}
+                             for m, n in zip(a.modes, names or [None] * len(a.modes))]
         if a.mobility == 0 and a.radical:
             d["complex_configurations"] = configuration_count(a)
         d["motion_modes_by"] = a.modes_by if a.modes_found and a.decomposed else None
@@ -162,6 +165,7 @@ def report_text(a: Analysis) -> str:
 def _modes_lines(a: Analysis) -> list[str]:
     """The motion modes (numeric lengths)."""
     out = []
+    names = mode_names(a) if a.decomposed else []
     if not a.modes_found:
         bound = f" (at most {a.mode_bound}: a slice meets V(J) in {a.mode_bound} Galois orbits)" \
             if a.mode_bound else ""
@@ -179,6 +183,8 @@ def _modes_lines(a: Analysis) -> list[str]:
         low = "" if m.dim == a.dim else ", lower-dimensional (fewer degrees of freedom than the mobility" + \
             ("; a rigid configuration" if m.dim == 0 else "") + ")"
         out.append(f"  [{i}] dim {m.dim}, {real}{low}: {_show(dp_basis(m.prime))}")
+        if names:
+            out.append(f"      {names[i - 1].name if names[i - 1] else 'not named (over the names budget)'}")
     return out
 
 
