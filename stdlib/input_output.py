@@ -53,20 +53,31 @@ class InputOutput:
     dead_centres: list[tuple[float, float]]
     transmission: Optional[tuple[float, float]] = None
     singular: list[tuple[float, float]] = field(default_factory=list)
+    #: On one motion mode: its number and name, and the links frozen on it ("input", "output") with
+    #: their angle (None: an algebraic angle).
+    mode: Optional[int] = None
+    name: Optional[str] = None
+    frozen: dict[str, Optional[float]] = field(default_factory=dict)
 
     def lines(self) -> list[str]:
         i, o = self.input_link, self.output_link
         out = [f"input link {i}, output link {o} (angles to the x-axis, degrees):"]
-        out.append(f"  output range: {_arcs(self.output_range)}")
-        out.append(f"  input range: {_arcs(self.input_range)}")
-        if self.limit_positions:
-            out.append("  limit positions of the output (input, output): " + _pairs(self.limit_positions))
-        else:
-            out.append("  limit positions of the output: none")
-        if self.dead_centres:
-            out.append("  dead-centre positions of the input (input, output): " + _pairs(self.dead_centres))
-        else:
-            out.append("  dead-centre positions of the input: none (the input drives the output everywhere)")
+        for role, link, arcs in (("output", o, self.output_range), ("input", i, self.input_range)):
+            if role in self.frozen:
+                at = self.frozen[role]
+                out.append(f"  {role}: link {link} is frozen on this mode" +
+                           (f", at {at:.2f}" if at is not None else ", at an algebraic angle") +
+                           (" (the input does not drive this motion)" if role == "input" else
+                            " (the output does not move)"))
+            else:
+                out.append(f"  {role} range: {_arcs(arcs)}")
+        if "output" not in self.frozen:
+            out.append("  limit positions of the output (input, output): " + _pairs(self.limit_positions)
+                       if self.limit_positions else "  limit positions of the output: none")
+        if "input" not in self.frozen:
+            out.append("  dead-centre positions of the input (input, output): " + _pairs(self.dead_centres)
+                       if self.dead_centres else
+                       "  dead-centre positions of the input: none (the input drives the output everywhere)")
         if self.singular:
             out.append("  singular configurations on the way (input, output): " + _pairs(self.singular))
         if self.transmission is not None:
@@ -84,7 +95,43 @@ class InputOutput:
                 "limit_positions": [list(p) for p in self.limit_positions],
                 "dead_centres": [list(p) for p in self.dead_centres],
                 "singular": [list(p) for p in self.singular],
-                "transmission_angle": list(self.transmission) if self.transmission else None}
+                "transmission_angle": list(self.transmission) if self.transmission else None,
+                **({} if self.mode is None else {
+                    "mode": self.mode, "name": self.name,
+                    "input_frozen": "input" in self.frozen, "input_frozen_at": self.frozen.get("input"),
+                    "output_frozen": "output" in self.frozen, "output_frozen_at": self.frozen.get("output")})}
+
+
+@dataclass
+class ModesIO:
+    """The input–output answers mode by mode (one-dimensional modes with real points); ``skipped``:
+    the other modes and those whose computation failed, with the reason."""
+
+    input_link: int
+    output_link: int
+    modes: list[InputOutput]
+    skipped: list[tuple[int, str]] = field(default_factory=list)
+
+    def lines(self) -> list[str]:
+        if len(self.modes) == 1 and not self.skipped:
+            return self.modes[0].lines()
+        out = [f"input link {self.input_link}, output link {self.output_link} (angles to the x-axis, degrees), "
+               f"mode by mode:"]
+        for io in self.modes:
+            out.append(f"  mode {io.mode}" + (f" ({io.name})" if io.name else "") + ":")
+            out += ["  " + line for line in io.lines()[1:]]
+        out += [f"  mode {k}: {why}" for k, why in self.skipped]
+        return out
+
+    def data(self) -> dict[str, Any]:
+        """``input_link``, ``output_link``, ``modes`` (each mode's answers with ``mode``, ``name``,
+        ``input_frozen``, ``output_frozen``), ``skipped``; with one mode also its keys at the top."""
+        d: dict[str, Any] = {"input_link": self.input_link, "output_link": self.output_link}
+        if len(self.modes) == 1 and not self.skipped:
+            d.update(self.modes[0].data())
+        d["modes"] = [io.data() for io in self.modes]
+        d["skipped"] = [{"mode": k, "reason": why} for k, why in self.skipped]
+        return d
 
 
 def _arcs(arcs: list[tuple[float, float]]) -> str:
@@ -116,13 +163,22 @@ def _rotation(R: PolyRing, j: int) -> list[Poly]:
     return g
 
 
-def _critical_points(J: list[Poly], grad: list[Poly]) -> tuple[list[list[float]], list[list[float]]]:
-    """The real critical points of ``f`` (gradient ``grad``) on ``V(J)``: those where the curve is
-    smooth, and the singular configurations among them (where ``dJ`` has rank below ``n - 1``:
-    the smallest singular values of the Jacobian at the 10^-12-boxes' centres tell)."""
+def _critical_points(J: list[Poly], grad: list[Poly], on: Optional[list[Poly]] = None
+                     ) -> tuple[list[list[float]], list[list[float]]]:
+    """The real critical points of ``f`` (gradient ``grad``) on ``V(J)`` (on the mode ``V(on)``
+    when given: the Lagrange minors of ``dJ``, or of the mode's own generators when ``J`` is not
+    reduced along it): those where the curve is smooth, and the singular configurations among them
+    (where ``dJ`` has rank below ``n - 1``: the smallest singular values of the Jacobian at the
+    10^-12-boxes' centres tell)."""
     import numpy as np
     R = J[0].ring
-    sols = real_solutions(_critical_system(J, grad), R, 12)
+    if on is None:
+        sols = real_solutions(_critical_system(J, grad), R, 12)
+    else:
+        try:
+            sols = real_solutions(list(on) + _critical_system(J, grad)[len(J):], R, 12)
+        except RealSolvingError:
+            sols = real_solutions(_critical_system(list(on), grad), R, 12)
     pts = [[float(Fraction(int(v.p), int(v.q))) for v in s.midpoint()] for s in sols.real]
     jac = [[g.diff(k) for k in range(R.nvars)] for g in J]
     smooth, singular = [], []
@@ -145,6 +201,7 @@ def _on_circle(phi: float) -> tuple[Fraction, Fraction]:
 
 
 def _attained(J: list[Poly], j: int, phi: float) -> bool:
+    """Whether the angle of link ``j`` takes (nearly) the value ``phi`` on ``V(J)``."""
     R = J[0].ring
     c, s = _on_circle(phi)
     cj, sj = R.gens()[2 * j - 2], R.gens()[2 * j - 1]
@@ -177,24 +234,78 @@ def angle_range(J: list[Poly], j: int, critical: list[list[float]]) -> list[tupl
 
 
 def input_output(m: Mechanism, J: list[Poly], inp: int, out: int,
-                 transmission: Optional[tuple[str, int, int]] = None) -> InputOutput:
+                 transmission: Optional[tuple[str, int, int]] = None,
+                 on: Optional[list[Poly]] = None) -> InputOutput:
     """The input–output answers for links ``inp`` and ``out`` (1-based) of ``m`` with constraint
-    ideal ``J`` (numeric lengths, mobility 1); ``transmission = (joint, k, j)``: the transmission
-    angle at the joint of links ``k`` and ``j``."""
+    ideal ``J`` (numeric lengths, mobility 1), on the motion mode with prime ``on`` when given
+    (a link whose angle is constant there is reported frozen, with its angle);
+    ``transmission = (joint, k, j)``: the transmission angle at the joint of links ``k`` and ``j``."""
     R = J[0].ring
-    lim, sing = _critical_points(J, _rotation(R, out))
-    dead, sing2 = _critical_points(J, _rotation(R, inp))
+    curve = list(on) if on is not None else J
+    frozen = _frozen(on, inp, out) if on is not None else {}
+    crit = {}
+    for role, link in (("output", out), ("input", inp)):
+        crit[role] = ([], []) if role in frozen else _critical_points(J, _rotation(R, link), on)
+    (lim, sing), (dead, sing2) = crit["output"], crit["input"]
     pair = lambda p: (_angle(p, inp), _angle(p, out))  # noqa: E731
-    io = InputOutput(inp, out, angle_range(J, out, lim), angle_range(J, inp, dead),
+
+    def arc(role: str, link: int, pts: list[list[float]]) -> list[tuple[float, float]]:
+        if role not in frozen:
+            return angle_range(curve, link, pts)
+        at = frozen[role]
+        return [] if at is None else [(at, at)]
+    io = InputOutput(inp, out, arc("output", out, lim), arc("input", inp, dead),
                      sorted(map(pair, lim)), sorted(map(pair, dead)),
-                     singular=sorted(set(map(pair, sing + sing2))))
+                     singular=sorted(set(map(pair, sing + sing2))), frozen=frozen)
     if transmission is not None:
-        io.transmission = _transmission(m, J, *transmission)
+        io.transmission = _transmission(m, J, *transmission, on=on)
     return io
 
 
-def _transmission(m: Mechanism, J: list[Poly], joint: str, k: int, j: int) -> tuple[float, float]:
-    """``(min, max)`` of the angle at ``joint`` between links ``k`` and ``j`` (degrees)."""
+def _frozen(prime: list[Poly], inp: int, out: int) -> dict[str, Optional[float]]:
+    """The links among the input and output whose angle is constant on the mode ``V(prime)``
+    (normal forms against its Gröbner basis, :mod:`mech.stdlib.mode_names`), with the angle."""
+    from mech.stdlib.mode_names import _Mode
+    P = _Mode(prime)
+    R = prime[0].ring
+    out_: dict[str, Optional[float]] = {}
+    for role, link in (("input", inp), ("output", out)):
+        c, s = R.gens()[2 * link - 2], R.gens()[2 * link - 1]
+        a, b = P.constant(c), P.constant(s)
+        if a is not None and b is not None:
+            out_[role] = _angle([float(a), float(b)], 1)
+        elif P.algebraic(c) or P.algebraic(s):
+            out_[role] = None
+    return out_
+
+
+def modes_input_output(m: Mechanism, a: Any, inp: int, out: int,
+                       transmission: Optional[tuple[str, int, int]] = None) -> ModesIO:
+    """The input–output answers on each one-dimensional motion mode with real points of the
+    analysis ``a`` (the whole configuration space when its modes are not known)."""
+    from mech.stdlib.mode_names import mode_names
+    if not a.modes:
+        return ModesIO(inp, out, [input_output(m, a.ideal, inp, out, transmission)])
+    names = mode_names(a)
+    res = ModesIO(inp, out, [])
+    for k, md in enumerate(a.modes, 1):
+        if md.dim != 1 or md.real is False:
+            res.skipped.append((k, "no real points" if md.real is False else f"dimension {md.dim}, no motion"))
+            continue
+        try:
+            io = input_output(m, a.ideal, inp, out, transmission, on=md.prime)
+        except RealSolvingError as e:
+            res.skipped.append((k, f"not computed ({e})"))
+            continue
+        io.mode, io.name = k, names[k - 1].name if k <= len(names) and names[k - 1] else None
+        res.modes.append(io)
+    return res
+
+
+def _transmission(m: Mechanism, J: list[Poly], joint: str, k: int, j: int,
+                  on: Optional[list[Poly]] = None) -> tuple[float, float]:
+    """``(min, max)`` of the angle at ``joint`` between links ``k`` and ``j`` (degrees), on the
+    mode ``V(on)`` when given."""
     R = J[0].ring
     pos, _ = m.positions(R)
     ends = []
@@ -203,10 +314,17 @@ def _transmission(m: Mechanism, J: list[Poly], joint: str, k: int, j: int) -> tu
         ends.append((pos[other][0] - pos[joint][0], pos[other][1] - pos[joint][1]))
     (ux, uy), (vx, vy) = ends
     dot = ux * vx + uy * vy
-    crit = [p for part in _critical_points(J, [dot.diff(i) for i in range(R.nvars)]) for p in part]
+    n2 = [(x * x + y * y) for x, y in ends]
+    if on is not None:
+        from mech.stdlib.mode_names import _Mode
+        P = _Mode(on)
+        vals = [P.constant(f) for f in (dot, *n2)]
+        if None not in vals:  # constant on the mode
+            mu = round(math.degrees(math.acos(max(-1.0, min(1.0, float(vals[0]) / math.sqrt(vals[1] * vals[2]))))), 2)
+            return mu, mu
+    crit = [p for part in _critical_points(J, [dot.diff(i) for i in range(R.nvars)], on) for p in part]
     if not crit:
         raise RealSolvingError("no extreme of the transmission angle found")
-    n2 = [(x * x + y * y) for x, y in ends]
     vals = []
     for p in crit:
         norm = math.sqrt(_eval(n2[0], p) * _eval(n2[1], p))
@@ -227,15 +345,15 @@ def _eval(p: Poly, pt: list[float]) -> float:
                for ex, c in p.terms.items())
 
 
-def four_bar_io(m: Mechanism, J: list[Poly]) -> Optional[InputOutput]:
-    """The crank (input) to rocker (output) analysis of a four-bar, with its transmission angle at
-    the coupler-rocker joint (None if ``m`` is not a four-bar)."""
+def four_bar_io(m: Mechanism, a: Any) -> Optional[ModesIO]:
+    """The crank (input) to rocker (output) analysis of a four-bar (analysed in ``a``) mode by
+    mode, with its transmission angle at the coupler-rocker joint (None if ``m`` is not a four-bar)."""
     from mech.stdlib.grashof import four_bar
     fb = four_bar(m)
     if fb is None:
         return None
     crank, coupler, rocker = fb.links
-    return input_output(m, J, crank, rocker, (fb.joints[2], coupler, rocker))
+    return modes_input_output(m, a, crank, rocker, (fb.joints[2], coupler, rocker))
 
 
 # ---------------------------------------------------------------- command
@@ -265,7 +383,7 @@ def _command(m: Mechanism, inp: Optional[int], out: Optional[int]) -> str:
     elif fb is not None and (inp, out) == (fb.links[2], fb.links[0]):
         trans = (fb.joints[1], fb.links[1], fb.links[0])
     try:
-        io = input_output(m, a.ideal, inp, out, trans)
+        io = modes_input_output(m, a, inp, out, trans)
     except RealSolvingError as e:
         raise MechRuntimeError(f"inputOutput: {e}") from None
     return "\n".join(io.lines())

@@ -214,7 +214,7 @@ def _compute(a: Analysis) -> RealSections:
         _branch_section(sec, a)
         if fb is not None:
             from mech.stdlib.input_output import four_bar_io
-            io = _step(sec, "input and output", four_bar_io, a.mechanism, a.ideal)
+            io = _step(sec, "input and output", four_bar_io, a.mechanism, a)
             if io is not None:
                 sec.data["input_output"] = io.data()
                 sec.lines += ["  " + line for line in io.lines()]

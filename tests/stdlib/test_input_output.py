@@ -99,3 +99,61 @@ def test_report_and_command():
 def test_errors(code, message):
     e = error(f'LIB "mechanism.lib"; mechanism m = "{CRANK_ROCKER}";\n{code}')
     assert message in str(e)
+
+
+KITE = "ground O A 1; bar O B 1; bar B C 2; bar C A 2"
+
+
+def _modes(text, inp=1, out=3, trans=("C", 2, 3)):
+    from mech.stdlib.input_output import modes_input_output
+    a = analyze(parse_mechanism(text))
+    return {io.name: io for io in modes_input_output(a.mechanism, a, inp, out, trans).modes}
+
+
+def test_kite_mode_by_mode():
+    """Kite O=(0,0), A=(1,0), |OB|=1, |BC|=|CA|=2 (two modes; J as a whole has a frozen link on one,
+    so its Lagrange system is not zero-dimensional).  By hand: on the folded mode B = A the crank
+    rests at 0 and C circles about A (the rocker C->A turns fully); the angle at C between CB and CA
+    is 0 throughout.  On the general (kite) mode C lies on the bisector of angle AOB, the crank and
+    the rocker both turn fully, and the transmission angle at C has cos mu = (4 + 4 - |BA|^2)/8 with
+    |BA| in [0, 2]: mu from 0 to 60.  Both modes meet where B = A and C is on the x-axis: the
+    rocker at 0 or 180."""
+    ios = _modes(KITE)
+    folded, general = ios["folded mode: B = A; link 1 frozen at 0°"], ios["general mode"]
+    assert folded.frozen == {"input": 0.0} and folded.input_range == [(0.0, 0.0)]
+    assert folded.output_range == [(-180.0, 180.0)] and folded.limit_positions == []
+    assert folded.transmission == (0.0, 0.0) and folded.singular == [(0.0, 0.0), (0.0, 180.0)]
+    assert general.frozen == {} and general.input_range == general.output_range == [(-180.0, 180.0)]
+    assert general.dead_centres == general.limit_positions == [] and general.transmission == (0.0, 60.0)
+    text = "\n".join(folded.lines())
+    assert "input: link 1 is frozen on this mode, at 0.00 (the input does not drive this motion)" in text
+    assert "dead-centre" not in text
+
+
+def test_kite_output_frozen():
+    """Driven from the rocker, the folded mode has the output (the crank) frozen at 0 while the
+    input turns fully; the angle at B = A between BC and BO = (-1, 0) sweeps 0..180 as C circles."""
+    folded = _modes(KITE, 3, 1, ("B", 2, 1))["folded mode: B = A; link 1 frozen at 0°"]
+    assert folded.frozen == {"output": 0.0} and folded.input_range == [(-180.0, 180.0)]
+    assert "  output: link 1 is frozen on this mode, at 0.00 (the output does not move)" in folded.lines()
+    assert folded.transmission == (0.0, 180.0)
+
+
+def test_parallelogram_modes_turn_fully():
+    """Parallelogram four-bar (2; 1, 2, 1): on both modes the crank and the rocker turn fully (the
+    rocker C->A is the crank turned by 180 on the parallelogram mode); the angle at C between CB and
+    CA spans 0..180 on both."""
+    ios = _modes("ground O A 2; bar O B 1; bar B C 2; bar C A 1")
+    assert len(ios) == 2
+    for io in ios.values():
+        assert io.input_range == io.output_range == [(-180.0, 180.0)] and io.transmission == (0.0, 180.0)
+
+
+def test_kite_command_and_report():
+    out = run(f'LIB "mechanism.lib"; mechanism m = "{KITE}"; inputOutput(m);')
+    assert "mode by mode:" in out and "  mode 2 (general mode):" in out
+    d = report_data(analyze(parse_mechanism(KITE)))["input_output"]
+    assert [(x["mode"], x["input_frozen"], x["input_frozen_at"]) for x in d["modes"]] == [(1, True, 0.0), (2, False, None)]
+    assert "output_range" not in d  # two modes: the answers are only per mode
+    d = report_data(analyze(parse_mechanism(CRANK_ROCKER)))["input_output"]
+    assert d["modes"][0]["output_range"] == d["output_range"] and d["modes"][0]["mode"] == 1
