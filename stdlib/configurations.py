@@ -259,7 +259,7 @@ def export_configurations_command(m: Mechanism, path: str, count: int = 100) -> 
       exportConfigurations(m, "/tmp/c.csv");
       → <stdin>:3:1: error: '/tmp/c.csv': give a path relative to the working directory (scripts write only inside it)
       → exportConfigurations(m, "/tmp/c.csv");
-      → ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
+      → ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
     """
     output_file(path, (".csv", ".json"))
     write_configurations(sample_configurations(m, count), path)
