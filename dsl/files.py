@@ -2,8 +2,8 @@
 
 Scripts read no files but libraries (``LIB "name";``: mech's own, or a regular file of that name
 next to the script, never through a symbolic link), and write none but the pictures of the plot
-commands: :func:`output_file` admits a relative path inside the working directory, ending in one
-of the picture endings, without ``..``, not through a symbolic link, to a folder that exists; a
+commands and the configuration files of ``exportConfigurations``: :func:`output_file` admits a
+relative path inside the working directory, ending in one of the caller's endings, without ``..``, not through a symbolic link, to a folder that exists; a
 file there is replaced only when it is a regular file.
 """
 from __future__ import annotations

@@ -135,7 +135,8 @@ def _real_answers_blocks():
 
 
 @pytest.mark.parametrize("code, expected, excerpt", _real_answers_blocks(), ids=lambda v: str(v)[:20])
-def test_docs_real_answers(code, expected, excerpt):
+def test_docs_real_answers(code, expected, excerpt, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # exportConfigurations writes its file here
     out = Session().execute(code)
     if expected is None:
         return
