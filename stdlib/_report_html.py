@@ -44,8 +44,11 @@ def report_html(a: Analysis) -> str:
             parts.append("<p>singularities need one of: " +
                          ", ".join(f"<code>{escape(f)} = 0</code>" for f in d["length_conditions"]) + "</p>")
     if d["motion_modes"]:
-        parts.append(_table(f"motion modes: {len(d['motion_modes'])}", ["", "dim", "real points", "prime"],
-                            [(i, m["dimension"], _yes(m["real_points"]), _ideal(m["prime"]))
+        named = any("name" in m for m in d["motion_modes"])
+        parts.append(_table(f"motion modes: {len(d['motion_modes'])}",
+                            ["", "dim", "real points"] + (["name"] if named else []) + ["prime"],
+                            [(i, m["dimension"], _yes(m["real_points"]))
+                             + ((escape(m.get("name") or ""),) if named else ()) + (_ideal(m["prime"]),)
                              for i, m in enumerate(d["motion_modes"], 1)]))
     if "singular" in d:
         rows = []
