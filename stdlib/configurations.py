@@ -113,6 +113,17 @@ def _circuit_count(prime: list, ring: Any) -> Optional[int]:
     return n if ok else None
 
 
+def circuit_split(prime: list, ring: Any, nlinks: int, count: int = DENSE, seed: int = 0
+                  ) -> tuple[Any, Optional[list[int]], Optional[int]]:
+    """Sampled points of the one-dimensional mode ``V(prime)`` (from ``count`` starts), their
+    circuits 1..k (None when the split is not clear) and the exact number ``k`` of circuits (None
+    when not computed)."""
+    from mech.stdlib.plots import sample_mode
+    x = sample_mode(prime, nlinks, count, seed=seed)
+    k = _circuit_count(prime, ring)
+    return x, _tree_split(x, k) if k else None, k
+
+
 def _mode_points(md: Any, ring: Any, nlinks: int, count: int, seed: int) -> tuple[Any, list[int] | None, Optional[int]]:
     """Points of one mode, their circuits (None: not assigned) and the exact circuit count."""
     import numpy as np
@@ -122,11 +133,9 @@ def _mode_points(md: Any, ring: Any, nlinks: int, count: int, seed: int) -> tupl
         sols = real_solutions(md.prime, ring, 15).real
         x = np.array([[float(v.p) / float(v.q) for v in s.midpoint()] for s in sols]).reshape(len(sols), ring.nvars)
         return x, list(range(1, len(sols) + 1)), len(sols)
-    x = sample_mode(md.prime, nlinks, max(DENSE, 4 * count), seed=seed)
     if md.dim != 1:
-        return _spread(x, count), None, None
-    k = _circuit_count(md.prime, ring)
-    labels = _tree_split(x, k) if k else None
+        return _spread(sample_mode(md.prime, nlinks, max(DENSE, 4 * count), seed=seed), count), None, None
+    x, labels, k = circuit_split(md.prime, ring, nlinks, max(DENSE, 4 * count), seed)
     if labels is None:
         return _spread(x, count), None, k
     parts, circuits = [], []

@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 from flint import fmpq
 
@@ -58,6 +58,9 @@ class InputOutput:
     mode: Optional[int] = None
     name: Optional[str] = None
     frozen: dict[str, Optional[float]] = field(default_factory=dict)
+    #: The answers on each real circuit of the mode (when it has several), ``circuit`` numbering them.
+    circuits: list["InputOutput"] = field(default_factory=list)
+    circuit: Optional[int] = None
 
     def lines(self) -> list[str]:
         i, o = self.input_link, self.output_link
@@ -84,6 +87,9 @@ class InputOutput:
             lo, hi = self.transmission
             out.append(f"  transmission angle: from {lo:.2f} to {hi:.2f} (largest deviation from 90: "
                        f"{max(abs(90 - lo), abs(90 - hi)):.2f})")
+        for c in self.circuits:
+            out.append(f"  on circuit {c.circuit} of {len(self.circuits)}:")
+            out += ["  " + line for line in c.lines()[1:] if "frozen on this mode" not in line]
         return out
 
     def data(self) -> dict[str, Any]:
@@ -99,7 +105,9 @@ class InputOutput:
                 **({} if self.mode is None else {
                     "mode": self.mode, "name": self.name,
                     "input_frozen": "input" in self.frozen, "input_frozen_at": self.frozen.get("input"),
-                    "output_frozen": "output" in self.frozen, "output_frozen_at": self.frozen.get("output")})}
+                    "output_frozen": "output" in self.frozen, "output_frozen_at": self.frozen.get("output")}),
+                **({"circuit": self.circuit} if self.circuit is not None else
+                   {"circuits": [c.data() for c in self.circuits]} if self.mode is not None else {})}
 
 
 @dataclass
@@ -200,26 +208,36 @@ def _on_circle(phi: float) -> tuple[Fraction, Fraction]:
     return (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)
 
 
-def _attained(J: list[Poly], j: int, phi: float) -> bool:
-    """Whether the angle of link ``j`` takes (nearly) the value ``phi`` on ``V(J)``."""
+def _fibre(J: list[Poly], j: int, phi: float) -> list[Poly]:
     R = J[0].ring
     c, s = _on_circle(phi)
     cj, sj = R.gens()[2 * j - 2], R.gens()[2 * j - 1]
-    fibre = list(J) + [cj - R.const(fmpq(c.numerator, c.denominator)),
-                       sj - R.const(fmpq(s.numerator, s.denominator))]
-    return count_solutions(fibre, R)[1] > 0
+    return list(J) + [cj - R.const(fmpq(c.numerator, c.denominator)),
+                      sj - R.const(fmpq(s.numerator, s.denominator))]
 
 
-def angle_range(J: list[Poly], j: int, critical: list[list[float]]) -> list[tuple[float, float]]:
-    """The arcs of ``theta_j`` over the real curve, from its critical points."""
+def _attained(J: list[Poly], j: int, phi: float, circuit: Optional[Callable[[list[float]], bool]] = None) -> bool:
+    """Whether the angle of link ``j`` takes (nearly) the value ``phi`` on ``V(J)`` (at a point
+    for which ``circuit`` holds, when given)."""
+    if circuit is None:
+        return count_solutions(_fibre(J, j, phi), J[0].ring)[1] > 0
+    sols = real_solutions(_fibre(J, j, phi), J[0].ring, 12).real
+    return any(circuit([float(Fraction(int(v.p), int(v.q))) for v in s.midpoint()]) for s in sols)
+
+
+def angle_range(J: list[Poly], j: int, critical: list[list[float]],
+                circuit: Optional[Callable[[list[float]], bool]] = None) -> list[tuple[float, float]]:
+    """The arcs of ``theta_j`` over the real curve (the points for which ``circuit`` holds, when
+    given: one circuit), from its critical points (there)."""
     values = sorted({_angle(p, j) for p in critical})
     if len(values) < 2:  # no reversal: the link turns fully (through the one value, if any) or not at all
-        return [(-180.0, 180.0)] if _attained(J, j, math.radians(values[0] + 180) if values else 0.3) else []
+        phi = math.radians(values[0] + 180) if values else 0.3
+        return [(-180.0, 180.0)] if _attained(J, j, phi, circuit) else []
     arcs = []
     for k, a in enumerate(values):
         b = values[(k + 1) % len(values)]
         span = (b - a) % 360 or 360.0
-        if _attained(J, j, math.radians(a + span / 2)):
+        if _attained(J, j, math.radians(a + span / 2), circuit):
             arcs.append((a, b))
     merged: list[tuple[float, float]] = []
     for a, b in arcs:  # consecutive attained arcs join at their common end
@@ -257,9 +275,38 @@ def input_output(m: Mechanism, J: list[Poly], inp: int, out: int,
     io = InputOutput(inp, out, arc("output", out, lim), arc("input", inp, dead),
                      sorted(map(pair, lim)), sorted(map(pair, dead)),
                      singular=sorted(set(map(pair, sing + sing2))), frozen=frozen)
+    trans_pts: list[list[float]] = []
     if transmission is not None:
-        io.transmission = _transmission(m, J, *transmission, on=on)
+        io.transmission, trans_pts = _transmission(m, J, *transmission, on=on)
+    split = _circuits(m, on) if on is not None else None
+    for c in range(1, (split[1] if split else 0) + 1):
+        mine = lambda pts: [p for p in pts if split[0](p) == c]  # noqa: E731
+        here = lambda p: split[0](p) == c  # noqa: E731
+        sub = InputOutput(inp, out, [] if "output" in frozen else angle_range(curve, out, mine(lim), here),
+                          [] if "input" in frozen else angle_range(curve, inp, mine(dead), here),
+                          sorted(map(pair, mine(lim))), sorted(map(pair, mine(dead))),
+                          singular=sorted(set(map(pair, mine(sing + sing2)))), frozen=frozen, circuit=c)
+        for role in frozen:
+            setattr(sub, f"{role}_range", getattr(io, f"{role}_range"))
+        if transmission is not None and io.transmission[0] != io.transmission[1]:
+            sub.transmission = _extremes(m, *transmission, mine(trans_pts))
+        else:
+            sub.transmission = io.transmission
+        io.circuits.append(sub)
     return io
+
+
+def _circuits(m: Mechanism, prime: list[Poly]) -> Optional[tuple[Callable[[list[float]], int], int]]:
+    """For a mode with several real circuits whose samples split clearly
+    (:func:`mech.stdlib.configurations.circuit_split`): the circuit of a point (that of the nearest
+    sample) and the number of circuits; None otherwise."""
+    import numpy as np
+    from mech.stdlib.configurations import circuit_split
+    x, labels, k = circuit_split(prime, prime[0].ring, len(m.links))
+    if labels is None or not k or k < 2:
+        return None
+    lab = np.array(labels)
+    return (lambda p: int(lab[np.argmin(np.linalg.norm(x - np.array(p), axis=1))])), k
 
 
 def _frozen(prime: list[Poly], inp: int, out: int) -> dict[str, Optional[float]]:
@@ -302,34 +349,47 @@ def modes_input_output(m: Mechanism, a: Any, inp: int, out: int,
     return res
 
 
-def _transmission(m: Mechanism, J: list[Poly], joint: str, k: int, j: int,
-                  on: Optional[list[Poly]] = None) -> tuple[float, float]:
-    """``(min, max)`` of the angle at ``joint`` between links ``k`` and ``j`` (degrees), on the
-    mode ``V(on)`` when given."""
-    R = J[0].ring
+def _link_vectors(m: Mechanism, R: PolyRing, joint: str, k: int, j: int) -> tuple[Poly, Poly, Poly]:
+    """The dot product of links ``k`` and ``j`` from ``joint`` and their squared lengths."""
     pos, _ = m.positions(R)
     ends = []
     for link in (m.links[k - 1], m.links[j - 1]):
         other = next(p for p in link.points if p != joint and p in _joints(m))
         ends.append((pos[other][0] - pos[joint][0], pos[other][1] - pos[joint][1]))
     (ux, uy), (vx, vy) = ends
-    dot = ux * vx + uy * vy
-    n2 = [(x * x + y * y) for x, y in ends]
+    return ux * vx + uy * vy, ux * ux + uy * uy, vx * vx + vy * vy
+
+
+def _extremes(m: Mechanism, joint: str, k: int, j: int, crit: list[list[float]]) -> Optional[tuple[float, float]]:
+    """``(min, max)`` of the angle at ``joint`` between links ``k`` and ``j`` over the points ``crit``."""
+    if not crit:
+        return None
+    dot, n1, n2 = _link_vectors(m, m.ring(), joint, k, j)
+    vals = []
+    for p in crit:
+        norm = math.sqrt(_eval(n1, p) * _eval(n2, p))
+        vals.append(math.degrees(math.acos(max(-1.0, min(1.0, _eval(dot, p) / norm)))))
+    return round(min(vals), 2), round(max(vals), 2)
+
+
+def _transmission(m: Mechanism, J: list[Poly], joint: str, k: int, j: int,
+                  on: Optional[list[Poly]] = None) -> tuple[tuple[float, float], list[list[float]]]:
+    """``(min, max)`` of the angle at ``joint`` between links ``k`` and ``j`` (degrees), on the
+    mode ``V(on)`` when given, and the critical points of the links' dot product."""
+    R = J[0].ring
+    dot, n1, n2 = _link_vectors(m, R, joint, k, j)
     if on is not None:
         from mech.stdlib.mode_names import _Mode
         P = _Mode(on)
-        vals = [P.constant(f) for f in (dot, *n2)]
+        vals = [P.constant(f) for f in (dot, n1, n2)]
         if None not in vals:  # constant on the mode
             mu = round(math.degrees(math.acos(max(-1.0, min(1.0, float(vals[0]) / math.sqrt(vals[1] * vals[2]))))), 2)
-            return mu, mu
+            return (mu, mu), []
     crit = [p for part in _critical_points(J, [dot.diff(i) for i in range(R.nvars)], on) for p in part]
-    if not crit:
+    found = _extremes(m, joint, k, j, crit)
+    if found is None:
         raise RealSolvingError("no extreme of the transmission angle found")
-    vals = []
-    for p in crit:
-        norm = math.sqrt(_eval(n2[0], p) * _eval(n2[1], p))
-        vals.append(math.degrees(math.acos(max(-1.0, min(1.0, _eval(dot, p) / norm)))))
-    return round(min(vals), 2), round(max(vals), 2)
+    return found, crit
 
 
 def _joints(m: Mechanism) -> set[str]:
@@ -405,6 +465,18 @@ def input_output_command(m: Mechanism, inp: int = 0, out: int = 0) -> str:
       →   limit positions of the output (input, output): (-126.87, -36.87), (-34.05, 101.54), (34.05, -101.54), (126.87, 36.87)
       →   dead-centre positions of the input: none (the input drives the output everywhere)
       →   transmission angle: from 36.87 to 101.54 (largest deviation from 90: 53.13)
+      →   on circuit 1 of 2:
+      →     output range: [36.87, 101.54]
+      →     input range: turns fully
+      →     limit positions of the output (input, output): (-34.05, 101.54), (126.87, 36.87)
+      →     dead-centre positions of the input: none (the input drives the output everywhere)
+      →     transmission angle: from 36.87 to 101.54 (largest deviation from 90: 53.13)
+      →   on circuit 2 of 2:
+      →     output range: [-101.54, -36.87]
+      →     input range: turns fully
+      →     limit positions of the output (input, output): (-126.87, -36.87), (34.05, -101.54)
+      →     dead-centre positions of the input: none (the input drives the output everywhere)
+      →     transmission angle: from 36.87 to 101.54 (largest deviation from 90: 53.13)
     """
     if (inp == 0) != (out == 0):
         raise MechRuntimeError("inputOutput: give both the input and the output link, or neither")

@@ -10,8 +10,9 @@ kinematician reads, computed exactly with :mod:`mech.kernel.real_solve`, ``real_
 * ``real_branches``: at each singular configuration that is a point, the real branches through it,
   their tangent directions and the type (node: branches cross and the linkage can switch; cusp;
   isolated real configuration; ...);
-* ``input_output`` for a four-bar: crank to rocker, the rocker's range and limit positions, the
-  crank's dead centres, the transmission angle (:mod:`mech.stdlib.input_output`).
+* ``input_output`` for a four-bar: crank to rocker mode by mode (and circuit by circuit), the
+  rocker's range and limit positions, the crank's dead centres, the transmission angle, a link
+  frozen on a mode said so (:mod:`mech.stdlib.input_output`).
 
 The steps share a time budget (:data:`BUDGET` seconds for all of them, and never beyond the
 statement's own time limit); a step over budget is reported as such instead of holding up the

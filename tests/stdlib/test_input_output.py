@@ -157,3 +157,21 @@ def test_kite_command_and_report():
     assert "output_range" not in d  # two modes: the answers are only per mode
     d = report_data(analyze(parse_mechanism(CRANK_ROCKER)))["input_output"]
     assert d["modes"][0]["output_range"] == d["output_range"] and d["modes"][0]["mode"] == 1
+
+
+def test_crank_rocker_per_circuit():
+    """The crank-rocker's two circuits are mirror images in the ground line (the assembly modes):
+    by hand, on the circuit with C below the ground the link C->A points up, so the rocker's angle
+    stays in [36.87, 101.54]; its limit positions are the extended one (crank towards C, below:
+    (-34.05, 101.54)) and the folded one (crank away from C: (126.87, 36.87)).  The other circuit
+    is the mirror image; the transmission angle spans the same range on both."""
+    (io,) = _modes(CRANK_ROCKER).values()
+    assert [c.circuit for c in io.circuits] == [1, 2]
+    by_range = {tuple(c.output_range): c for c in io.circuits}
+    below, above = by_range[((36.87, 101.54),)], by_range[((-101.54, -36.87),)]
+    assert below.limit_positions == [(-34.05, 101.54), (126.87, 36.87)]
+    assert above.limit_positions == [(-126.87, -36.87), (34.05, -101.54)]
+    for c in (below, above):
+        assert c.input_range == [(-180.0, 180.0)] and c.dead_centres == [] and c.transmission == (36.87, 101.54)
+    d = report_data(analyze(parse_mechanism(CRANK_ROCKER)))["input_output"]
+    assert [c["circuit"] for c in d["modes"][0]["circuits"]] == [1, 2]
