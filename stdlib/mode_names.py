@@ -174,6 +174,21 @@ def name_mode(m: Mechanism, prime: Sequence[Poly], dim: int) -> ModeName:
     return out
 
 
+def _classes(pairs: list[tuple[str, str]]) -> list[list[str]]:
+    """The classes of points that coincide, each in the order first seen (a fixed point last,
+    as the pairs put it)."""
+    classes: list[list[str]] = []
+    for p, q in pairs:
+        hit = [c for c in classes if p in c or q in c]
+        merged = [x for c in hit for x in c]
+        for x in (p, q):
+            if x not in merged:
+                merged.append(x)
+        fixed_last = sorted(merged, key=lambda x: any(x == b for _, b in pairs) and not any(x == a for a, _ in pairs))
+        classes = [c for c in classes if c not in hit] + [fixed_last]
+    return classes
+
+
 def _label(k: int | str) -> str:
     return f"link {k}" if isinstance(k, int) else f"joint {k}"
 
@@ -181,7 +196,7 @@ def _label(k: int | str) -> str:
 def _words(n: ModeName, nangles: int) -> str:
     parts = []
     if n.coincident:
-        parts.append("folded mode: " + ", ".join(f"{p} = {q}" for p, q in n.coincident))
+        parts.append("folded mode: " + ", ".join(" = ".join(c) for c in _classes(n.coincident)))
     if n.parallelograms:
         parts.append("parallelogram mode: " + ", ".join(" ".join(q) for q in n.parallelograms))
     if n.anti_parallelograms:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import json
+import math
 from fractions import Fraction
 
 import pytest
@@ -51,8 +52,8 @@ def test_csv_rows_satisfy_the_constraints(tmp_path, monkeypatch):
 
 def test_json_kite_modes(tmp_path, monkeypatch):
     """Kite: both modes have one circuit; on the folded mode B = A (c1 = 1, s1 = 0, the crank's
-    angle 0), on the general mode C lies on the bisector of angle AOB (the kite's symmetry:
-    |OC|^2 = |OB|^2 + |BC|^2 - ... by symmetry theta_OC = theta1 / 2 mod 180)."""
+    angle 0); on the general mode the kite O B C A is symmetric about the line OC (|OB| = |OA|,
+    |BC| = |CA|), so C lies on the line through O at half the crank's angle."""
     path = _file(tmp_path, monkeypatch, KITE, "k.json", 12)
     d = json.loads(path.read_text())
     assert [(m["mode"], m["circuits"], m["circuits_assigned"]) for m in d["modes"]] == [(1, 1, True), (2, 1, True)]
@@ -63,7 +64,6 @@ def test_json_kite_modes(tmp_path, monkeypatch):
         if r["mode"] == 1:
             assert abs(r["B_x"] - 1) < 1e-9 and abs(r["B_y"]) < 1e-9 and abs(r["theta1"]) < 1e-6
         else:  # C on the line through O at half the crank's angle
-            import math
             half = math.radians(r["theta1"] / 2)
             assert abs(r["C_x"] * math.sin(half) - r["C_y"] * math.cos(half)) < 1e-9
 
