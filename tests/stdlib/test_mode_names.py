@@ -93,3 +93,10 @@ def test_names_in_reports():
     assert folded["shape"]["coincident_points"] == [["B", "A"]]
     assert folded["shape"]["frozen_links"] == [{"link": 1, "angle": 0.0}]
     assert report_data(a)["motion_modes"][0].keys() >= {"name", "shape", "prime"}
+
+
+def test_coinciding_points_grouped():
+    """Pairs B = A, F = A, B = F are one class, written once with the fixed point last."""
+    from mech.stdlib.mode_names import _classes
+    assert _classes([("B", "A"), ("F", "A"), ("B", "F")]) == [["B", "F", "A"]]
+    assert _classes([("C", "O"), ("F", "A")]) == [["C", "O"], ["F", "A"]]
