@@ -246,7 +246,9 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
       → mobility 0; J is radical
       → motion modes (minimal primes of J): 2
       →   [1] dim 0, has real points: <s1, c1-1>
+      →       rigid mode (an isolated configuration: no link moves)
       →   [2] dim 0, has real points: <s1, c1+1>
+      →       rigid mode (an isolated configuration: no link moves)
       → singular configurations (Theorem 1: V(J + I_2(dJ))): 0
       → real answers (exact real solving):
       →   assembly modes: 2 complex, 2 real

@@ -15,7 +15,7 @@ Gröbner basis (dp), never a table of known mechanisms.
   lengths and whose diagonals ``ac`` and ``bd`` are parallel on the mode (the crossed form);
 * **parallel links**: ``c_i - c_j, s_i - s_j`` (same direction) or ``c_i + c_j, s_i + s_j``
   (opposite) in ``P``;
-* **rigid**: the mode is a point (dimension 0); otherwise **general** when none of the above holds.
+* **rigid**: the mode is a point, or a Galois orbit of points (dimension 0); otherwise **general** when none of the above holds.
 """
 from __future__ import annotations
 
@@ -130,7 +130,10 @@ def name_mode(m: Mechanism, prime: Sequence[Poly], dim: int) -> ModeName:
     """The name of the motion mode ``V(prime)`` (of dimension ``dim``) of ``m``."""
     P = _Mode(prime)
     if dim == 0:
-        return ModeName("rigid mode (an isolated configuration: no link moves)", rigid=True)
+        from mech.kernel.hilbert import vdim
+        k = vdim([g.lm() for g in P.basis], P.ring.nvars)
+        what = "an isolated configuration" if k == 1 else f"{k} conjugate isolated configurations over C"
+        return ModeName(f"rigid mode ({what}: no link moves)", rigid=True)
     out = ModeName("")
     frozen_k: set = set()
     for k, c, s in _angles(prime[0].ring):

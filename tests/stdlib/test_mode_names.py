@@ -100,3 +100,11 @@ def test_coinciding_points_grouped():
     from mech.stdlib.mode_names import _classes
     assert _classes([("B", "A"), ("F", "A"), ("B", "F")]) == [["B", "F", "A"]]
     assert _classes([("C", "O"), ("F", "A")]) == [["C", "O"], ["F", "A"]]
+
+
+def test_rigid_orbit():
+    """The 3-RPR of docs/mechanisms.md (legs 5, 7, 4): one rigid mode over Q holding its 6 complex
+    assembly modes (a Galois orbit), named with that count."""
+    a = analyze(parse_mechanism("fix A1; fix A2 6 0; fix A3 0 5; bar A1 B1 5; bar A2 B2 7; bar A3 B3 4; "
+                                "body B1 B2 5 0 B3 4 3"))
+    assert [n.name for n in mode_names(a)] == ["rigid mode (6 conjugate isolated configurations over C: no link moves)"]
