@@ -105,7 +105,7 @@ def _tree_split(x: Any, k: int) -> Optional[list[int]]:
 def _circuit_count(prime: list, ring: Any) -> Optional[int]:
     from mech.kernel.real_curve import curve_topology
     from mech.kernel.real_roots import RealSolvingError
-    from mech.stdlib.mechanism_real import within
+    from mech.dsl.limits import within
     try:
         ok, n = within(CIRCUIT_BUDGET, lambda: curve_topology(prime, ring, None).count)
     except RealSolvingError:

@@ -229,7 +229,7 @@ def mode_names(a: Any) -> list[Optional[ModeName]]:
     if hit is not None and hit[0] is a:
         return hit[1]
     import time
-    from mech.stdlib.mechanism_real import within
+    from mech.dsl.limits import within
     names: list[Optional[ModeName]] = []
     if not a.params:
         deadline = time.monotonic() + BUDGET
