@@ -279,19 +279,20 @@ def input_output(m: Mechanism, J: list[Poly], inp: int, out: int,
     if transmission is not None:
         io.transmission, trans_pts = _transmission(m, J, *transmission, on=on)
     split = _circuits(m, on) if on is not None else None
-    for c in range(1, (split[1] if split else 0) + 1):
-        mine = lambda pts: [p for p in pts if split[0](p) == c]  # noqa: E731
-        here = lambda p: split[0](p) == c  # noqa: E731
-        sub = InputOutput(inp, out, [] if "output" in frozen else angle_range(curve, out, mine(lim), here),
-                          [] if "input" in frozen else angle_range(curve, inp, mine(dead), here),
-                          sorted(map(pair, mine(lim))), sorted(map(pair, mine(dead))),
-                          singular=sorted(set(map(pair, mine(sing + sing2)))), frozen=frozen, circuit=c)
-        for role in frozen:
-            setattr(sub, f"{role}_range", getattr(io, f"{role}_range"))
+    if split is None:
+        return io
+    circuit_of, count = split
+    for c in range(1, count + 1):
+        def here(p: list[float], c: int = c) -> bool:
+            return circuit_of(p) == c
+        lim_c, dead_c = [p for p in lim if here(p)], [p for p in dead if here(p)]
+        sub = InputOutput(inp, out, io.output_range if "output" in frozen else angle_range(curve, out, lim_c, here),
+                          io.input_range if "input" in frozen else angle_range(curve, inp, dead_c, here),
+                          sorted(map(pair, lim_c)), sorted(map(pair, dead_c)),
+                          singular=sorted({pair(p) for p in sing + sing2 if here(p)}), frozen=frozen, circuit=c)
+        sub.transmission = io.transmission
         if transmission is not None and io.transmission[0] != io.transmission[1]:
-            sub.transmission = _extremes(m, *transmission, mine(trans_pts))
-        else:
-            sub.transmission = io.transmission
+            sub.transmission = _extremes(m, *transmission, [p for p in trans_pts if here(p)])
         io.circuits.append(sub)
     return io
 
