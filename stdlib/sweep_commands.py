@@ -77,7 +77,9 @@ def sweep_cmd(ctx: Any, m: Mechanism, designs: str, answers: str = "mobility,rea
     designs: "grid l1=a:b:n ...", "random N l1=a:b ... [seed=S]" or "lhs N ...";
     answers: mobility, modes, real, grashof, singular; options: "workers=N timeout=S batch=N
     scheduler=ADDRESS|inline shared=yes|no" (default: a Dask cluster on all cores; the generic
-    length conditions first only for singular; docs/sweeps.md).
+    length conditions first only for singular; the discriminant curves for real counts over two
+    parameters and 50 designs or more; docs/sweeps.md). A progress bar on a terminal; under a
+    statement time limit the sweep stops with the rows done kept in the file.
 
     Example:
       LIB "mechanism.lib";

@@ -6,18 +6,17 @@ computed from specializations. For a separating linear form ``t`` of the configu
 the characteristic polynomial of multiplication by ``t`` in ``Q[x]/J(a, b)`` is, for generic
 ``(a, b)``, ``P(t, a, b) / P_D(a, b)`` with ``P`` primitive in ``Z[a, b][t]`` of degree ``D`` (the
 number of complex solutions). ``P`` is found by evaluation and exact interpolation: at rational
-points ``(a0, b0)`` the characteristic polynomial is computed exactly (:class:`QuotientAlgebra`),
-and the coefficients of ``P`` (in total degree ``d``, ``d`` growing) solve the linear equations
-``P_k(a0, b0) = c_k(a0, b0) P_D(a0, b0)``; the degree found modulo a prime, the solution is exact
-(integer nullspace) and checked at fresh points. Where the real count changes, two solutions meet
-(the discriminant of ``P`` in ``t`` vanishes) or one goes to infinity (``P_D`` vanishes). The
-discriminant of one form also vanishes where two distinct solutions share ``t``'s value (a
+points ``(a0, b0)`` the characteristic polynomial is computed exactly (:class:`QuotientAlgebra`);
+the degrees of ``P``'s coefficients are read along a generic line, and the exponents of ``a`` and
+``b`` that occur along lines through the axes (small univariate systems modulo a prime); then the
+coefficients on that support solve the linear equations ``P_k(a0, b0) = c_k(a0, b0) P_D(a0, b0)``,
+whose one-dimensional kernel is found modulo primes and lifted (Chinese remainders, rational
+reconstruction), checked on every equation and at fresh points. Where the real count changes,
+two solutions meet (the discriminant of ``P`` in ``t`` vanishes) or one goes to infinity (``P_D``
+vanishes). The discriminant of one form also vanishes where two distinct solutions share ``t``'s value (a
 conjugate pair with a real ``t``): only the irreducible factors common to two forms are kept.
 
-Designs on a grid off the curves are grouped by cells (:func:`grid_cells`): two neighbours are in
-one cell when the segment between them meets no curve (decided exactly: the real roots of each
-curve's polynomial on the grid line), so one design per group is analysed and the others get its
-count. A zero parameter is a barrier too (a bar of length 0 turns freely).
+The designs of a grid are grouped by the cells of these curves in :mod:`mech.stdlib.sweep_cells`.
 """
 from __future__ import annotations
 
@@ -29,11 +28,11 @@ from typing import Any, Sequence
 
 from flint import fmpq, fmpz_mpoly_ctx, nmod_mat
 
-from mech.kernel.real_roots import RealSolvingError, isolate_real_roots
+from mech.kernel.real_roots import RealSolvingError
 from mech.kernel.real_solve import QuotientAlgebra
 from mech.kernel.poly import Poly, PolyRing
 
-PRIME = 4611686018427387847  # < 2^62: the degree search modulo it
+PRIME = 4611686018427387847  # < 2^62: the degrees along lines are found modulo it
 SEED = 20261124
 MAX_DEGREE = 40
 

@@ -29,7 +29,7 @@ from mech.stdlib.sweep_designs import DesignSet
 BATCHES_PER_WORKER = 8
 MAX_BATCH = 64
 SHARED_CURVES = 20.0            # seconds for the discriminant curves, at least
-CURVE_SECONDS_PER_DESIGN = 0.5  # and this per design to do (what analysing it might cost)
+CURVE_SECONDS_PER_DESIGN = 1.0  # and this per design to do (what analysing it might cost)
 CURVES_LIMIT = 120.0            # at most
 CURVES_MIN_DESIGNS = 50         # fewer designs to do: not worth it (unless shared=yes)
 
