@@ -16,13 +16,13 @@ sys.path.insert(0, str(ROOT))
 def system(name: str):
     """(ring, generators) of a benchmark system in dp."""
     from benchmarks.cases import cyclic, katsura
-    from mech.dsl.interpreter import Interpreter
+    from mech import Session
     fam, n = name.split("-")
     names, gens = (katsura if fam == "katsura" else cyclic)(int(n))
-    it = Interpreter()
-    it.execute(f"ring r = 0,({','.join(names)}),dp; ideal i = {', '.join(gens)};")
-    ring = it.ring
-    return ring, list(it.globals["i"].value.gens)
+    s = Session(warnings=False)
+    s.execute(f"ring r = 0,({','.join(names)}),dp; ideal I = {', '.join(gens)};")
+    ideal = s["I"]
+    return ideal.ring, list(ideal.gens)
 
 
 def replays(trace, coefs, ps):

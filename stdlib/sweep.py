@@ -142,8 +142,8 @@ def shared_work(spec: SweepSpec, params: list[str], limit: float = SHARED_LIMIT)
 def on_conditions(shared: Shared, point: list[Fraction]) -> tuple[bool, str]:
     """Whether the design may have singular configurations (a length is 0, or it lies on a
     component's conditions), and the length conditions vanishing there."""
-    names = ", ".join([n for n, f in zip(shared.names, shared.conditions) if _value(f, point) == 0]
-                      + [n for n, f in zip(shared.curve_labels, shared.curves) if _value(f, point) == 0])
+    names = ", ".join(dict.fromkeys([n for n, f in zip(shared.names, shared.conditions) if _value(f, point) == 0]
+                                    + [n for n, f in zip(shared.curve_labels, shared.curves) if _value(f, point) == 0]))
     if shared.dominant or any(x == 0 for x in point):
         return True, names
     return any(all(_value(g, point) == 0 for g in comp) for comp in shared.components), names
