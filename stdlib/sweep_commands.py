@@ -78,7 +78,7 @@ def sweep_cmd(ctx: Any, m: Mechanism, designs: str, answers: str = "mobility,rea
     answers: mobility, modes, real, grashof, singular; options: "workers=N timeout=S batch=N
     scheduler=ADDRESS|inline shared=yes|no" (default: a Dask cluster on all cores; the generic
     length conditions first only for singular; the discriminant curves for real counts over two
-    parameters and 500 designs or more; docs/sweeps.md). A progress bar on a terminal; under a
+    parameters and 1000 designs or more; docs/sweeps.md). A progress bar on a terminal; under a
     statement time limit the sweep stops with the rows done kept in the file.
 
     Example:

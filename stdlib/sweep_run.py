@@ -30,8 +30,8 @@ BATCHES_PER_WORKER = 8
 MAX_BATCH = 64
 SHARED_CURVES = 20.0            # seconds for the discriminant curves, at least
 CURVE_SECONDS_PER_DESIGN = 0.25  # and this per design to do
-CURVES_LIMIT = 120.0            # at most
-CURVES_MIN_DESIGNS = 500        # fewer designs to do: not worth it (unless shared=yes)
+CURVES_LIMIT = 300.0            # at most
+CURVES_MIN_DESIGNS = 1000       # fewer designs to do: not worth it (unless shared=yes)
 
 OnRow = Callable[[dict[str, Any], int, int], None]
 
@@ -138,7 +138,7 @@ def run_sweep(spec: SweepSpec, designs: DesignSet, out: str | None = None, *, sc
     """All rows of the sweep (those already in ``out`` included), ordered by design id. ``shared``:
     compute the generic length conditions first (default: when singular configurations are asked
     for, the answer they save work on) and, for real counts over two parameters, the discriminant
-    curves (default: for 500 designs or more; designs of a grid in one cell of them are analysed
+    curves (default: for 1000 designs or more; designs of a grid in one cell of them are analysed
     once). Under a statement's time limit (``mech --timeout``) the sweep stops before it with the
     rows done kept, and raises the limit's error saying so; per-design limits end by then too."""
     from mech.dsl.limits import LimitExceeded, MechLimitError, TimeLimitExceeded, limit_error, remaining
