@@ -14,7 +14,7 @@ from mech.stdlib.sweep_map import draw_map
 from mech.stdlib.sweep_run import read_rows, run_sweep, typed
 
 MAP_LIMIT = 5.0  # seconds for the length conditions drawn on a map
-MAP_CURVES_LIMIT = 120.0  # seconds for the discriminant curves of a mechanism of mobility 0
+MAP_CURVES_LIMIT = 300.0  # seconds for the discriminant curves of a mechanism of mobility 0
 OPTIONS = ("workers", "timeout", "batch", "scheduler", "shared")
 
 
