@@ -41,6 +41,7 @@ class SweepSpec:
     mechanism: Mechanism
     answers: tuple[str, ...] = DEFAULT_ANSWERS
     timeout: float | None = None  # seconds per design (None: no limit)
+    deadline: float | None = None  # wall-clock time (time.time()) when the whole sweep must stop
 
     def columns(self, params: list[str]) -> list[str]:
         extra = [a for a in ANSWERS if a in self.answers]
@@ -62,6 +63,8 @@ class Shared:
     conditions: list[dict[tuple[int, ...], Fraction]] = field(default_factory=list)
     dominant: bool = True
     note: str = ""
+    curves: list[dict[tuple[int, int], Fraction]] = field(default_factory=list)  # discriminant curves
+    curve_labels: list[str] = field(default_factory=list)
 
 
 def parse_answers(text: str | list[str] | tuple[str, ...]) -> tuple[str, ...]:
@@ -106,13 +109,18 @@ def _value(terms: dict[tuple[int, ...], Fraction], point: list[Fraction]) -> Fra
 def shared_work(spec: SweepSpec, params: list[str], limit: float = SHARED_LIMIT) -> Shared:
     """The generic mechanism's length conditions (``limit`` seconds or ``spec.timeout``, the
     larger, at most; when they do not finish nothing is skipped)."""
+    from mech.dsl.limits import within
     from mech.dsl.printing import poly_str
     from mech.stdlib.analysis import global_analysis
     out = Shared(list(params))
+    seconds = max(spec.timeout or 0, limit)
     try:
-        a = limited(lambda: global_analysis(spec.mechanism, decompose=False), max(spec.timeout or 0, limit))
+        ok, a = within(seconds, global_analysis, spec.mechanism, False)
     except Exception as e:  # noqa: BLE001 - the shared work is an optimisation: every design still runs
-        out.note = f"no shared length conditions ({_message(e)}): every design analysed in full"
+        ok, a = False, _message(e)
+    if not ok:
+        why = a if isinstance(a, str) else f"not found in {seconds:g} s"
+        out.note = f"no shared length conditions ({why}): every design analysed in full"
         return out
     first = a.nvars
     order = list(a.ring.names[first:])
@@ -134,30 +142,28 @@ def shared_work(spec: SweepSpec, params: list[str], limit: float = SHARED_LIMIT)
 def on_conditions(shared: Shared, point: list[Fraction]) -> tuple[bool, str]:
     """Whether the design may have singular configurations (a length is 0, or it lies on a
     component's conditions), and the length conditions vanishing there."""
-    names = ", ".join(n for n, f in zip(shared.names, shared.conditions) if _value(f, point) == 0)
+    names = ", ".join(dict.fromkeys([n for n, f in zip(shared.names, shared.conditions) if _value(f, point) == 0]
+                                    + [n for n, f in zip(shared.curve_labels, shared.curves) if _value(f, point) == 0]))
     if shared.dominant or any(x == 0 for x in point):
         return True, names
     return any(all(_value(g, point) == 0 for g in comp) for comp in shared.components), names
 
 
 # ---------------------------------------------------------------- one design
-def limited(fn: Callable[[], Any], timeout: float | None) -> Any:
-    """``fn()`` under a time limit (mech's watchdog: works in any thread, e.g. a Dask worker's)."""
-    if not timeout:
-        return fn()
-    from mech.dsl.limits import Limits
-    return Limits(timeout).run(_interpreter(), fn)
+#: The error of a design not analysed because the whole sweep's time ran out (never written: the
+#: design is analysed when the sweep is resumed).
+STOPPED = "stopped: the sweep's time limit"
 
 
-_INTERP: list[Any] = []
-
-
-def _interpreter() -> Any:
-    """One interpreter per process, for the limits' bookkeeping."""
-    if not _INTERP:
-        from mech.dsl.interpreter import Interpreter
-        _INTERP.append(Interpreter())
-    return _INTERP[0]
+def _budget(spec: SweepSpec) -> tuple[float | None, bool]:
+    """The design's time limit: ``spec.timeout``, or less when the sweep's own deadline comes
+    first (then True)."""
+    if spec.deadline is None:
+        return spec.timeout, False
+    left = spec.deadline - time.time() - 0.1  # stop just before the statement's limit fires
+    if spec.timeout is None or left < spec.timeout:
+        return left, True
+    return spec.timeout, False
 
 
 def _message(e: BaseException) -> str:
@@ -171,8 +177,16 @@ def analyse_design(spec: SweepSpec, shared: Shared, ident: int, design: dict[str
     point = [design[p] for p in shared.params]
     may_be_singular, row["conditions"] = on_conditions(shared, point)
     errors: list[str] = []
+    budget, capped = _budget(spec)
+    if capped and budget <= 0:
+        return {**row, "error": STOPPED}
+    from mech.dsl.limits import within
     try:
-        limited(lambda: _answers(spec, design, may_be_singular, row, errors), spec.timeout)
+        ok, _ = within(budget, _answers, spec, design, may_be_singular, row, errors)
+        if not ok:
+            if capped:
+                return {**row, "error": STOPPED}
+            errors.append(f"time limit of {spec.timeout:g} s exceeded")
     except Exception as e:  # noqa: BLE001 - a failure is the row's answer, never the sweep's end
         errors.append(_message(e))
     row["seconds"] = round(time.perf_counter() - start, 4)

@@ -14,6 +14,7 @@ from mech.stdlib.sweep_map import draw_map
 from mech.stdlib.sweep_run import read_rows, run_sweep, typed
 
 MAP_LIMIT = 5.0  # seconds for the length conditions drawn on a map
+MAP_CURVES_LIMIT = 300.0  # seconds for the discriminant curves of a mechanism of mobility 0
 OPTIONS = ("workers", "timeout", "batch", "scheduler", "shared")
 
 
@@ -28,9 +29,10 @@ def sweep_rows(m: Mechanism, designs: str, answers: Any = "mobility,real", out: 
 
 
 def map_curves(m: Mechanism, rows: list[dict[str, Any]], x: str, y: str) -> list[tuple[str, Any]]:
-    """The generic length conditions in the plane of ``x`` and ``y`` (the other parameters as in
-    the rows, when they are the same in all of them; none otherwise, or when they do not finish in
-    ``MAP_LIMIT`` seconds)."""
+    """The curves drawn in the plane of ``x`` and ``y`` (the other parameters as in the rows, when
+    they are the same in all of them; none otherwise): for a mechanism of mobility 0 its
+    discriminant curves (:mod:`mech.stdlib.sweep_discriminant`, ``MAP_CURVES_LIMIT`` seconds),
+    else the generic length conditions (``MAP_LIMIT`` seconds)."""
     values: dict[str, Any] = {}
     for p in m.symbols():
         if p in (x, y):
@@ -41,7 +43,14 @@ def map_curves(m: Mechanism, rows: list[dict[str, Any]], x: str, y: str) -> list
         from mech.dsl.convert import parse_decimal
         v = parse_decimal(str(seen.pop()))
         values[p] = int(v) if v.denominator == 1 else v
-    common: Shared = shared_work(SweepSpec(m.with_values(values), ()), [x, y], MAP_LIMIT)
+    fixed = m.with_values(values)
+    from fractions import Fraction
+    from mech.stdlib.sweep_discriminant import curve_label, mechanism_curves
+    xs, ys = [Fraction(str(r[x])) for r in rows], [Fraction(str(r[y])) for r in rows]
+    curves = mechanism_curves(fixed, [x, y], (min(xs), max(xs), min(ys), max(ys)), MAP_CURVES_LIMIT)
+    if curves.factors:
+        return [(curve_label(n, k), f) for k, (n, f) in enumerate(zip(curves.names, curves.factors))]
+    common: Shared = shared_work(SweepSpec(fixed, ()), [x, y], MAP_LIMIT)
     return list(zip(common.names, common.conditions))
 
 
@@ -68,7 +77,9 @@ def sweep_cmd(ctx: Any, m: Mechanism, designs: str, answers: str = "mobility,rea
     designs: "grid l1=a:b:n ...", "random N l1=a:b ... [seed=S]" or "lhs N ...";
     answers: mobility, modes, real, grashof, singular; options: "workers=N timeout=S batch=N
     scheduler=ADDRESS|inline shared=yes|no" (default: a Dask cluster on all cores; the generic
-    length conditions first only for singular; docs/sweeps.md).
+    length conditions first only for singular; the discriminant curves for real counts over two
+    parameters and 1000 designs or more; docs/sweeps.md). A progress bar on a terminal; under a
+    statement time limit the sweep stops with the rows done kept in the file.
 
     Example:
       LIB "mechanism.lib";

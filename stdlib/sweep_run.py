@@ -23,11 +23,15 @@ import time
 from typing import Any, Callable, Iterator
 
 from mech.dsl.errors import MechRuntimeError
-from mech.stdlib.sweep import Shared, SweepSpec, check_parameters, run_batch, shared_work
+from mech.stdlib.sweep import STOPPED, Shared, SweepSpec, check_parameters, run_batch, shared_work
 from mech.stdlib.sweep_designs import DesignSet
 
 BATCHES_PER_WORKER = 8
 MAX_BATCH = 64
+SHARED_CURVES = 20.0            # seconds for the discriminant curves, at least
+CURVE_SECONDS_PER_DESIGN = 0.25  # and this per design to do
+CURVES_LIMIT = 300.0            # at most
+CURVES_MIN_DESIGNS = 1000       # fewer designs to do: not worth it (unless shared=yes)
 
 OnRow = Callable[[dict[str, Any], int, int], None]
 
@@ -125,7 +129,7 @@ def prepare(spec: SweepSpec, designs: DesignSet) -> tuple[SweepSpec, list[str]]:
              if designs.designs and all(d[n] == designs.designs[0][n] for d in designs.designs)}
     values = {k: (int(v) if v.denominator == 1 else v) for k, v in const.items()}
     varying = [n for n in designs.names if n not in const]
-    return SweepSpec(spec.mechanism.with_values(values), spec.answers, spec.timeout), varying
+    return SweepSpec(spec.mechanism.with_values(values), spec.answers, spec.timeout, spec.deadline), varying
 
 
 def run_sweep(spec: SweepSpec, designs: DesignSet, out: str | None = None, *, scheduler: Any = None,
@@ -133,34 +137,121 @@ def run_sweep(spec: SweepSpec, designs: DesignSet, out: str | None = None, *, sc
               on_row: OnRow | None = None, shared: bool | None = None) -> list[dict[str, Any]]:
     """All rows of the sweep (those already in ``out`` included), ordered by design id. ``shared``:
     compute the generic length conditions first (default: when singular configurations are asked
-    for, the answer they save work on)."""
-    if shared is None:
-        shared = "singular" in spec.answers
+    for, the answer they save work on) and, for real counts over two parameters, the discriminant
+    curves (default: for 1000 designs or more; designs of a grid in one cell of them are analysed
+    once). Under a statement's time limit (``mech --timeout``) the sweep stops before it with the
+    rows done kept, and raises the limit's error saying so; per-design limits end by then too."""
+    from mech.dsl.limits import LimitExceeded, MechLimitError, TimeLimitExceeded, limit_error, remaining
+    from mech.kernel.progress import stage
     work_spec, varying = prepare(spec, designs)
+    left = remaining()
+    work_spec.deadline = None if left is None else time.time() + left
     columns = spec.columns(designs.names)
     table = _Table(out, columns)
+    total, done, stopped = len(designs.designs), len(table.done), 0
+    rows: dict[int, dict[str, Any]] = {i: typed(r) for i, r in table.done.items()}
     try:
-        todo = [(i, d) for i, d in enumerate(designs.designs) if i not in table.done]
-        rows: dict[int, dict[str, Any]] = {i: typed(r) for i, r in table.done.items()}
-        total, done = len(designs.designs), len(table.done)
-        bar = _Bar(total, progress)
-        bar.update(done)
-        common = shared_work(work_spec, varying) if todo and shared else Shared(varying)
-        for got in _execute(work_spec, common, todo, scheduler, workers, batch):
-            table.write(got)
-            for r in got:
-                r = typed({c: "" if r.get(c) is None else str(r.get(c, "")) for c in columns})
-                rows[r["id"]] = r
-                done += 1
-                if on_row is not None:
-                    on_row(r, done, total)
+        with stage("sweep", total=total) as progress_stage:
+            todo = [(i, d) for i, d in enumerate(designs.designs) if i not in table.done]
+            bar = _Bar(total, progress)
             bar.update(done)
+            progress_stage.step(done, f"{done}/{total} designs")
+            common = shared_work(work_spec, varying) if todo and (shared or (shared is None and "singular" in spec.answers)) \
+                else Shared(varying)
+            later: dict[int, tuple[int, dict]] = {}
+            if (len(todo) >= CURVES_MIN_DESIGNS or shared) and shared is not False and "real" in spec.answers \
+                    and len(varying) == 2:
+                later = _classify(work_spec, designs, varying, common, todo, rows)
+                todo = [t for t in todo if t[0] not in later]
+
+            def finish(got: list[dict[str, Any]]) -> None:
+                nonlocal done, stopped
+                kept = [r for r in got if r.get("error") != STOPPED]
+                stopped += len(got) - len(kept)
+                table.write(kept)
+                for r in kept:
+                    r = typed({c: "" if r.get(c) is None else str(r.get(c, "")) for c in columns})
+                    rows[r["id"]] = r
+                    done += 1
+                    if on_row is not None:
+                        on_row(r, done, total)
+                bar.update(done)
+                progress_stage.step(done, f"{done}/{total} designs")
+
+            def inherit() -> None:
+                ready = [i for i, (src, _) in later.items() if src in rows and _usable(rows[src])]
+                if ready:
+                    finish([_inherit(rows[later[i][0]], i, later.pop(i)[1]) for i in ready])
+            inherit()
+            for got in _execute(work_spec, common, todo, scheduler, workers, batch):
+                finish(got)
+                inherit()
+            if later and not stopped:  # designs whose cell's representative failed: analysed themselves
+                for got in _execute(work_spec, common, [(i, d) for i, (_, d) in sorted(later.items())], scheduler,
+                                    workers, batch):
+                    finish(got)
+    except LimitExceeded as e:  # the statement's limit fired before the designs noticed it
+        stopped = stopped or 1
+        error = limit_error(e)
+    else:
+        error = limit_error(TimeLimitExceeded()) if stopped else None
     finally:
         table.close()
+    if stopped:
+        kept = f"; they are in {out}: the same sweep resumes there" if out else ""
+        raise MechLimitError(f"{error.message if error else 'time limit exceeded'}: the sweep stopped after "
+                             f"{done} of {total} designs{kept}")
     result = [rows[i] for i in sorted(rows)]
     if out is not None:
         _parquet(out, columns, result)
     return result
+
+
+def _classify(spec: SweepSpec, designs: DesignSet, varying: list[str], common: Shared, todo: list,
+              rows: dict[int, dict[str, Any]]) -> dict[int, tuple[int, dict]]:
+    """With the discriminant curves (put in ``common``) and a grid of designs: the designs to take
+    from another design of their cell, as id -> (that design's id, design); the others stay to do.
+    Only real counts and mobility are taken (every other answer needs its own analysis)."""
+    from mech.stdlib.sweep_cells import grid_cells
+    from mech.stdlib.sweep_discriminant import curve_label, mechanism_curves
+    xs = [d[varying[0]] for d in designs.designs]
+    ys = [d[varying[1]] for d in designs.designs]
+    budget = min(CURVES_LIMIT, max(SHARED_CURVES, CURVE_SECONDS_PER_DESIGN * len(todo)))
+    curves = mechanism_curves(spec.mechanism, varying, (min(xs), max(xs), min(ys), max(ys)), budget)
+    common.curves = curves.factors
+    common.curve_labels = [curve_label(n, k) for k, n in enumerate(curves.names)]
+    if not curves.factors or not set(spec.answers) <= {"mobility", "real"}:
+        return {}
+    cells = grid_cells({i: (x, y) for i, (x, y) in enumerate(zip(xs, ys))}, curves.factors)
+    if cells is None:
+        return {}
+    source: dict[int, int] = {}  # a cell's analysed design: one already done, else its smallest id
+    for i, g in sorted(cells.items()):
+        if i in rows and _usable(rows[i]):
+            source.setdefault(g, i)
+    todo_ids = {i for i, _ in todo}
+    later = {}
+    for i, d in todo:
+        g = cells[i]
+        src = source.setdefault(g, i)
+        if src != i and (src in todo_ids or src in rows):
+            later[i] = (src, d)
+    return later
+
+
+def _usable(row: dict[str, Any]) -> bool:
+    return not row.get("error") and row.get("real", "") != ""
+
+
+def _inherit(src: dict[str, Any], ident: int, design: dict) -> dict[str, Any]:
+    """The row of a design in the same cell as the analysed row ``src``."""
+    from mech.stdlib.sweep import _show
+    row = {"id": ident, **{k: _show(v) for k, v in design.items()}}
+    for c in ("mobility", "real"):
+        if c in src:
+            row[c] = src[c]
+    row.update(conditions=f"same cell as {src['id']}", seconds=0.0, error="")
+    return row
 
 
 def _execute(spec: SweepSpec, shared: Shared, todo: list, scheduler: Any, workers: int | None,
@@ -168,9 +259,9 @@ def _execute(spec: SweepSpec, shared: Shared, todo: list, scheduler: Any, worker
     """The rows of the designs to do, batch by batch as they finish."""
     if not todo:
         return
-    if scheduler == "inline":
-        for b in batches(todo, 1, batch):
-            yield run_batch(spec, shared, b)
+    if scheduler == "inline":  # one design at a time: each row is kept as soon as it is done
+        for item in todo:
+            yield run_batch(spec, shared, [item])
         return
     from distributed import Client, LocalCluster, as_completed
     cluster = None

@@ -135,6 +135,39 @@ def test_a_failure_or_a_timeout_is_recorded_and_the_sweep_goes_on():
     assert len(slow) == 2 and all("time limit of 0.001 s exceeded" in r["error"] for r in slow)
 
 
+def test_a_statement_time_limit_stops_the_sweep_with_its_rows_kept_and_resumable(tmp_path, monkeypatch):
+    """Under ``mech --timeout T`` (here Session(timeout=T)) the sweep stops at T even with a larger
+    per-design limit, says so, keeps the rows done; running it again computes only the others."""
+    import time
+    monkeypatch.chdir(tmp_path)
+    s = Session(timeout=2, scheduler="inline")
+    s.execute(f'LIB "mechanism.lib"; mechanism rpr {{ {RPR}; }}')
+    start = time.monotonic()
+    with pytest.raises(MechError) as e:
+        s.execute('sweep(rpr, "grid r1=1:12:6 r2=1:12:6 r3=4", "real", "lim.csv", "timeout=60");')
+    assert time.monotonic() - start < 2 + 1
+    kept = (tmp_path / "lim.csv").read_text().count("\n") - 1
+    assert re.search(r"time limit of 2 s exceeded: the sweep stopped after (\d+) of 36 designs; they are in "
+                     r".*lim.csv: the same sweep resumes there", str(e.value)), str(e.value)
+    assert 0 < kept < 36 and f"after {kept} of 36" in str(e.value)
+    computed = []
+    rows = sweep_rows(parse_mechanism(RPR), "grid r1=1:12:6 r2=1:12:6 r3=4", "real", str(tmp_path / "lim.csv"),
+                      scheduler="inline", on_row=lambda row, done, total: computed.append(row["id"]))
+    assert len(computed) == 36 - kept and len(rows) == 36 and not any(r["error"] for r in rows)
+    full = sweep_rows(parse_mechanism(RPR), "grid r1=1:12:6 r2=1:12:6 r3=4", "real", scheduler="inline")
+    assert [r["real"] for r in rows] == [r["real"] for r in full]
+
+
+def test_the_language_sweep_reports_progress():
+    """``sweep(...)`` in a script reports a "sweep" stage (a bar on a terminal, as the CLI's)."""
+    events = []
+    Session(scheduler="inline", progress=events.append).execute(
+        f'LIB "mechanism.lib"; mechanism fb {{ {FOURBAR}; }} sweep(fb, "grid g=2 l1=1:4:4 l2=3 l3=3", "grashof");')
+    mine = [e for e in events if e.stage == "sweep" and not e.path]
+    assert mine[0].kind == "start" and mine[0].total == 4 and mine[-1].kind == "end" and mine[-1].status == "done"
+    assert [e.done for e in mine if e.kind == "step"][-1] == 4
+
+
 def test_resuming_computes_no_design_twice(tmp_path):
     m, designs = parse_mechanism(FOURBAR), "grid g=2 l1=1:4:4 l2=2:5:4 l3=3"
     full = sweep_rows(m, designs, "grashof,mobility", scheduler="inline")
@@ -226,6 +259,55 @@ def test_docs_examples_run(tmp_path, monkeypatch):
     assert (tmp_path / "fb20.csv").read_text().count("\n") == 401 and (tmp_path / "fb20.png").is_file()
 
 
+# ---------------------------------------------------------------- discriminant curves and cells
+DYAD = "fix A 0 0; fix B 3 0; bar A P r1; bar B P r2"
+
+
+def test_the_dyads_discriminant_curves_are_its_circle_conditions():
+    from mech.stdlib.sweep_discriminant import mechanism_curves
+    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], (Fraction(1), Fraction(6), Fraction(1), Fraction(6)), 60)
+    # two circles of radii r1, r2 three apart meet in 2 real points inside |r1 - r2| < 3 < r1 + r2
+    assert sorted(curves.names) == sorted(["r1", "r2", "r1+r2+3", "r1+r2-3", "r1-r2+3", "r1-r2-3"]) and curves.D == 2
+
+
+def test_designs_in_one_cell_take_one_analysis_and_agree_with_all_analysed():
+    from mech.stdlib.sweep_cells import check_cells
+    from mech.stdlib.sweep_discriminant import mechanism_curves
+    grid = "grid r1=1/2:6:12 r2=1/2:6:12"
+    classified = sweep_rows(parse_mechanism(DYAD), grid, "mobility,real", scheduler="inline", shared=True)
+    full = sweep_rows(parse_mechanism(DYAD), grid, "mobility,real", scheduler="inline", shared=False)
+    assert same([{**r, "conditions": ""} for r in classified], [{**r, "conditions": ""} for r in full])
+    inherited = [r for r in classified if r["conditions"].startswith("same cell as ")]
+    assert 100 < len(inherited) < 144 and all(r["seconds"] == 0 for r in inherited)
+    on_curve = [r for r in classified if {"r1-r2+3", "r1+r2-3", "r1-r2-3"} & set(r["conditions"].split(", "))]
+    assert on_curve and all(abs(Fraction(r["r1"]) - Fraction(r["r2"])) == 3 or Fraction(r["r1"]) + Fraction(r["r2"]) == 3
+                            for r in on_curve)
+    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], (Fraction(1), Fraction(6), Fraction(1), Fraction(6)), 60)
+    assert check_cells(full, "r1", "r2", "real", curves.factors) == []
+    assert check_cells(full, "r1", "r2", "real", curves.factors[:2]) != []  # without the circle conditions: wrong
+
+
+@pytest.mark.slow
+def test_the_3rpr_discriminant_curves_separate_its_real_counts():
+    """The curves of the 3-RPR (no generic analysis finishes): on a grid every two neighbours with
+    different counts are separated by a curve, and the classified sweep gives the analysed table."""
+    from mech.stdlib.sweep_cells import check_cells
+    from mech.stdlib.sweep_discriminant import mechanism_curves
+    m = parse_mechanism(RPR)
+    curves = mechanism_curves(m.with_values({"r3": 4}), ["r1", "r2"], (Fraction(1), Fraction(12), Fraction(1), Fraction(12)), 600)
+    assert curves.D == 6 and curves.names[:2] == ["r1", "r2"] and len(curves.factors) == 3, curves.note
+    assert max(i + j for i, j in curves.factors[2]) == 24
+    grid = "grid r1=1:12:8 r2=1:12:8 r3=4"
+    full = sweep_rows(m, grid, "real", scheduler="inline", shared=False)
+    assert len({r["real"] for r in full}) >= 3
+    assert check_cells(full, "r1", "r2", "real", curves.factors) == []
+    classified = sweep_rows(m, grid, "real", scheduler="inline", shared=True)
+    assert [r["real"] for r in classified] == [r["real"] for r in full]
+    assert sum(r["conditions"].startswith("same cell") for r in classified) > 20
+    for r in classified[::9]:
+        assert r["real"] == independent_3rpr_count(r["r1"], r["r2"], r["r3"])
+
+
 @pytest.mark.parametrize("name, grid, small", [
     ("sweep_fourbar", "grid l1=1/2:5:50 l2=1/2:5:50", "grid l1=1/2:5:12 l2=1/2:5:12"),
     ("sweep_3rpr", "grid r1=1:12:12 r2=1:12:12 r3=4", "grid r1=4:7:2 r2=4:7:2 r3=4")])
@@ -254,3 +336,4 @@ def test_dask_is_imported_only_when_a_sweep_runs():
             "print([m for m in ('dask', 'distributed', 'pandas') if m in sys.modules])")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert out.stdout.strip() == "[]", out.stderr
+
