@@ -49,12 +49,13 @@ class Elem:
     ``ecart`` is ``D - deg LM`` for the degree ``D`` of the homogenized polynomial the
     element stands for (its sugar); by default ``D`` is the polynomial's own degree."""
 
-    __slots__ = ("p", "lm", "mask", "ecart", "key", "_tail")
+    __slots__ = ("p", "lm", "mask", "ecart", "key", "_tail", "_rows")
 
     def __init__(self, p: Terms, key: Callable, ecart: int | None = None, lm: Exp | None = None) -> None:
         self.p, self.key = p, key
         self.lm = max(p, key=key) if lm is None else lm
         self._tail: Any = False  # the second monomial, found when first asked for
+        self._rows: list | None = None
         self.mask = _mask(self.lm)
         self.ecart = max(sum(e) for e in p) - sum(self.lm) if ecart is None else ecart
 
@@ -68,6 +69,13 @@ class Elem:
         return self._tail
 
     @property
+    def rows(self) -> list[tuple[int, Exp, Any]]:
+        """``(degree, monomial, coefficient)`` by increasing degree."""
+        if self._rows is None:
+            self._rows = sorted(((sum(e), e, c) for e, c in self.p.items()), key=lambda r: r[0])
+        return self._rows
+
+    @property
     def sugar(self) -> int:
         return self.ecart + sum(self.lm)
 
@@ -75,19 +83,28 @@ class Elem:
         """Drop the tail terms of degree above ``cut`` (they lie in the ideal)."""
         if max(sum(e) for e in self.p) > cut:
             self.p = {e: c for e, c in self.p.items() if e == self.lm or sum(e) <= cut}
-            self._tail = False
+            self._tail, self._rows = False, None
 
 
 class Front:
     """A polynomial under reduction, changed in place: its terms and a heap of their ranks, so
-    that the leading monomial costs a rank only for each new term."""
+    that the leading monomial costs a rank only for each new term; ``cut``: no term of higher
+    degree is left."""
 
-    __slots__ = ("p", "heap", "rank")
+    __slots__ = ("p", "heap", "rank", "cut")
 
-    def __init__(self, p: Terms, rank: Callable) -> None:
-        self.p, self.rank = p, rank
+    def __init__(self, p: Terms, rank: Callable, cut: int | None = None) -> None:
+        if cut is not None:
+            p = {e: c for e, c in p.items() if sum(e) <= cut}
+        self.p, self.rank, self.cut = p, rank, cut
         self.heap = [(rank(e), e) for e in p]
         heapq.heapify(self.heap)
+
+    def trim(self, cut: int | None) -> None:
+        """Drop the terms of degree above ``cut``."""
+        if cut is not None and (self.cut is None or cut < self.cut):
+            self.p = {e: c for e, c in self.p.items() if sum(e) <= cut}
+            self.cut = cut
 
     def lm(self) -> Exp:
         """The leading monomial (``p`` must not be empty)."""
@@ -96,16 +113,16 @@ class Front:
             heapq.heappop(heap)
         return heap[0][1]
 
-    def reduce(self, lm: Exp, g: Elem, cut: int | None) -> None:
+    def reduce(self, lm: Exp, g: Elem) -> None:
         """``p - (LT(p)/LT(g)) g`` for ``LM(g) | lm = LM(p)``, leaving out the terms of
-        degree above ``cut``."""
+        degree above the cut."""
         p, heap, rank = self.p, self.heap, self.rank
         shift = tuple([a - b for a, b in zip(lm, g.lm)])
         factor = p[lm] / g.p[g.lm]
-        top = None if cut is None else cut - sum(shift)
-        for e, c in g.p.items():
-            if top is not None and sum(e) > top:
-                continue
+        top = None if self.cut is None else self.cut - sum(shift)
+        for d, e, c in g.rows:
+            if top is not None and d > top:
+                break
             te = tuple([a + b for a, b in zip(e, shift)])
             v = p.get(te)
             if v is None:
@@ -138,12 +155,13 @@ class Corner:
     the finite-dimensional algebra ``K[x]_> / m^(cut+1)``, where it terminates quickly.  The
     cut only decreases as ``L`` grows."""
 
-    def __init__(self, ring: PolyRing) -> None:
+    def __init__(self, ring: PolyRing, cut: int | None = None) -> None:
         blocks = ring.order.blocks
         self.enabled = len(blocks) == 1 and blocks[0].kind in ("ds", "Ds")
         self.n = ring.nvars
         self.powers: set[int] = set()
-        self.cut: int | None = None
+        self.cut = cut  # terms of higher degree are dropped
+        self.found = False  # whether the cut comes from the leading ideal
 
     def update(self, lm: Exp, lms: Callable[[], list[Exp]]) -> bool:
         """Account for a new leading monomial (``lms()``: all current ones); whether the cut
@@ -159,15 +177,9 @@ class Corner:
         top = len(p) - 1 if d == 0 else None
         if top is None or (self.cut is not None and top >= self.cut):
             return False
-        self.cut = top
+        self.cut, self.found = top, True
         return True
 
-    def trim(self, h: Terms) -> Terms:
-        """``h`` without its terms of degree above the cut."""
-        if self.cut is None:
-            return h
-        cut = self.cut
-        return {e: c for e, c in h.items() if sum(e) <= cut}
 
 
 class BudgetExceeded(Exception):
@@ -311,12 +323,43 @@ def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
     return lambda e: tuple(map(neg, key(e)))
 
 
+# Trial cuts (see mora): multiples of the generators' largest degree, and the steps one may take
+TRIAL_CUTS = (2, 4)
+TRIAL_STEPS = 200_000
+
+
 def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> list[Terms]:
     """A minimal standard basis (as dicts, leading-term reduced, monic) by Buchberger's
     algorithm with Mora's normal form: the Gebauer–Möller criteria, a queue of generators,
     pairs and postponed polynomials ordered by sugar, and one growing set of reducers
     (basis elements and the intermediate polynomials Mora's normal form keeps).
-    Raises :class:`BudgetExceeded` when a ``budget`` is given and runs out."""
+
+    For a local degree ordering the highest corner is used as soon as it is known
+    (:class:`Corner`), and first the computation is tried in ``K[x]_> / m^(k+1)`` for a few
+    trial degrees ``k``: a standard basis ``G`` of ``J = I + m^(k+1)`` whose leading ideal
+    contains every monomial of degree ``k`` gives ``m^k`` in ``J = I + m m^k``, so ``m^k`` in
+    ``I`` by Nakayama's lemma, ``J = I`` and ``G`` is a standard basis of ``I``.  Otherwise
+    (the local ideal is not zero-dimensional, or its corner lies higher) the computation
+    runs without a cut.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
+    out."""
+    live = [g for g in gens if not g.is_zero()]
+    if live and Corner(ring).enabled:
+        top = max(g.total_degree() for g in live)
+        for factor in TRIAL_CUTS:
+            k = factor * max(top, 1)
+            try:
+                basis, corner = _mora(live, ring, Budget(TRIAL_STEPS, budget.bits) if budget else None, k)
+            except BudgetExceeded:
+                break
+            if corner.found and corner.cut < k:
+                return basis
+    return _mora(live, ring, budget)[0]
+
+
+def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
+          cut: int | None = None) -> tuple[list[Terms], Corner]:
+    """:func:`mora` on ``K[x]_> / m^(cut+1)`` (terms of degree above ``cut`` dropped) or, without
+    a cut, on ``K[x]_>``; the basis and the corner found."""
     key = ring.order.key
     sign = 1 if ring.order.is_global else -1
     basis: list[Elem] = []
@@ -325,7 +368,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
     pool: list[Elem] = []  # reducers, sorted by sugar
     queue: list[tuple] = []  # (sugar, rank of LM, counter, pair or (h, sugar))
     counter = 0
-    corner = Corner(ring)
+    corner = Corner(ring, cut)
 
     def rank(e: Exp) -> tuple:  # smallest first for global orderings, largest first otherwise
         return tuple(sign * v for v in key(e))
@@ -375,8 +418,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
         """Reduce until irreducible (returned with its sugar; {} for zero) or postponed
         (None)."""
         limit, passes = sugar + LAZY_DEGREE, 0
-        if corner.cut is not None:
-            w.p = corner.trim(w.p)
+        w.trim(corner.cut)
         while w.p:
             lm = w.lm()
             w.unit_cancelled(lm)
@@ -392,7 +434,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
                     return None
                 _insert(pool, Elem(dict(w.p), key, ecart, lm))
                 sugar += g.ecart - ecart
-            w.reduce(lm, g, corner.cut)
+            w.reduce(lm, g)
             if not w.p:
                 break
             passes += 1
@@ -407,7 +449,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
 
     for g in gens:
         if not g.is_zero():
-            push(g.total_degree(), g.lm(), (Front(dict(g.terms), lead), g.total_degree()))
+            push(g.total_degree(), g.lm(), (Front(dict(g.terms), lead, corner.cut), g.total_degree()))
     while queue:
         sugar, _, _, item = heapq.heappop(queue)
         if isinstance(item, _Pair):
@@ -417,7 +459,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
             pairs.remove(item)
             if corner.cut is not None and sum(item.lcm) > corner.cut:
                 continue  # every term of the S-polynomial is above the cut
-            w = Front(_spoly(basis[item.i], basis[item.j], item.lcm), lead)
+            w = Front(_spoly(basis[item.i], basis[item.j], item.lcm), lead, corner.cut)
         else:
             w, sugar = item
         done = reduce(w, sugar)
@@ -427,14 +469,14 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
         h = monic(cancel_unit(h, key), key)
         lm = max(h, key=key)
         if lm == ring.zero_exp:
-            return [{ring.zero_exp: ring.field.one}]
+            return [{ring.zero_exp: ring.field.one}], corner
         elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)))
         _insert(pool, elem)
         update(elem)
         if corner.update(lm, lambda: [b.lm for b, a in zip(basis, active) if a]):
             for g in pool:
                 g.truncate(corner.cut)
-    return [b.p for b, a in zip(basis, active) if a]
+    return [b.p for b, a in zip(basis, active) if a], corner
 
 
 def _spoly(f: Elem, g: Elem, lc: Exp) -> Terms:
