@@ -68,7 +68,7 @@ def test_trial_cut_is_used_only_when_it_is_proved():
     # no corner for a curve germ: the trials fail and the uncut computation answers
     C = ds_ring("xyz")
     curve = [parse_poly(C, "x^2-y^3+z^5"), parse_poly(C, "x*y-z^4")]
-    _, p, d = hilbert_numerators(lms(mora(curve, C), C), 3)
+    _, _, d = hilbert_numerators(lms(mora(curve, C), C), 3)
     assert d == 1
 
 
