@@ -251,8 +251,8 @@ def fmt_time(r: dict | None) -> str:
 
 
 def ratio(a: dict | None, b: dict | None) -> str:
-    """a / b as a factor, '>' when a timed out."""
-    if not a or not b or "error" in a or "error" in b or "timeout" in b:
+    """a / b as a factor, '>' when a timed out ('—' when b took no measurable time)."""
+    if not a or not b or "error" in a or "error" in b or "timeout" in b or not b.get("cpu"):
         return "—"
     if "timeout" in a:
         return f"> {a['timeout'] / b['cpu']:.0f}"

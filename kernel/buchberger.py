@@ -143,47 +143,19 @@ def _buchberger(polys: Sequence[dict[Exp, Any]], pk: Packing, budget: int | None
     reducer = Reducer(pk)
     if budget is not None:
         reducer.limit = budget
-    guard, degree, divides_, lcm = pk.guard, pk.degree, pk.divides, pk.lcm
+    degree = pk.degree
 
     def update(h: dict[int, Any], s: int) -> None:
         nonlocal pairs
         hlm = max(h)
         hdeg = degree(hlm)
-        k = len(basis)
         basis.append(h)
         lms.append(hlm)
         sugar.append(s)
         active.append(True)
         reducer.add(h)
-        new = []
-        for i in range(k):
-            if active[i]:
-                lc = lcm(lms[i], hlm)
-                if lc & guard:
-                    raise Overflow
-                d = degree(lc)
-                new.append((max(sugar[i] + d - degree(lms[i]), s + d - hdeg), lc, i, k))
-        # criterion M / F: keep a pair only if no other new pair's lcm properly divides it,
-        # and among equal lcms keep one (none if one of them is coprime: product criterion)
-        lcms = {a[1] for a in new}
-        kept: dict[int, tuple] = {}
-        coprime = set()
-        for a in new:
-            lc = a[1]
-            if lc in kept or lc in coprime or any(b != lc and divides_(b, lc) for b in lcms):
-                continue
-            if degree(lc) == degree(lms[a[2]]) + hdeg:
-                coprime.add(lc)
-                kept.pop(lc, None)
-            else:
-                kept[lc] = a
-        # criterion B on old pairs
-        old = [a for a in pairs
-               if not (divides_(hlm, a[1]) and lcm(lms[a[2]], hlm) != a[1] and lcm(lms[a[3]], hlm) != a[1])]
-        pairs = old + list(kept.values())
-        for i in range(k):
-            if active[i] and divides_(hlm, lms[i]):
-                active[i] = False
+        pairs = pair_update(pk, lms, active, pairs,
+                            lambda i, d: max(sugar[i] + d - degree(lms[i]), s + d - hdeg))
 
     for g in polys:
         r = reducer.reduce(pack(pk, g))
@@ -199,6 +171,48 @@ def _buchberger(polys: Sequence[dict[Exp, Any]], pk: Packing, budget: int | None
                 return [_monic(r, 0)]
             update(_monic(r, max(r)), ps)
     return [b for b, a in zip(basis, active) if a]
+
+
+def pair_update(pk: Packing, lms: list[int], active: list[bool], pairs: list[tuple],
+                weight: Callable[[int, int], int]) -> list[tuple]:
+    """The pairs after the element with leading monomial ``lms[-1]`` joined the basis, by the
+    Gebauer–Möller criteria; deactivates the elements whose leading monomial it divides.
+
+    Pairs are ``(weight, lcm, i, j)``, ``weight(i, degree of the lcm)`` the new pair's weight
+    (its sugar, or its degree); entries with ``j < 0`` (generators waiting) are kept as they are.
+    New pairs: criterion M/F (keep one pair per lcm, none when the lcm properly divides another
+    new pair's, none for an lcm reached by a coprime pair: the product criterion); old pairs:
+    criterion B."""
+    guard, degree, divides_, lcm = pk.guard, pk.degree, pk.divides, pk.lcm
+    k = len(lms) - 1
+    hlm = lms[k]
+    hdeg = degree(hlm)
+    new = []
+    for i in range(k):
+        if active[i]:
+            lc = lcm(lms[i], hlm)
+            if lc & guard:
+                raise Overflow
+            new.append((weight(i, degree(lc)), lc, i, k))
+    lcms = {a[1] for a in new}
+    kept: dict[int, tuple] = {}
+    coprime = set()
+    for a in new:
+        lc = a[1]
+        if lc in kept or lc in coprime or any(b != lc and divides_(b, lc) for b in lcms):
+            continue
+        if degree(lc) == degree(lms[a[2]]) + hdeg:
+            coprime.add(lc)
+            kept.pop(lc, None)
+        else:
+            kept[lc] = a
+    old = [a for a in pairs
+           if a[3] < 0 or not (divides_(hlm, a[1]) and lcm(lms[a[2]], hlm) != a[1]
+                               and lcm(lms[a[3]], hlm) != a[1])]
+    for i in range(k):
+        if active[i] and divides_(hlm, lms[i]):
+            active[i] = False
+    return old + list(kept.values())
 
 
 def _spoly(f: dict[int, Any], lf: int, g: dict[int, Any], lg: int, lc: int) -> dict[int, Any]:

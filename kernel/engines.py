@@ -343,7 +343,7 @@ register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ord
          fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
 register("hilbert", lambda gens, ring: hilbert_driven(gens, ring, _dp_auto),
          "Hilbert-driven Buchberger: homogenize, Hilbert series from a dp basis, drop pairs once it is reached")
-register("mora", mora, "Mora's normal form with ecart and sugar (Singular's std for local orderings)",
+register("mora", mora, "Mora's normal form with ecart and sugar, the highest corner for ds (Singular's std for local orderings)",
          orderings=("global", "local"))
 register("lazard", _lazard, "Lazard's method: homogenize, Gröbner basis by auto, dehomogenize",
          orderings=("global", "local"))

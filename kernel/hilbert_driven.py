@@ -16,7 +16,7 @@ from __future__ import annotations
 from math import comb
 from typing import Any, Callable, Sequence
 
-from .buchberger import Overflow, Reducer, _monic, _spoly, pack, packed, unpack
+from .buchberger import Reducer, _monic, _spoly, pack, packed, pair_update, unpack
 from .hilbert import hilbert_numerators
 from .monomials import Packing, nonnegative_matrix
 from .order import Block, Exp, MonomialOrder
@@ -100,7 +100,7 @@ def _driven(polys: Sequence[dict[Exp, Any]], pk: Packing, target: list[int], nva
     active: list[bool] = []
     pairs: list[tuple[int, int, int, int]] = []  # (degree, lcm, i, j); j < 0: generator i
     reducer = Reducer(pk)
-    guard, degree, divides_, lcm = pk.guard, pk.degree, pk.divides, pk.lcm
+    degree = pk.degree
     counter = _Counter(target, nvars)
     gens = [pack(pk, g) for g in polys]
     for i, g in enumerate(gens):
@@ -109,38 +109,11 @@ def _driven(polys: Sequence[dict[Exp, Any]], pk: Packing, target: list[int], nva
 
     def update(h: dict[int, Any]) -> None:
         nonlocal pairs
-        hlm = max(h)
-        hdeg = degree(hlm)
-        k = len(basis)
         basis.append(h)
-        lms.append(hlm)
+        lms.append(max(h))
         active.append(True)
         reducer.add(h)
-        new = []
-        for i in range(k):
-            if active[i]:
-                lc = lcm(lms[i], hlm)
-                if lc & guard:
-                    raise Overflow
-                new.append((degree(lc), lc, i, k))
-        lcms = {a[1] for a in new}
-        kept: dict[int, tuple] = {}
-        coprime = set()
-        for a in new:
-            lc = a[1]
-            if lc in kept or lc in coprime or any(b != lc and divides_(b, lc) for b in lcms):
-                continue
-            if degree(lc) == degree(lms[a[2]]) + hdeg:
-                coprime.add(lc)
-                kept.pop(lc, None)
-            else:
-                kept[lc] = a
-        pairs = [a for a in pairs
-                 if a[3] < 0 or not (divides_(hlm, a[1]) and lcm(lms[a[2]], hlm) != a[1]
-                                     and lcm(lms[a[3]], hlm) != a[1])] + list(kept.values())
-        for i in range(k):
-            if active[i] and divides_(hlm, lms[i]):
-                active[i] = False
+        pairs = pair_update(pk, lms, active, pairs, lambda i, d: d)
 
     unpack_ = pk.unpack
     while pairs:

@@ -25,8 +25,10 @@ gives a standard representation ``spoly(f, g) = f'g - g'f``: for a local orderin
 from __future__ import annotations
 
 import heapq
+from operator import neg
 from typing import Any, Callable, Sequence
 
+from .hilbert import hilbert_numerators
 from .order import Exp
 from .poly import Poly, PolyRing, add_exp, divides, lcm_exp
 
@@ -47,19 +49,137 @@ class Elem:
     ``ecart`` is ``D - deg LM`` for the degree ``D`` of the homogenized polynomial the
     element stands for (its sugar); by default ``D`` is the polynomial's own degree."""
 
-    __slots__ = ("p", "lm", "mask", "ecart", "tail_lm")
+    __slots__ = ("p", "lm", "mask", "ecart", "key", "_tail", "_rows")
 
-    def __init__(self, p: Terms, key: Callable, ecart: int | None = None) -> None:
-        self.p = p
-        ranked = sorted(p, key=key, reverse=True)[:2]
-        self.lm = ranked[0]
-        self.tail_lm = ranked[1] if len(ranked) > 1 else None
+    def __init__(self, p: Terms, key: Callable, ecart: int | None = None, lm: Exp | None = None) -> None:
+        self.p, self.key = p, key
+        self.lm = max(p, key=key) if lm is None else lm
+        self._tail: Any = False  # the second monomial, found when first asked for
+        self._rows: list | None = None
         self.mask = _mask(self.lm)
         self.ecart = max(sum(e) for e in p) - sum(self.lm) if ecart is None else ecart
 
     @property
+    def tail_lm(self) -> Exp | None:
+        """The largest monomial after the leading one (None for a term)."""
+        if self._tail is False:
+            lm = self.lm
+            tail = [e for e in self.p if e != lm]
+            self._tail = max(tail, key=self.key) if tail else None
+        return self._tail
+
+    @property
+    def rows(self) -> list[tuple[int, Exp, Any]]:
+        """``(degree, monomial, coefficient)`` by increasing degree."""
+        if self._rows is None:
+            self._rows = sorted(((sum(e), e, c) for e, c in self.p.items()), key=lambda r: r[0])
+        return self._rows
+
+    @property
     def sugar(self) -> int:
         return self.ecart + sum(self.lm)
+
+    def truncate(self, cut: int) -> None:
+        """Drop the tail terms of degree above ``cut`` (they lie in the ideal)."""
+        if max(sum(e) for e in self.p) > cut:
+            self.p = {e: c for e, c in self.p.items() if e == self.lm or sum(e) <= cut}
+            self._tail, self._rows = False, None
+
+
+class Front:
+    """A polynomial under reduction, changed in place: its terms and a heap of their ranks, so
+    that the leading monomial costs a rank only for each new term; ``cut``: no term of higher
+    degree is left."""
+
+    __slots__ = ("p", "heap", "rank", "cut")
+
+    def __init__(self, p: Terms, rank: Callable, cut: int | None = None) -> None:
+        if cut is not None:
+            p = {e: c for e, c in p.items() if sum(e) <= cut}
+        self.p, self.rank, self.cut = p, rank, cut
+        self.heap = [(rank(e), e) for e in p]
+        heapq.heapify(self.heap)
+
+    def trim(self, cut: int | None) -> None:
+        """Drop the terms of degree above ``cut``."""
+        if cut is not None and (self.cut is None or cut < self.cut):
+            self.p = {e: c for e, c in self.p.items() if sum(e) <= cut}
+            self.cut = cut
+
+    def lm(self) -> Exp:
+        """The leading monomial (``p`` must not be empty)."""
+        heap, p = self.heap, self.p
+        while heap[0][1] not in p:
+            heapq.heappop(heap)
+        return heap[0][1]
+
+    def reduce(self, lm: Exp, g: Elem) -> None:
+        """``p - (LT(p)/LT(g)) g`` for ``LM(g) | lm = LM(p)``, leaving out the terms of
+        degree above the cut."""
+        p, heap, rank = self.p, self.heap, self.rank
+        shift = tuple([a - b for a, b in zip(lm, g.lm)])
+        factor = p[lm] / g.p[g.lm]
+        top = None if self.cut is None else self.cut - sum(shift)
+        for d, e, c in g.rows:
+            if top is not None and d > top:
+                break
+            te = tuple([a + b for a, b in zip(e, shift)])
+            v = p.get(te)
+            if v is None:
+                p[te] = -factor * c
+                heapq.heappush(heap, (rank(te), te))
+            else:
+                v = v - factor * c
+                if v == 0:
+                    del p[te]
+                else:
+                    p[te] = v
+
+    def unit_cancelled(self, lm: Exp) -> bool:
+        """Replace ``p = x^a u`` (``x^a = LM``, ``u`` a unit) by its leading term; whether it was."""
+        p = self.p
+        if len(p) > 1 and all(divides(lm, e) for e in p):
+            self.p = {lm: p[lm]}
+            self.heap = [(self.rank(lm), lm)]
+            return True
+        return False
+
+
+class Corner:
+    """The highest corner for a local degree ordering (``ds``, ``Ds``; GP 1.7.10–1.7.15).
+
+    Once the leading monomials found contain a pure power of every variable, the quotient by
+    their ideal ``L`` is finite; every monomial of degree above ``cut``, the largest degree of a
+    monomial outside ``L``, lies in ``L`` and hence (the ordering being local) in the ideal
+    itself.  Terms of such degrees can then be dropped everywhere: the computation goes on in
+    the finite-dimensional algebra ``K[x]_> / m^(cut+1)``, where it terminates quickly.  The
+    cut only decreases as ``L`` grows."""
+
+    def __init__(self, ring: PolyRing, cut: int | None = None) -> None:
+        blocks = ring.order.blocks
+        self.enabled = len(blocks) == 1 and blocks[0].kind in ("ds", "Ds")
+        self.n = ring.nvars
+        self.powers: set[int] = set()
+        self.cut = cut  # terms of higher degree are dropped
+        self.found = False  # whether the cut comes from the leading ideal
+
+    def update(self, lm: Exp, lms: Callable[[], list[Exp]]) -> bool:
+        """Account for a new leading monomial (``lms()``: all current ones); whether the cut
+        went down."""
+        if not self.enabled:
+            return False
+        support = [i for i, v in enumerate(lm) if v]
+        if len(support) == 1:
+            self.powers.add(support[0])
+        if len(self.powers) < self.n:
+            return False
+        _, p, d = hilbert_numerators(lms(), self.n)
+        top = len(p) - 1 if d == 0 else None
+        if top is None or (self.cut is not None and top >= self.cut):
+            return False
+        self.cut, self.found = top, True
+        return True
+
 
 
 class BudgetExceeded(Exception):
@@ -81,12 +201,16 @@ class Budget:
             raise BudgetExceeded
 
 
-def reduce_by(h: Terms, hlm: Exp, g: Elem) -> Terms:
-    """``h - (LT(h)/LT(g)) g`` for ``LM(g) | LM(h)``."""
+def reduce_by(h: Terms, hlm: Exp, g: Elem, cut: int | None = None) -> Terms:
+    """``h - (LT(h)/LT(g)) g`` for ``LM(g) | LM(h)``; with a ``cut``, the terms of ``g``'s
+    multiple of degree above it are left out (see :class:`Corner`)."""
     shift = tuple([a - b for a, b in zip(hlm, g.lm)])
     factor = h[hlm] / g.p[g.lm]
     out = dict(h)
+    top = None if cut is None else cut - sum(shift)
     for e, c in g.p.items():
+        if top is not None and sum(e) > top:
+            continue
         te = tuple([a + b for a, b in zip(e, shift)])
         v = out.get(te)
         if v is None:
@@ -190,12 +314,52 @@ class _Pair:
         self.i, self.j, self.lcm, self.alive = i, j, lcm, True
 
 
+def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
+    """A sort key that puts larger monomials first (the ordering's key negated)."""
+    blocks, key = ring.order.blocks, ring.order.key
+    if len(blocks) == 1 and blocks[0].kind in ("ds", "dp") and ring.nvars > 1:
+        sign = 1 if blocks[0].kind == "ds" else -1
+        return lambda e: (sign * sum(e), *e[::-1])
+    return lambda e: tuple(map(neg, key(e)))
+
+
+# Trial cuts (see mora): multiples of the generators' largest degree, and the steps one may take
+TRIAL_CUTS = (2, 4)
+TRIAL_STEPS = 200_000
+
+
 def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> list[Terms]:
     """A minimal standard basis (as dicts, leading-term reduced, monic) by Buchberger's
     algorithm with Mora's normal form: the Gebauer–Möller criteria, a queue of generators,
     pairs and postponed polynomials ordered by sugar, and one growing set of reducers
     (basis elements and the intermediate polynomials Mora's normal form keeps).
-    Raises :class:`BudgetExceeded` when a ``budget`` is given and runs out."""
+
+    For a local degree ordering the highest corner is used as soon as it is known
+    (:class:`Corner`), and first the computation is tried in ``K[x]_> / m^(k+1)`` for a few
+    trial degrees ``k``: a standard basis ``G`` of ``J = I + m^(k+1)`` whose leading ideal
+    contains every monomial of degree ``k`` gives ``m^k`` in ``J = I + m m^k``, so ``m^k`` in
+    ``I`` by Nakayama's lemma, ``J = I`` and ``G`` is a standard basis of ``I``.  Otherwise
+    (the local ideal is not zero-dimensional, or its corner lies higher) the computation
+    runs without a cut.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
+    out."""
+    live = [g for g in gens if not g.is_zero()]
+    if live and Corner(ring).enabled:
+        top = max(g.total_degree() for g in live)
+        for factor in TRIAL_CUTS:
+            k = factor * max(top, 1)
+            try:
+                basis, corner = _mora(live, ring, Budget(TRIAL_STEPS, budget.bits) if budget else None, k)
+            except BudgetExceeded:
+                break
+            if corner.found and corner.cut < k:
+                return basis
+    return _mora(live, ring, budget)[0]
+
+
+def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
+          cut: int | None = None) -> tuple[list[Terms], Corner]:
+    """:func:`mora` on ``K[x]_> / m^(cut+1)`` (terms of degree above ``cut`` dropped) or, without
+    a cut, on ``K[x]_>``; the basis and the corner found."""
     key = ring.order.key
     sign = 1 if ring.order.is_global else -1
     basis: list[Elem] = []
@@ -204,9 +368,12 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
     pool: list[Elem] = []  # reducers, sorted by sugar
     queue: list[tuple] = []  # (sugar, rank of LM, counter, pair or (h, sugar))
     counter = 0
+    corner = Corner(ring, cut)
 
     def rank(e: Exp) -> tuple:  # smallest first for global orderings, largest first otherwise
         return tuple(sign * v for v in key(e))
+
+    lead = _leading_rank(ring)
 
     def push(sugar: int, lm: Exp, item: Any) -> None:
         nonlocal counter
@@ -247,40 +414,42 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
             if active[i] and divides(h.lm, basis[i].lm):
                 active[i] = False
 
-    def reduce(h: Terms, sugar: int) -> tuple[Terms, int] | None:
+    def reduce(w: Front, sugar: int) -> tuple[Terms, int] | None:
         """Reduce until irreducible (returned with its sugar; {} for zero) or postponed
         (None)."""
         limit, passes = sugar + LAZY_DEGREE, 0
-        while True:
-            h = cancel_unit(h, key)
-            lm = max(h, key=key)
+        w.trim(corner.cut)
+        while w.p:
+            lm = w.lm()
+            w.unit_cancelled(lm)
             ecart = sugar - sum(lm)
             g = _choose(pool, lm, ecart)
             if g is None:
-                return h, sugar
+                return w.p, sugar
             if budget is not None:
-                budget.charge(h[lm])
+                budget.charge(w.p[lm])
             if g.ecart > ecart:
                 if not first_in_queue(sugar, lm):
-                    push(sugar, lm, (h, sugar))
+                    push(sugar, lm, (w, sugar))
                     return None
-                _insert(pool, Elem(h, key, ecart))
+                _insert(pool, Elem(dict(w.p), key, ecart, lm))
                 sugar += g.ecart - ecart
-            h = reduce_by(h, lm, g)
-            if not h:
-                return h, sugar
+            w.reduce(lm, g)
+            if not w.p:
+                break
             passes += 1
             if sugar >= limit or passes > LAZY_PASS:
-                lm = max(h, key=key)
+                lm = w.lm()
                 if not first_in_queue(sugar, lm):
                     if _choose(pool, lm, sugar - sum(lm)) is None:
-                        return h, sugar
-                    push(sugar, lm, (h, sugar))
+                        return w.p, sugar
+                    push(sugar, lm, (w, sugar))
                     return None
+        return w.p, sugar
 
     for g in gens:
         if not g.is_zero():
-            push(g.total_degree(), g.lm(), (dict(g.terms), g.total_degree()))
+            push(g.total_degree(), g.lm(), (Front(dict(g.terms), lead, corner.cut), g.total_degree()))
     while queue:
         sugar, _, _, item = heapq.heappop(queue)
         if isinstance(item, _Pair):
@@ -288,23 +457,26 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
                 continue
             item.alive = False
             pairs.remove(item)
-            h = _spoly(basis[item.i], basis[item.j], item.lcm)
+            if corner.cut is not None and sum(item.lcm) > corner.cut:
+                continue  # every term of the S-polynomial is above the cut
+            w = Front(_spoly(basis[item.i], basis[item.j], item.lcm), lead, corner.cut)
         else:
-            h, sugar = item
-        if not h:
-            continue
-        done = reduce(h, sugar)
+            w, sugar = item
+        done = reduce(w, sugar)
         if done is None or not done[0]:
             continue
         h, sugar = done
         h = monic(cancel_unit(h, key), key)
         lm = max(h, key=key)
         if lm == ring.zero_exp:
-            return [{ring.zero_exp: ring.field.one}]
+            return [{ring.zero_exp: ring.field.one}], corner
         elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)))
         _insert(pool, elem)
         update(elem)
-    return [b.p for b, a in zip(basis, active) if a]
+        if corner.update(lm, lambda: [b.lm for b, a in zip(basis, active) if a]):
+            for g in pool:
+                g.truncate(corner.cut)
+    return [b.p for b, a in zip(basis, active) if a], corner
 
 
 def _spoly(f: Elem, g: Elem, lc: Exp) -> Terms:
