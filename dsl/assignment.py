@@ -9,6 +9,7 @@ from ..kernel import Poly
 from . import ast as A
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .intmat import IntMat, to_intmat
+from .minpoly import set_minpoly
 from .printing import set_short
 from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_int, to_matrix, to_poly, typeof
 
@@ -53,6 +54,9 @@ class Assignment:
         if var is None:
             if name == "short" and not chain and self.ring is not None:
                 set_short(self.ring.poly, bool(to_int(value)))
+                return
+            if name == "minpoly" and not chain:
+                set_minpoly(self, value)
                 return
             if name in UNSUPPORTED_BOUNDS and not chain:
                 if (not value.is_zero()) if isinstance(value, Poly) else to_int(value) != 0:
