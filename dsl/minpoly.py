@@ -73,3 +73,34 @@ def get_minpoly(ring: Ring) -> Any:
         if field.characteristic == 0 else \
         transcendental.ctx.from_dict({(e,): int(c) for e, c in enumerate(field.modulus.coeffs()) if int(c)})
     return Number(poly, transcendental.from_polys(num))
+
+
+def compare_params(op: str, x: Any, y: Any) -> int:
+    """``x op y`` for ``< <= > >=`` of numbers with parameters, as Singular orders them: in QQ[a]/(m) and
+    Z/p[a]/(m) by degree in ``a``, then by leading coefficient (0 is above the numbers whose leading
+    coefficient is negative); with transcendental parameters only constants are ordered."""
+    field = x.field
+    if not isinstance(field, AlgebraicField):
+        if not (x.is_constant() and y.is_constant()):
+            raise MechRuntimeError("numbers with parameters cannot be ordered (only constants are)")
+        if field.characteristic:
+            p = field.characteristic
+            x, y = field.to_fraction(x) % p, field.to_fraction(y) % p
+        else:
+            x, y = field.to_fraction(x), field.to_fraction(y)
+        return int({"<": x < y, "<=": x <= y, ">": x > y, ">=": x >= y}[op])
+    if op in ("<", "<="):
+        x, y = y, x
+    return int(_greater(x, y) or (op in ("<=", ">=") and x == y))
+
+
+def _greater(x: Any, y: Any) -> bool:
+    def lead(c: Any) -> Any:
+        v = c.u.coeffs()[-1]
+        return int(v) if c.field.characteristic else v
+    if not x:
+        return bool(y) and not lead(y) > 0
+    if not y:
+        return lead(x) > 0
+    dx, dy = x.u.degree(), y.u.degree()
+    return dx > dy if dx != dy else lead(x) > lead(y)

@@ -11,6 +11,7 @@ from typing import Any
 import flint
 
 from .algext import AlgebraicField
+from .errors import NotSupported
 from .poly import Poly, PolyRing
 
 
@@ -63,8 +64,33 @@ def gcd(f: Poly, g: Poly) -> Poly:
         return f
     if f.is_zero() or g.is_zero():
         return (g if f.is_zero() else f).monic()
+    if f.ring.field.characteristic:
+        return _euclid(f, g)
     R, K = _sympy_ring(f.ring)
     return _from_sympy(_to_sympy(f, R, K).gcd(_to_sympy(g, R, K)), f.ring).monic()
+
+
+def _euclid(f: Poly, g: Poly) -> Poly:
+    """The monic gcd of two polynomials in one variable by Euclid's algorithm (any field)."""
+    used = f.variables() | g.variables()
+    if len(used) > 1:
+        raise NotSupported(f"gcd of polynomials in several variables over {f.ring.field!r} is not available")
+    if not used:
+        return f.ring.one()
+    i = used.pop()
+    while not g.is_zero():
+        f, g = g, _remainder(f, g, i)
+    return f.monic()
+
+
+def _remainder(f: Poly, g: Poly, i: int) -> Poly:
+    dg, inv = g.degree_in(i), g.ring.field.one / g.lc()
+    while not f.is_zero() and f.degree_in(i) >= dg:
+        k = f.degree_in(i) - dg
+        e = [0] * f.ring.nvars
+        e[i] = k
+        f = f - g * (f.ring.monomial(tuple(e)) * (f.lc() * inv))
+    return f
 
 
 def divide_exact(f: Poly, g: Poly) -> Poly:

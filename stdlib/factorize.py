@@ -36,8 +36,10 @@ def _revlex_lead(p: Poly) -> Any:
 def _scale(g: Poly) -> Poly:
     """A factor as factory returns it: integer primitive (QQ) with positive, or monic (Z/p),
     leading coefficient with respect to :func:`_revlex_lead`."""
+    if hasattr(g.ring.field, "modulus"):  # QQ[a]/(m): monic in the ring's ordering
+        return g.monic()
     g = normalize(g)
-    if g.ring.field.characteristic or hasattr(g.ring.field, "modulus"):  # Z/p, QQ[a]/(m): monic
+    if g.ring.field.characteristic:
         return g * (g.ring.field.one / _revlex_lead(g))
     return -g if _revlex_lead(g) < 0 else g
 

@@ -39,7 +39,11 @@ def gcd_int(a: int, b: int) -> int:
 
 @command("gcd")
 def gcd_poly(f: Poly, g: Poly) -> Poly:
-    return factor.gcd(f, g)
+    h = factor.gcd(f, g)
+    if hasattr(h.ring.field, "modulus"):  # over QQ[a]/(m) Singular clears denominators, as std does
+        from .standard import normalize
+        return normalize(h)
+    return h
 
 
 @command("lcm", lib="general.lib")
