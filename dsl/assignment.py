@@ -11,7 +11,7 @@ from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .intmat import IntMat, to_intmat
 from .minpoly import set_minpoly
 from .printing import set_short
-from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_int, to_matrix, to_poly, typeof
+from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_ideal, to_int, to_matrix, to_poly, typeof
 
 
 #: Singular's bounds on standard basis computations: mech computes without them (only 0 is accepted).
@@ -121,8 +121,12 @@ class Assignment:
         if isinstance(container, List):
             items = list(container.items)
             items += [NONE] * (i - len(items))
-            if last:
-                items[i - 1] = List(value.items) if isinstance(value, ExprList) else value
+            if last and isinstance(value, ExprList):  # Singular: only into an ideal entry (it joins them)
+                if i > len(container.items) or not isinstance(container.items[i - 1], Ideal):
+                    raise MechRuntimeError("cannot assign several values to one list entry")
+                items[i - 1] = to_ideal(value, container.items[i - 1].ring)
+            elif last:
+                items[i - 1] = value
             else:
                 items[i - 1] = self._set_in(items[i - 1], chain, k + 1, value)
             return List(items)

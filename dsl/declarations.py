@@ -101,6 +101,8 @@ class Declarations:
     def _converted(self, v: Any, typ: str, kring: Any) -> Any:
         if typ in RING_TYPES and kring is None:
             self.basering()
+        if typ == "def" and isinstance(v, ExprList) and len(v.items) > 1:  # Singular: "assign not impl."
+            raise MechRuntimeError("a def takes one value (declare a list for several)")
         v = convert(v, typ, kring, self.warn)
         if isinstance(v, Ideal):
             std = v.is_std or len(v.gens) <= 1  # Singular marks one-generator ideals as standard bases
