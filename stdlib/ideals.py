@@ -73,7 +73,8 @@ def intersect(I: Ideal, *more: Ideal) -> Ideal:
       intersect(ideal(x), ideal(y), ideal(x+y));
       → _[1]=x2y+xy2
     """
-    _global(I, "intersect")
+    if not I.ring.order.is_global:
+        return _std_ideal(I.ring, K.intersect_local(*[J.nonzero() for J in (I, *more)], ring=I.ring))
     return _std_ideal(I.ring, K.intersect(*[J.nonzero() for J in (I, *more)], ring=I.ring))
 
 
