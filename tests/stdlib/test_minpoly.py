@@ -77,3 +77,4 @@ def test_refusals() -> None:
     assert "one parameter" in str(error("ring r=(0,a,b),x,dp; minpoly=a2+1;"))
     assert "already" in str(error("ring r=(0,a),x,dp; minpoly=a2+1; minpoly=a3-2;"))
     assert "reducible" in str(error("ring r=(0,a),x,dp; minpoly=a2-1; 1/(a-1);"))
+
