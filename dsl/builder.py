@@ -143,6 +143,11 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
         return A.Empty(pos=meta_pos(meta))
 
     @v_args(meta=True)
+    def type_stmt(self, meta, c):  # `type x;`: the command type (stdlib/type_command.py)
+        pos = meta_pos(meta)
+        return A.ExprStmt([A.Call(A.Name("type", pos=pos), [c[0]], pos=pos)], pos=pos)
+
+    @v_args(meta=True)
     def dangling_else(self, meta, c):  # Singular warns of an `else` without `if` and skips its block
         return A.Empty(pos=meta_pos(meta))
 
