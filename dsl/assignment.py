@@ -11,7 +11,7 @@ from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .intmat import IntMat, to_intmat
 from .minpoly import set_minpoly
 from .printing import set_short
-from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_ideal, to_int, to_matrix, to_poly, typeof
+from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, to_ideal, to_int, to_matrix, to_poly, typeof
 
 
 #: Singular's bounds on standard basis computations: mech computes without them (only 0 is accepted).
@@ -74,7 +74,7 @@ class Assignment:
             if var.type == "ring":
                 value = convert(value, "ring", None)
             elif var.type == "map":
-                value = convert(value, "map", None)
+                value = self._map_value(list(value.items)) if isinstance(value, ExprList) else convert(value, "map", None)
             elif var.type == "intmat" and isinstance(var.value, IntMat) and not isinstance(value, IntMat):
                 value = to_intmat(value, var.value.nrows, var.value.ncols)
             elif var.type == "matrix" and isinstance(var.value, Matrix):
@@ -111,6 +111,10 @@ class Assignment:
         i = to_int(idx[0])
         if i < 1:
             raise MechRuntimeError(f"index {i} out of range (indices start at 1)")
+        if isinstance(container, Map) and last:  # as an ideal's entry: the image of the i-th variable
+            images = list(container.images) + [container.ring.zero()] * (i - len(container.images))
+            images[i - 1] = to_poly(value, container.ring)
+            return Map(container.source, container.ring, tuple(images))
         if isinstance(container, Ideal):
             if not last:
                 raise MechRuntimeError("cannot index into an ideal's generator")

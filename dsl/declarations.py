@@ -142,14 +142,14 @@ class Declarations:
             raise MechRuntimeError("declare one map at a time: map phi = r, f1, ..., fn;")
         if s.value is None:
             raise MechRuntimeError("a map is declared as map phi = r, f1, ..., fn;")
-        v = self._values(s.value)
+        self.declare(s.items[0].name, "map", self._map_value(self._values(s.value)))
+
+    def _map_value(self, v: list) -> Map:
+        """The map of ``r, f1, ..., fn`` (or a map itself), into the basering."""
         if len(v) == 1 and isinstance(v[0], Map):
-            m = v[0]
-        else:
-            if not v or not isinstance(v[0], Ring):
-                raise MechTypeError("a map is declared as map phi = r, f1, ..., fn; with r the source ring")
-            src = v[0]
-            target = self.basering().poly
-            images = list(self._converted(ExprList(v[1:]), "ideal", target).gens) if len(v) > 1 else []
-            m = Map(src, target, tuple(images))  # as Singular, images beyond the variables are kept, unused
-        self.declare(s.items[0].name, "map", m)
+            return v[0]
+        if not v or not isinstance(v[0], Ring):
+            raise MechTypeError("a map is given as r, f1, ..., fn; with r the source ring")
+        target = self.basering().poly
+        images = list(self._converted(ExprList(v[1:]), "ideal", target).gens) if len(v) > 1 else []
+        return Map(v[0], target, tuple(images))  # as Singular, images beyond the variables are kept, unused

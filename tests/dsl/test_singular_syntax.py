@@ -23,3 +23,8 @@ def test_several_values_into_a_list_entry() -> None:
 
 def test_matrix_resize_needs_positive_sizes() -> None:
     assert "positive" in str(error("ring r; matrix A[1][1] = 8; matrix(A, 1, 0);"))
+
+
+def test_map_assignment_and_entries() -> None:
+    src = "ring R=0,(x,y),dp; ring S=0,(a,b),dp; map phi=R,a,b; phi=R,a2,3; phi(x+y); phi[2]=b2; phi(x+y);"
+    assert run(src).split() == ["a2+3", "a2+b2"]
