@@ -270,7 +270,7 @@ class AlgNum(RatFunc):
         if self.u.is_zero():
             raise ZeroDivisionError("division by zero")
         if self.u.degree() == 0:
-            return AlgNum(self.field, self.poly_inv_const())
+            return AlgNum(self.field, self._inv_const())
         g, s, _ = self.u.xgcd(self.field.modulus)
         if g.degree() != 0:
             raise DomainError(f"{self.field.format_element(self)} is not invertible: the minimal polynomial "
@@ -278,7 +278,7 @@ class AlgNum(RatFunc):
         return self.field.element(s / g.coeffs()[0] if self.field.characteristic == 0 else
                                   s * pow(int(g.coeffs()[0]), -1, self.field.characteristic))
 
-    def poly_inv_const(self) -> Any:
+    def _inv_const(self) -> Any:
         c = self.u.coeffs()[0]
         if self.field.characteristic:
             return self.field.poly_type([pow(int(c), -1, self.field.characteristic)])
