@@ -26,3 +26,21 @@ def test_primdec_options_same_result() -> None:
     assert run(base + 'minAssGTZ(i, "noFacstd");') == run(base + "minAssGTZ(i);")
     assert run(base + "minAssChar(i, 2);") == run(base + "minAssChar(i);")
     assert "unknown option" in str(error(base + 'minAssGTZ(i, "foo");'))
+
+
+ORDER_SRC = """
+ring s=0,(a,b,c),wp(-1,1,2); poly g=a+1+b+a2+ab+c+a2c+bc+b2+ac2+a3b2+abc; g;
+ring t=0,(a,b,c),ws(-1,1,2); imap(s,g);
+ring w=0,(a,b,c),wp(0,1,2); imap(s,g);
+ring t3=0,(x,y),wp(-2,1); x+y2+1+x2y4+xy2;
+ring u2=0,(x,y,z),(dp(1),Wp(-1,2)); x+y+z+y2+yz+1+y3z;
+ring r=0,(x,y,z),dp; coef(xy+x2+y2+x+y+1, xy);
+ring l=0,(x,y,z),lp; coef(xy+x2+y2+x+y+1, xy);
+ring d=0,(x,y,z),ds; coef(xy+x2+y2+x+y+1, xy);
+ring m=0,(e,x),ws(-6,1); coef(3e+1,e);
+"""
+
+
+@pytest.mark.singular
+def test_weight_orderings_and_coef_as_singular() -> None:
+    assert run(ORDER_SRC).split() == run_singular(ORDER_SRC).split()
