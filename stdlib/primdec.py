@@ -211,3 +211,18 @@ def equi_radical(I: Ideal) -> Ideal:
     """
     _global(I, "equiRadical")
     return _ideal(I.ring, _run("equiRadical", P.equi_radical, I))
+
+
+@command("idealsEqual", lib="primdec.lib")
+def ideals_equal(I: Ideal, J: Ideal) -> int:
+    """idealsEqual(I, J): 1 if the ideals are equal, else 0 (a global ordering).
+
+    Example:
+      LIB "primdec.lib";
+      ring r = 0,(x,y),dp;
+      idealsEqual(ideal(x, x+y), ideal(x, y));
+      → 1
+    """
+    _global(I, "idealsEqual")
+    from ..kernel.ideals import ideals_equal as equal
+    return int(equal(I.nonzero(), J.nonzero(), ring=I.ring))
