@@ -214,6 +214,17 @@ def intersect_local(*ideals: Ideal, ring: PolyRing | None = None) -> list[Poly]:
     return result
 
 
+def quotient_local(ideal: Ideal, other: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """``I : J`` in the localization of a local or mixed ordering: localization commutes with ideal
+    quotients, so the quotient of the polynomial ideals (computed for ``dp``) generates it; a standard
+    basis."""
+    from .engines import standard_basis
+    ring = ring_of(ideal, other, ring=ring)
+    dp = with_order(ring, MonomialOrder([Block("dp", ring.nvars)]))
+    found = quotient(move(ideal, dp), move(other, dp), ring=dp)
+    return standard_basis(move(found, ring), ring)
+
+
 def quotient(ideal: Ideal, other: Ideal, ring: PolyRing | None = None) -> list[Poly]:
     """The ideal quotient ``I : J = {f : f*J ⊆ I}``."""
     from .factor import divide_exact

@@ -88,6 +88,9 @@ def quotient(I: Ideal, J: Ideal) -> Ideal:
       → _[1]=y
       → _[2]=x
     """
+    if not I.ring.order.is_global and quotient_of(I.ring) is None:
+        with _available("quotient", I.ring):
+            return _std_ideal(I.ring, K.quotient_local(I.nonzero(), J.nonzero(), ring=I.ring))
     _global(I, "quotient")
     with _available("quotient", I.ring):
         found = K.quotient(with_quotient(I.nonzero(), I.ring), J.nonzero(), ring=I.ring)
