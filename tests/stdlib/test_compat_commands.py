@@ -44,3 +44,18 @@ ring m=0,(e,x),ws(-6,1); coef(3e+1,e);
 @pytest.mark.singular
 def test_weight_orderings_and_coef_as_singular() -> None:
     assert run(ORDER_SRC).split() == run_singular(ORDER_SRC).split()
+
+
+MISC_SRC = """
+list l=1,2,3; insert(l,"x",4);
+ring r=(0,a,b),x,dp; pardeg(a2b+1); pardeg(number(3)); pardeg((a+1)/(b3)); pardeg(number(0));
+matrix m[2][2]=1,x,3,x2; trace(m); matrix n[2][3]=1,2,3,4,5,6; trace(n);
+intvec v=1,2,3; transpose(v); typeof(transpose(v));
+ring t=(0,a),x,dp; minpoly=a2+1; pardeg(a+1);
+LIB "primdec.lib"; ring s=0,(x,y),dp; idealsEqual(ideal(x, x+y), ideal(x, y)); idealsEqual(ideal(x2), ideal(x));
+"""
+
+
+@pytest.mark.singular
+def test_misc_as_singular() -> None:
+    assert run(MISC_SRC).split() == run_singular(MISC_SRC).split()
