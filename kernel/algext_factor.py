@@ -65,13 +65,14 @@ def gcd(f: Poly, g: Poly) -> Poly:
     if f.is_zero() or g.is_zero():
         return (g if f.is_zero() else f).monic()
     if f.ring.field.characteristic:
-        return _euclid(f, g)
+        return euclid_gcd(f, g)
     R, K = _sympy_ring(f.ring)
     return _from_sympy(_to_sympy(f, R, K).gcd(_to_sympy(g, R, K)), f.ring).monic()
 
 
-def _euclid(f: Poly, g: Poly) -> Poly:
-    """The monic gcd of two polynomials in one variable by Euclid's algorithm (any field)."""
+def euclid_gcd(f: Poly, g: Poly) -> Poly:
+    """The monic gcd of two polynomials in one variable by Euclid's algorithm (any field: also the
+    parameter fields K(a,...))."""
     used = f.variables() | g.variables()
     if len(used) > 1:
         raise NotSupported(f"gcd of polynomials in several variables over {f.ring.field!r} is not available")

@@ -102,6 +102,8 @@ def gcd(f: Poly, g: Poly) -> Poly:
     """The greatest common divisor, normalized; ``gcd(0, 0) == 0``."""
     if isinstance(f.ring.field, AlgebraicField):
         return algext_factor.gcd(f, g)
+    if getattr(f.ring.field, "params", ()) and not (f.is_zero() or g.is_zero()):
+        return algext_factor.euclid_gcd(f, g)  # K(a,...): Euclid in one variable
     if f.is_zero():
         return normalize(g)
     if g.is_zero():

@@ -40,7 +40,7 @@ def gcd_int(a: int, b: int) -> int:
 @command("gcd")
 def gcd_poly(f: Poly, g: Poly) -> Poly:
     h = factor.gcd(f, g)
-    if hasattr(h.ring.field, "modulus"):  # over QQ[a]/(m) Singular clears denominators, as std does
+    if getattr(h.ring.field, "params", ()):  # with parameters Singular clears denominators, as std does
         from .standard import normalize
         return normalize(h)
     return h
