@@ -9,8 +9,9 @@ from ..kernel import Poly
 from . import ast as A
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .intmat import IntMat, to_intmat
+from .minpoly import set_minpoly
 from .printing import set_short
-from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, convert, to_int, to_matrix, to_poly, typeof
+from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, to_ideal, to_int, to_matrix, to_poly, typeof
 
 
 #: Singular's bounds on standard basis computations: mech computes without them (only 0 is accepted).
@@ -54,6 +55,9 @@ class Assignment:
             if name == "short" and not chain and self.ring is not None:
                 set_short(self.ring.poly, bool(to_int(value)))
                 return
+            if name == "minpoly" and not chain:
+                set_minpoly(self, value)
+                return
             if name in UNSUPPORTED_BOUNDS and not chain:
                 if (not value.is_zero()) if isinstance(value, Poly) else to_int(value) != 0:
                     raise MechRuntimeError(f"{name} other than 0 ({UNSUPPORTED_BOUNDS[name]}) is not supported")
@@ -70,7 +74,7 @@ class Assignment:
             if var.type == "ring":
                 value = convert(value, "ring", None)
             elif var.type == "map":
-                value = convert(value, "map", None)
+                value = self._map_value(list(value.items)) if isinstance(value, ExprList) else convert(value, "map", None)
             elif var.type == "intmat" and isinstance(var.value, IntMat) and not isinstance(value, IntMat):
                 value = to_intmat(value, var.value.nrows, var.value.ncols)
             elif var.type == "matrix" and isinstance(var.value, Matrix):
@@ -107,6 +111,10 @@ class Assignment:
         i = to_int(idx[0])
         if i < 1:
             raise MechRuntimeError(f"index {i} out of range (indices start at 1)")
+        if isinstance(container, Map) and last:  # as an ideal's entry: the image of the i-th variable
+            images = list(container.images) + [container.ring.zero()] * (i - len(container.images))
+            images[i - 1] = to_poly(value, container.ring)
+            return Map(container.source, container.ring, tuple(images))
         if isinstance(container, Ideal):
             if not last:
                 raise MechRuntimeError("cannot index into an ideal's generator")
@@ -117,8 +125,12 @@ class Assignment:
         if isinstance(container, List):
             items = list(container.items)
             items += [NONE] * (i - len(items))
-            if last:
-                items[i - 1] = List(value.items) if isinstance(value, ExprList) else value
+            if last and isinstance(value, ExprList):  # Singular: only into an ideal entry (it joins them)
+                if i > len(container.items) or not isinstance(container.items[i - 1], Ideal):
+                    raise MechRuntimeError("cannot assign several values to one list entry")
+                items[i - 1] = to_ideal(value, container.items[i - 1].ring)
+            elif last:
+                items[i - 1] = value
             else:
                 items[i - 1] = self._set_in(items[i - 1], chain, k + 1, value)
             return List(items)

@@ -143,6 +143,15 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
         return A.Empty(pos=meta_pos(meta))
 
     @v_args(meta=True)
+    def type_stmt(self, meta, c):  # `type x;`: the command type (stdlib/type_command.py)
+        pos = meta_pos(meta)
+        return A.ExprStmt([A.Call(A.Name("type", pos=pos), [c[0]], pos=pos)], pos=pos)
+
+    @v_args(meta=True)
+    def dangling_else(self, meta, c):  # Singular warns of an `else` without `if` and skips its block
+        return A.Empty(pos=meta_pos(meta))
+
+    @v_args(meta=True)
     def declarator(self, meta, c):
         return A.Declarator(str(c[0]), list(c[1:]), pos=meta_pos(meta))
 
@@ -241,7 +250,7 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
 
     @v_args(meta=True)
     def block(self, meta, c):
-        return A.Block(list(c), pos=meta_pos(meta))
+        return A.Block([s for s in c if s is not None], pos=meta_pos(meta))
 
     @v_args(meta=True)
     def if_stmt(self, meta, c):

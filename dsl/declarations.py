@@ -101,6 +101,8 @@ class Declarations:
     def _converted(self, v: Any, typ: str, kring: Any) -> Any:
         if typ in RING_TYPES and kring is None:
             self.basering()
+        if typ == "def" and isinstance(v, ExprList) and len(v.items) > 1:  # Singular: "assign not impl."
+            raise MechRuntimeError("a def takes one value (declare a list for several)")
         v = convert(v, typ, kring, self.warn)
         if isinstance(v, Ideal):
             std = v.is_std or len(v.gens) <= 1  # Singular marks one-generator ideals as standard bases
@@ -140,14 +142,14 @@ class Declarations:
             raise MechRuntimeError("declare one map at a time: map phi = r, f1, ..., fn;")
         if s.value is None:
             raise MechRuntimeError("a map is declared as map phi = r, f1, ..., fn;")
-        v = self._values(s.value)
+        self.declare(s.items[0].name, "map", self._map_value(self._values(s.value)))
+
+    def _map_value(self, v: list) -> Map:
+        """The map of ``r, f1, ..., fn`` (or a map itself), into the basering."""
         if len(v) == 1 and isinstance(v[0], Map):
-            m = v[0]
-        else:
-            if not v or not isinstance(v[0], Ring):
-                raise MechTypeError("a map is declared as map phi = r, f1, ..., fn; with r the source ring")
-            src = v[0]
-            target = self.basering().poly
-            images = list(self._converted(ExprList(v[1:]), "ideal", target).gens) if len(v) > 1 else []
-            m = Map(src, target, tuple(images))  # as Singular, images beyond the variables are kept, unused
-        self.declare(s.items[0].name, "map", m)
+            return v[0]
+        if not v or not isinstance(v[0], Ring):
+            raise MechTypeError("a map is given as r, f1, ..., fn; with r the source ring")
+        target = self.basering().poly
+        images = list(self._converted(ExprList(v[1:]), "ideal", target).gens) if len(v) > 1 else []
+        return Map(v[0], target, tuple(images))  # as Singular, images beyond the variables are kept, unused

@@ -8,6 +8,7 @@ from typing import Any, Optional
 
 from . import ast as A
 from .errors import MechError, MechNameError, MechRuntimeError
+from .minpoly import get_minpoly
 from .printing import is_short
 from .rings import indexed_names
 from .values import ExprList, Number, Ring
@@ -50,6 +51,8 @@ class Names:
             return len(self.frames)
         if name == "short" and self.ring is not None:
             return int(is_short(self.ring.poly))
+        if name == "minpoly" and self.ring is not None:
+            return get_minpoly(self.ring)
         if name == "newline":
             return "\n"
         if name in ("degBound", "multBound"):

@@ -12,6 +12,7 @@ from typing import Any, Callable, Optional
 from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
 from .intmat import IntMat, intmat_op
+from .minpoly import compare_params
 from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, same_value, to_ideal, to_number, to_poly,
                      typeof)
 
@@ -329,16 +330,16 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
         ring = _ring(a, b, ring)
         if max(_rank(a), _rank(b)) == 1:
             if getattr(ring.field, "params", ()):
-                if op not in ("==", "!="):
-                    raise MechTypeError("numbers with parameters cannot be ordered")
                 x, y = to_number(a, ring).c, to_number(b, ring).c
+                if op not in ("==", "!="):
+                    return compare_params(op, x, y)
             else:
                 x, y = _sort_number(to_number(a, ring)), _sort_number(to_number(b, ring))
         else:
             p, q = to_poly(a, ring), to_poly(b, ring)
             if op in ("==", "!="):
                 return int((p == q) == (op == "=="))
-            x, y = _poly_key(p), _poly_key(q)
+            x, y = _poly_cmp(p, q), 0
     elif op in ("==", "!=") and isinstance(a, IntMat) and isinstance(b, IntMat):
         return int((a == b) == (op == "=="))
     elif op in ("==", "!=") and type(a) is type(b) and isinstance(a, (Ideal, Matrix, IntVec, List)):
@@ -360,7 +361,22 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
     return int(x >= y)
 
 
-def _poly_key(p: Poly) -> tuple:
-    """Polynomials compare by their terms from the largest down (leading monomial first)."""
+def _poly_cmp(p: Poly, q: Poly) -> int:
+    """Singular's order of polynomials: by leading monomial (0 below every monomial), then by the sign
+    of the difference of the leading coefficients (over Z/p its symmetric representative: ``6x > x`` is
+    0 in Z/7); the other terms do not count (``x+2 > x+1`` is 0)."""
+    if p.is_zero() or q.is_zero():
+        return int(not p.is_zero()) - int(not q.is_zero())
     key = p.ring.order.key
-    return tuple((key(e), 1) for e, _ in p.sorted_terms())
+    a, b = key(p.lm()), key(q.lm())
+    if a != b:
+        return 1 if a > b else -1
+    d = p.lc() - q.lc()  # Singular asks whether the difference is positive
+    if not d:
+        return 0
+    field = p.ring.field
+    if getattr(field, "params", ()):
+        return 1 if compare_params(">", d, field.zero) else -1
+    if field.characteristic:
+        return 1 if field.symmetric(d) > 0 else -1
+    return 1 if d > 0 else -1

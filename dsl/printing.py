@@ -239,7 +239,9 @@ def ring_str(r: Ring) -> str:
     """What ``r;`` prints: coefficients, number of variables, the ordering blocks."""
     p = r.characteristic
     coeffs = f"ZZ/{p}" if p else "QQ"
-    if r.params:
+    if hasattr(r.poly.field, "modulus"):  # an algebraic extension: QQ[a]/(a2+1)
+        coeffs = repr(r.poly.field)
+    elif r.params:
         coeffs += f"({', '.join(r.params)})"
     lines = [f"// coefficients: {coeffs}", f"// number of vars : {len(r.names)}"]
     start = 0

@@ -190,10 +190,18 @@ def make_ring(char: int, params: tuple[str, ...] | list[str], names: list[str], 
     poly = _ring_cache.get(key)
     if poly is None:
         field = _field(char, params)
-        kblocks = [Block(b.kind, b.size, b.weights) for b in blocks if b.kind not in ("c", "C")]
+        kblocks = [k for b in blocks if b.kind not in ("c", "C") for k in _kernel_blocks(b)]
         order = MonomialOrder(kblocks, len(names))
         poly = _ring_cache[key] = PolyRing(field, names, order)
     return Ring(poly, params, tuple(blocks))
+
+
+def _kernel_blocks(b: OrderBlock) -> list[Block]:
+    """The kernel's blocks for one block as written: Singular orders by ``wp(w)`` (``Wp(w)``) with a
+    weight <= 0 as by ``(a(w), dp)`` (``(a(w), Dp)``); ``ws`` keeps its reverse lexicographic tie-break."""
+    if b.kind in ("wp", "Wp") and any(w <= 0 for w in b.weights):
+        return [Block("a", b.size, b.weights), Block(b.kind.replace("w", "d").replace("W", "D"), b.size)]
+    return [Block(b.kind, b.size, b.weights)]
 
 
 def _field(char: int, params: tuple[str, ...]) -> Any:

@@ -16,7 +16,8 @@ from typing import Any
 
 import flint
 
-from . import flint_bridge
+from . import algext_factor, flint_bridge
+from .algext import AlgebraicField
 from .errors import DivisionError
 from .poly import Poly, PolyRing
 
@@ -66,6 +67,8 @@ def factorize(f: Poly) -> tuple[Any, list[tuple[Poly, int]]]:
     ring = f.ring
     if f.is_constant():
         return (f.lc() if not f.is_zero() else ring.field.zero), []
+    if isinstance(ring.field, AlgebraicField):
+        return algext_factor.factorize(f)
     unit, facs = to_flint(f).factor()
     out = []
     for g, m in facs:
@@ -97,6 +100,10 @@ def squarefree_part(f: Poly) -> Poly:
 
 def gcd(f: Poly, g: Poly) -> Poly:
     """The greatest common divisor, normalized; ``gcd(0, 0) == 0``."""
+    if isinstance(f.ring.field, AlgebraicField):
+        return algext_factor.gcd(f, g)
+    if getattr(f.ring.field, "params", ()) and not (f.is_zero() or g.is_zero()):
+        return algext_factor.euclid_gcd(f, g)  # K(a,...): Euclid in one variable
     if f.is_zero():
         return normalize(g)
     if g.is_zero():
@@ -108,6 +115,11 @@ def divide_exact(f: Poly, g: Poly) -> Poly:
     """``f / g`` for a divisor ``g`` of ``f``; :class:`~.errors.DivisionError` when ``g`` does not divide ``f``."""
     if g.is_zero():
         raise ZeroDivisionError("division by zero")
+    if isinstance(f.ring.field, AlgebraicField):
+        try:
+            return algext_factor.divide_exact(f, g)
+        except ValueError:
+            raise DivisionError("the division is not exact") from None
     q, r = divmod(to_flint(f), to_flint(g))
     if not r.is_zero():
         raise DivisionError("the division is not exact")

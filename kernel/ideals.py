@@ -198,6 +198,33 @@ def _intersect2(a: list[Poly], b: list[Poly], ring: PolyRing) -> list[Poly]:
     return _free_of_prefix(groebner(gens, big), ring, 1)
 
 
+def intersect_local(*ideals: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """``I1 ∩ I2 ∩ ...`` in the localization of a local or mixed ordering: ``t`` eliminated from
+    ``t*I + (1-t)*J`` by a standard basis for ``(dp(t), ordering)`` (``t`` global, so the elements free
+    of ``t`` generate the intersection), pairwise; a standard basis."""
+    from .engines import standard_basis
+    ring = ring_of(*ideals, ring=ring)
+    big = PolyRing(ring.field, ["t"] + list(ring.names), MonomialOrder([Block("dp", 1)] + list(ring.order.blocks),
+                                                                      ring.nvars + 1))
+    t = big.gen(0)
+    result = standard_basis([p for p in ideals[0] if not p.is_zero()], ring) if ideals else [ring.one()]
+    for other in ideals[1:]:
+        gens = [t * _lift(p, big, 1) for p in result] + [(1 - t) * _lift(p, big, 1) for p in other if not p.is_zero()]
+        result = standard_basis(_free_of_prefix(standard_basis(gens, big), ring, 1), ring)
+    return result
+
+
+def quotient_local(ideal: Ideal, other: Ideal, ring: PolyRing | None = None) -> list[Poly]:
+    """``I : J`` in the localization of a local or mixed ordering: localization commutes with ideal
+    quotients, so the quotient of the polynomial ideals (computed for ``dp``) generates it; a standard
+    basis."""
+    from .engines import standard_basis
+    ring = ring_of(ideal, other, ring=ring)
+    dp = with_order(ring, MonomialOrder([Block("dp", ring.nvars)]))
+    found = quotient(move(ideal, dp), move(other, dp), ring=dp)
+    return standard_basis(move(found, ring), ring)
+
+
 def quotient(ideal: Ideal, other: Ideal, ring: PolyRing | None = None) -> list[Poly]:
     """The ideal quotient ``I : J = {f : f*J ⊆ I}``."""
     from .factor import divide_exact

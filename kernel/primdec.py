@@ -145,12 +145,18 @@ class _Parameters:
     def ideal(self, ideal: Ideal) -> list[Poly]:
         """``J = I K(a)[x] ∩ K[x, a]``: the lifted generators saturated by the product of the
         leading coefficients (in ``K[a]``) of their Gröbner basis, eliminating ``x``."""
-        basis = groebner([self._lift(p) for p in ideal if not p.is_zero()], self.big)
+        gens = [self._lift(p) for p in ideal if not p.is_zero()]
+        if hasattr(self.field, "modulus"):  # K[a]/(m) (kernel/algext.py): K[x, a]/(I, m(a)), nothing to saturate
+            m = self.field.modulus
+            cs = m.numer().coeffs() if not self.field.characteristic else m.coeffs()
+            gens.append(Poly(self.big, {(0,) * self.n + (e,): self.big.field(int(c)) for e, c in enumerate(cs) if int(c)}))
+            return groebner(gens, self.big)
+        basis = groebner(gens, self.big)
         return contract(basis, self.big, range(self.n))[0]
 
     def generic(self, prime: list[Poly]) -> bool:
         """Whether a prime, a reduced basis for the elimination ordering, meets ``K[a]`` in 0."""
-        return all(any(e[:self.n]) for e in (p.lm() for p in prime))
+        return hasattr(self.field, "modulus") or all(any(e[:self.n]) for e in (p.lm() for p in prime))
 
     def back(self, basis: list[Poly]) -> list[Poly]:
         """The extension to ``K(a)[x]``, a reduced basis."""
@@ -161,7 +167,8 @@ class _Parameters:
             coeffs: dict[Exp, dict] = {}
             for e, c in p.terms.items():
                 coeffs.setdefault(e[:self.n], {})[e[self.n:]] = int(c.p) if not field.characteristic else int(c)
-            polys.append(Poly(self.ring, {e: field.from_polys(field.ctx.from_dict(d)) for e, d in coeffs.items()}))
+            image = {e: field.from_polys(field.ctx.from_dict(d)) for e, d in coeffs.items()}
+            polys.append(Poly(self.ring, {e: c for e, c in image.items() if c}))  # K[a]/(m): m(a) goes to 0
         return groebner(polys, self.ring)
 
 

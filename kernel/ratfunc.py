@@ -107,7 +107,7 @@ class RationalFunctionField(Field):
         return f"{base}({','.join(self.params)})"
 
     def __eq__(self, other: object) -> bool:
-        return (isinstance(other, RationalFunctionField) and other.characteristic == self.characteristic
+        return (type(other) is type(self) and other.characteristic == self.characteristic
                 and other.params == self.params)
 
     def __hash__(self) -> int:
@@ -299,6 +299,8 @@ def format_coeff(c: RatFunc, short: bool | None = None) -> str:
     and omits coefficients 1 and -1.
     """
     f = c.field
+    if hasattr(f, "format_element"):  # an algebraic extension (kernel/algext.py)
+        return f.format_element(c, short)
     if short is None:
         short = all(len(n) == 1 for n in f.params)
     if c.num.is_constant() and c.den.is_constant():

@@ -136,7 +136,7 @@ def string(*xs: Any) -> str:
 
 
 @command("matrix")
-def matrix(ctx, x: Any, nr: int = 0, nc: int = 0) -> Matrix:
+def matrix(ctx, x: Any, nr: int = 0, nc: int = -1) -> Matrix:
     """matrix(I) or matrix(M, r, c): a matrix from an ideal (one row) or resized.
 
     Example:
@@ -149,7 +149,9 @@ def matrix(ctx, x: Any, nr: int = 0, nc: int = 0) -> Matrix:
       → 3,4,0,
       → 0,0,0
     """
-    return to_matrix(x, ctx.basering().poly, nr, nc) if nr else to_matrix(x, ctx.basering().poly)
+    if nc != -1 and (nr <= 0 or nc <= 0):
+        raise MechRuntimeError(f"matrix(M, {nr}, {nc}): the dimensions must be positive")
+    return to_matrix(x, ctx.basering().poly, nr, max(nc, 0)) if nr else to_matrix(x, ctx.basering().poly)
 
 
 @command("typeof", raw=True)

@@ -36,6 +36,8 @@ def _revlex_lead(p: Poly) -> Any:
 def _scale(g: Poly) -> Poly:
     """A factor as factory returns it: integer primitive (QQ) with positive, or monic (Z/p),
     leading coefficient with respect to :func:`_revlex_lead`."""
+    if hasattr(g.ring.field, "modulus"):  # QQ[a]/(m): monic in the ring's ordering
+        return g.monic()
     g = normalize(g)
     if g.ring.field.characteristic:
         return g * (g.ring.field.one / _revlex_lead(g))
@@ -93,8 +95,7 @@ def _compare(a: dict, b: dict, char: int) -> int:
     if la == 0:
         x = next(iter(a.values()), 0)
         y = next(iter(b.values()), 0)
-        if char:
-            x, y = int(x), int(y)
+        x, y = _number_key(x, char), _number_key(y, char)
         return (x > y) - (x < y)
     v = la - 1
     ca, cb = _split(a, v), _split(b, v)
@@ -105,6 +106,16 @@ def _compare(a: dict, b: dict, char: int) -> int:
         if c:
             return c
     return (len(ca) > len(cb)) - (len(ca) < len(cb))
+
+
+def _number_key(c: Any, char: int) -> Any:
+    """A number as factory compares it: a rational, a residue 0..p-1, or an element of QQ[a]/(m) by its
+    degree in a and then its coefficients from the top."""
+    u = getattr(c, "u", None)
+    if u is None:
+        return int(c) if char else c
+    cs = [int(v) if char else v for v in u.coeffs()]
+    return (len(cs), cs[::-1])
 
 
 def _split(terms: dict, v: int) -> list[tuple[int, dict]]:

@@ -30,6 +30,11 @@ def _std_ideal(ring: Any, polys: list[Poly]) -> Ideal:
     return Ideal(ring, [normalize(p) for p in polys], is_std=True)
 
 
+def _unmarked(ring: Any, polys: list[Poly]) -> Ideal:
+    """A standard basis Singular's command does not mark as one (listvar shows no ``(SB)``)."""
+    return Ideal(ring, [normalize(p) for p in polys], is_std=False)
+
+
 def _global(I: Ideal, cmd: str) -> None:
     if not I.ring.order.is_global:
         raise MechRuntimeError(f"{cmd} needs a global ordering (dp, lp, ...), not a local one")
@@ -73,13 +78,15 @@ def intersect(I: Ideal, *more: Ideal) -> Ideal:
       intersect(ideal(x), ideal(y), ideal(x+y));
       → _[1]=x2y+xy2
     """
-    _global(I, "intersect")
+    if not I.ring.order.is_global:
+        return _std_ideal(I.ring, K.intersect_local(*[J.nonzero() for J in (I, *more)], ring=I.ring))
     return _std_ideal(I.ring, K.intersect(*[J.nonzero() for J in (I, *more)], ring=I.ring))
 
 
 @command("quotient")
 def quotient(I: Ideal, J: Ideal) -> Ideal:
-    """quotient(I, J): the ideal quotient I : J = {f : f*J in I}, a standard basis.
+    """quotient(I, J): the ideal quotient I : J = {f : f*J in I}, a standard basis (not marked as one,
+    as in Singular).
 
     Example:
       ring r = 0,(x,y),dp;
@@ -87,10 +94,13 @@ def quotient(I: Ideal, J: Ideal) -> Ideal:
       → _[1]=y
       → _[2]=x
     """
+    if not I.ring.order.is_global and quotient_of(I.ring) is None:
+        with _available("quotient", I.ring):
+            return _unmarked(I.ring, K.quotient_local(I.nonzero(), J.nonzero(), ring=I.ring))
     _global(I, "quotient")
     with _available("quotient", I.ring):
         found = K.quotient(with_quotient(I.nonzero(), I.ring), J.nonzero(), ring=I.ring)
-        return _std_ideal(I.ring, found if quotient_of(I.ring) is None else quotient_of(I.ring).std(found))
+        return _unmarked(I.ring, found if quotient_of(I.ring) is None else quotient_of(I.ring).std(found))
 
 
 @command("sat", lib="elim.lib")

@@ -39,6 +39,12 @@ def transpose_intmat(m: IntMat) -> IntMat:
     return m.transpose()
 
 
+@command("transpose")
+def transpose_intvec(v: IntVec) -> IntMat:
+    """An intvec is a column: its transpose is a 1 x n intmat."""
+    return IntMat(1, len(v.values), v.values)
+
+
 @command("det")
 def det_intmat(m: IntMat) -> int:
     return intmat_det(m)

@@ -5,7 +5,7 @@ from typing import Any
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
-from ..dsl.values import List
+from ..dsl.values import NONE, List
 
 
 @command("delete")
@@ -46,6 +46,7 @@ def insert(L: List, v: Any, i: int = 0) -> List:
       → [3]:
       →    5
     """
-    if not 0 <= i <= len(L):
-        raise MechRuntimeError(f"insert: position {i} out of range (the list has {len(L)} entries)")
-    return List(L.items[:i] + (v,) + L.items[i:])
+    if i < 0:
+        raise MechRuntimeError(f"insert: position {i} out of range (at least 0)")
+    items = tuple(L.items) + (NONE,) * (i - len(L))  # as Singular: a position beyond the end pads with none
+    return List(items[:i] + (v,) + items[i:])

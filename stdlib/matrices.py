@@ -97,3 +97,19 @@ def transpose(m: Matrix) -> Matrix:
     """
     return Matrix(m.ring, m.ncols, m.nrows, [m.get(i, j) for j in range(1, m.ncols + 1)
                                              for i in range(1, m.nrows + 1)])
+
+
+@command("trace")
+def trace(M: Matrix) -> Poly:
+    """trace(M): the sum of the diagonal entries of M.
+
+    Example:
+      ring r = 0,(x),dp;
+      matrix m[2][2] = 1,x,3,x2;
+      trace(m);
+      → x2+1
+    """
+    total = M.ring.zero()
+    for i in range(min(M.nrows, M.ncols)):
+        total = total + M.entries[i * M.ncols + i]
+    return total

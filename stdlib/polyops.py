@@ -39,7 +39,11 @@ def gcd_int(a: int, b: int) -> int:
 
 @command("gcd")
 def gcd_poly(f: Poly, g: Poly) -> Poly:
-    return factor.gcd(f, g)
+    h = factor.gcd(f, g)
+    if getattr(h.ring.field, "params", ()):  # with parameters Singular clears denominators, as std does
+        from .standard import normalize
+        return normalize(h)
+    return h
 
 
 @command("lcm", lib="general.lib")
@@ -155,7 +159,8 @@ def coef(f: Poly, vs: Poly) -> Matrix:
         key = tuple(e[i] if i in idx else 0 for i in range(len(e)))
         rest = tuple(0 if i in idx else e[i] for i in range(len(e)))
         groups.setdefault(key, {})[rest] = c
-    keys = sorted(groups, key=lambda k: (sum(k), k), reverse=True)  # by degree, whatever the ordering
+    # as Singular: largest first in a global ordering, smallest first in a local or mixed one
+    keys = sorted(groups, key=ring.order.key, reverse=ring.order.is_global)
     top = [ring.monomial(k) for k in keys]
     return Matrix(ring, 2, len(keys), top + [Poly(ring, groups[k]) for k in keys])
 

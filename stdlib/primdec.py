@@ -139,6 +139,45 @@ def primdec_sy(I: Ideal) -> List:
     return _primaries("primdecSY", I)
 
 
+#: The options of primdec.lib's decompositions: they choose among algorithms, not the result.
+_OPTIONS = {"minAssGTZ": ({0, 1}, {"facstd", "noFacstd", "GTZ", "SL"}), "primdecGTZ": (set(), {"GTZ", "SL"}),
+            "primdecSY": ({0, 1, 2, 3}, set()), "minAssChar": ({0, 1, 2, 3}, set())}
+
+
+def _options(cmd: str, opts: tuple) -> None:
+    ints, words = _OPTIONS[cmd]
+    for o in opts:
+        if o == "global":
+            raise MechRuntimeError(f'{cmd}(I, "global"): the decomposition in the global ring is not supported')
+        if not ((isinstance(o, int) and o in ints) or (isinstance(o, str) and o in words)):
+            allowed = ", ".join([str(i) for i in sorted(ints)] + [f'"{w}"' for w in sorted(words)])
+            raise MechRuntimeError(f"{cmd}: unknown option {o!r} (options: {allowed})")
+
+
+@command("minAssGTZ", lib="primdec.lib")
+def min_ass_gtz_options(I: Ideal, *opts: Any) -> List:
+    _options("minAssGTZ", opts)
+    return _primes("minAssGTZ", I)
+
+
+@command("minAssChar", lib="primdec.lib")
+def min_ass_char_options(I: Ideal, c: int) -> List:
+    _options("minAssChar", (c,))
+    return _primes("minAssChar", I)
+
+
+@command("primdecGTZ", lib="primdec.lib")
+def primdec_gtz_options(I: Ideal, *opts: Any) -> List:
+    _options("primdecGTZ", opts)
+    return _primaries("primdecGTZ", I)
+
+
+@command("primdecSY", lib="primdec.lib")
+def primdec_sy_options(I: Ideal, c: int) -> List:
+    _options("primdecSY", (c,))
+    return _primaries("primdecSY", I)
+
+
 @command("equidim", lib="primdec.lib")
 def equidim(I: Ideal) -> List:
     """equidim(I): equidimensional ideals intersecting to I, by increasing dimension; the last
@@ -172,3 +211,18 @@ def equi_radical(I: Ideal) -> Ideal:
     """
     _global(I, "equiRadical")
     return _ideal(I.ring, _run("equiRadical", P.equi_radical, I))
+
+
+@command("idealsEqual", lib="primdec.lib")
+def ideals_equal(I: Ideal, J: Ideal) -> int:
+    """idealsEqual(I, J): 1 if the ideals are equal, else 0 (a global ordering).
+
+    Example:
+      LIB "primdec.lib";
+      ring r = 0,(x,y),dp;
+      idealsEqual(ideal(x, x+y), ideal(x, y));
+      → 1
+    """
+    _global(I, "idealsEqual")
+    from ..kernel.ideals import ideals_equal as equal
+    return int(equal(I.nonzero(), J.nonzero(), ring=I.ring))

@@ -200,3 +200,30 @@ def fetch(ctx, ring_node: A.Expr, obj_node: A.Expr) -> Any:
     _, v = _in_ring(ctx, ring_node, obj_node, "fetch")
     target = ctx.basering().poly
     return map_value(v, [], target, lambda polys, source: fetch_polys(polys, source, target))
+
+
+@command("pardeg")
+def pardeg(n: Number) -> int:
+    """pardeg(n): the degree of the number n in the parameters (of its numerator; -1 for 0).
+
+    Example:
+      ring r = (0,a,b),x,dp;
+      pardeg(a2b+a);
+      → 3
+    """
+    return _pardeg(n.c)
+
+
+@command("pardeg")
+def pardeg_poly(p: Poly) -> int:
+    if not p.is_constant():
+        raise MechRuntimeError("pardeg takes a number")
+    return _pardeg(p.lc() if not p.is_zero() else 0)
+
+
+def _pardeg(c: Any) -> int:
+    """The total degree of the coefficient's numerator in the parameters (-1 for 0)."""
+    if c == 0:
+        return -1
+    num = getattr(c, "num", None)
+    return 0 if num is None else max(sum(e) for e in num.to_dict())

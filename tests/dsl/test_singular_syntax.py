@@ -1,0 +1,30 @@
+"""Singular's syntax and assignment corners (issue 21): ``return(x)`` closing a block without ``;``,
+an ``else`` without ``if`` (skipped), several values into a list entry or a def."""
+from __future__ import annotations
+
+from tests.util import error, run
+
+
+def test_return_without_semicolon() -> None:
+    assert run("proc f(){ if(1) { return(1) } return(0) }\nf();\nproc g(){ return(2) }\ng();").split() == ["1", "2"]
+
+
+def test_dangling_else_is_skipped() -> None:
+    assert run('if (0) {1;}\nint i;\nelse\n{ 5; }\n"done";').split() == ["done"]
+
+
+def test_several_values_into_a_list_entry() -> None:
+    out = run("ring r; list L = ideal(x); L[1] = L[1], L[1]; L;")
+    assert out.split() == ["[1]:", "_[1]=x", "_[2]=x"]
+    assert "several values" in str(error("list L = 1, 2; L[1] = 3, 4;"))
+    assert "several values" in str(error("list L; L[1] = 1, 2;"))
+    assert "one value" in str(error("def d = 1, 2;"))
+
+
+def test_matrix_resize_needs_positive_sizes() -> None:
+    assert "positive" in str(error("ring r; matrix A[1][1] = 8; matrix(A, 1, 0);"))
+
+
+def test_map_assignment_and_entries() -> None:
+    src = "ring R=0,(x,y),dp; ring S=0,(a,b),dp; map phi=R,a,b; phi=R,a2,3; phi(x+y); phi[2]=b2; phi(x+y);"
+    assert run(src).split() == ["a2+3", "a2+b2"]
