@@ -396,7 +396,7 @@ def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
     if sp.point is None:
         _algebraic_local(a, sp, variety)
     elif not a.decomposed:
-        sp.kind = "singular point (local components not computed: quick analysis)"
+        sp.kind = _no_components(a)
         sp.tangent_cone = tangent_cone_at(variety, sp.point)
     else:
         info = classify_point(variety, sp.point, _minimal_modes(a))
@@ -412,12 +412,18 @@ def _algebraic_local(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> Non
     primes of J over Q) as the starting point of the local components over K."""
     pt = sp.algebraic = primitive_element(sp.prime, a.ring)
     if not a.decomposed:
-        sp.kind = "singular point (local components not computed: quick analysis)"
+        sp.kind = _no_components(a)
         sp.tangent_cone = tangent_cone_over(centre_at(variety, pt), pt)
         return
     info = classify_algebraic_point(variety, pt, _minimal_modes(a))
     sp.kind, sp.tangent_cone, sp.local_components = info.kind, info.tangent_cone, info.components
     sp.transition = _transition(info.components, pt.ring, lambda c: tangent_cone_over(c, pt))
+
+
+def _no_components(a: Analysis) -> str:
+    why = "the motion modes were not found" if any(u.startswith("motion modes") for u in a.unfinished) \
+        else "quick analysis"
+    return f"singular point (local components not computed: {why})"
 
 
 def _minimal_modes(a: Analysis) -> list[list[Poly]]:

@@ -158,3 +158,19 @@ def test_six_bars_mode_count_against_singular(mechanism):
     image = _image(mechanism)
     assert nums[:2] == [1, image.degree]
     assert sorted(nums[2:]) == sorted(g.total_degree() for g in image.factors) == DEGREES[mechanism]
+
+
+def test_proved_mode_count_is_reported_when_the_ideals_run_out(monkeypatch):
+    """With budgets too short for minAssGTZ and for the saturations, the report still gives the
+    number of modes and their degrees that the projection proved, and the singular configurations."""
+    import dataclasses
+    from mech.stdlib import modes
+    monkeypatch.setattr(modes, "SPLIT_BUDGET", 0.2)
+    monkeypatch.setattr(modes, "STRATEGIES", [dataclasses.replace(s, budget=0.2) if s.name == "minimal primes" else s
+                                              for s in modes.STRATEGIES])
+    a = analyze(parse_mechanism(WATT_I_B))
+    assert a.mode_degrees == [6, 10] and not a.modes_found and len(a.singular) == 2
+    text = report_text(a)
+    assert "motion modes: 2, curves of degrees 6, 10 (proved by a projection" in text
+    assert "local components not computed: the motion modes were not found" in text
+    assert report_data(a)["motion_mode_degrees"] == [6, 10]
