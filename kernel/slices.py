@@ -12,17 +12,19 @@ affine points, so none at infinity); a component defined over QQ is a union of o
 * :func:`slice_orbits`: the degrees of the orbits.  One orbit of ``D`` points proves ``J`` prime:
   the orbit lies in every component, so every component has degree ``D``, and the degrees add up
   to ``D`` (a proof, not a probabilistic answer; several orbits prove nothing alone).
-* :func:`curve_primes` (``d = 1``): the eliminant of the projection ``(L_1, L)`` to the plane
+* :func:`curve_image` (``d = 1``): the eliminant of the projection ``(L_1, L)`` to the plane
   without elimination.  ``G(y, t) = χ_y(t)``, the characteristic polynomial on the slice
   ``L_1 = y``, is monic of degree ``D`` in ``t`` with coefficients of degree ``<= D`` in ``y``
   (no point escapes to infinity), found by interpolation at ``D + 1`` values; ``G(L_1, L)``
   vanishes on ``V``, so on ``J`` (radical), and its zero set is the image.  Squarefree ``G`` of
   total degree ``D = deg V`` is the certificate of :mod:`.projection`: ``J`` has exactly as
-  many minimal primes as ``G`` has irreducible factors, and they follow from the factors.
+  many minimal primes as ``G`` has irreducible factors, of their degrees; :func:`curve_primes`
+  computes the primes from the factors (by saturation: the costly part).
 """
 from __future__ import annotations
 
 import random
+from dataclasses import dataclass
 from typing import Sequence
 
 import flint
@@ -105,11 +107,24 @@ def _interpolate(xs: list[int], ys: list[flint.fmpq]) -> flint.fmpq_poly:
     return out
 
 
-def curve_primes(ideal: Sequence[Poly], ring: PolyRing, attempts: int = 3,
-                 seed: int = 2) -> Projection | None:
-    """The minimal primes of a radical equidimensional ``ideal`` of dimension 1 over QQ (in
-    ``ring``'s order), certified by a projection to the plane whose eliminant is interpolated
-    from slices; None when no projection of ``attempts`` passes (the caller falls back)."""
+@dataclass
+class CurveImage:
+    """A certified projection of a curve to the plane: ``forms`` (the two linear forms, in the
+    caller's ring), ``degree`` (``deg V``), the irreducible factors of the eliminant in
+    ``image_ring`` (``y1, y2``): one per minimal prime, of that prime's degree."""
+
+    forms: list[Poly]
+    degree: int
+    image_ring: PolyRing
+    factors: list[Poly]
+
+
+def curve_image(ideal: Sequence[Poly], ring: PolyRing, attempts: int = 3, seed: int = 2) -> CurveImage | None:
+    """The projection to the plane of a radical equidimensional ``ideal`` of dimension 1 over
+    QQ whose eliminant, interpolated from slices, passes the degree test (squarefree of total
+    degree ``deg V``): it proves that ``ideal`` has exactly as many minimal primes as the
+    eliminant has irreducible factors, of their degrees.  None when no projection of
+    ``attempts`` passes."""
     dp = dp_ring(ring)
     J = std(move(list(ideal), dp), dp)
     if krull_dim([g.lm() for g in J], dp.nvars) != 1:
@@ -136,6 +151,16 @@ def curve_primes(ideal: Sequence[Poly], ring: PolyRing, attempts: int = 3,
             G = Poly(image, terms)
             facs = factorize(G)[1]
             if all(k == 1 for _, k in facs) and G.total_degree() == deg:
-                forms = move([cut, form], ring)
-                return split_by_factors(ideal, ring, forms, deg, image, [g for g, _ in facs])
+                return CurveImage(move([cut, form], ring), deg, image, [g for g, _ in facs])
     return None
+
+
+def curve_primes(ideal: Sequence[Poly], ring: PolyRing, attempts: int = 3,
+                 seed: int = 2) -> Projection | None:
+    """The minimal primes of a radical equidimensional ``ideal`` of dimension 1 over QQ (in
+    ``ring``'s order), certified by :func:`curve_image` and split by its factors; None when
+    no projection of ``attempts`` passes (the caller falls back)."""
+    found = curve_image(ideal, ring, attempts, seed)
+    if found is None:
+        return None
+    return split_by_factors(ideal, ring, found.forms, found.degree, found.image_ring, found.factors)

@@ -120,6 +120,7 @@ class Analysis:
     modes_by: str = "minimal primes of J"  # how the modes were found, for the report
     modes_found: bool = True  # False: every strategy of mech.stdlib.modes ran out
     mode_bound: int | None = None  # at most this many modes (Galois orbits of a slice)
+    mode_degrees: list[int] | None = None  # the modes' degrees, proved by a projection (mech.stdlib.modes)
     equidimensional: bool = True
     embedded: list[Embedded] | None = field(default_factory=list)  # None: not computed
     fitting_size: int = 0
@@ -319,11 +320,12 @@ def singular_primes(a: Analysis) -> list[list[Poly]]:
     R, n = a.ring, a.nvars
     primes = [md.prime for md in a.modes]
     if a.radical and (a.complete_intersection or a.equidimensional):
-        return min_ass_gtz(list(a.ideal) + a.fitting, R)
+        return min_ass_gtz(list(a.ideal) + _reduced(a.fitting, a.ideal, R), R)
     parts: list[list[Poly]] = []
     for i, P in enumerate(primes):
         codim = n - dimension(P, R)
-        parts += min_ass_gtz(list(P) + fitting_ideal(std(P, R), n, codim), R)
+        basis = std(P, R)
+        parts += min_ass_gtz(list(P) + _reduced(fitting_ideal(basis, n, codim), basis, R), R)
         for Q in primes[i + 1:]:
             parts += min_ass_gtz(list(P) + list(Q), R)
     out: list[list[Poly]] = []
@@ -332,6 +334,13 @@ def singular_primes(a: Analysis) -> list[list[Poly]]:
             continue
         out.append(p)
     return [p for p in out if not any(q is not p and _contains(q, p, R) for q in out)]
+
+
+def _reduced(minors: list[Poly], ideal: list[Poly], R: PolyRing) -> list[Poly]:
+    """The minors' normal forms modulo ``ideal`` (``ideal + minors`` unchanged): the Jacobian
+    minors of a spatial loop have 10^5 terms, their normal forms 10^3 (Bricard's 6R loop)."""
+    basis = std(ideal, R)
+    return [r for g in minors if not (r := normal_form(g, basis)).is_zero()]
 
 
 def _contains(small: list[Poly], big: list[Poly], R: PolyRing) -> bool:
@@ -387,7 +396,7 @@ def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
     if sp.point is None:
         _algebraic_local(a, sp, variety)
     elif not a.decomposed:
-        sp.kind = "singular point (local components not computed: quick analysis)"
+        sp.kind = _no_components(a)
         sp.tangent_cone = tangent_cone_at(variety, sp.point)
     else:
         info = classify_point(variety, sp.point, _minimal_modes(a))
@@ -403,12 +412,18 @@ def _algebraic_local(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> Non
     primes of J over Q) as the starting point of the local components over K."""
     pt = sp.algebraic = primitive_element(sp.prime, a.ring)
     if not a.decomposed:
-        sp.kind = "singular point (local components not computed: quick analysis)"
+        sp.kind = _no_components(a)
         sp.tangent_cone = tangent_cone_over(centre_at(variety, pt), pt)
         return
     info = classify_algebraic_point(variety, pt, _minimal_modes(a))
     sp.kind, sp.tangent_cone, sp.local_components = info.kind, info.tangent_cone, info.components
     sp.transition = _transition(info.components, pt.ring, lambda c: tangent_cone_over(c, pt))
+
+
+def _no_components(a: Analysis) -> str:
+    why = "the motion modes were not found" if any(u.startswith("motion modes") for u in a.unfinished) \
+        else "quick analysis"
+    return f"singular point (local components not computed: {why})"
 
 
 def _minimal_modes(a: Analysis) -> list[list[Poly]]:

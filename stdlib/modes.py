@@ -13,7 +13,9 @@ The strategies (their proofs are in the kernel modules named):
   a projection to the plane interpolated from slices, its factors certify the primes.
 * ``sparse projection`` (radical complete intersections): the eliminant of a projection by
   sparse forms ``c_j + s_j`` (``mech.kernel.projection``).
-* ``minimal primes`` again with a long budget.
+* ``minimal primes`` again with a long budget, unless the interpolated projection has proved
+  the number of modes and their degrees (``a.mode_degrees``) but ran out while computing their
+  ideals: then the report gives that count without the ideals.
 """
 from __future__ import annotations
 
@@ -25,8 +27,8 @@ from mech.kernel import Poly
 from mech.kernel.ideals import dimension, is_subset
 from mech.kernel.primdec import min_ass_gtz, primdec_gtz
 from mech.kernel.progress import stage
-from mech.kernel.projection import project_primes
-from mech.kernel.slices import curve_primes, slice_orbits
+from mech.kernel.projection import project_primes, split_by_factors
+from mech.kernel.slices import curve_image, slice_orbits
 
 Found = list[list[Poly]]  # the minimal primes
 
@@ -61,8 +63,22 @@ def _by_min_ass(a: Any) -> Optional[Found]:
 
 
 def _by_curve(a: Any) -> Optional[Found]:
-    found = curve_primes(a.ideal, a.ring)
-    return found.primes if found else None
+    image = curve_image(a.ideal, a.ring)
+    if image is None:
+        return None
+    a.mode_degrees = sorted(g.total_degree() for g in image.factors)  # proved, even if the split runs out
+    if len(image.factors) == 1:
+        return [list(a.ideal)]  # one factor: J is prime
+    ok, found = within(SPLIT_BUDGET, split_by_factors, a.ideal, a.ring, image.forms, image.degree,
+                       image.image_ring, image.factors, cpu=True)
+    if not ok:
+        a.notes.append(f"strategy interpolated projection: proved {len(image.factors)} modes, their ideals "
+                       f"(saturations) ran out of the {SPLIT_BUDGET:g} s budget")
+    return found.primes if ok else None
+
+
+#: CPU seconds for the ideals of the modes once a projection has proved their number.
+SPLIT_BUDGET = 15.0
 
 
 def _by_projection(a: Any) -> Optional[Found]:
@@ -79,7 +95,7 @@ STRATEGIES: list[Strategy] = [
              "minimal primes of J, certified by a projection interpolated from slices"),
     Strategy("sparse projection", 30, lambda a: _radical_ci(a) and a.dim > 1, _by_projection,
              "minimal primes of J, certified by a birational projection"),
-    Strategy("minimal primes", 300, lambda a: True, _by_min_ass, "minimal primes of J"),
+    Strategy("minimal primes", 300, lambda a: a.mode_degrees is None, _by_min_ass, "minimal primes of J"),
 ]
 
 
@@ -89,6 +105,8 @@ def motion_modes(a: Any) -> Optional[Found]:
     chain = [s for s in STRATEGIES if s.applies(a)]
     with stage("decomposition", total=len(chain)) as st:
         for k, s in enumerate(chain):
+            if not s.applies(a):  # an earlier strategy settled what this one would find
+                continue
             st.step(k, f"strategy {s.name} (budget {s.budget:g} s)")
             ok, found = within(s.budget, s.run, a, cpu=True)
             if ok and found is not None:

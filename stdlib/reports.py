@@ -81,6 +81,8 @@ def report_data(a: Analysis) -> dict:
         if a.mobility == 0 and a.radical:
             d["complex_configurations"] = configuration_count(a)
         d["motion_modes_by"] = a.modes_by if a.modes_found and a.decomposed else None
+        if a.mode_degrees and not a.modes_found:
+            d["motion_mode_degrees"] = a.mode_degrees  # the count and degrees proved, the ideals not computed
         d["equidimensional"] = a.equidimensional
         d["embedded_components"] = None if a.embedded is None else [
             {"prime": ps(dp_basis(e.prime)), "primary": ps(dp_basis(e.primary)), "dimension": e.dim,
@@ -170,7 +172,13 @@ def _modes_lines(a: Analysis) -> list[str]:
         bound = f" (at most {a.mode_bound}: a slice meets V(J) in {a.mode_bound} Galois orbits)" \
             if a.mode_bound else ""
         why = "" if any("time limit" in u for u in a.unfinished) else ", no strategy finished within its budget"
-        out.append(f"motion modes: not determined{why}{bound}")
+        if a.mode_degrees:
+            k, degs = len(a.mode_degrees), ", ".join(map(str, a.mode_degrees))
+            out.append(f"motion modes: {k}, curves of degrees {degs} (proved by a projection to the plane whose "
+                       f"eliminant factors into irreducible curves of these degrees, adding up to deg V = "
+                       f"{sum(a.mode_degrees)}); their ideals not computed{why}")
+        else:
+            out.append(f"motion modes: not determined{why}{bound}")
         if a.radical and a.complete_intersection:
             out.append('  (analyze(m, "text", "quick") gives the singular configurations without the modes)')
     elif not a.decomposed:

@@ -111,3 +111,66 @@ def test_stage_benchmark_measures_the_stages():
         got = bench.singular_stages(script, 120)
         assert set(got) == {"dimension", "decomposition", "singular configurations"}
         assert all(v is not None for v in got.values())
+
+
+
+WATT_I_B = "ground O A 4; body O B 3 0 E 1 2; body B C 4 0 F 1 2; bar C A 3; bar E H 2; bar H F 3"
+STEPHENSON = "ground O A 1; fix G 2 0; bar O B 1; body B C 1 0 E 0 1; bar C A 1; bar E F 1; bar F G 1"
+# their J written by hand, in (c1,s1,...,c5,s5).  Watt I: B = 3(c1,s1), C = B + 4(c2,s2) = A - 3(c3,s3),
+# E = R1(1,2), F = B + R2(1,2), H = E + 2(c4,s4) = F - 3(c5,s5).  Stephenson: C = (c1,s1) + (c2,s2) =
+# A - (c3,s3), E = (c1,s1) + R2(0,1), F = E + (c4,s4) = G - (c5,s5).
+HAND_J = {
+    WATT_I_B: "3*c1+4*c2+3*c3-4, 3*s1+4*s2+3*s3, c1-2*s1+2*c4+3*c5-(3*c1+c2-2*s2), s1+2*c1+2*s4+3*s5-(3*s1+s2+2*c2)",
+    STEPHENSON: "c1+c2+c3-1, s1+s2+s3, c1-s2+c4+c5-2, s1+c2+s4+s5",
+}
+CIRCLES = ", c1^2+s1^2-1, c2^2+s2^2-1, c3^2+s3^2-1, c4^2+s4^2-1, c5^2+s5^2-1"
+SLICE = "3*c1-7*s1+2*c2+5*s2-4*c3+9*s3-3*c4+8*s4+5*c5-6*s5-2"  # a random affine hyperplane, not one of mech's
+DEGREES = {WATT_I_B: [6, 10], STEPHENSON: [2, 2, 2, 6, 6]}
+
+
+def _image(mechanism: str):
+    from mech.kernel.slices import curve_image
+    from mech.stdlib.analysis import constraint_ideal
+    R, J, _ = constraint_ideal(parse_mechanism(mechanism))
+    return curve_image(J, R)
+
+
+@pytest.mark.parametrize("mechanism", [WATT_I_B, STEPHENSON])
+def test_six_bars_mode_count_by_projection(mechanism):
+    """The projection interpolated from slices proves the number of modes and their degrees."""
+    image = _image(mechanism)
+    assert image.degree == sum(DEGREES[mechanism])
+    assert sorted(g.total_degree() for g in image.factors) == DEGREES[mechanism]
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(not SINGULAR, reason="Singular not installed")
+@pytest.mark.parametrize("mechanism", [WATT_I_B, STEPHENSON])
+def test_six_bars_mode_count_against_singular(mechanism):
+    """Degree bookkeeping in Singular on a hand-written J: dimension 1, deg V (vdim of a random
+    linear slice), and the slice's minimal primes (its Galois orbits: for a generic slice one per
+    mode, of the mode's degree) against the degrees of mech's modes."""
+    out = run_singular('LIB "primdec.lib";\nring r = 0, (c1,s1,c2,s2,c3,s3,c4,s4,c5,s5), dp;\nideal J = '
+                       + HAND_J[mechanism] + CIRCLES + f";\ndim(std(J)); ideal S = std(J + ({SLICE})); vdim(S);\n"
+                       'list L = minAssGTZ(S); int i; for (i = 1; i <= size(L); i++) { vdim(std(L[i])); }',
+                       timeout=300)
+    nums = [int(x) for x in out.split()]
+    image = _image(mechanism)
+    assert nums[:2] == [1, image.degree]
+    assert sorted(nums[2:]) == sorted(g.total_degree() for g in image.factors) == DEGREES[mechanism]
+
+
+def test_proved_mode_count_is_reported_when_the_ideals_run_out(monkeypatch):
+    """With budgets too short for minAssGTZ and for the saturations, the report still gives the
+    number of modes and their degrees that the projection proved, and the singular configurations."""
+    import dataclasses
+    from mech.stdlib import modes
+    monkeypatch.setattr(modes, "SPLIT_BUDGET", 0.2)
+    monkeypatch.setattr(modes, "STRATEGIES", [dataclasses.replace(s, budget=0.2) if s.name == "minimal primes" else s
+                                              for s in modes.STRATEGIES])
+    a = analyze(parse_mechanism(WATT_I_B))
+    assert a.mode_degrees == [6, 10] and not a.modes_found and len(a.singular) == 2
+    text = report_text(a)
+    assert "motion modes: 2, curves of degrees 6, 10 (proved by a projection" in text
+    assert "local components not computed: the motion modes were not found" in text
+    assert report_data(a)["motion_mode_degrees"] == [6, 10]
