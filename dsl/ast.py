@@ -165,6 +165,14 @@ class While(Stmt):
 
 
 @dataclass(eq=False)
+class Moved(Stmt):
+    """A one-line statement whose tree was built for the same text ``dline`` lines earlier and is
+    shared (long scripts repeat statements; see :mod:`~mech.dsl.fastparse`); ``pos`` is its own."""
+    stmt: Stmt
+    dline: int
+
+
+@dataclass(eq=False)
 class Break(Stmt):
     pass
 

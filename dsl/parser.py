@@ -43,14 +43,16 @@ def _parser_for(plugin_types: tuple[str, ...]) -> Lark:
     return Lark(grammar, parser="lalr", propagate_positions=True, cache=True, maybe_placeholders=True)
 
 
-def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 1)) -> A.Program:
+def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 1),
+          shared: bool = False) -> A.Program:
     """The program tree of ``text``; raises :class:`MechSyntaxError` located in ``source``
     (``at``: the line and column where ``text`` starts there).  Simple statements take the fast
-    path (:mod:`~mech.dsl.fastparse`), the others and errors Lark's parser."""
+    path (:mod:`~mech.dsl.fastparse`; ``shared``: statements parsed before may share their trees,
+    for running), the others and errors Lark's parser."""
     source = source or Source("<string>", text)
     parser = _parser()
     program = parse_fast(text, at, parser.terminals, _type_words(parser) + type_names(),
-                         lambda piece, where: _parse_lark(piece, source, where))
+                         lambda piece, where: _parse_lark(piece, source, where), shared)
     return program if program is not None else _parse_lark(text, source, at)
 
 
@@ -107,7 +109,7 @@ def _piece(text: str, start: int, end: int, line: int, before: int, source: Sour
     starts at ``before``).  After a syntax error: the statements before the failing one, one by
     one, then its error, found with the statement before it (the messages look back)."""
     try:
-        program = parse(text[start:end], source, _at(text, start, start, line))
+        program = parse(text[start:end], source, _at(text, start, start, line), True)
     except MechSyntaxError:
         pass
     else:
@@ -117,7 +119,7 @@ def _piece(text: str, start: int, end: int, line: int, before: int, source: Sour
     a = 0
     for b in [*statement_ends(piece), len(piece)]:
         try:
-            program = parse(piece[a:b], source, _at(text, start + a, start, line))
+            program = parse(piece[a:b], source, _at(text, start + a, start, line), True)
         except MechSyntaxError as err:
             parse(text[before:start + b], source, _at(text, before, start, line))
             raise err
