@@ -6,11 +6,11 @@ interpreter uses for ``file:line:col`` errors and for underlining a call.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import NamedTuple, Optional
 
 
-@dataclass(frozen=True)
-class Pos:
+class Pos(NamedTuple):
+    """Where a node is (a named tuple: cheap to make, immutable)."""
     line: int
     col: int
     end_line: int

@@ -358,13 +358,15 @@ def _words(terminals: tuple, types: tuple) -> tuple[frozenset, frozenset]:
 
 
 def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str, ...],
-               lark_parse: Callable[[str, tuple[int, int]], A.Program], shared: bool = False) -> Optional[A.Program]:
+               lark_parse: Callable[[str, tuple[int, int]], A.Program], shared: bool = False,
+               ends: Optional[list[int]] = None) -> Optional[A.Program]:
     """The program tree of ``text`` (which starts at line and column ``at`` of its source), or None
     when a statement does not parse (the caller then parses all of ``text`` with Lark).
     ``terminals``: the grammar's (for its keywords); ``types``: the type names; ``lark_parse``: Lark's
     parse of a run of other statements starting at a given line and column.  With ``shared``, a
     one-line statement whose text was parsed before at the same column reuses that tree (as an
-    :class:`~mech.dsl.ast.Moved` when it was on another line): for running, not for inspecting."""
+    :class:`~mech.dsl.ast.Moved` when it was on another line): for running, not for inspecting.
+    ``ends``: the statements' ends in ``text`` when the caller has found them."""
     keywords, type_set = _words(tuple((t.pattern.type, t.pattern.value) for t in terminals), types)
     cache = _SHARED.setdefault((keywords, type_set), {}) if shared and MAX_SHARED else None
     dline, dcol = at[0] - 1, at[1] - 1
@@ -393,7 +395,7 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
             _extend(span, program.pos)
 
     try:
-        for end in statement_ends(text):
+        for end in statement_ends(text) if ends is None else ends:
             key = None
             if cache is not None:
                 start = _SKIP.match(text, prev, end).end()
@@ -407,12 +409,16 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
                     key = (piece, col)
                     hit = cache.get(key)
                     if hit is not None:
-                        flush(prev)
+                        if pending >= 0:
+                            flush(prev)
                         here += dline
-                        stmt = hit if hit.pos.line == here else A.Moved(
-                            hit, here - hit.pos.line, pos=A.Pos(here, hit.pos.col, here, hit.pos.end_col))
-                        body.append(stmt)
-                        _extend(span, A.Pos(here, col, here, col + len(piece)))
+                        hpos = hit.pos
+                        body.append(hit if hpos.line == here else A.Moved(
+                            hit, here - hpos.line, pos=A.Pos(here, hpos.col, here, hpos.end_col)))
+                        if span:
+                            span[1] = (here, col + len(piece))
+                        else:
+                            span.extend([(here, col), (here, col + len(piece))])
                         line, prev = here - dline, end
                         if nl:
                             line_start = text.rfind("\n", 0, start) + 1
