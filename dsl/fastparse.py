@@ -403,7 +403,8 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
                 if "\n" not in piece:
                     nl = text.count("\n", prev, start)
                     here = line + nl
-                    col = start - (text.rfind("\n", 0, start) + 1 if nl else line_start) + 1
+                    starts = text.rfind("\n", prev, start) + 1 if nl else line_start  # its line's start
+                    col = start - starts + 1
                     if here == 1:
                         col += dcol
                     key = (piece, col)
@@ -419,9 +420,7 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
                             span[1] = (here, col + len(piece))
                         else:
                             span.extend([(here, col), (here, col + len(piece))])
-                        line, prev = here - dline, end
-                        if nl:
-                            line_start = text.rfind("\n", 0, start) + 1
+                        line, prev, line_start = here - dline, end, starts
                         continue
             try:
                 toks = _tokens(text, prev, end, line, line_start, keywords, at)
