@@ -8,6 +8,7 @@ faster than Lark's LALR parser with positions propagated, on simple statements.
 """
 from __future__ import annotations
 
+import itertools
 import re
 from functools import lru_cache
 from typing import Any, Callable, Optional
@@ -332,7 +333,7 @@ _CONTROL = {"if": _Parser.if_stmt, "while": _Parser.while_stmt, "for": _Parser.f
             "continue": _Parser.jump}
 _EOF = _Tok("$", "", 0, 0, 0, 0)
 _SKIP = re.compile(r"(?:[ \t\f\r\n]+|//[^\n]*|/\*.*?\*/)*+", re.S)  # blanks and comments before a statement
-MAX_SHARED = 20000  # statement trees kept for reuse (the table is emptied when full)
+MAX_SHARED = 4096  # statement trees kept for reuse (about 2 KB each)
 _SHARED: dict[tuple, dict[tuple[str, int], A.Stmt]] = {}
 
 
@@ -429,8 +430,9 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
                 if parser.i != len(toks) - 1:
                     raise _Fail
                 if key is not None:
-                    if len(cache) >= MAX_SHARED:
-                        cache.clear()
+                    if len(cache) >= MAX_SHARED:  # the older half goes (the frequent come back at once)
+                        for old in list(itertools.islice(cache, MAX_SHARED // 2)):
+                            del cache[old]
                     cache[key] = stmt
             except (_Fail, RecursionError):
                 stmt = None

@@ -152,3 +152,14 @@ def test_shared_trees_are_reused():
     program = parse("int k;\nk = k + 1;\nk = k + 1;\n", shared=True)
     a, b = program.body[1], program.body[2]
     assert isinstance(b, A.Moved) and b.stmt is a and b.dline == 1 and b.pos.line == 3
+
+
+def test_shared_table_when_full_keeps_the_newer_half(monkeypatch):
+    import mech.dsl.fastparse as fp
+    monkeypatch.setattr(fp, "MAX_SHARED", 4)
+    fp._SHARED.clear()
+    text = "int k;\n" + "".join(f"k = k + {i % 7};\nk;\n" for i in range(30))
+    small = run_script(text)
+    assert all(len(table) <= 4 for table in fp._SHARED.values())
+    monkeypatch.setattr(fp, "MAX_SHARED", 0)
+    assert small == run_script(text) and small.count("\n") == 30
