@@ -1,12 +1,16 @@
-"""Long scripts of ordinary statements: statements per second parsed and run, at several sizes
-(the time must grow linearly with the size; issue 23's 50 MB script).
+"""Long scripts of ordinary statements: time per MB and statements per second, parsed and run, at
+several sizes (the time must grow linearly with the size; issue 23's 50 MB script).
 
-    python benchmarks/bigscript.py              # 1, 4 and 16 MB
-    python benchmarks/bigscript.py 50           # one size in MB
+    python benchmarks/bigscript.py                     # 1, 5, 10 and 50 MB
+    python benchmarks/bigscript.py 1 5                 # these sizes (MB)
+    python benchmarks/bigscript.py --write FILE 50     # only write a 50 MB script to FILE
+    python benchmarks/bigscript.py --loop              # statements/s of a loop (running only)
 
-Each script repeats a mix of declarations, assignments, arithmetic, ideals, an ``if`` and a ``for``
-with changing numbers; it runs in one process (``mech FILE``), output to /dev/null; the table shows
-the process's CPU time (start-up included) and the statements per second.
+Each script repeats a mix of assignments of ints, numbers and polynomials, arithmetic, ideals,
+matrix entries, strings printed into a variable (``s = string(f);``), printed values, an ``if`` and
+a ``for``, with changing numbers, and declares its ring again every 500 statements; it runs in one
+process (``mech FILE``), output to /dev/null; the table shows the process's CPU time (start-up
+included), seconds per MB and statements per second.
 """
 from __future__ import annotations
 
@@ -15,42 +19,72 @@ import resource
 import subprocess
 import sys
 import tempfile
+import time
 from pathlib import Path
 
-LINES = ["k = k + {a};", "f = {a}x2y-{b}/{c}z+y^{d};", "I = f, x*y-z, {a};", "M[1,2] = f*x;",
-         "if (k > {a}) {{ j = {b}; }} else {{ j = j + 1; }}", "s = \"{a}{b}\";", "n = n*{b}/{c};",
-         "for (i = 1; i <= 2; i++) {{ j = j + i; }}", "f;"]
+RING = "ring r = 0,(x,y,z),dp; poly f, g; ideal I; matrix M[2][2]; number n = 1;\n"
+HEAD = "int k, i, j; string s;\n" + RING
+LINES = ["k = k + {a};", "j = k * {b} - {a};", "f = {a}x2y-{b}/{c}z+y^{d};", "g = f*x + {a};",
+         "f = f - g*{b};", "I = f, x*y-z, {a};", "M[1,2] = f*x;", "n = n*{b}/{c};", "s = string(f);",
+         "s = string(k, \",\", n);", "if (k > {a}) {{ j = {b}; }} else {{ j = j + 1; }}",
+         "for (i = 1; i <= 2; i++) {{ j = j + i; }}", "f;", "k;"]
+RING_EVERY = 500  # statements between two ring declarations
 
 
 def script(megabytes: float, path: Path) -> int:
     """Write a script of about ``megabytes`` MB; its number of statements."""
     rng = random.Random(megabytes)
-    head = "ring r = 0,(x,y,z),dp; poly f; ideal I; int k, i, j; number n = 1; string s; matrix M[2][2];\n"
-    size, count = len(head), 7
+    size, count = len(HEAD), 9
     with path.open("w") as fh:
-        fh.write(head)
+        fh.write(HEAD)
         while size < megabytes * 2**20:
-            line = rng.choice(LINES).format(a=rng.randint(1, 99), b=rng.randint(1, 9), c=rng.randint(2, 9),
-                                            d=rng.randint(1, 5)) + "\n"
+            if count % RING_EVERY == 0:
+                line = RING
+                count += 6
+            else:
+                line = rng.choice(LINES).format(a=rng.randint(1, 99), b=rng.randint(1, 9),
+                                                c=rng.randint(2, 9), d=rng.randint(1, 5)) + "\n"
+                count += 1
             fh.write(line)
             size += len(line)
-            count += 1
     return count
 
 
+def run(path: Path) -> float:
+    """CPU seconds of ``mech FILE`` (output dropped)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run([sys.executable, "-m", "mech", "--no-warn", str(path)], stdout=subprocess.DEVNULL, check=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+
+
+def loop(count: int = 200000) -> None:
+    """Statements per second of a loop of simple statements (parsed once, run ``count`` times)."""
+    from mech import Session
+    s = Session()
+    s.execute("int k, j; int i;")
+    t = time.process_time()
+    s.execute(f"for (i = 1; i <= {count}; i++) {{ k = k + i; j = k - 2*i; }}")
+    cpu = time.process_time() - t
+    print(f"loop: {3 * count} statements in {cpu:.2f} s CPU: {3 * count / cpu:.0f} statements/s")
+
+
 def main() -> None:
-    sizes = [float(a) for a in sys.argv[1:]] or [1, 4, 16]
-    print("| script | statements | CPU time | statements/s |\n|---|---|---|---|")
+    args = sys.argv[1:]
+    if args[:1] == ["--write"]:
+        print(script(float(args[2]), Path(args[1])), "statements")
+        return
+    if args[:1] == ["--loop"]:
+        loop()
+        return
+    sizes = [float(a) for a in args] or [1, 5, 10, 50]
+    print("| script | statements | CPU time | s/MB | statements/s |\n|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for mb in sizes:
             path = Path(tmp) / f"big{mb:g}.mech"
             n = script(mb, path)
-            before = resource.getrusage(resource.RUSAGE_CHILDREN)
-            subprocess.run([sys.executable, "-m", "mech", "--no-warn", str(path)], stdout=subprocess.DEVNULL,
-                           check=True)
-            after = resource.getrusage(resource.RUSAGE_CHILDREN)
-            cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
-            print(f"| {mb:g} MB | {n} | {cpu:.1f} s | {n / cpu:.0f} |")
+            cpu = run(path)
+            print(f"| {mb:g} MB | {n} | {cpu:.1f} s | {cpu / mb:.2f} | {n / cpu:.0f} |", flush=True)
 
 
 if __name__ == "__main__":

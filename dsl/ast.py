@@ -6,11 +6,11 @@ interpreter uses for ``file:line:col`` errors and for underlining a call.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import NamedTuple, Optional
 
 
-@dataclass(frozen=True)
-class Pos:
+class Pos(NamedTuple):
+    """Where a node is (a named tuple: cheap to make, immutable)."""
     line: int
     col: int
     end_line: int
@@ -162,6 +162,14 @@ class For(Stmt):
 class While(Stmt):
     cond: Expr
     body: list[Stmt]
+
+
+@dataclass(eq=False)
+class Moved(Stmt):
+    """A one-line statement whose tree was built for the same text ``dline`` lines earlier and is
+    shared (long scripts repeat statements; see :mod:`~mech.dsl.fastparse`); ``pos`` is its own."""
+    stmt: Stmt
+    dline: int
 
 
 @dataclass(eq=False)

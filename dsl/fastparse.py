@@ -8,6 +8,7 @@ faster than Lark's LALR parser with positions propagated, on simple statements.
 """
 from __future__ import annotations
 
+import itertools
 import re
 from functools import lru_cache
 from typing import Any, Callable, Optional
@@ -331,6 +332,9 @@ class _Parser:
 _CONTROL = {"if": _Parser.if_stmt, "while": _Parser.while_stmt, "for": _Parser.for_stmt, "break": _Parser.jump,
             "continue": _Parser.jump}
 _EOF = _Tok("$", "", 0, 0, 0, 0)
+_SKIP = re.compile(r"(?:[ \t\f\r\n]+|//[^\n]*|/\*.*?\*/)*+", re.S)  # blanks and comments before a statement
+MAX_SHARED = 4096  # statement trees kept for reuse (about 2 KB each)
+_SHARED: dict[tuple, dict[tuple[str, int], A.Stmt]] = {}
 
 
 def _int(digits: str) -> int:
@@ -355,12 +359,17 @@ def _words(terminals: tuple, types: tuple) -> tuple[frozenset, frozenset]:
 
 
 def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str, ...],
-               lark_parse: Callable[[str, tuple[int, int]], A.Program]) -> Optional[A.Program]:
+               lark_parse: Callable[[str, tuple[int, int]], A.Program], shared: bool = False,
+               ends: Optional[list[int]] = None) -> Optional[A.Program]:
     """The program tree of ``text`` (which starts at line and column ``at`` of its source), or None
     when a statement does not parse (the caller then parses all of ``text`` with Lark).
     ``terminals``: the grammar's (for its keywords); ``types``: the type names; ``lark_parse``: Lark's
-    parse of a run of other statements starting at a given line and column."""
+    parse of a run of other statements starting at a given line and column.  With ``shared``, a
+    one-line statement whose text was parsed before at the same column reuses that tree (as an
+    :class:`~mech.dsl.ast.Moved` when it was on another line): for running, not for inspecting.
+    ``ends``: the statements' ends in ``text`` when the caller has found them."""
     keywords, type_set = _words(tuple((t.pattern.type, t.pattern.value) for t in terminals), types)
+    cache = _SHARED.setdefault((keywords, type_set), {}) if shared and MAX_SHARED else None
     dline, dcol = at[0] - 1, at[1] - 1
 
     def shift(line: int, col: int) -> tuple[int, int]:
@@ -387,13 +396,44 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
             _extend(span, program.pos)
 
     try:
-        for end in statement_ends(text):
+        for end in statement_ends(text) if ends is None else ends:
+            key = None
+            if cache is not None:
+                start = _SKIP.match(text, prev, end).end()
+                piece = text[start:end]
+                if "\n" not in piece:
+                    nl = text.count("\n", prev, start)
+                    here = line + nl
+                    starts = text.rfind("\n", prev, start) + 1 if nl else line_start  # its line's start
+                    col = start - starts + 1
+                    if here == 1:
+                        col += dcol
+                    key = (piece, col)
+                    hit = cache.get(key)
+                    if hit is not None:
+                        if pending >= 0:
+                            flush(prev)
+                        here += dline
+                        hpos = hit.pos
+                        body.append(hit if hpos.line == here else A.Moved(
+                            hit, here - hpos.line, pos=A.Pos(here, hpos.col, here, hpos.end_col)))
+                        if span:
+                            span[1] = (here, col + len(piece))
+                        else:
+                            span.extend([(here, col), (here, col + len(piece))])
+                        line, prev, line_start = here - dline, end, starts
+                        continue
             try:
                 toks = _tokens(text, prev, end, line, line_start, keywords, at)
                 parser = _Parser(toks, type_set)
                 stmt, last = parser.statement()
                 if parser.i != len(toks) - 1:
                     raise _Fail
+                if key is not None:
+                    if len(cache) >= MAX_SHARED:  # the older half goes (the frequent come back at once)
+                        for old in list(itertools.islice(cache, MAX_SHARED // 2)):
+                            del cache[old]
+                    cache[key] = stmt
             except (_Fail, RecursionError):
                 stmt = None
                 if pending < 0:

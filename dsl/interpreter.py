@@ -14,7 +14,7 @@ import time
 import weakref
 from typing import Any, Callable, Optional, TextIO
 
-from ..kernel.engines import AUTO, using_engine
+from ..kernel.engines import AUTO, default_engine, using_engine
 from . import ast as A
 from . import registry
 from .assignment import Assignment
@@ -60,6 +60,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self._loading_lib = ""  # the library whose source runs (its procedures belong to it)
         self.source = Source("<string>", "")
         self.stmt: Optional[A.Stmt] = None
+        self.line_shift = 0  # lines from self.stmt's position to the running statement's (A.Moved)
         self.last: Any = NONE
         self.argnames: list[str] = []
         self.ticks_per_sec = 1
@@ -73,7 +74,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
             A.Continue: self._exec_continue, A.Return: self._exec_return, A.ProcDef: self._exec_procdef,
             A.Kill: self._exec_kill, A.Export: self._exec_export, A.Keepring: self._exec_keepring,
             A.Setring: self._exec_setring, A.Lib: self._exec_lib, A.Quit: self._exec_quit,
-            A.Help: self._exec_help, A.Empty: lambda s: None,
+            A.Help: self._exec_help, A.Empty: lambda s: None, A.Moved: self._exec_moved,
         }
         self._eval: dict[type, Callable] = {
             A.Name: self._eval_name, A.IntLit: lambda n: n.value, A.RatLit: self._eval_rat,
@@ -93,8 +94,9 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
 
     def execute_here(self, text: str) -> None:
         """Run the statements of ``text`` in the current scope (Singular's ``execute``)."""
-        saved, stmt = self.source, self.stmt
+        saved, stmt, shift = self.source, self.stmt, self.line_shift
         source = Source("<execute>", text)
+        self.line_shift = 0
         try:
             for program in parse_pieces(text, source):
                 self.source = source
@@ -106,7 +108,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
                 e.pos, e.source = None, None
             raise
         finally:
-            self.source, self.stmt = saved, stmt
+            self.source, self.stmt, self.line_shift = saved, stmt, shift
 
     def run(self, program: A.Program, source: Source) -> None:
         """Run a parsed program at top level."""
@@ -126,7 +128,10 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
     def guarded(self, fn: Callable[..., Any], *args: Any) -> Any:
         """``fn(*args)`` as one top-level statement: under the limits, with the session's default
         Gröbner engine (``settings["engine"]``, see :mod:`mech.kernel.engines`)."""
-        with using_engine(self.settings.get("engine", AUTO)):
+        engine = self.settings.get("engine", AUTO)
+        if engine == default_engine() and not (self.limits.timeout or self.limits.max_memory):
+            return fn(*args)  # the common case, without the context managers' cost per statement
+        with using_engine(engine):
             return self.limits.run(self, fn, *args)
 
     def write(self, text: str) -> None:
@@ -152,7 +157,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
     def _line_text(self) -> str:
         if self.stmt is None or not self.stmt.pos.line:
             return ""
-        return self.source.line(self.stmt.pos.line).rstrip("\r\n")  # as Singular: with its blanks
+        return self.source.line(self.stmt.pos.line + self.line_shift).rstrip("\r\n")  # as Singular: with its blanks
 
     def warn_in_line(self, message: str) -> None:
         self.warn(f"{message} in line >>{self._line_text()}<<")

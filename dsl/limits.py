@@ -29,6 +29,10 @@ POLL = 0.02     # seconds between the watchdog's checks
 REFIRE = 1.0    # raise again if the statement is still running this long after the first time
 SLACK = 64 << 20  # address space beyond the memory limit: at least this (bytes), or a quarter of the limit
 
+#: The watcher outside the process (``mech/watcher.py``, set in the child it runs a script in): told
+#: when each top-level statement under limits begins (``begin(pos, rss)``) and ends (``end()``).
+OUTSIDE: Optional[Any] = None
+
 #: Limits for interpreters created without explicit ones (``mech --timeout`` sets them for the REPL).
 DEFAULTS: dict[str, Optional[float]] = {"timeout": None, "max_memory": None}
 
@@ -101,11 +105,17 @@ class Limits:
             return fn(*args)
         saved = (interp.frames, len(interp.frames), interp.ring, interp.source, interp.stmt, interp.argnames)
         watch = _current.watch = _Watch(self.timeout, self.max_memory)
+        outside = OUTSIDE if threading.current_thread() is threading.main_thread() else None
         try:
             try:
                 _WATCHDOG.arm(watch)
+                if outside is not None:
+                    node = args[0] if args and hasattr(args[0], "pos") else interp.stmt
+                    outside.begin(getattr(node, "pos", None), watch.max_rss - watch.grow if watch.max_rss else 0)
                 return fn(*args)
             finally:
+                if outside is not None:
+                    outside.end()
                 late = _WATCHDOG.disarm(watch)
                 if late is not None:
                     raise late

@@ -43,14 +43,16 @@ def _parser_for(plugin_types: tuple[str, ...]) -> Lark:
     return Lark(grammar, parser="lalr", propagate_positions=True, cache=True, maybe_placeholders=True)
 
 
-def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 1)) -> A.Program:
+def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 1),
+          shared: bool = False, ends: Optional[list[int]] = None) -> A.Program:
     """The program tree of ``text``; raises :class:`MechSyntaxError` located in ``source``
     (``at``: the line and column where ``text`` starts there).  Simple statements take the fast
-    path (:mod:`~mech.dsl.fastparse`), the others and errors Lark's parser."""
+    path (:mod:`~mech.dsl.fastparse`; ``shared``: statements parsed before may share their trees,
+    for running; ``ends``: where its statements end, when known), the others and errors Lark's parser."""
     source = source or Source("<string>", text)
     parser = _parser()
     program = parse_fast(text, at, parser.terminals, _type_words(parser) + type_names(),
-                         lambda piece, where: _parse_lark(piece, source, where))
+                         lambda piece, where: _parse_lark(piece, source, where), shared, ends)
     return program if program is not None else _parse_lark(text, source, at)
 
 
@@ -88,26 +90,34 @@ def parse_pieces(text: str, source: Source) -> Iterator[A.Program]:
     next is parsed: memory stays small for long scripts, the statements before a syntax error run
     before it is raised, and a statement longer than ``MAX_STATEMENT`` is refused unparsed."""
     start, prev, before, line = 0, 0, 0, 1
-    for end in itertools.chain(statement_ends(text), [len(text)]):
+    ends: list[int] = []  # the statements' ends in the piece being gathered
+    for end in itertools.chain(statement_ends(text), [-1]):
+        final = end < 0
+        if final:
+            end = len(text)
         if end - prev > MAX_STATEMENT and end - _BLANK.match(text, prev).end() > MAX_STATEMENT:
             if prev > start:
-                yield from _piece(text, start, prev, line, before, source)
+                yield from _piece(text, start, prev, line, before, source, ends)
             pos = _at(text, _BLANK.match(text, prev).end(), start, line)
             raise MechSyntaxError(f"statement too long ({end - prev} characters; at most {MAX_STATEMENT})",
                                   A.Pos(*pos, *pos), source)
         last, prev = prev, end
+        if not final:
+            ends.append(end - start)
         if end > start and (end - start >= PIECE or end == len(text)):
-            yield from _piece(text, start, end, line, before, source)
+            yield from _piece(text, start, end, line, before, source, ends)
             line += text.count("\n", start, end)
-            start, before = end, last
+            start, before, ends = end, last, []
 
 
-def _piece(text: str, start: int, end: int, line: int, before: int, source: Source) -> Iterator[A.Program]:
+def _piece(text: str, start: int, end: int, line: int, before: int, source: Source,
+           ends: list[int]) -> Iterator[A.Program]:
     """The statements of ``text[start:end]`` (which starts on ``line``; the statement before it
-    starts at ``before``).  After a syntax error: the statements before the failing one, one by
-    one, then its error, found with the statement before it (the messages look back)."""
+    starts at ``before``; ``ends``: where they end in the piece).  After a syntax error: the
+    statements before the failing one, one by one, then its error, found with the statement
+    before it (the messages look back)."""
     try:
-        program = parse(text[start:end], source, _at(text, start, start, line))
+        program = parse(text[start:end], source, _at(text, start, start, line), True, ends)
     except MechSyntaxError:
         pass
     else:
@@ -117,7 +127,7 @@ def _piece(text: str, start: int, end: int, line: int, before: int, source: Sour
     a = 0
     for b in [*statement_ends(piece), len(piece)]:
         try:
-            program = parse(piece[a:b], source, _at(text, start + a, start, line))
+            program = parse(piece[a:b], source, _at(text, start + a, start, line), True)
         except MechSyntaxError as err:
             parse(text[before:start + b], source, _at(text, before, start, line))
             raise err

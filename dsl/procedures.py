@@ -25,12 +25,13 @@ class Procedures:
         caller_source = self.source
         frame = Frame(len(self.frames), {}, proc, node.pos if node else None, caller_source, self.ring)
         self.frames.append(frame)
-        saved_stmt = self.stmt
+        saved_stmt, saved_shift = self.stmt, self.line_shift
+        self.line_shift = 0
         try:
             self._bind_params(proc, args)
         except MechError as e:
             self.frames.pop()
-            self.ring = frame.ring_at_entry
+            self.ring, self.line_shift = frame.ring_at_entry, saved_shift
             if node is not None:
                 e.locate(node.pos, caller_source, True)
             raise
@@ -55,7 +56,7 @@ class Procedures:
         finally:
             self.frames.pop()
             self.source = caller_source
-            self.stmt = saved_stmt
+            self.stmt, self.line_shift = saved_stmt, saved_shift
             if not frame.keep_ring:
                 self.ring = frame.ring_at_entry
 

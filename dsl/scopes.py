@@ -76,6 +76,8 @@ class Scopes:
         if "redefine" not in self.options or self.stmt is None:
             return
         pos = self.stmt.pos
+        if self.line_shift:
+            pos = A.Pos(pos.line + self.line_shift, pos.col, pos.end_line + self.line_shift, pos.end_col)
         line = self.source.line(pos.line)
         proc = self.frames[-1].proc
         if proc is not None:

@@ -66,14 +66,26 @@ def split_complete(text: str) -> tuple[int, bool]:
 
 
 _SPECIAL = re.compile(r'"[^"]*"?|//[^\n]*|/\*.*?(?:\*/|\Z)|[][(){};]', re.S)
+_SIMPLE = re.compile(r'(?:[^][(){};"/]++|/(?![/*]))*+;')
 _ELSE = re.compile(r'(?:\s+|//[^\n]*|/\*.*?\*/)*+else(?![A-Za-z0-9_@])', re.S)
 
 
 def statement_ends(text: str) -> Iterator[int]:
     """The offsets just after each complete top-level statement of ``text`` (its ``;``, or the
     ``}`` closing it when no ``else`` follows); what follows the last is blank or incomplete."""
-    depth = 0
-    for m in _SPECIAL.finditer(text):
+    depth, pos = 0, 0
+    simple, special = _SIMPLE.match, _SPECIAL.search
+    while True:
+        if depth == 0:
+            m = simple(text, pos)
+            if m is not None:  # a statement without brackets, strings or comments: one match
+                pos = m.end()
+                yield pos
+                continue
+        m = special(text, pos)
+        if m is None:
+            return
+        pos = m.end()
         ch = m.group()
         if len(ch) > 1 or ch == '"':
             continue

@@ -34,6 +34,23 @@ class Statements:
         except Exception as e:
             raise convert_exception(e).locate(stmt.pos, self.source) from None
 
+    def _exec_moved(self, s: A.Moved) -> None:
+        """A statement tree shared with the same text on an earlier line (:mod:`~mech.dsl.fastparse`):
+        warnings name this line (``line_shift``), errors are moved to it."""
+        saved, self.line_shift = self.line_shift, s.dline
+        inner = self.stmt = s.stmt
+        try:
+            self._exec[type(inner)](inner)
+        except MechError as e:
+            _move_error(e, inner.pos.line, s.dline, self.source)
+            raise
+        except (BreakSignal, ContinueSignal):  # reported at the top level where self.stmt is
+            if self.stmt is not None:
+                self.stmt = A.Empty(pos=_moved(self.stmt.pos, s.dline))
+            raise
+        finally:
+            self.line_shift = saved
+
     def _exec_expr(self, s: A.ExprStmt) -> None:
         parts, values = [], []
         for node in s.exprs:
@@ -140,3 +157,18 @@ class Statements:
 
     def _exec_quit(self, s: A.Quit) -> None:
         raise QuitSignal()
+
+
+def _moved(pos: A.Pos, dline: int) -> A.Pos:
+    return A.Pos(pos.line + dline, pos.col, pos.end_line + dline, pos.end_col)
+
+
+def _move_error(e: MechError, line: int, dline: int, source: object) -> None:
+    """Move the position of ``e`` raised in a shared tree (on ``line``) ``dline`` lines: its own
+    position, or when it comes from inside a procedure, that of the outermost call."""
+    if e.notes:
+        note = e.notes[-1]
+        if note.pos is not None and note.pos.line == line and note.source is source:
+            note.pos = _moved(note.pos, dline)
+    elif e.pos is not None and e.pos.line == line and e.source in (None, source):
+        e.pos = _moved(e.pos, dline)

@@ -149,11 +149,17 @@ def _main(args: argparse.Namespace) -> int:
     warnings = not args.no_warn
     settings = {"report_format": args.format, "engine": args.engine}
     dialect = args.dialect or ("m2" if args.file and args.file.endswith(".m2") else "singular")
+
+    def run_script(text: str, name: str) -> int:  # under limits, a watcher process stands by (mech/watcher.py)
+        from .watcher import run_watched
+        return run_watched(lambda: run_text(text, name, warnings, dialect, settings), name, text,
+                           args.timeout, args.max_memory)
+
     if args.code is not None:
         if args.file:
             sys.stderr.write("mech: error: give either -c CODE or a FILE, not both\n")
             return 2
-        return run_text(args.code, "<string>", warnings, dialect, settings)
+        return run_script(args.code, "<string>")
     if args.install_kernel:
         from .kernelspec import install
         for folder in install():
@@ -168,7 +174,7 @@ def _main(args: argparse.Namespace) -> int:
         if text is None:
             sys.stderr.write("mech: error: standard input is closed (give a FILE, -c CODE, or run in a terminal)\n")
             return 2
-        return run_text(text, "<stdin>", warnings, dialect, settings)
+        return run_script(text, "<stdin>")
     if args.file:
         try:
             with open(args.file, encoding="utf-8-sig") as fh:  # a byte-order mark is dropped
@@ -179,7 +185,7 @@ def _main(args: argparse.Namespace) -> int:
         except UnicodeDecodeError:
             sys.stderr.write(f"mech: error: {args.file} is not a UTF-8 text file\n")
             return 2
-        return run_text(text, args.file, warnings, dialect, settings)
+        return run_script(text, args.file)
     if dialect == "m2":
         from .dsl.m2 import run_m2_repl
         return run_m2_repl(warnings=warnings)

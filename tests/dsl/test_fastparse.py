@@ -108,3 +108,58 @@ def test_the_parser_uses_the_fast_path_and_reports_errors_as_before():
     with pytest.raises(MechSyntaxError) as e:
         parse("x = 1;\ny = 2 +* 3;")
     assert (e.value.line, e.value.column, e.value.message) == (2, 8, "unexpected '*', expected an expression")
+
+
+def run_script(text: str) -> str:
+    """Output, warnings and the error (if any) of running ``text`` as a script."""
+    import io
+    from mech.dsl.errors import MechError
+    from mech.dsl.interpreter import Interpreter
+    out = io.StringIO()
+    try:
+        Interpreter(out=out).execute(text, "s.mech")
+    except MechError as e:
+        out.write(e.format())
+    return out.getvalue()
+
+
+SHARED = [  # repeated one-line statements: errors, warnings and notes at the line that runs
+    "int k = 1; int j;\nj = 10 div k; if (1) { int a = 2; }\nif (1) { int a = 2; }\n"
+    "j = 10 div k; if (1) { int a = 2; }\nk = 0; if (k) { j = 1; }\nj = 10 div k; if (1) { int a = 2; }\n",
+    "int k = 1; int j;\nj = 10 div k;\nk = 0;\n  j = 10 div k;\n",
+    "proc p(int v) { return (10 div v); }\nint k = 1; int j;\nj = p(k);\nk = 0;\nj = p(k);\n",
+    "int k = 0; if (k) { break; }\nk = 1;\nint m = 1; if (k) { break; }\n",
+    "int k = 0; int i; for (i = 1; i <= 2; i++) { if (k) { i++; continue; } }\nk = 1;\n"
+    "int m = 1; for (i = 1; i <= 2; i++) { if (k) { i++; continue; } }\nif (k) { continue; }\n",
+    "ring r = 0,(x,y),dp; poly f = x;\nring r = 0,(x,y),dp; poly f = x;\nf = f / 0;\nf = f / 0;\n",
+    'int i = 1; execute("int q = 1/0;");\nint j = 1; execute("int q = 1/0;");\n',
+]
+
+
+@pytest.mark.parametrize("text", SHARED)
+def test_shared_trees_keep_positions(text, monkeypatch):
+    """A statement whose tree is shared with the same text on an earlier line (fastparse's table)
+    reports errors and warnings exactly as when each line is parsed on its own."""
+    import mech.dsl.fastparse as fp
+    shared = run_script(text)
+    monkeypatch.setattr(fp, "MAX_SHARED", 0)
+    assert shared == run_script(text)
+    assert "error" in shared or "//" in shared
+
+
+def test_shared_trees_are_reused():
+    """The table takes repeated one-line statements: the second copy is the first's tree, moved."""
+    program = parse("int k;\nk = k + 1;\nk = k + 1;\n", shared=True)
+    a, b = program.body[1], program.body[2]
+    assert isinstance(b, A.Moved) and b.stmt is a and b.dline == 1 and b.pos.line == 3
+
+
+def test_shared_table_when_full_keeps_the_newer_half(monkeypatch):
+    import mech.dsl.fastparse as fp
+    monkeypatch.setattr(fp, "MAX_SHARED", 4)
+    fp._SHARED.clear()
+    text = "int k;\n" + "".join(f"k = k + {i % 7};\nk;\n" for i in range(30))
+    small = run_script(text)
+    assert all(len(table) <= 4 for table in fp._SHARED.values())
+    monkeypatch.setattr(fp, "MAX_SHARED", 0)
+    assert small == run_script(text) and small.count("\n") == 30

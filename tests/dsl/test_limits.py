@@ -8,6 +8,7 @@ import shutil
 import subprocess
 import sys
 import threading
+import time
 
 import pytest
 
@@ -153,6 +154,30 @@ def test_cli_max_memory():
     r = mech("--max-memory", "300", "-c", 'int k = 7; k; string s = "ab"; while (1) { s = s + s; }')
     assert r.returncode == 1 and r.stdout == "7\n"
     assert "error: memory limit of 300 MB exceeded" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_cli_timeout_inside_one_flint_call_ends_the_script():
+    """One python-flint call holds the interpreter: the watcher process (mech/watcher.py) ends
+    the script a grace after the limit, with the limit error at the statement."""
+    t = time.monotonic()
+    r = mech("--timeout", "2", "-c", "ring r = 0,(x,y,z),dp; int k = 1; k; poly f = (x+y+z+1)^1500; k;")
+    assert time.monotonic() - t < 20  # 2 s + the grace (3 s) + start-up on a busy machine
+    assert r.returncode == 1 and r.stdout == "1\n"
+    assert r.stderr.startswith("<string>:1:38: error: time limit of 2 s exceeded (stopped from outside")
+    assert r.stderr.endswith("\n" + " " * 37 + "^" + "~" * 22 + "\n")
+
+
+def test_cli_memory_limit_inside_one_flint_call_ends_the_script():
+    r = mech("--max-memory", "200", "-c", "ring r = 0,(x,y,z),dp; 7; poly f = (x+y+z+1)^1500;")
+    assert r.returncode == 1 and r.stdout == "7\n"
+    assert r.stderr.startswith("<string>:1:27: error: memory limit of 200 MB exceeded")
+
+
+def test_watcher_passes_on_the_exit_status_and_output():
+    r = mech("--timeout", "5", "-c", 'int k = 2; k; quit;')
+    assert (r.returncode, r.stdout, r.stderr) == (0, "2\n", "")
+    r = mech("--timeout", "5", "-c", "1; 1 div 0;")
+    assert r.returncode == 1 and r.stdout == "1\n" and "division by 0" in r.stderr
 
 
 def test_cli_limits_reach_the_repl_and_bad_values_are_refused(monkeypatch):
