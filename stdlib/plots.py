@@ -71,22 +71,33 @@ def _compile(polys: Sequence[Poly], nvars: int) -> Callable[[Any], Any]:
 
 def sample_mode(prime: Sequence[Poly], nlinks: int, count: int = 3000, seed: int = 0,
                 iterations: int = 40) -> Any:
-    """Points (rows of configuration-variable values) of ``V(prime)``: random angles (and prismatic
-    lengths in [-2, 2]) moved by minimum-norm Gauss–Newton steps in those parameters until the
-    residual of every generator is below 1e-12 or ``iterations`` steps are done; only the points
-    whose residual is below :data:`TOLERANCE` are returned."""
+    """Points of ``V(prime)`` of a planar mechanism whose first ``2 nlinks`` variables are the
+    links' (cos, sin) pairs: :func:`sample` with those pairs."""
+    return sample(prime, [(2 * i, 2 * i + 1) for i in range(nlinks)], count, seed, iterations)
+
+
+def sample(prime: Sequence[Poly], pairs: Sequence[tuple[int, int]], count: int = 3000, seed: int = 0,
+           iterations: int = 40) -> Any:
+    """Points (rows of configuration-variable values) of ``V(prime)``: random angles for the
+    (cos, sin) pairs of variables ``pairs`` (and values in [-2, 2] for the other variables) moved by
+    minimum-norm Gauss–Newton steps in those parameters until the residual of every generator is
+    below 1e-12 or ``iterations`` steps are done; only the points whose residual is below
+    :data:`TOLERANCE` are returned."""
     np = _numpy()
     n = prime[0].ring.nvars
+    k = len(pairs)
+    cs, ss = [c for c, _ in pairs], [s for _, s in pairs]
+    plain = [i for i in range(n) if i not in cs and i not in ss]
     gens = _compile(prime, n)
     jac = _compile([g.diff(j) for g in prime for j in range(n)], n)
     rng = np.random.default_rng(seed)
-    params = np.column_stack([rng.uniform(-math.pi, math.pi, (count, nlinks)),
-                              rng.uniform(-2, 2, (count, n - 2 * nlinks))])
+    params = np.column_stack([rng.uniform(-math.pi, math.pi, (count, k)),
+                              rng.uniform(-2, 2, (count, n - 2 * k))])
 
     def point(p: Any) -> Any:
         x = np.empty((len(p), n))
-        x[:, 0:2 * nlinks:2], x[:, 1:2 * nlinks:2] = np.cos(p[:, :nlinks]), np.sin(p[:, :nlinks])
-        x[:, 2 * nlinks:] = p[:, nlinks:]
+        x[:, cs], x[:, ss] = np.cos(p[:, :k]), np.sin(p[:, :k])
+        x[:, plain] = p[:, k:]
         return x
 
     active = np.arange(count)
@@ -101,9 +112,8 @@ def sample_mode(prime: Sequence[Poly], nlinks: int, count: int = 3000, seed: int
                 break
             dx = jac(x).reshape(len(x), len(prime), n)
             # chain rule: d/dtheta_i = -s_i d/dc_i + c_i d/ds_i
-            jp = np.concatenate([dx[:, :, 1:2 * nlinks:2] * x[:, None, 0:2 * nlinks:2]
-                                 - dx[:, :, 0:2 * nlinks:2] * x[:, None, 1:2 * nlinks:2],
-                                 dx[:, :, 2 * nlinks:]], axis=2)
+            jp = np.concatenate([dx[:, :, ss] * x[:, None, cs] - dx[:, :, cs] * x[:, None, ss],
+                                 dx[:, :, plain]], axis=2)
             # (J^T J + eps I) step = J^T res: the minimum-norm step as eps -> 0
             jt = jp.transpose(0, 2, 1)
             normal = jt @ jp
@@ -260,23 +270,35 @@ def _plot(ctx: Any, m: Mechanism, path: str, links: Sequence[Any] | None, count:
     _check_path(path)
     if not 0 < count <= MAX_SAMPLES:
         raise MechRuntimeError(f"plotConfigurations: the number of samples must be in 1..{MAX_SAMPLES}, not {count}")
-    nlinks = len(m.links)
+    planar = m.dim == 2 and not m.joints
+    if planar:
+        what, names = "link", [f"θ{k}" for k in range(1, len(m.links) + 1)]
+    else:
+        from mech.stdlib.plots_spatial import coordinates
+        what, names = "coordinate", coordinates(m)
     if links is None:
-        if nlinks < 2:
-            raise MechRuntimeError("plotConfigurations needs at least two links")
-        links = list(range(1, min(nlinks, 3) + 1))
+        if len(names) < 2:
+            raise MechRuntimeError(f"plotConfigurations needs at least two {what}s")
+        links = list(range(1, min(len(names), 3) + 1))
     if len(links) not in (2, 3):
-        raise MechRuntimeError(f"plotConfigurations: give 2 or 3 link numbers, not {len(links)}")
+        raise MechRuntimeError(f"plotConfigurations: give 2 or 3 {what} numbers, not {len(links)}")
     for k in links:
         if type(k) is not int:
-            raise MechRuntimeError(f"plotConfigurations: the links are given by their numbers (int), not '{k}'")
-        if not 1 <= k <= nlinks:
-            raise MechRuntimeError(f"plotConfigurations: there is no link {k} (the links are 1..{nlinks})")
+            raise MechRuntimeError(f"plotConfigurations: the {what}s are given by their numbers (int), not '{k}'")
+        if not 1 <= k <= len(names):
+            known = "" if planar else f": {', '.join(names)}"
+            raise MechRuntimeError(f"plotConfigurations: there is no {what} {k} (the {what}s are "
+                                   f"1..{len(names)}{known})")
     if len(set(links)) < len(links):
-        raise MechRuntimeError(f"plotConfigurations: a link is repeated in {', '.join(map(str, links))}")
+        raise MechRuntimeError(f"plotConfigurations: a {what} is repeated in {', '.join(map(str, links))}")
     a = run_analysis(m)
     require_numeric(a, "plotConfigurations")
-    _write(ctx, configuration_scene(m, a, [k - 1 for k in links], count), path, f"configuration space of {m}")
+    if planar:
+        scene = configuration_scene(m, a, [k - 1 for k in links], count)
+    else:
+        from mech.stdlib.plots_spatial import space_configuration_scene
+        scene = space_configuration_scene(m, a, [k - 1 for k in links], count)
+    _write(ctx, scene, path, f"configuration space of {m}")
 
 
 @command("plotConfigurations", lib="mechanism.lib")
@@ -335,7 +357,11 @@ def _view(xyz: Sequence[float]) -> tuple[float, float]:
 
 @command("drawMechanism", lib="mechanism.lib")
 def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
-    """drawMechanism(m, list(c1,s1,c2,s2,...), "file.svg"): the mechanism in that configuration.
+    """drawMechanism(m, list(c1,s1,c2,s2,...), "file.svg"[, view]): the mechanism in that configuration.
+
+    A spatial mechanism is drawn in a cabinet projection (x to the right, z up, y receding), a loop
+    of joints in the isometric view, each joint with its axis; `view` chooses another: "front",
+    "side", "top", "iso" or list(azimuth, elevation) in degrees.
 
     Example:
       LIB "mechanism.lib";
@@ -345,6 +371,15 @@ def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
       → drawMechanism(m, list(0, 1), "m.svg");
       → ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
     """
+    _draw(ctx, m, config, path, None)
+
+
+@command("drawMechanism", lib="mechanism.lib")
+def draw_mechanism_in_view(ctx, m: Mechanism, config: List, path: str, view: str | List) -> None:
+    _draw(ctx, m, config, path, view)
+
+
+def _draw(ctx: Any, m: Mechanism, config: List, path: str, view: str | List | None) -> None:
     _check_path(path)
     if m.symbols():
         raise MechRuntimeError(f"drawMechanism needs numeric lengths (setLengths(m, ...) for "
@@ -358,10 +393,20 @@ def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
     bad = max(abs(_evaluate(g, values)) for g in gens)
     if bad > 1e-6:
         raise MechRuntimeError(f"drawMechanism: the values are not a configuration (a constraint is {bad:.3g})")
-    if m.joints:
-        raise MechRuntimeError("drawMechanism draws mechanisms of points (planar, or spatial in an oblique view), "
-                               "not loops of joints")
-    pos, _ = m.positions(R)
-    xy = {p: _view([_evaluate(x, values) for x in xyz]) for p, xyz in pos.items()}
     title = ", ".join(f"{n}={v:.3g}" for n, v in zip(names, values))
-    _write(ctx, mechanism_scene(m, xy, title), path, f"{m} at {title}")
+    if m.dim == 2 and view is not None:
+        raise MechRuntimeError("drawMechanism: a view is for spatial mechanisms (this one is planar)")
+    if m.joints or view is not None:
+        from mech.stdlib.plots_spatial import parse_view, space_scene
+        azim, elev = parse_view(view if view is not None else "iso", "drawMechanism")
+        config_ = dict(zip(names, values))
+        points = None
+        if not m.joints:
+            pos, _ = m.positions(R)
+            points = {p: [_evaluate(x, values) for x in xyz] for p, xyz in pos.items()}
+        scene = space_scene(m, config_, title, azim, elev, points)
+    else:
+        pos, _ = m.positions(R)
+        xy = {p: _view([_evaluate(x, values) for x in xyz]) for p, xyz in pos.items()}
+        scene = mechanism_scene(m, xy, title)
+    _write(ctx, scene, path, f"{m} at {title}")

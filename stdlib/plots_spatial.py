@@ -1,0 +1,266 @@
+"""Pictures of spatial mechanisms and loops of joints: a mechanism in a chosen view, and the
+configuration space in the coordinates a person reads (the joints' angles and slides).
+
+A view is an orthographic projection from azimuth ``azim`` and elevation ``elev`` (degrees, as in
+matplotlib: azimuth about the z-axis from the x-axis, elevation above the x-y plane), or a named
+view (:data:`VIEWS`).  Spatial points, bars and bodies are drawn as in the plane; a loop of joints
+(Denavit–Hartenberg) is drawn link by link (along its joint's axis by the offset ``d``, then
+along the common normal by the length ``a``) with every joint's axis as a dash-dotted line through
+it (a universal joint's second axis too) and a marker by kind.  A small triad shows the directions
+of x, y and z in the view.
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any, Optional, Sequence
+
+from mech.dsl.errors import MechRuntimeError
+from mech.dsl.values import List
+from mech.stdlib.joints import Universal
+from mech.stdlib.mechanism import Mechanism
+
+if TYPE_CHECKING:
+    from mech.stdlib._scene import Scene
+
+# azimuth, elevation (degrees)
+VIEWS: dict[str, tuple[float, float]] = {
+    "front": (-90.0, 0.0),   # x to the right, z up (seen from -y)
+    "side": (0.0, 0.0),      # y to the right, z up (seen from +x)
+    "top": (-90.0, 90.0),    # x to the right, y up (seen from +z)
+    "iso": (-45.0, math.degrees(math.atan(1 / math.sqrt(2)))),  # the isometric view: the axes at 120 degrees
+}
+JOINT_MARKERS = {"revolute": "circle", "prismatic": "square", "cylindrical": "square", "universal": "circle",
+                 "helical": "triangle"}
+Vec = Sequence[float]
+
+
+def parse_view(view: Any, command: str) -> tuple[float, float]:
+    """``(azim, elev)`` from a view's name or a list ``(azimuth, elevation)`` in degrees."""
+    if isinstance(view, str):
+        if view not in VIEWS:
+            raise MechRuntimeError(f"{command}: unknown view '{view}' (the views: {', '.join(VIEWS)}, or "
+                                   "list(azimuth, elevation) in degrees)")
+        return VIEWS[view]
+    items = view.items if isinstance(view, List) else None
+    if items is None or len(items) != 2 or not all(isinstance(v, (int, str)) for v in items):
+        raise MechRuntimeError(f"{command}: a view is a name ({', '.join(VIEWS)}) or list(azimuth, elevation) "
+                               "in degrees")
+    from mech.stdlib.plots import _value
+    azim, elev = (_value(v) for v in items)
+    if not -90 <= elev <= 90:
+        raise MechRuntimeError(f"{command}: the elevation is in -90..90 degrees, not {elev:g}")
+    return azim, elev
+
+
+class View:
+    """The orthographic projection from ``(azim, elev)``: a point in space to its screen
+    coordinates (right, up)."""
+
+    def __init__(self, azim: float, elev: float) -> None:
+        a, e = math.radians(azim), math.radians(elev)
+        self.right = (-math.sin(a), math.cos(a), 0.0)
+        self.up = (-math.sin(e) * math.cos(a), -math.sin(e) * math.sin(a), math.cos(e))
+
+    def __call__(self, p: Vec) -> tuple[float, float]:
+        return (sum(a * b for a, b in zip(self.right, p)), sum(a * b for a, b in zip(self.up, p)))
+
+
+def _add(p: Vec, q: Vec, k: float = 1.0) -> list[float]:
+    return [a + k * b for a, b in zip(p, q)]
+
+
+def loop_geometry(m: Mechanism, config: dict[str, float]) -> tuple[list[list[list[float]]], list[tuple]]:
+    """The polylines of the links of a loop of joints and its joints ``(name, kind, point, axis
+    direction, offset along it, second axis or None)`` at a configuration (ring variables' values)."""
+    from mech.stdlib import loops
+    vals = loops.joint_values(m, config)
+    frames = loops.frames(m, config)
+
+    def param(v: Any) -> float:
+        return config[v] if isinstance(v, str) else float(v)
+    links, joints = [], []
+    for i, (j, v) in enumerate(zip(m.joints, vals)):
+        start, end = frames[i], frames[i + 1]
+        origin, axis = start.trans, start.column(2)
+        a = param(j.a)
+        mid = _add(end.trans, end.column(0), -a)  # the foot of the common normal on the joint's axis
+        links.append([list(origin), mid, list(end.trans)])
+        offset = sum((p - q) * z for p, q, z in zip(mid, origin, axis))
+        second = None
+        if isinstance(j, Universal):
+            c, s = v["theta"]
+            x, y = start.column(0), start.column(1)
+            second = [c * p + s * q for p, q in zip(x, y)]
+        joints.append((j.name, j.keyword, list(origin), list(axis), offset, second))
+    return links, joints
+
+
+def space_scene(m: Mechanism, config: dict[str, float], title: str, azim: float, elev: float,
+                points: Optional[dict[str, Vec]] = None) -> "Scene":
+    """The spatial mechanism ``m`` seen from ``(azim, elev)``: its joint points at ``points``
+    (points, bars, bodies) or, for a loop of joints, its links and joint axes at ``config``."""
+    from mech.stdlib._scene import Axes2D, Lines, Markers, Scene, Text
+    from mech.stdlib.plots import _title
+    view = View(azim, elev)
+    scene = Scene(520, 440)
+    _title(scene, title, 260)
+    if points is None:
+        links, joints = loop_geometry(m, config)
+        named = {name: p for name, _, p, _, _, _ in joints}
+    else:
+        links = [[list(points[p]) for p in link.points] for link in m.links]
+        links = [pts + pts[:1] if len(pts) > 2 else pts for pts in links]
+        joints, named = [], dict(points)
+    flat = [view(p) for line in links for p in line] + [view(p) for p in named.values()]
+    size = max(max(u for u, _ in flat) - min(u for u, _ in flat), max(v for _, v in flat) - min(v for _, v in flat),
+               1.0)
+    pad = 0.3 * size
+    axes = Axes2D((30, 40, 490, 420), (min(u for u, _ in flat) - pad, max(u for u, _ in flat) + pad),
+                  (min(v for _, v in flat) - pad, max(v for _, v in flat) + pad), equal=True)
+
+    def px(p: Vec) -> tuple[float, float]:
+        return axes.map(*view(p))
+    half = 0.3 * size
+    if joints:
+        scene.add(Lines([[px(_add(p, z, -half)), px(_add(p, z, d + half))] for _, _, p, z, d, _ in joints],
+                        "#888888", 1, dash=True, cls="joint-axes"))
+        seconds = [[px(_add(p, w, -half / 2)), px(_add(p, w, half / 2))] for _, _, p, _, _, w in joints if w]
+        if seconds:
+            scene.add(Lines(seconds, "#888888", 1, dash=True, cls="second-axes"))
+    scene.add(Lines([[px(p) for p in line] for line in links], "#1f77b4", 4, round=True, cls="links"))
+    if joints:
+        for kind in JOINT_MARKERS:
+            at = [px(p) for _, k, p, _, _, _ in joints if k == kind]
+            if at:
+                scene.add(Markers(at, JOINT_MARKERS[kind], 11, "black", "white", 1.5, cls=f"{kind}-joints"))
+    else:
+        scene.add(Markers([px(p) for n, p in named.items() if n not in m.fixed], "circle", 9, "black", "white",
+                          cls="joints"))
+        scene.add(Markers([px(p) for n, p in named.items() if n in m.fixed], "triangle", 14, "black", "black",
+                          cls="fixed"))
+    for n, p in named.items():
+        u, v = px(p)
+        scene.add(Text(u + 8, v - 8, n, anchor="start", cls="point"))
+    _triad(scene, view, azim, elev)
+    return scene
+
+
+def _triad(scene: "Scene", view: View, azim: float, elev: float) -> None:
+    """The directions of x, y, z in the view (an axis seen end-on has no arrow) and the view's angles."""
+    from mech.stdlib._scene import FONT, Lines, Text
+    cx, cy, r = 60.0, 380.0, 28.0
+    arrows = []
+    for k, name in enumerate("xyz"):
+        e = [0.0, 0.0, 0.0]
+        e[k] = 1.0
+        u, v = view(e)
+        if math.hypot(u, v) < 1e-6:
+            continue
+        arrows.append([(cx, cy), (cx + r * u, cy - r * v)])
+        scene.add(Text(cx + (r + 9) * u, cy - (r + 9) * v + FONT * 0.35, name, cls="triad-label"))
+    scene.add(Lines(arrows, "black", 1.2, cls="triad"))
+    scene.add(Text(cx - 30, cy + 52, f"azimuth {azim:g}°, elevation {elev:g}°", FONT * 0.9, anchor="start",
+                   cls="view"))
+
+
+# ---------------------------------------------------------------- configuration spaces
+def coordinates(m: Mechanism) -> list[str]:
+    """The names of the coordinates a configuration space of a loop of joints or a spatial
+    mechanism is drawn in: the joints' angles and slides (as ``jointAngles`` reads them), or the
+    configuration variables of spatial points and bodies."""
+    if not m.joints:
+        return m.variables()
+    out = []
+    for j in m.joints:
+        if "theta" in j.joint_variables:
+            out.append(f"θ_{j.name}")
+        if "theta2" in j.joint_variables:
+            out.append(f"θ2_{j.name}")
+        if "d" in j.joint_variables:
+            out.append(f"d_{j.name}")
+    return out
+
+
+def values_of(m: Mechanism, x: Any) -> Any:
+    """The coordinates (:func:`coordinates`, angles in radians) of the configurations ``x`` (rows
+    of the ring variables' values)."""
+    np = __import__("numpy")
+    if not m.joints:
+        return np.asarray(x)
+    from mech.stdlib.mechanism_display import joint_readings
+    names = m.variables()
+    rows = []
+    for row in x:
+        readings = joint_readings(m, dict(zip(names, map(float, row))))
+        rows.append([math.radians(v) if angle else v for _, v, angle in readings])
+    return np.array(rows).reshape(len(rows), len(coordinates(m)))
+
+
+def circle_pairs(m: Mechanism) -> list[tuple[int, int]]:
+    """The indices of the (cos, sin) pairs among the ring variables (sampled as angles)."""
+    names = m.variables()
+    return [(i, i + 1) for i, n in enumerate(names[:-1])
+            if n.startswith("c") and names[i + 1] == "s" + n[1:]]
+
+
+def space_configuration_scene(m: Mechanism, a: Any, chosen: Sequence[int], count: int) -> "Scene":
+    """The configuration space of a loop of joints or a spatial mechanism (analysed in ``a``) in
+    the coordinates numbered ``chosen`` (0-based in :func:`coordinates`): angles on [-pi, pi],
+    slides and point coordinates on the range of the samples."""
+    from mech.stdlib._scene import Axes2D, Axes3D, Markers, Scene, legend, nice_ticks, pi_ticks
+    from mech.stdlib.plots import COLOURS, _numpy, _rational, _thin, _title, sample
+    np = _numpy()
+    names = coordinates(m)
+    pairs = circle_pairs(m)
+    angle = [n.startswith("θ") for n in names] if m.joints else [False] * len(names)
+    modes, singular, crosses = [], [], []
+    for i, mode in enumerate(a.modes, 1):
+        if mode.real:
+            modes.append((i, mode, values_of(m, sample(mode.prime, pairs, count, seed=i))[:, chosen]))
+    for s in a.singular:
+        if s.point is not None:
+            crosses.append([_rational(c) for c in s.point])
+        elif s.real:
+            singular.append(sample(s.prime, pairs, 200 if s.dim == 0 else count, seed=1))
+    crosses_v = values_of(m, np.array(crosses))[:, chosen] if crosses else np.empty((0, len(chosen)))
+    singular_v = values_of(m, np.concatenate(singular))[:, chosen] if singular else np.empty((0, len(chosen)))
+    every = np.concatenate([v for _, _, v in modes] + [crosses_v, singular_v])
+    ranges, ticks = [], []
+    for col, k in enumerate(chosen):
+        if angle[k]:
+            ranges.append((-math.pi, math.pi))
+            ticks.append(pi_ticks())
+        else:
+            lo, hi = (float(every[:, col].min()), float(every[:, col].max())) if len(every) else (-1.0, 1.0)
+            pad = 0.1 * max(hi - lo, 1.0)  # a constant coordinate: a range of 0.2
+            ranges.append((lo - pad, hi + pad))
+            ticks.append(nice_ticks(lo - pad, hi + pad))
+    labels = [names[k] for k in chosen]
+    scene = Scene(800, 540)
+    _title(scene, str(m), 305)
+    if len(chosen) == 2:
+        axes = Axes2D((80, 45, 530, 480), ranges[0], ranges[1])
+        axes.frame(scene, ticks[0], ticks[1], labels[0], labels[1])
+
+        def place(v: Any) -> Any:
+            return np.column_stack(axes.map(v[:, 0], v[:, 1]))
+    else:
+        box = Axes3D(ranges, (310, 285), 230)
+        box.frame(scene, ticks, labels)
+
+        def place(v: Any) -> Any:
+            return np.column_stack(box.project((v[:, 0], v[:, 1], v[:, 2])))
+    entries = []
+    for i, mode, v in modes:
+        dots = scene.add(Markers(_thin(place(v)) if len(v) else [], "dot", 2.2, COLOURS[(i - 1) % len(COLOURS)],
+                                 cls=f"mode{i}"))
+        entries.append((dots, f"mode {i} (dim {mode.dim})"))
+    if len(singular_v):
+        entries.append((scene.add(Markers(_thin(place(singular_v)), "dot", 3, "black", cls="singular-set")),
+                        "singular configurations (sampled)"))
+    if len(crosses_v):
+        entries.append((scene.add(Markers(place(crosses_v).tolist(), "x", 10, "black", width=2, cls="singular")),
+                        "singular configurations"))
+    if entries:
+        legend(scene, 600, 50, entries)
+    return scene
