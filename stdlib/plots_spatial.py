@@ -12,6 +12,7 @@ of x, y and z in the view.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 from mech.dsl.errors import MechRuntimeError
@@ -69,30 +70,79 @@ def _add(p: Vec, q: Vec, k: float = 1.0) -> list[float]:
     return [a + k * b for a, b in zip(p, q)]
 
 
-def loop_geometry(m: Mechanism, config: dict[str, float]) -> tuple[list[list[list[float]]], list[tuple]]:
-    """The polylines of the links of a loop of joints and its joints ``(name, kind, point, axis
-    direction, offset along it, second axis or None)`` at a configuration (ring variables' values)."""
+@dataclass
+class JointPicture:
+    """A joint of a loop as drawn: its place, its axis as a segment, a universal joint's second axis."""
+
+    name: str
+    kind: str
+    point: list[float]
+    axis: list[list[float]]
+    second: Optional[list[list[float]]] = None
+
+
+def loop_geometry(m: Mechanism, config: dict[str, float]) -> tuple[list[list[list[float]]], list[JointPicture]]:
+    """The polylines of the links of a loop of joints and its joints at a configuration (the ring
+    variables' values): each link from its joint along the axis by ``d``, then along the common
+    normal by ``a``; the axes reach beyond the links by 0.3 of the loop's size."""
     from mech.stdlib import loops
     vals = loops.joint_values(m, config)
     frames = loops.frames(m, config)
 
     def param(v: Any) -> float:
         return config[v] if isinstance(v, str) else float(v)
-    links, joints = [], []
+    links, axes = [], []
     for i, (j, v) in enumerate(zip(m.joints, vals)):
         start, end = frames[i], frames[i + 1]
-        origin, axis = start.trans, start.column(2)
-        a = param(j.a)
-        mid = _add(end.trans, end.column(0), -a)  # the foot of the common normal on the joint's axis
-        links.append([list(origin), mid, list(end.trans)])
-        offset = sum((p - q) * z for p, q, z in zip(mid, origin, axis))
+        mid = _add(end.trans, end.column(0), -param(j.a))  # the foot of the common normal on the joint's axis
+        links.append([list(start.trans), mid, list(end.trans)])
         second = None
         if isinstance(j, Universal):
             c, s = v["theta"]
-            x, y = start.column(0), start.column(1)
-            second = [c * p + s * q for p, q in zip(x, y)]
-        joints.append((j.name, j.keyword, list(origin), list(axis), offset, second))
-    return links, joints
+            second = [c * p + s * q for p, q in zip(start.column(0), start.column(1))]
+        axes.append((j, list(start.trans), start.column(2), mid, second))
+    corners = [p for line in links for p in line]
+    size = max((math.dist(p, q) for p in corners for q in corners), default=0.0)
+    if size < 1e-9:
+        return _spherical(axes)
+    h = 0.3 * size
+    out = []
+    for j, origin, z, mid, second in axes:
+        offset = sum((p - q) * w for p, q, w in zip(mid, origin, z))
+        out.append(JointPicture(j.name, j.keyword, origin, [_add(origin, z, min(offset, 0) - h),
+                                                            _add(origin, z, max(offset, 0) + h)],
+                                [_add(origin, second, -h / 2), _add(origin, second, h / 2)] if second else None))
+    return links, out
+
+
+def _spherical(axes: list[tuple]) -> tuple[list[list[list[float]]], list[JointPicture]]:
+    """A spherical loop (every axis through one point, the centre): each joint drawn where its axis
+    meets the unit sphere about the centre, the links as great-circle arcs between them (a universal
+    joint's two axes joined by an arc too), the axes from the centre."""
+    centre = axes[0][1]
+    stations, out = [], []
+    for j, _, z, _, second in axes:
+        stations.append(_add(centre, z))
+        if second:
+            stations.append(_add(centre, second))
+        out.append(JointPicture(j.name, j.keyword, _add(centre, z), [list(centre), _add(centre, z, 1.4)],
+                                [list(centre), _add(centre, second, 1.4)] if second else None))
+    arcs = [_arc(centre, p, q) for p, q in zip(stations, stations[1:] + stations[:1])]
+    return arcs, out
+
+
+def _arc(centre: Vec, p: Vec, q: Vec, steps: int = 16) -> list[list[float]]:
+    """The great-circle arc from ``p`` to ``q`` on the unit sphere about ``centre``."""
+    u, v = _add(p, centre, -1), _add(q, centre, -1)
+    angle = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(u, v)))))
+    if angle < 1e-9:
+        return [list(p), list(q)]
+    out = []
+    for k in range(steps + 1):
+        t = angle * k / steps
+        a, b = math.sin(angle - t) / math.sin(angle), math.sin(t) / math.sin(angle)
+        out.append(_add(centre, [a * x + b * y for x, y in zip(u, v)]))
+    return out
 
 
 def space_scene(m: Mechanism, config: dict[str, float], title: str, azim: float, elev: float,
@@ -106,31 +156,30 @@ def space_scene(m: Mechanism, config: dict[str, float], title: str, azim: float,
     _title(scene, title, 260)
     if points is None:
         links, joints = loop_geometry(m, config)
-        named = {name: p for name, _, p, _, _, _ in joints}
+        named = {j.name: j.point for j in joints}
     else:
         links = [[list(points[p]) for p in link.points] for link in m.links]
         links = [pts + pts[:1] if len(pts) > 2 else pts for pts in links]
         joints, named = [], dict(points)
-    flat = [view(p) for line in links for p in line] + [view(p) for p in named.values()]
+    flat = [view(p) for line in links for p in line] + [view(p) for p in named.values()] \
+        + [view(p) for j in joints for p in j.axis + (j.second or [])]
     size = max(max(u for u, _ in flat) - min(u for u, _ in flat), max(v for _, v in flat) - min(v for _, v in flat),
                1.0)
-    pad = 0.3 * size
+    pad = (0.1 if joints else 0.3) * size
     axes = Axes2D((30, 40, 490, 420), (min(u for u, _ in flat) - pad, max(u for u, _ in flat) + pad),
                   (min(v for _, v in flat) - pad, max(v for _, v in flat) + pad), equal=True)
 
     def px(p: Vec) -> tuple[float, float]:
         return axes.map(*view(p))
-    half = 0.3 * size
     if joints:
-        scene.add(Lines([[px(_add(p, z, -half)), px(_add(p, z, d + half))] for _, _, p, z, d, _ in joints],
-                        "#888888", 1, dash=True, cls="joint-axes"))
-        seconds = [[px(_add(p, w, -half / 2)), px(_add(p, w, half / 2))] for _, _, p, _, _, w in joints if w]
+        scene.add(Lines([[px(p) for p in j.axis] for j in joints], "#888888", 1, dash=True, cls="joint-axes"))
+        seconds = [[px(p) for p in j.second] for j in joints if j.second]
         if seconds:
             scene.add(Lines(seconds, "#888888", 1, dash=True, cls="second-axes"))
     scene.add(Lines([[px(p) for p in line] for line in links], "#1f77b4", 4, round=True, cls="links"))
     if joints:
         for kind in JOINT_MARKERS:
-            at = [px(p) for _, k, p, _, _, _ in joints if k == kind]
+            at = [px(j.point) for j in joints if j.kind == kind]
             if at:
                 scene.add(Markers(at, JOINT_MARKERS[kind], 11, "black", "white", 1.5, cls=f"{kind}-joints"))
     else:
