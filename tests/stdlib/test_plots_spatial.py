@@ -4,11 +4,15 @@ coordinates (dots checked against the mechanism's equations)."""
 from __future__ import annotations
 
 import math
+import re
+import subprocess
+import sys
 
 import numpy as np
 import pytest
 
 from mech.dsl.errors import MechError
+from tests.util import ROOT
 from tests.stdlib.test_plots import NS, by_class, dots, numbers, plane_map, run, svg
 
 BENNETT = "revolute A a 1 twist 0 1; revolute B a 4/5 twist 3/5 4/5; revolute C a 1 twist 0 1; " \
@@ -129,3 +133,25 @@ def test_configuration_space_of_a_loop_in_its_joint_angles(tmp_path, monkeypatch
     ta, tc = (px[:, 0] - x0) / (x1 - x0), (px[:, 1] - y0) / (y1 - y0)
     # a Bennett linkage's opposite joints turn by opposite angles (theta_C = -theta_A, mod 2 pi)
     assert len(px) > 100 and np.abs(np.sin((ta + tc) / 2)).max() < 0.02
+
+
+def test_docs_joint_pictures(tmp_path):
+    """examples/joints.mech draws the pictures of docs/img/joints, each shown in docs/mechanisms.md (the
+    same elements; the sampled configuration space's dots within a few percent)."""
+    r = subprocess.run([sys.executable, "-m", "mech", str(ROOT / "examples" / "joints.mech")],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0 and not r.stderr, r.stderr
+    docs = ROOT / "docs" / "img" / "joints"
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == sorted(p.name for p in docs.iterdir()) and len(names) == 12
+    text = (ROOT / "docs" / "mechanisms.md").read_text()
+    for name in names:
+        assert f"img/joints/{name}" in text
+        ours, theirs = (tmp_path / name).read_text(), (docs / name).read_text()
+        assert re.findall(r'class="([\w-]+)"', ours) == re.findall(r'class="([\w-]+)"', theirs)
+        a, b = ours.count("M"), theirs.count("M")
+        assert abs(a - b) <= 0.05 * b, name
+    kinds = {name: set(re.findall(r'class="([\w-]+)-joints"', (docs / name).read_text())) for name in names}
+    assert kinds["revolute.svg"] == {"revolute"} and kinds["cylindrical.svg"] == {"revolute", "cylindrical"}
+    assert kinds["loop_prismatic.svg"] == {"revolute", "prismatic"}
+    assert kinds["universal.svg"] == {"revolute", "universal"}
