@@ -310,7 +310,7 @@ class LineSlider(Element):
     keyword: ClassVar[str] = "slider"
     forms: ClassVar[tuple[Form, ...]] = (
         Form("P A B", "P on the line through A and B, two points of one link (a slider on a moving line, "
-                      "a pin in a slot) or two fixed points", (2,)),)
+                      "a pin in a slot) or two fixed points; in space too"),)
     group: ClassVar[int] = 2
     point: str = ""
     a: str = ""

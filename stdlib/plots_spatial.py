@@ -176,7 +176,13 @@ def space_scene(m: Mechanism, config: dict[str, float], title: str, azim: float,
         seconds = [[px(p) for p in j.second] for j in joints if j.second]
         if seconds:
             scene.add(Lines(seconds, "#888888", 1, dash=True, cls="second-axes"))
+    if points is not None and m.sliders:  # a slider's line through two points of a link (or fixed)
+        scene.add(Lines([[px(_add(points[s.a], _add(points[s.b], points[s.a], -1), t)) for t in (-1.0, 2.0)]
+                         for s in m.sliders], "grey", dash=True, cls="slider-line"))
     scene.add(Lines([[px(p) for p in line] for line in links], "#1f77b4", 4, round=True, cls="links"))
+    if points is not None and m.sliders:
+        scene.add(Markers([px(points[s.point]) for s in m.sliders], "square", 16, "#d62728", width=1.5,
+                          cls="sliders"))
     if joints:
         for kind in JOINT_MARKERS:
             at = [px(j.point) for j in joints if j.kind == kind]

@@ -39,6 +39,8 @@ def description(name: str) -> str:
     ("spatial4r", 0, 2, 2),
     ("spherical4r", 1, 1, None),
     ("stewart", 0, 1, 16),
+    ("spatial_slider", 1, 1, None),
+    ("twoloops", 1, 1, None),
 ])
 def test_examples(name, mobility, modes, configurations, tmp_path):
     d = example(name, tmp_path)
@@ -129,6 +131,22 @@ def test_planar_points_in_singular(name, names, eqs, mobility, modes, tmp_path):
     assert (d["mobility"], len(d["motion_modes"])) == (mobility, modes)
 
 
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+@pytest.mark.parametrize("name, names, eqs, mobility, modes", [
+    # the rail's point A = (ax, ay, 0) on the door's circle; X on the vertical line through it, |X - Q| = 2
+    ("spatial_slider", ["ax", "ay", "x", "y", "z"], ["ax^2+ay^2-4", "x-ax", "y-ay", "(x-3)^2+y^2+z^2-4"], 1, 1),
+    # the flap's hinge through A = (ax, ay, 0) along (-ay, ax, 0); E at 1 from A, square to the hinge, |E - Q| = 2
+    ("twoloops", ["ax", "ay", "ex", "ey", "ez"],
+     ["ax^2+ay^2-4", "(ex-ax)^2+(ey-ay)^2+ez^2-1", "-(ex-ax)*ay+(ey-ay)*ax", "ex^2+(ey-3)^2+(ez-1)^2-4"], 1, 1),
+])
+def test_spatial_points_in_singular(name, names, eqs, mobility, modes, tmp_path):
+    assert singular_dim_and_primes(names, eqs) == (mobility, modes)
+    d = example(name, tmp_path)
+    assert (d["mobility"], len(d["motion_modes"])) == (mobility, modes)
+    assert d["gruebler_kutzbach"] == {"spatial_slider": 0, "twoloops": -1}[name]
+
+
 def stewart_ideal(base, platform, legs) -> tuple[list[str], list[str]]:
     """Platform points p1, p2, p3 as variables (their distances fixed), each leg |p - b|^2 = l^2."""
     names = [f"p{i}{x}" for i in (1, 2, 3) for x in "xyz"]
@@ -160,3 +178,19 @@ def test_stewart_assembly_modes_in_singular(tmp_path):
     for pose in modes["poses"]:                 # each real pose: legs of the design's lengths (to 4 decimals)
         p1 = [float(c) for c in pose["points"]["P1"]]
         assert abs(sum(c * c for c in p1) - 25) < 1e-2
+
+
+def test_sliders_and_prismatic_legs_in_space():
+    """In space a slider keeps its point on the line of two points of one link (three cross-product
+    polynomials), a prismatic bar's length d_i is a variable (|B - A|^2 = d_i^2), and a slider on
+    two points of different links is refused, naming the statement."""
+    m = parse_mechanism("fix O 0 0 0; fix Q 1 0 0; prismatic O A; bar Q A 1")
+    R, gens = m.constraints()
+    assert m.variables() == ["d1", "x_A", "y_A", "z_A"] and m.gruebler_kutzbach() == 2
+    assert [poly_str(g) for g in gens] == ["-d1^2+x_A^2+y_A^2+z_A^2", "x_A^2+y_A^2+z_A^2-2*x_A"]
+    m = parse_mechanism("fix O 0 0 0; fix P 2 0 0; bar O X 3; slider X O P")  # X on the x-axis: X = (+-3, 0, 0)
+    R, gens = m.constraints()
+    assert [poly_str(g) for g in gens] == ["x_X^2+y_X^2+z_X^2-9", "-2*z_X", "2*y_X"]  # the x-component is 0
+    with pytest.raises(Exception) as e:
+        parse_mechanism("fix O 0 0 0; fix P 2 0 0; bar O X 3; bar P Y 1; slider X O Y").constraints()
+    assert "statement 5 'slider X O Y': O and Y are neither points of one link" in str(e.value)
