@@ -451,6 +451,38 @@ class Universal(LoopJoint):
     freedom: ClassVar[int] = 2
 
 
+@dataclass
+class Helical(LoopJoint):
+    """A helical (screw) joint: it turns by ``theta_J`` and slides by ``d_J = pitch * theta_J``
+    (theta in radians).  That coupling is not polynomial (a helix is not an algebraic curve): the
+    loop's ideal is the one with the slide free, as at a cylindrical joint, which holds every
+    configuration of the helical loop (docs/mechanisms.md, "Helical joints")."""
+
+    keyword: ClassVar[str] = "helical"
+    forms: ClassVar[tuple[Form, ...]] = (
+        Form("J pitch P [a A] [twist C S]", "a helical joint J of the loop (angle theta_J and slide d_J = P * "
+                                            "theta_J, theta in radians), then its link", (3,)),)
+    keys: ClassVar[tuple[str, ...]] = ("pitch", "a", "twist")
+    joint_variables: ClassVar[tuple[str, ...]] = ("theta", "d")
+    pitch: Length = 0
+
+    @classmethod
+    def parse(cls, args: Sequence[str], src: Source, dim: int) -> list[Element]:
+        (j,) = super().parse(args, src, dim)
+        pitch = j.pitch  # type: ignore[attr-defined]
+        if "pitch" not in args[1:]:
+            raise MechanismError(f"{src}: a helical joint needs its pitch (helical J pitch P: the slide per radian "
+                                 "of turn)")
+        if isinstance(pitch, str):
+            raise MechanismError(f"{src}: the pitch of a helical joint is a number, not the name '{pitch}'")
+        if pitch == 0:
+            raise MechanismError(f"{src}: a helical joint of pitch 0 does not slide: write revolute {j.name}")
+        return [j]
+
+    def with_values(self, values: dict[str, Length]) -> Element:
+        return replace(self, a=substitute(self.a, values))
+
+
 # ---------------------------------------------------------------- the registry
 _REGISTRY: dict[str, list[type[Element]]] = {}
 
@@ -462,7 +494,8 @@ def statement(cls: type[Element]) -> type[Element]:
     return cls
 
 
-for _cls in (Ground, Fix, Bar, PrismaticBar, Body, Slider, LineSlider, Revolute, Prismatic, Cylindrical, Universal):
+for _cls in (Ground, Fix, Bar, PrismaticBar, Body, Slider, LineSlider, Revolute, Prismatic, Cylindrical, Universal,
+             Helical):
     statement(_cls)
 
 

@@ -397,11 +397,13 @@ def _draw(ctx: Any, m: Mechanism, config: List, path: str, view: str | List | No
     if m.dim == 2 and view is not None:
         raise MechRuntimeError("drawMechanism: a view is for spatial mechanisms (this one is planar)")
     if m.joints or view is not None:
-        from mech.stdlib.plots_spatial import parse_view, space_scene
+        from mech.stdlib.plots_spatial import check_helical, parse_view, space_scene
         azim, elev = parse_view(view if view is not None else "iso", "drawMechanism")
         config_ = dict(zip(names, values))
         points = None
-        if not m.joints:
+        if m.joints:
+            check_helical(m, config_, "drawMechanism")
+        else:
             pos, _ = m.positions(R)
             points = {p: [_evaluate(x, values) for x in xyz] for p, xyz in pos.items()}
         scene = space_scene(m, config_, title, azim, elev, points)

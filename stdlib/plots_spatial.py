@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 from mech.dsl.errors import MechRuntimeError
 from mech.dsl.values import List
-from mech.stdlib.joints import Universal
+from mech.stdlib.joints import Helical, Universal
 from mech.stdlib.mechanism import Mechanism
 
 if TYPE_CHECKING:
@@ -79,6 +79,7 @@ class JointPicture:
     point: list[float]
     axis: list[list[float]]
     second: Optional[list[list[float]]] = None
+    thread: Optional[list[list[float]]] = None  # a helical joint's last turn of thread
 
 
 def loop_geometry(m: Mechanism, config: dict[str, float]) -> tuple[list[list[list[float]]], list[JointPicture]]:
@@ -100,18 +101,27 @@ def loop_geometry(m: Mechanism, config: dict[str, float]) -> tuple[list[list[lis
         if isinstance(j, Universal):
             c, s = v["theta"]
             second = [c * p + s * q for p, q in zip(start.column(0), start.column(1))]
-        axes.append((j, list(start.trans), start.column(2), mid, second))
-    corners = [p for line in links for p in line]
+        thread = None
+        if isinstance(j, Helical):  # one turn up to the present angle: p + r (cos phi, sin phi) + pitch phi z
+            theta, pitch = math.atan2(v["theta"][1], v["theta"][0]), float(j.pitch)
+            x, y, z = start.column(0), start.column(1), start.column(2)
+            base = _add(start.trans, z, v["d"] - pitch * theta)
+            r = 0.25 * max(abs(pitch) * 2 * math.pi, 1.0)
+            thread = [_add(base, [r * math.cos(f) * p + r * math.sin(f) * q + pitch * f * w for p, q, w in zip(x, y, z)])
+                      for f in (theta - 2 * math.pi * k / 48 for k in range(48, -1, -1))]
+        axes.append((j, list(start.trans), start.column(2), mid, second, thread))
+    corners = [p for line in links for p in line] + [p for a in axes if a[5] for p in a[5]]
     size = max((math.dist(p, q) for p in corners for q in corners), default=0.0)
     if size < 1e-9:
         return _spherical(axes)
     h = 0.3 * size
     out = []
-    for j, origin, z, mid, second in axes:
+    for j, origin, z, mid, second, thread in axes:
         offset = sum((p - q) * w for p, q, w in zip(mid, origin, z))
         out.append(JointPicture(j.name, j.keyword, origin, [_add(origin, z, min(offset, 0) - h),
                                                             _add(origin, z, max(offset, 0) + h)],
-                                [_add(origin, second, -h / 2), _add(origin, second, h / 2)] if second else None))
+                                [_add(origin, second, -h / 2), _add(origin, second, h / 2)] if second else None,
+                                thread))
     return links, out
 
 
@@ -121,7 +131,7 @@ def _spherical(axes: list[tuple]) -> tuple[list[list[list[float]]], list[JointPi
     joint's two axes joined by an arc too), the axes from the centre."""
     centre = axes[0][1]
     stations, out = [], []
-    for j, _, z, _, second in axes:
+    for j, _, z, _, second, _ in axes:
         stations.append(_add(centre, z))
         if second:
             stations.append(_add(centre, second))
@@ -145,6 +155,20 @@ def _arc(centre: Vec, p: Vec, q: Vec, steps: int = 16) -> list[list[float]]:
     return out
 
 
+def check_helical(m: Mechanism, config: dict[str, float], command: str) -> None:
+    """A configuration of a loop with helical joints: each one's slide is its pitch times its angle
+    (in radians, up to whole turns), which the ideal does not say (it is not polynomial)."""
+    from mech.stdlib import loops
+    for j, v in zip(m.joints, loops.joint_values(m, config)):
+        if isinstance(j, Helical):
+            pitch, theta = float(j.pitch), math.atan2(v["theta"][1], v["theta"][0])
+            turns = (v["d"] / pitch - theta) / (2 * math.pi)
+            if abs(turns - round(turns)) * 2 * math.pi * abs(pitch) > 1e-6:
+                raise MechRuntimeError(f"{command}: not a configuration of the helical joint {j.name}: d_{j.name} = "
+                                       f"{v['d']:.6g} is not {j.pitch} times its angle {theta:.6g} (radians) plus "
+                                       "whole turns")
+
+
 def space_scene(m: Mechanism, config: dict[str, float], title: str, azim: float, elev: float,
                 points: Optional[dict[str, Vec]] = None) -> "Scene":
     """The spatial mechanism ``m`` seen from ``(azim, elev)``: its joint points at ``points``
@@ -162,7 +186,7 @@ def space_scene(m: Mechanism, config: dict[str, float], title: str, azim: float,
         links = [pts + pts[:1] if len(pts) > 2 else pts for pts in links]
         joints, named = [], dict(points)
     flat = [view(p) for line in links for p in line] + [view(p) for p in named.values()] \
-        + [view(p) for j in joints for p in j.axis + (j.second or [])]
+        + [view(p) for j in joints for p in j.axis + (j.second or []) + (j.thread or [])]
     size = max(max(u for u, _ in flat) - min(u for u, _ in flat), max(v for _, v in flat) - min(v for _, v in flat),
                1.0)
     pad = (0.1 if joints else 0.3) * size
@@ -179,6 +203,9 @@ def space_scene(m: Mechanism, config: dict[str, float], title: str, azim: float,
     if points is not None and m.sliders:  # a slider's line through two points of a link (or fixed)
         scene.add(Lines([[px(_add(points[s.a], _add(points[s.b], points[s.a], -1), t)) for t in (-1.0, 2.0)]
                          for s in m.sliders], "grey", dash=True, cls="slider-line"))
+    threads = [[px(p) for p in j.thread] for j in joints if j.thread]
+    if threads:
+        scene.add(Lines(threads, "#2ca02c", 1.5, cls="threads"))
     scene.add(Lines([[px(p) for p in line] for line in links], "#1f77b4", 4, round=True, cls="links"))
     if points is not None and m.sliders:
         scene.add(Markers([px(points[s.point]) for s in m.sliders], "square", 16, "#d62728", width=1.5,

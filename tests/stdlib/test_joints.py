@@ -83,14 +83,20 @@ def test_block_form_accepts_the_new_statements():
                                      "slider P a b c | slider P A B), not 2"),
     ("fix O; bar O A", "statement 2 'bar O A': 'bar' takes 3 arguments (bar A B l), not 2"),
     ("fix O; rod O A 1", "statement 2 'rod O A 1': unknown statement 'rod' (expected ground, fix, bar, prismatic, "
-                         "body, slider, revolute, cylindrical or universal)"),
+                         "body, slider, revolute, cylindrical, universal or helical)"),
     ("fix O 0 0 0; fix P 1 0", "statement 1 'fix O 0 0 0' is spatial but statement 2 'fix P 1 0' is planar: "
                                "a mechanism is either planar or spatial"),
     ("revolute A; revolute A; revolute B",
      "statement 2 'revolute A': the joint name A is used by statement 1 'revolute A' already (name each joint once)"),
     ("revolute A; revolute B", "statement 2 'revolute B': a loop needs at least three joints, not 2"),
     ("revolute A; revolute B; revolute C; fix O", "statement 4 'fix O': a loop of joints (revolute, prismatic, "
-     "cylindrical, universal) is described by its joints alone: points, bars and bodies cannot be added to it"),
+     "cylindrical, universal, helical) is described by its joints alone: points, bars and bodies cannot be added to it"),
+    ("helical A a 1; revolute B; revolute C", "statement 1 'helical A a 1': a helical joint needs its pitch "
+                                               "(helical J pitch P: the slide per radian of turn)"),
+    ("helical A pitch 0; revolute B; revolute C",
+     "statement 1 'helical A pitch 0': a helical joint of pitch 0 does not slide: write revolute A"),
+    ("helical A pitch p; revolute B; revolute C",
+     "statement 1 'helical A pitch p': the pitch of a helical joint is a number, not the name 'p'"),
     ("revolute A a -1; revolute B; revolute C",
      "statement 1 'revolute A a -1': a is the distance between the joint axes (a length >= 0), not -1"),
     ("revolute A twist 1 1; revolute B; revolute C", "statement 1 'revolute A twist 1 1': twist 1 1: cos^2 + sin^2 "

@@ -41,6 +41,7 @@ def description(name: str) -> str:
     ("stewart", 0, 1, 16),
     ("spatial_slider", 1, 1, None),
     ("twoloops", 1, 1, None),
+    ("screw", 2, 1, None),  # the helical coupling is not in the ideal: the screw itself has one freedom
 ])
 def test_examples(name, mobility, modes, configurations, tmp_path):
     d = example(name, tmp_path)
@@ -178,6 +179,18 @@ def test_stewart_assembly_modes_in_singular(tmp_path):
     for pose in modes["poses"]:                 # each real pose: legs of the design's lengths (to 4 decimals)
         p1 = [float(c) for c in pose["points"]["P1"]]
         assert abs(sum(c * c for c in p1) - 25) < 1e-2
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_screw_against_a_cylindrical_joint_in_singular(tmp_path):
+    """The screw's ideal is that of the same loop with a cylindrical joint (written here in the angles of
+    screw and nut and the slides): dimension 2, one prime; the helical coupling takes one freedom off."""
+    names = ["c1", "s1", "c2", "s2", "h", "t"]  # screw angle, nut-on-screw angle and slide, nut slide
+    eqs = ["c1^2+s1^2-1", "c2^2+s2^2-1", "c1*c2-s1*s2-1", "s1*c2+c1*s2", "h+t"]  # the nut does not turn
+    assert singular_dim_and_primes(names, eqs) == (2, 1)
+    d = example("screw", tmp_path)
+    assert (d["mobility"], len(d["motion_modes"])) == (2, 1)
 
 
 def test_sliders_and_prismatic_legs_in_space():

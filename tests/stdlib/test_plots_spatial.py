@@ -110,6 +110,17 @@ def test_view_and_coordinate_errors(tmp_path, monkeypatch, call, message):
     assert message in str(e.value)
 
 
+def test_a_helical_joint_is_drawn_where_its_slide_fits_its_angle(tmp_path, monkeypatch):
+    screw = "revolute A; helical B pitch 1/2; prismatic C"  # theta_B = 60 degrees, d_B = pi/6 (+ a turn: pi)
+    run(tmp_path, monkeypatch, f'mechanism m = "{screw}"; drawMechanism(m, list("1/2", "-0.8660254038", "1/2", '
+        '"0.8660254038", "3.6651914292", "-3.6651914292"), "s.svg", "front");')
+    assert by_class(svg(tmp_path / "s.svg"), "helical-joints")
+    with pytest.raises(MechError) as e:
+        run(tmp_path, monkeypatch, f'mechanism m = "{screw}"; drawMechanism(m, list("1/2", "-0.8660254038", "1/2", '
+            '"0.8660254038", 1, -1), "s.svg");')
+    assert "not a configuration of the helical joint B: d_B = 1 is not 1/2 times its angle 1.0472" in str(e.value)
+
+
 def test_configuration_space_of_spatial_points(tmp_path, monkeypatch):
     run(tmp_path, monkeypatch, f'mechanism m = "{TRIPOD}"; plotConfigurations(m, "t.svg", list(2, 3), 400);')
     root = svg(tmp_path / "t.svg")
@@ -143,7 +154,7 @@ def test_docs_joint_pictures(tmp_path):
     assert r.returncode == 0 and not r.stderr, r.stderr
     docs = ROOT / "docs" / "img" / "joints"
     names = sorted(p.name for p in tmp_path.iterdir())
-    assert names == sorted(p.name for p in docs.iterdir()) and len(names) == 14
+    assert names == sorted(p.name for p in docs.iterdir()) and len(names) == 15
     text = (ROOT / "docs" / "mechanisms.md").read_text()
     for name in names:
         assert f"img/joints/{name}" in text
