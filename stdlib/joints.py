@@ -336,6 +336,48 @@ class LineSlider(Element):
         return self
 
 
+@dataclass
+class Gear(Element):
+    """Two meshing gears centred at ``a`` and ``b`` (planar): the gear at ``b`` turns ``ratio`` times
+    as fast as the gear at ``a``, the other way (a negative ratio: ``b`` inside an internal gear at
+    ``a``, the same way), relative to the link that holds both centres (the ground when both are
+    fixed).  Each gear turns with the first other link written at its centre.  An integer ratio
+    keeps the relation polynomial in the links' (cos, sin) pairs."""
+
+    keyword: ClassVar[str] = "gear"
+    forms: ClassVar[tuple[Form, ...]] = (
+        Form("A B n", "gears centred at A and B meshing: the gear at B turns n times as fast as the one at A, the "
+                      "other way (n < 0: inside an internal gear, the same way); n an integer", (2,)),)
+    group: ClassVar[int] = 2
+    a: str = ""
+    b: str = ""
+    ratio: int = 1
+    src: Optional[Source] = field(default=None, compare=False, repr=False)
+
+    @classmethod
+    def parse(cls, args: Sequence[str], src: Source, dim: int) -> list[Element]:
+        a, b = point_name(args[0], src), point_name(args[1], src)
+        if a == b:
+            raise MechanismError(f"{src}: two gears have two different centres, not {a} twice")
+        ratio = number(args[2], src, "the gear ratio")
+        if ratio.denominator != 1 or ratio == 0:
+            raise MechanismError(f"{src}: the gear ratio is a non-zero integer (the number of turns of the gear at "
+                                 f"{b} per turn of the one at {a}), not {args[2]}")
+        if ratio == -1:
+            raise MechanismError(f"{src}: an internal gear pair of ratio -1 would have two gears of one size, one "
+                                 "inside the other")
+        return [cls(a, b, int(ratio), src)]
+
+    def text(self) -> str:
+        return f"gear {self.a} {self.b} {self.ratio}"
+
+    def mentions(self) -> list[str]:
+        return [self.a, self.b]
+
+    def with_values(self, values: dict[str, Length]) -> Element:
+        return self
+
+
 # ---------------------------------------------------------------- joints of a loop (Denavit–Hartenberg)
 @dataclass
 class LoopJoint(Element):
@@ -495,7 +537,7 @@ def statement(cls: type[Element]) -> type[Element]:
 
 
 for _cls in (Ground, Fix, Bar, PrismaticBar, Body, Slider, LineSlider, Revolute, Prismatic, Cylindrical, Universal,
-             Helical):
+             Helical, Gear):
     statement(_cls)
 
 
@@ -552,5 +594,8 @@ class Described(Protocol):
 
     @property
     def joints(self) -> list[LoopJoint]: ...
+
+    @property
+    def gears(self) -> list[Gear]: ...
 
     def symbols(self) -> list[str]: ...

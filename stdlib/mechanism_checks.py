@@ -35,9 +35,10 @@ def check(m: Described, warn: Callable[[str], None]) -> None:
 
 
 def _undefined(m: Described) -> None:
-    """A slider's points must be points of links (or fixed): a name nothing else uses is a misspelling."""
+    """A slider's or gear's points must be points of links (or fixed): a name nothing else uses is a
+    misspelling."""
     known = set(m.fixed) | {p for link in m.links for p in link.points}
-    for e in m.sliders:
+    for e in [*m.sliders, *m.gears]:
         for p in e.mentions():
             if p not in known:
                 raise MechanismError(f"{where(e.source)}: {p} is not a point of any link or fixed point "

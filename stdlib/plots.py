@@ -213,6 +213,10 @@ def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str
     _title(scene, title, 285)
     xs = [x for x, _ in xy.values()] + [x for x, _ in path]
     ys = [y for _, y in xy.values()] + [y for _, y in path]
+    circles = [c for g in m.gears for c in _pitch_circles(xy[g.a], xy[g.b], g.ratio)]
+    for (cx, cy), r in circles:
+        xs += [cx - r, cx + r]
+        ys += [cy - r, cy + r]
     pad = 0.25 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
     axes = Axes2D((70, 40, 500, 390), (min(xs) - pad, max(xs) + pad), (min(ys) - pad, max(ys) + pad), equal=True)
     axes.frame(scene, nice_ticks(*axes.xrange), nice_ticks(*axes.yrange), "x", "y")
@@ -228,6 +232,8 @@ def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str
             a, b, _ = (float(Fraction(t)) for t in s.line)
             line = _clip(xy[s.point], (b, -a) if (a, b) != (0, 0) else (1.0, 0.0), (axes.xrange, axes.yrange))
         scene.add(Lines([[axes.map(*p) for p in line]], "grey", dash=True, cls="slider-line"))
+    if circles:
+        scene.add(Lines([_circle(axes, c, r) for c, r in circles], "#2ca02c", 1.5, cls="gears"))
     links = []
     for link in m.links:
         pts = [axes.map(*xy[p]) for p in link.points]
@@ -243,6 +249,19 @@ def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str
         u, v = axes.map(x, y)
         scene.add(Text(u + 8, v - 8, p, anchor="start", cls="point"))
     return scene
+
+
+def _pitch_circles(a: tuple[float, float], b: tuple[float, float], ratio: int) -> list[tuple[tuple[float, float], float]]:
+    """The pitch circles (centre, radius) of a gear pair centred at ``a`` and ``b``: radii in the
+    ratio's proportion, touching (external) or one inside the other (internal), ``|ab|`` apart."""
+    gap = math.dist(a, b)
+    rb = gap / (ratio + 1) if ratio > 0 else gap / (-ratio - 1)
+    return [(a, abs(ratio) * rb), (b, rb)]
+
+
+def _circle(axes: Any, centre: tuple[float, float], r: float) -> list:
+    cx, cy = centre
+    return [axes.map(cx + r * math.cos(t * math.pi / 36), cy + r * math.sin(t * math.pi / 36)) for t in range(73)]
 
 
 def _check_path(path: str) -> None:

@@ -193,6 +193,20 @@ def test_screw_against_a_cylindrical_joint_in_singular(tmp_path):
     assert (d["mobility"], len(d["motion_modes"])) == (2, 1)
 
 
+@pytest.mark.slow
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_geared_fivebar_in_singular(tmp_path):
+    """The geared five-bar in the points: A on the unit circle about O, B - Q = conj(A - O)^2 (the gear at Q
+    turns twice as fast, the other way), |C - A| = |C - B| = 2: dimension 1, one prime; mech's analysis agrees
+    (about a minute: the gears' relation has degree 2)."""
+    names = ["a1", "a2", "b1", "b2", "x", "y"]
+    eqs = ["a1^2+a2^2-1", "b1-(a1^2-a2^2)", "b2+2*a1*a2", "(x-a1)^2+(y-a2)^2-4", "(x-2-b1)^2+(y-b2)^2-4"]
+    assert singular_dim_and_primes(names, eqs) == (1, 1)
+    d = example("geared_fivebar", tmp_path)
+    assert (d["mobility"], len(d["motion_modes"]), d["gruebler_kutzbach"]) == (1, 1, 1)
+
+
 def test_sliders_and_prismatic_legs_in_space():
     """In space a slider keeps its point on the line of two points of one link (three cross-product
     polynomials), a prismatic bar's length d_i is a variable (|B - A|^2 = d_i^2), and a slider on

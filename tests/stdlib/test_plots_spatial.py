@@ -154,7 +154,7 @@ def test_docs_joint_pictures(tmp_path):
     assert r.returncode == 0 and not r.stderr, r.stderr
     docs = ROOT / "docs" / "img" / "joints"
     names = sorted(p.name for p in tmp_path.iterdir())
-    assert names == sorted(p.name for p in docs.iterdir()) and len(names) == 15
+    assert names == sorted(p.name for p in docs.iterdir()) and len(names) == 16
     text = (ROOT / "docs" / "mechanisms.md").read_text()
     for name in names:
         assert f"img/joints/{name}" in text
