@@ -215,6 +215,9 @@ def test_sliders_and_prismatic_legs_in_space():
     R, gens = m.constraints()
     assert m.variables() == ["d1", "x_A", "y_A", "z_A"] and m.gruebler_kutzbach() == 2
     assert [poly_str(g) for g in gens] == ["-d1^2+x_A^2+y_A^2+z_A^2", "x_A^2+y_A^2+z_A^2-2*x_A"]
+    from mech import Session
+    shown = Session().execute(f'LIB "mechanism.lib"; mechanism m = "{m}"; jointAngles(m, list(2, 2, 0, 0));')
+    assert shown == "d1 2\n"  # A = (2, 0, 0): the leg's length 2
     m = parse_mechanism("fix O 0 0 0; fix P 2 0 0; bar O X 3; slider X O P")  # X on the x-axis: X = (+-3, 0, 0)
     R, gens = m.constraints()
     assert [poly_str(g) for g in gens] == ["x_X^2+y_X^2+z_X^2-9", "-2*z_X", "2*y_X"]  # the x-component is 0
