@@ -46,7 +46,7 @@ def parse_view(view: Any, command: str) -> tuple[float, float]:
     if items is None or len(items) != 2 or not all(isinstance(v, (int, str)) for v in items):
         raise MechRuntimeError(f"{command}: a view is a name ({', '.join(VIEWS)}) or list(azimuth, elevation) "
                                "in degrees")
-    from mech.stdlib.plots import _value
+    from mech.stdlib.plot_sampling import _value
     azim, elev = (_value(v) for v in items)
     if not -90 <= elev <= 90:
         raise MechRuntimeError(f"{command}: the elevation is in -90..90 degrees, not {elev:g}")
@@ -174,7 +174,7 @@ def space_scene(m: Mechanism, config: dict[str, float], title: str, azim: float,
     """The spatial mechanism ``m`` seen from ``(azim, elev)``: its joint points at ``points``
     (points, bars, bodies) or, for a loop of joints, its links and joint axes at ``config``."""
     from mech.stdlib._scene import Axes2D, Lines, Markers, Scene, Text
-    from mech.stdlib.plots import _title
+    from mech.stdlib.plot_sampling import _title
     view = View(azim, elev)
     scene = Scene(520, 440)
     _title(scene, title, 260)
@@ -290,7 +290,7 @@ def space_configuration_scene(m: Mechanism, a: Any, chosen: Sequence[int], count
     the coordinates numbered ``chosen`` (0-based in :func:`coordinates`): angles on [-pi, pi],
     slides and point coordinates on the range of the samples."""
     from mech.stdlib._scene import Axes2D, Axes3D, Markers, Scene, legend, nice_ticks, pi_ticks
-    from mech.stdlib.plots import COLOURS, _numpy, _rational, _thin, _title, sample
+    from mech.stdlib.plot_sampling import COLOURS, _numpy, _rational, _thin, _title, sample
     np = _numpy()
     names = coordinates(m)
     pairs = circle_pairs(m)
