@@ -310,7 +310,7 @@ class LineSlider(Element):
     keyword: ClassVar[str] = "slider"
     forms: ClassVar[tuple[Form, ...]] = (
         Form("P A B", "P on the line through A and B, two points of one link (a slider on a moving line, "
-                      "a pin in a slot) or two fixed points", (2,)),)
+                      "a pin in a slot) or two fixed points; in space too"),)
     group: ClassVar[int] = 2
     point: str = ""
     a: str = ""
@@ -331,6 +331,48 @@ class LineSlider(Element):
 
     def mentions(self) -> list[str]:
         return [self.point, self.a, self.b]
+
+    def with_values(self, values: dict[str, Length]) -> Element:
+        return self
+
+
+@dataclass
+class Gear(Element):
+    """Two meshing gears centred at ``a`` and ``b`` (planar): the gear at ``b`` turns ``ratio`` times
+    as fast as the gear at ``a``, the other way (a negative ratio: ``b`` inside an internal gear at
+    ``a``, the same way), relative to the link that holds both centres (the ground when both are
+    fixed).  Each gear turns with the first other link written at its centre.  An integer ratio
+    keeps the relation polynomial in the links' (cos, sin) pairs."""
+
+    keyword: ClassVar[str] = "gear"
+    forms: ClassVar[tuple[Form, ...]] = (
+        Form("A B n", "gears centred at A and B meshing: the gear at B turns n times as fast as the one at A, the "
+                      "other way (n < 0: inside an internal gear, the same way); n an integer", (2,)),)
+    group: ClassVar[int] = 2
+    a: str = ""
+    b: str = ""
+    ratio: int = 1
+    src: Optional[Source] = field(default=None, compare=False, repr=False)
+
+    @classmethod
+    def parse(cls, args: Sequence[str], src: Source, dim: int) -> list[Element]:
+        a, b = point_name(args[0], src), point_name(args[1], src)
+        if a == b:
+            raise MechanismError(f"{src}: two gears have two different centres, not {a} twice")
+        ratio = number(args[2], src, "the gear ratio")
+        if ratio.denominator != 1 or ratio == 0:
+            raise MechanismError(f"{src}: the gear ratio is a non-zero integer (the number of turns of the gear at "
+                                 f"{b} per turn of the one at {a}), not {args[2]}")
+        if ratio == -1:
+            raise MechanismError(f"{src}: an internal gear pair of ratio -1 would have two gears of one size, one "
+                                 "inside the other")
+        return [cls(a, b, int(ratio), src)]
+
+    def text(self) -> str:
+        return f"gear {self.a} {self.b} {self.ratio}"
+
+    def mentions(self) -> list[str]:
+        return [self.a, self.b]
 
     def with_values(self, values: dict[str, Length]) -> Element:
         return self
@@ -451,6 +493,38 @@ class Universal(LoopJoint):
     freedom: ClassVar[int] = 2
 
 
+@dataclass
+class Helical(LoopJoint):
+    """A helical (screw) joint: it turns by ``theta_J`` and slides by ``d_J = pitch * theta_J``
+    (theta in radians).  That coupling is not polynomial (a helix is not an algebraic curve): the
+    loop's ideal is the one with the slide free, as at a cylindrical joint, which holds every
+    configuration of the helical loop (docs/mechanisms.md, "Helical joints")."""
+
+    keyword: ClassVar[str] = "helical"
+    forms: ClassVar[tuple[Form, ...]] = (
+        Form("J pitch P [a A] [twist C S]", "a helical joint J of the loop (angle theta_J and slide d_J = P * "
+                                            "theta_J, theta in radians), then its link", (3,)),)
+    keys: ClassVar[tuple[str, ...]] = ("pitch", "a", "twist")
+    joint_variables: ClassVar[tuple[str, ...]] = ("theta", "d")
+    pitch: Length = 0
+
+    @classmethod
+    def parse(cls, args: Sequence[str], src: Source, dim: int) -> list[Element]:
+        (j,) = super().parse(args, src, dim)
+        pitch = j.pitch  # type: ignore[attr-defined]
+        if "pitch" not in args[1:]:
+            raise MechanismError(f"{src}: a helical joint needs its pitch (helical J pitch P: the slide per radian "
+                                 "of turn)")
+        if isinstance(pitch, str):
+            raise MechanismError(f"{src}: the pitch of a helical joint is a number, not the name '{pitch}'")
+        if pitch == 0:
+            raise MechanismError(f"{src}: a helical joint of pitch 0 does not slide: write revolute {j.name}")
+        return [j]
+
+    def with_values(self, values: dict[str, Length]) -> Element:
+        return replace(self, a=substitute(self.a, values))
+
+
 # ---------------------------------------------------------------- the registry
 _REGISTRY: dict[str, list[type[Element]]] = {}
 
@@ -462,7 +536,8 @@ def statement(cls: type[Element]) -> type[Element]:
     return cls
 
 
-for _cls in (Ground, Fix, Bar, PrismaticBar, Body, Slider, LineSlider, Revolute, Prismatic, Cylindrical, Universal):
+for _cls in (Ground, Fix, Bar, PrismaticBar, Body, Slider, LineSlider, Revolute, Prismatic, Cylindrical, Universal,
+             Helical, Gear):
     statement(_cls)
 
 
@@ -519,5 +594,8 @@ class Described(Protocol):
 
     @property
     def joints(self) -> list[LoopJoint]: ...
+
+    @property
+    def gears(self) -> list[Gear]: ...
 
     def symbols(self) -> list[str]: ...

@@ -16,7 +16,7 @@ from mech.dsl.errors import MechRuntimeError, MechTypeError
 from mech.dsl.types import register_type
 from mech.dsl.values import typeof
 from mech.kernel import Poly, PolyRing
-from mech.stdlib.joints import (Element, Fix, Length, LineSlider, Link, LoopJoint, MechanismError, Slider, Source,
+from mech.stdlib.joints import (Element, Fix, Gear, Length, LineSlider, Link, LoopJoint, MechanismError, Slider, Source,
                                 arity_message, classes, keywords)
 
 __all__ = ["Mechanism", "MechanismError", "Length", "parse_mechanism", "to_mechanism"]
@@ -52,6 +52,10 @@ class Mechanism:
     @property
     def joints(self) -> list[LoopJoint]:
         return [e for e in self.elements if isinstance(e, LoopJoint)]
+
+    @property
+    def gears(self) -> list[Gear]:
+        return [e for e in self.elements if isinstance(e, Gear)]
 
     @property
     def model(self) -> Any:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from mech.stdlib.joints import (Bar, Described, Fix, LineSlider, Link, LoopJoint, MechanismError, PrismaticBar, Slider,
+from mech.stdlib.joints import (Bar, Described, Fix, Helical, LineSlider, Link, LoopJoint, MechanismError, PrismaticBar, Slider,
                                 where)
 
 
@@ -23,6 +23,11 @@ def check(m: Described, warn: Callable[[str], None]) -> None:
     _fixed_twice(m, warn)
     if m.joints:
         _loop(m)
+        for j in m.joints:
+            if isinstance(j, Helical):
+                warn(f"mechanism: {where(j.source)}: the slide d_{j.name} = {j.pitch}*theta_{j.name} is not polynomial: "
+                     f"the ideal lets {j.name} slide freely (as a cylindrical joint); on a motion mode where {j.name} "
+                     "moves the helical loop has one freedom less than the mobility reported")
         return
     _undefined(m)
     _unused_and_dangling(m, warn)
@@ -30,9 +35,10 @@ def check(m: Described, warn: Callable[[str], None]) -> None:
 
 
 def _undefined(m: Described) -> None:
-    """A slider's points must be points of links (or fixed): a name nothing else uses is a misspelling."""
+    """A slider's or gear's points must be points of links (or fixed): a name nothing else uses is a
+    misspelling."""
     known = set(m.fixed) | {p for link in m.links for p in link.points}
-    for e in m.sliders:
+    for e in [*m.sliders, *m.gears]:
         for p in e.mentions():
             if p not in known:
                 raise MechanismError(f"{where(e.source)}: {p} is not a point of any link or fixed point "
@@ -74,8 +80,8 @@ def _loop(m: Described) -> None:
         names[j.name] = j
     other = next((e for e in m.elements if not isinstance(e, LoopJoint)), None)
     if other is not None:
-        raise MechanismError(f"{where(other.source)}: a loop of joints (revolute, prismatic, cylindrical, universal) "
-                             "is described by its joints alone: points, bars and bodies cannot be added to it")
+        raise MechanismError(f"{where(other.source)}: a loop of joints (revolute, prismatic, cylindrical, universal, "
+                             "helical) is described by its joints alone: points, bars and bodies cannot be added to it")
     if len(m.joints) < 3:
         raise MechanismError(f"{where(m.joints[-1].source)}: a loop needs at least three joints, not "
                              f"{len(m.joints)}")

@@ -6,7 +6,8 @@ prismatic joints), named after the joints; the ideal keeps its own variables.
   ``(-180, 180]``; a prismatic bar's length ``d_i``;
 * a loop of joints: each joint's angle ``theta_J`` (and ``theta2_J`` of a universal joint) and
   slide ``d_J``, the cut joints' angles computed from the others;
-* spatial points and bodies: none (a spherical joint has no angle of its own).
+* spatial points and bodies: the lengths ``d_i`` of prismatic legs (a spherical joint has no angle
+  of its own).
 """
 from __future__ import annotations
 
@@ -37,8 +38,8 @@ def joint_readings(m: Described, values: dict[str, float]) -> list[Reading]:
             if "d" in v:
                 out.append((f"d_{j.name}", v["d"], False))
         return out
-    if m.dim == 3:
-        return out
+    if m.dim == 3:  # spherical joints have no angle of their own; a prismatic leg its length
+        return [(f"d{i}", values[f"d{i}"], False) for i, link in enumerate(m.links, 1) if link.prismatic]
     angle = {i: (values[f"c{i}"], values[f"s{i}"]) for i in range(1, len(m.links) + 1)}
     at: dict[str, list[int]] = {}
     for i, link in enumerate(m.links, 1):

@@ -19,7 +19,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
-from mech.stdlib.joints import Described, Length, LineSlider, MechanismError, Slider, where
+from mech.stdlib.joints import Described, Gear, Length, LineSlider, MechanismError, Slider, where
 
 
 Event = tuple[str, object]  # ("link", (i, link)) or ("free", point)
@@ -131,7 +131,44 @@ def positions(m: Described, R: PolyRing, values: dict[str, Length]
             dx, dy = _direction(m, sl, pos, gens, val)
             ax, ay = pos[sl.a]
             closures.append(dx * (y - ay) - dy * (x - ax))
+    for g in m.gears:
+        closures += _gear(m, g, gens, R)
     return pos, closures
+
+
+def _gear(m: Described, g: Gear, gens: dict[str, Poly], R: PolyRing) -> list[Poly]:
+    """The gear pair's relation ``z_b conj(z_c) = (conj(z_a) z_c)^n`` of the unit complex numbers
+    ``z = c + i s`` of the gears' links and the carrier (the ground: 1), for n > 0 (external gears
+    turn opposite ways relative to the carrier); ``z_b conj(z_c) = (z_a conj(z_c))^-n`` for n < 0:
+    real and imaginary parts."""
+    links = list(enumerate(m.links, 1))
+    carrier = next((i for i, link in links if g.a in link.points and g.b in link.points), None)
+    if carrier is None and not (g.a in m.fixed and g.b in m.fixed):
+        raise MechanismError(f"{where(g.source)}: no link holds both centres {g.a} and {g.b} (a carrier) and they are "
+                             "not both fixed")
+    one: tuple[Poly, Poly] = (R.one(), R.zero())
+    zc = (gens[f"c{carrier}"], gens[f"s{carrier}"]) if carrier else one
+
+    def turning(p: str) -> tuple[Poly, Poly]:
+        i = next((i for i, link in links if p in link.points and i != carrier), None)
+        if i is None:
+            raise MechanismError(f"{where(g.source)}: no link turns about {p} to carry its gear")
+        return gens[f"c{i}"], gens[f"s{i}"]
+    za, zb = turning(g.a), turning(g.b)
+    base = _mul(_conj(za), zc) if g.ratio > 0 else _mul(za, _conj(zc))
+    power = one
+    for _ in range(abs(g.ratio)):
+        power = _mul(power, base)
+    left = _mul(zb, _conj(zc))
+    return [left[0] - power[0], left[1] - power[1]]
+
+
+def _mul(z: tuple[Poly, Poly], w: tuple[Poly, Poly]) -> tuple[Poly, Poly]:
+    return z[0] * w[0] - z[1] * w[1], z[0] * w[1] + z[1] * w[0]
+
+
+def _conj(z: tuple[Poly, Poly]) -> tuple[Poly, Poly]:
+    return z[0], -z[1]
 
 
 def _direction(m: Described, sl: LineSlider, pos: dict[str, tuple[Poly, ...]], gens: dict[str, Poly],
@@ -188,4 +225,4 @@ def gruebler_kutzbach(m: Described) -> int:
         meet[sl.point] = meet.get(sl.point, 0) + 1
     revolute = sum(max(k - 1, 0) for k in meet.values())
     prismatic = sum(link.prismatic for link in m.links) + len(m.sliders)
-    return 3 * bodies - 2 * revolute - 2 * prismatic
+    return 3 * bodies - 2 * revolute - 2 * prismatic - len(m.gears)  # a gear pair: a higher pair, one constraint

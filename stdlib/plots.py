@@ -13,11 +13,9 @@ render it (the three are imported when a picture is drawn, not when the commands
 from __future__ import annotations
 
 import math
-import os
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, Callable, Sequence
+from typing import TYPE_CHECKING, Any, Sequence
 
-from mech.dsl.convert import parse_decimal
 from mech.dsl.errors import MechRuntimeError
 from mech.dsl.files import output_file
 from mech.dsl.values import IntVec, List
@@ -26,114 +24,16 @@ from mech.stdlib.analysis import Analysis, require_numeric, run_analysis
 from mech.stdlib.joints import LineSlider
 from mech.stdlib.mechanism import Mechanism
 from mech.dsl.registry import command
+from mech.stdlib.plot_sampling import (COLOURS, MAX_SAMPLES, TOLERANCE, _angles, _compile, _numpy,  # noqa: F401
+                                       _rational, _thin, _title, _value, sample_mode)  # (coupler.py, tests use them)
 
 if TYPE_CHECKING:
     from mech.stdlib._scene import Scene
 
-# matplotlib's tab10 colours
-COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
-           "#bcbd22", "#17becf"]
-MAX_SAMPLES = 100_000
-TOLERANCE = 1e-9  # largest residual of a drawn point
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
-# ---------------------------------------------------------------- sampling
-def _rational(c: Any) -> float:
-    return float(Fraction(int(c.p), int(c.q)))
-
-
-def _numpy() -> Any:
-    """numpy, with one BLAS thread unless the environment says otherwise (set before numpy's first
-    import): the plots' many small batched solves gain nothing from threads, and starting and
-    spinning them cost 0.3 s of a 0.6 s script here."""
-    for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-        os.environ.setdefault(var, "1")
-    import numpy
-    return numpy
-
-
-def _compile(polys: Sequence[Poly], nvars: int) -> Callable[[Any], Any]:
-    """The polynomials as one numpy function: an (N, nvars) array of points to the (N, len(polys))
-    array of their values."""
-    def term(e: tuple, c: Any) -> str:
-        factors = [repr(_rational(c))] + [f"x{i}" if k == 1 else f"x{i}**{k}" for i, k in enumerate(e) if k]
-        return "*".join(factors)
-    exprs = ["zero + " + (" + ".join(term(e, c) for e, c in p.terms.items()) or "0.0") for p in polys]
-    source = ("def f(x):\n    zero = np.zeros(len(x))\n"
-              + "".join(f"    x{i} = x[:, {i}]\n" for i in range(nvars))
-              + f"    return np.stack([{', '.join(exprs)}], axis=1)\n")
-    np = _numpy()
-    scope: dict[str, Any] = {"np": np}
-    exec(compile(source, "<polynomials>", "exec"), scope)
-    return scope["f"]
-
-
-def sample_mode(prime: Sequence[Poly], nlinks: int, count: int = 3000, seed: int = 0,
-                iterations: int = 40) -> Any:
-    """Points (rows of configuration-variable values) of ``V(prime)``: random angles (and prismatic
-    lengths in [-2, 2]) moved by minimum-norm Gauss–Newton steps in those parameters until the
-    residual of every generator is below 1e-12 or ``iterations`` steps are done; only the points
-    whose residual is below :data:`TOLERANCE` are returned."""
-    np = _numpy()
-    n = prime[0].ring.nvars
-    gens = _compile(prime, n)
-    jac = _compile([g.diff(j) for g in prime for j in range(n)], n)
-    rng = np.random.default_rng(seed)
-    params = np.column_stack([rng.uniform(-math.pi, math.pi, (count, nlinks)),
-                              rng.uniform(-2, 2, (count, n - 2 * nlinks))])
-
-    def point(p: Any) -> Any:
-        x = np.empty((len(p), n))
-        x[:, 0:2 * nlinks:2], x[:, 1:2 * nlinks:2] = np.cos(p[:, :nlinks]), np.sin(p[:, :nlinks])
-        x[:, 2 * nlinks:] = p[:, nlinks:]
-        return x
-
-    active = np.arange(count)
-    with np.errstate(all="ignore"):  # diverging points overflow
-        for _ in range(iterations):
-            x = point(params[active])
-            res = gens(x)
-            worst = np.abs(res).max(axis=1)
-            moving = np.isfinite(worst) & (worst >= 1e-12)  # diverged points stop too
-            active, x, res = active[moving], x[moving], res[moving]
-            if not len(active):
-                break
-            dx = jac(x).reshape(len(x), len(prime), n)
-            # chain rule: d/dtheta_i = -s_i d/dc_i + c_i d/ds_i
-            jp = np.concatenate([dx[:, :, 1:2 * nlinks:2] * x[:, None, 0:2 * nlinks:2]
-                                 - dx[:, :, 0:2 * nlinks:2] * x[:, None, 1:2 * nlinks:2],
-                                 dx[:, :, 2 * nlinks:]], axis=2)
-            # (J^T J + eps I) step = J^T res: the minimum-norm step as eps -> 0
-            jt = jp.transpose(0, 2, 1)
-            normal = jt @ jp
-            eps = 1e-12 * (1 + np.trace(normal, axis1=1, axis2=2))
-            normal += eps[:, None, None] * np.eye(normal.shape[1])
-            step = np.linalg.solve(normal, jt @ res[:, :, None])[:, :, 0]
-            params[active] -= step
-        x = point(params)
-        return x[np.abs(gens(x)).max(axis=1) < TOLERANCE]
-
-
-def _angles(x: Any, nlinks: int) -> Any:
-    np = _numpy()
-    return np.arctan2(x[:, 1:2 * nlinks:2], x[:, 0:2 * nlinks:2])
-
-
 # ---------------------------------------------------------------- pictures
-def _title(scene: Scene, text: str, centre: float) -> None:
-    from mech.stdlib._scene import FONT, Text
-    size = min(FONT, 2 * min(centre, scene.width - centre) / (0.62 * max(len(text), 1)))
-    scene.add(Text(centre, 22, text, size, cls="title"))
-
-
-def _thin(xy: Any) -> list:
-    """The pixel positions ``xy`` (an (N, 2) array) keeping one per half pixel."""
-    np = _numpy()
-    _, first = np.unique(np.round(xy * 2), axis=0, return_index=True)
-    return xy[np.sort(first)].tolist()
-
-
 def configuration_scene(m: Mechanism, a: Analysis, links: Sequence[int], count: int) -> Scene:
     """The configuration space of ``m`` (analysed in ``a``) in the angles of ``links`` (0-based)."""
     from mech.stdlib._scene import Axes2D, Axes3D, Markers, Scene, legend, pi_ticks
@@ -203,6 +103,10 @@ def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str
     _title(scene, title, 285)
     xs = [x for x, _ in xy.values()] + [x for x, _ in path]
     ys = [y for _, y in xy.values()] + [y for _, y in path]
+    circles = [c for g in m.gears for c in _pitch_circles(xy[g.a], xy[g.b], g.ratio)]
+    for (cx, cy), r in circles:
+        xs += [cx - r, cx + r]
+        ys += [cy - r, cy + r]
     pad = 0.25 * max(max(xs) - min(xs), max(ys) - min(ys), 1.0)
     axes = Axes2D((70, 40, 500, 390), (min(xs) - pad, max(xs) + pad), (min(ys) - pad, max(ys) + pad), equal=True)
     axes.frame(scene, nice_ticks(*axes.xrange), nice_ticks(*axes.yrange), "x", "y")
@@ -218,6 +122,8 @@ def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str
             a, b, _ = (float(Fraction(t)) for t in s.line)
             line = _clip(xy[s.point], (b, -a) if (a, b) != (0, 0) else (1.0, 0.0), (axes.xrange, axes.yrange))
         scene.add(Lines([[axes.map(*p) for p in line]], "grey", dash=True, cls="slider-line"))
+    if circles:
+        scene.add(Lines([_circle(axes, c, r) for c, r in circles], "#2ca02c", 1.5, cls="gears"))
     links = []
     for link in m.links:
         pts = [axes.map(*xy[p]) for p in link.points]
@@ -233,6 +139,19 @@ def mechanism_scene(m: Mechanism, xy: dict[str, tuple[float, float]], title: str
         u, v = axes.map(x, y)
         scene.add(Text(u + 8, v - 8, p, anchor="start", cls="point"))
     return scene
+
+
+def _pitch_circles(a: tuple[float, float], b: tuple[float, float], ratio: int) -> list[tuple[tuple[float, float], float]]:
+    """The pitch circles (centre, radius) of a gear pair centred at ``a`` and ``b``: radii in the
+    ratio's proportion, touching (external) or one inside the other (internal), ``|ab|`` apart."""
+    gap = math.dist(a, b)
+    rb = gap / (ratio + 1) if ratio > 0 else gap / (-ratio - 1)
+    return [(a, abs(ratio) * rb), (b, rb)]
+
+
+def _circle(axes: Any, centre: tuple[float, float], r: float) -> list:
+    cx, cy = centre
+    return [axes.map(cx + r * math.cos(t * math.pi / 36), cy + r * math.sin(t * math.pi / 36)) for t in range(73)]
 
 
 def _check_path(path: str) -> None:
@@ -260,23 +179,35 @@ def _plot(ctx: Any, m: Mechanism, path: str, links: Sequence[Any] | None, count:
     _check_path(path)
     if not 0 < count <= MAX_SAMPLES:
         raise MechRuntimeError(f"plotConfigurations: the number of samples must be in 1..{MAX_SAMPLES}, not {count}")
-    nlinks = len(m.links)
+    planar = m.dim == 2 and not m.joints
+    if planar:
+        what, names = "link", [f"θ{k}" for k in range(1, len(m.links) + 1)]
+    else:
+        from mech.stdlib.plots_spatial import coordinates
+        what, names = "coordinate", coordinates(m)
     if links is None:
-        if nlinks < 2:
-            raise MechRuntimeError("plotConfigurations needs at least two links")
-        links = list(range(1, min(nlinks, 3) + 1))
+        if len(names) < 2:
+            raise MechRuntimeError(f"plotConfigurations needs at least two {what}s")
+        links = list(range(1, min(len(names), 3) + 1))
     if len(links) not in (2, 3):
-        raise MechRuntimeError(f"plotConfigurations: give 2 or 3 link numbers, not {len(links)}")
+        raise MechRuntimeError(f"plotConfigurations: give 2 or 3 {what} numbers, not {len(links)}")
     for k in links:
         if type(k) is not int:
-            raise MechRuntimeError(f"plotConfigurations: the links are given by their numbers (int), not '{k}'")
-        if not 1 <= k <= nlinks:
-            raise MechRuntimeError(f"plotConfigurations: there is no link {k} (the links are 1..{nlinks})")
+            raise MechRuntimeError(f"plotConfigurations: the {what}s are given by their numbers (int), not '{k}'")
+        if not 1 <= k <= len(names):
+            known = "" if planar else f": {', '.join(names)}"
+            raise MechRuntimeError(f"plotConfigurations: there is no {what} {k} (the {what}s are "
+                                   f"1..{len(names)}{known})")
     if len(set(links)) < len(links):
-        raise MechRuntimeError(f"plotConfigurations: a link is repeated in {', '.join(map(str, links))}")
+        raise MechRuntimeError(f"plotConfigurations: a {what} is repeated in {', '.join(map(str, links))}")
     a = run_analysis(m)
     require_numeric(a, "plotConfigurations")
-    _write(ctx, configuration_scene(m, a, [k - 1 for k in links], count), path, f"configuration space of {m}")
+    if planar:
+        scene = configuration_scene(m, a, [k - 1 for k in links], count)
+    else:
+        from mech.stdlib.plots_spatial import space_configuration_scene
+        scene = space_configuration_scene(m, a, [k - 1 for k in links], count)
+    _write(ctx, scene, path, f"configuration space of {m}")
 
 
 @command("plotConfigurations", lib="mechanism.lib")
@@ -309,17 +240,6 @@ def plot_configurations_of(ctx, m: Mechanism, path: str, links: List | IntVec, c
     _plot(ctx, m, path, list(links.items if isinstance(links, List) else links.values), count)
 
 
-def _value(v: Any) -> float:
-    if isinstance(v, int):
-        return float(v)
-    if isinstance(v, str):
-        try:
-            return float(parse_decimal(v))
-        except (ValueError, OverflowError):
-            pass
-    raise MechRuntimeError(f"drawMechanism: '{v}' is not a number (integers or strings such as \"1/2\", \"0.25\")")
-
-
 def _evaluate(p: Poly, values: Sequence[float]) -> float:
     return sum(_rational(c) * math.prod(v ** k for v, k in zip(values, e)) for e, c in p.terms.items())
 
@@ -335,7 +255,11 @@ def _view(xyz: Sequence[float]) -> tuple[float, float]:
 
 @command("drawMechanism", lib="mechanism.lib")
 def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
-    """drawMechanism(m, list(c1,s1,c2,s2,...), "file.svg"): the mechanism in that configuration.
+    """drawMechanism(m, list(c1,s1,c2,s2,...), "file.svg"[, view]): the mechanism in that configuration.
+
+    A spatial mechanism is drawn in a cabinet projection (x to the right, z up, y receding), a loop
+    of joints in the isometric view, each joint with its axis; `view` chooses another: "front",
+    "side", "top", "iso" or list(azimuth, elevation) in degrees.
 
     Example:
       LIB "mechanism.lib";
@@ -345,6 +269,15 @@ def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
       → drawMechanism(m, list(0, 1), "m.svg");
       → ^~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~~
     """
+    _draw(ctx, m, config, path, None)
+
+
+@command("drawMechanism", lib="mechanism.lib")
+def draw_mechanism_in_view(ctx, m: Mechanism, config: List, path: str, view: str | List) -> None:
+    _draw(ctx, m, config, path, view)
+
+
+def _draw(ctx: Any, m: Mechanism, config: List, path: str, view: str | List | None) -> None:
     _check_path(path)
     if m.symbols():
         raise MechRuntimeError(f"drawMechanism needs numeric lengths (setLengths(m, ...) for "
@@ -358,10 +291,22 @@ def draw_mechanism(ctx, m: Mechanism, config: List, path: str) -> None:
     bad = max(abs(_evaluate(g, values)) for g in gens)
     if bad > 1e-6:
         raise MechRuntimeError(f"drawMechanism: the values are not a configuration (a constraint is {bad:.3g})")
-    if m.joints:
-        raise MechRuntimeError("drawMechanism draws mechanisms of points (planar, or spatial in an oblique view), "
-                               "not loops of joints")
-    pos, _ = m.positions(R)
-    xy = {p: _view([_evaluate(x, values) for x in xyz]) for p, xyz in pos.items()}
     title = ", ".join(f"{n}={v:.3g}" for n, v in zip(names, values))
-    _write(ctx, mechanism_scene(m, xy, title), path, f"{m} at {title}")
+    if m.dim == 2 and view is not None:
+        raise MechRuntimeError("drawMechanism: a view is for spatial mechanisms (this one is planar)")
+    if m.joints or view is not None:
+        from mech.stdlib.plots_spatial import check_helical, parse_view, space_scene
+        azim, elev = parse_view(view if view is not None else "iso", "drawMechanism")
+        config_ = dict(zip(names, values))
+        points = None
+        if m.joints:
+            check_helical(m, config_, "drawMechanism")
+        else:
+            pos, _ = m.positions(R)
+            points = {p: [_evaluate(x, values) for x in xyz] for p, xyz in pos.items()}
+        scene = space_scene(m, config_, title, azim, elev, points)
+    else:
+        pos, _ = m.positions(R)
+        xy = {p: _view([_evaluate(x, values) for x in xyz]) for p, xyz in pos.items()}
+        scene = mechanism_scene(m, xy, title)
+    _write(ctx, scene, path, f"{m} at {title}")

@@ -8,19 +8,22 @@ chart).  A body point is the body's origin plus the rotated local coordinates; b
 by walking from the fixed points (a body reaching a placed point closes with three polynomials).
 A point no body places has coordinates of its own, ``x_P, y_P, z_P``.  A bar (spherical joints at
 both ends) gives the polynomial ``|B - A|^2 - l^2``: its spin about its own axis, which moves
-nothing, is not a variable.  With the platform's points in its local x-y plane (w = 0) the
-equations of a Stewart–Gough platform are quadrics.
+nothing, is not a variable; a prismatic bar (``prismatic A B``: spherical, prismatic, spherical)
+has its length ``d_i`` as a variable, ``|B - A|^2 - d_i^2``.  With the platform's points in its
+local x-y plane (w = 0) the equations of a Stewart–Gough platform are quadrics.  A slider
+(``slider P A B``) keeps ``P`` on the line through two points of one link (a line that moves with
+it) or two fixed points: ``(B - A) x (P - A) = 0``.
 
-Constraint order: body closures, bars, then each body's orthonormality; variables: the bodies'
-frames (in the order of the links), the free points' coordinates, then the parameters as their
-own block.
+Constraint order: body closures, bars, sliders, then each body's orthonormality; variables: the
+bodies' frames (in the order of the links), the prismatic bars' lengths, the free points'
+coordinates, then the parameters as their own block.
 """
 from __future__ import annotations
 
 from fractions import Fraction
 
 from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
-from mech.stdlib.joints import Body, Described, Length, MechanismError
+from mech.stdlib.joints import Body, Described, Length, LineSlider, MechanismError, where
 
 
 Event = tuple[str, object]  # ("body", (i, link)) or ("free", point)
@@ -64,6 +67,7 @@ def variables(m: Described) -> list[str]:
     for i, link in enumerate(m.links, 1):
         if isinstance(link, Body):
             names += frame_names(i)
+    names += [f"d{i}" for i, link in enumerate(m.links, 1) if link.prismatic]
     for kind, p in walk(m):
         if kind == "free":
             names += [f"{x}_{p}" for x in "xyz"]
@@ -112,13 +116,30 @@ def positions(m: Described, R: PolyRing, values: dict[str, Length]
                 closures += [a - b for a, b in zip(x, pos[point])]
             else:
                 pos[point] = x
-    for link in m.links:
+    for i, link in enumerate(m.links, 1):
         if isinstance(link, Body):
             continue
         a, b = pos[link.points[0]], pos[link.points[1]]
-        length = val(link.local[0][0])
+        length = gens[f"d{i}"] if link.prismatic else val(link.local[0][0])
         closures.append(sum(((q - p) ** 2 for p, q in zip(a, b)), R.zero()) - length ** 2)
+    for sl in m.sliders:
+        closures += _on_line(m, sl, pos)
     return pos, closures
+
+
+def _on_line(m: Described, sl: LineSlider, pos: dict[str, tuple[Poly, ...]]) -> list[Poly]:
+    """``P`` on the line through ``A`` and ``B`` (two points of one link, or fixed): the cross
+    product ``(B - A) x (P - A) = 0`` (three polynomials, two of them independent)."""
+    if not any(sl.a in link.points and sl.b in link.points for link in m.links) \
+            and not (sl.a in m.fixed and sl.b in m.fixed):
+        raise MechanismError(f"{where(sl.source)}: {sl.a} and {sl.b} are neither points of one link (a line "
+                             "that moves with it) nor fixed points")
+    if sl.point not in pos:
+        raise MechanismError(f"{m.name}: slider point {sl.point} is not on any link")
+    a = pos[sl.a]
+    d = [q - p for p, q in zip(a, pos[sl.b])]
+    e = [q - p for p, q in zip(a, pos[sl.point])]
+    return [d[1] * e[2] - d[2] * e[1], d[2] * e[0] - d[0] * e[2], d[0] * e[1] - d[1] * e[0]]
 
 
 def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
@@ -147,4 +168,5 @@ def gruebler_kutzbach(m: Described) -> int:
             meet[p] = meet.get(p, 0) + 1
     spherical = sum(max(k - 1, 0) for k in meet.values())
     bars = sum(not isinstance(link, Body) for link in m.links)
-    return 6 * len(m.links) - 3 * spherical - bars
+    prismatic = sum(link.prismatic for link in m.links)
+    return 6 * len(m.links) - 3 * spherical - bars + prismatic - 2 * len(m.sliders)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import pytest
 
 from mech import Session
+from mech.dsl.errors import MechError
 from mech.dsl.printing import poly_str
 from mech.stdlib.analysis import analyze
 from mech.stdlib.joints import all_forms, classes, keywords, syntax
@@ -83,14 +84,28 @@ def test_block_form_accepts_the_new_statements():
                                      "slider P a b c | slider P A B), not 2"),
     ("fix O; bar O A", "statement 2 'bar O A': 'bar' takes 3 arguments (bar A B l), not 2"),
     ("fix O; rod O A 1", "statement 2 'rod O A 1': unknown statement 'rod' (expected ground, fix, bar, prismatic, "
-                         "body, slider, revolute, cylindrical or universal)"),
+                         "body, slider, revolute, cylindrical, universal, helical or gear)"),
     ("fix O 0 0 0; fix P 1 0", "statement 1 'fix O 0 0 0' is spatial but statement 2 'fix P 1 0' is planar: "
                                "a mechanism is either planar or spatial"),
     ("revolute A; revolute A; revolute B",
      "statement 2 'revolute A': the joint name A is used by statement 1 'revolute A' already (name each joint once)"),
     ("revolute A; revolute B", "statement 2 'revolute B': a loop needs at least three joints, not 2"),
     ("revolute A; revolute B; revolute C; fix O", "statement 4 'fix O': a loop of joints (revolute, prismatic, "
-     "cylindrical, universal) is described by its joints alone: points, bars and bodies cannot be added to it"),
+     "cylindrical, universal, helical) is described by its joints alone: points, bars and bodies cannot be added to it"),
+    ("fix O; fix Q 2 0; bar O A 1; bar Q B 1; gear O Q 1/2", "statement 5 'gear O Q 1/2': the gear ratio is a "
+     "non-zero integer (the number of turns of the gear at Q per turn of the one at O), not 1/2"),
+    ("fix O; fix Q 2 0; bar O A 1; bar Q B 1; gear O Q 0", "statement 5 'gear O Q 0': the gear ratio is a non-zero "
+     "integer (the number of turns of the gear at Q per turn of the one at O), not 0"),
+    ("fix O; fix Q 2 0; bar O A 1; bar Q B 1; gear O Q -1", "statement 5 'gear O Q -1': an internal gear pair of "
+     "ratio -1 would have two gears of one size, one inside the other"),
+    ("fix O; bar O A 1; gear O X 2", "statement 3 'gear O X 2': X is not a point of any link or fixed point "
+                                     "(an undefined point: a misspelt name?)"),
+    ("helical A a 1; revolute B; revolute C", "statement 1 'helical A a 1': a helical joint needs its pitch "
+                                               "(helical J pitch P: the slide per radian of turn)"),
+    ("helical A pitch 0; revolute B; revolute C",
+     "statement 1 'helical A pitch 0': a helical joint of pitch 0 does not slide: write revolute A"),
+    ("helical A pitch p; revolute B; revolute C",
+     "statement 1 'helical A pitch p': the pitch of a helical joint is a number, not the name 'p'"),
     ("revolute A a -1; revolute B; revolute C",
      "statement 1 'revolute A a -1': a is the distance between the joint axes (a length >= 0), not -1"),
     ("revolute A twist 1 1; revolute B; revolute C", "statement 1 'revolute A twist 1 1': twist 1 1: cos^2 + sin^2 "
@@ -201,6 +216,24 @@ def test_draw_moving_slots_and_spatial_points(tmp_path, monkeypatch):
               'mechanism t = "fix O 0 0 0; fix P 2 0 0; fix Q 0 2 0; bar O A 2; bar P A 2; bar Q A 2";\n'
               'drawMechanism(t, list(1, 1, "1.4142135623730951"), "t.svg");\n')
     assert "slider-line" in (tmp_path / "q.svg").read_text() and "links" in (tmp_path / "t.svg").read_text()
-    e = error('LIB "mechanism.lib";\nmechanism b = "revolute A a 1 twist 0 1; revolute B a 4/5 twist 3/5 4/5; '
+    s.execute('mechanism b = "revolute A a 1 twist 0 1; revolute B a 4/5 twist 3/5 4/5; '
               'revolute C a 1 twist 0 1; revolute D a 4/5 twist 3/5 4/5";\ndrawMechanism(b, list(-1, 0, 1, 0), "b.svg");\n')
-    assert e.message.endswith("not loops of joints")
+    assert "joint-axes" in (tmp_path / "b.svg").read_text()  # loops of joints: tests/stdlib/test_plots_spatial.py
+
+
+def test_gear_pairs():
+    """A gear pair of integer ratio n: (c_b + i s_b) conj(z_carrier) = (conj(z_a) z_carrier)^n, written out by
+    hand for the ground as carrier (n = 2) and for a carrier link (n = 1); one constraint in the count."""
+    m = parse_mechanism("ground O Q 2; bar O A 1; bar Q B 1; bar A C 2; bar B C 2; gear O Q 2")
+    _, gens = m.constraints()
+    assert {poly_str(g) for g in gens} >= {"-c1^2+s1^2+c2", "2*c1*s1+s2"}
+    assert m.gruebler_kutzbach() == 1 and str(m).endswith("; gear O Q 2")
+    m = parse_mechanism("fix O; bar O P 2; bar O A 1; bar P B 1; gear O P 1")  # the carrier: link 1 (O P)
+    _, gens = m.constraints()
+    # z3 conj(z1) = conj(z2) z1: real part c3 c1 + s3 s1 - (c2 c1 + s2 s1), imaginary s3 c1 - c3 s1 - (c2 s1 - s2 c1)
+    assert [poly_str(g) for g in gens] == ["-c1*c2-s1*s2+c1*c3+s1*s3", "-s1*c2+c1*s2-s1*c3+c1*s3",
+                                           "c1^2+s1^2-1", "c2^2+s2^2-1", "c3^2+s3^2-1"]
+    with pytest.raises(MechError) as e:
+        Session().execute('LIB "mechanism.lib"; mechanism m = "fix O; bar O A 1; bar A B 1; gear A B 1"; '
+                          'constraints(m);')
+    assert "statement 4 'gear A B 1': no link turns about B to carry its gear" in str(e.value)

@@ -39,6 +39,9 @@ def description(name: str) -> str:
     ("spatial4r", 0, 2, 2),
     ("spherical4r", 1, 1, None),
     ("stewart", 0, 1, 16),
+    ("spatial_slider", 1, 1, None),
+    ("twoloops", 1, 1, None),
+    ("screw", 2, 1, None),  # the helical coupling is not in the ideal: the screw itself has one freedom
 ])
 def test_examples(name, mobility, modes, configurations, tmp_path):
     d = example(name, tmp_path)
@@ -129,6 +132,22 @@ def test_planar_points_in_singular(name, names, eqs, mobility, modes, tmp_path):
     assert (d["mobility"], len(d["motion_modes"])) == (mobility, modes)
 
 
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+@pytest.mark.parametrize("name, names, eqs, mobility, modes", [
+    # the rail's point A = (ax, ay, 0) on the door's circle; X on the vertical line through it, |X - Q| = 2
+    ("spatial_slider", ["ax", "ay", "x", "y", "z"], ["ax^2+ay^2-4", "x-ax", "y-ay", "(x-3)^2+y^2+z^2-4"], 1, 1),
+    # the flap's hinge through A = (ax, ay, 0) along (-ay, ax, 0); E at 1 from A, square to the hinge, |E - Q| = 2
+    ("twoloops", ["ax", "ay", "ex", "ey", "ez"],
+     ["ax^2+ay^2-4", "(ex-ax)^2+(ey-ay)^2+ez^2-1", "-(ex-ax)*ay+(ey-ay)*ax", "ex^2+(ey-3)^2+(ez-1)^2-4"], 1, 1),
+])
+def test_spatial_points_in_singular(name, names, eqs, mobility, modes, tmp_path):
+    assert singular_dim_and_primes(names, eqs) == (mobility, modes)
+    d = example(name, tmp_path)
+    assert (d["mobility"], len(d["motion_modes"])) == (mobility, modes)
+    assert d["gruebler_kutzbach"] == {"spatial_slider": 0, "twoloops": -1}[name]
+
+
 def stewart_ideal(base, platform, legs) -> tuple[list[str], list[str]]:
     """Platform points p1, p2, p3 as variables (their distances fixed), each leg |p - b|^2 = l^2."""
     names = [f"p{i}{x}" for i in (1, 2, 3) for x in "xyz"]
@@ -160,3 +179,49 @@ def test_stewart_assembly_modes_in_singular(tmp_path):
     for pose in modes["poses"]:                 # each real pose: legs of the design's lengths (to 4 decimals)
         p1 = [float(c) for c in pose["points"]["P1"]]
         assert abs(sum(c * c for c in p1) - 25) < 1e-2
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_screw_against_a_cylindrical_joint_in_singular(tmp_path):
+    """The screw's ideal is that of the same loop with a cylindrical joint (written here in the angles of
+    screw and nut and the slides): dimension 2, one prime; the helical coupling takes one freedom off."""
+    names = ["c1", "s1", "c2", "s2", "h", "t"]  # screw angle, nut-on-screw angle and slide, nut slide
+    eqs = ["c1^2+s1^2-1", "c2^2+s2^2-1", "c1*c2-s1*s2-1", "s1*c2+c1*s2", "h+t"]  # the nut does not turn
+    assert singular_dim_and_primes(names, eqs) == (2, 1)
+    d = example("screw", tmp_path)
+    assert (d["mobility"], len(d["motion_modes"])) == (2, 1)
+
+
+@pytest.mark.slow
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_geared_fivebar_in_singular(tmp_path):
+    """The geared five-bar in the points: A on the unit circle about O, B - Q = conj(A - O)^2 (the gear at Q
+    turns twice as fast, the other way), |C - A| = |C - B| = 2: dimension 1, one prime; mech's analysis agrees
+    (about a minute: the gears' relation has degree 2)."""
+    names = ["a1", "a2", "b1", "b2", "x", "y"]
+    eqs = ["a1^2+a2^2-1", "b1-(a1^2-a2^2)", "b2+2*a1*a2", "(x-a1)^2+(y-a2)^2-4", "(x-2-b1)^2+(y-b2)^2-4"]
+    assert singular_dim_and_primes(names, eqs) == (1, 1)
+    d = example("geared_fivebar", tmp_path)
+    assert (d["mobility"], len(d["motion_modes"])) == (1, 1)
+    assert "gruebler_kutzbach" not in d  # shown only when it differs from the mobility: the count is 1 too
+
+
+def test_sliders_and_prismatic_legs_in_space():
+    """In space a slider keeps its point on the line of two points of one link (three cross-product
+    polynomials), a prismatic bar's length d_i is a variable (|B - A|^2 = d_i^2), and a slider on
+    two points of different links is refused, naming the statement."""
+    m = parse_mechanism("fix O 0 0 0; fix Q 1 0 0; prismatic O A; bar Q A 1")
+    R, gens = m.constraints()
+    assert m.variables() == ["d1", "x_A", "y_A", "z_A"] and m.gruebler_kutzbach() == 2
+    assert [poly_str(g) for g in gens] == ["-d1^2+x_A^2+y_A^2+z_A^2", "x_A^2+y_A^2+z_A^2-2*x_A"]
+    from mech import Session
+    shown = Session().execute(f'LIB "mechanism.lib"; mechanism m = "{m}"; jointAngles(m, list(2, 2, 0, 0));')
+    assert shown == "d1 2\n"  # A = (2, 0, 0): the leg's length 2
+    m = parse_mechanism("fix O 0 0 0; fix P 2 0 0; bar O X 3; slider X O P")  # X on the x-axis: X = (+-3, 0, 0)
+    R, gens = m.constraints()
+    assert [poly_str(g) for g in gens] == ["x_X^2+y_X^2+z_X^2-9", "-2*z_X", "2*y_X"]  # the x-component is 0
+    with pytest.raises(Exception) as e:
+        parse_mechanism("fix O 0 0 0; fix P 2 0 0; bar O X 3; bar P Y 1; slider X O Y").constraints()
+    assert "statement 5 'slider X O Y': O and Y are neither points of one link" in str(e.value)

@@ -366,12 +366,13 @@ def test_docs_examples(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     s = Session()
     blocks = code_blocks(ROOT / "docs" / "mechanisms.md")
-    assert len(blocks) == 8
+    assert len(blocks) == 10
     for code, expected in blocks:
         out = s.execute(code)
         if expected is not None:
             assert out == expected
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["fourbar_13.png", "fourbar_modes.svg", "q1.svg"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bennett_AC.svg", "bennett_top.svg", "fourbar_13.png", "fourbar_modes.svg",
+                                                          "q1.svg"]
 
 
 def test_readme_example():
