@@ -95,9 +95,10 @@ class M2Interpreter(M2Control, Interpreter):
         return self.ring
 
     def use(self, ring: M2Ring) -> None:
-        """Make ``ring`` current and its variables the values of their names."""
+        """Make ``ring`` current and its own variables the values of their names (a tower's
+        coefficient variables keep their ring, whose elements promote)."""
         self.ring = ring
-        for i, name in enumerate(ring.names):
+        for i, name in enumerate(ring.names[:len(ring.own) or None]):
             self.globals.pop(name, None)  # as Macaulay2: the name's value is now the variable
             self.symbols[name] = normal(ring.poly.gen(i))
 

@@ -13,6 +13,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..kernel import Poly
+from .m2_rings import tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, M2Function, M2Set,
                         MonomialIdeal, Opt, Partial, RingMap, Symbol, Tally)
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring
@@ -51,30 +52,11 @@ def _terms(p: Poly, names: tuple[str, ...], coeffs: list[tuple[tuple[int, ...], 
 def poly_str(p: Poly) -> str:
     if not p.terms:
         return "0"
-    ring = p.ring
-    own = _own_count(p)
-    if own < ring.nvars:  # a tower: coefficients are polynomials of the coefficient ring
-        groups: dict[tuple[int, ...], dict] = {}
-        for e, c in p.sorted_terms():
-            groups.setdefault(e[:own], {})[e[own:]] = c
-        parts = []
-        for e, sub in groups.items():
-            coeff = _coefficient(ring, own, sub)
-            parts.append((e, coeff, len(sub) > 1))
-        return _terms(p, ring.names[:own], parts)
-    return _terms(p, ring.names, [(e, coeff_str(ring.field, c), False) for e, c in p.sorted_terms()])
-
-
-def _own_count(p: Poly) -> int:
-    r = getattr(p.ring, "owner", None)
-    return len(r.own) if r is not None and r.own else p.ring.nvars
-
-
-def _coefficient(ring: Any, own: int, terms: dict) -> str:
-    """A tower's coefficient (the terms in the coefficient ring's variables) as text."""
-    base = ring.owner.base
-    sub = Poly(base.poly, terms) if hasattr(base, "poly") else None
-    return poly_str(sub) if sub is not None else coeff_str(ring.field, next(iter(terms.values())))
+    split = tower_terms(p)
+    if split is not None:  # a tower: coefficients are polynomials of the coefficient ring
+        names = p.ring.names[:len(split[0][0])]
+        return _terms(p, names, [(e, poly_str(c), len(c.terms) > 1) for e, c in split])
+    return _terms(p, p.ring.names, [(e, coeff_str(p.ring.field, c), False) for e, c in p.sorted_terms()])
 
 
 def _atomic(s: str) -> bool:

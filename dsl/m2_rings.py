@@ -230,3 +230,41 @@ def reduce_all(ring: M2Ring, polys: Sequence[Poly]) -> list[Poly]:
         if not q.is_zero() and q not in out:
             out.append(q)
     return out
+
+
+# ---------------------------------------------------------------- towers
+def degree_vectors(ring: M2Ring) -> list[tuple[int, ...]]:
+    """The degree of each flattened variable as Macaulay2 grades a tower: ``A[x]`` gives its own
+    variables ``{d, 0, ...}`` and ``A``'s ``{0, degree in A}`` (one component in a plain ring)."""
+    if isinstance(ring.base, M2Ring):
+        below = degree_vectors(ring.base)
+        width = 1 + (len(below[0]) if below else 1)
+        own = [(d,) + (0,) * (width - 1) for d in ring.degrees[:len(ring.own)]]
+        return own + [(0,) + v for v in below]
+    return [(d,) for d in (ring.degrees or (1,) * ring.poly.nvars)]
+
+
+def term_degree(e: tuple[int, ...], vecs: Sequence[tuple[int, ...]]) -> tuple[int, ...]:
+    """The degree vector of the monomial with exponent ``e`` (``vecs``: :func:`degree_vectors`)."""
+    return tuple(sum(k * v[j] for k, v in zip(e, vecs)) for j in range(len(vecs[0]) if vecs else 1))
+
+
+def multidegree(p: Poly) -> tuple[int, ...]:
+    """``degree p`` in Macaulay2: the componentwise largest degree vector of p's terms."""
+    ring = owner(p)
+    vecs = degree_vectors(ring) if ring is not None else [(1,)] * p.ring.nvars
+    degs = [term_degree(e, vecs) for e in p.terms]
+    return tuple(max(d[j] for d in degs) for j in range(len(degs[0])))
+
+
+def tower_terms(p: Poly) -> Optional[list[tuple[tuple[int, ...], Poly]]]:
+    """The terms of ``p`` in a tower ``A[x]`` as (exponent of the own variables, coefficient in
+    ``A``), from the largest down; None when ``p``'s ring is no tower."""
+    ring = owner(p)
+    if ring is None or not isinstance(ring.base, M2Ring):
+        return None
+    own = len(ring.own)
+    groups: dict[tuple[int, ...], dict] = {}
+    for e, c in p.sorted_terms():
+        groups.setdefault(e[:own], {})[e[own:]] = c
+    return [(e, Poly(ring.base.poly, sub)) for e, sub in groups.items()]

@@ -17,7 +17,7 @@ from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_values import Factored, Opt
 from ..dsl.m2_ops import lift_to
-from ..dsl.m2_rings import in_quotients, normal
+from ..dsl.m2_rings import in_quotients, multidegree, normal, owner, promote, promotes
 from ..dsl.registry import command, operator
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
 from ..kernel import Poly
@@ -227,7 +227,11 @@ def submatrix(M: Matrix, cols: List) -> Matrix:
 def _indices(ring: Any, variables: Any) -> list[int]:
     items = variables.items if isinstance(variables, (List, ExprList)) else [variables]
     out = []
+    target = getattr(ring, "owner", None)
     for v in items:
+        if isinstance(v, Poly) and target is not None and v.ring is not ring and owner(v) is not None \
+                and promotes(owner(v), target):
+            v = promote(v, target, check=False)
         if not isinstance(v, Poly) or len(v.terms) != 1 or sum(v.lm()) != 1 or v.lc() != v.ring.field.one:
             raise MechRuntimeError(f"expected ring variables, got {to_string(v)}")
         out.append(v.lm().index(1))
@@ -340,9 +344,7 @@ def degree(I: Ideal | Poly) -> Any:
     if isinstance(I, Poly):
         if I.is_zero():
             raise MechRuntimeError("degree of the zero polynomial: -infinity (not a value of mech)")
-        owner = getattr(I.ring, "owner", None)
-        degs = owner.degrees if owner is not None and owner.degrees else (1,) * I.ring.nvars
-        return List([max(sum(d * k for d, k in zip(degs, e)) for e in I.terms)])
+        return List(list(multidegree(I)))
     from ..kernel.hilbert import mult
     return mult([p.lm() for p in _gb(I).gens], I.ring.nvars)
 

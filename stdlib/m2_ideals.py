@@ -9,7 +9,8 @@ from __future__ import annotations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
-from ..dsl.m2_rings import M2Ring, in_quotients, normal, quotient_ring
+from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, normal, quotient_ring, term_degree,
+                             tower_terms)
 from ..dsl.m2_values import MonomialIdeal, RingMap
 from ..dsl.registry import command
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
@@ -157,50 +158,75 @@ def support(f: Poly | Ideal) -> List:
 @command("terms", dialect="m2")
 @in_quotients
 def terms(f: Poly) -> List:
-    """terms f: f's terms, from the largest down."""
+    """terms f: f's terms, from the largest down (in a tower A[x]: monomials in x times elements of A)."""
+    split = tower_terms(f)
+    if split is not None:
+        return List([_tower_term(f.ring, e, c) for e, c in split])
     return List([f.ring.monomial(e, c) for e, c in f.sorted_terms()])
+
+
+def _tower_term(ring: PolyRing, e: tuple[int, ...], c: Poly) -> Poly:
+    """The term ``c * x^e`` of a tower (``c`` in its coefficient ring)."""
+    return Poly(ring, {e + k: v for k, v in c.terms.items()})
 
 
 @command("leadTerm", dialect="m2")
 @in_quotients
 def lead_term(f: Poly | Ideal | Matrix) -> Any:
-    """leadTerm f: the largest term; leadTerm I: the matrix of the lead terms of a Gröbner basis;
-    leadTerm M (one row): the lead term of each entry."""
+    """leadTerm f: the largest term (in a tower A[x]: with its whole coefficient in A); leadTerm I:
+    the matrix of the lead terms of a Gröbner basis; leadTerm M (one row): the lead term of each entry."""
     if isinstance(f, Matrix):
         if f.nrows != 1:
             raise MechRuntimeError("leadTerm of a matrix with several rows (module elements) is not supported")
-        return Matrix(f.ring, 1, f.ncols, [g.lt() if not g.is_zero() else g for g in f.entries])
+        return Matrix(f.ring, 1, f.ncols, [lead_term(g) for g in f.entries])
     if isinstance(f, Ideal):
-        lts = [g.lt() for g in _gb(f).gens]
+        lts = [lead_term(g) for g in _gb(f).gens]
         return Matrix(f.ring, 1, len(lts), lts)
-    return f.lt() if not f.is_zero() else f
+    if f.is_zero():
+        return f
+    split = tower_terms(f)
+    return _tower_term(f.ring, *split[0]) if split is not None else f.lt()
 
 
 @command("leadMonomial", dialect="m2")
 @in_quotients
 def lead_monomial(f: Poly) -> Poly:
-    """leadMonomial f: the largest monomial (without its coefficient)."""
+    """leadMonomial f: the largest monomial (without its coefficient; in a tower A[x]: a monomial in x)."""
     if f.is_zero():
         raise MechRuntimeError("leadMonomial of 0")
+    split = tower_terms(f)
+    if split is not None:
+        return f.ring.monomial(split[0][0] + (0,) * (f.ring.nvars - len(split[0][0])))
     return f.ring.monomial(f.lm())
 
 
 @command("leadCoefficient", dialect="m2")
 @in_quotients
 def lead_coefficient(f: Poly) -> Any:
-    """leadCoefficient f: the coefficient of the largest term."""
+    """leadCoefficient f: the coefficient of the largest term (in a tower A[x]: an element of A)."""
     if f.is_zero():
         return 0
+    split = tower_terms(f)
+    if split is not None:
+        return split[0][1]
     return Number(f.ring, f.lc())
+
+
+@command("degrees", dialect="m2")
+@in_quotients
+def degrees(R: Ring) -> List:
+    """degrees R: the degree (a list) of each of R's own variables."""
+    vecs = degree_vectors(_owner(R.poly))[:len(R.own) or None]
+    return List([List(list(v)) for v in vecs])
 
 
 @command("isHomogeneous", dialect="m2")
 @in_quotients
 def is_homogeneous(f: Poly | Ideal) -> bool:
     """isHomogeneous f: whether f (every generator of I) is homogeneous for the ring's degrees."""
-    degs = _owner(f.ring).degrees or (1,) * f.ring.nvars
+    vecs = degree_vectors(_owner(f.ring))
     polys = f.gens if isinstance(f, Ideal) else [f]
-    return all(len({sum(d * k for d, k in zip(degs, e)) for e in p.terms}) <= 1 for p in polys)
+    return all(len({term_degree(e, vecs) for e in p.terms}) <= 1 for p in polys)
 
 
 def _homogenize(p: Poly, i: int, degs: tuple) -> Poly:

@@ -34,6 +34,22 @@ print (ideal(x^2) == ideal(y))
     ("towers", """T = QQ[t][u];
 print toString ((t+1)*u^2 - t + (t*u)^2)
 """, "(t^2+t+1)*u^2-t\n"),
+    ("tower_terms_and_degrees", """R = QQ[a..d]; S = R[x,y];
+f = a*x+b*x+c*x*y+c*x^3+1+a+a^2*x^3
+print toString terms f
+print toString leadTerm f
+print toString leadMonomial f
+print toString leadCoefficient f
+print toString degree f
+print toString degree (x+a^5)
+print toString degree (a^5+a)
+print toString degrees S
+print toString isHomogeneous(x+a)
+print toString support f
+U = QQ[a][b][z];
+print toString degree (z*b+a^3)
+""", "{(a^2+c)*x^3, c*x*y, (a+b)*x, a+1}\n(a^2+c)*x^3\nx^3\na^2+c\n{3, 2}\n{1, 5}\n{5}\n"
+     "{{1, 0}, {1, 0}}\nfalse\n{x, y, a, b, c}\n{1, 1, 3}\n"),
     ("operators", """R = QQ[x,y];
 print ({1,2} | {3})
 print toString (0..<3)
