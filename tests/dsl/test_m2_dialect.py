@@ -35,7 +35,7 @@ print (ideal(x^2) == ideal(y))
 print toString ((t+1)*u^2 - t + (t*u)^2)
 """, "(t^2+t+1)*u^2-t\n"),
     ("tower_terms_and_degrees", """R = QQ[a..d]; S = R[x,y];
-f = a*x+b*x+c*x*y+c*x^3+1+a+a^2*x^3
+f = a*x+b*x+c*x*y+c*x^3+1+a+a^2*x^3;
 print toString terms f
 print toString leadTerm f
 print toString leadMonomial f
