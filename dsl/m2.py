@@ -177,7 +177,10 @@ class M2Interpreter(M2Control, Interpreter):
             if name in self.symbols:
                 return self.symbols[name]
             if base.id in self.commands:
-                return Partial(CommandRef(self.commands[base.id]), i)
+                cmd = self.commands[base.id]
+                if any(getattr(ov.func, "subscript_value", False) for ov in cmd.overloads):  # id_M
+                    return self.invoke(cmd, [i])
+                return Partial(CommandRef(cmd), i)
             return Symbol(name)
         return self._entry(self.eval(base), self.eval(node.index))
 

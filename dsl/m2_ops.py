@@ -10,6 +10,7 @@ from typing import Any, Callable, Optional
 
 from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
+from .m2_modules import FreeModule, quotient_module
 from .m2_rings import M2Ring, common_ring, normal, owner, promote, quotient_ring
 from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -107,6 +108,12 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return CoeffRing(b, f"ZZ/{b}")
     if op == "/" and isinstance(a, M2Ring):
         return quotient_ring(a, _relations(a, b))
+    if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):
+        return free_module(a, b)
+    if op == "/" and isinstance(a, FreeModule):
+        return quotient_module(a, b)
+    if op in ("==", "!=") and isinstance(a, FreeModule) and isinstance(b, FreeModule):
+        return (a == b) == (op == "==")
     if op == "//":
         return _floor_div(a, b)
     if op == "%" and type(a) is int and type(b) is int:
@@ -114,6 +121,16 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
             raise MechRuntimeError("division by 0")
         return a % b
     return _arith(op, a, b, current, fallback)
+
+
+def free_module(R: M2Ring, b: int | List) -> FreeModule:
+    """``R^n`` (generators of degree 0) or ``R^{d1, ...}`` (generators of degrees -d1, ...)."""
+    if type(b) is int:
+        if b < 0:
+            raise MechRuntimeError("R^n takes n >= 0")
+        return FreeModule(R, (0,) * b)
+    degs = [d.items[0] if isinstance(d, List) and len(d.items) == 1 else d for d in b.items]
+    return FreeModule(R, tuple(-to_int(d) for d in degs))
 
 
 def _relations(R: M2Ring, b: Any) -> list[Poly]:

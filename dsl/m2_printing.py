@@ -13,6 +13,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..kernel import Poly
+from .m2_modules import CyclicModule, FreeModule
 from .m2_rings import tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, M2Function, M2Set,
                         MonomialIdeal, Opt, Partial, RingMap, Symbol, Tally)
@@ -109,6 +110,11 @@ def to_string(v: Any) -> str:
         return "*".join(parts)
     if isinstance(v, (Ring, CoeffRing)):
         return v.name or v.describe() if hasattr(v, "describe") else v.name
+    if isinstance(v, FreeModule):
+        return f"{to_string(v.ring)}^{v.rank}"
+    if isinstance(v, CyclicModule):
+        gens = ", ".join(poly_str(g) for g in v.ideal.gens)
+        return f"cokernel matrix {{{{{gens}}}}}"
     if isinstance(v, RingMap):
         return f"map({to_string(v.target)},{to_string(v.source)},{{{', '.join(poly_str(p) for p in v.images)}}})"
     if isinstance(v, (M2Function, CommandRef, Composed, Partial)):

@@ -205,14 +205,6 @@ def entries(M: Matrix) -> List:
     return List([List(r) for r in M.rows()])
 
 
-@command("transpose", dialect="m2")
-@in_quotients
-def transpose(M: Matrix) -> Matrix:
-    """transpose M."""
-    return Matrix(M.ring, M.ncols, M.nrows, [M.get(i, j) for j in range(1, M.ncols + 1)
-                                             for i in range(1, M.nrows + 1)])
-
-
 @command("submatrix", dialect="m2")
 @in_quotients
 def submatrix(M: Matrix, cols: List) -> Matrix:
@@ -573,6 +565,10 @@ def equal(a: Any, b: Any) -> bool:
         return getattr(a.ring, "owner", b) is b and _is_unit(a)
     if isinstance(a, Ideal) and type(b) is int and b in (0, 1):
         return _is_unit(a) if b == 1 else not _gb(a).nonzero()
+    if isinstance(a, Matrix) and isinstance(b, Matrix):  # entry by entry (maps of any degrees)
+        return a.ring is b.ring and a.shape == b.shape and a.entries == b.entries
+    if isinstance(a, Matrix) and type(b) is int and b == 0:
+        return all(p.is_zero() for p in a.entries)
     return NotImplemented
 
 

@@ -165,6 +165,20 @@ def terms(f: Poly) -> List:
     return List([f.ring.monomial(e, c) for e, c in f.sorted_terms()])
 
 
+@command("terms", dialect="m2")
+@in_quotients
+def terms_over(k: Any, f: Poly) -> List:
+    """terms(k, f): f's terms with k (a ring f's ring is built on) as the coefficient ring."""
+    below = k.poly.nvars if isinstance(k, M2Ring) else 0
+    if isinstance(k, M2Ring) and (k.poly.names != f.ring.names[f.ring.nvars - below:]):
+        raise MechRuntimeError("terms(k, f): f's ring is not built on k")
+    own = f.ring.nvars - below
+    groups: dict[tuple[int, ...], dict] = {}
+    for e, c in f.sorted_terms():
+        groups.setdefault(e[:own], {})[e[own:]] = c
+    return List([Poly(f.ring, {e + k2: c for k2, c in sub.items()}) for e, sub in groups.items()])
+
+
 def _tower_term(ring: PolyRing, e: tuple[int, ...], c: Poly) -> Poly:
     """The term ``c * x^e`` of a tower (``c`` in its coefficient ring)."""
     return Poly(ring, {e + k: v for k, v in c.terms.items()})
