@@ -112,3 +112,25 @@ def quotient_module(F: FreeModule, I: Any) -> CyclicModule:
     if not isinstance(I, Ideal) or I.ring is not F.ring.poly:
         raise MechTypeError("R^1 / I takes an ideal of R")
     return CyclicModule(I)
+
+
+def columns(M: Matrix, cols: Sequence[int]) -> Map:
+    """``M_{j1, j2, ...}``: the columns (from 0, negative from the end)."""
+    cols = [_index(j, M.ncols, "column") for j in cols]
+    src = source_of(M)
+    entries = [M.get(i + 1, j + 1) for i in range(M.nrows) for j in cols]
+    return Map(target_of(M), FreeModule(src.ring, tuple(src.degrees[j] for j in cols)), entries, map_degree(M))
+
+
+def rows(M: Matrix, rows_: Sequence[int]) -> Map:
+    """``M^{i1, i2, ...}``: the rows (from 0, negative from the end)."""
+    rows_ = [_index(i, M.nrows, "row") for i in rows_]
+    tgt = target_of(M)
+    entries = [M.get(i + 1, j + 1) for i in rows_ for j in range(M.ncols)]
+    return Map(FreeModule(tgt.ring, tuple(tgt.degrees[i] for i in rows_)), source_of(M), entries, map_degree(M))
+
+
+def _index(i: int, n: int, what: str) -> int:
+    if not -n <= i < n:
+        raise MechRuntimeError(f"{what} {i} out of range (the matrix has {n}, counted from 0)")
+    return i % n

@@ -10,7 +10,8 @@ from typing import Any, Callable, Optional
 
 from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
-from .m2_modules import FreeModule, quotient_module
+from .m2_local import LocalFraction, local_arith, localized_at
+from .m2_modules import FreeModule, quotient_module, rows
 from .m2_rings import M2Ring, common_ring, normal, owner, promote, quotient_ring
 from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -25,6 +26,8 @@ def ring_of(v: Any) -> Optional[M2Ring]:
     """The Macaulay2 ring of a polynomial, number, ideal or matrix (None for others)."""
     if isinstance(v, Poly):
         return owner(v)
+    if isinstance(v, LocalFraction):
+        return owner(v.num)
     if isinstance(v, (Number, Ideal, Matrix)):
         return getattr(v.ring, "owner", None) if not isinstance(v, Number) else getattr(v.ring, "owner", None)
     return None
@@ -110,6 +113,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return quotient_ring(a, _relations(a, b))
     if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):
         return free_module(a, b)
+    if op == "^" and isinstance(a, Matrix) and isinstance(b, List):  # M^{i, ...}: rows
+        return rows(a, [to_int(i) for i in b.items])
     if op == "/" and isinstance(a, FreeModule):
         return quotient_module(a, b)
     if op in ("==", "!=") and isinstance(a, FreeModule) and isinstance(b, FreeModule):
@@ -204,9 +209,13 @@ def _quotient(f: Poly, g: Poly) -> Poly:
 
 
 def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable) -> Any:
-    """Arithmetic after promoting both operands to their common ring; quotient rings reduce."""
+    """Arithmetic after promoting both operands to their common ring; quotient rings reduce;
+    local rings have fractions."""
     ra, rb = ring_of(a), ring_of(b)
     ring = ra or rb
+    if ring is not None and localized_at(ring) is not None and op in ("+", "-", "*", "/", "^", "==", "!=") \
+            and isinstance(a, (Poly, Number, LocalFraction, int)) and isinstance(b, (Poly, Number, LocalFraction, int)):
+        return local_arith(op, a, b, ring)
     if ra is not None and rb is not None and ra is not rb and op in "+-*/%" and not isinstance(a, (Ideal, Matrix)) \
             and not isinstance(b, (Ideal, Matrix)):
         ring = common_ring(ra, rb)

@@ -13,6 +13,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..kernel import Poly
+from .m2_local import LocalFraction
 from .m2_modules import CyclicModule, FreeModule
 from .m2_rings import tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, M2Function, M2Set,
@@ -110,6 +111,9 @@ def to_string(v: Any) -> str:
         return "*".join(parts)
     if isinstance(v, (Ring, CoeffRing)):
         return v.name or v.describe() if hasattr(v, "describe") else v.name
+    if isinstance(v, LocalFraction):
+        num, den = poly_str(v.num), poly_str(v.den)
+        return (f"({num})" if len(v.num.terms) > 1 else num) + "/" + (f"({den})" if len(v.den.terms) > 1 else den)
     if isinstance(v, FreeModule):
         return f"{to_string(v.ring)}^{v.rank}"
     if isinstance(v, CyclicModule):

@@ -49,6 +49,10 @@ class M2Ring(Ring):
     def describe(self) -> str:
         """The ring as Macaulay2 writes an unnamed one: ``QQ[x..z]``, ``(ZZ/101)[a, c]``,
         ``(QQ[t])[x]``, ``R/(x^2,y)``."""
+        P = self.info.get("localized_at")
+        if P is not None:
+            from .m2_printing import to_string
+            return f"localRing({ring_name(self.info['over'], paren=False)},{to_string(P)})"
         if self.parent is not None:
             from .m2_printing import poly_str
             rel = [poly_str(g) for g in self.relations] or ["0"]

@@ -13,6 +13,7 @@ from itertools import combinations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
+from ..dsl.m2_local import local_ideal_subset, localized_at
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_rings import in_quotients
 from ..dsl.m2_values import FUNCTIONS, Array, M2Set, Tally
@@ -320,6 +321,8 @@ def tally(L: Seq) -> Tally:
 @in_quotients
 def is_subset(a: Any, b: Any) -> bool:
     """isSubset(A, B): whether every element of A is one of B (lists, sets), or the ideal A lies in B."""
+    if isinstance(a, Ideal) and isinstance(b, Ideal) and localized_at(b.ring) is not None:
+        return local_ideal_subset(a, b)
     if isinstance(a, Ideal) and isinstance(b, Ideal):
         from .m2 import _gb, _quotient_of
         from ..kernel.groebner import normal_form
