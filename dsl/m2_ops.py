@@ -10,9 +10,9 @@ from typing import Any, Callable, Optional
 
 from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
-from .m2_local import LocalFraction, local_arith, localized_at
+from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, quotient_module, rows
-from .m2_rings import M2Ring, common_ring, normal, owner, promote, quotient_ring
+from .m2_rings import M2Ring, common_ring, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
@@ -119,6 +119,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return quotient_module(a, b)
     if op in ("==", "!=") and isinstance(a, FreeModule) and isinstance(b, FreeModule):
         return (a == b) == (op == "==")
+    if op == "**" and isinstance(b, M2Ring) and isinstance(a, (Poly, Ideal, Matrix)):
+        return _base_change(a, b)
     if op == "//":
         return _floor_div(a, b)
     if op == "%" and type(a) is int and type(b) is int:
@@ -136,6 +138,23 @@ def free_module(R: M2Ring, b: int | List) -> FreeModule:
         return FreeModule(R, (0,) * b)
     degs = [d.items[0] if isinstance(d, List) and len(d.items) == 1 else d for d in b.items]
     return FreeModule(R, tuple(-to_int(d) for d in degs))
+
+
+def _base_change(v: Poly | Ideal | Matrix, S: M2Ring) -> Any:
+    """``v ** S``: a polynomial, ideal or matrix of R in a ring S built on R (R/I, a tower, R_P)."""
+    R = ring_of(v)
+    P = localized_at(S)
+    if P is not None and R is S.info["over"]:
+        move = lambda p: to_local(p, S)  # noqa: E731
+    elif R is not None and promotes(R, S):
+        move = lambda p: promote(p, S)  # noqa: E731
+    else:
+        raise MechTypeError("v ** S: S is not a ring built on v's ring")
+    if isinstance(v, Poly):
+        return move(v)
+    if isinstance(v, Ideal):
+        return Ideal(S.poly, [move(g) for g in v.gens])
+    return Matrix(S.poly, v.nrows, v.ncols, [move(g) for g in v.entries])
 
 
 def _relations(R: M2Ring, b: Any) -> list[Poly]:

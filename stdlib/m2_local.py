@@ -107,7 +107,7 @@ def length(M: CyclicModule) -> int:
 
 #: commands right on ideals of a local ring as computed in R (localization commutes with them), or
 #: that do not compute in the ring
-for _f in (m2.ideal, m2_ideals.ring, m2.quotient_cmd, m2.saturate, m2.intersect, m2.use, m2_lists.is_subset, m2_lists.print_,
+for _f in (m2.ideal, m2.matrix, m2_ideals.ring, m2.quotient_cmd, m2.saturate, m2.intersect, m2.use, m2_lists.is_subset, m2_lists.print_,
            m2_lists.to_string_cmd, m2_lists.assert_, m2_lists.apply, m2_lists.scan, m2_lists.select,
            m2_lists.any_, m2_lists.all_, m2_lists.first, m2_lists.last, m2_lists.length, m2_lists.to_list,
            m2_lists.error):
