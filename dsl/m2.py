@@ -28,7 +28,7 @@ from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
 from .m2_ringcons import build_ring
-from .m2_rings import M2Ring, normal, owner
+from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function,
                         M2Set, Opt, Partial, RingMap, Symbol)
@@ -357,6 +357,8 @@ class M2Interpreter(M2Control, Interpreter):
         args, self.m2_options = _options(cmd, args)
         if not getattr(cmd.overloads[0].func, "quotient_ok", False) and any(_in_quotient(a) for a in args):
             raise MechRuntimeError(f"{cmd.name} on elements of a quotient ring R/I is not supported by mech")
+        if not any(getattr(ov.func, "zz_ok", False) for ov in cmd.overloads) and any(_over_zz(a) for a in args):
+            raise MechRuntimeError(f"{cmd.name} on elements of a polynomial ring over ZZ is not supported by mech")
         if not any(getattr(ov.func, "local_ok", False) for ov in cmd.overloads) and any(_in_local(a) for a in args):
             raise MechRuntimeError(f"{cmd.name} on elements of a local ring R_P is not supported by mech")
         try:
@@ -437,6 +439,12 @@ def _in_quotient(v: Any) -> bool:
     ring = getattr(v, "ring", None)
     owner = getattr(ring, "owner", None) if ring is not None else (v if isinstance(v, M2Ring) else None)
     return owner is not None and owner.quotient is not None
+
+
+def _over_zz(v: Any) -> bool:
+    if isinstance(v, (List, ExprList)):
+        return any(_over_zz(x) for x in v.items)
+    return is_integral(v if isinstance(v, M2Ring) else getattr(v, "ring", None))
 
 
 def _in_local(v: Any) -> bool:

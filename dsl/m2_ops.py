@@ -12,7 +12,7 @@ from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, quotient_module, rows
-from .m2_rings import M2Ring, common_ring, normal, owner, promote, promotes, quotient_ring
+from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
@@ -121,6 +121,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return (a == b) == (op == "==")
     if op == "**" and isinstance(b, M2Ring) and isinstance(a, (Poly, Ideal, Matrix)):
         return _base_change(a, b)
+    if op in ("//", "%") and any(is_integral(getattr(v, "ring", None)) for v in (a, b)):
+        raise MechRuntimeError(f"{op} on elements of a polynomial ring over ZZ is not supported by mech")
     if op == "//":
         return _floor_div(a, b)
     if op == "%" and type(a) is int and type(b) is int:
@@ -249,13 +251,15 @@ def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable)
     if op == "/" and type(a) is int and type(b) is int:
         if b == 0:
             raise MechRuntimeError("division by 0")
-        if current is None:
+        if current is None or is_integral(current):
             return Fraction(a, b)
         r = current.poly
         return Number(r, r.field(a) / r.field(b))
     if Fraction in (type(a), type(b)) and {type(a), type(b)} <= {int, Fraction} and op in "+-*/^":
         return _rational(op, a, b)
     v = fallback(op, a, b, ring.poly if ring is not None else (current.poly if current else None))
+    if isinstance(v, (Poly, Number)) and is_integral(v.ring) and not _integral(v):
+        raise MechRuntimeError(f"the result of {op} has a fractional coefficient: it is not in a ring over ZZ")
     if isinstance(v, Poly) and ring is not None:
         if ring.quotient is not None:
             v = normal(v)
@@ -263,6 +267,11 @@ def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable)
             raise MechRuntimeError(f"monomial overflow: exponents of this ring are below {ring.max_exponent} "
                                    f"(MonomialSize)")
     return v
+
+
+def _integral(v: Poly | Number) -> bool:
+    coeffs = v.terms.values() if isinstance(v, Poly) else [v.c]
+    return all(getattr(c, "denominator", 1) == 1 for c in coeffs)
 
 
 def _rational(op: str, a: Fraction | int, b: Fraction | int) -> Fraction | int:

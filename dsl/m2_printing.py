@@ -78,7 +78,7 @@ def to_string(v: Any) -> str:
         return coeff_str(v.ring.field, v.c)
     if isinstance(v, Ideal):
         word = "monomialIdeal" if isinstance(v, MonomialIdeal) else "ideal"
-        if v.is_std and not v.nonzero():
+        if (v.is_std or word == "monomialIdeal") and not v.nonzero():
             return f"{word}()"
         gens = [poly_str(g) for g in v.gens]
         if len(gens) == 1 and _atomic(gens[0]):

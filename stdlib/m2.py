@@ -18,7 +18,7 @@ from ..dsl.m2_printing import to_string
 from ..dsl.m2_values import Factored, Opt
 from ..dsl.m2_local import LocalFraction, local_ideal_is_unit, local_ideals_equal, localized_at
 from ..dsl.m2_ops import lift_to
-from ..dsl.m2_rings import in_quotients, multidegree, normal, owner, promote, promotes
+from ..dsl.m2_rings import in_quotients, is_integral, multidegree, normal, owner, promote, promotes
 from ..dsl.registry import command, operator
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
 from ..kernel import Poly
@@ -241,6 +241,11 @@ def _indices(ring: Any, variables: Any) -> list[int]:
     return sorted(set(out))
 
 
+def _no_zz(I: Ideal, what: str) -> None:
+    if is_integral(I.ring):
+        raise MechRuntimeError(f"{what} of an ideal over ZZ is not supported by mech (a Gröbner basis over ZZ)")
+
+
 def _no_quotient(I: Ideal, what: str) -> None:
     if _quotient_of(I.ring) is not None:
         raise MechRuntimeError(f"{what} on ideals of a quotient ring R/I is not supported by mech")
@@ -271,6 +276,8 @@ def quotient(a: Any, b: Any) -> Ideal:
     """``I : J`` (``I : f``), the ideal quotient."""
     if isinstance(a, Ideal) and isinstance(b, (Ideal, Poly)):
         _global(a, "the ideal quotient")
+        if is_integral(a.ring):
+            raise MechRuntimeError("the ideal quotient over ZZ is not supported by mech")
         _no_quotient(a, "the ideal quotient I : J")
         other = b.nonzero() if isinstance(b, Ideal) else [b]
         return _minimal(a, _sorted(a, K.quotient(a.nonzero(), other, ring=a.ring)))
@@ -348,6 +355,7 @@ def degree(I: Ideal | Poly) -> Any:
         if I.is_zero():
             raise MechRuntimeError("degree of the zero polynomial: -infinity (not a value of mech)")
         return List(list(multidegree(I)))
+    _no_zz(I, "degree")
     from ..kernel.hilbert import mult
     return mult([p.lm() for p in _gb(I).gens], I.ring.nvars)
 
@@ -457,7 +465,8 @@ def tangent_cone(I: Ideal) -> Ideal:
 def jacobian(I: Ideal | Matrix) -> Matrix:
     """jacobian I: the matrix of partial derivatives, one row per variable, one column per generator."""
     polys = I.gens if isinstance(I, Ideal) else I.entries
-    n = I.ring.nvars
+    R = getattr(I.ring, "owner", None)
+    n = len(R.own) if R is not None and R.own else I.ring.nvars  # a tower: its own variables
     return Matrix(I.ring, n, len(polys), [f.diff(i) for i in range(n) for f in polys])
 
 
@@ -559,8 +568,8 @@ def remainder(f: Any, I: Any) -> Any:
     """``f % I``: the normal form of f modulo a Gröbner basis of I (other operands: Singular's %)."""
     if not (isinstance(f, (Poly, Number, int)) and isinstance(I, Ideal)):
         return NotImplemented
-    if localized_at(I.ring) is not None:
-        raise MechRuntimeError("f % I in a local ring R_P is not supported by mech")
+    if localized_at(I.ring) is not None or is_integral(I.ring):
+        raise MechRuntimeError("f % I in a local ring R_P or over ZZ is not supported by mech")
     from ..kernel.groebner import normal_form
     p = f.to_poly() if isinstance(f, Number) else f if isinstance(f, Poly) else I.ring.one() * f
     q = _quotient_of(I.ring)
@@ -580,6 +589,8 @@ def equal(a: Any, b: Any) -> bool:
             return local_ideal_is_unit(a)
         if type(b) is int and b == 0:
             return not a.nonzero()
+    if isinstance(a, Ideal) and is_integral(a.ring):
+        raise MechRuntimeError("== on ideals over ZZ is not supported by mech")
     if isinstance(a, Ideal) and isinstance(b, Ideal):
         return a.ring is b.ring and _gb(a).gens == _gb(b).gens
     if isinstance(a, Ideal) and isinstance(b, Ring):  # I == R: I is the unit ideal

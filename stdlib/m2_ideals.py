@@ -16,7 +16,7 @@ from ..dsl.registry import command
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
-from .m2 import _first_ring, _gb, _indices, _minimal, _polys, _quotient_of, gens, sub
+from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, gens, sub
 from .standard import normalize
 
 
@@ -31,10 +31,14 @@ def _owner(ring: PolyRing) -> M2Ring:
 @command("monomialIdeal", dialect="m2")
 @in_quotients
 def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
-    """monomialIdeal(m1, m2, ...) (a list, ideal or matrix too): the monomial ideal of the lead
-    monomials, on its minimal generators."""
+    """monomialIdeal(m1, m2, ...) (a list or matrix too): the monomial ideal of their lead
+    monomials; monomialIdeal I: of the lead monomials of a Gröbner basis of I; on its minimal
+    generators."""
     ring = _first_ring(args) or ctx.basering().poly
-    items = args[0].gens if len(args) == 1 and isinstance(args[0], Ideal) else args
+    items = args
+    if len(args) == 1 and isinstance(args[0], Ideal) and not isinstance(args[0], MonomialIdeal):
+        _no_zz(args[0], "monomialIdeal")
+        items = _gb(args[0]).gens
     monos = {p.lm() for p in _polys(ctx, tuple(items), ring) if not p.is_zero()}
     minimal = [m for m in monos if not any(o != m and all(a <= b for a, b in zip(o, m)) for o in monos)]
     return MonomialIdeal(ring, [ring.monomial(m) for m in sorted(minimal, reverse=True)])
@@ -194,6 +198,7 @@ def lead_term(f: Poly | Ideal | Matrix) -> Any:
             raise MechRuntimeError("leadTerm of a matrix with several rows (module elements) is not supported")
         return Matrix(f.ring, 1, f.ncols, [lead_term(g) for g in f.entries])
     if isinstance(f, Ideal):
+        _no_zz(f, "leadTerm")
         lts = [lead_term(g) for g in _gb(f).gens]
         return Matrix(f.ring, 1, len(lts), lts)
     if f.is_zero():
@@ -268,6 +273,7 @@ def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
         return _homogenize(f, i, degs)
     if isinstance(f, Matrix):
         return Matrix(f.ring, f.nrows, f.ncols, [_homogenize(p, i, degs) for p in f.entries])
+    _no_zz(f, "homogenize")
     order = f.ring.order
     if not order.is_global or any(b.kind not in ("dp", "Dp", "wp", "Wp") for b in order.blocks) or len(order.blocks) != 1:
         raise MechRuntimeError("homogenize of an ideal needs a ring with a degree order (GRevLex, GLex)")

@@ -324,7 +324,8 @@ def is_subset(a: Any, b: Any) -> bool:
     if isinstance(a, Ideal) and isinstance(b, Ideal) and localized_at(b.ring) is not None:
         return local_ideal_subset(a, b)
     if isinstance(a, Ideal) and isinstance(b, Ideal):
-        from .m2 import _gb, _quotient_of
+        from .m2 import _gb, _no_zz, _quotient_of
+        _no_zz(b, "isSubset")
         from ..kernel.groebner import normal_form
         q = _quotient_of(b.ring)
         basis = list(_gb(b).gens) + (list(q.basis) if q is not None else [])
