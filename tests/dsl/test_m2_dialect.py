@@ -92,7 +92,10 @@ def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> 
 
 
 @pytest.mark.parametrize("code, message", [
-    ("R = ZZ[x]", "polynomial rings over ZZ are not supported"),
+    ("R = ZZ[x]; gb ideal(2*x)", "gb on elements of a polynomial ring over ZZ is not supported"),
+    ("R = ZZ[x]; x/2", "not in a ring over ZZ"),
+    ("R = ZZ[x]; x^2 // 2", "// on elements of a polynomial ring over ZZ is not supported"),
+    ("R = QQ[a]; P = ideal(a); S = R_P; gb ideal(a^2)", "gb on elements of a local ring R_P is not supported"),
     ("R = QQ[x,y]; S = R/ideal(x^2); factor(x+y)", "factor on elements of a quotient ring R/I is not supported"),
     ("R = QQ[x]; saturate(ideal(x), DegreeLimit => 2)", "saturate: the option DegreeLimit is not supported"),
     ("R = QQ[x]; y^2", "unknown identifier 'y'"),
