@@ -486,6 +486,14 @@ def needs_package(name: str, *options: Any) -> Any:
     return Symbol(name)
 
 
+@command("debug", dialect="m2")
+def debug(package: Any) -> None:
+    """debug P: makes a package's private names visible in Macaulay2; mech has none to show (nothing)."""
+    from ..dsl.m2_values import Symbol
+    if not isinstance(package, Symbol) or package.name not in PACKAGES:
+        raise MechRuntimeError("debug takes a package (needsPackage \"Name\")")
+
+
 @command("identity", dialect="m2")
 @in_quotients
 def identity(x: Any) -> Any:
