@@ -23,6 +23,7 @@ from ..dsl.registry import command, operator
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
 from ..kernel import Poly
 from ..kernel import ideals as K
+from ..kernel import zz_groebner as Z
 from .standard import normalize, standard_basis
 
 
@@ -241,6 +242,12 @@ def _indices(ring: Any, variables: Any) -> list[int]:
     return sorted(set(out))
 
 
+def zz_subset(a: Ideal, b: Ideal) -> bool:
+    """Whether the ideal a lies in b, over ZZ (by a strong Gröbner basis of b)."""
+    basis = Z.strong_basis(b.nonzero(), b.ring)
+    return all(Z.contains(basis, g) for g in a.nonzero())
+
+
 def _no_zz(I: Ideal, what: str) -> None:
     if is_integral(I.ring):
         raise MechRuntimeError(f"{what} of an ideal over ZZ is not supported by mech (a Gröbner basis over ZZ)")
@@ -262,6 +269,8 @@ def eliminate(variables: List | Poly, I: Ideal) -> Ideal:
     """eliminate({x, y}, I) (or eliminate(I, {x, y})): I intersected with the subring of the
     other variables."""
     _global(I, "eliminate")
+    if is_integral(I.ring):
+        return Ideal(I.ring, Z.eliminate(I.nonzero(), _indices(I.ring, variables), I.ring))
     return _reduced(I, K.eliminate(_lift(I), _indices(I.ring, variables), ring=I.ring))
 
 
@@ -276,10 +285,10 @@ def quotient(a: Any, b: Any) -> Ideal:
     """``I : J`` (``I : f``), the ideal quotient."""
     if isinstance(a, Ideal) and isinstance(b, (Ideal, Poly)):
         _global(a, "the ideal quotient")
-        if is_integral(a.ring):
-            raise MechRuntimeError("the ideal quotient over ZZ is not supported by mech")
         _no_quotient(a, "the ideal quotient I : J")
         other = b.nonzero() if isinstance(b, Ideal) else [b]
+        if is_integral(a.ring):
+            return Ideal(a.ring, Z.quotient(a.nonzero(), other, a.ring))
         return _minimal(a, _sorted(a, K.quotient(a.nonzero(), other, ring=a.ring)))
     return NotImplemented
 
@@ -299,6 +308,8 @@ def saturate(I: Ideal, J: Ideal | Poly | None = None) -> Ideal:
     if J is None:
         J = Ideal(ring, [ring.gen(i) for i in range(ring.nvars)])
     other = J.nonzero() if isinstance(J, Ideal) else [J]
+    if is_integral(ring):
+        return Ideal(ring, Z.saturate(I.nonzero(), other, ring))
     return _minimal(I, _sorted(I, K.saturate(I.nonzero(), other, ring=ring)[0]))
 
 
@@ -311,7 +322,13 @@ def intersect(*ideals: Ideal | List) -> Ideal:
     if not ideals or not all(isinstance(I, Ideal) for I in ideals):
         raise MechTypeError("intersect takes ideals")
     _global(ideals[0], "intersect")
-    return _reduced(ideals[0], K.intersect(*[_lift(I) for I in ideals], ring=ideals[0].ring))
+    ring = ideals[0].ring
+    if is_integral(ring):
+        polys = ideals[0].nonzero()
+        for J in ideals[1:]:
+            polys = Z.intersect(polys, J.nonzero(), ring)
+        return Ideal(ring, polys)
+    return _reduced(ideals[0], K.intersect(*[_lift(I) for I in ideals], ring=ring))
 
 
 def _dim(I: Ideal) -> int:
@@ -589,8 +606,10 @@ def equal(a: Any, b: Any) -> bool:
             return local_ideal_is_unit(a)
         if type(b) is int and b == 0:
             return not a.nonzero()
+    if isinstance(a, Ideal) and isinstance(b, Ideal) and is_integral(a.ring):
+        return a.ring is b.ring and zz_subset(a, b) and zz_subset(b, a)
     if isinstance(a, Ideal) and is_integral(a.ring):
-        raise MechRuntimeError("== on ideals over ZZ is not supported by mech")
+        raise MechRuntimeError("== of an ideal over ZZ and this value is not supported by mech")
     if isinstance(a, Ideal) and isinstance(b, Ideal):
         return a.ring is b.ring and _gb(a).gens == _gb(b).gens
     if isinstance(a, Ideal) and isinstance(b, Ring):  # I == R: I is the unit ideal

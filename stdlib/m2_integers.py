@@ -2,7 +2,9 @@
 there.  Elements are integral polynomials under QQ's arithmetic (a fractional coefficient is
 refused: :mod:`mech.dsl.m2_ops`); the commands marked here never divide nor compute a Gröbner
 basis (the list library, printing, matrices, derivatives, determinants, resultants,
-substitutions and ring maps); the others refuse elements of rings over ZZ."""
+substitutions and ring maps) or compute with strong Gröbner bases (:mod:`mech.kernel.zz_groebner`:
+``eliminate``, ``intersect``, ``quotient``, ``saturate``, ``==`` and ``isSubset`` on ideals); the
+others refuse elements of rings over ZZ."""
 from __future__ import annotations
 
 from . import m2, m2_ideals, m2_lists, m2_local, m2_modules
@@ -17,7 +19,8 @@ _EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2.submatrix, m2
           m2_ideals.sylvester_matrix, m2_modules.map_modules, m2_modules.identity, m2_modules.source,
           m2_modules.target, m2_modules.degrees, m2_modules.rank, m2_modules.numgens, m2_modules.is_homogeneous,
           m2_modules.transpose, m2_local.numerator, m2_local.denominator,
-          m2_ideals.monomial_ideal)
+          m2_ideals.monomial_ideal, m2.eliminate, m2.eliminate_ideal_first, m2.quotient_cmd, m2.saturate,
+          m2.intersect)
 for _f in _EXACT:
     _f.zz_ok = True
 for _name in dir(m2_lists):  # the list library: no arithmetic of its own (isSubset checks its ideals)

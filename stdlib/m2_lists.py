@@ -15,7 +15,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_local import local_ideal_subset, localized_at
 from ..dsl.m2_printing import to_string
-from ..dsl.m2_rings import in_quotients
+from ..dsl.m2_rings import in_quotients, is_integral
 from ..dsl.m2_values import FUNCTIONS, Array, M2Set, Tally
 from ..dsl.registry import command
 from ..dsl.values import NONE, ExprList, Ideal, List, Number, typeof
@@ -324,8 +324,9 @@ def is_subset(a: Any, b: Any) -> bool:
     if isinstance(a, Ideal) and isinstance(b, Ideal) and localized_at(b.ring) is not None:
         return local_ideal_subset(a, b)
     if isinstance(a, Ideal) and isinstance(b, Ideal):
-        from .m2 import _gb, _no_zz, _quotient_of
-        _no_zz(b, "isSubset")
+        from .m2 import _gb, _quotient_of, zz_subset
+        if is_integral(b.ring):
+            return zz_subset(a, b)
         from ..kernel.groebner import normal_form
         q = _quotient_of(b.ring)
         basis = list(_gb(b).gens) + (list(q.basis) if q is not None else [])
