@@ -231,6 +231,16 @@ def lead_coefficient(f: Poly) -> Any:
     return Number(f.ring, f.lc())
 
 
+@command("degree", dialect="m2")
+@in_quotients
+def degree_in(x: Poly, f: Poly) -> int:
+    """degree(x, f): the largest power of the variable x in f."""
+    i = _indices(f.ring, x)[0]
+    if f.is_zero():
+        raise MechRuntimeError("degree of the zero polynomial: -infinity (not a value of mech)")
+    return max(e[i] for e in f.terms)
+
+
 @command("degrees", dialect="m2")
 @in_quotients
 def degrees(R: Ring) -> List:

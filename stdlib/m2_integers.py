@@ -19,7 +19,7 @@ _EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2.submatrix, m2
           m2_ideals.sylvester_matrix, m2_modules.map_modules, m2_modules.identity, m2_modules.source,
           m2_modules.target, m2_modules.degrees, m2_modules.rank, m2_modules.numgens, m2_modules.is_homogeneous,
           m2_modules.transpose, m2_local.numerator, m2_local.denominator,
-          m2_ideals.monomial_ideal, m2.eliminate, m2.eliminate_ideal_first, m2.quotient_cmd, m2.saturate,
+          m2_ideals.monomial_ideal, m2_ideals.degree_in, m2_modules.transpose_table, m2.eliminate, m2.eliminate_ideal_first, m2.quotient_cmd, m2.saturate,
           m2.intersect)
 for _f in _EXACT:
     _f.zz_ok = True

@@ -7,6 +7,7 @@
 Elements are told apart as Macaulay2's hash tables do (``===``): by their type, ring and text."""
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from functools import cmp_to_key
 from itertools import combinations
@@ -16,7 +17,7 @@ from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_local import local_ideal_subset, localized_at
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_rings import in_quotients, is_integral
-from ..dsl.m2_values import FUNCTIONS, Array, M2Set, Tally
+from ..dsl.m2_values import FUNCTIONS, Array, M2Set, Symbol, Tally
 from ..dsl.registry import command
 from ..dsl.values import NONE, ExprList, Ideal, List, Number, typeof
 from ..kernel import Poly
@@ -336,13 +337,32 @@ def is_subset(a: Any, b: Any) -> bool:
 
 
 # ---------------------------------------------------------------- order
+def _string_key(text: str) -> tuple:
+    """Macaulay2's order of strings: other characters before digits before letters, runs of
+    digits by their value, letters regardless of case (then capitals first)."""
+    primary, case = [], []
+    for run in re.findall(r"\d+|\D", text):
+        if run.isdigit():
+            primary.append((1, int(run), ""))
+        elif run.isalpha():
+            primary.append((2, 0, run.lower()))
+            case.append(0 if run.isupper() else 1)
+        else:
+            primary.append((0, 0, run))
+    return tuple(primary), tuple(case)
+
+
+# ---------------------------------------------------------------- order
 def _compare(x: Any, y: Any) -> int:
     """Macaulay2's ``?`` for sorting: numbers by value, strings alphabetically, polynomials by
     their leading monomials in the ring's order then coefficients, lists entry by entry."""
     if isinstance(x, (int, Fraction)) and isinstance(y, (int, Fraction)) and not isinstance(x, bool):
         return (x > y) - (x < y)
+    if isinstance(x, Symbol) and isinstance(y, Symbol):
+        x, y = x.name, y.name
     if isinstance(x, str) and isinstance(y, str):
-        return (x > y) - (x < y)
+        kx, ky = _string_key(x), _string_key(y)
+        return (kx > ky) - (kx < ky)
     if isinstance(x, Number):
         x = x.to_poly()
     if isinstance(y, Number):
@@ -483,14 +503,12 @@ def needs_package(name: str, *options: Any) -> Any:
     """needsPackage "Name": the package (its name; nothing to load for the packages whose functions mech has)."""
     if name not in PACKAGES:
         raise MechRuntimeError(f"the package {name} is not available in mech (available: {', '.join(sorted(PACKAGES))})")
-    from ..dsl.m2_values import Symbol
     return Symbol(name)
 
 
 @command("debug", dialect="m2")
 def debug(package: Any) -> None:
     """debug P: makes a package's private names visible in Macaulay2; mech has none to show (nothing)."""
-    from ..dsl.m2_values import Symbol
     if not isinstance(package, Symbol) or package.name not in PACKAGES:
         raise MechRuntimeError("debug takes a package (needsPackage \"Name\")")
 

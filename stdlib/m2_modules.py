@@ -153,3 +153,14 @@ def transpose(M: Matrix) -> Map:
     tgt, src = target_of(M), source_of(M)
     return Map(FreeModule(src.ring, tuple(-d for d in src.degrees)), FreeModule(tgt.ring, tuple(-d for d in tgt.degrees)),
                entries, -map_degree(M))
+
+
+@command("transpose", dialect="m2")
+@in_quotients
+def transpose_table(T: List) -> List:
+    """transpose T: a table (a list of lists of one length) with rows and columns swapped."""
+    rows = T.items
+    if not all(isinstance(r, List) for r in rows) or len({len(r.items) for r in rows}) > 1:
+        raise MechRuntimeError("transpose T takes a table: lists of one length")
+    n = len(rows[0].items) if rows else 0
+    return List([List([r.items[j] for r in rows]) for j in range(n)])
