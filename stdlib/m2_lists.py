@@ -513,6 +513,14 @@ def debug(package: Any) -> None:
         raise MechRuntimeError("debug takes a package (needsPackage \"Name\")")
 
 
+@command("isPrime", dialect="m2")
+@in_quotients
+def is_prime_number(n: int) -> bool:
+    """isPrime n: whether the integer n is a prime number."""
+    import flint
+    return n > 1 and bool(flint.fmpz(n).is_prime())
+
+
 @command("identity", dialect="m2")
 @in_quotients
 def identity(x: Any) -> Any:
