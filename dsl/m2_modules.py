@@ -76,20 +76,39 @@ def source_degrees(M: Matrix, target: Sequence[int], degree: int = 0) -> tuple[i
     return tuple(out)
 
 
+def with_default_degrees(M: Matrix) -> Map:
+    """``matrix {{...}}``: the matrix as a map with Macaulay2's default degrees."""
+    target = FreeModule(M.ring.owner, (0,) * M.nrows)
+    return Map(target, FreeModule(M.ring.owner, source_degrees(M, target.degrees)), M.entries)
+
+
+def _known(M: Matrix) -> Map:
+    if not isinstance(M, Map):
+        raise MechRuntimeError("the degrees of this matrix are not known to mech (only of matrices made by "
+                               "matrix, map, id_ and their products with ring elements)")
+    return M
+
+
 def target_of(M: Matrix) -> FreeModule:
-    if isinstance(M, Map):
-        return M.target
-    return FreeModule(M.ring.owner, (0,) * M.nrows)
+    return _known(M).target
 
 
 def source_of(M: Matrix) -> FreeModule:
-    if isinstance(M, Map):
-        return M.source
-    return FreeModule(M.ring.owner, source_degrees(M, (0,) * M.nrows))
+    return _known(M).source
 
 
 def map_degree(M: Matrix) -> int:
-    return M.degree if isinstance(M, Map) else 0
+    return _known(M).degree
+
+
+def scaled(M: Matrix, r: Any, result: Matrix) -> Matrix:
+    """``r * M`` (``result``) as a map: M's source and target, degree raised by r's degree."""
+    if not isinstance(M, Map):
+        return result
+    d = poly_degree(r) if isinstance(r, Poly) else 0
+    if isinstance(r, Poly) and len({term_degree(e, degree_vectors(M.ring.owner))[0] for e in r.terms}) > 1:
+        return result  # an inhomogeneous factor: Macaulay2's degree is not tracked
+    return Map(M.target, M.source, result.entries, M.degree + (d or 0))
 
 
 def is_homogeneous_map(M: Matrix) -> bool:
@@ -117,17 +136,21 @@ def quotient_module(F: FreeModule, I: Any) -> CyclicModule:
 def columns(M: Matrix, cols: Sequence[int]) -> Map:
     """``M_{j1, j2, ...}``: the columns (from 0, negative from the end)."""
     cols = [_index(j, M.ncols, "column") for j in cols]
-    src = source_of(M)
     entries = [M.get(i + 1, j + 1) for i in range(M.nrows) for j in cols]
-    return Map(target_of(M), FreeModule(src.ring, tuple(src.degrees[j] for j in cols)), entries, map_degree(M))
+    if not isinstance(M, Map):
+        return Matrix(M.ring, M.nrows, len(cols), entries)
+    src = M.source
+    return Map(M.target, FreeModule(src.ring, tuple(src.degrees[j] for j in cols)), entries, M.degree)
 
 
 def rows(M: Matrix, rows_: Sequence[int]) -> Map:
     """``M^{i1, i2, ...}``: the rows (from 0, negative from the end)."""
     rows_ = [_index(i, M.nrows, "row") for i in rows_]
-    tgt = target_of(M)
     entries = [M.get(i + 1, j + 1) for i in rows_ for j in range(M.ncols)]
-    return Map(FreeModule(tgt.ring, tuple(tgt.degrees[i] for i in rows_)), source_of(M), entries, map_degree(M))
+    if not isinstance(M, Map):
+        return Matrix(M.ring, len(rows_), M.ncols, entries)
+    tgt = M.target
+    return Map(FreeModule(tgt.ring, tuple(tgt.degrees[i] for i in rows_)), M.source, entries, M.degree)
 
 
 def _index(i: int, n: int, what: str) -> int:

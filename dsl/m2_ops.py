@@ -11,7 +11,7 @@ from typing import Any, Callable, Optional
 from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
-from .m2_modules import FreeModule, quotient_module, rows
+from .m2_modules import FreeModule, Map, quotient_module, rows, scaled
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -258,6 +258,13 @@ def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable)
     if Fraction in (type(a), type(b)) and {type(a), type(b)} <= {int, Fraction} and op in "+-*/^":
         return _rational(op, a, b)
     v = fallback(op, a, b, ring.poly if ring is not None else (current.poly if current else None))
+    if isinstance(v, Matrix) and op == "*" and (isinstance(a, Map) or isinstance(b, Map)):
+        if isinstance(a, Map) and isinstance(b, Map):  # composition
+            v = Map(a.target, b.source, v.entries, a.degree + b.degree) if a.source.rank == b.target.rank else v
+        elif isinstance(b, Map) and not isinstance(a, Matrix):
+            v = scaled(b, a, v)
+        elif isinstance(a, Map) and not isinstance(b, Matrix):
+            v = scaled(a, b, v)
     if isinstance(v, (Poly, Number)) and is_integral(v.ring) and not _integral(v):
         raise MechRuntimeError(f"the result of {op} has a fractional coefficient: it is not in a ring over ZZ")
     if isinstance(v, Poly) and ring is not None:

@@ -17,6 +17,7 @@ from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_values import Factored, Opt
 from ..dsl.m2_local import LocalFraction, local_ideal_is_unit, local_ideals_equal, localized_at
+from ..dsl.m2_modules import with_default_degrees
 from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, is_integral, multidegree, normal, owner, promote, promotes
 from ..dsl.registry import command, operator
@@ -38,15 +39,22 @@ def use(ctx, R: Ring) -> Ring:
 
 # ---------------------------------------------------------------- building values
 def _first_ring(args: Any) -> Any:
-    """The kernel ring of the first polynomial, number, ideal or matrix among ``args`` (lists searched)."""
-    for a in args:
-        if isinstance(a, (List, ExprList)):
-            r = _first_ring(a.items)
-            if r is not None:
-                return r
-        elif isinstance(a, (Poly, Number, Ideal, Matrix)):
-            return a.ring
-    return None
+    """The kernel ring of the polynomials, numbers, ideals or matrices among ``args`` (lists
+    searched): the one the others promote to (a tower over a coefficient ring's elements), else the first."""
+    rings: list = []
+
+    def visit(items: Any) -> None:
+        for a in items:
+            if isinstance(a, (List, ExprList)):
+                visit(a.items)
+            elif isinstance(a, (Poly, Number, Ideal, Matrix)) and a.ring not in rings:
+                rings.append(a.ring)
+    visit(args)
+    owners = [getattr(r, "owner", None) for r in rings]
+    for r, o in zip(rings, owners):
+        if o is not None and all(p is not None and promotes(p, o) for p in owners):
+            return r
+    return rings[0] if rings else None
 
 
 def _polys(ctx, args: tuple, ring: Any = None) -> list[Poly]:
@@ -132,7 +140,7 @@ def matrix(ctx, rows: List) -> Matrix:
     entries = [_polys(ctx, (r,), ring) for r in rows.items]
     if not entries or any(len(r) != len(entries[0]) for r in entries) or not isinstance(rows.items[0], List):
         raise MechRuntimeError("matrix takes a list of rows of equal length: matrix {{a, b}, {c, d}}")
-    return Matrix(ring, len(entries), len(entries[0]), [p for r in entries for p in r])
+    return with_default_degrees(Matrix(ring, len(entries), len(entries[0]), [p for r in entries for p in r]))
 
 
 def _gb(I: Ideal) -> Ideal:
@@ -519,6 +527,8 @@ def det(M: Matrix) -> Poly:
 def diff(x: Poly | Matrix, f: Poly | Ideal | Matrix) -> Any:
     """diff(x, f): the derivative of f by the variable x; diff(P, f) for a polynomial P: P's
     differential operator (x^2*y: d^3/dx^2dy) applied to f; diff(M, f): to each entry of M."""
+    if isinstance(x, Poly) and x.ring is not f.ring and hasattr(f.ring, "owner"):  # a coefficient ring's variable
+        x = lift_to(x, f.ring.owner)
     if isinstance(x, Matrix):
         if not isinstance(f, Poly):
             raise MechTypeError("diff(M, f) takes a matrix M and a polynomial f")
@@ -561,7 +571,10 @@ def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
             i = _indices(ring, item.key)[0]
             images[i] = _polys(ctx, (item.value,))[0]
     from ..dsl.maps import map_value
-    return map_value(f, images, target)
+    out = map_value(f, images, target)
+    if is_integral(target) and any(getattr(c, "q", 1) != 1 for g in _polys(ctx, (out,), target) for c in g.terms.values()):
+        raise MechRuntimeError("sub: the result has a fractional coefficient: it is not in a ring over ZZ")
+    return out
 
 
 @command("factor", dialect="m2")

@@ -147,10 +147,12 @@ def degree(f: Matrix | CyclicModule) -> Any:
 
 @command("transpose", dialect="m2")
 @in_quotients
-def transpose(M: Matrix) -> Map:
+def transpose(M: Matrix) -> Matrix:
     """transpose M: the dual map (target and source swapped, their degrees negated)."""
     entries = [M.get(i, j) for j in range(1, M.ncols + 1) for i in range(1, M.nrows + 1)]
-    tgt, src = target_of(M), source_of(M)
+    if not isinstance(M, Map):
+        return Matrix(M.ring, M.ncols, M.nrows, entries)
+    tgt, src = M.target, M.source
     return Map(FreeModule(src.ring, tuple(-d for d in src.degrees)), FreeModule(tgt.ring, tuple(-d for d in tgt.degrees)),
                entries, -map_degree(M))
 
