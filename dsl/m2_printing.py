@@ -15,7 +15,7 @@ from typing import Any
 from ..kernel import Poly
 from .m2_local import LocalFraction
 from .m2_modules import CyclicModule, FreeModule
-from .m2_rings import tower_terms
+from .m2_rings import TEXT, tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, M2Function, M2Set,
                         MonomialIdeal, Opt, Partial, RingMap, Symbol, Tally)
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring
@@ -127,3 +127,6 @@ def to_string(v: Any) -> str:
         return "null"
     name = getattr(v, "name", None)
     return name or type(v).__name__
+
+
+TEXT["value"] = to_string

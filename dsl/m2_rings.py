@@ -32,6 +32,10 @@ class FlatRing(PolyRing):
         return id(self)
 
 
+#: how values print (``value``: Macaulay2's ``toString``), set by :mod:`mech.dsl.m2_printing`
+TEXT: dict[str, Any] = {"value": str}
+
+
 @dataclass(eq=False)
 class M2Ring(Ring):
     """A Macaulay2 ring on its kernel ring ``poly`` (see the module's docstring)."""
@@ -51,11 +55,9 @@ class M2Ring(Ring):
         ``(QQ[t])[x]``, ``R/(x^2,y)``."""
         P = self.info.get("localized_at")
         if P is not None:
-            from .m2_printing import to_string
-            return f"localRing({ring_name(self.info['over'], paren=False)},{to_string(P)})"
+            return f"localRing({ring_name(self.info['over'], paren=False)},{TEXT['value'](P)})"
         if self.parent is not None:
-            from .m2_printing import poly_str
-            rel = [poly_str(g) for g in self.relations] or ["0"]
+            rel = [TEXT["value"](g) for g in self.relations] or ["0"]
             text = rel[0] if len(rel) == 1 and _atomic(rel[0]) else f"({','.join(rel)})"
             return f"{ring_name(self.parent, paren=False)}/{text}"
         return f"{ring_name(self.base, paren=True)}[{', '.join(variable_runs(self.own))}]"
