@@ -14,8 +14,7 @@ MinimalPrimes, Saturation, Elimination and LocalRings load and in Macaulay2Doc's
 Gröbner bases, monomial orders, rings, ring maps, matrices and lists and its pages of the functions
 on them.  A case is excluded, with its reason, when its code names a construct outside mech's scope
 (``OUT_OF_SCOPE``: modules, resolutions, sheaves, non-commutative rings, real and complex numbers,
-random values, hash tables, other packages, system and help functions...; a polynomial ring over
-ZZ; ``R^n``), a package internal (a name of the package's private dictionary), when one of its
+random values, hash tables, other packages, system and help functions...), a package internal (a name of the package's private dictionary), when one of its
 top-level values is of a class of ``OUT_CLASSES`` (modules...), when Macaulay2 1.21 itself fails or
 times out on it, or when it is a MinimalPrimes ``BENCHMARK`` test.
 
@@ -363,8 +362,6 @@ def classify(case: Case, mech: dict, m2: dict, info: dict) -> Result:
         lines = case.code.split("\n")
         res.status, res.reason = blocking(message, info, lines[line - 1] if 0 < line <= len(lines) else "", col)
         res.detail = message
-        if res.reason == "operator ^ on ring and int":  # R^n: a free module
-            res.status, res.reason = "excluded", "modules, resolutions, chain complexes: R^n"
     else:
         res.status = "agree"
     return res

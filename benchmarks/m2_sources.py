@@ -321,7 +321,7 @@ def extract(src: Path) -> list[Case]:
 
 def out_of_scope(code: str) -> str:
     """Why the code is outside mech's scope ("" when it is inside): the first construct of
-    ``OUT_OF_SCOPE`` it names, another package it loads, a polynomial ring over ZZ, a float."""
+    ``OUT_OF_SCOPE`` it names, another package it loads, a float."""
     toks = [t for _, t in tokens(code)]
     for k, tok in enumerate(toks):
         for reason, names in OUT_OF_SCOPE.items():
@@ -333,8 +333,6 @@ def out_of_scope(code: str) -> str:
                 return f"other packages: {tok} {m.group(1) if m else ''}".rstrip()
         if "." in tok and tok[0].isdigit():
             return f"real and complex numbers: {tok}"
-        if tok == "ZZ" and k + 1 < len(toks) and toks[k + 1] == "[":
-            return "polynomial rings over ZZ"
     return ""
 
 

@@ -21,12 +21,14 @@ from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, Hash
                      Option, ReturnExpr, RingCons, Seq, SetVar, Statement, Subscript, SymbolLit, TimeExpr, TryExpr,
                      WhileLoop)
 from .m2_control import M2Control
+from .m2_local import LocalFraction, local_ring, localized_at
 from .m2_maps import apply_map
+from .m2_modules import columns
 from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
 from .m2_ringcons import build_ring
-from .m2_rings import M2Ring, normal, owner
+from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function,
                         M2Set, Opt, Partial, RingMap, Symbol)
@@ -95,9 +97,10 @@ class M2Interpreter(M2Control, Interpreter):
         return self.ring
 
     def use(self, ring: M2Ring) -> None:
-        """Make ``ring`` current and its variables the values of their names."""
+        """Make ``ring`` current and its own variables the values of their names (a tower's
+        coefficient variables keep their ring, whose elements promote)."""
         self.ring = ring
-        for i, name in enumerate(ring.names):
+        for i, name in enumerate(ring.names[:len(ring.own) or None]):
             self.globals.pop(name, None)  # as Macaulay2: the name's value is now the variable
             self.symbols[name] = normal(ring.poly.gen(i))
 
@@ -176,7 +179,10 @@ class M2Interpreter(M2Control, Interpreter):
             if name in self.symbols:
                 return self.symbols[name]
             if base.id in self.commands:
-                return Partial(CommandRef(self.commands[base.id]), i)
+                cmd = self.commands[base.id]
+                if any(getattr(ov.func, "subscript_value", False) for ov in cmd.overloads):  # id_M
+                    return self.invoke(cmd, [i])
+                return Partial(CommandRef(cmd), i)
             return Symbol(name)
         return self._entry(self.eval(base), self.eval(node.index))
 
@@ -191,8 +197,12 @@ class M2Interpreter(M2Control, Interpreter):
             return base
         if isinstance(base, FUNCTIONS):
             return Partial(base, k)
+        if isinstance(k, List) and isinstance(base, Matrix):  # M_{j, ...}: columns
+            return columns(base, [to_int(j) for j in k.items])
         if isinstance(k, (List, Array)) and not isinstance(base, Matrix):
             return List([self._entry(base, i) for i in k.items])
+        if isinstance(base, M2Ring) and isinstance(k, Ideal):  # R_P: the local ring
+            return local_ring(base, k)
         if isinstance(base, M2Ring):
             seq, what = [normal(base.poly.gen(i)) for i in range(len(base.own) or len(base.names))], "ring's variables"
         elif isinstance(base, Ideal):
@@ -347,6 +357,10 @@ class M2Interpreter(M2Control, Interpreter):
         args, self.m2_options = _options(cmd, args)
         if not getattr(cmd.overloads[0].func, "quotient_ok", False) and any(_in_quotient(a) for a in args):
             raise MechRuntimeError(f"{cmd.name} on elements of a quotient ring R/I is not supported by mech")
+        if not any(getattr(ov.func, "zz_ok", False) for ov in cmd.overloads) and any(_over_zz(a) for a in args):
+            raise MechRuntimeError(f"{cmd.name} on elements of a polynomial ring over ZZ is not supported by mech")
+        if not any(getattr(ov.func, "local_ok", False) for ov in cmd.overloads) and any(_in_local(a) for a in args):
+            raise MechRuntimeError(f"{cmd.name} on elements of a local ring R_P is not supported by mech")
         try:
             v = self.registry.invoke(cmd, self, list(args))
         except (LimitExceeded, MemoryError) as e:
@@ -425,6 +439,20 @@ def _in_quotient(v: Any) -> bool:
     ring = getattr(v, "ring", None)
     owner = getattr(ring, "owner", None) if ring is not None else (v if isinstance(v, M2Ring) else None)
     return owner is not None and owner.quotient is not None
+
+
+def _over_zz(v: Any) -> bool:
+    if isinstance(v, (List, ExprList)):
+        return any(_over_zz(x) for x in v.items)
+    return is_integral(v if isinstance(v, M2Ring) else getattr(v, "ring", None))
+
+
+def _in_local(v: Any) -> bool:
+    if isinstance(v, (List, ExprList)):
+        return any(_in_local(x) for x in v.items)
+    if isinstance(v, M2Ring):
+        return localized_at(v) is not None
+    return isinstance(v, LocalFraction) or localized_at(getattr(v, "ring", None)) is not None
 
 
 # ---------------------------------------------------------------- the interactive shell

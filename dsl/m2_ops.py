@@ -10,7 +10,9 @@ from typing import Any, Callable, Optional
 
 from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
-from .m2_rings import M2Ring, common_ring, normal, owner, promote, quotient_ring
+from .m2_local import LocalFraction, local_arith, localized_at, to_local
+from .m2_modules import FreeModule, Map, quotient_module, rows, scaled
+from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
@@ -24,6 +26,8 @@ def ring_of(v: Any) -> Optional[M2Ring]:
     """The Macaulay2 ring of a polynomial, number, ideal or matrix (None for others)."""
     if isinstance(v, Poly):
         return owner(v)
+    if isinstance(v, LocalFraction):
+        return owner(v.num)
     if isinstance(v, (Number, Ideal, Matrix)):
         return getattr(v.ring, "owner", None) if not isinstance(v, Number) else getattr(v.ring, "owner", None)
     return None
@@ -107,6 +111,18 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return CoeffRing(b, f"ZZ/{b}")
     if op == "/" and isinstance(a, M2Ring):
         return quotient_ring(a, _relations(a, b))
+    if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):
+        return free_module(a, b)
+    if op == "^" and isinstance(a, Matrix) and isinstance(b, List):  # M^{i, ...}: rows
+        return rows(a, [to_int(i) for i in b.items])
+    if op == "/" and isinstance(a, FreeModule):
+        return quotient_module(a, b)
+    if op in ("==", "!=") and isinstance(a, FreeModule) and isinstance(b, FreeModule):
+        return (a == b) == (op == "==")
+    if op == "**" and isinstance(b, M2Ring) and isinstance(a, (Poly, Ideal, Matrix)):
+        return _base_change(a, b)
+    if op in ("//", "%") and any(is_integral(getattr(v, "ring", None)) for v in (a, b)):
+        raise MechRuntimeError(f"{op} on elements of a polynomial ring over ZZ is not supported by mech")
     if op == "//":
         return _floor_div(a, b)
     if op == "%" and type(a) is int and type(b) is int:
@@ -114,6 +130,33 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
             raise MechRuntimeError("division by 0")
         return a % b
     return _arith(op, a, b, current, fallback)
+
+
+def free_module(R: M2Ring, b: int | List) -> FreeModule:
+    """``R^n`` (generators of degree 0) or ``R^{d1, ...}`` (generators of degrees -d1, ...)."""
+    if type(b) is int:
+        if b < 0:
+            raise MechRuntimeError("R^n takes n >= 0")
+        return FreeModule(R, (0,) * b)
+    degs = [d.items[0] if isinstance(d, List) and len(d.items) == 1 else d for d in b.items]
+    return FreeModule(R, tuple(-to_int(d) for d in degs))
+
+
+def _base_change(v: Poly | Ideal | Matrix, S: M2Ring) -> Any:
+    """``v ** S``: a polynomial, ideal or matrix of R in a ring S built on R (R/I, a tower, R_P)."""
+    R = ring_of(v)
+    P = localized_at(S)
+    if P is not None and R is S.info["over"]:
+        move = lambda p: to_local(p, S)  # noqa: E731
+    elif R is not None and promotes(R, S):
+        move = lambda p: promote(p, S)  # noqa: E731
+    else:
+        raise MechTypeError("v ** S: S is not a ring built on v's ring")
+    if isinstance(v, Poly):
+        return move(v)
+    if isinstance(v, Ideal):
+        return Ideal(S.poly, [move(g) for g in v.gens])
+    return Matrix(S.poly, v.nrows, v.ncols, [move(g) for g in v.entries])
 
 
 def _relations(R: M2Ring, b: Any) -> list[Poly]:
@@ -187,9 +230,13 @@ def _quotient(f: Poly, g: Poly) -> Poly:
 
 
 def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable) -> Any:
-    """Arithmetic after promoting both operands to their common ring; quotient rings reduce."""
+    """Arithmetic after promoting both operands to their common ring; quotient rings reduce;
+    local rings have fractions."""
     ra, rb = ring_of(a), ring_of(b)
     ring = ra or rb
+    if ring is not None and localized_at(ring) is not None and op in ("+", "-", "*", "/", "^", "==", "!=") \
+            and isinstance(a, (Poly, Number, LocalFraction, int)) and isinstance(b, (Poly, Number, LocalFraction, int)):
+        return local_arith(op, a, b, ring)
     if ra is not None and rb is not None and ra is not rb and op in "+-*/%" and not isinstance(a, (Ideal, Matrix)) \
             and not isinstance(b, (Ideal, Matrix)):
         ring = common_ring(ra, rb)
@@ -204,13 +251,22 @@ def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable)
     if op == "/" and type(a) is int and type(b) is int:
         if b == 0:
             raise MechRuntimeError("division by 0")
-        if current is None:
+        if current is None or is_integral(current):
             return Fraction(a, b)
         r = current.poly
         return Number(r, r.field(a) / r.field(b))
     if Fraction in (type(a), type(b)) and {type(a), type(b)} <= {int, Fraction} and op in "+-*/^":
         return _rational(op, a, b)
     v = fallback(op, a, b, ring.poly if ring is not None else (current.poly if current else None))
+    if isinstance(v, Matrix) and op == "*" and (isinstance(a, Map) or isinstance(b, Map)):
+        if isinstance(a, Map) and isinstance(b, Map):  # composition
+            v = Map(a.target, b.source, v.entries, a.degree + b.degree) if a.source.rank == b.target.rank else v
+        elif isinstance(b, Map) and not isinstance(a, Matrix):
+            v = scaled(b, a, v)
+        elif isinstance(a, Map) and not isinstance(b, Matrix):
+            v = scaled(a, b, v)
+    if isinstance(v, (Poly, Number)) and is_integral(v.ring) and not _integral(v):
+        raise MechRuntimeError(f"the result of {op} has a fractional coefficient: it is not in a ring over ZZ")
     if isinstance(v, Poly) and ring is not None:
         if ring.quotient is not None:
             v = normal(v)
@@ -218,6 +274,11 @@ def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable)
             raise MechRuntimeError(f"monomial overflow: exponents of this ring are below {ring.max_exponent} "
                                    f"(MonomialSize)")
     return v
+
+
+def _integral(v: Poly | Number) -> bool:
+    coeffs = v.terms.values() if isinstance(v, Poly) else [v.c]
+    return all(getattr(c, "denominator", 1) == 1 for c in coeffs)
 
 
 def _rational(op: str, a: Fraction | int, b: Fraction | int) -> Fraction | int:

@@ -13,6 +13,9 @@ from fractions import Fraction
 from typing import Any
 
 from ..kernel import Poly
+from .m2_local import LocalFraction
+from .m2_modules import CyclicModule, FreeModule
+from .m2_rings import TEXT, tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, M2Function, M2Set,
                         MonomialIdeal, Opt, Partial, RingMap, Symbol, Tally)
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring
@@ -51,30 +54,11 @@ def _terms(p: Poly, names: tuple[str, ...], coeffs: list[tuple[tuple[int, ...], 
 def poly_str(p: Poly) -> str:
     if not p.terms:
         return "0"
-    ring = p.ring
-    own = _own_count(p)
-    if own < ring.nvars:  # a tower: coefficients are polynomials of the coefficient ring
-        groups: dict[tuple[int, ...], dict] = {}
-        for e, c in p.sorted_terms():
-            groups.setdefault(e[:own], {})[e[own:]] = c
-        parts = []
-        for e, sub in groups.items():
-            coeff = _coefficient(ring, own, sub)
-            parts.append((e, coeff, len(sub) > 1))
-        return _terms(p, ring.names[:own], parts)
-    return _terms(p, ring.names, [(e, coeff_str(ring.field, c), False) for e, c in p.sorted_terms()])
-
-
-def _own_count(p: Poly) -> int:
-    r = getattr(p.ring, "owner", None)
-    return len(r.own) if r is not None and r.own else p.ring.nvars
-
-
-def _coefficient(ring: Any, own: int, terms: dict) -> str:
-    """A tower's coefficient (the terms in the coefficient ring's variables) as text."""
-    base = ring.owner.base
-    sub = Poly(base.poly, terms) if hasattr(base, "poly") else None
-    return poly_str(sub) if sub is not None else coeff_str(ring.field, next(iter(terms.values())))
+    split = tower_terms(p)
+    if split is not None:  # a tower: coefficients are polynomials of the coefficient ring
+        names = p.ring.names[:len(split[0][0])]
+        return _terms(p, names, [(e, poly_str(c), len(c.terms) > 1) for e, c in split])
+    return _terms(p, p.ring.names, [(e, coeff_str(p.ring.field, c), False) for e, c in p.sorted_terms()])
 
 
 def _atomic(s: str) -> bool:
@@ -94,7 +78,7 @@ def to_string(v: Any) -> str:
         return coeff_str(v.ring.field, v.c)
     if isinstance(v, Ideal):
         word = "monomialIdeal" if isinstance(v, MonomialIdeal) else "ideal"
-        if v.is_std and not v.nonzero():
+        if (v.is_std or word == "monomialIdeal") and not v.nonzero():
             return f"{word}()"
         gens = [poly_str(g) for g in v.gens]
         if len(gens) == 1 and _atomic(gens[0]):
@@ -127,6 +111,14 @@ def to_string(v: Any) -> str:
         return "*".join(parts)
     if isinstance(v, (Ring, CoeffRing)):
         return v.name or v.describe() if hasattr(v, "describe") else v.name
+    if isinstance(v, LocalFraction):
+        num, den = poly_str(v.num), poly_str(v.den)
+        return (f"({num})" if len(v.num.terms) > 1 else num) + "/" + (f"({den})" if len(v.den.terms) > 1 else den)
+    if isinstance(v, FreeModule):
+        return f"{to_string(v.ring)}^{v.rank}"
+    if isinstance(v, CyclicModule):
+        gens = ", ".join(poly_str(g) for g in v.ideal.gens)
+        return f"cokernel matrix {{{{{gens}}}}}"
     if isinstance(v, RingMap):
         return f"map({to_string(v.target)},{to_string(v.source)},{{{', '.join(poly_str(p) for p in v.images)}}})"
     if isinstance(v, (M2Function, CommandRef, Composed, Partial)):
@@ -135,3 +127,6 @@ def to_string(v: Any) -> str:
         return "null"
     name = getattr(v, "name", None)
     return name or type(v).__name__
+
+
+TEXT["value"] = to_string

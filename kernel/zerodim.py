@@ -13,6 +13,7 @@ from __future__ import annotations
 import random
 from typing import Sequence
 
+from .errors import NotSupported
 from .factor import factorize
 from .groebner import groebner, normal_form
 from .ideals import independent_set, move, product_order, saturate_poly, with_order
@@ -225,7 +226,7 @@ class ZeroDim:
                 continue
             found = self.by_form(g, d)
             if found is None:
-                raise RuntimeError("no primitive element found (inseparable extension or a too small field)")
+                raise NotSupported("no primitive element found (inseparable extension or a too small field)")
             pieces, cyclic = found
             if cyclic:
                 out.extend(p for _, p in pieces)

@@ -9,13 +9,14 @@ from __future__ import annotations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
-from ..dsl.m2_rings import M2Ring, in_quotients, normal, quotient_ring
+from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, normal, quotient_ring, term_degree,
+                             tower_terms)
 from ..dsl.m2_values import MonomialIdeal, RingMap
 from ..dsl.registry import command
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
-from .m2 import _first_ring, _gb, _indices, _minimal, _polys, _quotient_of, gens, sub
+from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, gens, sub
 from .standard import normalize
 
 
@@ -30,10 +31,14 @@ def _owner(ring: PolyRing) -> M2Ring:
 @command("monomialIdeal", dialect="m2")
 @in_quotients
 def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
-    """monomialIdeal(m1, m2, ...) (a list, ideal or matrix too): the monomial ideal of the lead
-    monomials, on its minimal generators."""
+    """monomialIdeal(m1, m2, ...) (a list or matrix too): the monomial ideal of their lead
+    monomials; monomialIdeal I: of the lead monomials of a Gröbner basis of I; on its minimal
+    generators."""
     ring = _first_ring(args) or ctx.basering().poly
-    items = args[0].gens if len(args) == 1 and isinstance(args[0], Ideal) else args
+    items = args
+    if len(args) == 1 and isinstance(args[0], Ideal) and not isinstance(args[0], MonomialIdeal):
+        _no_zz(args[0], "monomialIdeal")
+        items = _gb(args[0]).gens
     monos = {p.lm() for p in _polys(ctx, tuple(items), ring) if not p.is_zero()}
     minimal = [m for m in monos if not any(o != m and all(a <= b for a, b in zip(o, m)) for o in monos)]
     return MonomialIdeal(ring, [ring.monomial(m) for m in sorted(minimal, reverse=True)])
@@ -157,50 +162,100 @@ def support(f: Poly | Ideal) -> List:
 @command("terms", dialect="m2")
 @in_quotients
 def terms(f: Poly) -> List:
-    """terms f: f's terms, from the largest down."""
+    """terms f: f's terms, from the largest down (in a tower A[x]: monomials in x times elements of A)."""
+    split = tower_terms(f)
+    if split is not None:
+        return List([_tower_term(f.ring, e, c) for e, c in split])
     return List([f.ring.monomial(e, c) for e, c in f.sorted_terms()])
+
+
+@command("terms", dialect="m2")
+@in_quotients
+def terms_over(k: Any, f: Poly) -> List:
+    """terms(k, f): f's terms with k (a ring f's ring is built on) as the coefficient ring."""
+    below = k.poly.nvars if isinstance(k, M2Ring) else 0
+    if isinstance(k, M2Ring) and (k.poly.names != f.ring.names[f.ring.nvars - below:]):
+        raise MechRuntimeError("terms(k, f): f's ring is not built on k")
+    own = f.ring.nvars - below
+    groups: dict[tuple[int, ...], dict] = {}
+    for e, c in f.sorted_terms():
+        groups.setdefault(e[:own], {})[e[own:]] = c
+    return List([Poly(f.ring, {e + k2: c for k2, c in sub.items()}) for e, sub in groups.items()])
+
+
+def _tower_term(ring: PolyRing, e: tuple[int, ...], c: Poly) -> Poly:
+    """The term ``c * x^e`` of a tower (``c`` in its coefficient ring)."""
+    return Poly(ring, {e + k: v for k, v in c.terms.items()})
 
 
 @command("leadTerm", dialect="m2")
 @in_quotients
 def lead_term(f: Poly | Ideal | Matrix) -> Any:
-    """leadTerm f: the largest term; leadTerm I: the matrix of the lead terms of a Gröbner basis;
-    leadTerm M (one row): the lead term of each entry."""
+    """leadTerm f: the largest term (in a tower A[x]: with its whole coefficient in A); leadTerm I:
+    the matrix of the lead terms of a Gröbner basis; leadTerm M (one row): the lead term of each entry."""
     if isinstance(f, Matrix):
         if f.nrows != 1:
             raise MechRuntimeError("leadTerm of a matrix with several rows (module elements) is not supported")
-        return Matrix(f.ring, 1, f.ncols, [g.lt() if not g.is_zero() else g for g in f.entries])
+        return Matrix(f.ring, 1, f.ncols, [lead_term(g) for g in f.entries])
     if isinstance(f, Ideal):
-        lts = [g.lt() for g in _gb(f).gens]
+        _no_zz(f, "leadTerm")
+        lts = [lead_term(g) for g in _gb(f).gens]
         return Matrix(f.ring, 1, len(lts), lts)
-    return f.lt() if not f.is_zero() else f
+    if f.is_zero():
+        return f
+    split = tower_terms(f)
+    return _tower_term(f.ring, *split[0]) if split is not None else f.lt()
 
 
 @command("leadMonomial", dialect="m2")
 @in_quotients
 def lead_monomial(f: Poly) -> Poly:
-    """leadMonomial f: the largest monomial (without its coefficient)."""
+    """leadMonomial f: the largest monomial (without its coefficient; in a tower A[x]: a monomial in x)."""
     if f.is_zero():
         raise MechRuntimeError("leadMonomial of 0")
+    split = tower_terms(f)
+    if split is not None:
+        return f.ring.monomial(split[0][0] + (0,) * (f.ring.nvars - len(split[0][0])))
     return f.ring.monomial(f.lm())
 
 
 @command("leadCoefficient", dialect="m2")
 @in_quotients
 def lead_coefficient(f: Poly) -> Any:
-    """leadCoefficient f: the coefficient of the largest term."""
+    """leadCoefficient f: the coefficient of the largest term (in a tower A[x]: an element of A)."""
     if f.is_zero():
         return 0
+    split = tower_terms(f)
+    if split is not None:
+        return split[0][1]
     return Number(f.ring, f.lc())
+
+
+@command("degree", dialect="m2")
+@in_quotients
+def degree_in(x: Poly, f: Poly) -> int:
+    """degree(x, f): the largest power of the variable x in f."""
+    i = _indices(f.ring, x)[0]
+    if f.is_zero():
+        raise MechRuntimeError("degree of the zero polynomial: -infinity (not a value of mech)")
+    return max(e[i] for e in f.terms)
+
+
+@command("degrees", dialect="m2")
+@in_quotients
+def degrees(R: Ring) -> List:
+    """degrees R: the degree (a list) of each of R's own variables."""
+    vecs = degree_vectors(_owner(R.poly))[:len(R.own) or None]
+    return List([List(list(v)) for v in vecs])
 
 
 @command("isHomogeneous", dialect="m2")
 @in_quotients
 def is_homogeneous(f: Poly | Ideal) -> bool:
     """isHomogeneous f: whether f (every generator of I) is homogeneous for the ring's degrees."""
-    degs = _owner(f.ring).degrees or (1,) * f.ring.nvars
+    vecs = degree_vectors(_owner(f.ring))
     polys = f.gens if isinstance(f, Ideal) else [f]
-    return all(len({sum(d * k for d, k in zip(degs, e)) for e in p.terms}) <= 1 for p in polys)
+    return all(len({term_degree(e, vecs) for e in p.terms}) <= 1 for p in polys)
 
 
 def _homogenize(p: Poly, i: int, degs: tuple) -> Poly:
@@ -228,6 +283,7 @@ def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
         return _homogenize(f, i, degs)
     if isinstance(f, Matrix):
         return Matrix(f.ring, f.nrows, f.ncols, [_homogenize(p, i, degs) for p in f.entries])
+    _no_zz(f, "homogenize")
     order = f.ring.order
     if not order.is_global or any(b.kind not in ("dp", "Dp", "wp", "Wp") for b in order.blocks) or len(order.blocks) != 1:
         raise MechRuntimeError("homogenize of an ideal needs a ring with a degree order (GRevLex, GLex)")

@@ -7,15 +7,17 @@
 Elements are told apart as Macaulay2's hash tables do (``===``): by their type, ring and text."""
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from functools import cmp_to_key
 from itertools import combinations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
+from ..dsl.m2_local import local_ideal_subset, localized_at
 from ..dsl.m2_printing import to_string
-from ..dsl.m2_rings import in_quotients
-from ..dsl.m2_values import FUNCTIONS, Array, M2Set, Tally
+from ..dsl.m2_rings import in_quotients, is_integral
+from ..dsl.m2_values import FUNCTIONS, Array, M2Set, Symbol, Tally
 from ..dsl.registry import command
 from ..dsl.values import NONE, ExprList, Ideal, List, Number, typeof
 from ..kernel import Poly
@@ -320,8 +322,12 @@ def tally(L: Seq) -> Tally:
 @in_quotients
 def is_subset(a: Any, b: Any) -> bool:
     """isSubset(A, B): whether every element of A is one of B (lists, sets), or the ideal A lies in B."""
+    if isinstance(a, Ideal) and isinstance(b, Ideal) and localized_at(b.ring) is not None:
+        return local_ideal_subset(a, b)
     if isinstance(a, Ideal) and isinstance(b, Ideal):
-        from .m2 import _gb, _quotient_of
+        from .m2 import _gb, _quotient_of, zz_subset
+        if is_integral(b.ring):
+            return zz_subset(a, b)
         from ..kernel.groebner import normal_form
         q = _quotient_of(b.ring)
         basis = list(_gb(b).gens) + (list(q.basis) if q is not None else [])
@@ -331,13 +337,32 @@ def is_subset(a: Any, b: Any) -> bool:
 
 
 # ---------------------------------------------------------------- order
+def _string_key(text: str) -> tuple:
+    """Macaulay2's order of strings: other characters before digits before letters, runs of
+    digits by their value, letters regardless of case (then capitals first)."""
+    primary, case = [], []
+    for run in re.findall(r"\d+|\D", text):
+        if run.isdigit():
+            primary.append((1, int(run), ""))
+        elif run.isalpha():
+            primary.append((2, 0, run.lower()))
+            case.append(0 if run.isupper() else 1)
+        else:
+            primary.append((0, 0, run))
+    return tuple(primary), tuple(case)
+
+
+# ---------------------------------------------------------------- order
 def _compare(x: Any, y: Any) -> int:
     """Macaulay2's ``?`` for sorting: numbers by value, strings alphabetically, polynomials by
     their leading monomials in the ring's order then coefficients, lists entry by entry."""
     if isinstance(x, (int, Fraction)) and isinstance(y, (int, Fraction)) and not isinstance(x, bool):
         return (x > y) - (x < y)
+    if isinstance(x, Symbol) and isinstance(y, Symbol):
+        x, y = x.name, y.name
     if isinstance(x, str) and isinstance(y, str):
-        return (x > y) - (x < y)
+        kx, ky = _string_key(x), _string_key(y)
+        return (kx > ky) - (kx < ky)
     if isinstance(x, Number):
         x = x.to_poly()
     if isinstance(y, Number):
@@ -478,8 +503,22 @@ def needs_package(name: str, *options: Any) -> Any:
     """needsPackage "Name": the package (its name; nothing to load for the packages whose functions mech has)."""
     if name not in PACKAGES:
         raise MechRuntimeError(f"the package {name} is not available in mech (available: {', '.join(sorted(PACKAGES))})")
-    from ..dsl.m2_values import Symbol
     return Symbol(name)
+
+
+@command("debug", dialect="m2")
+def debug(package: Any) -> None:
+    """debug P: makes a package's private names visible in Macaulay2; mech has none to show (nothing)."""
+    if not isinstance(package, Symbol) or package.name not in PACKAGES:
+        raise MechRuntimeError("debug takes a package (needsPackage \"Name\")")
+
+
+@command("isPrime", dialect="m2")
+@in_quotients
+def is_prime_number(n: int) -> bool:
+    """isPrime n: whether the integer n is a prime number."""
+    import flint
+    return n > 1 and bool(flint.fmpz(n).is_prime())
 
 
 @command("identity", dialect="m2")

@@ -1,0 +1,114 @@
+"""The LocalRings package in the Macaulay2 dialect: ``localRing(R, P)`` (also ``R_P``),
+``promote``, ``liftUp``, ``isWellDefined``, ``length(R_P^1/I)``, and which commands are right on
+ideals of a local ring (values and arithmetic: :mod:`mech.dsl.m2_local`)."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..dsl.errors import MechRuntimeError, MechTypeError
+from ..dsl.m2_local import LocalFraction, in_local_rings, local_ring, localized_at, to_global, to_local
+from ..dsl.m2_modules import CyclicModule
+from ..dsl.m2_rings import M2Ring
+from ..dsl.registry import command
+from ..dsl.values import Ideal, List, Matrix
+from ..kernel import Poly
+from . import m2, m2_ideals, m2_lists
+
+
+@command("localRing", dialect="m2")
+@in_local_rings
+def local_ring_cmd(R: M2Ring, P: Ideal) -> M2Ring:
+    """localRing(R, P): the localization of the polynomial ring R at the prime ideal P (as R_P)."""
+    return local_ring(R, P)
+
+
+def _move(v: Any, ring: Any, to: Any) -> Any:
+    if isinstance(v, Poly):
+        return to(v, ring)
+    if isinstance(v, Ideal):
+        return Ideal(ring.poly, [to(g, ring) for g in v.gens])
+    if isinstance(v, Matrix):
+        return Matrix(ring.poly, v.nrows, v.ncols, [to(g, ring) for g in v.entries])
+    if isinstance(v, List):
+        return List([_move(x, ring, to) for x in v.items])
+    raise MechTypeError("expected a polynomial, ideal, matrix or list")
+
+
+@command("promote", dialect="m2")
+@in_local_rings
+def promote(v: Any, S: M2Ring) -> Any:
+    """promote(I, R_P): an element, ideal or matrix of R in its local ring R_P."""
+    P = localized_at(S)
+    if P is None:
+        raise MechRuntimeError("promote(x, S) is supported for a local ring S = R_P")
+    if getattr(v, "ring", None) not in (S.info["over"].poly, S.poly) and not isinstance(v, List):
+        raise MechTypeError("promote(x, R_P) takes an element, ideal or matrix of R")
+    return _move(v, S, lambda p, ring: to_local(p, ring))
+
+
+@command("liftUp", dialect="m2")
+@in_local_rings
+def lift_up(v: Any) -> Any:
+    """liftUp I: an ideal, element or matrix of R_P with the same generators in R (fractions refused)."""
+    ring = getattr(v, "ring", None)
+    S = getattr(ring, "owner", None)
+    if S is None or localized_at(S) is None:
+        raise MechRuntimeError("liftUp takes an element, ideal or matrix of a local ring")
+    return _move(v, S.info["over"], lambda p, R: Poly(R.poly, dict(p.terms)))
+
+
+@command("ring", dialect="m2")
+@in_local_rings
+def ring_of_fraction(f: LocalFraction) -> M2Ring:
+    """ring f: the local ring of a fraction."""
+    return f.num.ring.owner
+
+
+@command("numerator", dialect="m2")
+@in_local_rings
+def numerator(f: LocalFraction | Poly) -> Poly:
+    """numerator f: the numerator of an element of a local ring (in lowest terms)."""
+    return f.num if isinstance(f, LocalFraction) else f
+
+
+@command("denominator", dialect="m2")
+@in_local_rings
+def denominator(f: LocalFraction | Poly) -> Poly:
+    """denominator f: the denominator of an element of a local ring (in lowest terms)."""
+    return f.den if isinstance(f, LocalFraction) else f.ring.one()
+
+
+@command("isWellDefined", dialect="m2")
+@in_local_rings
+def is_well_defined(S: M2Ring) -> bool:
+    """isWellDefined R_P: whether P is a prime ideal."""
+    P = localized_at(S)
+    if P is None:
+        raise MechRuntimeError("isWellDefined is supported for local rings R_P")
+    from ..kernel.primdec import is_prime
+    return is_prime(list(P.nonzero()), S.info["over"].poly)
+
+
+@command("length", dialect="m2")
+@in_local_rings
+def length(M: CyclicModule) -> int:
+    """length(R_P^1/I): the length of R_P/I for a maximal ideal P."""
+    S = M.ring.owner
+    P = localized_at(S)
+    if P is None:
+        raise MechRuntimeError("length of a module is supported over local rings R_P")
+    from ..kernel.errors import NotSupported
+    from ..kernel.localization import local_length
+    try:
+        return local_length([to_global(g, S) for g in M.ideal.nonzero()], list(P.nonzero()), S.info["over"].poly)
+    except NotSupported as e:
+        raise MechRuntimeError(str(e)) from None
+
+
+#: commands right on ideals of a local ring as computed in R (localization commutes with them), or
+#: that do not compute in the ring
+for _f in (m2.ideal, m2.matrix, m2_ideals.ring, m2.quotient_cmd, m2.saturate, m2.intersect, m2.use, m2_lists.is_subset, m2_lists.print_,
+           m2_lists.to_string_cmd, m2_lists.assert_, m2_lists.apply, m2_lists.scan, m2_lists.select,
+           m2_lists.any_, m2_lists.all_, m2_lists.first, m2_lists.last, m2_lists.length, m2_lists.to_list,
+           m2_lists.error):
+    _f.local_ok = True
