@@ -112,7 +112,7 @@ def test_loops_against_axes_in_singular(name, links, mobility, modes, tmp_path):
 @pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
 def test_bricard_is_mobile_in_singular():
     """The line-symmetric Bricard 6R: its axes' ideal (24 variables) and mech's loop closure both have
-    dimension 1 (mech's own analysis of this loop takes too long here: docs/mechanisms.md, Limits)."""
+    dimension 1 (mech's own analysis of this loop takes minutes: docs/mechanisms.md, Limits)."""
     links = [(1, R90), (2, R35), (3, R513)] * 2
     assert singular_dim_and_primes(*loop_ideal(links), primes=False) == (1, None)
     R, gens = parse_mechanism(description("bricard")).constraints()
