@@ -16,7 +16,8 @@ from ..dsl.registry import command
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
-from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, gens, sub
+from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, gens
+from .m2_matrices import sub
 from .standard import normalize
 
 

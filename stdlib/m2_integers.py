@@ -7,10 +7,10 @@ substitutions and ring maps) or compute with strong Gröbner bases (:mod:`mech.k
 others refuse elements of rings over ZZ."""
 from __future__ import annotations
 
-from . import m2, m2_ideals, m2_lists, m2_local, m2_modules
+from . import m2, m2_ideals, m2_lists, m2_local, m2_matrices, m2_modules
 
-_EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2.submatrix, m2.det, m2.minors, m2.jacobian,
-          m2.diff, m2.sub, m2.use, m2.degree, m2_ideals.generators, m2_ideals.numgens_ring, m2_ideals.vars_,
+_EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2.submatrix, m2_matrices.det, m2_matrices.minors, m2_matrices.jacobian,
+          m2_matrices.diff, m2_matrices.sub, m2.use, m2.degree, m2_ideals.generators, m2_ideals.numgens_ring, m2_ideals.vars_,
           m2_ideals.generic_matrix, m2_ideals.numcols, m2_ideals.numrows, m2_ideals.support, m2_ideals.terms,
           m2_ideals.terms_over, m2_ideals.lead_term, m2_ideals.lead_monomial, m2_ideals.lead_coefficient,
           m2_ideals.is_homogeneous, m2_ideals.degrees, m2_ideals.homogenize, m2_ideals.substitute,

@@ -12,7 +12,7 @@ from ..dsl.m2_modules import (CyclicModule, FreeModule, Map, is_homogeneous_map,
 from ..dsl.m2_rings import in_quotients
 from ..dsl.m2_values import FUNCTIONS, Opt
 from ..dsl.registry import command
-from ..dsl.values import ExprList, Ideal, List, Matrix, NoneValue, Number, to_int
+from ..dsl.values import ExprList, List, Matrix, NoneValue, Number, to_int
 from ..kernel import Poly
 from .m2 import _polys
 

@@ -1,0 +1,118 @@
+"""The Macaulay2 dialect's commands on matrices and polynomials: jacobian, minors, det, diff, sub, factor."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..dsl.errors import MechRuntimeError, MechTypeError
+from ..dsl.m2_ops import lift_to
+from ..dsl.m2_rings import is_integral
+from ..dsl.m2_values import Factored, Opt
+from ..dsl.registry import command
+from ..dsl.values import Ideal, List, Matrix, Ring
+from ..kernel import Poly
+from .m2 import _indices, _polys
+
+@command("jacobian", dialect="m2")
+def jacobian(I: Ideal | Matrix) -> Matrix:
+    """jacobian I: the matrix of partial derivatives, one row per variable, one column per generator."""
+    polys = I.gens if isinstance(I, Ideal) else I.entries
+    R = getattr(I.ring, "owner", None)
+    n = len(R.own) if R is not None and R.own else I.ring.nvars  # a tower: its own variables
+    return Matrix(I.ring, n, len(polys), [f.diff(i) for i in range(n) for f in polys])
+
+
+@command("minors", dialect="m2")
+def minors(k: int, M: Matrix) -> Ideal:
+    """minors(k, M): the ideal of the k x k minors of M (column subsets outermost, as Macaulay2
+    lists them; zero minors left out)."""
+    from itertools import combinations
+
+    from ..kernel import matrix as KM
+    if not 0 < k <= min(M.nrows, M.ncols):
+        raise MechRuntimeError(f"minors: k must be between 1 and {min(M.nrows, M.ncols)}")
+    found = []
+    for cols in combinations(range(1, M.ncols + 1), k):
+        for rows in combinations(range(1, M.nrows + 1), k):
+            sub = KM.Matrix(M.ring, k, k, [M.get(i, j) for i in rows for j in cols])
+            d = KM.det(sub)
+            if not d.is_zero():
+                found.append(d)
+    return Ideal(M.ring, found, is_std=not found)
+
+
+@command("det", dialect="m2")
+def det(M: Matrix) -> Poly:
+    """det M: the determinant of a square matrix."""
+    from ..kernel import matrix as KM
+    if M.nrows != M.ncols:
+        raise MechRuntimeError(f"det of a {M.nrows} x {M.ncols} matrix: the matrix must be square")
+    return KM.det(KM.Matrix(M.ring, M.nrows, M.ncols, M.entries))
+
+
+@command("diff", dialect="m2")
+def diff(x: Poly | Matrix, f: Poly | Ideal | Matrix) -> Any:
+    """diff(x, f): the derivative of f by the variable x; diff(P, f) for a polynomial P: P's
+    differential operator (x^2*y: d^3/dx^2dy) applied to f; diff(M, f): to each entry of M."""
+    if isinstance(x, Poly) and x.ring is not f.ring and hasattr(f.ring, "owner"):  # a coefficient ring's variable
+        x = lift_to(x, f.ring.owner)
+    if isinstance(x, Matrix):
+        if not isinstance(f, Poly):
+            raise MechTypeError("diff(M, f) takes a matrix M and a polynomial f")
+        return Matrix(x.ring, x.nrows, x.ncols, [_operator(p, f) for p in x.entries])
+    if isinstance(f, Poly):
+        return _operator(x, f)
+    entries = f.gens if isinstance(f, Ideal) else f.entries
+    rows, cols = (1, len(f.gens)) if isinstance(f, Ideal) else (f.nrows, f.ncols)
+    return Matrix(f.ring, rows, cols, [_operator(x, g) for g in entries])
+
+
+def _operator(P: Poly, f: Poly) -> Poly:
+    """The differential operator of the polynomial P applied to f."""
+    out = f.ring.zero()
+    for e, c in P.terms.items():
+        g = f
+        for i, k in enumerate(e):
+            for _ in range(k):
+                g = g.diff(i)
+        out = out + g * c
+    return out
+
+
+@command("sub", dialect="m2")
+def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
+    """sub(f, {x => a, y => b}): substitute for the variables; sub(f, S): the same polynomials
+    (variables matched by name, the others sent to 0) in the ring S."""
+    ring = f.ring
+    if isinstance(where, Ring):
+        target = where.poly
+        images = []
+        for name in ring.names:  # as map(S, R): variables S lacks go to 0
+            images.append(target.gen(target.names.index(name)) if name in target.names else target.zero())
+    else:
+        target = ring
+        images = [ring.gen(i) for i in range(ring.nvars)]
+        for item in where.items:
+            if not isinstance(item, Opt):
+                raise MechTypeError("sub(f, {x => a, ...}) takes a list of options")
+            i = _indices(ring, item.key)[0]
+            images[i] = _polys(ctx, (item.value,))[0]
+    from ..dsl.maps import map_value
+    out = map_value(f, images, target)
+    if is_integral(target) and any(getattr(c, "q", 1) != 1 for g in _polys(ctx, (out,), target) for c in g.terms.values()):
+        raise MechRuntimeError("sub: the result has a fractional coefficient: it is not in a ring over ZZ")
+    return out
+
+
+@command("factor", dialect="m2")
+def factor(f: Poly) -> Factored:
+    """factor f: the factorization of f into irreducible factors (times a unit)."""
+    from ..kernel.factor import factorize
+    unit, factors = factorize(f)
+    return Factored(_unit(f, unit), tuple((g, k) for g, k in factors))
+
+
+def _unit(f: Poly, unit: Any) -> Any:
+    field = f.ring.field
+    if field.characteristic:
+        return int(field.symmetric(unit))
+    return int(unit.p) if unit.q == 1 else unit
