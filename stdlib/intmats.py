@@ -41,7 +41,7 @@ def transpose_intmat(m: IntMat) -> IntMat:
 
 @command("transpose")
 def transpose_intvec(v: IntVec) -> IntMat:
-    """An intvec is a column: its transpose is a 1 x n intmat."""
+    # an intvec is a column: its transpose is a 1 x n intmat (help shows transpose's matrix example)
     return IntMat(1, len(v.values), v.values)
 
 
