@@ -1,5 +1,5 @@
 """Singular's syntax and assignment corners (issue 21): ``return(x)`` closing a block without ``;``,
-an ``else`` without ``if`` (skipped), several values into a list entry or a def."""
+an ``else`` without ``if`` (skipped), several values into a list entry or a def, ``LIB("x.lib")``."""
 from __future__ import annotations
 
 from tests.util import error, run
@@ -28,3 +28,9 @@ def test_matrix_resize_needs_positive_sizes() -> None:
 def test_map_assignment_and_entries() -> None:
     src = "ring R=0,(x,y),dp; ring S=0,(a,b),dp; map phi=R,a,b; phi=R,a2,3; phi(x+y); phi[2]=b2; phi(x+y);"
     assert run(src).split() == ["a2+3", "a2+b2"]
+
+
+def test_lib_with_parentheses() -> None:
+    """``LIB("x.lib");`` is Singular's other spelling of ``LIB "x.lib";``."""
+    assert run('LIB("poly.lib"); ring r = 0,(x,y),dp; ideal i = x2, y3; vdim(std(i));').split() == ["6"]
+    assert "unknown library 'nosuch.lib'" in str(error('LIB("nosuch.lib");'))
