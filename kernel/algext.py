@@ -20,6 +20,7 @@ from typing import Any
 import flint
 
 from .errors import DomainError, NotSupported
+from .powering import power
 from .ratfunc import RatFunc, RationalFunctionField
 
 
@@ -301,14 +302,7 @@ class AlgNum(RatFunc):
             return NotImplemented
         if k < 0:
             return self.inverse() ** (-k)
-        result, base = self.field.one, self
-        while k:
-            if k & 1:
-                result = result * base
-            k >>= 1
-            if k:
-                base = base * base
-        return result
+        return power(self, k, self.field.one)
 
     def __eq__(self, other: object) -> bool:
         try:

@@ -17,6 +17,7 @@ from .errors import DomainError
 from .groebner import groebner, normal_form
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing
+from .powering import power
 
 Ideal = Sequence[Poly]
 
@@ -158,15 +159,7 @@ def ideal_power(ideal: Ideal, k: int, ring: PolyRing | None = None) -> list[Poly
     ring = ring_of(ideal, ring=ring)
     if k < 0:
         raise DomainError("the exponent of an ideal power must be nonnegative")
-    result = [ring.one()]
-    base = std(ideal, ring)
-    while k:
-        if k & 1:
-            result = ideal_product(result, base, ring=ring)
-        k >>= 1
-        if k:
-            base = ideal_product(base, base, ring=ring)
-    return result
+    return power(std(ideal, ring), k, [ring.one()], lambda a, b: ideal_product(a, b, ring=ring))
 
 
 def intersect(*ideals: Ideal, ring: PolyRing | None = None) -> list[Poly]:

@@ -16,6 +16,7 @@ import flint
 from .coeffs import PrimeField, RationalField
 from .errors import DivisionError, DomainError
 from .poly import Poly, PolyRing, divides, sub_exp
+from .powering import power
 
 
 def exact_divide(a: Poly, b: Poly) -> Poly:
@@ -184,14 +185,7 @@ class Matrix:
             raise DomainError("only square matrices have powers")
         if not isinstance(k, int) or k < 0:
             raise DomainError("exponent must be a non-negative integer")
-        result, base = Matrix.identity(self.ring, self.nrows), self
-        while k:
-            if k & 1:
-                result = result * base
-            k >>= 1
-            if k:
-                base = base * base
-        return result
+        return power(self, k, Matrix.identity(self.ring, self.nrows))
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Matrix):

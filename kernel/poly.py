@@ -14,6 +14,7 @@ from . import flint_bridge
 from .coeffs import Field
 from .errors import DomainError
 from .order import Exp, MonomialOrder
+from .powering import power
 
 
 class PolyRing:
@@ -222,7 +223,6 @@ class Poly:
     def __pow__(self, k: int) -> "Poly":
         if not isinstance(k, int) or k < 0:
             raise DomainError("exponent must be a non-negative integer")
-        result, base = self.ring.one(), self
         if len(self.terms) == 1:
             (e, c), = self.terms.items()
             return Poly(self.ring, {tuple(v * k for v in e): c ** k})
@@ -230,13 +230,7 @@ class Poly:
             t = flint_bridge.power(self.ring.field, self.ring.nvars, self.terms, k)
             if t is not None:
                 return Poly(self.ring, t)
-        while k:
-            if k & 1:
-                result = result * base
-            k >>= 1
-            if k:
-                base = base * base
-        return result
+        return power(self, k, self.ring.one())
 
     def mul_term(self, exp: Exp, coeff: Any) -> "Poly":
         """``self * coeff * x^exp``."""

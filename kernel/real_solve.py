@@ -32,6 +32,7 @@ from .coeffs import RationalField
 from .dimension import krull_dim
 from .groebner import groebner, normal_form
 from .hilbert import kbase
+from .powering import power
 from .ideals import dp_ring, move
 from .order import Exp
 from .poly import Poly, PolyRing
@@ -296,14 +297,7 @@ def shape_representation(poly: fmpz_poly, shape: Sequence[fmpq_poly]) -> RUR:
 
 
 def _powmod(p: fmpq_poly, k: int, f: fmpq_poly) -> fmpq_poly:
-    out, base = fmpq_poly([1]), p % f
-    while k:
-        if k & 1:
-            out = (out * base) % f
-        k >>= 1
-        if k:
-            base = (base * base) % f
-    return out
+    return power(p % f, k, fmpq_poly([1]), lambda a, b: (a * b) % f)
 
 
 def ball_eval(p: fmpq_poly, t: arb) -> arb:
