@@ -205,8 +205,10 @@ def _plot(ctx: Any, m: Mechanism, path: str, links: Sequence[Any] | None, count:
     if planar:
         scene = configuration_scene(m, a, [k - 1 for k in links], count)
     else:
-        from mech.stdlib.plots_spatial import space_configuration_scene
+        from mech.stdlib.plots_spatial import relaxation_note, space_configuration_scene
         scene = space_configuration_scene(m, a, [k - 1 for k in links], count)
+        if relaxation_note(m):
+            ctx.warn(f"plotConfigurations: {relaxation_note(m)}")
     _write(ctx, scene, path, f"configuration space of {m}")
 
 

@@ -285,11 +285,22 @@ def circle_pairs(m: Mechanism) -> list[tuple[int, int]]:
             if n.startswith("c") and names[i + 1] == "s" + n[1:]]
 
 
+def relaxation_note(m: Mechanism) -> str:
+    """What a plot of a loop with helical joints shows: the cylindrical relaxation (its ideal lets each
+    helical joint slide freely; the coupling d = pitch * theta is not polynomial); "" without them."""
+    names = [j.name for j in m.joints if isinstance(j, Helical)]
+    if not names:
+        return ""
+    many = len(names) > 1
+    return (f"cylindrical relaxation: helical joint{'s' if many else ''} {', '.join(names)} "
+            f"slide{'' if many else 's'} freely here (d = pitch·θ is not imposed)")
+
+
 def space_configuration_scene(m: Mechanism, a: Any, chosen: Sequence[int], count: int) -> "Scene":
     """The configuration space of a loop of joints or a spatial mechanism (analysed in ``a``) in
     the coordinates numbered ``chosen`` (0-based in :func:`coordinates`): angles on [-pi, pi],
     slides and point coordinates on the range of the samples."""
-    from mech.stdlib._scene import Axes2D, Axes3D, Markers, Scene, legend, nice_ticks, pi_ticks
+    from mech.stdlib._scene import Axes2D, Axes3D, Markers, Scene, Text, legend, nice_ticks, pi_ticks
     from mech.stdlib.plot_sampling import COLOURS, _numpy, _rational, _thin, _title, sample
     np = _numpy()
     names = coordinates(m)
@@ -320,6 +331,9 @@ def space_configuration_scene(m: Mechanism, a: Any, chosen: Sequence[int], count
     labels = [names[k] for k in chosen]
     scene = Scene(800, 540)
     _title(scene, str(m), 305)
+    note = relaxation_note(m)
+    if note:
+        scene.add(Text(305, 40, note, 11, cls="note"))
     if len(chosen) == 2:
         axes = Axes2D((80, 45, 530, 480), ranges[0], ranges[1])
         axes.frame(scene, ticks[0], ticks[1], labels[0], labels[1])

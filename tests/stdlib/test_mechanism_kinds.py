@@ -119,6 +119,32 @@ def test_bricard_is_mobile_in_singular():
     assert singular_dim_and_primes(list(R.names), [poly_str(g) for g in gens], primes=False) == (1, None)
 
 
+def singular_primes_mod_p(names: list[str], eqs: list[str]) -> list[int]:
+    """The dimensions of the minimal primes of the ideal over Z/32003 (Singular's minAssGTZ)."""
+    script = (f'LIB "primdec.lib"; ring r = 32003, ({",".join(names)}), dp; ideal J = {", ".join(eqs)};\n'
+              'list L = minAssGTZ(J); int i; for (i = 1; i <= size(L); i++) { print("dim " + string(dim(std(L[i])))); }\n')
+    return sorted(int(line.split()[1]) for line in run_singular(script, timeout=600).splitlines() if line.strip())
+
+
+@pytest.mark.slow
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_bricard_two_modes_in_singular(tmp_path):
+    """The line-symmetric Bricard 6R moves in two modes: two minimal primes of dimension 1 over Z/32003 for
+    the axes' ideal (24 variables, written here) and for mech's loop closure (a prime over Q stays a union
+    of primes modulo a good prime, so at most two over Q), and mech's motionModes finds two over Q."""
+    links = [(1, R90), (2, R35), (3, R513)] * 2
+    assert singular_primes_mod_p(*loop_ideal(links)) == [1, 1]
+    R, gens = parse_mechanism(description("bricard")).constraints()
+    assert singular_primes_mod_p(list(R.names), [poly_str(g) for g in gens]) == [1, 1]
+    script = (f'LIB "mechanism.lib"; mechanism m = "{description("bricard")}"; def R = configurationRing(m); '
+              'setring R; list L = motionModes(m); size(L); L[1][2]; L[2][2];')
+    r = subprocess.run([sys.executable, "-m", "mech", "-c", script], cwd=tmp_path, capture_output=True, text=True,
+                       timeout=1200)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.split() == ["2", "1", "1"]
+
+
 @pytest.mark.singular
 @pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
 @pytest.mark.parametrize("name, names, eqs, mobility, modes", [

@@ -11,6 +11,7 @@ import sys
 import numpy as np
 import pytest
 
+from mech import Session
 from mech.dsl.errors import MechError
 from tests.util import ROOT
 from tests.stdlib.test_plots import NS, by_class, dots, numbers, plane_map, run, svg
@@ -119,6 +120,20 @@ def test_a_helical_joint_is_drawn_where_its_slide_fits_its_angle(tmp_path, monke
         run(tmp_path, monkeypatch, f'mechanism m = "{screw}"; drawMechanism(m, list("1/2", "-0.8660254038", "1/2", '
             '"0.8660254038", 1, -1), "s.svg");')
     assert "not a configuration of the helical joint B: d_B = 1 is not 1/2 times its angle 1.0472" in str(e.value)
+
+
+def test_a_helical_loop_is_plotted_as_its_cylindrical_relaxation_and_says_so(tmp_path, monkeypatch):
+    """The ideal lets a helical joint slide freely: the plot is of that relaxation (dimension 2 for the screw),
+    its picture and a warning say so; a loop without helical joints has no such note."""
+    monkeypatch.chdir(tmp_path)
+    s = Session()
+    out = s.execute('LIB "mechanism.lib"; mechanism m = "revolute A; helical B pitch 1/2; prismatic C"; '
+                    'plotConfigurations(m, "s.svg", 300);')
+    note = "cylindrical relaxation: helical joint B slides freely here (d = pitch·θ is not imposed)"
+    assert f"// ** plotConfigurations: {note}" in out
+    assert [t.text for t in by_class(svg(tmp_path / "s.svg"), "note")] == [note]
+    run(tmp_path, monkeypatch, f'mechanism m = "{BENNETT}"; plotConfigurations(m, "b.svg", 300);')
+    assert by_class(svg(tmp_path / "b.svg"), "note") == []
 
 
 def test_configuration_space_of_spatial_points(tmp_path, monkeypatch):
