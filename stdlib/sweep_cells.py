@@ -1,21 +1,32 @@
-"""Designs of a two-parameter grid grouped by the cells of the discriminant curves.
+"""Designs of a two-parameter sweep grouped by the cells of the discriminant curves.
 
-Two neighbouring designs of a grid (same row or same column) are joined when the segment between
-them meets none of the curves (nor an axis: a zero length is special); this is decided exactly, from
-the real roots of each curve's polynomial restricted to the grid line. Designs joined by a chain of
-such segments lie in one connected component of the complement of the curves, where the number of
-real assembly modes is constant: one of them is analysed, the others get its count. Designs on a
-curve are never grouped. :func:`check_cells` is the converse check on a computed table: neighbours
-with different counts must be separated by a curve.
+Two designs are joined when the segment between them meets none of the curves (nor an axis: a zero
+length is special); this is decided exactly, from the real roots of each curve's polynomial
+restricted to the segment. Designs joined by a chain of such segments lie in one connected
+component of the complement of the curves, where the number of real assembly modes is constant:
+one of them is analysed, the others get its count. Designs on a curve are never grouped.
+
+* A full grid (:func:`grid_cells`): neighbours in a row or a column, each grid line's roots
+  isolated once.
+* Any other design set (random, Latin hypercube, a CSV file; :func:`scattered_cells`): the sign
+  vector of the curves' polynomials at a design is a first filter (designs with different signs are
+  in different cells), but one sign vector can belong to several components, so each design is
+  joined to a nearby earlier design of its sign vector only when the segment between them is
+  free of the curves (up to ``tries`` nearest ones are tried); a design joined to none is analysed.
+
+:func:`check_cells` is the converse check on a computed table: designs of one group with different
+counts (never, when the curves are right).
 """
 from __future__ import annotations
 
 from fractions import Fraction
 from typing import Any, Sequence
 
-from flint import fmpq, fmpq_poly
+import math
 
-from mech.kernel.real_roots import isolate_real_roots
+from flint import fmpq, fmpq_mpoly_ctx, fmpq_poly
+
+from mech.kernel.real_roots import count_real_roots, isolate_real_roots
 
 Terms = dict[tuple[int, int], Fraction]
 
@@ -109,13 +120,74 @@ def grid_cells(points: dict[int, tuple[Fraction, Fraction]], curves: Sequence[Te
     return {i: find(i) for i in points}
 
 
+def design_cells(points: dict[int, tuple[Fraction, Fraction]], curves: Sequence[Terms]) -> dict[int, int]:
+    """Each design mapped to the smallest id of its group: :func:`grid_cells` for a full grid,
+    else :func:`scattered_cells`."""
+    return grid_cells(points, curves) or scattered_cells(points, curves)
+
+
+def scattered_cells(points: dict[int, tuple[Fraction, Fraction]], curves: Sequence[Terms],
+                    tries: int = 4) -> dict[int, int]:
+    """For any designs: each design off the curves mapped to the smallest id of its group (joined
+    to an earlier design of its sign vector by a segment free of the curves); designs on a curve
+    map to themselves."""
+    barriers = list(curves) + [{(1, 0): Fraction(1)}, {(0, 1): Fraction(1)}]
+    ctx = fmpq_mpoly_ctx.get(("a", "b"), "lex")
+    polys = [ctx.from_dict({e: fmpq(c.numerator, c.denominator) for e, c in f.items()}) for f in barriers]
+    a, b = ctx.gens()
+    xs = [float(p[0]) for p in points.values()] or [0.0]
+    ys = [float(p[1]) for p in points.values()] or [0.0]
+    width = max(max(xs) - min(xs), 1e-12)
+    height = max(max(ys) - min(ys), 1e-12)
+    side = max(1, int(math.sqrt(len(points) / 2)))  # about two designs a bucket
+
+    def bucket(pt: tuple[Fraction, Fraction]) -> tuple[int, int]:
+        return (min(side - 1, int((float(pt[0]) - min(xs)) / width * side)),
+                min(side - 1, int((float(pt[1]) - min(ys)) / height * side)))
+    group: dict[int, int] = {}
+    buckets: dict[tuple[int, int], list[int]] = {}
+    signs: dict[int, tuple[int, ...]] = {}
+    for i in sorted(points):
+        pt = points[i]
+        values = [f(fmpq(pt[0].numerator, pt[0].denominator), fmpq(pt[1].numerator, pt[1].denominator)) for f in polys]
+        group[i] = i
+        if any(v == 0 for v in values):
+            continue  # on a curve: analysed itself
+        signs[i] = tuple(v > 0 for v in values)
+        bx, by = bucket(pt)
+        near = [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in buckets.get((bx + dx, by + dy), ())
+                if signs[j] == signs[i]]
+        near.sort(key=lambda j: (float(points[j][0] - pt[0]) ** 2 + float(points[j][1] - pt[1]) ** 2, j))
+        shifted = None
+        for j in near[:tries]:
+            shifted = shifted or [f.compose(a + fmpq(pt[0].numerator, pt[0].denominator),
+                                            b + fmpq(pt[1].numerator, pt[1].denominator)) for f in polys]
+            if _segment_free(shifted, points[j][0] - pt[0], points[j][1] - pt[1]):
+                group[i] = group[j]
+                break
+        buckets.setdefault((bx, by), []).append(i)
+    return group
+
+
+def _segment_free(shifted: list[Any], da: Fraction, db: Fraction) -> bool:
+    """Whether no polynomial (each shifted to the segment's start) vanishes on the segment to
+    ``(da, db)``: its restriction ``g(s)``, ``0 <= s <= 1``, has no root (g(0), g(1) are not 0)."""
+    fa, fb = fmpq(da.numerator, da.denominator), fmpq(db.numerator, db.denominator)
+    for f in shifted:
+        coeffs: dict[int, Any] = {}
+        for (i, j), c in f.to_dict().items():
+            coeffs[i + j] = coeffs.get(i + j, 0) + c * fa ** i * fb ** j
+        g = fmpq_poly([coeffs.get(k, 0) for k in range(max(coeffs) + 1)])
+        if g.degree() > 0 and count_real_roots(g, fmpq(0), fmpq(1)):
+            return False
+    return True
+
+
 def check_cells(rows: Sequence[dict[str, Any]], x: str, y: str, answer: str, curves: Sequence[Terms]) -> list[str]:
-    """The problems of a computed grid table against the curves: neighbours with different answers
-    not separated by a curve, and designs of one group with different answers (empty: agrees)."""
+    """The problems of a computed table against the curves: designs of one group (neighbours of a
+    grid, or designs joined by segments free of the curves) with different answers (empty: agrees)."""
     points = {int(r["id"]): (Fraction(str(r[x])), Fraction(str(r[y]))) for r in rows}
     answers = {int(r["id"]): r[answer] for r in rows}
-    groups = grid_cells(points, curves)
-    if groups is None:
-        return ["the designs are not a grid"]
+    groups = design_cells(points, curves)
     return [f"design {i} ({answers[i]}) and design {g} ({answers[g]}) are in one cell"
             for i, g in groups.items() if answers[i] != answers[g] and answers[i] != "" and answers[g] != ""]

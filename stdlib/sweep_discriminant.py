@@ -236,10 +236,13 @@ def _charpoly(N: list[list[Any]], one: Any) -> list[Any]:
     return c
 
 
-def _true_part(fib: ModFibres, entries: list[dict], Q: dict, rnd: random.Random) -> Any:
+def _true_part(fib: ModFibres, entries: list[dict], Q: dict, rnd: random.Random,
+               known: dict[tuple, bool]) -> Any:
     """The product of the irreducible factors over ``F_p`` of the discriminant and leading
     coefficient of ``P(t, a, b) = det(t Q - N)`` (content removed) along which the fibre is not
-    ``D`` distinct points, made monic (an nmod_mpoly in (a, b))."""
+    ``D`` distinct points, made monic (an nmod_mpoly in (a, b)). ``known``: the verdicts by
+    (degrees, multiplicity) of a first prime, used when this prime's factors have the same keys
+    (else the factors are tested and ``known`` filled)."""
     p, D = fib.p, fib.dim
     ctx2 = nmod_mpoly_ctx.get(("a", "b"), ordering="deglex", modulus=p)
     ctx3 = nmod_mpoly_ctx.get(("t", "a", "b"), ordering="lex", modulus=p)
@@ -255,35 +258,44 @@ def _true_part(fib: ModFibres, entries: list[dict], Q: dict, rnd: random.Random)
     disc = ctx2.from_dict({e[1:]: v for e, v in P.discriminant("t").to_dict().items()})
     if disc.is_zero():
         raise RealSolvingError("the solutions are not distinct for generic parameters")
+    factors = [(f, (tuple(f.degrees()), m)) for f, m in (disc * coeffs[D]).factor()[1] if not f.is_constant()]
+    keys = [k for _, k in factors]
+    reuse = len(set(keys)) == len(keys) and set(keys) == set(known)
+    if not reuse:
+        known.clear()
     T = ctx2.from_dict({(0, 0): 1})
-    for f, _ in (disc * coeffs[D]).factor()[1]:
-        if not f.is_constant() and _on_curve(fib, f, rnd):
+    for f, k in factors:
+        if not reuse:
+            known[k] = _on_curve(fib, f, rnd)
+        if known[k]:
             T *= f
     return T * pow(int(T.leading_coefficient()), -1, p)
 
 
-def _on_curve(fib: ModFibres, f: Any, rnd: random.Random, points: int = 2) -> bool:
-    """Whether ``f = 0`` is a discriminant curve: at a point of it (over ``F_p``) the fibre is not
-    ``D`` distinct points. Decided at ``points`` points; True when no point is found."""
+def _irregular(fib: ModFibres, f: Any, rnd: random.Random, points: int) -> list[bool]:
+    """At up to ``points`` points of ``f = 0`` over ``F_p`` (on random lines): whether the fibre
+    there is not ``D`` distinct points."""
     p = fib.p
     solve_in_a = f.degrees()[0] > 0
-    seen = 0
+    out: list[bool] = []
     for _ in range(12 * points):
         v = rnd.randrange(1, p)
         u = f.subs({"b": v} if solve_in_a else {"a": v})
         terms = {e[0] if solve_in_a else e[1]: int(c) for e, c in u.to_dict().items()}
-        line = nmod_poly([terms.get(i, 0) for i in range(max(terms) + 1)], p)
+        line = nmod_poly([terms.get(i, 0) for i in range(max(terms, default=0) + 1)], p)
         roots = line.roots() if line.degree() > 0 else []
-        if not roots:
-            continue
-        r = int(roots[0][0])
-        a, b = (r, v) if solve_in_a else (v, r)
-        if not fib.regular_at(a, b, fib.dim):
-            return True
-        seen += 1
-        if seen == points:
-            return False
-    return True
+        if roots:
+            r = int(roots[0][0])
+            out.append(not fib.regular_at(*((r, v) if solve_in_a else (v, r)), fib.dim))
+            if len(out) == points:
+                break
+    return out
+
+
+def _on_curve(fib: ModFibres, f: Any, rnd: random.Random, points: int = 2) -> bool:
+    """Whether ``f = 0`` is a discriminant curve (True also when no point of it is found)."""
+    seen = _irregular(fib, f, rnd, points)
+    return any(seen) or not seen
 
 
 # ---------------------------------------------------------------- over Q
@@ -318,19 +330,19 @@ def _reconstruct(acc: dict, modulus: int) -> dict | None:
 
 
 def discriminant_curves(R: PolyRing, gens: Sequence[Poly], n: int, params: Sequence[str],
-                        box: tuple[Fraction, Fraction, Fraction, Fraction] | None = None,
                         max_primes: int = 40) -> Curves:
     """The discriminant curves of the system ``gens`` (configuration variables the first ``n`` of
-    ``R``, the two ``params`` the others) in the plane of ``params`` (``box`` is not needed: the
-    points are drawn in ``F_p``). Raises :class:`NotApplicable` when the system is not
-    zero-dimensional and nonempty."""
+    ``R``, the two ``params`` the others) in the plane of ``params``. Raises
+    :class:`NotApplicable` when the system is not zero-dimensional and nonempty."""
     fam = _Family(R, gens, n, params)
     terms = _integer_terms(fam)
     rnd = random.Random(SEED)
     forms = _forms(n, rnd)
     acc: dict = {}
+    known: dict[tuple, bool] = {}
     modulus, last, key, D, samples, degrees = 1, None, None, 0, 0, None
-    for used, p in enumerate(primes(SEED)):
+    stream = primes(SEED)
+    for used, p in enumerate(stream):
         if used >= max_primes:
             break
         fib = ModFibres(fam.ring, terms, p, forms, rnd.randrange(2 ** 30))
@@ -348,7 +360,7 @@ def discriminant_curves(R: PolyRing, gens: Sequence[Poly], n: int, params: Seque
             continue
         entries, Q, count = found
         samples += count
-        T = _true_part(fib, entries, Q, rnd)
+        T = _true_part(fib, entries, Q, rnd, known)
         image = {e: int(c) for e, c in T.to_dict().items()}
         shape = (T.total_degree(), max(image, key=lambda e: (sum(e), e)))
         if key is None or shape != key:
@@ -358,10 +370,30 @@ def discriminant_curves(R: PolyRing, gens: Sequence[Poly], n: int, params: Seque
         acc = _lift(acc, modulus, image, p)
         modulus *= p
         poly = _reconstruct(acc, modulus)
-        if poly is not None and poly == last:
+        if poly is not None and (poly == last or _confirmed(poly, fam, terms, forms, D, next(stream), rnd)):
             return _curves(poly, params, D, samples)
         last = poly
     raise RealSolvingError("the discriminant curves could not be lifted")
+
+
+def _confirmed(poly: dict, fam: _Family, terms: list, forms: list, D: int, q: int, rnd: random.Random) -> bool:
+    """Whether at a fresh prime ``q`` every point found on each irreducible factor of the lifted
+    ``poly`` (two per factor) has a fibre that is not ``D`` distinct points (a wrong lift has
+    regular fibres on its zeros)."""
+    fib = ModFibres(fam.ring, terms, q, forms, rnd.randrange(2 ** 30))
+    try:
+        fib.learn(D)
+    except Unlucky:
+        return False
+    ctx = fmpz_mpoly_ctx.get(("a", "b"), "lex")
+    ctxq = nmod_mpoly_ctx.get(("a", "b"), ordering="deglex", modulus=q)
+    for f, _ in ctx.from_dict(poly).factor()[1]:
+        if f.is_constant():
+            continue
+        seen = _irregular(fib, ctxq.from_dict({e: int(c) % q for e, c in f.to_dict().items()}), rnd, 2)
+        if not seen or not all(seen):
+            return False
+    return True
 
 
 def _curves(poly: dict, params: Sequence[str], D: int, samples: int) -> Curves:
@@ -379,8 +411,7 @@ def _curves(poly: dict, params: Sequence[str], D: int, samples: int) -> Curves:
 _CACHE: dict[tuple, Curves] = {}
 
 
-def mechanism_curves(m: Any, params: Sequence[str], box: tuple[Fraction, Fraction, Fraction, Fraction],
-                     limit: float | None) -> Curves:
+def mechanism_curves(m: Any, params: Sequence[str], limit: float | None) -> Curves:
     """The discriminant curves of mechanism ``m`` (its symbolic lengths exactly ``params``), within
     ``limit`` seconds; a :class:`Curves` with only a ``note`` when they do not apply or finish.
     Remembered for the process (a sweep and its map compute them once)."""
@@ -393,9 +424,9 @@ def mechanism_curves(m: Any, params: Sequence[str], box: tuple[Fraction, Fractio
     if key not in _CACHE:
         n = len(m.variables())
         try:
-            ok, got = within(limit, discriminant_curves, R, gens, n, params, box)
+            ok, got = within(limit, discriminant_curves, R, gens, n, params)
         except (NotApplicable, RealSolvingError) as e:
-            return Curves(tuple(params), note=f"no discriminant curves ({e})")
+            got, ok = Curves(tuple(params), note=f"no discriminant curves ({e})"), True
         if not ok:
             return Curves(tuple(params), note=f"no discriminant curves (not found in {limit:g} s)")
         _CACHE[key] = got

@@ -144,7 +144,7 @@ def test_a_statement_time_limit_stops_the_sweep_with_its_rows_kept_and_resumable
     s.execute(f'LIB "mechanism.lib"; mechanism rpr {{ {RPR}; }}')
     start = time.monotonic()
     with pytest.raises(MechError) as e:
-        s.execute('sweep(rpr, "grid r1=1:12:12 r2=1:12:12 r3=4", "real", "lim.csv", "timeout=60");')
+        s.execute('sweep(rpr, "grid r1=1:12:12 r2=1:12:12 r3=4", "real", "lim.csv", "timeout=60 shared=no");')
     assert time.monotonic() - start < 1 + 1.5  # 144 designs take several seconds
     kept = (tmp_path / "lim.csv").read_text().count("\n") - 1
     assert re.search(r"time limit of 1 s exceeded: the sweep stopped after (\d+) of 144 designs; they are in "
@@ -265,7 +265,7 @@ DYAD = "fix A 0 0; fix B 3 0; bar A P r1; bar B P r2"
 
 def test_the_dyads_discriminant_curves_are_its_circle_conditions():
     from mech.stdlib.sweep_discriminant import mechanism_curves
-    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], (Fraction(1), Fraction(6), Fraction(1), Fraction(6)), 60)
+    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], 60)
     # two circles of radii r1, r2 three apart meet in 2 real points inside |r1 - r2| < 3 < r1 + r2
     assert sorted(curves.names) == sorted(["r1", "r2", "r1+r2+3", "r1+r2-3", "r1-r2+3", "r1-r2-3"]) and curves.D == 2
 
@@ -282,7 +282,7 @@ def test_designs_in_one_cell_take_one_analysis_and_agree_with_all_analysed():
     on_curve = [r for r in classified if {"r1-r2+3", "r1+r2-3", "r1-r2-3"} & set(r["conditions"].split(", "))]
     assert on_curve and all(abs(Fraction(r["r1"]) - Fraction(r["r2"])) == 3 or Fraction(r["r1"]) + Fraction(r["r2"]) == 3
                             for r in on_curve)
-    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], (Fraction(1), Fraction(6), Fraction(1), Fraction(6)), 60)
+    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], 60)
     assert check_cells(full, "r1", "r2", "real", curves.factors) == []
     assert check_cells(full, "r1", "r2", "real", curves.factors[:2]) != []  # without the circle conditions: wrong
 
@@ -294,7 +294,7 @@ def test_the_3rpr_discriminant_curves_separate_its_real_counts():
     from mech.stdlib.sweep_cells import check_cells
     from mech.stdlib.sweep_discriminant import mechanism_curves
     m = parse_mechanism(RPR)
-    curves = mechanism_curves(m.with_values({"r3": 4}), ["r1", "r2"], (Fraction(1), Fraction(12), Fraction(1), Fraction(12)), 600)
+    curves = mechanism_curves(m.with_values({"r3": 4}), ["r1", "r2"], 600)
     assert curves.D == 6 and curves.names[:2] == ["r1", "r2"] and len(curves.factors) == 3, curves.note
     assert max(i + j for i, j in curves.factors[2]) == 24
     grid = "grid r1=1:12:12 r2=1:12:12 r3=4"
