@@ -134,16 +134,15 @@ def scattered_cells(points: dict[int, tuple[Fraction, Fraction]], curves: Sequen
     barriers = list(curves) + [{(1, 0): Fraction(1)}, {(0, 1): Fraction(1)}]
     ctx = fmpq_mpoly_ctx.get(("a", "b"), "lex")
     polys = [ctx.from_dict({e: fmpq(c.numerator, c.denominator) for e, c in f.items()}) for f in barriers]
-    a, b = ctx.gens()
-    xs = [float(p[0]) for p in points.values()] or [0.0]
-    ys = [float(p[1]) for p in points.values()] or [0.0]
-    width = max(max(xs) - min(xs), 1e-12)
-    height = max(max(ys) - min(ys), 1e-12)
+    where = {i: (float(a), float(b)) for i, (a, b) in points.items()}
+    x0, y0 = min((x for x, _ in where.values()), default=0.0), min((y for _, y in where.values()), default=0.0)
+    width = max(max((x for x, _ in where.values()), default=0.0) - x0, 1e-12)
+    height = max(max((y for _, y in where.values()), default=0.0) - y0, 1e-12)
     side = max(1, int(math.sqrt(len(points) / 2)))  # about two designs a bucket
 
-    def bucket(pt: tuple[Fraction, Fraction]) -> tuple[int, int]:
-        return (min(side - 1, int((float(pt[0]) - min(xs)) / width * side)),
-                min(side - 1, int((float(pt[1]) - min(ys)) / height * side)))
+    def bucket(i: int) -> tuple[int, int]:
+        x, y = where[i]
+        return min(side - 1, int((x - x0) / width * side)), min(side - 1, int((y - y0) / height * side))
     group: dict[int, int] = {}
     buckets: dict[tuple[int, int], list[int]] = {}
     signs: dict[int, tuple[int, ...]] = {}
@@ -154,33 +153,34 @@ def scattered_cells(points: dict[int, tuple[Fraction, Fraction]], curves: Sequen
         if any(v == 0 for v in values):
             continue  # on a curve: analysed itself
         signs[i] = tuple(v > 0 for v in values)
-        bx, by = bucket(pt)
+        bx, by = bucket(i)
         near = [j for dx in (-1, 0, 1) for dy in (-1, 0, 1) for j in buckets.get((bx + dx, by + dy), ())
                 if signs[j] == signs[i]]
-        near.sort(key=lambda j: (float(points[j][0] - pt[0]) ** 2 + float(points[j][1] - pt[1]) ** 2, j))
-        shifted = None
+        near.sort(key=lambda j: ((where[j][0] - where[i][0]) ** 2 + (where[j][1] - where[i][1]) ** 2, j))
         for j in near[:tries]:
-            shifted = shifted or [f.compose(a + fmpq(pt[0].numerator, pt[0].denominator),
-                                            b + fmpq(pt[1].numerator, pt[1].denominator)) for f in polys]
-            if _segment_free(shifted, points[j][0] - pt[0], points[j][1] - pt[1]):
+            if _segment_free(polys, pt, points[j]):
                 group[i] = group[j]
                 break
         buckets.setdefault((bx, by), []).append(i)
     return group
 
 
-def _segment_free(shifted: list[Any], da: Fraction, db: Fraction) -> bool:
-    """Whether no polynomial (each shifted to the segment's start) vanishes on the segment to
-    ``(da, db)``: its restriction ``g(s)``, ``0 <= s <= 1``, has no root (g(0), g(1) are not 0)."""
-    fa, fb = fmpq(da.numerator, da.denominator), fmpq(db.numerator, db.denominator)
-    for f in shifted:
-        coeffs: dict[int, Any] = {}
-        for (i, j), c in f.to_dict().items():
-            coeffs[i + j] = coeffs.get(i + j, 0) + c * fa ** i * fb ** j
-        g = fmpq_poly([coeffs.get(k, 0) for k in range(max(coeffs) + 1)])
+def _segment_free(polys: list[Any], p: tuple[Fraction, Fraction], q: tuple[Fraction, Fraction]) -> bool:
+    """Whether no polynomial vanishes on the segment from ``p`` to ``q`` (at neither end, and its
+    restriction ``g(s)`` has no root in ``(0, 1)``)."""
+    s, = _SEGMENT.gens()
+    start = [fmpq(x.numerator, x.denominator) for x in p]
+    step = [fmpq((y - x).numerator, (y - x).denominator) for x, y in zip(p, q)]
+    line = (start[0] + step[0] * s, start[1] + step[1] * s)
+    for f in polys:
+        terms = f.compose(*line, ctx=_SEGMENT).to_dict()
+        g = fmpq_poly([terms.get((k,), 0) for k in range(max(e for e, in terms) + 1)]) if terms else fmpq_poly([])
         if g.degree() > 0 and count_real_roots(g, fmpq(0), fmpq(1)):
             return False
     return True
+
+
+_SEGMENT = fmpq_mpoly_ctx.get(("s",), "lex")
 
 
 def check_cells(rows: Sequence[dict[str, Any]], x: str, y: str, answer: str, curves: Sequence[Terms]) -> list[str]:

@@ -287,6 +287,38 @@ def test_designs_in_one_cell_take_one_analysis_and_agree_with_all_analysed():
     assert check_cells(full, "r1", "r2", "real", curves.factors[:2]) != []  # without the circle conditions: wrong
 
 
+def test_any_design_set_is_grouped_into_cells_and_agrees_with_all_analysed():
+    """Random designs (no grid): designs joined by segments free of the curves take one analysis;
+    the table equals the one with every design analysed, and a note says what the curves gave."""
+    designs = "random 120 r1=1/2:6 r2=1/2:6 seed=3"
+    notes = []
+    classified = sweep_rows(parse_mechanism(DYAD), designs, "real", scheduler="inline", notes=notes)
+    full = sweep_rows(parse_mechanism(DYAD), designs, "real", scheduler="inline", shared=False)
+    assert [r["real"] for r in classified] == [r["real"] for r in full]
+    inherited = sum(r["conditions"].startswith("same cell as ") for r in classified)
+    assert 60 < inherited < 120
+    assert notes == [f"discriminant curves in (r1, r2): r1, r1+r2+3, r1+r2-3, r1-r2+3, r1-r2-3, r2; "
+                     f"{inherited} of 120 designs take the count of an analysed design of their cell"]
+
+
+def test_designs_joined_only_by_segments_free_of_the_curves():
+    """One sign, two components: (a - 2)(b - 2) > 1/4 both north-east and south-west of the
+    hyperbola; designs there are never joined (the segment crosses the curve twice), designs of
+    one branch's side are, and a design on the curve is analysed itself."""
+    from mech.stdlib.sweep_cells import scattered_cells
+    hyperbola = {(1, 1): Fraction(1), (1, 0): Fraction(-2), (0, 1): Fraction(-2), (0, 0): Fraction(15, 4)}
+    pts = {0: (Fraction(4), Fraction(4)), 1: (Fraction(1), Fraction(1)), 2: (Fraction(1), Fraction(1, 2)),
+           3: (Fraction(5), Fraction(7, 2)), 4: (Fraction(5, 2), Fraction(5, 2))}
+    assert scattered_cells(pts, [hyperbola]) == {0: 0, 1: 1, 2: 1, 3: 0, 4: 4}
+
+
+def test_the_sweep_says_when_there_are_no_discriminant_curves():
+    notes = []
+    sweep_rows(parse_mechanism(FOURBAR), "grid g=2 l1=2:3:2 l2=3:4:2 l3=3", "real", scheduler="inline", notes=notes)
+    assert notes == ["no discriminant curves (the configuration space is not finite and nonempty (mobility is "
+                     "not 0)): every design analysed"]
+
+
 @pytest.mark.slow
 def test_the_3rpr_discriminant_curves_separate_its_real_counts():
     """The curves of the 3-RPR (no generic analysis finishes): on a grid every two neighbours with
@@ -306,6 +338,10 @@ def test_the_3rpr_discriminant_curves_separate_its_real_counts():
     assert sum(r["conditions"].startswith("same cell") for r in classified) > 20
     for r in classified[::9]:
         assert r["real"] == independent_3rpr_count(r["r1"], r["r2"], r["r3"])
+    lhs = "lhs 60 r1=1:12 r2=1:12 r3=4 seed=5"
+    scattered = sweep_rows(m, lhs, "real", scheduler="inline")
+    assert [r["real"] for r in scattered] == [r["real"] for r in sweep_rows(m, lhs, "real", scheduler="inline", shared=False)]
+    assert sum(r["conditions"].startswith("same cell") for r in scattered) > 20
 
 
 @pytest.mark.parametrize("name, grid, small", [
