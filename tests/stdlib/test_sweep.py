@@ -229,6 +229,30 @@ def test_the_cli_subcommand(tmp_path, capsys):
     assert main(["sweep", str(script)]) == 2  # --designs is required
 
 
+def test_the_cli_whole_sweep_time_limit_keeps_the_rows_and_resumes(tmp_path, capsys):
+    """``mech sweep --timeout`` is per design; ``--total-timeout T`` (or ``mech --timeout T sweep``)
+    limits the whole sweep: it stops with the rows done in the table and says how to resume."""
+    from mech.cli import main
+    script = tmp_path / "rpr.mech"
+    script.write_text(f'LIB "mechanism.lib";\nmechanism rpr {{ {RPR}; }}\n')
+    grid = ["--designs", "grid r1=1:12:12 r2=1:12:12 r3=4", "--answers", "real", "--scheduler", "inline"]
+    for limit in (["sweep", str(script), "--total-timeout", "1"], ["--timeout", "1", "sweep", str(script)]):
+        assert main(limit + grid) == 1  # 144 designs take several seconds
+        err = capsys.readouterr().err
+        kept = (tmp_path / "rpr.csv").read_text().count("\n") - 1
+        assert re.fullmatch(rf"mech sweep: error: time limit of 1 s exceeded: the sweep stopped after {kept} of 144 "
+                            rf"designs; they are in .*rpr.csv: the same sweep resumes there\n", err), err
+    assert main(["--timeout", "1", "sweep", str(script), "--total-timeout", "1"] + grid) == 2
+    assert "give the sweep's time limit once" in capsys.readouterr().err
+    assert main(["--format", "json", "sweep", str(script)] + grid) == 2
+    assert "--format does not apply to 'mech sweep'" in capsys.readouterr().err
+    assert main(["sweep", str(script), "--total-timeout", "-1"] + grid) == 2
+    assert main(["sweep", str(script)] + grid) == 0
+    rows = list(csv.DictReader((tmp_path / "rpr.csv").read_text().splitlines()))
+    assert sorted(int(r["id"]) for r in rows) == list(range(144))
+    assert "discriminant curves in (r1, r2): r1, r2, D3; " in capsys.readouterr().out
+
+
 def test_python_api_rows_or_a_data_frame():
     from mech.sweep import sweep
     rows = sweep(FOURBAR, "grid g=2 l1=1:2:2 l2=3 l3=3", ["grashof"], scheduler="inline", frame=False)
