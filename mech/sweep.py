@@ -25,7 +25,7 @@ def sweep(mechanism: Any, designs: str, answers: Any = ("mobility", "real"), out
           scheduler: Any = None, workers: Optional[int] = None, timeout: Optional[float] = None,
           batch: Optional[int] = None, progress: Optional[bool] = None,
           callback: Optional[Callable[[dict[str, Any], int, int], None]] = None,
-          frame: Optional[bool] = None) -> Any:
+          frame: Optional[bool] = None, notes: Optional[list[str]] = None) -> Any:
     """Analyse ``mechanism`` (a ``Mechanism`` value or its description) at every design.
 
     ``designs``: ``"grid l1=a:b:n ..."``, ``"random N l1=a:b ... seed=S"``, ``"lhs N ..."`` or
@@ -33,11 +33,12 @@ def sweep(mechanism: Any, designs: str, answers: Any = ("mobility", "real"), out
     CSV file written as designs finish (an existing one is resumed); ``scheduler``: None (a Dask
     LocalCluster with ``workers`` processes, default one per core), a scheduler address
     ``"tcp://host:8786"``, a ``distributed.Client``, or ``"inline"`` (this process);
-    ``timeout``: seconds per design; ``callback(row, done, total)`` after each design.
-    A DataFrame (pandas installed and ``frame`` not False) or a list of dicts."""
+    ``timeout``: seconds per design; ``callback(row, done, total)`` after each design; ``notes``
+    receives a line on the discriminant curves. A DataFrame (pandas installed and ``frame`` not
+    False) or a list of dicts."""
     from .stdlib.sweep_commands import sweep_rows
     rows = sweep_rows(_mechanism(mechanism), designs, answers, out, scheduler=scheduler, workers=workers,
-                      timeout=timeout, batch=batch, progress=progress, on_row=callback)
+                      timeout=timeout, batch=batch, progress=progress, on_row=callback, notes=notes)
     if frame is not False:
         try:
             import pandas
