@@ -19,10 +19,9 @@ counts (never, when the curves are right).
 """
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from typing import Any, Sequence
-
-import math
 
 from flint import fmpq, fmpq_mpoly_ctx, fmpq_poly
 

@@ -348,14 +348,13 @@ def discriminant_curves(R: PolyRing, gens: Sequence[Poly], n: int, params: Seque
         fib = ModFibres(fam.ring, terms, p, forms, rnd.randrange(2 ** 30))
         try:
             got = fib.learn(D or None)
+            if not D and got == 0:
+                raise NotApplicable("the configuration space is not finite and nonempty (mobility is not 0)")
+            degrees = degrees or _line_degrees(fib, rnd)
+            D = got
+            found = _matrix_mod(fib, *degrees, rnd)
         except Unlucky:
             continue
-        if not D:
-            if got == 0:
-                raise NotApplicable("the configuration space is not finite and nonempty (mobility is not 0)")
-            D = got
-            degrees = _line_degrees(fib, rnd)
-        found = _matrix_mod(fib, *degrees, rnd)
         if found is None:
             continue
         entries, Q, count = found

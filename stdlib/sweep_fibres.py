@@ -52,6 +52,7 @@ class ModFibres:
                         max(j for g in self.parts for ps in g for _, j, _ in ps))
         self.trace: Any = None
         self.dim = 0
+        self.hits = self.misses = 0  # points that followed the trace, and that did not
 
     # -- the generators at a point ---------------------------------------------------------
     def coefficients(self, a: int, b: int, strict: bool = True) -> list[list[int]] | None:
@@ -97,7 +98,6 @@ class ModFibres:
         leads = [unpack(ms[0]) for ms in shape]
         self.dim = 0
         if unit or krull_dim(leads, n) != 0:
-            self.dim = 0
             return
         self.monomials = kbase(leads, n)
         self.index = {e: i for i, e in enumerate(self.monomials)}
@@ -121,16 +121,21 @@ class ModFibres:
     # -- a point ----------------------------------------------------------------------------
     def matrices(self, a: int, b: int) -> list[list[list[int]]] | None:
         """The forms' multiplication matrices (columns) at (a, b) in the generic fibre's basis, or
-        None when the point's computation leaves the trace (a special fibre)."""
+        None when the point's computation leaves the trace (a special fibre). Raises
+        :class:`Unlucky` when most points leave it (the trace was learnt at a special point)."""
         cs = self.coefficients(a % self.p, b % self.p)
-        if cs is None:
+        basis = None
+        if cs is not None:
+            try:
+                basis = replay(self.trace, cs, self.p)
+            except TraceMismatch:
+                pass
+        if basis is None or len(basis) != len(self.tails):
+            self.misses += 1
+            if self.misses > 20 + self.hits:
+                raise Unlucky(f"the trace learnt modulo {self.p} is not the generic fibre's")
             return None
-        try:
-            basis = replay(self.trace, cs, self.p)
-        except TraceMismatch:
-            return None
-        if len(basis) != len(self.tails):
-            return None
+        self.hits += 1
         return self._matrices(basis)
 
     def regular_at(self, a: int, b: int, D: int) -> bool:
@@ -144,8 +149,10 @@ class ModFibres:
             kept = [(m, x) for m, x in zip(ms, c) if x]
             if kept:
                 rows.append(([m for m, _ in kept], [x for _, x in kept]))
-        engine = F4(rows, self.packing, self.p)
-        basis = engine.run()
+        try:
+            basis = F4(rows, self.packing, self.p).run()
+        except PackingOverflow:
+            return False  # not the generic fibre
         point._structure([ms for ms, _ in basis], len(basis) == 1 and basis[0][0] == [0])
         if point.dim != D:
             return False
