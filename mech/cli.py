@@ -99,9 +99,10 @@ def main(argv: Optional[list[str]] = None) -> int:
         if (getattr(stream, "encoding", "") or "").lower().replace("-", "") != "utf8" and hasattr(stream, "reconfigure"):
             stream.reconfigure(errors="backslashreplace")
     argv = sys.argv[1:] if argv is None else argv
-    if argv[:1] == ["sweep"] and not os.path.isfile("sweep"):  # the subcommand (a script named sweep still runs)
-        from .sweep import main as sweep_main
-        return _exit(sweep_main(argv[1:]))
+    if "sweep" in argv and not os.path.isfile("sweep"):  # the subcommand (a script named sweep still runs)
+        status = _sweep(argv)
+        if status is not None:
+            return _exit(status)
     try:
         args = _parser().parse_args(argv)
     except SystemExit as e:  # --help, --version, a usage error
@@ -112,6 +113,29 @@ def main(argv: Optional[list[str]] = None) -> int:
     from .dsl.progress import terminal_progress
     with default_limits(args.timeout, args.max_memory), terminal_progress():  # for this run, the REPL's too
         return _exit(_main(args))
+
+
+def _sweep(argv: list[str]) -> Optional[int]:
+    """``mech [--timeout T] [--max-memory MB] sweep ...``: the subcommand's exit status, the limits
+    applying to the whole sweep as to one statement; None when ``sweep`` is not the subcommand
+    (a script or code after options)."""
+    k = argv.index("sweep")
+    from .sweep import main as sweep_main
+    if k == 0:
+        return sweep_main(argv[1:])
+    try:
+        args = _parser().parse_args(argv[:k])
+    except SystemExit as e:
+        return e.code if isinstance(e.code, int) else 2
+    if args.file is not None or args.code is not None:
+        return None
+    other = [o for o, given in (("--format", args.format != "text"), ("--engine", args.engine != "auto"),
+                                ("--dialect", args.dialect), ("--install-kernel", args.install_kernel)) if given]
+    if other:
+        sys.stderr.write(f"mech: error: {other[0]} does not apply to 'mech sweep' (only --timeout and --max-memory, "
+                         "which limit the whole sweep)\n")
+        return 2
+    return sweep_main(argv[k + 1:], total_timeout=args.timeout, max_memory=args.max_memory)
 
 
 def _exit(status: int) -> int:

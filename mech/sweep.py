@@ -25,7 +25,7 @@ def sweep(mechanism: Any, designs: str, answers: Any = ("mobility", "real"), out
           scheduler: Any = None, workers: Optional[int] = None, timeout: Optional[float] = None,
           batch: Optional[int] = None, progress: Optional[bool] = None,
           callback: Optional[Callable[[dict[str, Any], int, int], None]] = None,
-          frame: Optional[bool] = None) -> Any:
+          frame: Optional[bool] = None, notes: Optional[list[str]] = None) -> Any:
     """Analyse ``mechanism`` (a ``Mechanism`` value or its description) at every design.
 
     ``designs``: ``"grid l1=a:b:n ..."``, ``"random N l1=a:b ... seed=S"``, ``"lhs N ..."`` or
@@ -33,11 +33,12 @@ def sweep(mechanism: Any, designs: str, answers: Any = ("mobility", "real"), out
     CSV file written as designs finish (an existing one is resumed); ``scheduler``: None (a Dask
     LocalCluster with ``workers`` processes, default one per core), a scheduler address
     ``"tcp://host:8786"``, a ``distributed.Client``, or ``"inline"`` (this process);
-    ``timeout``: seconds per design; ``callback(row, done, total)`` after each design.
-    A DataFrame (pandas installed and ``frame`` not False) or a list of dicts."""
+    ``timeout``: seconds per design; ``callback(row, done, total)`` after each design; ``notes``
+    receives a line on the discriminant curves. A DataFrame (pandas installed and ``frame`` not
+    False) or a list of dicts."""
     from .stdlib.sweep_commands import sweep_rows
     rows = sweep_rows(_mechanism(mechanism), designs, answers, out, scheduler=scheduler, workers=workers,
-                      timeout=timeout, batch=batch, progress=progress, on_row=callback)
+                      timeout=timeout, batch=batch, progress=progress, on_row=callback, notes=notes)
     if frame is not False:
         try:
             import pandas
@@ -76,18 +77,31 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--scheduler", metavar="ADDRESS", help="a Dask scheduler (tcp://host:8786), or 'inline'; "
                    "default: a local Dask cluster on all cores")
     p.add_argument("--workers", type=int, metavar="N", help="local worker processes (default: one per core)")
-    p.add_argument("--timeout", type=float, metavar="SECONDS", help="time limit per design")
+    p.add_argument("--timeout", type=float, metavar="SECONDS", help="time limit per design (a design over it is "
+                   "recorded with the error and the sweep goes on)")
+    p.add_argument("--total-timeout", type=float, metavar="SECONDS", help="time limit of the whole sweep: it stops "
+                   "before, with the rows done kept in the table, and running it again resumes (as "
+                   "'mech --timeout SECONDS sweep ...')")
     p.add_argument("--batch", type=int, metavar="N", help="designs per task (default: sized to the workers)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     return p
 
 
-def main(argv: list[str]) -> int:
-    """``mech sweep ...``: the exit status."""
+def main(argv: list[str], total_timeout: Optional[float] = None, max_memory: Optional[float] = None) -> int:
+    """``mech sweep ...``: the exit status. ``total_timeout`` (``mech --timeout T sweep``) and
+    ``max_memory`` limit the whole sweep as one statement."""
     try:
         args = _parser().parse_args(argv)
     except SystemExit as e:
         return e.code if isinstance(e.code, int) else 2
+    if args.total_timeout is not None and total_timeout:
+        sys.stderr.write("mech sweep: error: give the sweep's time limit once (--total-timeout, or mech --timeout "
+                         "before sweep)\n")
+        return 2
+    total = args.total_timeout if args.total_timeout is not None else total_timeout
+    if total is not None and not 0 <= total < float("inf") or args.timeout is not None and not 0 < args.timeout < float("inf"):
+        sys.stderr.write("mech sweep: error: time limits must be positive numbers of seconds\n")
+        return 2
     from .session import Session
     from .stdlib.mechanism import Mechanism
     try:
@@ -113,9 +127,15 @@ def main(argv: list[str]) -> int:
         from .stdlib.sweep_map import draw_map
         out = args.out or (args.file.rsplit(".", 1)[0] + ".csv")
         answers = parse_answers(args.answers)
-        rows = sweep(m, args.designs, answers, out, scheduler=args.scheduler, workers=args.workers,
-                     timeout=args.timeout, batch=args.batch, progress=False if args.no_progress else None,
-                     frame=False)
+        notes: list[str] = []
+
+        def run() -> list[dict[str, Any]]:
+            return sweep_rows(m, args.designs, answers, out, scheduler=args.scheduler, workers=args.workers,
+                              timeout=args.timeout, batch=args.batch, notes=notes,
+                              progress=False if args.no_progress else None)
+        from .dsl.limits import Limits
+        from .stdlib.sweep_commands import sweep_rows
+        rows = Limits(total or 0, max_memory or 0).run(s.interpreter, run)
         for spec in args.map:
             parts = spec.split(",")
             if len(parts) != 4:
@@ -126,9 +146,9 @@ def main(argv: list[str]) -> int:
         sys.stderr.write(f"mech sweep: error: {e}\n")
         return 2
     except MechError as e:
-        sys.stderr.write(e.format())
+        sys.stderr.write(e.format() if getattr(e, "pos", None) is not None else f"mech sweep: error: {e.message}\n")
         return 1
-    sys.stdout.write(summary(rows, answers) + f"table: {out}\n")
+    sys.stdout.write(summary(rows, answers) + "".join(n + "\n" for n in notes) + f"table: {out}\n")
     return 0
 
 

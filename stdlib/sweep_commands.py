@@ -21,11 +21,13 @@ OPTIONS = ("workers", "timeout", "batch", "scheduler", "shared")
 def sweep_rows(m: Mechanism, designs: str, answers: Any = "mobility,real", out: str | None = None, *,
                scheduler: Any = None, workers: int | None = None, timeout: float | None = None,
                batch: int | None = None, progress: bool | None = None, shared: bool | None = None,
-               on_row: Callable[[dict[str, Any], int, int], None] | None = None) -> list[dict[str, Any]]:
-    """The rows of the sweep of ``m`` over ``designs`` (a design-set description)."""
+               on_row: Callable[[dict[str, Any], int, int], None] | None = None,
+               notes: list[str] | None = None) -> list[dict[str, Any]]:
+    """The rows of the sweep of ``m`` over ``designs`` (a design-set description); ``notes``
+    receives a line on the discriminant curves, when the sweep looked for them."""
     spec = SweepSpec(m, parse_answers(answers), timeout)
     return run_sweep(spec, design_set(designs), out, scheduler=scheduler, workers=workers, batch=batch,
-                     progress=progress, on_row=on_row, shared=shared)
+                     progress=progress, on_row=on_row, shared=shared, notes=notes)
 
 
 def map_curves(m: Mechanism, rows: list[dict[str, Any]], x: str, y: str) -> list[tuple[str, Any]]:
@@ -44,10 +46,8 @@ def map_curves(m: Mechanism, rows: list[dict[str, Any]], x: str, y: str) -> list
         v = parse_decimal(str(seen.pop()))
         values[p] = int(v) if v.denominator == 1 else v
     fixed = m.with_values(values)
-    from fractions import Fraction
     from mech.stdlib.sweep_discriminant import curve_label, mechanism_curves
-    xs, ys = [Fraction(str(r[x])) for r in rows], [Fraction(str(r[y])) for r in rows]
-    curves = mechanism_curves(fixed, [x, y], (min(xs), max(xs), min(ys), max(ys)), MAP_CURVES_LIMIT)
+    curves = mechanism_curves(fixed, [x, y], MAP_CURVES_LIMIT)
     if curves.factors:
         return [(curve_label(n, k), f) for k, (n, f) in enumerate(zip(curves.names, curves.factors))]
     common: Shared = shared_work(SweepSpec(fixed, ()), [x, y], MAP_LIMIT)
@@ -78,7 +78,7 @@ def sweep_cmd(ctx: Any, m: Mechanism, designs: str, answers: str = "mobility,rea
     answers: mobility, modes, real, grashof, singular; options: "workers=N timeout=S batch=N
     scheduler=ADDRESS|inline shared=yes|no" (default: a Dask cluster on all cores; the generic
     length conditions first only for singular; the discriminant curves for real counts over two
-    parameters and 1000 designs or more; docs/sweeps.md). A progress bar on a terminal; under a
+    parameters, a line saying what they gave; docs/sweeps.md). A progress bar on a terminal; under a
     statement time limit the sweep stops with the rows done kept in the file.
 
     Example:
@@ -94,8 +94,9 @@ def sweep_cmd(ctx: Any, m: Mechanism, designs: str, answers: str = "mobility,rea
     opts.setdefault("scheduler", ctx.settings.get("sweep_scheduler"))
     out = str(output_file(file, (".csv",))) if file else None
     spec_answers = parse_answers(answers)
-    rows = sweep_rows(m, designs, spec_answers, out, progress=False, **opts)
-    ctx.write(summary(rows, spec_answers))
+    notes: list[str] = []
+    rows = sweep_rows(m, designs, spec_answers, out, progress=False, notes=notes, **opts)
+    ctx.write(summary(rows, spec_answers) + "".join(n + "\n" for n in notes))
 
 
 def summary(rows: list[dict[str, Any]], answers: tuple[str, ...]) -> str:

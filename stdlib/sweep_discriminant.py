@@ -2,21 +2,27 @@
 the plane of the parameters ``(a, b)`` off which the number of real assembly modes cannot change.
 
 The generic analysis over ``Q(a, b)`` is often out of reach (the 3-RPR's), so the curves are
-computed from specializations. For a separating linear form ``t`` of the configuration variables,
-the characteristic polynomial of multiplication by ``t`` in ``Q[x]/J(a, b)`` is, for generic
-``(a, b)``, ``P(t, a, b) / P_D(a, b)`` with ``P`` primitive in ``Z[a, b][t]`` of degree ``D`` (the
-number of complex solutions). ``P`` is found by evaluation and exact interpolation: at rational
-points ``(a0, b0)`` the characteristic polynomial is computed exactly (:class:`QuotientAlgebra`);
-the degrees of ``P``'s coefficients are read along a generic line, and the exponents of ``a`` and
-``b`` that occur along lines through the axes (small univariate systems modulo a prime); then the
-coefficients on that support solve the linear equations ``P_k(a0, b0) = c_k(a0, b0) P_D(a0, b0)``,
-whose one-dimensional kernel is found modulo primes and lifted (Chinese remainders, rational
-reconstruction), checked on every equation and at fresh points. Where the real count changes,
-two solutions meet (the discriminant of ``P`` in ``t`` vanishes) or one goes to infinity (``P_D``
-vanishes). The discriminant of one form also vanishes where two distinct solutions share ``t``'s value (a
-conjugate pair with a real ``t``): only the irreducible factors common to two forms are kept.
+computed from specializations modulo primes. For a linear form ``t`` of the configuration
+variables, multiplication by ``t`` in ``Q(a, b)[x]/J`` has a matrix ``N(a, b) / Q(a, b)`` in the
+generic fibre's standard monomials, of low degree in ``(a, b)``. Modulo a prime ``p``:
 
-The designs of a grid are grouped by the cells of these curves in :mod:`mech.stdlib.sweep_cells`.
+* the fibre at a point of ``F_p^2`` and its matrix come from one replay of an F4 trace
+  (:mod:`mech.stdlib.sweep_fibres`); the degrees of ``N`` and ``Q`` from a univariate probe along
+  a random line (rational reconstruction);
+* ``N`` and ``Q`` are interpolated densely from as many points as ``N`` has monomials, plus a few
+  (``Q`` from the left kernel of the numerators' evaluation matrix, then the numerators);
+* ``P(t, a, b) = det(t Q - N)`` (Faddeev-LeVerrier, content removed) is, up to a constant, the
+  primitive characteristic polynomial of ``t``; where the real count changes two solutions meet
+  (its discriminant in ``t`` vanishes) or one goes to infinity (its leading coefficient does);
+* of the irreducible factors of discriminant times leading coefficient, those kept are the curves
+  along which the fibre is not ``D`` distinct points (tested at points of the curve over ``F_p``
+  by a fresh Gröbner basis and a random form's characteristic polynomial): the discriminant of
+  one form also vanishes where two distinct solutions share ``t``'s value.
+
+The product of the kept factors, made monic, is lifted over the primes (Chinese remainders,
+rational reconstruction) until one more prime leaves it unchanged, and factored over ``Q``.
+
+The designs are grouped by the cells of these curves in :mod:`mech.stdlib.sweep_cells`.
 """
 from __future__ import annotations
 
@@ -26,13 +32,13 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Sequence
 
-from flint import fmpq, fmpz_mpoly_ctx, nmod_mat
+from flint import fmpq, fmpz_mpoly_ctx, nmod_mat, nmod_mpoly_ctx, nmod_poly
 
-from mech.kernel.real_roots import RealSolvingError
-from mech.kernel.real_solve import QuotientAlgebra
+from mech.kernel.modular import primes, ratrec
 from mech.kernel.poly import Poly, PolyRing
+from mech.kernel.real_roots import RealSolvingError
+from mech.stdlib.sweep_fibres import ModFibres, Unlucky
 
-PRIME = 4611686018427387847  # < 2^62: the degrees along lines are found modulo it
 SEED = 20261124
 MAX_DEGREE = 40
 
@@ -71,305 +77,340 @@ class _Family:
                 terms.setdefault(e[:n], []).append((e[ia], e[ib], c))
             self.gens.append(terms)
 
-    def at(self, a: Fraction, b: Fraction) -> list[Poly]:
-        fa, fb = fmpq(a.numerator, a.denominator), fmpq(b.numerator, b.denominator)
-        out = []
-        for terms in self.gens:
-            p = {}
-            for e, parts in terms.items():
-                v = sum((c * fa ** i * fb ** j for i, j, c in parts), fmpq(0))
-                if v != 0:
-                    p[e] = v
-            if p:
-                out.append(Poly(self.ring, p))
-        return out
-
 
 def _config_ring(R: PolyRing, n: int) -> PolyRing:
     from mech.kernel.order import MonomialOrder
     return PolyRing(R.field, R.names[:n], MonomialOrder.simple("dp", n))
 
 
-def _charpolys(fam: _Family, a: Fraction, b: Fraction, forms: list[list[fmpq]]) -> tuple[int, list[list[fmpq]]] | None:
-    """(vdim, the monic characteristic polynomials' coefficients, constant first) at (a, b);
-    None when the fiber is not zero-dimensional."""
-    try:
-        A = QuotientAlgebra(fam.at(a, b), fam.ring)
-    except RealSolvingError:
-        return None
-    return A.dim, [[fmpq(c) for c in A.linear_matrix(f).charpoly().coeffs()] for f in forms]
+def _integer_terms(fam: _Family) -> list[dict[tuple[int, ...], list[tuple[int, int, int]]]]:
+    """The family's generators with integer coefficients (each times its denominators' lcm)."""
+    out = []
+    for terms in fam.gens:
+        den = 1
+        for parts in terms.values():
+            for _, _, c in parts:
+                den = math.lcm(den, int(fmpq(c).q))
+        out.append({e: [(i, j, int(fmpq(c).p) * (den // int(fmpq(c).q))) for i, j, c in parts]
+                    for e, parts in terms.items()})
+    return out
 
 
-class _Search:
-    """Samples of the family: points, the number of solutions there and the characteristic
-    polynomials of the forms; points whose fiber is special (another count, not finite) skipped."""
-
-    def __init__(self, fam: _Family, forms: list[list[fmpq]], box: tuple[Fraction, Fraction, Fraction, Fraction]) -> None:
-        self.fam, self.forms, self.box = fam, forms, box
-        self.rnd = random.Random(SEED)
-        self.D = 0
-        self.count = 0
-        self.memo: dict[tuple[Fraction, Fraction], list[list[fmpq]] | None] = {}
-        self.pool: list = []  # random points with the generic count, and their polynomials
-
-    def random_point(self) -> tuple[Fraction, Fraction]:
-        lo_a, hi_a, lo_b, hi_b = self.box
-        den = 7
-        return (Fraction(self.rnd.randint(int(lo_a * den), int(hi_a * den)), den),
-                Fraction(self.rnd.randint(int(lo_b * den), int(hi_b * den)), den))
-
-    def sample(self, a: Fraction, b: Fraction) -> list[list[fmpq]] | None:
-        """The forms' characteristic polynomials at (a, b), when it has the generic count."""
-        if a == 0 or b == 0:
-            return None
-        if (a, b) not in self.memo:
-            self.count += 1
-            got = _charpolys(self.fam, a, b, self.forms)
-            self.memo[(a, b)] = got[1] if got is not None and got[0] == self.D else None
-        return self.memo[(a, b)]
-
-    def random_samples(self, count: int) -> list:
-        """``count`` random points with the generic count, and their polynomials."""
-        while len(self.pool) < count:
-            pt = self.random_point()
-            got = self.sample(*pt)
-            if got is not None:
-                self.pool.append((pt, got))
-        return self.pool[:count]
-
-    def start(self) -> None:
-        """The generic number of solutions: the most frequent among a few random points."""
-        seen: dict[int, int] = {}
-        for _ in range(5):
-            got = _charpolys(self.fam, *self.random_point(), self.forms[:1])
-            if got is None:
-                raise NotApplicable("the configuration space is not finite (mobility is not 0)")
-            seen[got[0]] = seen.get(got[0], 0) + 1
-        self.D = max(seen, key=lambda k: (seen[k], k))
-        if self.D == 0:
-            raise NotApplicable("no configuration")
-        a0, b0 = self.random_point()
-        r = self.rnd
-        # a generic line (total degrees), and lines through the axes (the exponents of a and b)
-        self.lines = [(a0, b0, Fraction(r.randint(1, 4), 3), Fraction(r.randint(1, 4), 5)),
-                      (Fraction(0), b0, Fraction(1, 3), Fraction(0)), (a0, Fraction(0), Fraction(0), Fraction(1, 3))]
+def _forms(n: int, rnd: random.Random) -> list[list[int]]:
+    return [[rnd.randint(-3, 3) or 1 for _ in range(n)]]
 
 
-def _nullvector_mod(rows: list[list[int]], ncols: int, p: int) -> list[int] | None:
-    """The kernel vector of ``rows`` modulo ``p`` when the kernel has dimension 1."""
-    if not rows:
-        return None
-    X, nullity = nmod_mat(len(rows), ncols, [v % p for r in rows for v in r], p).nullspace()
-    if nullity != 1:
-        return None
-    return [int(X[i, 0]) for i in range(ncols)]
+# ---------------------------------------------------------------- one prime
+def _flat(M: list[list[list[int]]]) -> list[int]:
+    return [x for col in M[0] for x in col]
 
 
-def _rows(samples: list, which: int, D: int, supports: list[list[tuple[int, int]]],
-          value: Any) -> list[list[int]]:
-    """The equations ``P_k(s) den_k - num_k P_D(s) = 0`` (k < D) at the samples, the unknowns the
-    coefficients of ``P_0 .. P_D`` on their supports; ``value(point, (i, j))`` a monomial's value
-    times a factor common to the row (integers)."""
-    offsets = [0]
-    for sup in supports:
-        offsets.append(offsets[-1] + len(sup))
+def _line_degrees(fib: ModFibres, rnd: random.Random) -> tuple[int, int]:
+    """(numerator degree, denominator degree) of the multiplication matrix's entries over
+    ``F_p(a, b)``: those of a random combination of them along a random line, by rational
+    reconstruction (the largest quotient of the Euclidean remainders, with a margin)."""
+    p = fib.p
+    a0, b0, u, v = (rnd.randrange(1, p) for _ in range(4))
+    xs: list[int] = []
+    ys: list[int] = []
+    weights: list[int] = []
+    s, K = 0, 16
+    while K <= 4 * MAX_DEGREE:
+        while len(xs) < K:
+            s += 1
+            M = fib.matrices(a0 + s * u, b0 + s * v)
+            if M is None:
+                continue
+            flat = _flat(M)
+            weights = weights or [rnd.randrange(1, p) for _ in flat]
+            xs.append(s)
+            ys.append(sum(w * x for w, x in zip(weights, flat)) % p)
+        got = _rational_degrees(xs, ys, p)
+        if got is not None:
+            return got
+        K *= 2
+    raise RealSolvingError(f"the fibres' matrices have degree above {MAX_DEGREE} in the parameters")
+
+
+def _rational_degrees(xs: list[int], ys: list[int], p: int, margin: int = 3) -> tuple[int, int] | None:
+    """The degrees of the rational function through the points, when the points determine it."""
+    coeffs = list(ys)  # Newton's divided differences
+    for k in range(1, len(xs)):
+        for i in range(len(xs) - 1, k - 1, -1):
+            coeffs[i] = (coeffs[i] - coeffs[i - 1]) * pow(xs[i] - xs[i - k], -1, p) % p
+    f = nmod_poly([coeffs[-1]], p)
+    m = nmod_poly([1], p)
+    for x, c in zip(reversed(xs[:-1]), reversed(coeffs[:-1])):
+        f = f * nmod_poly([-x, 1], p) + c
+    for x in xs:
+        m *= nmod_poly([-x, 1], p)
+    r0, r1, t0, t1 = m, f, nmod_poly([0], p), nmod_poly([1], p)
+    best, where = -1, None
+    while not r1.is_zero():
+        q, r = divmod(r0, r1)
+        if q.degree() > best:
+            best, where = q.degree(), (max(r1.degree(), 0), t1.degree())
+        r0, r1, t0, t1 = r1, r, t1, t0 - q * t1
+    if f.is_zero():
+        return 0, 0
+    return where if best >= margin else None
+
+
+def _dense(d: int) -> list[tuple[int, int]]:
+    return [(i, k - i) for k in range(d + 1) for i in range(k + 1)]
+
+
+def _monomial_rows(points: list[tuple[int, int]], support: list[tuple[int, int]], p: int) -> list[list[int]]:
     rows = []
-    for n, (point, coeffs) in enumerate(samples):
-        c = coeffs[which]
-        lead = [value(point, m) for m in supports[D]]
-        for k in range(D):
-            if n >= len(supports[k]) + len(supports[D]) + 3:
-                continue  # enough equations for P_k
-            num, den = int(c[k].p), int(c[k].q)
-            row = [0] * offsets[-1]
-            row[offsets[k]:offsets[k + 1]] = [den * value(point, m) for m in supports[k]]
-            row[offsets[D]:] = [-num * v for v in lead]
-            rows.append(row)
+    top = max((max(i, j) for i, j in support), default=0)
+    for a, b in points:
+        pa, pb = [1], [1]
+        for _ in range(top):
+            pa.append(pa[-1] * a % p)
+            pb.append(pb[-1] * b % p)
+        rows.append([pa[i] * pb[j] % p for i, j in support])
     return rows
 
 
-def _solve(samples: list, which: int, D: int, supports: list[list[tuple[int, int]]], value: Any) -> list[int] | None:
-    """The primitive integer kernel vector of the equations (1-dimensional kernel), from its images
-    modulo primes (Chinese remainders, rational reconstruction), checked on every equation."""
-    from mech.kernel.modular import primes, ratrec
-    rows = _rows(samples, which, D, supports, value)
-    ncols = len(rows[0]) if rows else 0
-    modulus, acc, pivot, last = 1, None, None, None
-    for q in primes(SEED):
-        v = _nullvector_mod(rows, ncols, q)
-        if v is None:
-            if acc is None:
-                return None  # the kernel is not 1-dimensional
-            continue
-        if pivot is None:
-            pivot = next(i for i, x in enumerate(v) if x)
-        if v[pivot] == 0:
-            continue
-        inv = pow(v[pivot], -1, q)
-        v = [x * inv % q for x in v]
-        if acc is None:
-            acc, modulus = v, q
-        else:
-            m2 = modulus * q
-            acc = [(a + modulus * ((x - a) * pow(modulus, -1, q) % q)) % m2 for a, x in zip(acc, v)]
-            modulus = m2
-        bound = math.isqrt(modulus // 2)
-        fracs = [ratrec(a, modulus, bound) for a in acc]
-        if any(f is None for f in fracs):
-            continue
-        if fracs != last:
-            last = fracs
-            continue
-        den = 1
-        for _, d in fracs:
-            den = den * d // math.gcd(den, d)
-        ints = [n * (den // d) for n, d in fracs]
-        if all(sum(r * x for r, x in zip(row, ints) if x) == 0 for row in rows):
-            return ints
-        last = None
-    return None
+def _matrix_mod(fib: ModFibres, dn: int, dq: int, rnd: random.Random) -> tuple[list[dict], dict, int] | None:
+    """The multiplication matrix over ``F_p[a, b]``: its entries ``N_e`` (numerators, total
+    degree ``dn``) and their common denominator ``Q`` (degree ``dq``), as exponent -> coefficient
+    dicts, and the number of points sampled; None when the samples do not agree (start again).
+
+    With ``V`` the values of the numerators' monomials at the points and ``L`` a basis of its left
+    kernel, ``L diag(m) W q = 0`` for every entry (or combination) ``m`` of the matrix, ``W`` the
+    values of the denominator's monomials: ``q``, ``Q``'s coefficients, is that system's kernel;
+    then the numerators solve ``V n_e = diag(m_e) W q`` (Zippel's dense interpolation)."""
+    p = fib.p
+    SN, SQ = _dense(dn), _dense(dq)
+    E = fib.dim * fib.dim
+    combos = 4
+    extra = max(3, -(-len(SQ) // combos) + 3)
+    points, values = [], []
+    while len(points) < len(SN) + extra:
+        a, b = rnd.randrange(1, p), rnd.randrange(1, p)
+        M = fib.matrices(a, b)
+        if M is not None:
+            points.append((a, b))
+            values.append(_flat(M))
+    Ns = len(points)
+    V = _monomial_rows(points, SN, p)
+    W = _monomial_rows(points, SQ, p)
+    X, k = nmod_mat(len(SN), Ns, [V[i][c] for c in range(len(SN)) for i in range(Ns)], p).nullspace()
+    L = nmod_mat(k, Ns, [int(X[i, c]) for c in range(k) for i in range(Ns)], p)
+    blocks = []
+    for _ in range(combos):
+        w = [rnd.randrange(1, p) for _ in range(E)]
+        m = [sum(x * y for x, y in zip(w, vals)) % p for vals in values]
+        blocks.append(L * nmod_mat(Ns, len(SQ), [m[i] * W[i][c] % p for i in range(Ns) for c in range(len(SQ))], p))
+    stacked = nmod_mat(k * combos, len(SQ), [int(B[i, c]) for B in blocks for i in range(k) for c in range(len(SQ))], p)
+    Y, nullity = stacked.nullspace()
+    if nullity != 1:
+        return None
+    q = [int(Y[c, 0]) for c in range(len(SQ))]
+    qv = [sum(x * y for x, y in zip(row, q)) % p for row in W]
+    rhs = nmod_mat(Ns, E, [values[i][e] * qv[i] % p for i in range(Ns) for e in range(E)], p)
+    Vm = nmod_mat(Ns, len(SN), [x for row in V for x in row], p)
+    head = nmod_mat(len(SN), len(SN), [x for row in V[:len(SN)] for x in row], p)
+    try:
+        num = head.solve(nmod_mat(len(SN), E, [int(rhs[i, e]) for i in range(len(SN)) for e in range(E)], p))
+    except ZeroDivisionError:
+        return None
+    if Vm * num != rhs:  # the extra points: the interpolant must hold there too
+        return None
+    entries = [{SN[i]: int(num[i, e]) for i in range(len(SN)) if int(num[i, e])} for e in range(E)]
+    return entries, {SQ[i]: c for i, c in enumerate(q) if c}, Ns
 
 
-def _line_exponents(search: _Search, which: int, line: tuple[Fraction, ...], max_degree: int) -> list[set[int]]:
-    """The exponents of ``s`` in each ``P_k(a0 + s u, b0 + s v)`` (sampled at s = 1, 2, ...)."""
-    a0, b0, u, v = line
-    D, samples, s = search.D, [], 0
-    p = PRIME
-    for e in range(max_degree + 1):
-        supports = [[(i, 0) for i in range(e + 1)]] * (D + 1)
-        while len(samples) * D < (D + 1) * (e + 1) + 2 * D:
-            s += 1
-            got = search.sample(a0 + s * u, b0 + s * v)
-            if got is not None:
-                samples.append((Fraction(s), got))
-        rows = _rows(samples, which, D, supports, lambda pt, m: int(pt.numerator) ** m[0])
-        vec = _nullvector_mod(rows, (D + 1) * (e + 1), p)
-        if vec is not None:
-            return [{i for i in range(e + 1) if vec[k * (e + 1) + i]} for k in range(D + 1)]
-    raise RealSolvingError(f"no family polynomial of degree at most {max_degree} in the parameters")
+def _charpoly(N: list[list[Any]], one: Any) -> list[Any]:
+    """The characteristic polynomial's coefficients (constant first) of a square matrix over a
+    commutative ring where ``1..n`` are invertible (Faddeev and LeVerrier)."""
+    n = len(N)
+    c = [one * 0] * n + [one]
+    Mk = [[one * 0] * n for _ in range(n)]
+    for k in range(1, n + 1):
+        Mk = [[sum((N[i][l] * Mk[l][j] for l in range(n)), one * 0) + (c[n - k + 1] if i == j else 0)
+               for j in range(n)] for i in range(n)]
+        tr = sum((sum((N[i][l] * Mk[l][i] for l in range(n)), one * 0) for i in range(n)), one * 0)
+        c[n - k] = tr * (-pow(k, -1, one.context().modulus()))
+    return c
 
 
-def _family_poly(search: _Search, which: int, ctx: Any) -> Any:
-    """``P(t, a, b)`` for form ``which``, as an fmpz_mpoly of ``ctx`` (t, a, b): the degrees of its
-    coefficients along a generic line and along the two axes' directions, then the coefficients."""
-    D = search.D
-    total = [max(e, default=-1) for e in _line_exponents(search, which, search.lines[0], MAX_DEGREE)]
-    in_a = _line_exponents(search, which, search.lines[1], max(total))
-    in_b = _line_exponents(search, which, search.lines[2], max(total))
-    supports = [[(i, j) for i in sorted(ea) for j in sorted(eb) if i + j <= dt]
-                for dt, ea, eb in zip(total, in_a, in_b)]
-    ncols = sum(len(sup) for sup in supports)
-    need = max(max(len(sup) for sup in supports), -(-ncols // D))
-
-    def value(pt: tuple[Fraction, Fraction], m: tuple[int, int]) -> int:
-        (a, b), (i, j) = pt, m
-        return a.numerator ** i * a.denominator ** (da_max - i) * b.numerator ** j * b.denominator ** (db_max - j)
-    da_max, db_max = max(max(e) for e in in_a), max(max(e) for e in in_b)
-    for extra in (2, 6, 12):
-        samples = search.random_samples(need + extra)
-        vec = _solve(samples, which, D, supports, value)
-        if vec is not None:
-            terms: dict[tuple[int, int, int], int] = {}
-            pos = 0
-            for k, sup in enumerate(supports):
-                for i, j in sup:
-                    if vec[pos]:
-                        terms[(k, i, j)] = vec[pos]
-                    pos += 1
-            P = ctx.from_dict(terms)
-            if _check(P, search, which):
-                return P
-    raise RealSolvingError("the family polynomial could not be interpolated")
-
-
-def _check(P: Any, search: _Search, which: int, fresh: int = 2) -> bool:
-    """``P(t, a0, b0)`` proportional to the characteristic polynomial at fresh points."""
-    done = 0
-    while done < fresh:
-        a, b = search.random_point()
-        cps = search.sample(a, b)
-        if cps is None:
-            continue
-        done += 1
-        coeffs = _at(P, a, b, search.D)
-        lead = coeffs[search.D]
-        if lead == 0 or any(coeffs[k] != lead * cps[which][k] for k in range(search.D)):
-            return False
-    return True
+def _true_part(fib: ModFibres, entries: list[dict], Q: dict, rnd: random.Random,
+               known: dict[tuple, bool]) -> Any:
+    """The product of the irreducible factors over ``F_p`` of the discriminant and leading
+    coefficient of ``P(t, a, b) = det(t Q - N)`` (content removed) along which the fibre is not
+    ``D`` distinct points, made monic (an nmod_mpoly in (a, b)). ``known``: the verdicts by
+    (degrees, multiplicity) of a first prime, used when this prime's factors have the same keys
+    (else the factors are tested and ``known`` filled)."""
+    p, D = fib.p, fib.dim
+    ctx2 = nmod_mpoly_ctx.get(("a", "b"), ordering="deglex", modulus=p)
+    ctx3 = nmod_mpoly_ctx.get(("t", "a", "b"), ordering="lex", modulus=p)
+    N = [[ctx2.from_dict(entries[k * D + l]) for k in range(D)] for l in range(D)]  # rows l, columns k
+    q = ctx2.from_dict(Q)
+    c = _charpoly(N, ctx2.from_dict({(0, 0): 1}))
+    coeffs = [c[k] * q ** k for k in range(D + 1)]
+    g = coeffs[D]
+    for x in coeffs:
+        g = g.gcd(x)
+    coeffs = [x // g for x in coeffs]
+    P = ctx3.from_dict({(k,) + e: v for k, x in enumerate(coeffs) for e, v in x.to_dict().items()})
+    disc = ctx2.from_dict({e[1:]: v for e, v in P.discriminant("t").to_dict().items()})
+    if disc.is_zero():
+        raise RealSolvingError("the solutions are not distinct for generic parameters")
+    factors = [(f, (tuple(f.degrees()), m)) for f, m in (disc * coeffs[D]).factor()[1] if not f.is_constant()]
+    keys = [k for _, k in factors]
+    reuse = len(set(keys)) == len(keys) and set(keys) == set(known)
+    if not reuse:
+        known.clear()
+    T = ctx2.from_dict({(0, 0): 1})
+    for f, k in factors:
+        if not reuse:
+            known[k] = _on_curve(fib, f, rnd)
+        if known[k]:
+            T *= f
+    return T * pow(int(T.leading_coefficient()), -1, p)
 
 
-def _at(P: Any, a: Fraction, b: Fraction, D: int) -> list[fmpq]:
-    """The coefficients in t of ``P(t, a, b)``."""
-    out = [fmpq(0)] * (D + 1)
-    fa, fb = fmpq(a.numerator, a.denominator), fmpq(b.numerator, b.denominator)
-    for (k, i, j), c in P.to_dict().items():
-        out[k] += fmpq(c) * fa ** i * fb ** j
+def _irregular(fib: ModFibres, f: Any, rnd: random.Random, points: int) -> list[bool]:
+    """At up to ``points`` points of ``f = 0`` over ``F_p`` (on random lines): whether the fibre
+    there is not ``D`` distinct points."""
+    p = fib.p
+    solve_in_a = f.degrees()[0] > 0
+    out: list[bool] = []
+    for _ in range(12 * points):
+        v = rnd.randrange(1, p)
+        u = f.subs({"b": v} if solve_in_a else {"a": v})
+        terms = {e[0] if solve_in_a else e[1]: int(c) for e, c in u.to_dict().items()}
+        line = nmod_poly([terms.get(i, 0) for i in range(max(terms, default=0) + 1)], p)
+        roots = line.roots() if line.degree() > 0 else []
+        if roots:
+            r = int(roots[0][0])
+            out.append(not fib.regular_at(*((r, v) if solve_in_a else (v, r)), fib.dim))
+            if len(out) == points:
+                break
     return out
 
 
-def _forms(n: int, count: int) -> list[list[fmpq]]:
-    rnd = random.Random(SEED + 1)
-    return [[fmpq(rnd.randint(-3, 3) or 1) for _ in range(n)] for _ in range(count)]
+def _on_curve(fib: ModFibres, f: Any, rnd: random.Random, points: int = 2) -> bool:
+    """Whether ``f = 0`` is a discriminant curve (True also when no point of it is found)."""
+    seen = _irregular(fib, f, rnd, points)
+    return any(seen) or not seen
 
 
-def _factors(P: Any, ctx2: Any, D: int) -> dict[str, Any]:
-    """The irreducible factors in (a, b) of P's discriminant and leading coefficient in t,
-    each with a positive leading coefficient."""
-    out = {}
-    lead = ctx2.from_dict({(i, j): c for (k, i, j), c in P.to_dict().items() if k == D})
-    disc = P.discriminant("t")
-    disc = ctx2.from_dict({(i, j): c for (k, i, j), c in disc.to_dict().items()})
-    for q in (lead, disc):
-        if q.is_zero():
-            raise RealSolvingError("the solutions are not distinct for generic parameters")
-        for f, _ in q.factor()[1]:
-            if f.is_constant():
-                continue
-            f = f if f.leading_coefficient() > 0 else -f
-            out[str(f)] = f
-    return out
+# ---------------------------------------------------------------- over Q
+def _lift(acc: dict, modulus: int, part: dict, q: int) -> dict:
+    """The Chinese remainders of the coefficients (by monomial) with one more prime's."""
+    if not acc:
+        return dict(part)
+    inv = pow(modulus, -1, q)
+    return {e: (x + modulus * ((part.get(e, 0) - x) * inv % q)) for e in set(acc) | set(part)
+            for x in [acc.get(e, 0)]}
 
 
-def _divides_disc(f: Any, P: Any, D: int, rnd: random.Random, names: tuple[str, str]) -> bool:
-    """Whether the curve ``f`` (a polynomial of P's ring free of t) lies in ``P``'s discriminant
-    or leading-coefficient curve: checked on two random lines ``b = b0`` (``a = a0`` when ``f``
-    does not involve ``a``)."""
-    var = names[1] if f.degrees()[1] > 0 else names[0]
-    for _ in range(2):
-        v = rnd.randint(2, 10 ** 6)
-        fv, Pv = f.subs({var: v}), P.subs({var: v})
-        lead = Pv.context().from_dict({(0,) + e[1:]: c for e, c in Pv.to_dict().items() if e[0] == D})
-        h = Pv.discriminant("t") * lead
-        if fv.is_constant() or max(fv.gcd(h).degrees()) < max(fv.degrees()):
-            return False
-    return True
+def _reconstruct(acc: dict, modulus: int) -> dict | None:
+    """The primitive integer polynomial whose monic image the residues are, by rational
+    reconstruction; None when the modulus is too small yet."""
+    bound = math.isqrt(modulus // 2)
+    fracs = {}
+    for e, x in acc.items():
+        got = ratrec(x % modulus, modulus, bound)
+        if got is None:
+            return None
+        if got[0]:
+            fracs[e] = got
+    den = 1
+    for _, d in fracs.values():
+        den = math.lcm(den, d)
+    ints = {e: n * (den // d) for e, (n, d) in fracs.items()}
+    g = 0
+    for v in ints.values():
+        g = math.gcd(g, v)
+    return {e: v // g for e, v in ints.items()}
 
 
 def discriminant_curves(R: PolyRing, gens: Sequence[Poly], n: int, params: Sequence[str],
-                        box: tuple[Fraction, Fraction, Fraction, Fraction]) -> Curves:
+                        max_primes: int = 40) -> Curves:
     """The discriminant curves of the system ``gens`` (configuration variables the first ``n`` of
-    ``R``, the two ``params`` the others) in the plane of ``params``; samples are drawn in ``box``
-    (lo_a, hi_a, lo_b, hi_b). Raises :class:`NotApplicable` when the system is not zero-dimensional."""
+    ``R``, the two ``params`` the others) in the plane of ``params``. Raises
+    :class:`NotApplicable` when the system is not zero-dimensional and nonempty."""
     fam = _Family(R, gens, n, params)
-    search = _Search(fam, _forms(n, 2), box)
-    search.start()
-    ctx = fmpz_mpoly_ctx.get(("t", params[0], params[1]), "lex")
+    terms = _integer_terms(fam)
+    rnd = random.Random(SEED)
+    forms = _forms(n, rnd)
+    acc: dict = {}
+    known: dict[tuple, bool] = {}
+    modulus, last, key, D, samples, degrees = 1, None, None, 0, 0, None
+    stream = primes(SEED)
+    for used, p in enumerate(stream):
+        if used >= max_primes:
+            break
+        fib = ModFibres(fam.ring, terms, p, forms, rnd.randrange(2 ** 30))
+        try:
+            got = fib.learn(D or None)
+            if not D and got == 0:
+                raise NotApplicable("the configuration space is not finite and nonempty (mobility is not 0)")
+            degrees = degrees or _line_degrees(fib, rnd)
+            D = got
+            found = _matrix_mod(fib, *degrees, rnd)
+        except Unlucky:
+            continue
+        if found is None:
+            continue
+        entries, Q, count = found
+        samples += count
+        T = _true_part(fib, entries, Q, rnd, known)
+        image = {e: int(c) for e, c in T.to_dict().items()}
+        shape = (T.total_degree(), max(image, key=lambda e: (sum(e), e)))
+        if key is None or shape != key:
+            if key is not None and shape[0] < key[0]:
+                continue  # an unlucky prime (a factor lost): skip it
+            key, acc, modulus, last = shape, {}, 1, None
+        acc = _lift(acc, modulus, image, p)
+        modulus *= p
+        poly = _reconstruct(acc, modulus)
+        if poly is not None and (poly == last or _confirmed(poly, fam, terms, forms, D, next(stream), rnd)):
+            return _curves(poly, params, D, samples)
+        last = poly
+    raise RealSolvingError("the discriminant curves could not be lifted")
+
+
+def _confirmed(poly: dict, fam: _Family, terms: list, forms: list, D: int, q: int, rnd: random.Random) -> bool:
+    """Whether at a fresh prime ``q`` every point found on each irreducible factor of the lifted
+    ``poly`` (two per factor) has a fibre that is not ``D`` distinct points (a wrong lift has
+    regular fibres on its zeros)."""
+    fib = ModFibres(fam.ring, terms, q, forms, rnd.randrange(2 ** 30))
+    try:
+        fib.learn(D)
+    except Unlucky:
+        return False
+    ctx = fmpz_mpoly_ctx.get(("a", "b"), "lex")
+    ctxq = nmod_mpoly_ctx.get(("a", "b"), ordering="deglex", modulus=q)
+    for f, _ in ctx.from_dict(poly).factor()[1]:
+        if f.is_constant():
+            continue
+        seen = _irregular(fib, ctxq.from_dict({e: int(c) % q for e, c in f.to_dict().items()}), rnd, 2)
+        if not seen or not all(seen):
+            return False
+    return True
+
+
+def _curves(poly: dict, params: Sequence[str], D: int, samples: int) -> Curves:
+    """The irreducible factors over Q of the lifted product, as :class:`Curves`."""
     ctx2 = fmpz_mpoly_ctx.get((params[0], params[1]), "lex")
-    found = _factors(_family_poly(search, 0, ctx), ctx2, search.D)
-    P2 = _family_poly(search, 1, ctx)
-    rnd = random.Random(SEED + 2)
-    factors = [f for f in found.values()
-               if _divides_disc(ctx.from_dict({(0,) + e: c for e, c in f.to_dict().items()}), P2, search.D, rnd, tuple(params))]
+    factors = []
+    for f, _ in ctx2.from_dict(poly).factor()[1]:
+        if not f.is_constant():
+            factors.append(f if f.leading_coefficient() > 0 else -f)
     factors.sort(key=lambda f: (f.total_degree(), str(f)))
     return Curves(tuple(params), [{(int(e[0]), int(e[1])): Fraction(int(c)) for e, c in f.to_dict().items()} for f in factors],
-                  [str(f).replace(" ", "") for f in factors], search.D, search.count)
+                  [str(f).replace(" ", "") for f in factors], D, samples)
 
 
 _CACHE: dict[tuple, Curves] = {}
 
 
-def mechanism_curves(m: Any, params: Sequence[str], box: tuple[Fraction, Fraction, Fraction, Fraction],
-                     limit: float | None) -> Curves:
+def mechanism_curves(m: Any, params: Sequence[str], limit: float | None) -> Curves:
     """The discriminant curves of mechanism ``m`` (its symbolic lengths exactly ``params``), within
     ``limit`` seconds; a :class:`Curves` with only a ``note`` when they do not apply or finish.
     Remembered for the process (a sweep and its map compute them once)."""
@@ -382,9 +423,9 @@ def mechanism_curves(m: Any, params: Sequence[str], box: tuple[Fraction, Fractio
     if key not in _CACHE:
         n = len(m.variables())
         try:
-            ok, got = within(limit, discriminant_curves, R, gens, n, params, box)
+            ok, got = within(limit, discriminant_curves, R, gens, n, params)
         except (NotApplicable, RealSolvingError) as e:
-            return Curves(tuple(params), note=f"no discriminant curves ({e})")
+            got, ok = Curves(tuple(params), note=f"no discriminant curves ({e})"), True
         if not ok:
             return Curves(tuple(params), note=f"no discriminant curves (not found in {limit:g} s)")
         _CACHE[key] = got

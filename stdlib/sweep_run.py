@@ -31,7 +31,6 @@ MAX_BATCH = 64
 SHARED_CURVES = 20.0            # seconds for the discriminant curves, at least
 CURVE_SECONDS_PER_DESIGN = 0.25  # and this per design to do
 CURVES_LIMIT = 300.0            # at most
-CURVES_MIN_DESIGNS = 1000       # fewer designs to do: not worth it (unless shared=yes)
 
 OnRow = Callable[[dict[str, Any], int, int], None]
 
@@ -134,13 +133,15 @@ def prepare(spec: SweepSpec, designs: DesignSet) -> tuple[SweepSpec, list[str]]:
 
 def run_sweep(spec: SweepSpec, designs: DesignSet, out: str | None = None, *, scheduler: Any = None,
               workers: int | None = None, batch: int | None = None, progress: bool | None = None,
-              on_row: OnRow | None = None, shared: bool | None = None) -> list[dict[str, Any]]:
+              on_row: OnRow | None = None, shared: bool | None = None,
+              notes: list[str] | None = None) -> list[dict[str, Any]]:
     """All rows of the sweep (those already in ``out`` included), ordered by design id. ``shared``:
     compute the generic length conditions first (default: when singular configurations are asked
     for, the answer they save work on) and, for real counts over two parameters, the discriminant
-    curves (default: for 1000 designs or more; designs of a grid in one cell of them are analysed
-    once). Under a statement's time limit (``mech --timeout``) the sweep stops before it with the
-    rows done kept, and raises the limit's error saying so; per-design limits end by then too."""
+    curves (default: yes, unless ``shared`` is False; designs in one cell of them are analysed
+    once). ``notes`` receives a line on the curves (found, used, or why not). Under a statement's
+    time limit (``mech --timeout``) the sweep stops before it with the rows done kept, and raises
+    the limit's error saying so; per-design limits end by then too."""
     from mech.dsl.limits import LimitExceeded, MechLimitError, TimeLimitExceeded, limit_error, remaining
     from mech.kernel.progress import stage
     work_spec, varying = prepare(spec, designs)
@@ -159,9 +160,8 @@ def run_sweep(spec: SweepSpec, designs: DesignSet, out: str | None = None, *, sc
             common = shared_work(work_spec, varying) if todo and (shared or (shared is None and "singular" in spec.answers)) \
                 else Shared(varying)
             later: dict[int, tuple[int, dict]] = {}
-            if (len(todo) >= CURVES_MIN_DESIGNS or shared) and shared is not False and "real" in spec.answers \
-                    and len(varying) == 2:
-                later = _classify(work_spec, designs, varying, common, todo, rows)
+            if todo and shared is not False and "real" in spec.answers and len(varying) == 2:
+                later = _classify(work_spec, designs, varying, common, todo, rows, notes)
                 todo = [t for t in todo if t[0] not in later]
 
             def finish(got: list[dict[str, Any]]) -> None:
@@ -208,23 +208,28 @@ def run_sweep(spec: SweepSpec, designs: DesignSet, out: str | None = None, *, sc
 
 
 def _classify(spec: SweepSpec, designs: DesignSet, varying: list[str], common: Shared, todo: list,
-              rows: dict[int, dict[str, Any]]) -> dict[int, tuple[int, dict]]:
-    """With the discriminant curves (put in ``common``) and a grid of designs: the designs to take
-    from another design of their cell, as id -> (that design's id, design); the others stay to do.
-    Only real counts and mobility are taken (every other answer needs its own analysis)."""
-    from mech.stdlib.sweep_cells import grid_cells
+              rows: dict[int, dict[str, Any]], notes: list[str] | None) -> dict[int, tuple[int, dict]]:
+    """With the discriminant curves (put in ``common``): the designs to take from another design of
+    their cell (a grid's or any design set's, :mod:`mech.stdlib.sweep_cells`), as id -> (that
+    design's id, design); the others stay to do. Only real counts and mobility are taken (every
+    other answer needs its own analysis)."""
+    from mech.stdlib.sweep_cells import design_cells
     from mech.stdlib.sweep_discriminant import curve_label, mechanism_curves
-    xs = [d[varying[0]] for d in designs.designs]
-    ys = [d[varying[1]] for d in designs.designs]
     budget = min(CURVES_LIMIT, max(SHARED_CURVES, CURVE_SECONDS_PER_DESIGN * len(todo)))
-    curves = mechanism_curves(spec.mechanism, varying, (min(xs), max(xs), min(ys), max(ys)), budget)
+    if spec.deadline is not None:  # under a statement's limit: half of what remains at most
+        budget = min(budget, max(0.0, (spec.deadline - time.time()) / 2))
+    curves = mechanism_curves(spec.mechanism, varying, budget)
     common.curves = curves.factors
     common.curve_labels = [curve_label(n, k) for k, n in enumerate(curves.names)]
-    if not curves.factors or not set(spec.answers) <= {"mobility", "real"}:
+    say = notes.append if notes is not None else (lambda _: None)
+    if not curves.factors:
+        say(f"{curves.note}: every design analysed")
         return {}
-    cells = grid_cells({i: (x, y) for i, (x, y) in enumerate(zip(xs, ys))}, curves.factors)
-    if cells is None:
+    found = f"discriminant curves in ({', '.join(varying)}): {', '.join(common.curve_labels)}"
+    if not set(spec.answers) <= {"mobility", "real"}:
+        say(f"{found} (named in conditions; every design analysed for the other answers)")
         return {}
+    cells = design_cells({i: (d[varying[0]], d[varying[1]]) for i, d in enumerate(designs.designs)}, curves.factors)
     source: dict[int, int] = {}  # a cell's analysed design: one already done, else its smallest id
     for i, g in sorted(cells.items()):
         if i in rows and _usable(rows[i]):
@@ -236,6 +241,7 @@ def _classify(spec: SweepSpec, designs: DesignSet, varying: list[str], common: S
         src = source.setdefault(g, i)
         if src != i and (src in todo_ids or src in rows):
             later[i] = (src, d)
+    say(f"{found}; {len(later)} of {len(todo)} designs take the count of an analysed design of their cell")
     return later
 
 

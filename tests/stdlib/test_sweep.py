@@ -144,7 +144,7 @@ def test_a_statement_time_limit_stops_the_sweep_with_its_rows_kept_and_resumable
     s.execute(f'LIB "mechanism.lib"; mechanism rpr {{ {RPR}; }}')
     start = time.monotonic()
     with pytest.raises(MechError) as e:
-        s.execute('sweep(rpr, "grid r1=1:12:12 r2=1:12:12 r3=4", "real", "lim.csv", "timeout=60");')
+        s.execute('sweep(rpr, "grid r1=1:12:12 r2=1:12:12 r3=4", "real", "lim.csv", "timeout=60 shared=no");')
     assert time.monotonic() - start < 1 + 1.5  # 144 designs take several seconds
     kept = (tmp_path / "lim.csv").read_text().count("\n") - 1
     assert re.search(r"time limit of 1 s exceeded: the sweep stopped after (\d+) of 144 designs; they are in "
@@ -229,6 +229,30 @@ def test_the_cli_subcommand(tmp_path, capsys):
     assert main(["sweep", str(script)]) == 2  # --designs is required
 
 
+def test_the_cli_whole_sweep_time_limit_keeps_the_rows_and_resumes(tmp_path, capsys):
+    """``mech sweep --timeout`` is per design; ``--total-timeout T`` (or ``mech --timeout T sweep``)
+    limits the whole sweep: it stops with the rows done in the table and says how to resume."""
+    from mech.cli import main
+    script = tmp_path / "rpr.mech"
+    script.write_text(f'LIB "mechanism.lib";\nmechanism rpr {{ {RPR}; }}\n')
+    grid = ["--designs", "grid r1=1:12:12 r2=1:12:12 r3=4", "--answers", "real", "--scheduler", "inline"]
+    for limit in (["sweep", str(script), "--total-timeout", "1"], ["--timeout", "1", "sweep", str(script)]):
+        assert main(limit + grid) == 1  # 144 designs take several seconds
+        err = capsys.readouterr().err
+        kept = (tmp_path / "rpr.csv").read_text().count("\n") - 1
+        assert re.fullmatch(rf"mech sweep: error: time limit of 1 s exceeded: the sweep stopped after {kept} of 144 "
+                            rf"designs; they are in .*rpr.csv: the same sweep resumes there\n", err), err
+    assert main(["--timeout", "1", "sweep", str(script), "--total-timeout", "1"] + grid) == 2
+    assert "give the sweep's time limit once" in capsys.readouterr().err
+    assert main(["--format", "json", "sweep", str(script)] + grid) == 2
+    assert "--format does not apply to 'mech sweep'" in capsys.readouterr().err
+    assert main(["sweep", str(script), "--total-timeout", "-1"] + grid) == 2
+    assert main(["sweep", str(script)] + grid) == 0
+    rows = list(csv.DictReader((tmp_path / "rpr.csv").read_text().splitlines()))
+    assert sorted(int(r["id"]) for r in rows) == list(range(144))
+    assert "discriminant curves in (r1, r2): r1, r2, D3; " in capsys.readouterr().out
+
+
 def test_python_api_rows_or_a_data_frame():
     from mech.sweep import sweep
     rows = sweep(FOURBAR, "grid g=2 l1=1:2:2 l2=3 l3=3", ["grashof"], scheduler="inline", frame=False)
@@ -265,7 +289,7 @@ DYAD = "fix A 0 0; fix B 3 0; bar A P r1; bar B P r2"
 
 def test_the_dyads_discriminant_curves_are_its_circle_conditions():
     from mech.stdlib.sweep_discriminant import mechanism_curves
-    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], (Fraction(1), Fraction(6), Fraction(1), Fraction(6)), 60)
+    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], 60)
     # two circles of radii r1, r2 three apart meet in 2 real points inside |r1 - r2| < 3 < r1 + r2
     assert sorted(curves.names) == sorted(["r1", "r2", "r1+r2+3", "r1+r2-3", "r1-r2+3", "r1-r2-3"]) and curves.D == 2
 
@@ -282,9 +306,41 @@ def test_designs_in_one_cell_take_one_analysis_and_agree_with_all_analysed():
     on_curve = [r for r in classified if {"r1-r2+3", "r1+r2-3", "r1-r2-3"} & set(r["conditions"].split(", "))]
     assert on_curve and all(abs(Fraction(r["r1"]) - Fraction(r["r2"])) == 3 or Fraction(r["r1"]) + Fraction(r["r2"]) == 3
                             for r in on_curve)
-    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], (Fraction(1), Fraction(6), Fraction(1), Fraction(6)), 60)
+    curves = mechanism_curves(parse_mechanism(DYAD), ["r1", "r2"], 60)
     assert check_cells(full, "r1", "r2", "real", curves.factors) == []
     assert check_cells(full, "r1", "r2", "real", curves.factors[:2]) != []  # without the circle conditions: wrong
+
+
+def test_any_design_set_is_grouped_into_cells_and_agrees_with_all_analysed():
+    """Random designs (no grid): designs joined by segments free of the curves take one analysis;
+    the table equals the one with every design analysed, and a note says what the curves gave."""
+    designs = "random 120 r1=1/2:6 r2=1/2:6 seed=3"
+    notes = []
+    classified = sweep_rows(parse_mechanism(DYAD), designs, "real", scheduler="inline", notes=notes)
+    full = sweep_rows(parse_mechanism(DYAD), designs, "real", scheduler="inline", shared=False)
+    assert [r["real"] for r in classified] == [r["real"] for r in full]
+    inherited = sum(r["conditions"].startswith("same cell as ") for r in classified)
+    assert 60 < inherited < 120
+    assert notes == [f"discriminant curves in (r1, r2): r1, r1+r2+3, r1+r2-3, r1-r2+3, r1-r2-3, r2; "
+                     f"{inherited} of 120 designs take the count of an analysed design of their cell"]
+
+
+def test_designs_joined_only_by_segments_free_of_the_curves():
+    """One sign, two components: (a - 2)(b - 2) > 1/4 both north-east and south-west of the
+    hyperbola; designs there are never joined (the segment crosses the curve twice), designs of
+    one branch's side are, and a design on the curve is analysed itself."""
+    from mech.stdlib.sweep_cells import scattered_cells
+    hyperbola = {(1, 1): Fraction(1), (1, 0): Fraction(-2), (0, 1): Fraction(-2), (0, 0): Fraction(15, 4)}
+    pts = {0: (Fraction(4), Fraction(4)), 1: (Fraction(1), Fraction(1)), 2: (Fraction(1), Fraction(1, 2)),
+           3: (Fraction(5), Fraction(7, 2)), 4: (Fraction(5, 2), Fraction(5, 2))}
+    assert scattered_cells(pts, [hyperbola]) == {0: 0, 1: 1, 2: 1, 3: 0, 4: 4}
+
+
+def test_the_sweep_says_when_there_are_no_discriminant_curves():
+    notes = []
+    sweep_rows(parse_mechanism(FOURBAR), "grid g=2 l1=2:3:2 l2=3:4:2 l3=3", "real", scheduler="inline", notes=notes)
+    assert notes == ["no discriminant curves (the configuration space is not finite and nonempty (mobility is "
+                     "not 0)): every design analysed"]
 
 
 @pytest.mark.slow
@@ -294,7 +350,7 @@ def test_the_3rpr_discriminant_curves_separate_its_real_counts():
     from mech.stdlib.sweep_cells import check_cells
     from mech.stdlib.sweep_discriminant import mechanism_curves
     m = parse_mechanism(RPR)
-    curves = mechanism_curves(m.with_values({"r3": 4}), ["r1", "r2"], (Fraction(1), Fraction(12), Fraction(1), Fraction(12)), 600)
+    curves = mechanism_curves(m.with_values({"r3": 4}), ["r1", "r2"], 600)
     assert curves.D == 6 and curves.names[:2] == ["r1", "r2"] and len(curves.factors) == 3, curves.note
     assert max(i + j for i, j in curves.factors[2]) == 24
     grid = "grid r1=1:12:12 r2=1:12:12 r3=4"
@@ -306,6 +362,10 @@ def test_the_3rpr_discriminant_curves_separate_its_real_counts():
     assert sum(r["conditions"].startswith("same cell") for r in classified) > 20
     for r in classified[::9]:
         assert r["real"] == independent_3rpr_count(r["r1"], r["r2"], r["r3"])
+    lhs = "lhs 60 r1=1:12 r2=1:12 r3=4 seed=5"
+    scattered = sweep_rows(m, lhs, "real", scheduler="inline")
+    assert [r["real"] for r in scattered] == [r["real"] for r in sweep_rows(m, lhs, "real", scheduler="inline", shared=False)]
+    assert sum(r["conditions"].startswith("same cell") for r in scattered) > 20
 
 
 @pytest.mark.parametrize("name, grid, small", [
