@@ -1,0 +1,280 @@
+"""Submodules of free modules R^n over a polynomial ring with field coefficients: Gröbner bases
+(Buchberger's algorithm for modules, with the chain criterion), normal forms, membership,
+syzygies and minimal generators of graded submodules.
+
+A vector of R^n is a dict ``{(exp, comp): coeff}`` (``comp`` from 0).  Terms are compared by a
+*module order*: ``term over position`` (Macaulay2's default, ``Position => Up``: the monomial
+first, then the larger component), or, with ``elim = m``, every term in a component ``< m`` above
+every term in a component ``>= m`` (used for syzygies: Schreyer's elimination of the components).
+Literature: Greuel–Pfister, *A Singular Introduction to Commutative Algebra*, 2.3 (standard bases
+of modules) and 2.5 (syzygies by elimination of components); Eisenbud, *Commutative Algebra*, 15.5.
+"""
+from __future__ import annotations
+
+from typing import Any, Callable, Iterable, Optional, Sequence
+
+from .poly import Poly, PolyRing, divides, lcm_exp, sub_exp
+
+Exp = tuple[int, ...]
+Term = tuple[Exp, int]
+Vector = dict[Term, Any]
+
+
+def vector(columns: Sequence[Poly]) -> Vector:
+    """The vector with these entries (entry i in component i)."""
+    return {(e, i): c for i, p in enumerate(columns) for e, c in p.terms.items()}
+
+
+def entries(v: Vector, ring: PolyRing, rank: int) -> list[Poly]:
+    """The entries of a vector, one polynomial per component."""
+    parts: list[dict[Exp, Any]] = [{} for _ in range(rank)]
+    for (e, i), c in v.items():
+        parts[i][e] = c
+    return [Poly(ring, d) for d in parts]
+
+
+class ModuleOrder:
+    """A term order on R^n: term over position (components ascending), optionally with the
+    components below ``elim`` eliminated (above all others)."""
+
+    def __init__(self, ring: PolyRing, elim: int = 0) -> None:
+        okey = ring.order.key
+        if elim:
+            self.key: Callable[[Term], tuple] = lambda t: (t[1] < elim, okey(t[0]), t[1])
+        else:
+            self.key = lambda t: (okey(t[0]), t[1])
+
+
+def _lead(v: Vector, key: Callable[[Term], tuple]) -> Term:
+    return max(v, key=key)
+
+
+def _add_multiple(f: Vector, g: Vector, shift: Exp, c: Any) -> None:
+    """f += c * x^shift * g, in place."""
+    for (e, i), d in g.items():
+        t = (tuple(a + b for a, b in zip(e, shift)), i)
+        s = f.get(t)
+        if s is None:
+            f[t] = c * d
+        else:
+            s = s + c * d
+            if s == 0:
+                del f[t]
+            else:
+                f[t] = s
+
+
+class ModuleGB:
+    """A Gröbner basis of a submodule of R^n, completed as generators are added (:meth:`add`)."""
+
+    def __init__(self, ring: PolyRing, rank: int, elim: int = 0) -> None:
+        self.ring, self.rank = ring, rank
+        self.key = ModuleOrder(ring, elim).key
+        self.basis: list[Vector] = []
+        self.leads: list[Term] = []
+
+    # ---------------------------------------------------------------- reduction
+    def _divisor(self, t: Term) -> Optional[int]:
+        e, i = t
+        for k, (le, li) in enumerate(self.leads):
+            if li == i and divides(le, e):
+                return k
+        return None
+
+    def reduce(self, f: Vector, full: bool = True) -> Vector:
+        """The normal form of f (full: every term reduced; otherwise only the lead term)."""
+        f = dict(f)
+        out: Vector = {}
+        key = self.key
+        while f:
+            t = max(f, key=key)
+            k = self._divisor(t)
+            if k is None:
+                if not full:
+                    out.update(f)
+                    return out
+                out[t] = f.pop(t)
+                continue
+            g, lt = self.basis[k], self.leads[k]
+            _add_multiple(f, g, sub_exp(t[0], lt[0]), -f[t] / g[lt])
+        return out
+
+    def contains(self, f: Vector) -> bool:
+        return not self.reduce(f, full=False)
+
+    # ---------------------------------------------------------------- completion
+    def add(self, gens: Iterable[Vector]) -> None:
+        """Add generators and complete the basis (Buchberger's algorithm, pairs by degree of
+        their lcm, the chain criterion of Gebauer and Möller in Buchberger's form)."""
+        pairs: list[tuple[int, int]] = []
+        for g in gens:
+            self._insert(g, pairs)
+        while pairs:
+            pairs.sort(key=lambda p: -self._pair_degree(p))
+            i, j = pairs.pop()
+            if self._chain(i, j, pairs):
+                continue
+            self._insert(self._spoly(i, j), pairs)
+        self._interreduce()
+
+    def _pair_degree(self, p: tuple[int, int]) -> int:
+        return sum(lcm_exp(self.leads[p[0]][0], self.leads[p[1]][0]))
+
+    def _insert(self, g: Vector, pairs: list[tuple[int, int]]) -> None:
+        g = self.reduce(g)
+        if not g:
+            return
+        t = _lead(g, self.key)
+        c = g[t]
+        g = {k: v / c for k, v in g.items()}
+        n = len(self.basis)
+        self.basis.append(g)
+        self.leads.append(t)
+        pairs.extend((k, n) for k, (_, li) in enumerate(self.leads[:n]) if li == t[1])
+
+    def _chain(self, i: int, j: int, pending: list[tuple[int, int]]) -> bool:
+        """Buchberger's chain criterion: some lead k (same component) divides lcm(lead i, lead j)
+        and the pairs (i, k), (j, k) are already treated."""
+        L = lcm_exp(self.leads[i][0], self.leads[j][0])
+        comp = self.leads[i][1]
+        pend = set(pending)
+        for k, (le, li) in enumerate(self.leads):
+            if k in (i, j) or li != comp or not divides(le, L):
+                continue
+            if (min(i, k), max(i, k)) not in pend and (min(j, k), max(j, k)) not in pend:
+                return True
+        return False
+
+    def _spoly(self, i: int, j: int) -> Vector:
+        (ei, c), (ej, _) = self.leads[i], self.leads[j]
+        L = lcm_exp(ei, ej)
+        f: Vector = {}
+        _add_multiple(f, self.basis[i], sub_exp(L, ei), self.ring.field.one)
+        _add_multiple(f, self.basis[j], sub_exp(L, ej), -self.ring.field.one)
+        return f
+
+    def _interreduce(self) -> None:
+        """Keep a minimal basis (no lead divides another's) with reduced tails."""
+        order = sorted(range(len(self.basis)), key=lambda k: self.key(self.leads[k]))
+        keep: list[int] = []
+        for k in order:
+            e, i = self.leads[k]
+            if not any(self.leads[m][1] == i and divides(self.leads[m][0], e) for m in keep):
+                keep.append(k)
+        self.basis = [self.basis[k] for k in keep]
+        self.leads = [self.leads[k] for k in keep]
+        for n, g in enumerate(self.basis):
+            lt = self.leads[n]
+            others = ModuleGB(self.ring, self.rank)
+            others.key = self.key
+            others.basis = self.basis[:n] + self.basis[n + 1:]
+            others.leads = self.leads[:n] + self.leads[n + 1:]
+            tail = others.reduce({t: c for t, c in g.items() if t != lt})
+            tail[lt] = g[lt]
+            self.basis[n] = tail
+
+
+def groebner_basis(ring: PolyRing, rank: int, gens: Sequence[Vector]) -> list[Vector]:
+    """The reduced Gröbner basis (monic) of the submodule generated by gens, in term over position
+    order, sorted by increasing lead term (as Macaulay2's ``gens gb`` lists it)."""
+    gb = ModuleGB(ring, rank)
+    gb.add(gens)
+    return gb.basis
+
+
+def vector_degree(v: Vector, degrees: Sequence[int]) -> Optional[int]:
+    """The degree of a homogeneous vector (its lead term's total degree plus its component's
+    degree; None for 0)."""
+    if not v:
+        return None
+    e, i = next(iter(v))
+    return sum(e) + degrees[i]
+
+
+def syzygies(ring: PolyRing, rank: int, gens: Sequence[Vector]) -> list[Vector]:
+    """Generators of the syzygies of gens (vectors of R^len(gens)): the Gröbner basis of
+    ``gens[j] + e_(rank+j)`` eliminating the first ``rank`` components, the elements in the
+    others (Greuel–Pfister, Lemma 2.5.3)."""
+    k = len(gens)
+    gb = ModuleGB(ring, rank + k, elim=rank)
+    gb.add([{**g, **{(ring_zero_exp(ring), rank + j): ring.field.one}} for j, g in enumerate(gens)])
+    return [{(e, i - rank): c for (e, i), c in g.items()} for g in gb.basis if all(i >= rank for _, i in g)]
+
+
+def ring_zero_exp(ring: PolyRing) -> Exp:
+    return (0,) * ring.nvars
+
+
+def minimal_generators(ring: PolyRing, rank: int, gens: Sequence[Vector],
+                       degrees: Optional[Sequence[int]] = None) -> list[Vector]:
+    """Generators of the submodule generated by gens, taken by increasing degree (component
+    degrees ``degrees``; None: by lead term only) and lead term, each kept unless it lies in the
+    span of those kept before it: a minimal generating set when gens are homogeneous."""
+    key = ModuleOrder(ring).key
+
+    def rank_of(g: Vector) -> tuple:
+        lead = key(max(g, key=key))
+        return (vector_degree(g, degrees), lead) if degrees is not None else (lead,)
+
+    gb = ModuleGB(ring, rank)
+    kept: list[Vector] = []
+    for g in sorted((g for g in gens if g), key=rank_of):
+        if gb.contains(g):
+            continue
+        kept.append(g)
+        gb.add([g])
+    return kept
+
+
+def is_homogeneous(v: Vector, degrees: Sequence[int]) -> bool:
+    return len({sum(e) + degrees[i] for e, i in v}) <= 1
+
+
+def resolution(ring: PolyRing, rank: int, gens: Sequence[Vector], degrees: Sequence[int],
+               max_length: Optional[int] = None) -> list[tuple[list[Vector], list[int]]]:
+    """A minimal graded free resolution of the quotient R^rank / <gens> (homogeneous gens):
+    the differentials d_1, d_2, ... as (columns, their source degrees); d_1's columns are a minimal
+    generating set of the submodule, d_(i+1)'s a minimal one of d_i's syzygies (Eisenbud, 19.1)."""
+    maps: list[tuple[list[Vector], list[int]]] = []
+    cols = minimal_generators(ring, rank, gens, degrees)
+    tdeg = list(degrees)
+    limit = ring.nvars + 1 if max_length is None else max_length
+    while cols and len(maps) < limit:
+        sdeg = [vector_degree(c, tdeg) for c in cols]
+        maps.append((cols, sdeg))
+        cols = minimal_generators(ring, len(cols), syzygies(ring, len(tdeg), cols), sdeg)
+        tdeg = sdeg
+    return maps
+
+
+def lift(ring: PolyRing, rank: int, gens: Sequence[Vector], f: Vector) -> Optional[list[Poly]]:
+    """Coefficients a_j with f = sum a_j gens[j], or None when f is not in the submodule."""
+    k = len(gens)
+    gb = ModuleGB(ring, rank + k, elim=rank)
+    gb.add([{**g, **{(ring_zero_exp(ring), rank + j): ring.field.one}} for j, g in enumerate(gens)])
+    r = gb.reduce(f)
+    if any(i < rank for _, i in r):
+        return None
+    return [-p for p in entries({(e, i - rank): c for (e, i), c in r.items()}, ring, k)]
+
+
+def drop_unit_relations(ring: PolyRing, cols: Sequence[Vector], degrees: Sequence[int]) -> tuple[list[Vector], list[int]]:
+    """The relations of a graded module R^n / <cols> after removing the generators that a relation
+    with a constant entry expresses by the others (that entry's component is deleted); returns
+    the remaining relations and component degrees."""
+    cols, degrees = [dict(c) for c in cols], list(degrees)
+    zero = (0,) * ring.nvars
+    while True:
+        unit = next(((j, i) for j, c in enumerate(cols) for (e, i) in c if e == zero), None)
+        if unit is None:
+            return cols, degrees
+        j, i = unit
+        r = cols.pop(j)
+        c0 = r[(zero, i)]
+        out = []
+        for c in cols:
+            for (e, k), v in [(t, v) for t, v in c.items() if t[1] == i]:
+                _add_multiple(c, r, e, -v / c0)
+            out.append({(e, k - (k > i)): v for (e, k), v in c.items() if k != i})
+        cols = out
+        del degrees[i]
