@@ -259,13 +259,18 @@ def lift(ring: PolyRing, rank: int, gens: Sequence[Vector], f: Vector) -> Option
 
 
 def drop_unit_relations(ring: PolyRing, cols: Sequence[Vector], degrees: Sequence[int]) -> tuple[list[Vector], list[int]]:
-    """The relations of a graded module R^n / <cols> after removing the generators that a relation
-    with a constant entry expresses by the others (that entry's component is deleted); returns
-    the remaining relations and component degrees."""
+    """The relations of R^n / <cols> after removing each generator that a relation with a nonzero
+    constant entry expresses by the others (that entry's component is deleted); returns the
+    remaining relations and component degrees."""
     cols, degrees = [dict(c) for c in cols], list(degrees)
     zero = (0,) * ring.nvars
+
+    def unit_entry(c: Vector) -> Optional[int]:
+        comps = [i for (e, i) in c if e == zero]
+        return next((i for i in comps if sum(1 for (_, k) in c if k == i) == 1), None)
+
     while True:
-        unit = next(((j, i) for j, c in enumerate(cols) for (e, i) in c if e == zero), None)
+        unit = next(((j, i) for j, c in enumerate(cols) if (i := unit_entry(c)) is not None), None)
         if unit is None:
             return cols, degrees
         j, i = unit

@@ -9,11 +9,12 @@ from typing import Any
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.m2_modules import FreeModule, Map, source_of, target_of
+from ..dsl.m2_ops import free_module
 from ..dsl.m2_rings import in_quotients
 from ..dsl.m2_submodules import (BettiTally, ChainComplex, Module, as_map, betti_of, columns_of, from_columns,
                                  graded_ring)
 from ..dsl.registry import command
-from ..dsl.values import Ideal, List, Matrix
+from ..dsl.values import Ideal, Matrix, to_int
 from ..kernel import modules as km
 
 
@@ -128,10 +129,10 @@ def _presentation(M: Module) -> Map:
         gens = _mingens(M.matrix)
         return syz(M.matrix if gens.ncols == M.matrix.ncols else gens)
     rel = M.matrix
-    _graded(rel)
     cols, degrees = km.drop_unit_relations(M.ring, columns_of(rel), target_of(rel).degrees)
     F = FreeModule(target_of(rel).ring, tuple(degrees))
-    return from_columns(F, km.minimal_generators(M.ring, F.rank, cols, F.degrees))
+    graded = all(km.is_homogeneous(c, F.degrees) for c in cols)
+    return from_columns(F, km.minimal_generators(M.ring, F.rank, cols, F.degrees if graded else None))
 
 
 @command("prune", dialect="m2")
@@ -170,21 +171,25 @@ def _resolve(F: FreeModule, rel: Map, length: int | None = None) -> ChainComplex
 @command("resolution", dialect="m2")
 @command("res", dialect="m2")
 @in_quotients
-def resolution(M: Ideal | Module | FreeModule) -> ChainComplex:
+def resolution(ctx, M: Ideal | Module | FreeModule) -> ChainComplex:
     """res I (resolution I): a minimal free resolution of R/I (I homogeneous); res M: of a graded
     module (cokernel, image or free); LengthLimit => n stops after n maps."""
-    from ..dsl.m2_ops import free_module
-    limit = None
+    limit = ctx.m2_options.get("LengthLimit")
+    return _resolution(M, None if limit is None else to_int(limit))
+
+
+def _resolution(M: Ideal | Module | FreeModule, limit: int | None) -> ChainComplex:
     if isinstance(M, FreeModule):
         return ChainComplex((M,), ())
     if isinstance(M, Ideal):
-        R = graded_ring(M.ring)
-        F = free_module(R, 1)
-        rel = from_columns(F, [km.vector([g]) for g in M.gens if not g.is_zero()])
-        return _resolve(F, rel, limit)
+        F = free_module(graded_ring(M.ring), 1)
+        return _resolve(F, from_columns(F, [km.vector([g]) for g in M.gens if not g.is_zero()]), limit)
     graded_ring(M.ring)
     P = _presentation(M)
     return _resolve(target_of(P), P, limit)
+
+
+resolution.m2_options = ("LengthLimit",)
 
 
 @command("betti", dialect="m2")
@@ -208,7 +213,7 @@ def length_complex(C: ChainComplex) -> int:
 @in_quotients
 def pdim(M: Module | Ideal) -> int:
     """pdim M: the projective dimension of a graded module (of R/I for an ideal I)."""
-    return len(resolution(M).maps)
+    return len(_resolution(M, None).maps)
 
 
 @command("numgens", dialect="m2")
