@@ -9,7 +9,7 @@ from typing import Any, Sequence
 
 from ..kernel import modules as km
 from .errors import MechRuntimeError
-from .m2_modules import FreeModule, Map, source_degrees, target_of, with_default_degrees
+from .m2_modules import CyclicModule, FreeModule, Map, source_degrees, target_of, with_default_degrees
 from .m2_rings import M2Ring, degree_vectors
 from .values import Matrix
 
@@ -72,6 +72,15 @@ class Module:
         ga.add(a)
         gb.add(b)
         return all(gb.contains(v) for v in a) and all(ga.contains(v) for v in b)
+
+
+def module(M: "Module | CyclicModule") -> "Module":
+    """A module as image or cokernel (``R^1/I``: the cokernel of I's generators)."""
+    if isinstance(M, Module):
+        return M
+    ring = M.ideal.ring
+    F = FreeModule(ring.owner, (0,))
+    return Module("cokernel", from_columns(F, [km.vector([g]) for g in M.ideal.gens if not g.is_zero()]))
 
 
 @dataclass(frozen=True, eq=False)

@@ -283,3 +283,16 @@ def drop_unit_relations(ring: PolyRing, cols: Sequence[Vector], degrees: Sequenc
             out.append({(e, k - (k > i)): v for (e, k), v in c.items() if k != i})
         cols = out
         del degrees[i]
+
+
+def annihilator(ring: PolyRing, rank: int, relations: Sequence[Vector]) -> list[Poly]:
+    """Generators of the annihilator of R^rank / <relations>: the intersection over the
+    components i of (relations : e_i), each the first entries of the syzygies of e_i and the
+    relations."""
+    from .ideals import intersect
+    zero = ring_zero_exp(ring)
+    parts = []
+    for i in range(rank):
+        syz = syzygies(ring, rank, [{(zero, i): ring.field.one}, *relations])
+        parts.append([Poly(ring, {e: c for (e, k), c in s.items() if k == 0}) for s in syz] or [ring.zero()])
+    return intersect(*parts, ring=ring) if parts else [ring.one()]

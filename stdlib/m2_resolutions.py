@@ -8,10 +8,10 @@ from __future__ import annotations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError
-from ..dsl.m2_modules import FreeModule, Map, source_of, target_of
+from ..dsl.m2_modules import CyclicModule, FreeModule, Map, source_of, target_of
 from ..dsl.m2_ops import free_module
 from ..dsl.m2_rings import in_quotients
-from ..dsl.m2_submodules import (BettiTally, ChainComplex, Module, as_map, betti_of, columns_of, from_columns,
+from ..dsl.m2_submodules import (BettiTally, ChainComplex, Module, as_map, betti_of, columns_of, from_columns, module,
                                  graded_ring)
 from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix, to_int
@@ -106,8 +106,9 @@ def _mingens(M: Map) -> Map:
 
 @command("mingens", dialect="m2")
 @in_quotients
-def mingens_module(M: Module) -> Map:
+def mingens_module(M: Module | CyclicModule) -> Map:
     """mingens M: a minimal set of generators of a graded submodule (image f), as a matrix."""
+    M = module(M)
     if M.kind != "image":
         return gens_module(M)
     return _mingens(M.matrix)
@@ -115,15 +116,17 @@ def mingens_module(M: Module) -> Map:
 
 @command("trim", dialect="m2")
 @in_quotients
-def trim_module(M: Module) -> Module:
+def trim_module(M: Module | CyclicModule) -> Module:
     """trim M: the module with minimal generators (image) or minimal relations (cokernel)."""
+    M = module(M)
     return Module(M.kind, _mingens(M.matrix))
 
 
-def _presentation(M: Module) -> Map:
+def _presentation(M: Module | CyclicModule) -> Map:
     """A minimal presentation of a graded module: the relations of a cokernel with the
     generators a relation of degree 0 eliminates removed, or the syzygies of an image's minimal
     generators."""
+    M = module(M)
     if M.kind == "image":
         _graded(M.matrix)
         gens = _mingens(M.matrix)
@@ -138,9 +141,10 @@ def _presentation(M: Module) -> Map:
 @command("prune", dialect="m2")
 @command("minimalPresentation", dialect="m2")
 @in_quotients
-def prune(M: Module) -> Any:
+def prune(M: Module | CyclicModule) -> Any:
     """prune M (minimalPresentation M): a graded module as the cokernel of a minimal presentation
     (a free module when there are no relations)."""
+    M = module(M)
     graded_ring(M.ring)
     P = _presentation(M)
     if P.ncols == 0:
@@ -150,8 +154,9 @@ def prune(M: Module) -> Any:
 
 @command("presentation", dialect="m2")
 @in_quotients
-def presentation(M: Module) -> Map:
+def presentation(M: Module | CyclicModule) -> Map:
     """presentation M: the relations of a cokernel; of an image: the syzygies of its minimal generators."""
+    M = module(M)
     return M.matrix if M.kind == "cokernel" else _presentation(M)
 
 
@@ -171,16 +176,18 @@ def _resolve(F: FreeModule, rel: Map, length: int | None = None) -> ChainComplex
 @command("resolution", dialect="m2")
 @command("res", dialect="m2")
 @in_quotients
-def resolution(ctx, M: Ideal | Module | FreeModule) -> ChainComplex:
+def resolution(ctx, M: Ideal | Module | CyclicModule | FreeModule) -> ChainComplex:
     """res I (resolution I): a minimal free resolution of R/I (I homogeneous); res M: of a graded
     module (cokernel, image or free); LengthLimit => n stops after n maps."""
     limit = ctx.m2_options.get("LengthLimit")
     return _resolution(M, None if limit is None else to_int(limit))
 
 
-def _resolution(M: Ideal | Module | FreeModule, limit: int | None) -> ChainComplex:
+def _resolution(M: Ideal | Module | CyclicModule | FreeModule, limit: int | None) -> ChainComplex:
     if isinstance(M, FreeModule):
         return ChainComplex((M,), ())
+    if isinstance(M, CyclicModule):
+        M = module(M)
     if isinstance(M, Ideal):
         F = free_module(graded_ring(M.ring), 1)
         return _resolve(F, from_columns(F, [km.vector([g]) for g in M.gens if not g.is_zero()]), limit)
@@ -211,23 +218,25 @@ def length_complex(C: ChainComplex) -> int:
 
 @command("pdim", dialect="m2")
 @in_quotients
-def pdim(M: Module | Ideal) -> int:
+def pdim(M: Module | CyclicModule | Ideal) -> int:
     """pdim M: the projective dimension of a graded module (of R/I for an ideal I)."""
     return len(_resolution(M, None).maps)
 
 
 @command("numgens", dialect="m2")
 @in_quotients
-def numgens_module(M: Module) -> int:
+def numgens_module(M: Module | CyclicModule) -> int:
     """numgens M: the number of generators of a module."""
+    M = module(M)
     return M.matrix.ncols if M.kind == "image" else M.ambient.rank
 
 
 @command("rank", dialect="m2")
 @in_quotients
-def rank_module(M: Module) -> int:
+def rank_module(M: Module | CyclicModule) -> int:
     """rank M: the rank of a module (over the fraction field: of an image, its matrix's rank; of a
     cokernel, the ambient rank minus it)."""
+    M = module(M)
     r = _rank(M.matrix)
     return r if M.kind == "image" else M.ambient.rank - r
 
@@ -235,3 +244,38 @@ def rank_module(M: Module) -> int:
 def _rank(M: Map) -> int:
     """The rank of a matrix: its columns minus the rank of its kernel, the image of syz M."""
     return M.ncols - _rank(syz(M)) if M.ncols else 0
+
+
+def _relations(M: Module) -> Map:
+    """Relations presenting M (a cokernel's own; an image's syzygies)."""
+    return M.matrix if M.kind == "cokernel" else syz(M.matrix)
+
+
+@command("annihilator", dialect="m2")
+@command("ann", dialect="m2")
+@in_quotients
+def annihilator(M: Module | CyclicModule) -> Ideal:
+    """ann M (annihilator M): the ideal of ring elements r with r M = 0."""
+    M = module(M)
+    graded_ring(M.ring)
+    P = _relations(M)
+    gens = [g for g in km.annihilator(M.ring, P.nrows, columns_of(P)) if not g.is_zero()]
+    return Ideal(M.ring, gens, is_std=not gens)
+
+
+@command("dim", dialect="m2")
+@in_quotients
+def dim_module(M: Module | CyclicModule) -> int:
+    """dim M: the Krull dimension of a module (of R / ann M; -1 for the zero module)."""
+    M = module(M)
+    from .m2 import dim
+    return dim(annihilator(M))
+
+
+@command("codim", dialect="m2")
+@in_quotients
+def codim_module(M: Module | CyclicModule) -> int:
+    """codim M: the codimension of a module's support (the number of variables minus dim M)."""
+    M = module(M)
+    from .m2 import codim
+    return codim(annihilator(M))

@@ -36,3 +36,14 @@ print toString betti res coker matrix {{a, b, c}, {b, c, d}}
 print toString betti res image matrix {{a, b, c}, {b, c, d}}
 print toString betti res(ideal(a, b, c), LengthLimit => 2)
 print toString pdim coker matrix {{a, b, c}, {b, c, d}}
+M = coker matrix {{a, b}, {c, d}};
+print toString codim M
+print toString dim M
+print toString ann M
+print toString ann coker matrix {{a, b, c}, {b, c, d}}
+print toString ann image matrix {{a, b}}
+I = ideal(a^2, b^2);
+print toString trim(S^1/I)
+print toString dim(S^1/I)
+print toString prune(S^1/I)
+print toString betti res(S^1/I)
