@@ -27,10 +27,9 @@ DOC_FUNCTIONS = (
 #: constructs outside mech's scope: reason -> names (identifiers of the code, outside strings and comments)
 OUT_OF_SCOPE = {
     "modules, resolutions, chain complexes": {
-        "res", "resolution", "freeResolution", "chainComplex", "complex", "Ext", "Tor", "Hom", "module",
-        "coker", "cokernel", "prune", "minimalPresentation", "presentation", "betti", "pdim", "subquotient",
+        "freeResolution", "chainComplex", "complex", "Ext", "Tor", "Hom", "module", "subquotient",
         "comodule", "koszul", "homology", "HH", "cohomology", "directSum", "tensor", "Module", "ChainComplex",
-        "isModule", "isFreeModule", "ambient", "cover", "super", "relations", "inducedMap", "annihilator", "ann",
+        "isModule", "isFreeModule", "ambient", "cover", "super", "relations", "inducedMap",
         "pushForward", "modulo", "basis", "hilbertPolynomial", "hilbertSeries", "poincare", "regularity"},
     "sheaves and varieties": {"sheaf", "OO", "Proj", "Spec", "variety", "cotangentSheaf", "tangentSheaf",
                               "CoherentSheaf", "ProjectiveVariety"},

@@ -41,6 +41,7 @@ def gb_matrix(f: Matrix | Module) -> Map:
 
 
 @command("gens", dialect="m2")
+@command("generators", dialect="m2")
 @in_quotients
 def gens_module(f: Matrix | Module) -> Matrix:
     """gens M: the generators of a module (image f: f; cokernel f: the identity); gens of a matrix: itself."""
