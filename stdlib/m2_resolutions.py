@@ -27,8 +27,13 @@ def _graded(M: Map) -> None:
 
 
 def _sorted(cols: list[km.Vector], ring: Any) -> list[km.Vector]:
+    """Columns made monic (lead term in term over position order) and sorted by lead term."""
     key = km.ModuleOrder(ring).key
-    return sorted(cols, key=lambda v: key(max(v, key=key)))
+    out = []
+    for v in cols:
+        c = v[max(v, key=key)]
+        out.append({t: a / c for t, a in v.items()})
+    return sorted(out, key=lambda v: key(max(v, key=key)))
 
 
 @command("gb", dialect="m2")
@@ -280,3 +285,71 @@ def codim_module(M: Module | CyclicModule) -> int:
     M = module(M)
     from .m2 import codim
     return codim(annihilator(M))
+
+
+@command("ambient", dialect="m2")
+@in_quotients
+def ambient(M: Module | CyclicModule | FreeModule) -> FreeModule:
+    """ambient M: the free module of which M is a submodule or a quotient."""
+    return M if isinstance(M, FreeModule) else module(M).ambient
+
+
+@command("super", dialect="m2")
+@in_quotients
+def super_module(M: Module | FreeModule) -> Any:
+    """super M: the module M is a submodule of (the ambient free module of an image)."""
+    if isinstance(M, Module) and M.kind == "cokernel":
+        return M
+    return ambient(M)
+
+
+@command("cover", dialect="m2")
+@in_quotients
+def cover(M: Module | CyclicModule | FreeModule) -> FreeModule:
+    """cover M: the free module mapping onto M's generators."""
+    if isinstance(M, FreeModule):
+        return M
+    M = module(M)
+    return M.ambient if M.kind == "cokernel" else source_of(M.matrix)
+
+
+@command("relations", dialect="m2")
+@in_quotients
+def relations(M: Module | CyclicModule | FreeModule) -> Map:
+    """relations M: the matrix of M's relations (of a cokernel; none: zero columns)."""
+    if not isinstance(M, FreeModule):
+        M = module(M)
+        if M.kind == "cokernel":
+            return M.matrix
+        M = M.ambient
+    return from_columns(M, [])
+
+
+@command("isFreeModule", dialect="m2")
+@in_quotients
+def is_free_module(M: Module | CyclicModule | FreeModule) -> bool:
+    """isFreeModule M: whether M is given as a free module R^n (no generators or relations)."""
+    return isinstance(M, FreeModule)
+
+
+@command("modulo", dialect="m2")
+@in_quotients
+def modulo(f: Matrix, g: Matrix) -> Map:
+    """modulo(f, g): generators of the kernel of the map source f -> target f / image g that f
+    induces (the syzygies of f | g cut to f's columns)."""
+    f, g = as_map(f), as_map(g)
+    graded_ring(f.ring)
+    if f.nrows != g.nrows:
+        raise MechRuntimeError("modulo(f, g): f and g need the same target")
+    src, m = source_of(f), f.ncols
+    cols = km.syzygies(f.ring, f.nrows, columns_of(f) + columns_of(g))
+    cut = [{(e, i): c for (e, i), c in v.items() if i < m} for v in cols]
+    degrees = src.degrees if all(km.is_homogeneous(v, src.degrees) for v in cut) else None
+    return from_columns(src, _sorted(km.minimal_generators(f.ring, m, cut, degrees), f.ring))
+
+
+@command("isHomogeneous", dialect="m2")
+@in_quotients
+def is_homogeneous_module(M: Module | CyclicModule) -> bool:
+    """isHomogeneous M: whether M's generators and relations are homogeneous."""
+    return _homogeneous(module(M).matrix)

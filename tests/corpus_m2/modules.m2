@@ -47,3 +47,15 @@ print toString trim(S^1/I)
 print toString dim(S^1/I)
 print toString prune(S^1/I)
 print toString betti res(S^1/I)
+N = coker matrix {{x, y}, {y, z}};
+print toString ambient N
+print toString relations N
+print toString cover image matrix {{x, y}}
+print toString super image matrix {{x, y}}
+print toString isFreeModule N
+print toString isFreeModule R^2
+print toString isHomogeneous N
+f = matrix {{x, y}};
+print toString (image modulo(f, matrix {{x^2, y^2}}) == image map(source f, , {{x, 0, -y}, {0, y, x}}))
+print toString gens N
+print toString numgens image matrix {{x, y, z}}
