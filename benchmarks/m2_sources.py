@@ -29,7 +29,8 @@ OUT_OF_SCOPE = {
     "modules, resolutions, chain complexes": {
         "freeResolution", "chainComplex", "complex", "Ext", "Tor", "Hom", "module", "subquotient",
         "comodule", "koszul", "homology", "HH", "cohomology", "directSum", "tensor", "Module", "ChainComplex",
-        "isModule", "inducedMap", "pushForward", "basis", "hilbertPolynomial", "hilbertSeries", "poincare", "regularity"},
+        "isModule", "inducedMap", "pushForward", "basis", "hilbertPolynomial", "hilbertSeries", "poincare",
+        "regularity"},
     "sheaves and varieties": {"sheaf", "OO", "Proj", "Spec", "variety", "cotangentSheaf", "tangentSheaf",
                               "CoherentSheaf", "ProjectiveVariety"},
     "non-commutative rings": {"WeylAlgebra", "SkewCommutative", "isSkewCommutative", "AssociativeAlgebras"},
