@@ -11,6 +11,7 @@ of modules) and 2.5 (syzygies by elimination of components); Eisenbud, *Commutat
 """
 from __future__ import annotations
 
+import heapq
 from typing import Any, Callable, Iterable, Optional, Sequence
 
 from .poly import Poly, PolyRing, divides, lcm_exp, sub_exp
@@ -35,14 +36,20 @@ def entries(v: Vector, ring: PolyRing, rank: int) -> list[Poly]:
 
 class ModuleOrder:
     """A term order on R^n: term over position (components ascending), optionally with the
-    components below ``elim`` eliminated (above all others)."""
+    components below ``elim`` eliminated (above all others).  ``key`` grows with the term,
+    ``neg_key`` shrinks (for heaps)."""
 
     def __init__(self, ring: PolyRing, elim: int = 0) -> None:
         okey = ring.order.key
+
+        def nkey(e: Exp) -> tuple:
+            return tuple(-v for v in okey(e))
         if elim:
             self.key: Callable[[Term], tuple] = lambda t: (t[1] < elim, okey(t[0]), t[1])
+            self.neg_key: Callable[[Term], tuple] = lambda t: (t[1] >= elim, nkey(t[0]), -t[1])
         else:
             self.key = lambda t: (okey(t[0]), t[1])
+            self.neg_key = lambda t: (nkey(t[0]), -t[1])
 
 
 def _lead(v: Vector, key: Callable[[Term], tuple]) -> Term:
@@ -64,31 +71,59 @@ def _add_multiple(f: Vector, g: Vector, shift: Exp, c: Any) -> None:
                 f[t] = s
 
 
+def _support(e: Exp) -> int:
+    """The bit mask of the variables of a monomial (a quick test against divisibility)."""
+    m = 0
+    for k, a in enumerate(e):
+        if a:
+            m |= 1 << k
+    return m
+
+
 class ModuleGB:
     """A Gröbner basis of a submodule of R^n, completed as generators are added (:meth:`add`)."""
 
     def __init__(self, ring: PolyRing, rank: int, elim: int = 0) -> None:
-        self.ring, self.rank = ring, rank
-        self.key = ModuleOrder(ring, elim).key
+        self.ring, self.rank, self.elim = ring, rank, elim
+        order = ModuleOrder(ring, elim)
+        self.key, self.neg_key = order.key, order.neg_key
         self.basis: list[Vector] = []
         self.leads: list[Term] = []
+        self._by_comp: dict[int, list[tuple[Exp, int, int]]] = {}  # component -> (lead exp, mask, index)
+        self._treated: set[tuple[int, int]] = set()
+
+    def _set_basis(self, basis: list[Vector], leads: list[Term]) -> None:
+        self.basis, self.leads = basis, leads
+        self._by_comp = {}
+        for k, (e, i) in enumerate(leads):
+            self._by_comp.setdefault(i, []).append((e, _support(e), k))
 
     # ---------------------------------------------------------------- reduction
-    def _divisor(self, t: Term) -> Optional[int]:
+    def _divisor(self, t: Term, skip: int = -1) -> Optional[int]:
         e, i = t
-        for k, (le, li) in enumerate(self.leads):
-            if li == i and divides(le, e):
+        cands = self._by_comp.get(i)
+        if not cands:
+            return None
+        m = _support(e)
+        for le, lm, k in cands:
+            if k != skip and not lm & ~m and all(a <= b for a, b in zip(le, e)):
                 return k
         return None
 
-    def reduce(self, f: Vector, full: bool = True) -> Vector:
-        """The normal form of f (full: every term reduced; otherwise only the lead term)."""
+    def reduce(self, f: Vector, full: bool = True, skip: int = -1) -> Vector:
+        """The normal form of f (full: every term reduced; otherwise only the lead term; ``skip``:
+        a basis element not to use)."""
         f = dict(f)
         out: Vector = {}
-        key = self.key
-        while f:
-            t = max(f, key=key)
-            k = self._divisor(t)
+        nkey = self.neg_key
+        heap = [(nkey(t), t) for t in f]
+        heapq.heapify(heap)
+        while heap:
+            t = heapq.heappop(heap)[1]
+            c = f.get(t)
+            if c is None:
+                continue
+            k = self._divisor(t, skip)
             if k is None:
                 if not full:
                     out.update(f)
@@ -96,31 +131,41 @@ class ModuleGB:
                 out[t] = f.pop(t)
                 continue
             g, lt = self.basis[k], self.leads[k]
-            _add_multiple(f, g, sub_exp(t[0], lt[0]), -f[t] / g[lt])
+            shift, coef = sub_exp(t[0], lt[0]), -c / g[lt]
+            for (e, i), d in g.items():
+                u = (tuple(a + b for a, b in zip(e, shift)), i)
+                s = f.get(u)
+                if s is None:
+                    f[u] = coef * d
+                    heapq.heappush(heap, (nkey(u), u))
+                else:
+                    s = s + coef * d
+                    if s == 0:
+                        del f[u]
+                    else:
+                        f[u] = s
         return out
 
     def contains(self, f: Vector) -> bool:
         return not self.reduce(f, full=False)
 
     # ---------------------------------------------------------------- completion
-    def add(self, gens: Iterable[Vector]) -> None:
+    def add(self, gens: Iterable[Vector], reduced: bool = True) -> None:
         """Add generators and complete the basis (Buchberger's algorithm, pairs by degree of
-        their lcm, the chain criterion of Gebauer and Möller in Buchberger's form)."""
-        pairs: list[tuple[int, int]] = []
+        their lcm, Buchberger's chain criterion); ``reduced``: then interreduce it."""
+        pairs: list[tuple[int, int, int]] = []
+        pending: set[tuple[int, int]] = set()
         for g in gens:
-            self._insert(g, pairs)
+            self._insert(g, pairs, pending)
         while pairs:
-            pairs.sort(key=lambda p: -self._pair_degree(p))
-            i, j = pairs.pop()
-            if self._chain(i, j, pairs):
-                continue
-            self._insert(self._spoly(i, j), pairs)
-        self._interreduce()
+            _, i, j = heapq.heappop(pairs)
+            pending.discard((i, j))
+            if not self._chain(i, j, pending):
+                self._insert(self._spoly(i, j), pairs, pending)
+        if reduced:
+            self._interreduce()
 
-    def _pair_degree(self, p: tuple[int, int]) -> int:
-        return sum(lcm_exp(self.leads[p[0]][0], self.leads[p[1]][0]))
-
-    def _insert(self, g: Vector, pairs: list[tuple[int, int]]) -> None:
+    def _insert(self, g: Vector, pairs: list[tuple[int, int, int]], pending: set[tuple[int, int]]) -> None:
         g = self.reduce(g)
         if not g:
             return
@@ -130,18 +175,20 @@ class ModuleGB:
         n = len(self.basis)
         self.basis.append(g)
         self.leads.append(t)
-        pairs.extend((k, n) for k, (_, li) in enumerate(self.leads[:n]) if li == t[1])
+        for le, _, k in self._by_comp.get(t[1], ()):
+            heapq.heappush(pairs, (sum(lcm_exp(le, t[0])), k, n))
+            pending.add((k, n))
+        self._by_comp.setdefault(t[1], []).append((t[0], _support(t[0]), n))
 
-    def _chain(self, i: int, j: int, pending: list[tuple[int, int]]) -> bool:
+    def _chain(self, i: int, j: int, pending: set[tuple[int, int]]) -> bool:
         """Buchberger's chain criterion: some lead k (same component) divides lcm(lead i, lead j)
         and the pairs (i, k), (j, k) are already treated."""
         L = lcm_exp(self.leads[i][0], self.leads[j][0])
-        comp = self.leads[i][1]
-        pend = set(pending)
-        for k, (le, li) in enumerate(self.leads):
-            if k in (i, j) or li != comp or not divides(le, L):
+        m = _support(L)
+        for le, lm, k in self._by_comp[self.leads[i][1]]:
+            if k in (i, j) or lm & ~m or not divides(le, L):
                 continue
-            if (min(i, k), max(i, k)) not in pend and (min(j, k), max(j, k)) not in pend:
+            if (min(i, k), max(i, k)) not in pending and (min(j, k), max(j, k)) not in pending:
                 return True
         return False
 
@@ -161,15 +208,10 @@ class ModuleGB:
             e, i = self.leads[k]
             if not any(self.leads[m][1] == i and divides(self.leads[m][0], e) for m in keep):
                 keep.append(k)
-        self.basis = [self.basis[k] for k in keep]
-        self.leads = [self.leads[k] for k in keep]
+        self._set_basis([self.basis[k] for k in keep], [self.leads[k] for k in keep])
         for n, g in enumerate(self.basis):
             lt = self.leads[n]
-            others = ModuleGB(self.ring, self.rank)
-            others.key = self.key
-            others.basis = self.basis[:n] + self.basis[n + 1:]
-            others.leads = self.leads[:n] + self.leads[n + 1:]
-            tail = others.reduce({t: c for t, c in g.items() if t != lt})
+            tail = self.reduce({t: c for t, c in g.items() if t != lt}, skip=n)
             tail[lt] = g[lt]
             self.basis[n] = tail
 
@@ -222,7 +264,7 @@ def minimal_generators(ring: PolyRing, rank: int, gens: Sequence[Vector],
         if gb.contains(g):
             continue
         kept.append(g)
-        gb.add([g])
+        gb.add([g], reduced=False)
     return kept
 
 
