@@ -59,3 +59,6 @@ f = matrix {{x, y}};
 print toString (image modulo(f, matrix {{x^2, y^2}}) == image map(source f, , {{x, 0, -y}, {0, y, x}}))
 print toString gens N
 print toString numgens image matrix {{x, y, z}}
+T = QQ[w,x,y,z];
+f = map(T^1, T^3, matrix {{x^2-w*y, x*y-w*z, x*z-y^2}});
+print toString ideal image f
