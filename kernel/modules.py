@@ -36,20 +36,29 @@ def entries(v: Vector, ring: PolyRing, rank: int) -> list[Poly]:
 
 class ModuleOrder:
     """A term order on R^n: term over position (components ascending), optionally with the
-    components below ``elim`` eliminated (above all others).  ``key`` grows with the term,
-    ``neg_key`` shrinks (for heaps)."""
+    components below ``elim`` eliminated (above all others) and, with ``shifts``, terms compared
+    first by their degree plus their component's shift (a degree order whatever the ring's).
+    ``key`` grows with the term, ``neg_key`` shrinks (for heaps)."""
 
-    def __init__(self, ring: PolyRing, elim: int = 0) -> None:
-        okey = ring.order.key
+    def __init__(self, ring: PolyRing, elim: int = 0, shifts: Optional[Sequence[int]] = None) -> None:
+        base = ring.order.key
+        if shifts is not None:
+            sh = tuple(shifts)
 
-        def nkey(e: Exp) -> tuple:
-            return tuple(-v for v in okey(e))
-        if elim:
-            self.key: Callable[[Term], tuple] = lambda t: (t[1] < elim, okey(t[0]), t[1])
-            self.neg_key: Callable[[Term], tuple] = lambda t: (t[1] >= elim, nkey(t[0]), -t[1])
+            def okey(e: Exp, i: int = 0) -> tuple:
+                return (sum(e) + sh[i],) + base(e)
         else:
-            self.key = lambda t: (okey(t[0]), t[1])
-            self.neg_key = lambda t: (nkey(t[0]), -t[1])
+            def okey(e: Exp, i: int = 0) -> tuple:
+                return base(e)
+
+        def nkey(e: Exp, i: int = 0) -> tuple:
+            return tuple(-v for v in okey(e, i))
+        if elim:
+            self.key: Callable[[Term], tuple] = lambda t: (t[1] < elim, okey(*t), t[1])
+            self.neg_key: Callable[[Term], tuple] = lambda t: (t[1] >= elim, nkey(*t), -t[1])
+        else:
+            self.key = lambda t: (okey(*t), t[1])
+            self.neg_key = lambda t: (nkey(*t), -t[1])
 
 
 def _lead(v: Vector, key: Callable[[Term], tuple]) -> Term:
@@ -83,9 +92,15 @@ def _support(e: Exp) -> int:
 class ModuleGB:
     """A Gröbner basis of a submodule of R^n, completed as generators are added (:meth:`add`)."""
 
-    def __init__(self, ring: PolyRing, rank: int, elim: int = 0) -> None:
+    def __init__(self, ring: PolyRing, rank: int, elim: int = 0, shifts: Optional[Sequence[int]] = None,
+                 collect: bool = False) -> None:
         self.ring, self.rank, self.elim = ring, rank, elim
-        order = ModuleOrder(ring, elim)
+        self.collect = collect and elim > 0
+        self.syzygies: list[Vector] = []  # with collect: the reduced vectors with no term below elim
+        self._pairs: list[tuple[int, int, int]] = []  # (degree, i, j), a heap
+        self._pending: set[tuple[int, int]] = set()
+        self.shifts = tuple(shifts) if shifts is not None else (0,) * rank
+        order = ModuleOrder(ring, elim, shifts)
         self.key, self.neg_key = order.key, order.neg_key
         self.basis: list[Vector] = []
         self.leads: list[Term] = []
@@ -150,34 +165,39 @@ class ModuleGB:
         return not self.reduce(f, full=False)
 
     # ---------------------------------------------------------------- completion
-    def add(self, gens: Iterable[Vector], reduced: bool = True) -> None:
+    def add(self, gens: Iterable[Vector], reduced: bool = True, up_to: Optional[int] = None) -> None:
         """Add generators and complete the basis (Buchberger's algorithm, pairs by degree of
-        their lcm, Buchberger's chain criterion); ``reduced``: then interreduce it."""
-        pairs: list[tuple[int, int, int]] = []
-        pending: set[tuple[int, int]] = set()
+        their lcm plus their component's shift, Buchberger's chain criterion); ``up_to``: only the
+        pairs up to that degree (the rest wait for a later call: for homogeneous vectors and
+        shifts, a basis complete up to degree d decides membership in degrees <= d);
+        ``reduced``: then interreduce the basis."""
+        pairs, pending = self._pairs, self._pending
         for g in gens:
-            self._insert(g, pairs, pending)
-        while pairs:
+            self._insert(g)
+        while pairs and (up_to is None or pairs[0][0] <= up_to):
             _, i, j = heapq.heappop(pairs)
             pending.discard((i, j))
             if not self._chain(i, j, pending):
-                self._insert(self._spoly(i, j), pairs, pending)
+                self._insert(self._spoly(i, j))
         if reduced:
             self._interreduce()
 
-    def _insert(self, g: Vector, pairs: list[tuple[int, int, int]], pending: set[tuple[int, int]]) -> None:
+    def _insert(self, g: Vector) -> None:
         g = self.reduce(g)
         if not g:
             return
         t = _lead(g, self.key)
+        if self.collect and t[1] >= self.elim:
+            self.syzygies.append(g)
+            return
         c = g[t]
         g = {k: v / c for k, v in g.items()}
         n = len(self.basis)
         self.basis.append(g)
         self.leads.append(t)
         for le, _, k in self._by_comp.get(t[1], ()):
-            heapq.heappush(pairs, (sum(lcm_exp(le, t[0])), k, n))
-            pending.add((k, n))
+            heapq.heappush(self._pairs, (sum(lcm_exp(le, t[0])) + self.shifts[t[1]], k, n))
+            self._pending.add((k, n))
         self._by_comp.setdefault(t[1], []).append((t[0], _support(t[0]), n))
 
     def _chain(self, i: int, j: int, pending: set[tuple[int, int]]) -> bool:
@@ -201,7 +221,10 @@ class ModuleGB:
         return f
 
     def _interreduce(self) -> None:
-        """Keep a minimal basis (no lead divides another's) with reduced tails."""
+        """Keep a minimal basis (no lead divides another's) with reduced tails (a complete basis:
+        no pair waits)."""
+        if self._pairs:
+            raise ValueError("interreducing a basis with pairs left")
         order = sorted(range(len(self.basis)), key=lambda k: self.key(self.leads[k]))
         keep: list[int] = []
         for k in order:
@@ -225,22 +248,27 @@ def groebner_basis(ring: PolyRing, rank: int, gens: Sequence[Vector]) -> list[Ve
 
 
 def vector_degree(v: Vector, degrees: Sequence[int]) -> Optional[int]:
-    """The degree of a homogeneous vector (its lead term's total degree plus its component's
-    degree; None for 0)."""
+    """The degree of a vector: the largest of its terms' degrees plus their components' degrees
+    (the degree of a homogeneous vector; None for 0)."""
     if not v:
         return None
-    e, i = next(iter(v))
-    return sum(e) + degrees[i]
+    return max(sum(e) + degrees[i] for e, i in v)
 
 
-def syzygies(ring: PolyRing, rank: int, gens: Sequence[Vector]) -> list[Vector]:
-    """Generators of the syzygies of gens (vectors of R^len(gens)): the Gröbner basis of
-    ``gens[j] + e_(rank+j)`` eliminating the first ``rank`` components, the elements in the
-    others (Greuel–Pfister, Lemma 2.5.3)."""
+def syzygies(ring: PolyRing, rank: int, gens: Sequence[Vector],
+             degrees: Optional[Sequence[int]] = None) -> list[Vector]:
+    """Generators of the syzygies of gens (vectors of R^len(gens)): Buchberger's algorithm on
+    ``gens[j] + e_(rank+j)`` with the first ``rank`` components eliminated, the S-polynomials
+    and generators whose first part reduces to 0 giving syzygies (they generate them: Schreyer's
+    theorem, Eisenbud 15.10; Greuel–Pfister 2.5).  The terms are compared by degree first,
+    e_(rank+j) of the degree of gens[j] (with ``degrees``, the components' degrees; else 0):
+    homogeneous gens make homogeneous vectors, treated degree by degree."""
     k = len(gens)
-    gb = ModuleGB(ring, rank + k, elim=rank)
-    gb.add([{**g, **{(ring_zero_exp(ring), rank + j): ring.field.one}} for j, g in enumerate(gens)])
-    return [{(e, i - rank): c for (e, i), c in g.items()} for g in gb.basis if all(i >= rank for _, i in g)]
+    degrees = list(degrees) if degrees is not None else [0] * rank
+    shifts = degrees + [vector_degree(g, degrees) or 0 for g in gens]
+    gb = ModuleGB(ring, rank + k, elim=rank, shifts=shifts, collect=True)
+    gb.add([{**g, **{(ring_zero_exp(ring), rank + j): ring.field.one}} for j, g in enumerate(gens)], reduced=False)
+    return [{(e, i - rank): c for (e, i), c in g.items()} for g in gb.syzygies]
 
 
 def ring_zero_exp(ring: PolyRing) -> Exp:
@@ -258,13 +286,15 @@ def minimal_generators(ring: PolyRing, rank: int, gens: Sequence[Vector],
         lead = key(max(g, key=key))
         return (vector_degree(g, degrees), lead) if degrees is not None else (lead,)
 
-    gb = ModuleGB(ring, rank)
+    gb = ModuleGB(ring, rank, shifts=degrees)
     kept: list[Vector] = []
     for g in sorted((g for g in gens if g), key=rank_of):
+        d = vector_degree(g, degrees) if degrees is not None else None
+        gb.add([], reduced=False, up_to=d)  # complete up to g's degree
         if gb.contains(g):
             continue
         kept.append(g)
-        gb.add([g], reduced=False)
+        gb.add([g], reduced=False, up_to=d)
     return kept
 
 
@@ -284,7 +314,7 @@ def resolution(ring: PolyRing, rank: int, gens: Sequence[Vector], degrees: Seque
     while cols and len(maps) < limit:
         sdeg = [vector_degree(c, tdeg) for c in cols]
         maps.append((cols, sdeg))
-        cols = minimal_generators(ring, len(cols), syzygies(ring, len(tdeg), cols), sdeg)
+        cols = minimal_generators(ring, len(cols), syzygies(ring, len(tdeg), cols, tdeg), sdeg)
         tdeg = sdeg
     return maps
 

@@ -89,3 +89,14 @@ def test_unit_relations_drop_generators() -> None:
     R, (x, y, z) = _setup()
     cols, degrees = K.drop_unit_relations(R, _cols([[R.one(), x], [R.zero(), y]]), [0, 0])
     assert degrees == [0] and [K.entries(c, R, 1) for c in cols] == [[y]]
+
+
+def test_eagon_northcott_resolution_of_maximal_minors() -> None:
+    # the 2x2 minors of a generic 2x4 matrix: Betti numbers 1, 6 (degree 2), 8 (3), 3 (4), as
+    # the Eagon-Northcott complex has them (Macaulay2 1.21: the same betti res)
+    S = ring([f"v{i}" for i in range(8)], [Block("dp", 8)])
+    v = S.gens()
+    top, bottom = v[:4], v[4:]
+    minors = [top[i] * bottom[j] - top[j] * bottom[i] for i in range(4) for j in range(i + 1, 4)]
+    maps = K.resolution(S, 1, [K.vector([g]) for g in minors], [0])
+    assert [sorted(d) for _, d in maps] == [[2] * 6, [3] * 8, [4] * 3]
