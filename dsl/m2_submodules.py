@@ -27,6 +27,8 @@ def graded_ring(ring: Any) -> M2Ring:
         raise MechRuntimeError("modules need a polynomial ring made by Macaulay2's QQ[...] or ZZ/p[...]")
     if owner.quotient is not None or owner.info.get("local") is not None or owner.coeffs.characteristic is None:
         raise MechRuntimeError("modules over quotient rings, local rings and ZZ are not supported by mech")
+    if not owner.poly.order.is_global:
+        raise MechRuntimeError("modules over rings with a local order (Global => false) are not supported by mech")
     if isinstance(owner.base, M2Ring) or any(v != (1,) for v in degree_vectors(owner)):
         raise MechRuntimeError("modules over towers or rings with Degrees => {...} are not supported by mech")
     return owner

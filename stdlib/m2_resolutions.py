@@ -66,9 +66,8 @@ def syz(f: Matrix) -> Map:
     M = as_map(f)
     graded_ring(M.ring)
     src = source_of(M)
-    cols = km.syzygies(M.ring, M.nrows, columns_of(M))
-    if _homogeneous(M):
-        cols = km.minimal_generators(M.ring, src.rank, cols, src.degrees)
+    cols = km.syzygies(M.ring, M.nrows, columns_of(M), target_of(M).degrees)
+    cols = km.minimal_generators(M.ring, src.rank, cols, src.degrees if _homogeneous(M) else None)
     return from_columns(src, _sorted(cols, M.ring))
 
 
