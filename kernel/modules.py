@@ -213,7 +213,7 @@ class ModuleGB:
         return False
 
     def _spoly(self, i: int, j: int) -> Vector:
-        (ei, c), (ej, _) = self.leads[i], self.leads[j]
+        (ei, _), (ej, _) = self.leads[i], self.leads[j]
         L = lcm_exp(ei, ej)
         f: Vector = {}
         _add_multiple(f, self.basis[i], sub_exp(L, ei), self.ring.field.one)
