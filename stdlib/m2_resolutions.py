@@ -27,13 +27,21 @@ def _graded(M: Map) -> None:
 
 
 def _sorted(cols: list[km.Vector], ring: Any) -> list[km.Vector]:
-    """Columns made monic (lead term in term over position order) and sorted by lead term."""
-    key = km.ModuleOrder(ring).key
+    """Syzygies as Macaulay2's ``syz`` lists them: each with its position-over-term lead term
+    (the largest monomial in the last nonzero component) of coefficient 1, sorted by it, from the
+    first component and the smallest monomial up."""
+    okey = ring.order.key
+
+    def lead(v: km.Vector) -> tuple:
+        comp = max(i for _, i in v)
+        return comp, max((e for e, i in v if i == comp), key=okey)
+
     out = []
     for v in cols:
-        c = v[max(v, key=key)]
+        comp, e = lead(v)
+        c = v[(e, comp)]
         out.append({t: a / c for t, a in v.items()})
-    return sorted(out, key=lambda v: key(max(v, key=key)))
+    return sorted(out, key=lambda v: (lead(v)[0], okey(lead(v)[1])))
 
 
 @command("gb", dialect="m2")

@@ -62,3 +62,8 @@ print toString numgens image matrix {{x, y, z}}
 T = QQ[w,x,y,z];
 f = map(T^1, T^3, matrix {{x^2-w*y, x*y-w*z, x*z-y^2}});
 print toString ideal image f
+U = QQ[a..d];
+print toString syz matrix {{a, b, c, d}}
+print toString syz matrix {{a, b}, {c, d}}
+print toString syz matrix {{a, b, c}, {b, c, d}}
+print toString modulo(matrix {{a, b}}, matrix {{a^2, b^2}})
