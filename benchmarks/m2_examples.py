@@ -13,10 +13,12 @@ documentation runs them) or a TEST block, in the files the packages PrimaryDecom
 MinimalPrimes, Saturation, Elimination and LocalRings load and in Macaulay2Doc's pages on ideals,
 Gröbner bases, monomial orders, rings, ring maps, matrices and lists and its pages of the functions
 on them.  A case is excluded, with its reason, when its code names a construct outside mech's scope
-(``OUT_OF_SCOPE``: modules, resolutions, sheaves, non-commutative rings, real and complex numbers,
-random values, hash tables, other packages, system and help functions...), a package internal (a name of the package's private dictionary), when one of its
-top-level values is of a class of ``OUT_CLASSES`` (modules...), when Macaulay2 1.21 itself fails or
-times out on it, or when it is a MinimalPrimes ``BENCHMARK`` test.
+(``OUT_OF_SCOPE``: module constructions beyond images, kernels and cokernels of matrices, chain
+complexes beyond free resolutions, sheaves, non-commutative rings, real and complex numbers,
+random values, hash tables, other packages, system and help functions...), a package internal
+(a name of the package's private dictionary), when one of its top-level values is of a class of
+``OUT_CLASSES`` (chain complexes, whose ``toString`` shows nothing to compare...), when Macaulay2
+1.21 itself fails or times out on it, or when it is a MinimalPrimes ``BENCHMARK`` test.
 
 Running.  Both systems get the same code.  mech reads it from standard input (``mech --dialect m2 -``,
 as ``M2 < file``), printing ``oN = value`` (Macaulay2's ``toString``) for the N-th statement not
@@ -25,9 +27,10 @@ runs it in its read-eval-print loop (standard input; it numbers statements as me
 output mode (``M2_MODE``) printing ``toString`` of the same statements, and judges mech's text:
 when it differs from its own, Macaulay2 reads mech's text back in the value's ring and compares the
 values: ideals as ideals, lists of ideals as sets (or as primary decompositions: as many primary
-ideals with the same radicals and intersection), other lists entry by entry, other values with
-``==``.  ``print`` prints ``toString`` in both.  A case *agrees* when every value and printed line
-agrees and mech runs to the end without error (in a TEST: every ``assert`` holds).  Otherwise it
+ideals with the same radicals and intersection), modules as subquotients of R^n (the degrees
+``toString`` does not show forgotten), other lists entry by entry, other values with ``==``.
+``print`` prints ``toString`` in both.  A case *agrees* when every value and printed line agrees
+and mech runs to the end without error (in a TEST: every ``assert`` holds).  Otherwise it
 *differs* (a value Macaulay2 judges different, a value printed by one system only, a failed
 assertion), is *unsupported* (mech's error names a function, symbol, option, operator or syntax it
 lacks: which, ranked in the report), an *error* (another mech error), a *crash* (an internal error
@@ -56,7 +59,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 REPORT = HERE / "M2_EXAMPLES.md"
 #: classes of values that put a case out of scope (Macaulay2 reports the class of every top-level value)
-OUT_CLASSES = {"Module", "ChainComplex", "ChainComplexMap", "GradedModule", "GradedModuleMap", "CoherentSheaf",
+OUT_CLASSES = {"ChainComplex", "ChainComplexMap", "GradedModule", "GradedModuleMap", "CoherentSheaf",
                "ProjectiveVariety", "AffineVariety", "RealField", "ComplexField", "RR", "CC", "MutableHashTable",
                "HashTable", "CacheTable", "MutableMatrix", "GaloisField", "Time"}
 STATUSES = ("agree", "differ", "unsupported", "error", "crash", "timeout")
@@ -87,7 +90,7 @@ M2_MODE = r"""
 mechEmit = L -> (<< "\035" << demark("\037", L) << "\035" << endl;);
 mechRing = x -> (
     if instance(x, Ideal) or instance(x, MonomialIdeal) or instance(x, RingElement) or instance(x, Matrix)
-    then ring x
+       or instance(x, Module) then ring x
     else if instance(x, VisibleList) then (for y in x do (r := mechRing y; if r =!= null then return r); null)
     else null);
 mechRead = (x, t) -> (
@@ -100,11 +103,19 @@ mechRead = (x, t) -> (
     scan(syms, old, (s, v) -> s <- v);
     y);
 mechIdeal = z -> if instance(z, MonomialIdeal) then ideal z else z;
+mechFlat = M -> (
+    R := ring M; F := R^(rank ambient M);
+    g := if M.?generators then map(F,, matrix entries M.generators);
+    r := if M.?relations then map(F,, matrix entries M.relations);
+    if g === null and r === null then F else if r === null then image g
+    else if g === null then coker r else subquotient(g, r));
 mechSame = (x, y) -> (
     x = mechIdeal x; y = mechIdeal y;
     if instance(x, Ideal) and instance(y, Ideal) then (
         if ring y =!= ring x then y = try sub(y, ring x) else return false;
         x == y)
+    else if instance(x, Module) and instance(y, Module) then (
+        ring x === ring y and rank ambient x == rank ambient y and mechFlat x == mechFlat y)
     else if instance(x, VisibleList) and instance(y, VisibleList) then (
         class x === class y and #x == #y and (
             if #x > 0 and all(x, i -> instance(mechIdeal i, Ideal)) then (

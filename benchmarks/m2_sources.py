@@ -27,11 +27,10 @@ DOC_FUNCTIONS = (
 #: constructs outside mech's scope: reason -> names (identifiers of the code, outside strings and comments)
 OUT_OF_SCOPE = {
     "modules, resolutions, chain complexes": {
-        "res", "resolution", "freeResolution", "chainComplex", "complex", "Ext", "Tor", "Hom", "module",
-        "coker", "cokernel", "prune", "minimalPresentation", "presentation", "betti", "pdim", "subquotient",
+        "freeResolution", "chainComplex", "complex", "Ext", "Tor", "Hom", "module", "subquotient",
         "comodule", "koszul", "homology", "HH", "cohomology", "directSum", "tensor", "Module", "ChainComplex",
-        "isModule", "isFreeModule", "ambient", "cover", "super", "relations", "inducedMap", "annihilator", "ann",
-        "pushForward", "modulo", "basis", "hilbertPolynomial", "hilbertSeries", "poincare", "regularity"},
+        "isModule", "inducedMap", "pushForward", "basis", "hilbertPolynomial", "hilbertSeries", "poincare",
+        "regularity"},
     "sheaves and varieties": {"sheaf", "OO", "Proj", "Spec", "variety", "cotangentSheaf", "tangentSheaf",
                               "CoherentSheaf", "ProjectiveVariety"},
     "non-commutative rings": {"WeylAlgebra", "SkewCommutative", "isSkewCommutative", "AssociativeAlgebras"},

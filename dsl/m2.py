@@ -197,6 +197,8 @@ class M2Interpreter(M2Control, Interpreter):
             return base
         if isinstance(base, FUNCTIONS):
             return Partial(base, k)
+        if hasattr(base, "m2_entry"):  # C_i, C.dd_i of a resolution
+            return base.m2_entry(to_int(k))
         if isinstance(k, List) and isinstance(base, Matrix):  # M_{j, ...}: columns
             return columns(base, [to_int(j) for j in k.items])
         if isinstance(k, (List, Array)) and not isinstance(base, Matrix):
@@ -239,6 +241,9 @@ class M2Interpreter(M2Control, Interpreter):
         raise MechTypeError(f"I_* takes an ideal, not a {typeof(v)}")
 
     def _eval_dot(self, node: Dot) -> Any:
+        fields = getattr(self.eval(node.base), "m2_fields", None)  # C.dd of a resolution
+        if fields is not None and node.field in fields:
+            return fields[node.field]
         raise MechRuntimeError(f"the operator . (fields such as .{node.field}) is not supported")
 
     def _eval_length(self, node: Length) -> int:

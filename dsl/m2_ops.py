@@ -12,6 +12,7 @@ from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, Map, quotient_module, rows, scaled
+from .m2_submodules import Module
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -119,6 +120,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return quotient_module(a, b)
     if op in ("==", "!=") and isinstance(a, FreeModule) and isinstance(b, FreeModule):
         return (a == b) == (op == "==")
+    if op in ("==", "!=") and isinstance(a, Module) and isinstance(b, Module):
+        return a.same(b) == (op == "==")
     if op == "**" and isinstance(b, M2Ring) and isinstance(a, (Poly, Ideal, Matrix)):
         return _base_change(a, b)
     if op in ("//", "%") and any(is_integral(getattr(v, "ring", None)) for v in (a, b)):

@@ -15,6 +15,7 @@ from typing import Any
 from ..kernel import Poly
 from .m2_local import LocalFraction
 from .m2_modules import CyclicModule, FreeModule
+from .m2_submodules import BettiTally, ChainComplex, Module, betti_to_string
 from .m2_rings import TEXT, tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, M2Function, M2Set,
                         MonomialIdeal, Opt, Partial, RingMap, Symbol, Tally)
@@ -116,6 +117,12 @@ def to_string(v: Any) -> str:
         return (f"({num})" if len(v.num.terms) > 1 else num) + "/" + (f"({den})" if len(v.den.terms) > 1 else den)
     if isinstance(v, FreeModule):
         return f"{to_string(v.ring)}^{v.rank}"
+    if isinstance(v, Module):
+        return f"{v.kind} {to_string(v.matrix)}"
+    if isinstance(v, BettiTally):
+        return betti_to_string(v)
+    if isinstance(v, ChainComplex):  # Macaulay2's net, on one line
+        return "  <--  ".join(to_string(F) for F in v.modules)
     if isinstance(v, CyclicModule):
         gens = ", ".join(poly_str(g) for g in v.ideal.gens)
         return f"cokernel matrix {{{{{gens}}}}}"

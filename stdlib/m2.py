@@ -19,6 +19,7 @@ from ..dsl.m2_local import LocalFraction, local_ideal_is_unit, local_ideals_equa
 from ..dsl.m2_modules import with_default_degrees
 from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, is_integral, multidegree, normal, owner, promote, promotes
+from ..dsl.m2_submodules import Module
 from ..dsl.registry import command, operator
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
 from ..kernel import Poly
@@ -97,6 +98,10 @@ def ideal(ctx, *args: Any) -> Ideal:
             rels = list(owner.relations) + rels
             owner = owner.parent
         return Ideal(owner.poly, [Poly(owner.poly, dict(g.terms)) for g in rels])
+    if len(args) == 1 and isinstance(args[0], Module):  # ideal image f: f's entries (f with one row)
+        if args[0].kind != "image" or args[0].matrix.nrows != 1:
+            raise MechRuntimeError("ideal M takes a submodule of R^1 (image f of a one-row matrix f)")
+        args = (args[0].matrix,)
     if len(args) == 1 and isinstance(args[0], str):  # ideal "x2,y": Macaulay's classic notation
         args = tuple(ctx.eval_text(_classic(part)) for part in args[0].split(","))
     ring = _first_ring(args) or ctx.basering().poly

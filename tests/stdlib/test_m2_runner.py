@@ -141,8 +141,9 @@ def test_loaded_files(tmp_path: Path) -> None:
     ("R = QQ[x]; I = ideal x; minimalPrimes I", ""),
     ('needsPackage "LocalRings"; R = QQ[x]', ""),
     ("x_0..x_3", ""),
-    ("-- res I in a comment\n\"coker in a string\"", ""),
-    ("C = res I", "modules, resolutions, chain complexes: res"),
+    ("-- Ext in a comment\n\"Hom in a string\"", ""),
+    ("C = res I; betti C; prune coker f", ""),
+    ("E = Ext^1(M, N)", "modules, resolutions, chain complexes: Ext"),
     ("R = ZZ[x]", ""),
     ("f = 1.5*x", "real and complex numbers: 1.5"),
     ("random(2, R)", "random values: random"),
@@ -233,7 +234,7 @@ CASE = S.Case("f:1", "Pkg", "example", "node", "code")
     (_mech({}, rc=1, err="f:1:5: error: unknown identifier 'ZZ' (no ring is active)\n"), _m2({}),
      "unsupported", "ZZ as a value"),
     (_mech({}), _m2({}, rc=1, error="stdio:1:1:(3): error: no method"), "excluded", "Macaulay2 1.21 fails on it"),
-    (_mech({}), _m2({}, classes=("Module", "Ideal")), "excluded", "values outside mech's scope: Module"),
+    (_mech({}), _m2({}, classes=("ChainComplex", "Ideal")), "excluded", "values outside mech's scope: ChainComplex"),
 ])
 def test_classify(mech: dict, m2: dict, status: str, reason: str) -> None:
     r = R.classify(CASE, mech, m2, INFO)
