@@ -8,9 +8,12 @@ The strategies (their proofs are in the kernel modules named):
 * ``slice`` (radical complete intersections): a zero-dimensional slice of ``V(J)`` whose
   ``deg V`` points are one Galois orbit proves ``J`` prime (``mech.kernel.slices``); several
   orbits bound the number of modes.
-* ``minimal primes``: ``minAssGTZ`` (``mech.kernel.primdec``), first with a short budget.
+* ``minimal primes``: ``minAssGTZ`` (``mech.kernel.primdec``), first with a short budget (it
+  finishes at once on small mechanisms).
 * ``interpolated projection`` (radical complete intersections of dimension 1): the eliminant of
-  a projection to the plane interpolated from slices, its factors certify the primes.
+  a projection to the plane interpolated from slices, its factors certify the primes.  It runs
+  before a longer ``minAssGTZ`` try, which it makes unnecessary once it has proved the number of
+  modes and their degrees.
 * ``sparse projection`` (radical complete intersections): the eliminant of a projection by
   sparse forms ``c_j + s_j`` (``mech.kernel.projection``).
 * ``minimal primes`` again with a long budget, unless the interpolated projection has proved
@@ -78,7 +81,7 @@ def _by_curve(a: Any) -> Optional[Found]:
 
 
 #: CPU seconds for the ideals of the modes once a projection has proved their number.
-SPLIT_BUDGET = 15.0
+SPLIT_BUDGET = 5.0
 
 
 def _by_projection(a: Any) -> Optional[Found]:
@@ -90,7 +93,7 @@ def _by_projection(a: Any) -> Optional[Found]:
 #: also stops at the statement's time limit (mech --timeout), with a partial report.
 STRATEGIES: list[Strategy] = [
     Strategy("slice", 10, _radical_ci, _by_slice, "J is prime, certified by a linear slice"),
-    Strategy("minimal primes", 10, lambda a: True, _by_min_ass, "minimal primes of J"),
+    Strategy("minimal primes", 2, lambda a: True, _by_min_ass, "minimal primes of J"),
     Strategy("interpolated projection", 60, lambda a: _radical_ci(a) and a.dim == 1, _by_curve,
              "minimal primes of J, certified by a projection interpolated from slices"),
     Strategy("sparse projection", 30, lambda a: _radical_ci(a) and a.dim > 1, _by_projection,
