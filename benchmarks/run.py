@@ -310,6 +310,8 @@ def main() -> None:
     ap.add_argument("--sympy-timeout", type=float, default=60)
     ap.add_argument("--no-sympy", action="store_true")
     ap.add_argument("--write", action="store_true", help="write benchmarks/RESULTS.md")
+    ap.add_argument("--skip", type=int, default=0, help="skip the first N selected cases (resume a stopped run)")
+    ap.add_argument("--exclude", nargs="*", default=[], help="case names not to run")
     ap.add_argument("--char", type=int)
     ap.add_argument("--ordering")
     ap.add_argument("--child-mech")
@@ -323,7 +325,7 @@ def main() -> None:
         print(json.dumps(out))
         return
 
-    cases = [c for c in CASES if not args.only or c.name in args.only]
+    cases = [c for c in CASES if (not args.only or c.name in args.only) and c.name not in args.exclude][args.skip:]
     head = ("| system | field | ordering | basis | mech | Singular | mech / Singular | Macaulay2 | mech / M2 "
             "| SymPy | SymPy / mech | msolve | mech / msolve | mech peak RSS |")
     rows = [head, "|" + "---|" * 14]
