@@ -11,6 +11,7 @@ from .dsl.errors import MechError, MechNameError, MechSyntaxError, MechTypeError
 from .dsl.interpreter import Interpreter, QuitSignal
 from .dsl.parser import parse
 from .dsl.values import NONE, ExprList, IntVec, Ring
+from .kernel import offload
 from .kernel.engines import check_engine
 from .kernel.errors import EngineError
 from .kernel.progress import Event, listening
@@ -47,6 +48,7 @@ class Session:
                  progress: Callable[[Event], None] | None = None) -> None:
         self._out = io.StringIO()
         self.progress = progress
+        offload.INTERRUPTIBLE = True  # long python-flint calls in a child: Ctrl-C stops them
         if dialect not in ("singular", "m2"):
             raise ValueError(f"unknown dialect '{dialect}' (known: singular, m2)")
         self.dialect = dialect
