@@ -222,7 +222,10 @@ def _send(fd: int, value: Any, error: bool = False) -> None:
 
 
 def _die_with_parent() -> None:
-    """Ask Linux to kill this child when its parent dies (a killed kernel leaves no computation behind)."""
+    """Ask Linux to kill this child when its parent dies (a killed kernel leaves no computation
+    behind); no Python traceback when GMP aborts it."""
+    import faulthandler
+    faulthandler.disable()
     parent = os.getppid()
     try:
         import ctypes
