@@ -73,7 +73,7 @@ def power(field: Field, nvars: int, a: Terms, k: int) -> Terms | None:
 # per term of the result and word of its coefficients): only to tell calls of milliseconds from
 # calls of minutes.
 _PER_PAIR = 2e-9
-_PER_TERM = 1e-7
+_PER_TERM = 3e-8
 
 
 def bits(field: Field, terms: Terms) -> int:

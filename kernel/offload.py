@@ -5,7 +5,7 @@ returns: neither Ctrl-C nor the limits' watchdog (``mech.dsl.limits``) acts insi
 interactive front ends (the shell, the Jupyter kernel, ``mech.Session``) set :data:`INTERRUPTIBLE`;
 then :func:`call` runs a call whose estimated time reaches :data:`THRESHOLD` seconds in a child
 process made by ``os.fork`` (it shares the parent's memory as it was, so the arguments cost nothing
-to send) and waits for its result, pickled back through a pipe in pieces.  Waiting is Python code:
+to send) and waits for its result, pickled in pieces into a file in memory.  Waiting is Python code:
 Ctrl-C and the statement's time limit reach it at once, the child's memory is checked against the
 statement's memory limit, and the child is killed (``SIGKILL``) before the exception goes on.  A
 child that dies (GMP aborts when an allocation fails under the address-space cap) is reported as
@@ -32,7 +32,7 @@ INTERRUPTIBLE = False
 watches: Callable[[], tuple[bool, Optional[int], list]] = lambda: (False, None, [])
 
 POLL = 0.05          # seconds between the parent's checks while it waits
-CHUNK = 1 << 16      # items of a dict or list pickled per piece
+CHUNK = 1 << 16      # items of a dict or list pickled per piece (Ctrl-C is checked between them)
 
 
 class ChildError(RuntimeError):
@@ -67,24 +67,28 @@ class _Child:
 
     def result(self) -> Any:
         import signal
-        read, write = os.pipe()
+        done, alive = os.pipe()  # the child holds ``alive`` open: its end wakes the parent at once
+        data = _scratch()        # the result, written by the child in pieces (no pipe ping-pong)
         try:
             if threading.current_thread() is threading.main_thread():
                 # Ctrl-C only noted while forking and waiting: raised by _check, where the child is known
-                self.previous = signal.signal(signal.SIGINT, lambda signum, frame: self.sigint.append(signum))
-            self._fork(write)
-            os.close(write)
-            write = -1
-            return self._wait(read)
+                self.previous = signal.getsignal(signal.SIGINT)
+                if self.previous is not None:
+                    signal.signal(signal.SIGINT, lambda signum, frame: self.sigint.append(signum))
+            self._fork(data)
+            os.close(alive)
+            alive = -1
+            self._wait(done)
+            return self._read(data)
         finally:
             self._kill()
-            for fd in (read, write):
+            for fd in (done, alive, data):
                 if fd >= 0:
                     os.close(fd)
             if self.previous is not None:
                 signal.signal(signal.SIGINT, self.previous)
 
-    def _fork(self, write: int) -> None:
+    def _fork(self, data: int) -> None:
         """Fork while the limits' watchdog cannot raise into this thread (it only raises holding
         the statement's lock), so the child's pid is never lost to an exception."""
         locks = watches()[2]
@@ -96,54 +100,37 @@ class _Child:
             _pending()  # an exception raised just before a lock was taken arrives here, before the fork
             pid = os.fork()
             if pid == 0:
-                _run_child(self.fn, self.args, write)
+                _run_child(self.fn, self.args, data)
             self.pid = pid
         finally:
             for lock in taken:
                 lock.release()
 
-    def _wait(self, read: int) -> Any:
-        import pickle
+    def _wait(self, done: int) -> None:
+        """Until the child has ended (checking for Ctrl-C and the memory limit meanwhile)."""
         import select
         poller = select.poll()
-        poller.register(read, select.POLLIN | select.POLLHUP)
-        buffer = bytearray()
-        pieces: list[Any] = []
+        poller.register(done, select.POLLIN | select.POLLHUP)
         while True:
             self._check()
-            if not poller.poll(POLL * 1000):
-                continue
-            data = os.read(read, 1 << 20)
-            if not data:
-                break
-            buffer += data
-            while len(buffer) >= 8:  # whole pieces: 8 bytes of length, then the pickle
-                size = int.from_bytes(buffer[:8], "little")
-                if len(buffer) < 8 + size:
-                    break
-                pieces.append(pickle.loads(buffer[8:8 + size]))
-                del buffer[:8 + size]
-                self._check()
-        return self._assemble(pieces)
+            if poller.poll(POLL * 1000) and not os.read(done, 1):
+                return
 
-    def _check(self) -> None:
-        """Ctrl-C noted, or the child above the statement's memory limit: raise (the caller kills it)."""
-        if self.sigint:
-            self.sigint.clear()
-            _deliver(self.previous)
-        max_rss = watches()[1]
-        if max_rss is not None:
-            rss = _rss(self.pid)
-            if rss is not None and rss > max_rss:
-                raise MemoryError("the computation exceeded the memory limit")
-
-    def _assemble(self, pieces: list[Any]) -> Any:
+    def _read(self, data: int) -> Any:
+        """The child's result (or exception) from its pieces, checking for Ctrl-C between them."""
+        import pickle
+        import signal
         status = self._reap()
-        if not pieces:
-            import signal
+        if os.WIFSIGNALED(status) or os.waitstatus_to_exitcode(status) != 0:
             if os.WIFSIGNALED(status) and os.WTERMSIG(status) in (signal.SIGABRT, signal.SIGKILL, signal.SIGSEGV):
                 raise MemoryError("the computation ran out of memory")
             raise ChildError(f"the computation ended without a result (status {status})")
+        pieces: list[Any] = []
+        with os.fdopen(data, "rb", closefd=False) as fh:
+            fh.seek(0)
+            while head := fh.read(8):
+                pieces.append(pickle.loads(fh.read(int.from_bytes(head, "little"))))
+                self._check()
         kind, value = pieces[0]
         if kind == "error":
             raise value
@@ -151,6 +138,17 @@ class _Child:
             return value
         items = [item for piece in pieces[1:] for item in piece]
         return dict(items) if kind == "dict" else items
+
+    def _check(self) -> None:
+        """Ctrl-C noted, or the child above the statement's memory limit: raise (the caller kills it)."""
+        if self.sigint:
+            self.sigint.clear()
+            _deliver(self.previous)
+        max_rss = watches()[1]
+        if max_rss is not None and self.pid:
+            rss = _rss(self.pid)
+            if rss is not None and rss > max_rss:
+                raise MemoryError("the computation exceeded the memory limit")
 
     def _reap(self) -> int:
         pid, self.pid = self.pid, 0
@@ -179,6 +177,20 @@ def _deliver(previous: Any) -> None:
         raise KeyboardInterrupt
 
 
+def _scratch() -> int:
+    """A file descriptor for the child's result: in memory (Linux's ``memfd``) or a temporary file."""
+    if hasattr(os, "memfd_create"):
+        try:
+            return os.memfd_create("mech-offload")
+        except OSError:
+            pass
+    import tempfile
+    fh = tempfile.TemporaryFile()
+    fd = os.dup(fh.fileno())
+    fh.close()
+    return fd
+
+
 def _run_child(fn: Callable[..., Any], args: tuple, write: int) -> None:
     """The child: compute, send the result (or the exception) in pieces, leave without the
     parent's clean-up.  Nested ``finally`` blocks make sure it never returns into the parent's code."""
@@ -202,9 +214,10 @@ def _send(fd: int, value: Any, error: bool = False) -> None:
 
     def piece(obj: Any) -> None:
         data = pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL)
-        view = memoryview(len(data).to_bytes(8, "little") + data)
-        while view:
-            view = view[os.write(fd, view):]
+        for part in (len(data).to_bytes(8, "little"), data):
+            view = memoryview(part)
+            while view:
+                view = view[os.write(fd, view):]
 
     if error:
         try:
@@ -215,7 +228,7 @@ def _send(fd: int, value: Any, error: bool = False) -> None:
     if isinstance(value, (dict, list)) and len(value) > CHUNK:
         items = list(value.items()) if isinstance(value, dict) else value
         piece(("dict" if isinstance(value, dict) else "list", None))
-        for k in range(0, len(items), CHUNK):  # pieces: the parent checks for interrupts between them
+        for k in range(0, len(items), CHUNK):
             piece(items[k:k + CHUNK])
     else:
         piece(("value", value))

@@ -27,7 +27,9 @@ class Session:
     into sympy objects.  Errors raise :class:`MechError` subclasses carrying ``line`` and
     ``column`` (``err.output`` holds what was printed before the error).  ``timeout`` (seconds)
     and ``max_memory`` (MB it may add to the process) limit each statement (``mech.dsl.limits``):
-    exceeding one raises ``MechLimitError`` and leaves the session usable.  ``engine`` names the
+    exceeding one raises ``MechLimitError`` and leaves the session usable; ``KeyboardInterrupt`` (Ctrl-C)
+    stops a statement and leaves it usable too.  Both act inside long python-flint calls, which run
+    in a child process (``mech.kernel.offload``).  ``engine`` names the
     Gröbner engine of every standard basis (``mech.kernel.engines``; default ``"auto"``; the
     language's ``engine("NAME")`` changes it).  ``report_format``
     is analyze's default (``mech --format``); ``display``, a callable taking MIME bundles

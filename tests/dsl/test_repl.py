@@ -7,6 +7,7 @@ import os
 import re
 import select
 import shutil
+import signal
 import subprocess
 import sys
 import threading
@@ -288,9 +289,16 @@ class Terminal:
             self.until(b"never shown", timeout=30)
             return self.proc.wait(timeout=30)
         finally:
-            if self.proc.poll() is None:
-                self.proc.kill()
+            self.kill()
+
+    def kill(self):
+        """End the command and whatever it started (its own process group), if still running."""
+        if self.proc.poll() is None:
+            os.killpg(self.proc.pid, signal.SIGKILL)
+            self.proc.wait(timeout=30)
+        if self.master >= 0:
             os.close(self.master)
+            self.master = -1
 
 
 posix_only = pytest.mark.skipif(os.name != "posix", reason="pseudo-terminals are POSIX")
@@ -316,18 +324,21 @@ def test_ctrl_c_and_the_time_limit_stop_one_long_flint_call_on_a_terminal(histor
     for argv, stop, shown in ((["-q"], b"\x03", b"interrupted (rings and variables are kept)"),
                               (["-q", "--timeout", "2"], b"", b"error: time limit of 2 s exceeded")):
         term = Terminal([sys.executable, "-m", "mech", *argv], env)
-        assert term.until(b"mech>"), term.seen[-500:]
-        term.type(b"ring r = 0,(x,y,z),dp; int k = 7;\r")
-        assert term.until(b"r>")
-        term.type(b"poly f = (x+y+z+1)^1500;\r")
-        time.sleep(2)
-        started = time.monotonic()
-        term.type(stop)
-        assert term.until(shown, timeout=60), term.seen[-500:]
-        assert time.monotonic() - started < 30
-        term.type(b"k; defined(f);\r")
-        assert term.until(b"7") and term.until(b"0") and term.until(b"r>")
-        assert term.close() == 0
+        try:
+            assert term.until(b"mech>"), term.seen[-500:]
+            term.type(b"ring r = 0,(x,y,z),dp; int k = 7;\r")
+            assert term.until(b"r>")
+            term.type(b"poly f = (x+y+z+1)^1500;\r")
+            time.sleep(2)
+            started = time.monotonic()
+            term.type(stop)
+            assert term.until(shown, timeout=60), term.seen[-500:]
+            assert time.monotonic() - started < 30
+            term.type(b"k; defined(f);\r")
+            assert term.until(b"7") and term.until(b"0") and term.until(b"r>")
+            assert term.close() == 0
+        finally:
+            term.kill()   # also the computation, should the test fail
 
 
 def test_mech_reads_a_script_when_stdin_is_not_a_terminal():
