@@ -67,6 +67,10 @@ class _Child:
 
     def result(self) -> Any:
         import signal
+        # what the child imports, imported here: another thread may hold a module's import lock at the fork
+        import ctypes  # noqa: F401
+        import faulthandler  # noqa: F401
+        import pickle  # noqa: F401
         done, alive = os.pipe()  # the child holds ``alive`` open: its end wakes the parent at once
         data = _scratch()        # the result, written by the child in pieces (no pipe ping-pong)
         try:
