@@ -91,6 +91,9 @@ class _Child:
                     os.close(fd)
             if self.previous is not None:
                 signal.signal(signal.SIGINT, self.previous)
+                if self.sigint:  # a Ctrl-C after the last check is not lost
+                    self.sigint.clear()
+                    _deliver(self.previous)
 
     def _fork(self, data: int) -> None:
         """Fork while the limits' watchdog cannot raise into this thread (it only raises holding

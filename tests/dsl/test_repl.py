@@ -334,8 +334,9 @@ def test_ctrl_c_and_the_time_limit_stop_one_long_flint_call_on_a_terminal(histor
             term.type(stop)
             assert term.until(shown, timeout=60), term.seen[-500:]
             assert time.monotonic() - started < 30
+            assert term.until(b"r>")      # typed only at the prompt (a Ctrl-D typed ahead would be lost)
             term.type(b"k; defined(f);\r")
-            assert term.until(b"7") and term.until(b"0") and term.until(b"r>")
+            assert term.until(b"7\r\n0\r\n") and term.until(b"r>"), term.seen[-500:]
             assert term.close() == 0
         finally:
             term.kill()   # also the computation, should the test fail
