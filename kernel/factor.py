@@ -42,7 +42,7 @@ _PER_TERM = 1e-5  # rough seconds per term and ten degrees of flint's gcd and fa
 def _seconds(*fs: Poly) -> float:
     """A rough estimate of flint's time for a gcd, division or factorization of ``fs``."""
     terms = sum(len(f.terms) for f in fs)
-    degree = max(max(map(sum, f.terms)) for f in fs if f.terms) if terms else 0
+    degree = int(max(max(map(sum, f.terms)) for f in fs if f.terms)) if terms else 0  # exponents may be fmpz
     size = max(flint_bridge.bits(f.ring.field, f.terms) for f in fs) / 64
     return _PER_TERM * terms * max(1.0, degree / 10) * max(1.0, size)
 

@@ -78,14 +78,14 @@ _PER_TERM = 3e-8
 
 def bits(field: Field, terms: Terms) -> int:
     """The bits of the largest coefficient of ``terms`` (numerator and denominator; 64 over Z/p)."""
-    if not isinstance(field, RationalField) or not terms:
+    if not isinstance(field, RationalField) or not terms or not isinstance(next(iter(terms.values())), flint.fmpq):
         return 64
     return max(int(c.p).bit_length() + int(c.q).bit_length() for c in terms.values())
 
 
 def _shape(terms: Terms) -> tuple[list[int], int]:
     """The largest exponent of each variable and the total degree of ``terms``."""
-    return [max(col) for col in zip(*terms)], max(map(sum, terms))
+    return [int(max(col)) for col in zip(*terms)], int(max(map(sum, terms)))  # exponents may be fmpz
 
 
 def _result_terms(degrees: list[int], total: int, pairs: int) -> int:
