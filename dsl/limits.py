@@ -22,6 +22,7 @@ import threading
 import time
 from typing import Any, Callable, Iterator, Optional
 
+from ..kernel import offload
 from .errors import MechRuntimeError
 from .registry import command
 
@@ -346,6 +347,18 @@ def _vsz() -> Optional[int]:
 
 
 _WATCHDOG = _Watchdog()
+
+
+def _offload_state() -> tuple[bool, Optional[int], list]:
+    """For :mod:`mech.kernel.offload`: whether a statement under limits runs in this thread, the
+    resident memory it may reach, and the locks of the watches on this thread (limits and budgets)."""
+    watch = getattr(_current, "watch", None)
+    me = threading.get_ident()
+    locks = [w.lock for w in list(_WATCHDOG._watches) if w.thread == me and not w.done]
+    return watch is not None, watch.max_rss if watch is not None else None, locks
+
+
+offload.watches = _offload_state
 
 
 # ---------------------------------------------------------------- the language's command

@@ -6,7 +6,8 @@ it.  Enter runs the input once its last statement is complete (the closing ``;``
 balance), otherwise it starts a continuation line.  The prompt names the basering.
 
 Commands run in the main thread, so Ctrl-C raises KeyboardInterrupt inside the pure-Python kernel
-loops at once; the interpreter's ``finally`` blocks restore its scopes and basering, values are
+loops at once, and long python-flint calls run in a child process that it kills
+(:mod:`mech.kernel.offload`); the interpreter's ``finally`` blocks restore its scopes and basering, values are
 immutable, and :meth:`Interpreter.unwind` drops whatever an interrupted cleanup left: the session,
 its rings and variables survive.  (Python cannot stop a worker thread: every kernel loop would have
 to poll a cancellation flag.)  After a second a status line on stderr shows the elapsed time; it is
@@ -24,6 +25,7 @@ import time
 from pathlib import Path
 from typing import Any, Callable, Optional, TextIO
 
+from ..kernel import offload
 from .errors import MechError
 from .boundary import convert_exception
 from .interpreter import Interpreter
@@ -147,6 +149,7 @@ class Shell:
         self.out = out if out is not None else sys.stdout
         self.err = err if err is not None else sys.stderr
         self.warnings = warnings
+        offload.INTERRUPTIBLE = True  # long python-flint calls run in a child that Ctrl-C stops
         self.settings = settings  # the interpreter's, also after :reset
         self.status = status if status is not None else StatusLine(self.err if _isatty(self.err) else None)
         self._output = _Output(self.out, self.status)

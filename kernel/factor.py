@@ -7,7 +7,8 @@ variables keep their positions; flint's own term order does not matter) and come
 Normalization (the convention of :func:`normalize`, used for every factor returned here):
 over QQ a polynomial is scaled to an integer primitive one whose leading coefficient in the
 ring's ordering is positive; over Z/p it is made monic.  ``factorize`` returns the unit
-separately, so ``f == unit * prod(g**m)``.
+separately, so ``f == unit * prod(g**m)``.  A long flint call (by a rough estimate) runs in a
+child process that an interrupt or a limit can stop (:mod:`.offload`).
 """
 from __future__ import annotations
 
@@ -16,7 +17,7 @@ from typing import Any
 
 import flint
 
-from . import algext_factor, flint_bridge
+from . import algext_factor, flint_bridge, offload
 from .algext import AlgebraicField
 from .errors import DivisionError
 from .poly import Poly, PolyRing
@@ -33,6 +34,32 @@ def to_flint(f: Poly) -> Any:
 def from_flint(g: Any, ring: PolyRing) -> Poly:
     """The flint polynomial ``g`` (made by :func:`to_flint` for ``ring``) as a :class:`Poly`."""
     return Poly(ring, flint_bridge.from_flint(g, ring.field, ring.nvars))
+
+
+_PER_TERM = 1e-5  # rough seconds per term and ten degrees of flint's gcd and factorization
+
+
+def _seconds(*fs: Poly) -> float:
+    """A rough estimate of flint's time for a gcd, division or factorization of ``fs``."""
+    terms = sum(len(f.terms) for f in fs)
+    degree = int(max(max(map(sum, f.terms)) for f in fs if f.terms)) if terms else 0  # exponents may be fmpz
+    size = max(flint_bridge.bits(f.ring.field, f.terms) for f in fs) / 64
+    return _PER_TERM * terms * max(1.0, degree / 10) * max(1.0, size)
+
+
+def _flint(f: Poly, op: Any, *others: Poly) -> Any:
+    """``op(flint f, flint others...)`` with flint's polynomials turned back into terms (lists and
+    tuples of them too) — in a child process when it may be long."""
+    ring = f.ring
+
+    def back(v: Any) -> Any:
+        if isinstance(v, (list, tuple)):
+            return type(v)(back(x) for x in v)
+        if isinstance(v, (flint.fmpq_mpoly, flint.nmod_mpoly)):
+            return flint_bridge.from_flint(v, ring.field, ring.nvars)
+        return int(v) if isinstance(v, flint.fmpz) else v
+
+    return offload.call(lambda: _seconds(f, *others), lambda: back(op(to_flint(f), *map(to_flint, others))))
 
 
 def normalize(f: Poly) -> Poly:
@@ -69,12 +96,10 @@ def factorize(f: Poly) -> tuple[Any, list[tuple[Poly, int]]]:
         return (f.lc() if not f.is_zero() else ring.field.zero), []
     if isinstance(ring.field, AlgebraicField):
         return algext_factor.factorize(f)
-    unit, facs = to_flint(f).factor()
+    _, facs = _flint(f, lambda g: g.factor())
     out = []
-    for g, m in facs:
-        p = from_flint(g, ring)
-        q = normalize(p)
-        out.append((q, int(m)))
+    for t, m in facs:
+        out.append((normalize(Poly(ring, t)), int(m)))
     prod = ring.one()
     for q, m in out:
         prod = prod * q ** m
@@ -91,10 +116,10 @@ def squarefree_part(f: Poly) -> Poly:
         return f
     if f.is_constant():
         return f.ring.one()
-    _, facs = to_flint(f).factor_squarefree()
+    _, facs = _flint(f, lambda g: g.factor_squarefree())
     result = f.ring.one()
-    for g, _m in facs:
-        result = result * from_flint(g, f.ring)
+    for t, _m in facs:
+        result = result * Poly(f.ring, t)
     return normalize(result)
 
 
@@ -108,7 +133,7 @@ def gcd(f: Poly, g: Poly) -> Poly:
         return normalize(g)
     if g.is_zero():
         return normalize(f)
-    return normalize(from_flint(to_flint(f).gcd(to_flint(g)), f.ring))
+    return normalize(Poly(f.ring, _flint(f, lambda a, b: a.gcd(b), g)))
 
 
 def divide_exact(f: Poly, g: Poly) -> Poly:
@@ -120,7 +145,7 @@ def divide_exact(f: Poly, g: Poly) -> Poly:
             return algext_factor.divide_exact(f, g)
         except ValueError:
             raise DivisionError("the division is not exact") from None
-    q, r = divmod(to_flint(f), to_flint(g))
-    if not r.is_zero():
+    q, r = _flint(f, divmod, g)
+    if r:
         raise DivisionError("the division is not exact")
-    return from_flint(q, f.ring)
+    return Poly(f.ring, q)

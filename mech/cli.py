@@ -210,6 +210,8 @@ def _main(args: argparse.Namespace) -> int:
             sys.stderr.write(f"mech: error: {args.file} is not a UTF-8 text file\n")
             return 2
         return run_script(text, args.file)
+    from .kernel import offload
+    offload.INTERRUPTIBLE = True  # the shells: long python-flint calls in a child, so Ctrl-C stops them
     if dialect == "m2":
         from .dsl.m2 import run_m2_repl
         return run_m2_repl(warnings=warnings)

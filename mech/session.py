@@ -11,6 +11,7 @@ from .dsl.errors import MechError, MechNameError, MechSyntaxError, MechTypeError
 from .dsl.interpreter import Interpreter, QuitSignal
 from .dsl.parser import parse
 from .dsl.values import NONE, ExprList, IntVec, Ring
+from .kernel import offload
 from .kernel.engines import check_engine
 from .kernel.errors import EngineError
 from .kernel.progress import Event, listening
@@ -26,7 +27,9 @@ class Session:
     into sympy objects.  Errors raise :class:`MechError` subclasses carrying ``line`` and
     ``column`` (``err.output`` holds what was printed before the error).  ``timeout`` (seconds)
     and ``max_memory`` (MB it may add to the process) limit each statement (``mech.dsl.limits``):
-    exceeding one raises ``MechLimitError`` and leaves the session usable.  ``engine`` names the
+    exceeding one raises ``MechLimitError`` and leaves the session usable; ``KeyboardInterrupt`` (Ctrl-C)
+    stops a statement and leaves it usable too.  Both act inside long python-flint calls, which run
+    in a child process (``mech.kernel.offload``).  ``engine`` names the
     Gröbner engine of every standard basis (``mech.kernel.engines``; default ``"auto"``; the
     language's ``engine("NAME")`` changes it).  ``report_format``
     is analyze's default (``mech --format``); ``display``, a callable taking MIME bundles
@@ -47,6 +50,7 @@ class Session:
                  progress: Callable[[Event], None] | None = None) -> None:
         self._out = io.StringIO()
         self.progress = progress
+        offload.INTERRUPTIBLE = True  # long python-flint calls in a child: Ctrl-C stops them
         if dialect not in ("singular", "m2"):
             raise ValueError(f"unknown dialect '{dialect}' (known: singular, m2)")
         self.dialect = dialect

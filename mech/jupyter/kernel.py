@@ -22,6 +22,7 @@ from .. import __version__
 from ..dsl.errors import MechError
 from ..dsl.interpreter import Interpreter, QuitSignal
 from ..dsl.limits import Limits
+from ..kernel import offload
 
 DIALECTS = ("singular", "m2")
 _WORD = re.compile(r"[A-Za-z_@][A-Za-z0-9_@]*")
@@ -65,6 +66,7 @@ class MechKernel(Kernel):
         self.timeout: Optional[float] = None
         self.max_memory: Optional[float] = None
         self._interps: dict[str, Interpreter] = {}
+        offload.INTERRUPTIBLE = True  # long python-flint calls in a child that an interrupt or a limit stops
 
     # ------------------------------------------------------------ sessions
     def interpreter(self, dialect: Optional[str] = None) -> Interpreter:

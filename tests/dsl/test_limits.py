@@ -157,18 +157,42 @@ def test_cli_max_memory():
 
 
 def test_cli_timeout_inside_one_flint_call_ends_the_script():
-    """One python-flint call holds the interpreter: the watcher process (mech/watcher.py) ends
-    the script a grace after the limit, with the limit error at the statement."""
+    """A long python-flint call under a limit runs in a child process (mech/kernel/offload.py):
+    the limit stops it in time, with the limit error at the statement."""
     t = time.monotonic()
     r = mech("--timeout", "2", "-c", "ring r = 0,(x,y,z),dp; int k = 1; k; poly f = (x+y+z+1)^1500; k;")
-    assert time.monotonic() - t < 20  # 2 s + the grace (3 s) + start-up on a busy machine
+    assert time.monotonic() - t < 20  # 2 s + start-up on a busy machine (the call alone: minutes)
+    assert r.returncode == 1 and r.stdout == "1\n"
+    assert r.stderr == ("<string>:1:38: error: time limit of 2 s exceeded\n"
+                        "ring r = 0,(x,y,z),dp; int k = 1; k; poly f = (x+y+z+1)^1500; k;\n" + " " * 37 + "^\n")
+
+
+def test_cli_memory_limit_inside_one_flint_call_ends_the_script():
+    r = mech("--max-memory", "200", "-c", "ring r = 0,(x,y,z),dp; 7; poly f = (x+y+z+1)^1500;")
+    assert r.returncode == 1 and r.stdout == "7\n"
+    assert r.stderr.startswith("<string>:1:36: error: memory limit of 200 MB exceeded\n")
+
+
+def unoffloaded(*args):
+    """``mech ARGS`` with every python-flint call kept in the process: the watcher's case."""
+    code = ("import sys; from mech.kernel import offload; offload.THRESHOLD = float('inf'); "
+            "from mech.cli import main; sys.exit(main(sys.argv[1:]))")
+    return subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True, timeout=120)
+
+
+def test_watcher_ends_a_script_inside_one_flint_call():
+    """One python-flint call in the process holds the interpreter: the watcher process
+    (mech/watcher.py) ends the script a grace after the limit, with the limit error at the statement."""
+    t = time.monotonic()
+    r = unoffloaded("--timeout", "2", "-c", "ring r = 0,(x,y,z),dp; int k = 1; k; poly f = (x+y+z+1)^1500; k;")
+    assert time.monotonic() - t < 30  # 2 s + the grace (3 s) + start-up on a busy machine
     assert r.returncode == 1 and r.stdout == "1\n"
     assert r.stderr.startswith("<string>:1:38: error: time limit of 2 s exceeded (stopped from outside")
     assert r.stderr.endswith("\n" + " " * 37 + "^" + "~" * 22 + "\n")
 
 
-def test_cli_memory_limit_inside_one_flint_call_ends_the_script():
-    r = mech("--max-memory", "200", "-c", "ring r = 0,(x,y,z),dp; 7; poly f = (x+y+z+1)^1500;")
+def test_watcher_reports_the_memory_limit_inside_one_flint_call():
+    r = unoffloaded("--max-memory", "200", "-c", "ring r = 0,(x,y,z),dp; 7; poly f = (x+y+z+1)^1500;")
     assert r.returncode == 1 and r.stdout == "7\n"
     # GMP may print its own "Cannot reallocate memory" line first (the child's stderr)
     assert "\n<string>:1:27: error: memory limit of 200 MB exceeded" in "\n" + r.stderr

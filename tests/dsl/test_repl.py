@@ -7,6 +7,7 @@ import os
 import re
 import select
 import shutil
+import signal
 import subprocess
 import sys
 import threading
@@ -249,12 +250,17 @@ def test_highlight_lexer():
 
 
 class Terminal:
-    """A command on a pseudo-terminal: ``type`` keys, ``until`` it shows a text, ``close`` for the exit status."""
+    """A command on a pseudo-terminal, its controlling terminal (Ctrl-C sends SIGINT): ``type`` keys,
+    ``until`` it shows a text, ``close`` for the exit status."""
 
     def __init__(self, argv, env):
+        import fcntl
         import pty
+        import termios
         self.master, slave = pty.openpty()
-        self.proc = subprocess.Popen(argv, stdin=slave, stdout=slave, stderr=slave, env=dict(env, TERM="xterm"))
+        self.proc = subprocess.Popen(argv, stdin=slave, stdout=slave, stderr=slave, env=dict(env, TERM="xterm"),
+                                     start_new_session=True,
+                                     preexec_fn=lambda: fcntl.ioctl(0, termios.TIOCSCTTY, 0))
         os.close(slave)
         self.seen = b""
 
@@ -283,9 +289,16 @@ class Terminal:
             self.until(b"never shown", timeout=30)
             return self.proc.wait(timeout=30)
         finally:
-            if self.proc.poll() is None:
-                self.proc.kill()
+            self.kill()
+
+    def kill(self):
+        """End the command and whatever it started (its own process group), if still running."""
+        if self.proc.poll() is None:
+            os.killpg(self.proc.pid, signal.SIGKILL)
+            self.proc.wait(timeout=30)
+        if self.master >= 0:
             os.close(self.master)
+            self.master = -1
 
 
 posix_only = pytest.mark.skipif(os.name != "posix", reason="pseudo-terminals are POSIX")
@@ -301,6 +314,32 @@ def test_mech_opens_the_repl_on_a_terminal(history):
     assert term.until(b"x2+2xy+y2") and term.until(b"r>")
     assert term.close() == 0
     assert history.read_text().count("\n+") == 2
+
+
+@posix_only
+def test_ctrl_c_and_the_time_limit_stop_one_long_flint_call_on_a_terminal(history):
+    """(x+y+z+1)^1500 is one python-flint call of minutes: it runs in a child that Ctrl-C (the
+    terminal's SIGINT) and --timeout kill; the session goes on."""
+    env = dict(os.environ, MECH_HISTORY=str(history))
+    for argv, stop, shown in ((["-q"], b"\x03", b"interrupted (rings and variables are kept)"),
+                              (["-q", "--timeout", "2"], b"", b"error: time limit of 2 s exceeded")):
+        term = Terminal([sys.executable, "-m", "mech", *argv], env)
+        try:
+            assert term.until(b"mech>"), term.seen[-500:]
+            term.type(b"ring r = 0,(x,y,z),dp; int k = 7;\r")
+            assert term.until(b"r>")
+            term.type(b"poly f = (x+y+z+1)^1500;\r")
+            time.sleep(2)
+            started = time.monotonic()
+            term.type(stop)
+            assert term.until(shown, timeout=60), term.seen[-500:]
+            assert time.monotonic() - started < 30
+            assert term.until(b"r>")      # typed only at the prompt (a Ctrl-D typed ahead would be lost)
+            term.type(b"k; defined(f);\r")
+            assert term.until(b"7\r\n0\r\n") and term.until(b"r>"), term.seen[-500:]
+            assert term.close() == 0
+        finally:
+            term.kill()   # also the computation, should the test fail
 
 
 def test_mech_reads_a_script_when_stdin_is_not_a_terminal():

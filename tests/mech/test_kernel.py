@@ -119,6 +119,28 @@ def test_interrupt_keeps_the_session(kernel):
     assert kernel.text("j; i > 0;") == "7\n1\n"
 
 
+def test_interrupt_and_limits_stop_one_long_flint_call(kernel):
+    """(x+y+z+1)^1500 is one python-flint call of minutes: it runs in a child the kernel kills."""
+    kernel.text("ring r = 0,(x,y,z),dp; int j = 7;")
+    long = "poly f = (x+y+z+1)^1500;"
+    msg_id = kernel.client.execute(long, stop_on_error=False)
+    time.sleep(2)
+    started = time.monotonic()
+    kernel.manager.interrupt_kernel()
+    reply = kernel.reply(msg_id, timeout=60)
+    assert time.monotonic() - started < 30           # at once; a few seconds on a busy machine
+    assert reply["status"] == "error" and reply["ename"] == "KeyboardInterrupt"
+    assert kernel.text("j; defined(f);") == "7\n0\n"
+    started = time.monotonic()
+    reply, outputs = kernel.run("%timeout 2\n" + long)
+    assert time.monotonic() - started < 30
+    assert reply["status"] == "error" and reply["evalue"] == "time limit of 2 s exceeded"
+    assert outputs[1][1]["traceback"][0] == f"cell[{reply['execution_count']}]:2:1: error: time limit of 2 s exceeded"
+    reply, outputs = kernel.run("%timeout 0\n%max-memory 200\n" + long)
+    assert reply["status"] == "error" and reply["evalue"] == "memory limit of 200 MB exceeded"
+    assert kernel.text("%max-memory 0\nj; defined(f);") == "// max-memory 0 per cell (none)\n7\n0\n"
+
+
 def test_reset_gives_a_fresh_session(kernel):
     kernel.text("int kept = 1;")
     assert kernel.text("%reset") == "// a fresh session: no rings, no variables, no libraries\n"

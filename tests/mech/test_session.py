@@ -1,8 +1,14 @@
 """The Python API: Session.execute / eval / item access, values to and from sympy, errors."""
+import os
+import signal
+import threading
+import time
+
 import pytest
 import sympy
 
 from mech import MechError, MechNameError, MechSyntaxError, Session
+from mech.dsl.limits import MechLimitError
 from mech.dsl.values import Ideal, IntVec, List
 
 
@@ -101,3 +107,54 @@ def test_sympy_both_ways_with_parameters_matrices_and_numbers():
     assert to_sympy(s["f"]) == 3 - 16001*x          # Z/p: Singular's symmetric representatives
     with pytest.raises(MechError, match="not a variable"):
         s["e"] = a * x                              # no parameter a in this ring
+
+
+# ---------------------------------------------------------------- one long python-flint call
+LONG = "poly f = (x+y+z+1)^1500;"   # one call into python-flint of several minutes and gigabytes
+
+
+def started(**limits):
+    s = Session(**limits)
+    s.execute("ring r = 0,(x,y,z),dp; int k = 7;")
+    return s, time.monotonic()
+
+
+def still_usable(s):
+    assert s.execute("k; defined(f); (x+y)^2;") == "7\n0\nx2+2xy+y2\n"
+
+
+def test_a_time_limit_stops_one_long_flint_call():
+    s, t = started(timeout=2)
+    with pytest.raises(MechLimitError) as info:
+        s.execute(LONG)
+    assert time.monotonic() - t < 30            # 2 s, a few on a busy machine
+    assert info.value.format().startswith("<string>:1:1: error: time limit of 2 s exceeded\n")
+    still_usable(s)
+
+
+def test_a_memory_limit_stops_one_long_flint_call():
+    s, t = started(max_memory=200)
+    with pytest.raises(MechLimitError) as info:
+        s.execute(LONG)
+    assert info.value.format().startswith("<string>:1:10: error: memory limit of 200 MB exceeded\n")
+    still_usable(s)
+
+
+def test_ctrl_c_stops_one_long_flint_call():
+    s, t = started()
+    threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT)).start()
+    with pytest.raises(KeyboardInterrupt):
+        s.execute(LONG)
+    assert time.monotonic() - t < 30
+    still_usable(s)
+
+
+def test_a_time_limit_stops_a_long_factorization():
+    s, _ = started()
+    s.execute("poly g = (x+y+z+1)^30*(x-2y+3z+5)^30+1;")   # 39711 terms; flint factors it in minutes
+    t = time.monotonic()
+    with pytest.raises(MechLimitError) as info:
+        s.execute('limits("timeout", 2); list L = factorize(g);')
+    assert time.monotonic() - t < 30
+    assert info.value.message == "time limit of 2 s exceeded in factorize"
+    assert s.execute("k; defined(L);") == "7\n0\n"
