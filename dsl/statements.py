@@ -6,6 +6,7 @@ from __future__ import annotations
 from . import ast as A
 from . import ops
 from .boundary import convert_exception
+from .compiled import stmt_fn
 from .errors import MechError, MechNameError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .printing import join_outputs, render
@@ -23,7 +24,13 @@ class Statements:
     def exec_stmt(self, stmt: A.Stmt) -> None:
         self.stmt = stmt
         try:
-            self._exec[type(stmt)](stmt)
+            if self.compiled:
+                fn = getattr(stmt, "_fn", None)
+                if fn is None:
+                    fn = stmt_fn(stmt)
+                fn(self)
+            else:
+                self._exec[type(stmt)](stmt)
         except SIGNALS:
             raise
         except MechError as e:
@@ -40,7 +47,10 @@ class Statements:
         saved, self.line_shift = self.line_shift, s.dline
         inner = self.stmt = s.stmt
         try:
-            self._exec[type(inner)](inner)
+            if self.compiled:
+                stmt_fn(inner)(self)
+            else:
+                self._exec[type(inner)](inner)
         except MechError as e:
             _move_error(e, inner.pos.line, s.dline, self.source)
             raise

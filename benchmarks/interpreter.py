@@ -1,0 +1,198 @@
+"""The interpreter's speed: statements per second of mech and Singular on the same scripts, in one run.
+
+    python benchmarks/interpreter.py                       # print the table
+    python benchmarks/interpreter.py --write               # also rewrite benchmarks/INTERPRETER.md
+    python benchmarks/interpreter.py --baseline PYTHONPATH # add a column: an older mech (a package tree
+                                                           # at PYTHONPATH, e.g. an unpacked commit)
+
+Each case is a script in Singular's language, run by both systems as a file (``mech FILE``,
+``Singular -q FILE``) with output to /dev/null.  Its time is the process's CPU time with ``N``
+repetitions minus that with none (start-up, ring and procedure declarations cancel out), the best
+of ``--repeat`` runs; statements/s = statements run / that time.  Statements run are counted as
+written: each executed statement (the loop's step ``i++`` included, the statements of called
+procedures included; loop conditions not counted).  The flat scripts are long files of
+statements, one after another (parsing included).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import random
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+SINGULAR = shutil.which("Singular")
+PYTHON = sys.executable
+
+#: (name, setup, loop body (or flat script line generator), statements per repetition, mech's N, Singular's N)
+LOOP_CASES = [
+    ("`for` loop of int arithmetic in a proc",
+     "proc f(int n) {{ int k, j; int i; for (i = 1; i <= n; i++) {{ k = k + i; j = k - 2*i; }} return(k); }}\n"
+     "int r = f({n});\n", 3),
+    ("`while` loop of int arithmetic",
+     "int i, s; while (i < {n}) {{ s = s + i*i mod 7; i = i + 1; }}\n", 2),
+    ("poly arithmetic in a loop (`q = p*x + 1` ...)",
+     "ring r = 0, (x,y), dp; poly p = x+y; poly q; int i;\n"
+     "for (i = 1; i <= {n}; i++) {{ q = p*x + 1; q = q*y - x; p = q - p*x*y + 2; }}\n", 4),
+    ("ideal and list entries (`I[2] = I[1]*I[3]`, `L[2] = L[1] + i`)",
+     "ring r = 0, (x,y), dp; ideal I = x, y, x+y; list L = 1, 2, 3; int i, k;\n"
+     "for (i = 1; i <= {n}; i++) {{ I[2] = I[1]*I[3]; L[2] = L[1] + i; k = L[2] - L[3]; }}\n", 4),
+    ("proc calls with arguments and a return value",
+     "proc add(int a, int b) {{ return(a + b); }}\n"
+     "int i, k, j; for (i = 1; i <= {n}; i++) {{ k = add(k, i); j = add(j, 1); }}\n", 5),
+    ("string concatenation",
+     "string s, t, u; int i;\n"
+     "for (i = 1; i <= {n}; i++) {{ s = \"a\" + string(i); t = s + \",\"; u = t + s; }}\n", 4),
+]
+
+#: flat scripts: a head, then lines drawn at random from these templates
+PLAIN_LINES = ["k = k + {a};", "j = k * {b} - {a};", "m = j - k + {a};", "k = m mod 1000 + {b};", "b = k < j;"]
+MIXED_LINES = ["k = k + {a};", "j = k * {b} - {a};", "f = {a}x2y-{b}/{c}z+y^{d};", "g = f*x + {a};",
+               "f = f - g*{b};", "I = f, x*y-z, {a};", "M[1,2] = f*x;", "n = n*{b}/{c};", "s = string(f);",
+               "s = string(k, \",\", n);", "if (k > {a}) {{ j = {b}; }} else {{ j = j + 1; }}",
+               "for (i = 1; i <= 2; i++) {{ j = j + i; }}", "f;", "k;"]
+MIXED_COUNTS = {"if": 2, "for": 7}  # statements a line runs: if + one branch; for: init, 2 x (body + step)
+FLAT_HEAD = ("int k, i, j, m, b; string s; ring r = 0,(x,y,z),dp; poly f, g; ideal I; matrix M[2][2]; "
+             "number n = 1;\n")
+FLAT_CASES = [("long flat script of plain int statements", PLAIN_LINES),
+              ("long flat script of mixed statements", MIXED_LINES)]
+
+#: repetitions per case: mech's and Singular's (each run about a second on an idle machine)
+SIZES = {"mech": 20000, "base": 4000, "Singular": 1000000}
+FLAT_SIZES = {"mech": 20000, "base": 5000, "Singular": 200000}
+
+
+def loop_script(setup: str, n: int) -> str:
+    return setup.format(n=n)
+
+
+def flat_script(lines: list[str], n: int) -> tuple[str, int]:
+    """A flat script of ``n`` lines (fixed random choice); the text and its statement count."""
+    rng = random.Random(n)
+    out, count = [FLAT_HEAD], 0
+    for _ in range(n):
+        line = rng.choice(lines)
+        out.append(line.format(a=rng.randint(1, 99), b=rng.randint(1, 9), c=rng.randint(2, 9),
+                               d=rng.randint(1, 5)) + "\n")
+        count += MIXED_COUNTS.get(line.split(" ")[0], 1)
+    return "".join(out), count
+
+
+def cpu(cmd: list[str], path: Path, env: dict) -> float:
+    """CPU seconds (user + system) of running ``cmd`` on the script ``path``."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    proc = subprocess.run(cmd + [str(path)], stdin=subprocess.DEVNULL, capture_output=True, env=env, text=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if proc.returncode or proc.stderr or "   ? " in proc.stdout:  # Singular reports its errors on stdout
+        raise RuntimeError(f"{cmd[0]} failed on {path}: {(proc.stderr or proc.stdout)[-400:]}")
+    return after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+
+
+def systems(baseline: str | None) -> dict[str, tuple[list[str], dict]]:
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    out = {"mech": ([PYTHON, "-m", "mech", "--no-warn"], env)}
+    if baseline:
+        out["base"] = ([PYTHON, "-m", "mech", "--no-warn"], dict(env, PYTHONPATH=baseline))
+    if SINGULAR:
+        out["Singular"] = ([SINGULAR, "-q", "--no-warn"], env)
+    return out
+
+
+def measure(text_of, count_of, sizes: dict, which: dict, repeat: int, tmp: Path) -> dict[str, float]:
+    """Statements/s per system: (time with N - time with 0) over the statements of N, best of ``repeat``."""
+    rates: dict[str, float] = {}
+    for _ in range(repeat):  # systems alternate, so a change of the machine's load touches all
+        for name, (cmd, env) in which.items():
+            n = sizes[name]
+            quit_ = "\nquit;\n" if name == "Singular" else "\n"
+            full, empty = tmp / f"{name}_n.sing", tmp / f"{name}_0.sing"
+            full.write_text(text_of(n) + quit_)
+            empty.write_text(text_of(0) + quit_)
+            t = cpu(cmd, full, env) - cpu(cmd, empty, env)
+            rate = count_of(n) / max(t, 1e-6)
+            rates[name] = max(rates.get(name, 0.0), rate)
+    return rates
+
+
+def rows(which: dict, repeat: int) -> list[tuple[str, dict[str, float]]]:
+    out = []
+    with tempfile.TemporaryDirectory() as tmp_:
+        tmp = Path(tmp_)
+        for name, setup, per in LOOP_CASES:
+            rates = measure(lambda n, s=setup: loop_script(s, n), lambda n, p=per: p * n, SIZES, which, repeat, tmp)
+            out.append((name, rates))
+            print(name, {k: round(v) for k, v in rates.items()}, file=sys.stderr, flush=True)
+        for name, lines in FLAT_CASES:
+            rates = measure(lambda n, ls=lines: flat_script(ls, n)[0], lambda n, ls=lines: flat_script(ls, n)[1],
+                            FLAT_SIZES, which, repeat, tmp)
+            out.append((name, rates))
+            print(name, {k: round(v) for k, v in rates.items()}, file=sys.stderr, flush=True)
+    return out
+
+
+def fmt(rate: float | None) -> str:
+    if rate is None:
+        return "—"
+    return f"{rate / 1e6:.2f} M" if rate >= 1e6 else f"{rate / 1e3:.1f} k" if rate >= 1e3 else f"{rate:.0f}"
+
+
+def table(results: list[tuple[str, dict[str, float]]], baseline: str | None) -> list[str]:
+    head = "| case | mech | Singular | Singular / mech |"
+    rule = "|---|---|---|---|"
+    if baseline:
+        head += " mech at the baseline | speed-up |"
+        rule += "---|---|"
+    lines = [head, rule]
+    for name, r in results:
+        m, s, b = r.get("mech"), r.get("Singular"), r.get("base")
+        row = f"| {name} | {fmt(m)} | {fmt(s)} | {s / m:.0f}× |" if s else f"| {name} | {fmt(m)} | — | — |"
+        if baseline:
+            row += f" {fmt(b)} | {m / b:.1f}× |"
+        lines.append(row)
+    return lines
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--write", action="store_true", help="rewrite benchmarks/INTERPRETER.md")
+    ap.add_argument("--baseline", help="PYTHONPATH of an older mech package tree, for a speed-up column")
+    ap.add_argument("--label", default="", help="what the baseline is (for the table's text)")
+    ap.add_argument("--repeat", type=int, default=2)
+    args = ap.parse_args()
+    which = systems(args.baseline)
+    load = os.getloadavg()
+    t0 = time.time()
+    results = rows(which, args.repeat)
+    lines = table(results, args.baseline)
+    print("\n".join(lines))
+    if args.write:
+        sing = subprocess.run([SINGULAR, "-v", "-q", "--no-warn"], input="quit;", capture_output=True,
+                              text=True).stdout.splitlines()[0].strip("/ ") if SINGULAR else "absent"
+        text = [
+            "# Benchmarks: the interpreter",
+            "",
+            "Produced by `python benchmarks/interpreter.py --write"
+            + (" --baseline ...`" if args.baseline else "`") + ": statements per second, mech and Singular "
+            "on the same scripts in one run (see the script's docstring for how statements are counted "
+            "and timed: CPU time of the process with N repetitions minus that with none, best of "
+            f"{args.repeat}).",
+            "",
+            f"- date: {time.strftime('%Y-%m-%d %H:%M')}, {time.time() - t0:.0f} s",
+            f"- CPU: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, shared: load average "
+            f"{load[0]:.1f} {load[1]:.1f} {load[2]:.1f} at the start",
+            f"- Python {platform.python_version()}; Singular: {sing}",
+        ]
+        if args.baseline:
+            text.append(f"- baseline: {args.label or args.baseline}")
+        (HERE / "INTERPRETER.md").write_text("\n".join(text + [""] + lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,302 @@
+"""Statements and expressions compiled once to Python closures, kept on their tree nodes and reused
+each time the node runs again (loop bodies, procedure bodies, repeated lines of long scripts).
+
+A closure takes the interpreter and does what the interpreter's dispatch on the node's type does,
+with the same results, output, warnings and error positions, minus the dispatch: the common cases
+(int and same-ring polynomial arithmetic, comparisons of ints, names, assignments of ints, polys and
+strings to variables of their type, ``x++``, ``if``, ``for``, ``while``) run inline, everything else
+calls the interpreter's own methods.  Closures hold no interpreter (trees are shared between
+sessions, see :mod:`~mech.dsl.fastparse`).
+"""
+from __future__ import annotations
+
+from typing import Any, Callable
+
+from ..kernel import Poly
+from . import ast as A
+from . import ops
+from .boundary import convert_exception
+from .errors import MechError
+from .signals import SIGNALS, BreakSignal, ContinueSignal
+from .values import ExprList, Ideal, List
+
+Fn = Callable[[Any], Any]
+
+MAX_DEPTH = 40  # deeper subtrees are left to the interpreter's evaluator (it loops over long sums)
+
+
+def expr_fn(node: A.Expr) -> Fn:
+    """The closure evaluating ``node`` (as ``Interpreter.eval``), made once."""
+    return _child(node, 0)
+
+
+def stmt_fn(stmt: A.Stmt) -> Fn:
+    """The closure running ``stmt`` (as the interpreter's ``_exec`` table), made once."""
+    fn = getattr(stmt, "_fn", None)
+    if fn is None:
+        fn = _stmt(stmt)
+        _keep(stmt, fn)
+    return fn
+
+
+def _keep(node: Any, fn: Fn) -> None:
+    try:
+        node._fn = fn
+    except AttributeError:  # a node without a __dict__: compiled again next time
+        pass
+
+
+# ---------------------------------------------------------------- expressions
+def _child(node: A.Expr, depth: int) -> Fn:
+    fn = getattr(node, "_fn", None)
+    if fn is None:
+        fn = _expr(node, depth)
+        _keep(node, fn)
+    return fn
+
+
+def _located(node: A.Expr, inner: Fn) -> Fn:
+    """``inner`` with the evaluator's error handling for ``node``: errors without a position get
+    the node's (calls, operators and indexing underlined)."""
+    under_mech = isinstance(node, (A.Call, A.TypeCall, A.BinOp, A.Index))
+    under_other = isinstance(node, (A.Call, A.TypeCall, A.BinOp))
+
+    def fn(it: Any) -> Any:
+        try:
+            return inner(it)
+        except SIGNALS:
+            raise
+        except MechError as e:
+            if e.pos is None:
+                e.locate(node.pos, it.source, under_mech)
+            raise
+        except Exception as e:
+            raise convert_exception(e).locate(node.pos, it.source, under_other) from None
+    return fn
+
+
+def _generic(node: A.Expr) -> Fn:
+    return lambda it: it._eval_node(node)
+
+
+def _expr(node: A.Expr, depth: int) -> Fn:
+    kind = type(node)
+    if kind is A.IntLit or kind is A.StrLit:
+        value = node.value
+        return lambda it: value
+    if depth > MAX_DEPTH:
+        return _generic(node)
+    if kind is A.Name:
+        return _located(node, _name(node))
+    if kind is A.BinOp:
+        return _located(node, _binop(node, depth))
+    if kind is A.UnOp:
+        return _located(node, _unop(node, depth))
+    if kind is A.Index and len(node.indices) == 1:
+        return _located(node, _index(node, depth))
+    return _generic(node)
+
+
+def _name(node: A.Name) -> Fn:
+    name = node.id
+
+    def inner(it: Any) -> Any:
+        var = it.lookup(name)
+        if var is not None:
+            return var.value
+        return it._eval_name(node)
+    return inner
+
+
+def _binop(node: A.BinOp, depth: int) -> Fn:
+    op = node.op
+    lf, rf = _child(node.left, depth + 1), _child(node.right, depth + 1)
+    truth = ops.truth
+    if op == "&&":
+        return lambda it: int(truth(lf(it)) and truth(rf(it)))
+    if op == "||":
+        return lambda it: int(truth(lf(it)) or truth(rf(it)))
+    fast = _INT_OPS.get(op)
+    if fast is None:
+        return lambda it: it._binary(op, lf(it), rf(it))
+    poly = _POLY_OPS.get(op)
+
+    def inner(it: Any) -> Any:
+        a = lf(it)
+        b = rf(it)
+        ta, tb = type(a), type(b)
+        if ta is int and tb is int:
+            return fast(a, b)
+        if poly is not None:
+            if ta is Poly:
+                if tb is Poly and a.ring is b.ring:
+                    return poly(a, b)
+                if tb is int:
+                    return poly(a, a.ring.const(b))
+            elif ta is int and tb is Poly:
+                return poly(b.ring.const(a), b)
+        return it._binary(op, a, b)
+    return inner
+
+
+_INT_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
+            "<": lambda a, b: int(a < b), "<=": lambda a, b: int(a <= b), ">": lambda a, b: int(a > b),
+            ">=": lambda a, b: int(a >= b), "==": lambda a, b: int(a == b), "!=": lambda a, b: int(a != b)}
+_POLY_OPS = {"+": Poly.__add__, "-": Poly.__sub__, "*": Poly.__mul__}
+
+
+def _unop(node: A.UnOp, depth: int) -> Fn:
+    f = _child(node.operand, depth + 1)
+    if node.op == "-":
+        def neg(it: Any) -> Any:
+            v = f(it)
+            return -v if type(v) is int else ops.negate(v)
+        return neg
+    if node.op == "+":
+        return f
+    truth = ops.truth
+    return lambda it: int(not truth(f(it)))
+
+
+def _index(node: A.Index, depth: int) -> Fn:
+    """``base[i]`` with one index: an entry of a list or ideal inline, the rest as the evaluator does."""
+    bf, kf = _child(node.base, depth + 1), _child(node.indices[0], depth + 1)
+
+    def inner(it: Any) -> Any:
+        base = bf(it)
+        k = kf(it)
+        if type(k) is int and 1 <= k:
+            tb = type(base)
+            seq = base.items if tb is List else base.gens if tb is Ideal else None
+            if seq is not None and k <= len(seq):
+                return seq[k - 1]
+        return it._index_value(base, [k])
+    return inner
+
+
+# ---------------------------------------------------------------- statements
+def _stmt(s: A.Stmt) -> Fn:
+    kind = type(s)
+    if kind is A.Assign and len(s.targets) == 1 and len(s.values) == 1 and type(s.targets[0]) is A.Name:
+        return _assign(s)
+    if kind is A.IncDec and type(s.target) is A.Name:
+        return _incdec(s)
+    if kind is A.If:
+        return _if(s)
+    if kind is A.For:
+        return _for(s)
+    if kind is A.While:
+        return _while(s)
+    if kind is A.Block:
+        body = s.body
+        return lambda it: _run(it, body)
+    return lambda it: it._exec[kind](s)
+
+
+def _run(it: Any, body: list[A.Stmt]) -> None:
+    run = it.exec_stmt
+    for stmt in body:
+        run(stmt)
+
+
+def _assign(s: A.Assign) -> Fn:
+    """``name = value;``: ints, polys and strings into variables of their type inline."""
+    target = s.targets[0]
+    name = target.id
+    vf = expr_fn(s.values[0])
+
+    def inner(it: Any) -> None:
+        v = vf(it)
+        tv = type(v)
+        if tv is int:
+            var = it.lookup(name)
+            if var is not None and var.type == "int":
+                var.value = v
+                return
+        elif tv is Poly:
+            var = it.lookup(name)
+            ring = it.ring
+            if var is not None and var.type == "poly" and ring is not None and v.ring is ring.poly:
+                var.value = v
+                return
+        elif tv is str:
+            var = it.lookup(name)
+            if var is not None and var.type == "string":
+                var.value = v
+                return
+        elif isinstance(v, ExprList):  # as the evaluator's list of values: one item is that item
+            items = list(v.items)
+            v = items[0] if len(items) == 1 else ExprList(items)
+        it.assign(target, v)
+    return inner
+
+
+def _incdec(s: A.IncDec) -> Fn:
+    name, delta = s.target.id, s.delta
+
+    def inner(it: Any) -> None:
+        var = it.lookup(name)
+        if var is not None and type(var.value) is int:
+            var.value += delta
+            return
+        it._exec_incdec(s)
+    return inner
+
+
+def _cond(node: A.Expr) -> Callable[[Any], bool]:
+    f = expr_fn(node)
+    truth = ops.truth
+
+    def cond(it: Any) -> bool:
+        v = f(it)
+        return v != 0 if type(v) is int else truth(v)
+    return cond
+
+
+def _if(s: A.If) -> Fn:
+    cond, then, orelse = _cond(s.cond), s.then, s.orelse
+
+    def inner(it: Any) -> None:
+        if cond(it):
+            _run(it, then)
+        elif orelse is not None:
+            _run(it, orelse)
+    return inner
+
+
+def _for(s: A.For) -> Fn:
+    init, step, body = s.init, s.step, s.body
+    cond = _cond(s.cond) if s.cond is not None else (lambda it: True)
+
+    def inner(it: Any) -> None:
+        run = it.exec_stmt
+        if init is not None:
+            run(init)
+        while cond(it):
+            try:
+                for stmt in body:
+                    run(stmt)
+            except BreakSignal:
+                break
+            except ContinueSignal:  # as in Singular, continue skips the step: it goes on with the condition
+                continue
+            if step is not None:
+                run(step)
+    return inner
+
+
+def _while(s: A.While) -> Fn:
+    cond, body = _cond(s.cond), s.body
+
+    def inner(it: Any) -> None:
+        run = it.exec_stmt
+        while cond(it):
+            try:
+                for stmt in body:
+                    run(stmt)
+            except BreakSignal:
+                break
+            except ContinueSignal:
+                pass
+    return inner
+
