@@ -18,7 +18,7 @@ from . import ops
 from .boundary import convert_exception
 from .errors import MechError
 from .signals import SIGNALS, BreakSignal, ContinueSignal
-from .values import ExprList, Ideal, List
+from .values import NONE, ExprList, Ideal, List, Proc
 
 Fn = Callable[[Any], Any]
 
@@ -55,24 +55,14 @@ def _child(node: A.Expr, depth: int) -> Fn:
     return fn
 
 
-def _located(node: A.Expr, inner: Fn) -> Fn:
-    """``inner`` with the evaluator's error handling for ``node``: errors without a position get
-    the node's (calls, operators and indexing underlined)."""
-    under_mech = isinstance(node, (A.Call, A.TypeCall, A.BinOp, A.Index))
-    under_other = isinstance(node, (A.Call, A.TypeCall, A.BinOp))
-
-    def fn(it: Any) -> Any:
-        try:
-            return inner(it)
-        except SIGNALS:
-            raise
-        except MechError as e:
-            if e.pos is None:
-                e.locate(node.pos, it.source, under_mech)
-            raise
-        except Exception as e:
-            raise convert_exception(e).locate(node.pos, it.source, under_other) from None
-    return fn
+def _locate(e: Exception, node: A.Expr, it: Any) -> Exception:
+    """The evaluator's handling of an error raised by ``node``: one without a position gets the
+    node's (calls, operators and indexing underlined)."""
+    if isinstance(e, MechError):
+        if e.pos is None:
+            e.locate(node.pos, it.source, isinstance(node, (A.Call, A.TypeCall, A.BinOp, A.Index)))
+        return e
+    return convert_exception(e).locate(node.pos, it.source, isinstance(node, (A.Call, A.TypeCall, A.BinOp)))
 
 
 def _generic(node: A.Expr) -> Fn:
@@ -87,82 +77,109 @@ def _expr(node: A.Expr, depth: int) -> Fn:
     if depth > MAX_DEPTH:
         return _generic(node)
     if kind is A.Name:
-        return _located(node, _name(node))
+        return _name(node)
     if kind is A.BinOp:
-        return _located(node, _binop(node, depth))
+        return _binop(node, depth)
     if kind is A.UnOp:
-        return _located(node, _unop(node, depth))
+        return _unop(node, depth)
     if kind is A.Index and len(node.indices) == 1:
-        return _located(node, _index(node, depth))
+        return _index(node, depth)
+    if kind is A.Call and type(node.func) is A.Name:
+        return _call(node, depth)
     return _generic(node)
 
 
 def _name(node: A.Name) -> Fn:
     name = node.id
 
-    def inner(it: Any) -> Any:
+    def fn(it: Any) -> Any:
         var = it.lookup(name)
         if var is not None:
             return var.value
-        return it._eval_name(node)
-    return inner
+        ring = it.ring
+        if ring is not None:
+            i = ring.var_index(name)
+            if i is not None:
+                return ring.poly.gen(i)
+        return it._eval_node(node)  # parameters, system variables, monomials, errors
+    return fn
 
 
 def _binop(node: A.BinOp, depth: int) -> Fn:
     op = node.op
     lf, rf = _child(node.left, depth + 1), _child(node.right, depth + 1)
     truth = ops.truth
-    if op == "&&":
-        return lambda it: int(truth(lf(it)) and truth(rf(it)))
-    if op == "||":
-        return lambda it: int(truth(lf(it)) or truth(rf(it)))
-    fast = _INT_OPS.get(op)
-    if fast is None:
-        return lambda it: it._binary(op, lf(it), rf(it))
-    poly = _POLY_OPS.get(op)
+    if op == "&&" or op == "||":
+        both = op == "&&"
 
-    def inner(it: Any) -> Any:
+        def logic(it: Any) -> Any:
+            try:
+                return int(truth(lf(it)) and truth(rf(it))) if both else int(truth(lf(it)) or truth(rf(it)))
+            except SIGNALS:
+                raise
+            except Exception as e:
+                raise _locate(e, node, it) from None
+        return logic
+    fast, slow, poly = _INT_OPS.get(op), _INT_DIV.get(op), _POLY_OPS.get(op)
+
+    def fn(it: Any) -> Any:
         a = lf(it)
         b = rf(it)
         ta, tb = type(a), type(b)
-        if ta is int and tb is int:
+        if ta is int and tb is int and fast is not None:
             return fast(a, b)
-        if poly is not None:
-            if ta is Poly:
-                if tb is Poly and a.ring is b.ring:
-                    return poly(a, b)
-                if tb is int:
-                    return poly(a, a.ring.const(b))
-            elif ta is int and tb is Poly:
-                return poly(b.ring.const(a), b)
-        return it._binary(op, a, b)
-    return inner
+        try:
+            if slow is not None and ta is int and tb is int:
+                return slow(a, b)
+            if ta is str and tb is str and op == "+":
+                return a + b
+            if poly is not None:
+                if ta is Poly:
+                    if tb is Poly and a.ring is b.ring:
+                        return poly(a, b)
+                    if tb is int:
+                        return poly(a, a.ring.const(b))
+                elif ta is int and tb is Poly:
+                    return poly(b.ring.const(a), b)
+            return it._binary(op, a, b)
+        except SIGNALS:
+            raise
+        except Exception as e:
+            raise _locate(e, node, it) from None
+    return fn
 
 
 _INT_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
             "<": lambda a, b: int(a < b), "<=": lambda a, b: int(a <= b), ">": lambda a, b: int(a > b),
             ">=": lambda a, b: int(a >= b), "==": lambda a, b: int(a == b), "!=": lambda a, b: int(a != b)}
+_INT_DIV = {"div": ops.trunc_div, "mod": ops.trunc_mod}  # these raise "division by 0"
 _POLY_OPS = {"+": Poly.__add__, "-": Poly.__sub__, "*": Poly.__mul__}
 
 
 def _unop(node: A.UnOp, depth: int) -> Fn:
     f = _child(node.operand, depth + 1)
-    if node.op == "-":
-        def neg(it: Any) -> Any:
-            v = f(it)
-            return -v if type(v) is int else ops.negate(v)
-        return neg
     if node.op == "+":
         return f
-    truth = ops.truth
-    return lambda it: int(not truth(f(it)))
+    minus = node.op == "-"
+
+    def fn(it: Any) -> Any:
+        v = f(it)
+        if minus and type(v) is int:
+            return -v
+        try:
+            return ops.negate(v) if minus else int(not ops.truth(v))
+        except SIGNALS:
+            raise
+        except Exception as e:
+            raise _locate(e, node, it) from None
+    return fn
 
 
 def _index(node: A.Index, depth: int) -> Fn:
     """``base[i]`` with one index: an entry of a list or ideal inline, the rest as the evaluator does."""
     bf, kf = _child(node.base, depth + 1), _child(node.indices[0], depth + 1)
 
-    def inner(it: Any) -> Any:
+    def fn(it: Any) -> Any:
         base = bf(it)
         k = kf(it)
         if type(k) is int and 1 <= k:
@@ -170,8 +187,48 @@ def _index(node: A.Index, depth: int) -> Fn:
             seq = base.items if tb is List else base.gens if tb is Ideal else None
             if seq is not None and k <= len(seq):
                 return seq[k - 1]
-        return it._index_value(base, [k])
-    return inner
+        try:
+            return it._index_value(base, [k])
+        except SIGNALS:
+            raise
+        except Exception as e:
+            raise _locate(e, node, it) from None
+    return fn
+
+
+def _values(nodes: list[A.Expr], depth: int) -> Callable[[Any], list]:
+    """The evaluator's list of values of ``nodes`` (expression lists spliced in)."""
+    fns = [_child(n, depth + 1) for n in nodes]
+    single = len(fns) == 1
+
+    def values(it: Any) -> list:
+        out = []
+        for f in fns:
+            v = f(it)
+            if isinstance(v, ExprList):
+                out.extend(v.items)
+            elif v is not NONE or single:
+                out.append(v)
+        return out
+    return values
+
+
+def _call(node: A.Call, depth: int) -> Fn:
+    """``name(args)`` calling a procedure inline; other calls (commands, maps) as the evaluator does."""
+    name = node.func.id
+    values = _values(node.args, depth)
+
+    def fn(it: Any) -> Any:
+        var = it.lookup(name)
+        if var is None or type(var.value) is not Proc:
+            return it._eval_node(node)
+        try:
+            return it.call_proc(var.value, values(it), node)
+        except SIGNALS:
+            raise
+        except Exception as e:
+            raise _locate(e, node, it) from None
+    return fn
 
 
 # ---------------------------------------------------------------- statements

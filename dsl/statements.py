@@ -26,9 +26,12 @@ class Statements:
         try:
             if self.compiled:
                 fn = getattr(stmt, "_fn", None)
-                if fn is None:
-                    fn = stmt_fn(stmt)
-                fn(self)
+                if fn is not None:
+                    fn(self)
+                elif type(stmt) is A.Moved:  # made for one line of a long script: run, not compiled
+                    self._exec_moved(stmt)
+                else:
+                    stmt_fn(stmt)(self)
             else:
                 self._exec[type(stmt)](stmt)
         except SIGNALS:
