@@ -6,12 +6,13 @@
                                                            # at PYTHONPATH, e.g. an unpacked commit)
 
 Each case is a script in Singular's language, run by both systems as a file (``mech FILE``,
-``Singular -q FILE``) with output to /dev/null.  Its time is the process's CPU time with ``N``
-repetitions minus that with none (start-up, ring and procedure declarations cancel out), the best
-of ``--repeat`` runs; statements/s = statements run / that time.  Statements run are counted as
-written: each executed statement (the loop's step ``i++`` included, the statements of called
-procedures included; loop conditions not counted).  The flat scripts are long files of
-statements, one after another (parsing included).
+``Singular -q FILE``) with output to /dev/null.  The loops time themselves: the script prints the
+CPU milliseconds of its loop (``timer`` with ``system("--ticks-per-sec", 1000)``), read the same way
+in both systems.  The flat scripts (long files of statements one after another, parsing included)
+are timed from outside: the process's CPU time with ``N`` lines minus that with none.  Best of
+``--repeat`` runs, the systems alternating; statements/s = statements run / that time.  Statements
+run are counted as written: each executed statement (the loop's step ``i++`` included, the
+statements of called procedures included; loop conditions not counted).
 """
 from __future__ import annotations
 
@@ -31,26 +32,27 @@ HERE = Path(__file__).resolve().parent
 SINGULAR = shutil.which("Singular")
 PYTHON = sys.executable
 
-#: (name, setup, loop body (or flat script line generator), statements per repetition, mech's N, Singular's N)
+#: (name, script with the loop, statements per repetition, repetitions N)
 LOOP_CASES = [
     ("`for` loop of int arithmetic in a proc",
      "proc f(int n) {{ int k, j; int i; for (i = 1; i <= n; i++) {{ k = k + i; j = k - 2*i; }} return(k); }}\n"
-     "int r = f({n});\n", 3),
+     "int r = f({n});\n", 3, 100000),
     ("`while` loop of int arithmetic",
-     "int i, s; while (i < {n}) {{ s = s + i*i mod 7; i = i + 1; }}\n", 2),
+     "int i, s; while (i < {n}) {{ s = s + i*i mod 7; i = i + 1; }}\n", 2, 100000),
     ("poly arithmetic in a loop (`q = p*x + 1` ...)",
      "ring r = 0, (x,y), dp; poly p = x+y; poly q; int i;\n"
-     "for (i = 1; i <= {n}; i++) {{ q = p*x + 1; q = q*y - x; p = q - p*x*y + 2; }}\n", 4),
+     "for (i = 1; i <= {n}; i++) {{ q = p*x + 1; q = q*y - x; p = q - p*x*y + 2; }}\n", 4, 20000),
     ("ideal and list entries (`I[2] = I[1]*I[3]`, `L[2] = L[1] + i`)",
      "ring r = 0, (x,y), dp; ideal I = x, y, x+y; list L = 1, 2, 3; int i, k;\n"
-     "for (i = 1; i <= {n}; i++) {{ I[2] = I[1]*I[3]; L[2] = L[1] + i; k = L[2] - L[3]; }}\n", 4),
+     "for (i = 1; i <= {n}; i++) {{ I[2] = I[1]*I[3]; L[2] = L[1] + i; k = L[2] - L[3]; }}\n", 4, 30000),
     ("proc calls with arguments and a return value",
      "proc add(int a, int b) {{ return(a + b); }}\n"
-     "int i, k, j; for (i = 1; i <= {n}; i++) {{ k = add(k, i); j = add(j, 1); }}\n", 5),
+     "int i, k, j; for (i = 1; i <= {n}; i++) {{ k = add(k, i); j = add(j, 1); }}\n", 5, 30000),
     ("string concatenation",
      "string s, t, u; int i;\n"
-     "for (i = 1; i <= {n}; i++) {{ s = \"a\" + string(i); t = s + \",\"; u = t + s; }}\n", 4),
+     "for (i = 1; i <= {n}; i++) {{ s = \"a\" + string(i); t = s + \",\"; u = t + s; }}\n", 4, 50000),
 ]
+TIMED = 'system("--ticks-per-sec", 1000); int t_0 = timer;\n{body}int t_1 = timer; t_1 - t_0;\n'
 
 #: flat scripts: a head, then lines drawn at random from these templates
 PLAIN_LINES = ["k = k + {a};", "j = k * {b} - {a};", "m = j - k + {a};", "k = m mod 1000 + {b};", "b = k < j;"]
@@ -64,13 +66,8 @@ FLAT_HEAD = ("int k, i, j, m, b; string s; ring r = 0,(x,y,z),dp; poly f, g; ide
 FLAT_CASES = [("long flat script of plain int statements", PLAIN_LINES),
               ("long flat script of mixed statements", MIXED_LINES)]
 
-#: repetitions per case: mech's and Singular's (each run about a second on an idle machine)
-SIZES = {"mech": 20000, "base": 4000, "Singular": 1000000}
-FLAT_SIZES = {"mech": 20000, "base": 5000, "Singular": 200000}
-
-
-def loop_script(setup: str, n: int) -> str:
-    return setup.format(n=n)
+#: lines of the flat scripts per system (Singular's larger: its start-up's noise is the same)
+FLAT_SIZES = {"mech": 40000, "base": 40000, "Singular": 400000}
 
 
 def flat_script(lines: list[str], n: int) -> tuple[str, int]:
@@ -85,14 +82,15 @@ def flat_script(lines: list[str], n: int) -> tuple[str, int]:
     return "".join(out), count
 
 
-def cpu(cmd: list[str], path: Path, env: dict) -> float:
-    """CPU seconds (user + system) of running ``cmd`` on the script ``path``."""
+def run(cmd: list[str], path: Path, env: dict) -> tuple[float, str]:
+    """CPU seconds (user + system) of running ``cmd`` on the script ``path``, and its output."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    proc = subprocess.run(cmd + [str(path)], stdin=subprocess.DEVNULL, capture_output=True, env=env, text=True)
+    proc = subprocess.run(cmd + [str(path)], stdin=subprocess.DEVNULL, capture_output=True, env=env, text=True,
+                          cwd=path.parent)  # not the repository: ``python -m mech`` would find its mech/ there
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if proc.returncode or proc.stderr or "   ? " in proc.stdout:  # Singular reports its errors on stdout
         raise RuntimeError(f"{cmd[0]} failed on {path}: {(proc.stderr or proc.stdout)[-400:]}")
-    return after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+    return after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime, proc.stdout
 
 
 def systems(baseline: str | None) -> dict[str, tuple[list[str], dict]]:
@@ -105,36 +103,46 @@ def systems(baseline: str | None) -> dict[str, tuple[list[str], dict]]:
     return out
 
 
-def measure(text_of, count_of, sizes: dict, which: dict, repeat: int, tmp: Path) -> dict[str, float]:
-    """Statements/s per system: (time with N - time with 0) over the statements of N, best of ``repeat``."""
-    rates: dict[str, float] = {}
-    for _ in range(repeat):  # systems alternate, so a change of the machine's load touches all
-        for name, (cmd, env) in which.items():
-            n = sizes[name]
-            quit_ = "\nquit;\n" if name == "Singular" else "\n"
-            full, empty = tmp / f"{name}_n.sing", tmp / f"{name}_0.sing"
-            full.write_text(text_of(n) + quit_)
-            empty.write_text(text_of(0) + quit_)
-            t = cpu(cmd, full, env) - cpu(cmd, empty, env)
-            rate = count_of(n) / max(t, 1e-6)
-            rates[name] = max(rates.get(name, 0.0), rate)
-    return rates
+def _script(tmp: Path, name: str, text: str) -> Path:
+    path = tmp / f"{name}.sing"
+    path.write_text(text + ("\nquit;\n" if name == "Singular" else "\n"))
+    return path
+
+
+def loop_rates(which: dict, repeat: int, tmp: Path) -> list[tuple[str, dict[str, float]]]:
+    """Statements/s of the loops: statements over the CPU time the script prints."""
+    out = []
+    for title, body, per, n in LOOP_CASES:
+        rates: dict[str, float] = {}
+        for _ in range(repeat):  # systems alternate, so a change of the machine's load touches all
+            for name, (cmd, env) in which.items():
+                _, stdout = run(cmd, _script(tmp, name, TIMED.format(body=body.format(n=n))), env)
+                ms = int(stdout.split()[-1])
+                rates[name] = max(rates.get(name, 0.0), per * n / max(ms / 1000, 1e-3))
+        out.append((title, rates))
+        print(title, {k: round(v) for k, v in rates.items()}, file=sys.stderr, flush=True)
+    return out
+
+
+def flat_rates(which: dict, repeat: int, tmp: Path) -> list[tuple[str, dict[str, float]]]:
+    """Statements/s of the flat scripts: (time with N lines - time with none) over their statements."""
+    out = []
+    for title, lines in FLAT_CASES:
+        rates: dict[str, float] = {}
+        for _ in range(repeat):
+            for name, (cmd, env) in which.items():
+                text, count = flat_script(lines, FLAT_SIZES[name])
+                full, _ = run(cmd, _script(tmp, name, text), env)
+                empty, _ = run(cmd, _script(tmp, name, FLAT_HEAD), env)
+                rates[name] = max(rates.get(name, 0.0), count / max(full - empty, 1e-3))
+        out.append((title, rates))
+        print(title, {k: round(v) for k, v in rates.items()}, file=sys.stderr, flush=True)
+    return out
 
 
 def rows(which: dict, repeat: int) -> list[tuple[str, dict[str, float]]]:
-    out = []
-    with tempfile.TemporaryDirectory() as tmp_:
-        tmp = Path(tmp_)
-        for name, setup, per in LOOP_CASES:
-            rates = measure(lambda n, s=setup: loop_script(s, n), lambda n, p=per: p * n, SIZES, which, repeat, tmp)
-            out.append((name, rates))
-            print(name, {k: round(v) for k, v in rates.items()}, file=sys.stderr, flush=True)
-        for name, lines in FLAT_CASES:
-            rates = measure(lambda n, ls=lines: flat_script(ls, n)[0], lambda n, ls=lines: flat_script(ls, n)[1],
-                            FLAT_SIZES, which, repeat, tmp)
-            out.append((name, rates))
-            print(name, {k: round(v) for k, v in rates.items()}, file=sys.stderr, flush=True)
-    return out
+    with tempfile.TemporaryDirectory() as tmp:
+        return loop_rates(which, repeat, Path(tmp)) + flat_rates(which, repeat, Path(tmp))
 
 
 def fmt(rate: float | None) -> str:
@@ -181,8 +189,7 @@ def main() -> None:
             "Produced by `python benchmarks/interpreter.py --write"
             + (" --baseline ...`" if args.baseline else "`") + ": statements per second, mech and Singular "
             "on the same scripts in one run (see the script's docstring for how statements are counted "
-            "and timed: CPU time of the process with N repetitions minus that with none, best of "
-            f"{args.repeat}).",
+            f"and timed: CPU time, best of {args.repeat}).",
             "",
             f"- date: {time.strftime('%Y-%m-%d %H:%M')}, {time.time() - t0:.0f} s",
             f"- CPU: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, shared: load average "
