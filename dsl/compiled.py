@@ -16,8 +16,8 @@ from ..kernel import Poly
 from . import ast as A
 from . import ops
 from .boundary import convert_exception
-from .errors import MechError
-from .signals import SIGNALS, BreakSignal, ContinueSignal
+from .errors import MechError, MechRuntimeError
+from .signals import SIGNALS, BreakSignal, ContinueSignal, ReturnSignal
 from .values import NONE, ExprList, Ideal, List, Proc
 
 Fn = Callable[[Any], Any]
@@ -244,6 +244,8 @@ def _stmt(s: A.Stmt) -> Fn:
         return _for(s)
     if kind is A.While:
         return _while(s)
+    if kind is A.Return and s.values:
+        return _return(s)
     if kind is A.Block:
         body = s.body
         return lambda it: _run(it, body)
@@ -285,6 +287,17 @@ def _assign(s: A.Assign) -> Fn:
             items = list(v.items)
             v = items[0] if len(items) == 1 else ExprList(items)
         it.assign(target, v)
+    return inner
+
+
+def _return(s: A.Return) -> Fn:
+    values = _values(s.values, 0)
+
+    def inner(it: Any) -> None:
+        if len(it.frames) == 1:
+            raise MechRuntimeError("return outside a procedure")
+        vals = values(it)
+        raise ReturnSignal(NONE if not vals else vals[0] if len(vals) == 1 else ExprList(vals))
     return inner
 
 
