@@ -28,6 +28,7 @@ class Node:
         """Without the closure the interpreter keeps on the node (:mod:`~mech.dsl.compiled`)."""
         state = dict(self.__dict__)
         state.pop("_fn", None)
+        state.pop("_seen", None)
         return state
 
 

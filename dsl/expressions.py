@@ -26,9 +26,11 @@ class Expressions:
         """The value of ``node``; errors without a position get the node's."""
         if self.compiled:
             fn = getattr(node, "_fn", None)
-            if fn is None:
-                fn = expr_fn(node)
-            return fn(self)
+            if fn is not None:
+                return fn(self)
+            if node.__dict__.get("_seen"):  # compiled when it runs again (loops, procedures)
+                return expr_fn(node)(self)
+            node._seen = True
         return self._eval_node(node)
 
     def _eval_node(self, node: A.Expr) -> Any:
