@@ -167,6 +167,16 @@ def table(results: list[tuple[str, dict[str, float]]], baseline: str | None) -> 
     return lines
 
 
+NOTES = """
+What bounds each row: loops and procedure bodies run closures made once per statement
+(`dsl/compiled.py`), so their cost is the Python calls of the statement itself (name lookup, the
+operation, the assignment) and, for polynomials, the kernel's arithmetic. The flat scripts pay per
+statement the parsing (the fast parser, or the tree shared with an earlier identical line) and the
+top-level statement's frame (limits, engine, error positions); a line that runs once is not
+compiled (compiling would cost more than it saves), so those rows move least.
+"""
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--write", action="store_true", help="rewrite benchmarks/INTERPRETER.md")
@@ -198,7 +208,7 @@ def main() -> None:
         ]
         if args.baseline:
             text.append(f"- baseline: {args.label or args.baseline}")
-        (HERE / "INTERPRETER.md").write_text("\n".join(text + [""] + lines) + "\n")
+        (HERE / "INTERPRETER.md").write_text("\n".join(text + [""] + lines) + "\n" + NOTES)
 
 
 if __name__ == "__main__":
