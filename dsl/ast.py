@@ -24,6 +24,13 @@ NOPOS = Pos(0, 0, 0, 0)
 class Node:
     pos: Pos = field(default=NOPOS, kw_only=True)
 
+    def __getstate__(self) -> dict:
+        """Without the closure the interpreter keeps on the node (:mod:`~mech.dsl.compiled`)."""
+        state = dict(self.__dict__)
+        state.pop("_fn", None)
+        state.pop("_seen", None)
+        return state
+
 
 # ---------------------------------------------------------------- expressions
 class Expr(Node):

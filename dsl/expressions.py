@@ -7,6 +7,7 @@ from ..kernel import Poly
 from . import ast as A
 from . import ops
 from .boundary import convert_exception
+from .compiled import expr_fn
 from .errors import MechError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
@@ -17,7 +18,23 @@ from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Proc, to_i
 class Expressions:
     """Evaluating expressions (part of the interpreter)."""
 
+    #: whether nodes run as closures made once (:mod:`~mech.dsl.compiled`, Singular's semantics
+    #: inline); a dialect with other semantics for the shared nodes sets it False
+    compiled = True
+
     def eval(self, node: A.Expr) -> Any:
+        """The value of ``node``; errors without a position get the node's."""
+        if self.compiled:
+            fn = getattr(node, "_fn", None)
+            if fn is not None:
+                return fn(self)
+            if node.__dict__.get("_seen"):  # compiled when it runs again (loops, procedures)
+                return expr_fn(node)(self)
+            node._seen = True
+        return self._eval_node(node)
+
+    def _eval_node(self, node: A.Expr) -> Any:
+        """``eval`` by the node's type, without a closure."""
         try:
             return self._eval[type(node)](node)
         except SIGNALS:
@@ -93,7 +110,10 @@ class Expressions:
 
     def _eval_index(self, node: A.Index) -> Any:
         base = self.eval(node.base)
-        idx = [self.eval(i) for i in node.indices]
+        return self._index_value(base, [self.eval(i) for i in node.indices])
+
+    def _index_value(self, base: Any, idx: list[Any]) -> Any:
+        """``base[idx...]`` for evaluated indices."""
         if isinstance(base, Matrix) and len(idx) == 2 and (isinstance(idx[0], IntVec) or isinstance(idx[1], IntVec)):
             rows = idx[0].values if isinstance(idx[0], IntVec) else [to_int(idx[0])]
             cols = idx[1].values if isinstance(idx[1], IntVec) else [to_int(idx[1])]

@@ -43,6 +43,8 @@ class M2Interpreter(M2Control, Interpreter):
     """mech's interpreter reading the Macaulay2 dialect: same values, kernel and evaluation of the
     shared nodes; Macaulay2's variables (global, untyped), commands, operators and output."""
 
+    compiled = False  # the shared nodes mean Macaulay2's operations here, not Singular's (dsl/compiled.py)
+
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         self.commands = self.registry.DIALECTS.get("m2", {})

@@ -74,7 +74,10 @@ class Procedures:
                 raise MechTypeError(f"too few arguments for procedure {proc.name}: expected {len(params)}, "
                                     f"got {len(args)}")
             typ = p.type or "def"
-            if typ == "ring":
+            a = args[i]
+            if (typ == "int" and type(a) is int) or (typ == "string" and type(a) is str):
+                v = a  # as convert gives them
+            elif typ == "ring":
                 v = convert(args[i], "ring", None)
             elif typ == "matrix":  # as a declaration without dimensions: a non-matrix fills a 1 x 1 matrix
                 v = to_matrix(args[i], self.basering().poly, *((0, 0) if isinstance(args[i], Matrix) else (1, 1)))

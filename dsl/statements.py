@@ -6,6 +6,7 @@ from __future__ import annotations
 from . import ast as A
 from . import ops
 from .boundary import convert_exception
+from .compiled import stmt_fn
 from .errors import MechError, MechNameError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .printing import join_outputs, render
@@ -23,7 +24,11 @@ class Statements:
     def exec_stmt(self, stmt: A.Stmt) -> None:
         self.stmt = stmt
         try:
-            self._exec[type(stmt)](stmt)
+            fn = getattr(stmt, "_fn", None) if self.compiled else None
+            if fn is not None:
+                fn(self)
+            else:
+                self._run_cold(stmt)
         except SIGNALS:
             raise
         except MechError as e:
@@ -34,13 +39,29 @@ class Statements:
         except Exception as e:
             raise convert_exception(e).locate(stmt.pos, self.source) from None
 
+    def _run_cold(self, stmt: A.Stmt) -> None:
+        """A statement without its closure: loops and statements running a second time are
+        compiled (:mod:`~mech.dsl.compiled`), a statement's first run goes by its type (most lines
+        of a long script run once)."""
+        kind = type(stmt)
+        if self.compiled and kind is not A.Moved:
+            if kind is A.For or kind is A.While or stmt.__dict__.get("_seen"):
+                stmt_fn(stmt)(self)
+                return
+            stmt._seen = True
+        self._exec[kind](stmt)
+
     def _exec_moved(self, s: A.Moved) -> None:
         """A statement tree shared with the same text on an earlier line (:mod:`~mech.dsl.fastparse`):
         warnings name this line (``line_shift``), errors are moved to it."""
         saved, self.line_shift = self.line_shift, s.dline
         inner = self.stmt = s.stmt
         try:
-            self._exec[type(inner)](inner)
+            fn = getattr(inner, "_fn", None) if self.compiled else None
+            if fn is not None:
+                fn(self)
+            else:
+                self._run_cold(inner)
         except MechError as e:
             _move_error(e, inner.pos.line, s.dline, self.source)
             raise

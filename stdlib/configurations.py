@@ -103,11 +103,14 @@ def _tree_split(x: Any, k: int) -> Optional[list[int]]:
 
 
 def _circuit_count(prime: list, ring: Any) -> Optional[int]:
-    from mech.kernel.real_curve import curve_topology
+    """The mode's exact circuit count (shared with the report), None when not known in the budget."""
     from mech.kernel.real_roots import RealSolvingError
     from mech.dsl.limits import within
+    from mech.stdlib.circuit_counts import circuit_count, time_tried
+    if time_tried(prime, ring) >= CIRCUIT_BUDGET:  # the report already ran out of this much time on it
+        return None
     try:
-        ok, n = within(CIRCUIT_BUDGET, lambda: curve_topology(prime, ring, None).count)
+        ok, n = within(CIRCUIT_BUDGET, circuit_count, prime, ring)
     except RealSolvingError:
         return None
     return n if ok else None

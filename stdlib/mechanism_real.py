@@ -156,8 +156,8 @@ def assembly_modes(a: Analysis, digits: int = DIGITS) -> dict[str, Any]:
 
 
 def _circuits(gens: list[Poly], a: Analysis) -> int:
-    from mech.kernel.real_curve import curve_topology
-    return curve_topology(gens, a.ring, None).count
+    from mech.stdlib.circuit_counts import circuit_count
+    return circuit_count(gens, a.ring)
 
 
 def _branches(a: Analysis, s: Any) -> list[dict[str, Any]]:

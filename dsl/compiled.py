@@ -1,0 +1,372 @@
+"""Statements and expressions compiled once to Python closures, kept on their tree nodes and reused
+each time the node runs again (loop bodies, procedure bodies, repeated lines of long scripts).
+
+A closure takes the interpreter and does what the interpreter's dispatch on the node's type does,
+with the same results, output, warnings and error positions, minus the dispatch: the common cases
+(int and same-ring polynomial arithmetic, comparisons of ints, names, assignments of ints, polys and
+strings to variables of their type, ``x++``, ``if``, ``for``, ``while``) run inline, everything else
+calls the interpreter's own methods.  Closures hold no interpreter (trees are shared between
+sessions, see :mod:`~mech.dsl.fastparse`).
+"""
+from __future__ import annotations
+
+from typing import Any, Callable
+
+from ..kernel import Poly
+from . import ast as A
+from . import ops
+from .boundary import convert_exception
+from .errors import MechError, MechRuntimeError
+from .signals import SIGNALS, BreakSignal, ContinueSignal, ReturnSignal
+from .values import NONE, ExprList, Ideal, List, Proc
+
+Fn = Callable[[Any], Any]
+
+MAX_DEPTH = 40  # deeper subtrees are left to the interpreter's evaluator (it loops over long sums)
+
+
+def expr_fn(node: A.Expr) -> Fn:
+    """The closure evaluating ``node`` (as ``Interpreter.eval``), made once."""
+    return _child(node, 0)
+
+
+def stmt_fn(stmt: A.Stmt) -> Fn:
+    """The closure running ``stmt`` (as the interpreter's ``_exec`` table), made once."""
+    fn = getattr(stmt, "_fn", None)
+    if fn is None:
+        fn = _stmt(stmt)
+        _keep(stmt, fn)
+    return fn
+
+
+def _keep(node: Any, fn: Fn) -> None:
+    try:
+        node._fn = fn
+    except AttributeError:  # a node without a __dict__: compiled again next time
+        pass
+
+
+# ---------------------------------------------------------------- expressions
+def _child(node: A.Expr, depth: int) -> Fn:
+    fn = getattr(node, "_fn", None)
+    if fn is None:
+        fn = _expr(node, depth)
+        _keep(node, fn)
+    return fn
+
+
+def _locate(e: Exception, node: A.Expr, it: Any) -> Exception:
+    """The evaluator's handling of an error raised by ``node``: one without a position gets the
+    node's (calls, operators and indexing underlined)."""
+    if isinstance(e, MechError):
+        if e.pos is None:
+            e.locate(node.pos, it.source, isinstance(node, (A.Call, A.TypeCall, A.BinOp, A.Index)))
+        return e
+    return convert_exception(e).locate(node.pos, it.source, isinstance(node, (A.Call, A.TypeCall, A.BinOp)))
+
+
+def _generic(node: A.Expr) -> Fn:
+    return lambda it: it._eval_node(node)
+
+
+def _expr(node: A.Expr, depth: int) -> Fn:
+    kind = type(node)
+    if kind is A.IntLit or kind is A.StrLit:
+        value = node.value
+        return lambda it: value
+    if depth > MAX_DEPTH:
+        return _generic(node)
+    if kind is A.Name:
+        return _name(node)
+    if kind is A.BinOp:
+        return _binop(node, depth)
+    if kind is A.UnOp:
+        return _unop(node, depth)
+    if kind is A.Index and len(node.indices) == 1:
+        return _index(node, depth)
+    if kind is A.Call and type(node.func) is A.Name:
+        return _call(node, depth)
+    return _generic(node)
+
+
+def _name(node: A.Name) -> Fn:
+    name = node.id
+
+    def fn(it: Any) -> Any:
+        var = it.lookup(name)
+        if var is not None:
+            return var.value
+        ring = it.ring
+        if ring is not None:
+            i = ring.var_index(name)
+            if i is not None:
+                return ring.poly.gen(i)
+        return it._eval_node(node)  # parameters, system variables, monomials, errors
+    return fn
+
+
+def _binop(node: A.BinOp, depth: int) -> Fn:
+    op = node.op
+    lf, rf = _child(node.left, depth + 1), _child(node.right, depth + 1)
+    truth = ops.truth
+    if op == "&&" or op == "||":
+        both = op == "&&"
+
+        def logic(it: Any) -> Any:
+            try:
+                return int(truth(lf(it)) and truth(rf(it))) if both else int(truth(lf(it)) or truth(rf(it)))
+            except SIGNALS:
+                raise
+            except Exception as e:
+                raise _locate(e, node, it) from None
+        return logic
+    fast, slow, poly = _INT_OPS.get(op), _INT_DIV.get(op), _POLY_OPS.get(op)
+
+    def fn(it: Any) -> Any:
+        a = lf(it)
+        b = rf(it)
+        ta, tb = type(a), type(b)
+        if ta is int and tb is int and fast is not None:
+            return fast(a, b)
+        try:
+            if slow is not None and ta is int and tb is int:
+                return slow(a, b)
+            if ta is str and tb is str and op == "+":
+                return a + b
+            if poly is not None:
+                if ta is Poly:
+                    if tb is Poly and a.ring is b.ring:
+                        return poly(a, b)
+                    if tb is int:
+                        return poly(a, a.ring.const(b))
+                elif ta is int and tb is Poly:
+                    return poly(b.ring.const(a), b)
+            return it._binary(op, a, b)
+        except SIGNALS:
+            raise
+        except Exception as e:
+            raise _locate(e, node, it) from None
+    return fn
+
+
+_INT_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
+            "<": lambda a, b: int(a < b), "<=": lambda a, b: int(a <= b), ">": lambda a, b: int(a > b),
+            ">=": lambda a, b: int(a >= b), "==": lambda a, b: int(a == b), "!=": lambda a, b: int(a != b)}
+_INT_DIV = {"div": ops.trunc_div, "mod": ops.trunc_mod}  # these raise "division by 0"
+_POLY_OPS = {"+": Poly.__add__, "-": Poly.__sub__, "*": Poly.__mul__}
+
+
+def _unop(node: A.UnOp, depth: int) -> Fn:
+    f = _child(node.operand, depth + 1)
+    if node.op == "+":
+        return f
+    minus = node.op == "-"
+
+    def fn(it: Any) -> Any:
+        v = f(it)
+        if minus and type(v) is int:
+            return -v
+        try:
+            return ops.negate(v) if minus else int(not ops.truth(v))
+        except SIGNALS:
+            raise
+        except Exception as e:
+            raise _locate(e, node, it) from None
+    return fn
+
+
+def _index(node: A.Index, depth: int) -> Fn:
+    """``base[i]`` with one index: an entry of a list or ideal inline, the rest as the evaluator does."""
+    bf, kf = _child(node.base, depth + 1), _child(node.indices[0], depth + 1)
+
+    def fn(it: Any) -> Any:
+        base = bf(it)
+        k = kf(it)
+        if type(k) is int and 1 <= k:
+            tb = type(base)
+            seq = base.items if tb is List else base.gens if tb is Ideal else None
+            if seq is not None and k <= len(seq):
+                return seq[k - 1]
+        try:
+            return it._index_value(base, [k])
+        except SIGNALS:
+            raise
+        except Exception as e:
+            raise _locate(e, node, it) from None
+    return fn
+
+
+def _values(nodes: list[A.Expr], depth: int) -> Callable[[Any], list]:
+    """The evaluator's list of values of ``nodes`` (expression lists spliced in)."""
+    fns = [_child(n, depth + 1) for n in nodes]
+    single = len(fns) == 1
+
+    def values(it: Any) -> list:
+        out = []
+        for f in fns:
+            v = f(it)
+            if isinstance(v, ExprList):
+                out.extend(v.items)
+            elif v is not NONE or single:
+                out.append(v)
+        return out
+    return values
+
+
+def _call(node: A.Call, depth: int) -> Fn:
+    """``name(args)`` calling a procedure inline; other calls (commands, maps) as the evaluator does."""
+    name = node.func.id
+    values = _values(node.args, depth)
+
+    def fn(it: Any) -> Any:
+        var = it.lookup(name)
+        if var is None or type(var.value) is not Proc:
+            return it._eval_node(node)
+        try:
+            return it.call_proc(var.value, values(it), node)
+        except SIGNALS:
+            raise
+        except Exception as e:
+            raise _locate(e, node, it) from None
+    return fn
+
+
+# ---------------------------------------------------------------- statements
+def _stmt(s: A.Stmt) -> Fn:
+    kind = type(s)
+    if kind is A.Assign and len(s.targets) == 1 and len(s.values) == 1 and type(s.targets[0]) is A.Name:
+        return _assign(s)
+    if kind is A.IncDec and type(s.target) is A.Name:
+        return _incdec(s)
+    if kind is A.If:
+        return _if(s)
+    if kind is A.For:
+        return _for(s)
+    if kind is A.While:
+        return _while(s)
+    if kind is A.Return and s.values:
+        return _return(s)
+    if kind is A.Block:
+        body = s.body
+        return lambda it: _run(it, body)
+    return lambda it: it._exec[kind](s)
+
+
+def _run(it: Any, body: list[A.Stmt]) -> None:
+    run = it.exec_stmt
+    for stmt in body:
+        run(stmt)
+
+
+def _assign(s: A.Assign) -> Fn:
+    """``name = value;``: ints, polys and strings into variables of their type inline."""
+    target = s.targets[0]
+    name = target.id
+    vf = expr_fn(s.values[0])
+
+    def inner(it: Any) -> None:
+        v = vf(it)
+        tv = type(v)
+        if tv is int:
+            var = it.lookup(name)
+            if var is not None and var.type == "int":
+                var.value = v
+                return
+        elif tv is Poly:
+            var = it.lookup(name)
+            ring = it.ring
+            if var is not None and var.type == "poly" and ring is not None and v.ring is ring.poly:
+                var.value = v
+                return
+        elif tv is str:
+            var = it.lookup(name)
+            if var is not None and var.type == "string":
+                var.value = v
+                return
+        elif isinstance(v, ExprList):  # as the evaluator's list of values: one item is that item
+            items = list(v.items)
+            v = items[0] if len(items) == 1 else ExprList(items)
+        it.assign(target, v)
+    return inner
+
+
+def _return(s: A.Return) -> Fn:
+    values = _values(s.values, 0)
+
+    def inner(it: Any) -> None:
+        if len(it.frames) == 1:
+            raise MechRuntimeError("return outside a procedure")
+        vals = values(it)
+        raise ReturnSignal(NONE if not vals else vals[0] if len(vals) == 1 else ExprList(vals))
+    return inner
+
+
+def _incdec(s: A.IncDec) -> Fn:
+    name, delta = s.target.id, s.delta
+
+    def inner(it: Any) -> None:
+        var = it.lookup(name)
+        if var is not None and type(var.value) is int:
+            var.value += delta
+            return
+        it._exec_incdec(s)
+    return inner
+
+
+def _cond(node: A.Expr) -> Callable[[Any], bool]:
+    f = expr_fn(node)
+    truth = ops.truth
+
+    def cond(it: Any) -> bool:
+        v = f(it)
+        return v != 0 if type(v) is int else truth(v)
+    return cond
+
+
+def _if(s: A.If) -> Fn:
+    cond, then, orelse = _cond(s.cond), s.then, s.orelse
+
+    def inner(it: Any) -> None:
+        if cond(it):
+            _run(it, then)
+        elif orelse is not None:
+            _run(it, orelse)
+    return inner
+
+
+def _for(s: A.For) -> Fn:
+    init, step, body = s.init, s.step, s.body
+    cond = _cond(s.cond) if s.cond is not None else (lambda it: True)
+
+    def inner(it: Any) -> None:
+        run = it.exec_stmt
+        if init is not None:
+            run(init)
+        while cond(it):
+            try:
+                for stmt in body:
+                    run(stmt)
+            except BreakSignal:
+                break
+            except ContinueSignal:  # as in Singular, continue skips the step: it goes on with the condition
+                continue
+            if step is not None:
+                run(step)
+    return inner
+
+
+def _while(s: A.While) -> Fn:
+    cond, body = _cond(s.cond), s.body
+
+    def inner(it: Any) -> None:
+        run = it.exec_stmt
+        while cond(it):
+            try:
+                for stmt in body:
+                    run(stmt)
+            except BreakSignal:
+                break
+            except ContinueSignal:
+                pass
+    return inner
+
