@@ -91,6 +91,17 @@ def int_(x: int | Number | Poly | str) -> int:
     return int(frac.numerator)
 
 
+@command("bigint")
+def bigint_(x: int | Number | Poly | str) -> int:
+    """bigint(x): x as an integer of any size (in mech the same as int).
+
+    Example:
+      bigint(2)^70;
+      → 1180591620717411303424
+    """
+    return int_(x)
+
+
 @command("intvec")
 def intvec(*xs: int | IntVec) -> IntVec:
     """intvec(a, b, ...): the vector of the ints a, b, ....

@@ -1,0 +1,48 @@
+"""Singular's everyday commands added in round 7 (issue 21): chinrem/farey on lists, ideals and
+matrices, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
+from __future__ import annotations
+
+import pytest
+
+from tests.util import error, run, run_singular
+
+SNIPPETS = {
+    "chinrem_farey": """
+ring r=0,x,dp;
+chinrem(intvec(4,3), intvec(5,7)); chinrem(list(4,3), list(5,7)); chinrem(list(1,2), list(5,7));
+ideal i1 = 2x+3x2+5x4; ideal i2 = x+51x4; ideal i3 = x+6x2+7x4;
+chinrem(list(i1,i2,i3), intvec(181,32003,31991));
+chinrem(list(ideal(x), ideal(x,x2)), list(2,3));
+matrix m1[2][2] = 3,4,5,x; matrix m2[2][2] = 8,2,667,64;
+matrix t = chinrem(list(m1,m2), intvec(3,7)); print(t);
+print(farey(t, 21));
+farey(-38,273); farey(235,273); farey(78,273); farey(300,273); farey(12,273); farey(7x+3,10);
+bigint b = bigint(7); b^30;
+""",
+    "assume_option": """
+ring r = 0,x,dp;
+ASSUME(0, 2+2 == 4); ASSUME(1, 0); "ok";
+option(warn); option(); option(nowarn); option();
+""",
+}
+
+
+def _lines(text: str) -> list[str]:
+    return [ln.rstrip() for ln in text.splitlines() if ln.strip() and not ln.startswith("// **")]
+
+
+@pytest.mark.singular
+@pytest.mark.parametrize("name", sorted(SNIPPETS))
+def test_as_singular(name: str) -> None:
+    assert _lines(run(SNIPPETS[name])) == _lines(run_singular(SNIPPETS[name]))
+
+
+def test_assume_and_error_stop_with_the_message() -> None:
+    assert "ASSUME failed:ASSUME(0, 1 == 2);" in error("int k = 1;\nASSUME(0, 1 == 2);").message
+    assert error('proc p() { ERROR("bad input"); }\np();').message.startswith("bad input")
+
+
+def test_echo_prints_each_line_before_it_runs() -> None:
+    out = run("echo = 1;\nint i = 3;\n\ni;\necho = 0;\ni;")
+    assert out.splitlines() == ["<string>   2> int i = 3;", "<string>   3> ", "<string>   4> i;", "3",
+                                "<string>   5> echo = 0;", "3"]
