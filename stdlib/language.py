@@ -30,7 +30,8 @@ def print_(ctx, x: Any) -> None:
     if isinstance(x, Map):  # as Singular: a map prints as phi[i]=... under its name
         ctx.write(render(x, ctx.argnames[0] if ctx.argnames else None) + "\n")
         return
-    ctx.write(print_form(x) + "\n")
+    name = ctx.argnames[0] if ctx.argnames and ctx.argnames[0].isidentifier() else "_"
+    ctx.write(print_form(x, name) + "\n")
 
 
 @command("dbprint")

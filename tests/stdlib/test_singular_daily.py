@@ -1,5 +1,5 @@
 """Singular's everyday commands added in round 7 (issue 21): chinrem/farey on lists, ideals and
-matrices, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
+matrices, lift, print of wide matrices, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
 from __future__ import annotations
 
 import pytest
@@ -18,6 +18,21 @@ matrix t = chinrem(list(m1,m2), intvec(3,7)); print(t);
 print(farey(t, 21));
 farey(-38,273); farey(235,273); farey(78,273); farey(300,273); farey(12,273); farey(7x+3,10);
 bigint b = bigint(7); b^30;
+""",
+    "lift": """
+ring A = 0,(x,y),dp;
+ideal I = x10+x9y2,y8-x2y7;
+matrix M = lift(I, xy13+y12); M;
+matrix T = lift(I, std(I)); print(T);
+print(lift(ideal(xy+y2, x2, y3), x2y)); print(lift(ideal(x2, xy, y3), x2y));
+print(lift(ideal(xy+y2, x2+y2), x2y)); print(lift(ideal(x2+y, xy), x3y));
+ideal K = std(ideal(x2, xy+y2)); print(lift(K, x2y));
+print(lift(std(ideal(x2,y2)), ideal(x3+x2y+y, x2)));
+ring r1 = 32003,(x,y,z),(c,dp);
+ideal i2 = std(jacob(y7+x3+xyz+z2));
+print(lift(i2, ideal(3x2+yz,7y6+2x2y+5xz)));
+matrix n[2][2] = (x+y+z)^3, (x+y)^7, 1, 2; print(n);
+matrix m[1][3] = x, (x+y+z)^3, y; print(m);
 """,
     "assume_option": """
 ring r = 0,x,dp;
