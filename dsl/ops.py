@@ -13,7 +13,7 @@ from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
 from .intmat import IntMat, intmat_op
 from .minpoly import compare_params
-from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, same_value, to_ideal, to_number, to_poly,
+from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number, to_poly,
                      typeof)
 
 Warn = Callable[[str], None]
@@ -230,6 +230,9 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
     if op == "+":
         if isinstance(a, str) and isinstance(b, str):
             return a + b
+        if isinstance(a, Ring) and isinstance(b, Ring):
+            from .rings import ring_sum
+            return ring_sum(a, b)
         if isinstance(a, List) and isinstance(b, List):
             return List(a.items + b.items)
     if _rank(a) >= 0 and _rank(b) >= 0:

@@ -213,3 +213,27 @@ def _field(char: int, params: tuple[str, ...]) -> Any:
         return base
     from ..kernel.ratfunc import RationalFunctionField
     return RationalFunctionField(char, params)
+
+
+def ring_sum(a: Ring, b: Ring) -> Ring:
+    """Singular's ``R + S``: the ring over both coefficient fields (QQ and Z/p give Z/p) in the
+    variables of R then S, ordered by R's blocks then S's (R's module component block kept first or
+    last); R + R is R."""
+    from ..kernel.algext import AlgebraicField
+    from .qrings import quotient_of
+    if a.poly == b.poly and a.params == b.params:
+        return a
+    for r in (a, b):
+        if quotient_of(r.poly) is not None or isinstance(r.poly.field, AlgebraicField):
+            raise MechRuntimeError("the sum of quotient rings or rings with a minpoly is not supported")
+    shared = set(a.names + a.params) & set(b.names + b.params)
+    if shared:
+        raise MechRuntimeError(f"ring sum: both rings have the names {', '.join(sorted(shared))}")
+    ca, cb = a.characteristic, b.characteristic
+    if ca and cb and ca != cb:
+        raise MechRuntimeError(f"ring sum: the characteristics {ca} and {cb} differ")
+    comp = [bl for bl in a.blocks if bl.kind in ("c", "C")]
+    first = bool(comp) and a.blocks[0].kind in ("c", "C")
+    inner = [bl for bl in a.blocks + b.blocks if bl.kind not in ("c", "C")]
+    blocks = (comp + inner) if first else (inner + comp)
+    return make_ring(ca or cb, a.params + b.params, list(a.names + b.names), blocks)

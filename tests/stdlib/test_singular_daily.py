@@ -1,5 +1,5 @@
 """Singular's everyday commands added in round 7 (issue 21): chinrem/farey on lists, ideals and
-matrices, lift, print of wide matrices, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
+matrices, lift, print of wide matrices, ring sums, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
 from __future__ import annotations
 
 import pytest
@@ -33,6 +33,12 @@ ideal i2 = std(jacob(y7+x3+xyz+z2));
 print(lift(i2, ideal(3x2+yz,7y6+2x2y+5xz)));
 matrix n[2][2] = (x+y+z)^3, (x+y)^7, 1, 2; print(n);
 matrix m[1][3] = x, (x+y+z)^3, y; print(m);
+""",
+    "ring_sum": """
+ring r1=0,x,(c,dp); ring r2=0,y,(c,dp);
+def r=r1+r2; r; setring r; (x+y)^2;
+ring r3=0,(x,y,z),ws(1,2,3); ring s=0,(a,b),dp; r3+s; s+r3;
+ring t=(0,p),(u,v),lp; r3+t; ring q=32003,(w),ds; q+s; r3+r3;
 """,
     "assume_option": """
 ring r = 0,x,dp;
