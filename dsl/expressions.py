@@ -11,7 +11,7 @@ from .errors import MechError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
 from .intmat import IntMat
-from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Proc, to_int, typeof
+from .values import NONE, ExprList, Ideal, IntVec, LibCommand, List, Map, Matrix, Proc, to_int, typeof
 
 
 class Expressions:
@@ -157,6 +157,8 @@ class Expressions:
                 v = var.value
                 if isinstance(v, Proc):
                     return self.call_proc(v, self._values(node.args), node)
+                if isinstance(v, LibCommand):
+                    return self.call_command(v.command, node.args)
                 if isinstance(v, Map):
                     nvars = len(v.source.names)
                     if len(v.images) < nvars:  # Singular's quirk: applying a map stores its missing images (0)

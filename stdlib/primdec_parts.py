@@ -99,3 +99,11 @@ def test_primary(pr: List, k: Ideal) -> int:
     primaries = [c[0] if isinstance(c, List) else c for c in pr]
     meet = intersect(*[q.nonzero() for q in primaries], ring=ring) if primaries else [ring.one()]
     return int(ideals_equal(meet, k.nonzero(), ring=ring))
+
+
+@command("equidim", lib="primdec.lib")
+def equidim_ehv(I: Ideal, m: int) -> List:
+    """equidim(I, 1): equidim(I) (Singular's second argument picks the algorithm of Eisenbud, Huneke
+    and Vasconcelos; the parts of lower dimension, made of embedded components, are not unique)."""
+    _global(I, "equidim")
+    return List([_ideal(I.ring, a) for a in _run("equidim", P.equidim, I)])

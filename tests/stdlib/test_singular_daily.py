@@ -1,5 +1,5 @@
 """Singular's everyday commands added in round 7 (issue 21): chinrem/farey on lists, ideals and
-matrices, lift, print of wide matrices, ring sums, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
+matrices, lift, print of wide matrices, ring sums, primdec.lib's equidimMax/prepareAss/testPrimary, library procedures as values, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
 from __future__ import annotations
 
 import pytest
@@ -39,6 +39,16 @@ ring r1=0,x,(c,dp); ring r2=0,y,(c,dp);
 def r=r1+r2; r; setring r; (x+y)^2;
 ring r3=0,(x,y,z),ws(1,2,3); ring s=0,(a,b),dp; r3+s; s+r3;
 ring t=(0,p),(u,v),lp; r3+t; ring q=32003,(w),ds; q+s; r3+r3;
+""",
+    "primdec_parts": """
+LIB "primdec.lib";
+ring r=0,(x,y,z),dp;
+equidimMax(ideal(1)); equidimMax(ideal(0)); prepareAss(ideal(1)); prepareAss(ideal(0));
+radicalEHV(ideal(0)); radicalEHV(ideal(x2,y2)); equidimMaxEHV(intersect(ideal(z), ideal(x,y), ideal(x2,z2)));
+list pr = primdecGTZ(ideal(x2,xy)); testPrimary(pr, ideal(x2,xy)); testPrimary(pr, ideal(x2));
+prepareAss(intersect(ideal(z),ideal(x,y),ideal(x2,z2),ideal(x5,y5,z5)));
+proc apply1(method, I) { def res = method(I); return(size(res)); }
+apply1(minAssGTZ, ideal(xy)); typeof(minAssGTZ);
 """,
     "assume_option": """
 ring r = 0,x,dp;
