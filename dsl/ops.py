@@ -264,16 +264,21 @@ def power(a: Any, k: Any) -> Any:
         raise MechTypeError(f"operator ^ needs an int exponent, not {typeof(k)}")
     if isinstance(a, Number) or (isinstance(a, Poly) and len(a.terms) == 1):
         _check_power(_coeff_bits(a.c if isinstance(a, Number) else a.lc()), abs(k), MAX_COEFF_BITS, "number")
-    if isinstance(a, Number):
-        if k < 0:
-            if a.c == 0:
-                raise MechRuntimeError("division by 0")
-            return Number(a.ring, (a.ring.field.one / a.c) ** (-k))
-        return Number(a.ring, a.c ** k)
-    if isinstance(a, Poly):
-        if k < 0:
-            raise MechRuntimeError("negative exponent for a poly")
-        return a ** k
+    try:  # flint refuses sizes it cannot represent (rational functions of parameters)
+        if isinstance(a, Number):
+            if k < 0:
+                if a.c == 0:
+                    raise MechRuntimeError("division by 0")
+                return Number(a.ring, (a.ring.field.one / a.c) ** (-k))
+            return Number(a.ring, a.c ** k)
+        if isinstance(a, Poly):
+            if k < 0:
+                raise MechRuntimeError("negative exponent for a poly")
+            return a ** k
+    except (ValueError, OverflowError) as e:
+        if "large" not in str(e) and not isinstance(e, OverflowError):
+            raise
+        raise MechRuntimeError(f"{typeof(a)} too large: the power {k} cannot be represented") from None
     if isinstance(a, Ideal):
         if k < 0:
             raise MechRuntimeError("negative exponent for an ideal")
