@@ -205,7 +205,8 @@ class Expressions:
 
 
 def _substring(s: str, start: int, length: int) -> str:
-    """Singular's ``s[start, length]``: ``length`` characters from position ``start`` (1-based)."""
+    """Singular's ``s[start, length]``: ``length`` characters from position ``start`` (1-based), padded
+    with blanks past the end of s."""
     if start < 1 or start > len(s) or length < 0:
         raise MechRuntimeError(f"index [{start},{length}] out of range for a string of length {len(s)}")
-    return s[start - 1:start - 1 + length]
+    return s[start - 1:start - 1 + length].ljust(length)

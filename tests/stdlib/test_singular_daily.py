@@ -1,5 +1,5 @@
 """Singular's everyday commands added in round 7 (issue 21): chinrem/farey on lists, ideals and
-matrices, lift, print of wide matrices, ring sums, primdec.lib's equidimMax/prepareAss/testPrimary, library procedures as values, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
+matrices, lift, print of wide matrices, ring sums, primdec.lib's equidimMax/prepareAss/testPrimary, library procedures as values, redeclarations reading the new variable, padded substrings, ASSUME, ERROR, option(warn), echo — outputs compared with the installed Singular's."""
 from __future__ import annotations
 
 import pytest
@@ -49,6 +49,13 @@ list pr = primdecGTZ(ideal(x2,xy)); testPrimary(pr, ideal(x2,xy)); testPrimary(p
 prepareAss(intersect(ideal(z),ideal(x,y),ideal(x2,z2),ideal(x5,y5,z5)));
 proc apply1(method, I) { def res = method(I); return(size(res)); }
 apply1(minAssGTZ, ideal(xy)); typeof(minAssGTZ);
+""",
+    "redeclaration_substring": """
+int i = 3; i = i+1; int i = i+1; i;
+ring r=0,(x,y),dp; ideal I = x; ideal I = I, y; I; poly f = x; poly f = f+1; f;
+string s = "a"; string s = s+"b"; s; intvec v = 1,2; intvec v = v,3; v;
+proc p() { int k = 2; int k = k+1; return(k); } p();
+string t = "abcde"; ">>"+t[1,10]+"<<"; ">>"+t[3,5]+"<<"; ">>"+t[5,1]+"<<";
 """,
     "assume_option": """
 ring r = 0,x,dp;
