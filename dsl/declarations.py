@@ -132,7 +132,7 @@ class Declarations:
                 raise MechTypeError(f"cannot convert {typeof(v)} to ring")
             ring = Ring(v.poly, v.params, v.blocks)
         else:
-            ring = build_ring(s.value, self.eval)
+            ring = build_ring(s.value, self.eval, self.warn)
         ring.name = s.items[0].name
         self.rings.add(ring)
         self.declare(ring.name, "ring", ring)

@@ -54,16 +54,26 @@ def default_ring() -> Ring:
     return make_ring(32003, (), ["x", "y", "z"], [OrderBlock("dp", 3), OrderBlock("C")])
 
 
-def build_ring(items: list[A.Expr], evaluate: Evaluate) -> Ring:
+def build_ring(items: list[A.Expr], evaluate: Evaluate, warn: Callable[[str], None] = lambda _: None) -> Ring:
+    """The ring of a declaration ``ring r = items;`` (an invalid characteristic becomes 32003, with a
+    warning through ``warn``, as in Singular)."""
     if len(items) != 3:
         raise MechRuntimeError("a ring is declared as ring r = characteristic, (variables), ordering;")
     char, params = _at(items[0], lambda: _characteristic(items[0], evaluate))
+    if char > 1 and not _is_prime(char):
+        warn(f"{char} is invalid as characteristic of the ground field. 32003 is used.")
+        char = 32003
     names = _at(items[1], lambda: _names(items[1], evaluate))
     clash = sorted(set(names) & set(params))
     if clash:
         raise MechRuntimeError(f"'{clash[0]}' is both a parameter and a variable", items[1].pos, None, True)
     blocks = _at(items[2], lambda: _ordering(items[2], evaluate, len(names)))
     return _at(items[0], lambda: make_ring(char, params, names, blocks))
+
+
+def _is_prime(n: int) -> bool:
+    import flint
+    return bool(flint.fmpz(n).is_prime())
 
 
 def _at(node: A.Expr, build: Callable[[], Any]) -> Any:

@@ -35,6 +35,8 @@ def ideal(ctx, *xs: Any) -> Ideal:
         from ..dsl.qrings import quotient_ideal
         gens = quotient_ideal(xs[0].poly)
         return Ideal(xs[0].poly, gens or [xs[0].poly.zero()])
+    if any(isinstance(x, IntVec) for x in xs):  # an intvec gives its entries as constants
+        xs = tuple(y for x in xs for y in (x.values if isinstance(x, IntVec) else (x,)))
     return to_ideal(ExprList(xs), ring) if xs else Ideal(ring, [])
 
 

@@ -57,6 +57,11 @@ string s = "a"; string s = s+"b"; s; intvec v = 1,2; intvec v = v,3; v;
 proc p() { int k = 2; int k = k+1; return(k); } p();
 string t = "abcde"; ">>"+t[1,10]+"<<"; ">>"+t[3,5]+"<<"; ">>"+t[5,1]+"<<";
 """,
+    "char_trace_intvec": """
+intmat m[2][2]=1,2,3,4; trace(m);
+ring r3 = 10,(x),dp; r3; ring r4 = 32004,x,dp; charstr(r4);
+intvec w = 1,0,3; ideal(w); size(ideal(w));
+""",
     "assume_option": """
 ring r = 0,x,dp;
 ASSUME(0, 2+2 == 4); ASSUME(1, 0); "ok";
