@@ -1,5 +1,5 @@
 """Chinese remaindering and rational reconstruction, coefficient by coefficient (Singular's
-``chinrem`` and ``farey``): the lifting steps of modular methods."""
+``chinrem`` and ``farey``): the lifting steps of modular methods; and ``binomial`` (general.lib)."""
 from __future__ import annotations
 
 from math import gcd as int_gcd, isqrt
@@ -156,3 +156,16 @@ def farey(ctx, x: int | Poly | Ideal | Matrix, n: int) -> Any:
     if isinstance(x, Ideal):
         return Ideal(x.ring, [f(p) for p in x.gens])
     return Matrix(x.ring, x.nrows, x.ncols, [f(p) for p in x.entries])
+
+
+@command("binomial", lib="general.lib")
+def binomial(n: int, k: int) -> int:
+    """binomial(n, k): the binomial coefficient n choose k (0 unless 0 <= k <= n).
+
+    Example:
+      LIB "general.lib";
+      binomial(10, 3);
+      → 120
+    """
+    from math import comb
+    return comb(n, k) if 0 <= k <= n else 0

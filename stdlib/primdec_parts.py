@@ -94,7 +94,24 @@ def test_primary(pr: List, k: Ideal) -> int:
       testPrimary(primdecGTZ(i), i);
       → 1
     """
-    _global(k, "testPrimary")
+    return _intersect_to(pr, k, "testPrimary")
+
+
+@command("testPrimaryE", lib="primdec.lib")
+def test_primary_e(pr: List, k: Ideal) -> int:
+    """testPrimaryE(pr, k): testPrimary(pr, k), pr possibly empty (the decomposition of the unit ideal).
+
+    Example:
+      LIB "primdec.lib";
+      ring r = 0,(x,y),dp;
+      testPrimaryE(list(), ideal(1));
+      → 1
+    """
+    return _intersect_to(pr, k, "testPrimaryE")
+
+
+def _intersect_to(pr: List, k: Ideal, cmd: str) -> int:
+    _global(k, cmd)
     ring = k.ring
     primaries = [c[0] if isinstance(c, List) else c for c in pr]
     meet = intersect(*[q.nonzero() for q in primaries], ring=ring) if primaries else [ring.one()]
