@@ -62,6 +62,12 @@ intmat m[2][2]=1,2,3,4; trace(m);
 ring r3 = 10,(x),dp; r3; ring r4 = 32004,x,dp; charstr(r4);
 intvec w = 1,0,3; ideal(w); size(ideal(w));
 """,
+    "weighted_deg": """
+ring r = 0,(x,y,z),wp(1,2,3); deg(x+y2+z3); deg(ideal(x,y2));
+ring s = 0,(x,y,z),(wp(1,2),dp(1)); deg(x+y2+z3); ring t = 0,(x,y,z),ws(1,2,3); deg(x+y2+z3);
+ring u=0,(x,y,z),(a(1,2,3),dp); deg(x+y2+z3); ring v=0,(x,y,z),ls; deg(x+y2+z3);
+ring w=0,(x,y,z),(dp(1),wp(2,3)); deg(x+y2+z3); deg(x+y2+z3, intvec(1,1,1));
+""",
     "assume_option": """
 ring r = 0,x,dp;
 ASSUME(0, 2+2 == 4); ASSUME(1, 0); "ok";
