@@ -91,6 +91,11 @@ def test_assume_and_error_stop_with_the_message() -> None:
     assert error('proc p() { ERROR("bad input"); }\np();').message.startswith("bad input")
 
 
+def test_an_invalid_characteristic_becomes_32003_with_a_warning() -> None:
+    out = run("ring r = 4,(x),dp; charstr(r);")
+    assert out.splitlines() == ["// ** 4 is invalid as characteristic of the ground field. 32003 is used.", "ZZ/32003"]
+
+
 def test_echo_prints_each_line_before_it_runs() -> None:
     out = run("echo = 1;\nint i = 3;\n\ni;\necho = 0;\ni;")
     assert out.splitlines() == ["<string>   2> int i = 3;", "<string>   3> ", "<string>   4> i;", "3",
