@@ -19,6 +19,8 @@ from tst_source import MARKER
 Ring = tuple[str, str, str]
 
 _LIST_HEAD = re.compile(r"\[(\d+)\]:$")
+#: a line ``echo`` prints (``FILE  LINE> text``): the script's text, its file name and lines differ
+_ECHO = re.compile(r"^\S+ +\d+[>.](?: |$)")
 _GEN = re.compile(r"([A-Za-z_@][\w@]*)\[(\d+)\]=(.*)$")
 _ENTRY = re.compile(r"([A-Za-z_@][\w@]*)\[(\d+),(\d+)\]=(.*)$")
 _ERROR = re.compile(r"^\s*\? ")
@@ -56,8 +58,9 @@ def split_error(output: str) -> tuple[str, Optional[str]]:
 
 
 def normalize(output: str) -> str:
-    """The text compared exactly: trailing blanks, blank lines, ``// **`` notes and markers dropped."""
-    keep = [ln.rstrip() for ln in output.splitlines()]
+    """The text compared exactly: trailing blanks, blank lines, ``// **`` notes, markers and the lines
+    ``echo`` prints dropped."""
+    keep = [ln.rstrip() for ln in output.splitlines() if not _ECHO.match(ln)]
     return "\n".join(ln for ln in keep if ln and not ln.lstrip().startswith("// **") and not ln.startswith(MARKER))
 
 
@@ -69,6 +72,8 @@ def parse(output: str) -> list[Item]:
         line = raw.rstrip()
         if line.startswith(MARKER):
             ring = tuple((line[len(MARKER):].split("@@") + ["0", "0"])[:3])
+        elif _ECHO.match(line):
+            continue
         elif line and not line.lstrip().startswith("// **"):
             lines.append((no, ring, line))
     pos = 0

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections import Counter, defaultdict
 from dataclasses import dataclass
 
+from tst_explained import EXPLAINED
 from tst_source import FOLDERS, Case
 
 CATEGORIES = ("agree", "differ", "unsupported", "error", "crash", "timeout")
@@ -71,7 +72,8 @@ def report(results: list[Result], excluded: list[Case], meta: dict) -> str:
         rs = sorted((r for r in run_ if r.category == cat and key in (None, r.key)), key=lambda r: r.name)
         lines += ["", f"## {title} ({len(rs)})", ""]
         shown = (lambda r: r.detail) if key else (lambda r: r.key + (f" — `{r.detail}`" if r.detail else ""))
-        lines += [f"- `{r.name}`: {_md(shown(r))}" for r in rs] or ["none"]
+        lines += [f"- `{r.name}`: {_md(shown(r))}" + (f" — **why:** {EXPLAINED[r.name]}" if cat == "differ" and
+                                                     r.name in EXPLAINED else "") for r in rs] or ["none"]
     lines += ["", "## Set aside", ""]
     for key, n in Counter(r.key for r in aside).most_common():
         names = sorted(r.name for r in aside if r.key == key)

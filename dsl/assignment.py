@@ -7,6 +7,7 @@ from typing import Any
 
 from ..kernel import Poly
 from . import ast as A
+from .echo import mark_echo
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .intmat import IntMat, to_intmat
 from .minpoly import set_minpoly
@@ -64,6 +65,8 @@ class Assignment:
                 return
             if name in self.sysvars or name in ("timer", "rtimer"):
                 self.sysvars[name] = to_int(value)
+                if name == "echo":
+                    mark_echo(self)
                 return
             if self.ring is not None and self.ring.var_index(name) is not None:
                 raise MechRuntimeError(f"cannot assign to the ring variable '{name}'")

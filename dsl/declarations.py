@@ -15,10 +15,15 @@ from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Ri
 UNSUPPORTED_TYPES = {"vector", "module", "resolution", "link"}
 
 
+#: The types whose redeclaration ``T x = ...x...;`` reads the new, default x, as Singular does.
+_FRESH = frozenset(("int", "bigint", "string", "number", "poly", "ideal", "intvec"))
+
+
 class Declarations:
     """Declaration statements (part of the interpreter)."""
 
     def _exec_decl(self, s: A.Decl) -> None:
+        """``T x = value;`` (a redeclared x of the same scope starts anew before value is read)."""
         typ = s.type
         if typ in UNSUPPORTED_TYPES:
             raise MechTypeError(f"type '{typ}' is not supported yet")
@@ -38,6 +43,12 @@ class Declarations:
         if s.value is None:
             values = [None] * len(s.items)
         elif len(s.items) == 1:
+            if typ in _FRESH and not s.items[0].dims:  # as Singular: `int i = i+1;` reads the new i
+                old = self.lookup(s.items[0].name)
+                if old is not None and old.level == self.frames[-1].level and old.type == typ:
+                    var = self.declare(s.items[0].name, typ, self._default(typ))
+                    var.value = self._converted(self._rhs(s.value), typ, self.ring.poly if self.ring else None)
+                    return
             values = [self._rhs(s.value)]
         else:
             values = self._values(s.value)
@@ -121,7 +132,7 @@ class Declarations:
                 raise MechTypeError(f"cannot convert {typeof(v)} to ring")
             ring = Ring(v.poly, v.params, v.blocks)
         else:
-            ring = build_ring(s.value, self.eval)
+            ring = build_ring(s.value, self.eval, self.warn)
         ring.name = s.items[0].name
         self.rings.add(ring)
         self.declare(ring.name, "ring", ring)

@@ -12,7 +12,7 @@ from .errors import MechError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
 from .intmat import IntMat
-from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Proc, to_int, typeof
+from .values import NONE, ExprList, Ideal, IntVec, LibCommand, List, Map, Matrix, Proc, to_int, typeof
 
 
 class Expressions:
@@ -177,6 +177,8 @@ class Expressions:
                 v = var.value
                 if isinstance(v, Proc):
                     return self.call_proc(v, self._values(node.args), node)
+                if isinstance(v, LibCommand):
+                    return self.call_command(v.command, node.args)
                 if isinstance(v, Map):
                     nvars = len(v.source.names)
                     if len(v.images) < nvars:  # Singular's quirk: applying a map stores its missing images (0)
@@ -223,7 +225,8 @@ class Expressions:
 
 
 def _substring(s: str, start: int, length: int) -> str:
-    """Singular's ``s[start, length]``: ``length`` characters from position ``start`` (1-based)."""
+    """Singular's ``s[start, length]``: ``length`` characters from position ``start`` (1-based), padded
+    with blanks past the end of s."""
     if start < 1 or start > len(s) or length < 0:
         raise MechRuntimeError(f"index [{start},{length}] out of range for a string of length {len(s)}")
-    return s[start - 1:start - 1 + length]
+    return s[start - 1:start - 1 + length].ljust(length)

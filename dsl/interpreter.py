@@ -22,6 +22,7 @@ from .declarations import Declarations
 from .errors import MechError, MechRuntimeError, Source
 from .expressions import Expressions
 from .libraries import Libraries
+from .echo import echo_lines
 from .limits import Limits
 from .maps import Maps
 from .names import Names
@@ -64,7 +65,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.last: Any = NONE
         self.argnames: list[str] = []
         self.ticks_per_sec = 1
-        self.sysvars: dict[str, int] = {"printlevel": 0}
+        self.sysvars: dict[str, int] = {"printlevel": 0, "echo": 0}
         self._t0 = time.process_time()
         self._r0 = time.time()
         self._exec: dict[type, Callable] = {
@@ -116,6 +117,8 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.source = source
         try:
             for stmt in program.body:
+                if self.sysvars["echo"] > 0:
+                    echo_lines(self, stmt)
                 self.guarded(self.exec_stmt, stmt)
         except (BreakSignal, ContinueSignal) as sig:
             word = "break" if isinstance(sig, BreakSignal) else "continue"

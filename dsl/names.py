@@ -11,7 +11,7 @@ from .errors import MechError, MechNameError, MechRuntimeError
 from .minpoly import get_minpoly
 from .printing import is_short
 from .rings import indexed_names
-from .values import ExprList, Number, Ring
+from .values import ExprList, LibCommand, Number, Ring
 
 
 class Names:
@@ -36,6 +36,9 @@ class Names:
             m = self._monomial(name)
             if m is not None:
                 return m
+        cmd = self.registry.find(name, self.loaded_libs)
+        if cmd is not None and cmd.lib:  # a library procedure as a value
+            return LibCommand(cmd)
         raise self._unknown(name)
 
     def _special(self, name: str) -> Any:

@@ -13,7 +13,7 @@ from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
 from .intmat import IntMat, intmat_op
 from .minpoly import compare_params
-from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, same_value, to_ideal, to_number, to_poly,
+from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number, to_poly,
                      typeof)
 
 Warn = Callable[[str], None]
@@ -230,6 +230,9 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
     if op == "+":
         if isinstance(a, str) and isinstance(b, str):
             return a + b
+        if isinstance(a, Ring) and isinstance(b, Ring):
+            from .rings import ring_sum
+            return ring_sum(a, b)
         if isinstance(a, List) and isinstance(b, List):
             return List(a.items + b.items)
     if _rank(a) >= 0 and _rank(b) >= 0:
@@ -261,16 +264,21 @@ def power(a: Any, k: Any) -> Any:
         raise MechTypeError(f"operator ^ needs an int exponent, not {typeof(k)}")
     if isinstance(a, Number) or (isinstance(a, Poly) and len(a.terms) == 1):
         _check_power(_coeff_bits(a.c if isinstance(a, Number) else a.lc()), abs(k), MAX_COEFF_BITS, "number")
-    if isinstance(a, Number):
-        if k < 0:
-            if a.c == 0:
-                raise MechRuntimeError("division by 0")
-            return Number(a.ring, (a.ring.field.one / a.c) ** (-k))
-        return Number(a.ring, a.c ** k)
-    if isinstance(a, Poly):
-        if k < 0:
-            raise MechRuntimeError("negative exponent for a poly")
-        return a ** k
+    try:  # flint refuses sizes it cannot represent (rational functions of parameters)
+        if isinstance(a, Number):
+            if k < 0:
+                if a.c == 0:
+                    raise MechRuntimeError("division by 0")
+                return Number(a.ring, (a.ring.field.one / a.c) ** (-k))
+            return Number(a.ring, a.c ** k)
+        if isinstance(a, Poly):
+            if k < 0:
+                raise MechRuntimeError("negative exponent for a poly")
+            return a ** k
+    except (ValueError, OverflowError) as e:
+        if "large" not in str(e) and not isinstance(e, OverflowError):
+            raise
+        raise MechRuntimeError(f"{typeof(a)} too large: the power {k} cannot be represented") from None
     if isinstance(a, Ideal):
         if k < 0:
             raise MechRuntimeError("negative exponent for an ideal")

@@ -6,7 +6,7 @@ OPTION_ORDER = ["prot", "redSB", "notBuckets", "notSugar", "interrupt", "sugarCr
                 "morePairs", "returnSB", "fastHC", "staircaseBound", "multBound", "degBound", "redTail",
                 "redThrough", "lazy", "intStrategy", "infRedTail", "notRegularity", "weightM", "mem", "yacc",
                 "redefine", "reading", "loadLib", "debugLib", "loadProc", "defRes", "usage", "Imap", "prompt",
-                "notWarnSB", "contentSB"]
+                "notWarnSB", "contentSB", "warn"]
 #: The options a session starts with.
 DEFAULT_OPTIONS = {"redTail", "redThrough", "intStrategy", "redefine", "usage", "prompt"}
 

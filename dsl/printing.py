@@ -184,10 +184,11 @@ def _render_list(lst: List, indent: str) -> str:
     return "\n".join(lines)
 
 
-def print_form(v: Any) -> str:
-    """What ``print(v)`` prints: matrices as aligned rows, ideals and intvecs as columns."""
+def print_form(v: Any, name: str = "_") -> str:
+    """What ``print(v)`` prints: matrices as aligned rows (too long entries as ``name[i,j]``), ideals
+    and intvecs as columns."""
     if isinstance(v, Matrix):
-        return _matrix_rows([[poly_str(x) for x in row] for row in v.rows()])
+        return _matrix_rows([[poly_str(x) for x in row] for row in v.rows()], name)
     if isinstance(v, Ideal):
         return ",\n".join(poly_str(g) for g in v.gens)
     if isinstance(v, IntVec):
@@ -201,15 +202,35 @@ def print_form(v: Any) -> str:
     return render(v)
 
 
-def _matrix_rows(cells: list[list[str]]) -> str:
+PAGEWIDTH = 80
+
+
+def _matrix_rows(cells: list[list[str]], name: str = "_") -> str:
     """Rows of ``print(M)``: every entry but the last followed by a comma, each column padded to
-    its widest such cell."""
+    its widest such cell.  As Singular: an entry wider than the page is shown as ``name[i,j]``, and
+    when the rows do not fit on the page, so is every entry wider than the page over the columns
+    (at least 8 and the width of ``name[nrows,ncols]``)."""
     if not cells or not cells[0]:
         return ""
     nrows, ncols = len(cells), len(cells[0])
-    texts = [[s + ("" if (i, j) == (nrows - 1, ncols - 1) else ",") for j, s in enumerate(row)]
-             for i, row in enumerate(cells)]
+
+    def comma(i: int, j: int) -> str:
+        return "" if (i, j) == (nrows - 1, ncols - 1) else ","
+
+    def named(i: int, j: int) -> str:
+        return f"{name}[{i + 1},{j + 1}]" + comma(i, j)
+    vl = max(PAGEWIDTH // ncols, 8, len(f"{name}[{ncols},{nrows}]"))
+    texts = [[s + comma(i, j) for j, s in enumerate(row)] for i, row in enumerate(cells)]
+    for i in range(nrows):
+        for j in range(ncols):
+            if len(texts[i][j]) > PAGEWIDTH:
+                texts[i][j] = named(i, j)
+                if comma(i, j):
+                    vl = max(vl, len(texts[i][j]))
     widths = [max(len(row[j]) for row in texts) for j in range(ncols)]
+    if sum(widths) > PAGEWIDTH:
+        texts = [[named(i, j) if len(t) > vl else t for j, t in enumerate(row)] for i, row in enumerate(texts)]
+        widths = [max(len(row[j]) for row in texts) for j in range(ncols)]
     return "\n".join("".join(t.ljust(w) for t, w in zip(row, widths)) for row in texts)
 
 

@@ -54,16 +54,26 @@ def default_ring() -> Ring:
     return make_ring(32003, (), ["x", "y", "z"], [OrderBlock("dp", 3), OrderBlock("C")])
 
 
-def build_ring(items: list[A.Expr], evaluate: Evaluate) -> Ring:
+def build_ring(items: list[A.Expr], evaluate: Evaluate, warn: Callable[[str], None] = lambda _: None) -> Ring:
+    """The ring of a declaration ``ring r = items;`` (an invalid characteristic becomes 32003, with a
+    warning through ``warn``, as in Singular)."""
     if len(items) != 3:
         raise MechRuntimeError("a ring is declared as ring r = characteristic, (variables), ordering;")
     char, params = _at(items[0], lambda: _characteristic(items[0], evaluate))
+    if char > 1 and not _is_prime(char):
+        warn(f"{char} is invalid as characteristic of the ground field. 32003 is used.")
+        char = 32003
     names = _at(items[1], lambda: _names(items[1], evaluate))
     clash = sorted(set(names) & set(params))
     if clash:
         raise MechRuntimeError(f"'{clash[0]}' is both a parameter and a variable", items[1].pos, None, True)
     blocks = _at(items[2], lambda: _ordering(items[2], evaluate, len(names)))
     return _at(items[0], lambda: make_ring(char, params, names, blocks))
+
+
+def _is_prime(n: int) -> bool:
+    import flint
+    return bool(flint.fmpz(n).is_prime())
 
 
 def _at(node: A.Expr, build: Callable[[], Any]) -> Any:
@@ -213,3 +223,27 @@ def _field(char: int, params: tuple[str, ...]) -> Any:
         return base
     from ..kernel.ratfunc import RationalFunctionField
     return RationalFunctionField(char, params)
+
+
+def ring_sum(a: Ring, b: Ring) -> Ring:
+    """Singular's ``R + S``: the ring over both coefficient fields (QQ and Z/p give Z/p) in the
+    variables of R then S, ordered by R's blocks then S's (R's module component block kept first or
+    last); R + R is R."""
+    from ..kernel.algext import AlgebraicField
+    from .qrings import quotient_of
+    if a.poly == b.poly and a.params == b.params:
+        return a
+    for r in (a, b):
+        if quotient_of(r.poly) is not None or isinstance(r.poly.field, AlgebraicField):
+            raise MechRuntimeError("the sum of quotient rings or rings with a minpoly is not supported")
+    shared = set(a.names + a.params) & set(b.names + b.params)
+    if shared:
+        raise MechRuntimeError(f"ring sum: both rings have the names {', '.join(sorted(shared))}")
+    ca, cb = a.characteristic, b.characteristic
+    if ca and cb and ca != cb:
+        raise MechRuntimeError(f"ring sum: the characteristics {ca} and {cb} differ")
+    comp = [bl for bl in a.blocks if bl.kind in ("c", "C")]
+    first = bool(comp) and a.blocks[0].kind in ("c", "C")
+    inner = [bl for bl in a.blocks + b.blocks if bl.kind not in ("c", "C")]
+    blocks = (comp + inner) if first else (inner + comp)
+    return make_ring(ca or cb, a.params + b.params, list(a.names + b.names), blocks)

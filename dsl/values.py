@@ -340,8 +340,20 @@ class Proc:
     body_line: int = 0
 
 
+@dataclass(frozen=True)
+class LibCommand:
+    """A library command used as a value (Singular's library procedures are values of type proc:
+    ``testMinAss(minAssGTZ, I)``); calling it calls the command."""
+
+    command: Any
+
+    def __str__(self) -> str:
+        return f"// the {self.command.lib} procedure {self.command.name}"
+
+
 TYPE_NAMES = {int: "int", str: "string", Number: "number", Poly: "poly", Ideal: "ideal", Matrix: "matrix",
-              IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none"}
+              IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none",
+              LibCommand: "proc"}
 
 
 def typeof(v: Any) -> str:

@@ -35,6 +35,8 @@ def ideal(ctx, *xs: Any) -> Ideal:
         from ..dsl.qrings import quotient_ideal
         gens = quotient_ideal(xs[0].poly)
         return Ideal(xs[0].poly, gens or [xs[0].poly.zero()])
+    if any(isinstance(x, IntVec) for x in xs):  # an intvec gives its entries as constants
+        xs = tuple(y for x in xs for y in (x.values if isinstance(x, IntVec) else (x,)))
     return to_ideal(ExprList(xs), ring) if xs else Ideal(ring, [])
 
 
@@ -89,6 +91,17 @@ def int_(x: int | Number | Poly | str) -> int:
     if frac.denominator != 1:
         raise MechRuntimeError(f"int: {frac} is not an integer")
     return int(frac.numerator)
+
+
+@command("bigint")
+def bigint_(x: int | Number | Poly | str) -> int:
+    """bigint(x): x as an integer of any size (in mech the same as int).
+
+    Example:
+      bigint(2)^70;
+      → 1180591620717411303424
+    """
+    return int_(x)
 
 
 @command("intvec")

@@ -53,3 +53,15 @@ def det_intmat(m: IntMat) -> int:
 @command("size")
 def size_intmat(m: IntMat) -> int:
     return len(m.values)
+
+
+@command("trace")
+def trace_intmat(m: IntMat) -> int:
+    """trace(m): the sum of the diagonal entries of the intmat m.
+
+    Example:
+      intmat m[2][2] = 1,2,3,4;
+      trace(m);
+      → 5
+    """
+    return sum(m.values[i * m.ncols + i] for i in range(min(m.nrows, m.ncols)))

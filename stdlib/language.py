@@ -1,5 +1,5 @@
 """The interpreter's own commands (``print``, ``defined``, ``nameof``, ``execute``, ``option``,
-``system``, ``export``) and the help texts of the language's keywords and types (``help if;``)."""
+``system``, ``export``, ``ERROR``, ``ASSUME``) and the help texts of the language's keywords and types (``help if;``)."""
 from __future__ import annotations
 
 from typing import Any
@@ -30,7 +30,8 @@ def print_(ctx, x: Any) -> None:
     if isinstance(x, Map):  # as Singular: a map prints as phi[i]=... under its name
         ctx.write(render(x, ctx.argnames[0] if ctx.argnames else None) + "\n")
         return
-    ctx.write(print_form(x) + "\n")
+    name = ctx.argnames[0] if ctx.argnames and ctx.argnames[0].isidentifier() else "_"
+    ctx.write(print_form(x, name) + "\n")
 
 
 @command("dbprint")
@@ -166,6 +167,35 @@ def export(ctx, *nodes: A.Expr) -> None:
         if not isinstance(n, A.Name):
             raise MechTypeError("export needs variable names")
         ctx.export(n.id)
+
+
+@command("ERROR")
+def error_(ctx, message: str) -> None:
+    """ERROR(s): stop with the error message s (in a procedure: the procedure and its callers).
+
+    Example:
+      int k = 2;
+      if (k > 3) { ERROR("k is too large"); }
+      k;
+      → 2
+    """
+    raise MechRuntimeError(str(message))
+
+
+@command("ASSUME")
+def assume(ctx, level: int, holds: int) -> None:
+    """ASSUME(level, cond): stop with an error when the int cond is 0 and level is 0 (checks of a
+    higher level are off, as in Singular by default).
+
+    Example:
+      ASSUME(0, 2 + 2 == 4);
+      ASSUME(1, 0);
+      "checked";
+      → checked
+    """
+    if level <= 0 and not holds:
+        line = ctx.source.line(ctx.stmt.pos.line + ctx.line_shift).strip() if ctx.stmt else ""
+        raise MechRuntimeError(f"ASSUME failed:{line}")
 
 
 # ---------------------------------------------------------------- help topics of the language

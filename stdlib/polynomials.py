@@ -2,7 +2,7 @@
 ``leadmonom``), ``deg``, derivatives (``diff``, ``jacob``), ``subst`` and ``maxideal``."""
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.registry import command
@@ -85,9 +85,27 @@ def leadmonom(f: Poly) -> Poly:
     return f.ring.zero() if f.is_zero() else f.ring.monomial(f.lm())
 
 
+def _ring_weights(ring: Any) -> Optional[list[int]]:
+    """The variables' weights deg uses without a weight vector, as Singular: those of the first weighted
+    block (a, wp, ws, Wp, Ws) covering a variable, else 1 (None: all 1)."""
+    weights: list[Optional[int]] = [None] * ring.nvars
+    pos = 0
+    for b in ring.order.blocks:
+        if b.kind == "a" or b.kind in ("wp", "Wp", "ws", "Ws"):
+            for j, v in enumerate(b.weights[:ring.nvars - pos]):
+                if weights[pos + j] is None:
+                    weights[pos + j] = abs(v)
+        if b.kind != "a":
+            pos += b.size
+    if all(x is None for x in weights):
+        return None
+    return [1 if x is None else x for x in weights]
+
+
 @command("deg")
 def deg(f: Poly | Ideal, w: IntVec | None = None) -> int:
-    """deg(f) or deg(f, w): the (weighted) total degree of f, -1 for 0; for an ideal the maximum.
+    """deg(f) or deg(f, w): the (weighted) total degree of f, -1 for 0; for an ideal the maximum.  Without w
+    the weights are the ordering's (of wp, ws and a blocks; 1 for the other variables), as in Singular.
 
     Example:
       ring r = 0,(x,y),dp;
@@ -101,9 +119,9 @@ def deg(f: Poly | Ideal, w: IntVec | None = None) -> int:
     def one(p: Poly) -> int:
         if p.is_zero():
             return -1
-        if w is None:
+        ws = _ring_weights(p.ring) if w is None else list(w.values) + [0] * (p.ring.nvars - len(w))
+        if ws is None:
             return p.total_degree()
-        ws = list(w.values) + [0] * (p.ring.nvars - len(w))
         return max(sum(a * b for a, b in zip(e, ws)) for e in p.terms)
     if isinstance(f, Poly):
         return one(f)

@@ -1,6 +1,6 @@
 """Singular's commands on single polynomials and integers: ``gcd``, ``lcm`` (general.lib),
 ``resultant``, ``coef``, ``coeffs``, ``prime``, ``find``, the ``cyclic`` ideal (polylib.lib),
-``leadexp``, ``rvar``, ``jet``, ``cleardenom``, ``chinrem``."""
+``leadexp``, ``rvar``, ``jet``, ``cleardenom``."""
 from __future__ import annotations
 
 from math import gcd as int_gcd
@@ -290,24 +290,3 @@ def cleardenom(f: Poly) -> Poly:
     if field.characteristic and getattr(field, "params", ()):
         raise MechRuntimeError("cleardenom over Z/p(parameters) is not supported")
     return f if field.characteristic else normalize(f)
-
-
-@command("chinrem")
-def chinrem(values: IntVec | List, moduli: IntVec | List) -> int:
-    """chinrem(v, m): the integer x with x = v[i] mod m[i] for all i (pairwise coprime moduli), the
-    least non-negative one.
-
-    Example:
-      chinrem(intvec(2,3), intvec(5,7));
-      → 17
-    """
-    vs, ms = list(values), list(moduli)
-    if len(vs) != len(ms) or not all(type(x) is int for x in vs + ms):
-        raise MechRuntimeError("chinrem(v, m): two intvecs or lists of ints of the same length")
-    x, m = 0, 1
-    for v, n in zip(vs, ms):
-        if int_gcd(m, n) != 1:
-            raise MechRuntimeError("chinrem: the moduli must be pairwise coprime")
-        x += m * ((v - x) * pow(m, -1, n) % n)
-        m *= n
-    return x % m

@@ -140,7 +140,7 @@ def primdec_sy(I: Ideal) -> List:
 
 
 #: The options of primdec.lib's decompositions: they choose among algorithms, not the result.
-_OPTIONS = {"minAssGTZ": ({0, 1}, {"facstd", "noFacstd", "GTZ", "SL"}), "primdecGTZ": (set(), {"GTZ", "SL"}),
+_OPTIONS = {"minAssGTZ": ({0, 1}, {"facstd", "noFacstd", "GTZ", "SL"}), "primdecGTZ": (set(), {"GTZ", "SL", "keep_comp"}),
             "primdecSY": ({0, 1, 2, 3}, set()), "minAssChar": ({0, 1, 2, 3}, set())}
 
 

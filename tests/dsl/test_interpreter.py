@@ -201,7 +201,6 @@ def test_error_in_procedure_reports_call_chain():
 @pytest.mark.parametrize("src, kind, message", [
     ("int i = 1; i = \"abc\";", MechTypeError, "cannot convert string to int"),
     ("list L = 1,2; L[5];", MechRuntimeError, "index 5 out of range"),
-    ("ring r = 4,(x),dp;", MechRuntimeError, "not a prime"),
     ("ring r = 0,(x,y),(dp(1),lp(3));", MechRuntimeError, "covers 4 variables"),
     ("ring r = 0,(x,y),xx;", MechRuntimeError, "unknown ordering 'xx'"),
     ("ideal I = 1;", MechRuntimeError, "no ring active"),
