@@ -2,7 +2,7 @@
 ``chinrem`` and ``farey``): the lifting steps of modular methods; and ``binomial`` (general.lib)."""
 from __future__ import annotations
 
-from math import gcd as int_gcd, isqrt
+from math import gcd as int_gcd
 from typing import Any, Callable
 
 from ..dsl.errors import MechRuntimeError

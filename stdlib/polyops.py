@@ -7,7 +7,7 @@ from math import gcd as int_gcd
 from typing import Any
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec, List, Matrix
+from ..dsl.values import Ideal, IntVec, Matrix
 from ..kernel import Poly
 from ..kernel import factor
 from ..kernel import matrix as KM
