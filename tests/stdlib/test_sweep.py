@@ -236,12 +236,14 @@ def test_the_cli_whole_sweep_time_limit_keeps_the_rows_and_resumes(tmp_path, cap
     script = tmp_path / "rpr.mech"
     script.write_text(f'LIB "mechanism.lib";\nmechanism rpr {{ {RPR}; }}\n')
     grid = ["--designs", "grid r1=1:12:12 r2=1:12:12 r3=4", "--answers", "real", "--scheduler", "inline"]
-    for limit in (["sweep", str(script), "--total-timeout", "1"], ["--timeout", "1", "sweep", str(script)]):
-        assert main(limit + grid) == 1  # 144 designs take several seconds
+    # each spelling writes its own table: a second run on the first's table would resume it and could finish
+    for name, limit in (("total", ["sweep", str(script), "--total-timeout", "1"]),
+                        ("rpr", ["--timeout", "1", "sweep", str(script)])):
+        assert main(limit + grid + ["--out", str(tmp_path / f"{name}.csv")]) == 1  # 144 designs take seconds
         err = capsys.readouterr().err
-        kept = (tmp_path / "rpr.csv").read_text().count("\n") - 1
+        kept = (tmp_path / f"{name}.csv").read_text().count("\n") - 1
         assert re.fullmatch(rf"mech sweep: error: time limit of 1 s exceeded: the sweep stopped after {kept} of 144 "
-                            rf"designs; they are in .*rpr.csv: the same sweep resumes there\n", err), err
+                            rf"designs; they are in .*{name}.csv: the same sweep resumes there\n", err), err
     assert main(["--timeout", "1", "sweep", str(script), "--total-timeout", "1"] + grid) == 2
     assert "give the sweep's time limit once" in capsys.readouterr().err
     assert main(["--format", "json", "sweep", str(script)] + grid) == 2
