@@ -466,7 +466,7 @@ def analyze(m: Mechanism) -> Analysis:
 
 # ---------------------------------------------------------------- running it
 _CACHE: dict[str, Analysis] = {}
-RESERVE = 0.2  # the share of the statement's remaining time kept for printing a partial report
+RESERVE = 0.4  # the share of the statement's remaining time kept for printing a partial report
 
 
 def run_analysis(m: Mechanism, local: bool = True, decompose: bool = True) -> Analysis:
