@@ -42,6 +42,7 @@ from .errors import NotSupported
 from .f4 import F4, PackingOverflow, initial_degree, is_groebner
 from .f4_trace import TraceMismatch, replay
 from .monomials import Packing, nonnegative_matrix
+from .poly import support_mask
 
 PRIME_RANGE = (1 << 27, 1 << 28)
 
@@ -326,7 +327,7 @@ class ExactReducer:
             self.images.append(m)
         self.polys = [self.image(b) for b in basis]
         self.lms = [p.monomial(0)[n:] for p in self.polys]
-        self.masks = [_support(e) for e in self.lms]
+        self.masks = [support_mask(e) for e in self.lms]
 
     def image(self, terms: dict):
         """The image of a polynomial (substitution of monomials, done by flint)."""
@@ -344,7 +345,7 @@ class ExactReducer:
         n, lms, masks, polys = self.n, self.lms, self.masks, self.polys
         while not f.is_zero():
             e = f.monomial(0)[n:]
-            m = _support(e)
+            m = support_mask(e)
             for k, lm in enumerate(lms):
                 if masks[k] & ~m == 0 and all(a <= b for a, b in zip(lm, e)):
                     break
@@ -364,14 +365,6 @@ class ExactReducer:
             if not self._top_reduce(s):
                 return False
         return True
-
-
-def _support(e) -> int:
-    m = 0
-    for i, v in enumerate(e):
-        if v:
-            m |= 1 << i
-    return m
 
 
 def _pairs(lms: list) -> list[tuple[int, int, tuple]]:

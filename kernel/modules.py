@@ -14,7 +14,7 @@ from __future__ import annotations
 import heapq
 from typing import Any, Callable, Iterable, Optional, Sequence
 
-from .poly import Poly, PolyRing, divides, lcm_exp, sub_exp
+from .poly import Poly, PolyRing, divides, lcm_exp, sub_exp, support_mask
 
 Exp = tuple[int, ...]
 Term = tuple[Exp, int]
@@ -80,15 +80,6 @@ def _add_multiple(f: Vector, g: Vector, shift: Exp, c: Any) -> None:
                 f[t] = s
 
 
-def _support(e: Exp) -> int:
-    """The bit mask of the variables of a monomial (a quick test against divisibility)."""
-    m = 0
-    for k, a in enumerate(e):
-        if a:
-            m |= 1 << k
-    return m
-
-
 class ModuleGB:
     """A Gröbner basis of a submodule of R^n, completed as generators are added (:meth:`add`)."""
 
@@ -111,7 +102,7 @@ class ModuleGB:
         self.basis, self.leads = basis, leads
         self._by_comp = {}
         for k, (e, i) in enumerate(leads):
-            self._by_comp.setdefault(i, []).append((e, _support(e), k))
+            self._by_comp.setdefault(i, []).append((e, support_mask(e), k))
 
     # ---------------------------------------------------------------- reduction
     def _divisor(self, t: Term, skip: int = -1) -> Optional[int]:
@@ -119,7 +110,7 @@ class ModuleGB:
         cands = self._by_comp.get(i)
         if not cands:
             return None
-        m = _support(e)
+        m = support_mask(e)
         for le, lm, k in cands:
             if k != skip and not lm & ~m and all(a <= b for a, b in zip(le, e)):
                 return k
@@ -198,13 +189,13 @@ class ModuleGB:
         for le, _, k in self._by_comp.get(t[1], ()):
             heapq.heappush(self._pairs, (sum(lcm_exp(le, t[0])) + self.shifts[t[1]], k, n))
             self._pending.add((k, n))
-        self._by_comp.setdefault(t[1], []).append((t[0], _support(t[0]), n))
+        self._by_comp.setdefault(t[1], []).append((t[0], support_mask(t[0]), n))
 
     def _chain(self, i: int, j: int, pending: set[tuple[int, int]]) -> bool:
         """Buchberger's chain criterion: some lead k (same component) divides lcm(lead i, lead j)
         and the pairs (i, k), (j, k) are already treated."""
         L = lcm_exp(self.leads[i][0], self.leads[j][0])
-        m = _support(L)
+        m = support_mask(L)
         for le, lm, k in self._by_comp[self.leads[i][1]]:
             if k in (i, j) or lm & ~m or not divides(le, L):
                 continue

@@ -30,17 +30,9 @@ from typing import Any, Callable, Sequence
 
 from .hilbert import hilbert_numerators
 from .order import Exp
-from .poly import Poly, PolyRing, add_exp, divides, lcm_exp
+from .poly import Poly, PolyRing, add_exp, divides, lcm_exp, support_mask
 
 Terms = dict[Exp, Any]
-
-
-def _mask(e: Exp) -> int:
-    m = 0
-    for i, v in enumerate(e):
-        if v:
-            m |= 1 << i
-    return m
 
 
 class Elem:
@@ -56,7 +48,7 @@ class Elem:
         self.lm = max(p, key=key) if lm is None else lm
         self._tail: Any = False  # the second monomial, found when first asked for
         self._rows: list | None = None
-        self.mask = _mask(self.lm)
+        self.mask = support_mask(self.lm)
         self.ecart = max(sum(e) for e in p) - sum(self.lm) if ecart is None else ecart
 
     @property
@@ -228,7 +220,7 @@ def _choose(reducers: Sequence[Elem], lm: Exp, ecart: int) -> Elem | None:
     """A reducer whose leading monomial divides ``lm``: the first (reducers are kept by
     increasing sugar) unless its ecart exceeds ``ecart``; then one of least ecart, shorter
     ones first, stopping at the first whose ecart is at most ``ecart``."""
-    mask = _mask(lm)
+    mask = support_mask(lm)
     best = None
     for g in reducers:
         if g.mask & ~mask or not divides(g.lm, lm):

@@ -330,6 +330,15 @@ def add_exp(a: Exp, b: Exp) -> Exp:
     return tuple([x + y for x, y in zip(a, b)])
 
 
+def support_mask(e: Exp) -> int:
+    """The bit mask of the variables in ``x^e`` (a quick test before ``divides``)."""
+    m = 0
+    for i, v in enumerate(e):
+        if v:
+            m |= 1 << i
+    return m
+
+
 _FLINT_PAIRS = 64
 """Products with at least this many pairs of terms may go to python-flint (see ``_collisions``)."""
 
