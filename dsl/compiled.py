@@ -335,9 +335,15 @@ def _if(s: A.If) -> Fn:
 
 
 def _for(s: A.For) -> Fn:
-    init, step, body = s.init, s.step, s.body
-    cond = _cond(s.cond) if s.cond is not None else (lambda it: True)
+    return _loop(s.init, _cond(s.cond) if s.cond is not None else (lambda it: True), s.step, s.body)
 
+
+def _while(s: A.While) -> Fn:
+    return _loop(None, _cond(s.cond), None, s.body)
+
+
+def _loop(init: Any, cond: Callable[[Any], bool], step: Any, body: list) -> Fn:
+    """``for``/``while``: as in Singular, ``continue`` skips the step and goes on with the condition."""
     def inner(it: Any) -> None:
         run = it.exec_stmt
         if init is not None:
@@ -348,25 +354,9 @@ def _for(s: A.For) -> Fn:
                     run(stmt)
             except BreakSignal:
                 break
-            except ContinueSignal:  # as in Singular, continue skips the step: it goes on with the condition
+            except ContinueSignal:
                 continue
             if step is not None:
                 run(step)
-    return inner
-
-
-def _while(s: A.While) -> Fn:
-    cond, body = _cond(s.cond), s.body
-
-    def inner(it: Any) -> None:
-        run = it.exec_stmt
-        while cond(it):
-            try:
-                for stmt in body:
-                    run(stmt)
-            except BreakSignal:
-                break
-            except ContinueSignal:
-                pass
     return inner
 
