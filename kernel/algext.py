@@ -124,10 +124,6 @@ class AlgebraicField(RationalFunctionField):
         v = flint.fmpq(v)
         return Fraction(int(v.p), int(v.q))
 
-    def modulus_str(self, short: bool = True) -> str:
-        """``m`` as Singular prints ``minpoly``: ``(a2+1)``."""
-        return "(" + _terms_str(self.modulus, self, short) + ")"
-
     def format_element(self, c: "AlgNum", short: bool | None = None) -> str:
         if short is None:
             short = all(len(n) == 1 for n in self.params)
@@ -197,7 +193,7 @@ class AlgNum(RatFunc):
 
     __slots__ = ("u", "_nd")
 
-    def __init__(self, field: AlgebraicField, u: Any) -> None:  # noqa: super().__init__ sets num/den
+    def __init__(self, field: AlgebraicField, u: Any) -> None:  # no super().__init__: it would set num/den
         self.field, self.u = field, u
         self._nd: tuple | None = None
         self._hash = None

@@ -112,7 +112,7 @@ class ModuleGB:
             return None
         m = support_mask(e)
         for le, lm, k in cands:
-            if k != skip and not lm & ~m and all(a <= b for a, b in zip(le, e)):
+            if k != skip and not lm & ~m and divides(le, e):
                 return k
         return None
 

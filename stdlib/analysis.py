@@ -165,11 +165,6 @@ def generically_reduced(J: list[Poly], R: PolyRing, d: int, nconfig: int | None 
     return any(dimension(list(J) + fitting_ideal(J, k, c), R) < d for k in sorted({nconfig or R.nvars, R.nvars}))
 
 
-def is_radical(J: list[Poly], R: PolyRing, nconfig: int | None = None) -> bool:
-    """Whether ``J`` is radical: :func:`generically_reduced`, else ``√J`` computed and compared."""
-    return generically_reduced(J, R, dimension(J, R), nconfig) or ideals_equal(radical(J, R), J, R)
-
-
 def _unit(basis: list[Poly]) -> bool:
     return any(g.is_constant() and not g.is_zero() for g in basis)
 

@@ -91,16 +91,6 @@ class _Module:
             raise MechRuntimeError("lift: the second ideal does not lie in the first")
         return [-self._down(r, i + 1) for i in range(self.m)]
 
-    def std_with_cofactors(self) -> list[tuple[Poly, list[Poly]]]:
-        """(s, T) for the elements s*E0 + sum T[i]*E_i of the basis with s != 0, by increasing s."""
-        out = []
-        for b in self.basis:
-            s = self._down(b, 0)
-            if not s.is_zero():
-                out.append((s, [self._down(b, i + 1) for i in range(self.m)]))
-        key = self.ring.order.key
-        return sorted(out, key=lambda st: key(st[0].lm()))
-
 
 def _as_ideal(x: Poly | Ideal) -> list[Poly]:
     return [x] if isinstance(x, Poly) else list(x.gens)

@@ -27,7 +27,7 @@ from typing import Any, Callable, Optional
 
 from mech.dsl.limits import within
 from mech.kernel import Poly
-from mech.kernel.ideals import dimension, is_subset
+from mech.kernel.ideals import is_subset
 from mech.kernel.primdec import min_ass_gtz, primdec_gtz
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes, split_by_factors
@@ -145,8 +145,3 @@ def embedded_components(a: Any) -> Optional[list[tuple[list[Poly], list[Poly]]]]
             if any(is_subset(P, prime, a.ring) for P in minimal):
                 out.append((primary, prime))
     return out
-
-
-def lower_dimensional(a: Any) -> list[int]:
-    """Indices (1-based) of the modes of smaller dimension than ``J``."""
-    return [i for i, md in enumerate(a.modes, 1) if md.dim < dimension(a.ideal, a.ring)]
