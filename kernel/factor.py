@@ -20,7 +20,7 @@ import flint
 from . import algext_factor, flint_bridge, offload
 from .algext import AlgebraicField
 from .errors import DivisionError
-from .poly import Poly, PolyRing
+from .poly import Poly
 
 
 def to_flint(f: Poly) -> Any:
@@ -29,11 +29,6 @@ def to_flint(f: Poly) -> Any:
     if ctx is None:
         raise NotImplementedError(f"factorization over {f.ring.field!r} is not available")
     return flint_bridge.to_flint(ctx, f.terms, f.ring.nvars)
-
-
-def from_flint(g: Any, ring: PolyRing) -> Poly:
-    """The flint polynomial ``g`` (made by :func:`to_flint` for ``ring``) as a :class:`Poly`."""
-    return Poly(ring, flint_bridge.from_flint(g, ring.field, ring.nvars))
 
 
 _PER_TERM = 1e-5  # rough seconds per term and ten degrees of flint's gcd and factorization
