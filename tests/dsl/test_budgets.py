@@ -68,3 +68,32 @@ def test_the_time_limit_waits_for_a_pending_budget_only_so_long():
 def test_the_watcher_outside_waits_longer_than_a_report_may():
     from mech.watcher import grace
     assert all(grace(t) >= overrun(t) + 1 for t in (0.1, 1, 3, 10, 16, 100))
+
+
+def test_an_exception_lost_in_a_weakref_callback_is_raised_again(monkeypatch, capsys):
+    """Python drops an exception raised in a weakref callback ("Exception ignored in ..."): the
+    watchdog's is raised again at its next check, with nothing printed."""
+    import sys
+    import weakref
+
+    from mech.dsl import limits
+    monkeypatch.setattr(sys, "unraisablehook", limits._unraisable)  # pytest puts its own in place
+    seen = {"callback": "not run"}
+
+    def callback(_):
+        seen["callback"] = "interrupted"
+        while True:  # the budget's exception arrives here, where Python cannot raise it
+            time.sleep(0.005)
+
+    def body():
+        class Thing:
+            pass
+        thing = Thing()
+        ref = weakref.ref(thing, callback)  # noqa: F841
+        del thing                           # the callback runs now, until the exception arrives
+        seen["after"] = True
+        while True:
+            time.sleep(0.005)                # ... and here again
+    assert within(0.05, body) == (False, None)
+    assert seen == {"callback": "interrupted", "after": True}
+    assert "Exception ignored" not in capsys.readouterr().err
