@@ -13,11 +13,19 @@ frames, basering), so rings and variables stay usable.  A memory limit also lowe
 space limit (``RLIMIT_AS``) during the statement to the limit (plus ``SLACK``) beyond the current
 size: a backstop against single huge allocations in C, which then fail with ``MemoryError`` instead of
 exhausting the machine (GMP, inside python-flint, aborts the process when its allocation fails).
+
+Budgets (:func:`within`) run inside a statement on the same watchdog.  A thread holds one pending
+asynchronous exception at a time, and one C call (python-flint) may outlast a budget and the
+statement's deadline together; so the watchdog never lets the statement's time limit (nor an inner
+budget) replace a budget's exception that has not arrived yet: the statement waits, at most
+:func:`overrun` seconds past its deadline, and a budget given a ``reserve`` leaves the statement
+that many seconds after its exception arrives (to print what was finished), within the same bound.
 """
 from __future__ import annotations
 
 import contextlib
 import os
+import sys
 import threading
 import time
 from typing import Any, Callable, Iterator, Optional
@@ -87,6 +95,12 @@ def _positive(value: Optional[float], what: str) -> Optional[float]:
     return value or None
 
 
+def overrun(timeout: float) -> float:
+    """The longest a statement's time limit waits past its deadline for a budget's pending
+    exception and the reserve after it (the watcher outside, ``mech.watcher.grace``, waits longer)."""
+    return 1.0 + min(timeout, 16.0) / 4
+
+
 def _seconds(t: float) -> str:
     return f"{t:g}"
 
@@ -143,11 +157,15 @@ def remaining() -> Optional[float]:
     return max(0.0, watch.deadline - time.monotonic())
 
 
-def within(seconds: Optional[float], fn: Callable[..., Any], *args: Any, cpu: bool = False) -> tuple[bool, Any]:
+def within(seconds: Optional[float], fn: Callable[..., Any], *args: Any, cpu: bool = False,
+           reserve: Optional[float] = None) -> tuple[bool, Any]:
     """``(True, fn(*args))``, or ``(False, None)`` when ``fn`` runs longer than ``seconds``
     (wall time, or with ``cpu`` the CPU time of this thread, which a busy machine does not
     shorten; None: no budget): a watchdog interrupts it with a :class:`BudgetExceeded` of its
-    own.  Limits of the statement and outer budgets still apply inside and propagate."""
+    own.  Limits of the statement and outer budgets still apply inside and propagate, except that
+    the statement's time limit waits for this budget's exception once raised; ``reserve``: seconds
+    the statement keeps after it arrives (for a report of what was done; at most until
+    :func:`overrun` past the statement's deadline)."""
     if seconds is None:
         return True, fn(*args)
     own = type("BudgetExceeded", (BudgetExceeded,), {})
@@ -156,6 +174,7 @@ def within(seconds: Optional[float], fn: Callable[..., Any], *args: Any, cpu: bo
         cid = time.pthread_getcpuclockid(threading.get_ident())
         clock = lambda: time.clock_gettime(cid)  # noqa: E731
     watch = _Watch(max(seconds, 0.001), None, own, clock)
+    watch.reserve = reserve
     try:
         try:
             _WATCHDOG.arm(watch)
@@ -167,6 +186,18 @@ def within(seconds: Optional[float], fn: Callable[..., Any], *args: Any, cpu: bo
         return True, result
     except own:
         return False, None
+
+
+#: Seconds of the statement's time limit a report keeps for its text after the steps it cuts to
+#: the limit (mode names, real answers: :func:`cut`).
+REPORT_KEEP = 0.5
+
+
+def cut(seconds: float, keep: float = 0.0) -> float:
+    """``seconds``, or less: what is left of the running statement's time limit but ``keep``
+    seconds (negative when not even that is left)."""
+    left = remaining()
+    return seconds if left is None else min(seconds, left - keep)
 
 
 def limit_error(exc: BaseException, where: str = "") -> MechLimitError:
@@ -199,8 +230,12 @@ class _Watch:
                  late: type[BaseException] = TimeLimitExceeded, clock: Callable[[], float] = time.monotonic) -> None:
         self.timeout, self.max_memory = timeout, max_memory
         self.late, self.clock = late, clock  # what the deadline raises; the clock it is measured on
+        self.budget = issubclass(late, BudgetExceeded)  # a within() budget (else a statement)
         self.thread = threading.get_ident()
         self.deadline = clock() + timeout if timeout else None
+        # a statement's deadline moves for a budget's reserve, never past ``hard``
+        self.hard = self.deadline + overrun(timeout) if timeout and not self.budget else self.deadline
+        self.reserve: Optional[float] = None  # a budget's: seconds the statement keeps after it
         self.grow = int(max_memory * 2**20) if max_memory else 0   # bytes the statement may add
         self.max_rss = (_rss() or 0) + self.grow if max_memory else None
         self.fired = 0.0            # when LimitExceeded was last raised (0: never)
@@ -243,6 +278,8 @@ class _Watchdog:
         while not watch.done:
             try:
                 with watch.lock:
+                    if watch.fired and watch.reserve is not None:
+                        _grant(watch.reserve)  # before done: the statement's limit waits until then
                     watch.done = True
             except (LimitExceeded, BudgetExceeded) as e:
                 late = e
@@ -272,26 +309,44 @@ class _Watchdog:
     def _check(self) -> None:
         now = time.monotonic()
         rss = _rss() if any(w.max_rss for w in self._watches) else None
+        threads: dict[int, list[_Watch]] = {}
         for w in list(self._watches):
             if w.done:
                 self._watches.remove(w)
-                continue
-            if w.fired and now - w.fired < REFIRE:
-                continue
-            if w.deadline is not None and (now if w.clock is time.monotonic else w.clock()) >= w.deadline:
-                exc: type[BaseException] = w.late
-            elif w.max_rss and rss is not None and rss > w.max_rss:
-                exc = MemoryLimitExceeded
             else:
-                continue
-            if not w.lock.acquire(blocking=False):
-                continue  # its owner is ending the watch
-            try:
-                if not w.done:
-                    w.fired = now
-                    _async_raise(w.thread, exc)
-            finally:
-                w.lock.release()
+                threads.setdefault(w.thread, []).append(w)  # in the order armed: outermost first
+        for watches in threads.values():
+            self._check_thread(watches, now, rss)
+
+    def _check_thread(self, watches: list[_Watch], now: float, rss: Optional[int]) -> None:
+        """The watches of one thread.  It holds one pending exception: a budget's is replaced
+        only by an outer budget's (whose caller unwinds the inner one too) or by the memory limit,
+        and the statement's time limit waits for it (until :func:`overrun` past its deadline)."""
+        statement = next((w for w in watches if not w.budget), None)
+        budgets = [w for w in watches if w.budget]
+        if statement is None or not statement.fired:
+            due = next((b for b in budgets if b.deadline is not None and b.clock() >= b.deadline), None)
+            if due is not None and not (due.fired and now - due.fired < REFIRE):
+                self._raise(due, due.late, now)
+        if statement is None or (statement.fired and now - statement.fired < REFIRE):
+            return
+        if statement.max_rss and rss is not None and rss > statement.max_rss:
+            self._raise(statement, MemoryLimitExceeded, now)
+        elif statement.deadline is not None and now >= statement.deadline:
+            if now < statement.hard and any(b.fired and not b.done for b in budgets):
+                return  # a budget's exception is on its way: its caller reports first
+            self._raise(statement, statement.late, now)
+
+    @staticmethod
+    def _raise(w: _Watch, exc: type[BaseException], now: float) -> None:
+        if not w.lock.acquire(blocking=False):
+            return  # its owner is ending the watch
+        try:
+            if not w.done:
+                w.fired = now
+                _async_raise(w.thread, exc)
+        finally:
+            w.lock.release()
 
     def _lower_rlimit(self, watch: _Watch) -> None:
         try:
@@ -315,6 +370,14 @@ class _Watchdog:
         self._backstop = None
         if watch.saved_rlimit is not None:
             resource.setrlimit(resource.RLIMIT_AS, watch.saved_rlimit)
+
+
+def _grant(reserve: float) -> None:
+    """The statement running in this thread may go on ``reserve`` seconds from now (within its
+    bound), past its deadline if need be: a budget's caller reports what it finished."""
+    watch = getattr(_current, "watch", None)
+    if watch is not None and watch.deadline is not None:
+        watch.deadline = max(watch.deadline, min(time.monotonic() + reserve, watch.hard))
 
 
 def _async_raise(thread: int, exc: Optional[type]) -> None:
@@ -347,6 +410,21 @@ def _vsz() -> Optional[int]:
 
 
 _WATCHDOG = _Watchdog()
+
+
+def _unraisable(args: Any, previous: Callable[[Any], None] = sys.unraisablehook) -> None:
+    """The watchdog's exception arrived where Python cannot raise it (a weakref callback such as
+    the import system's, a ``__del__``): nothing printed, and it is raised again at the next check."""
+    exc, me = args.exc_value, threading.get_ident()
+    if not isinstance(exc, (LimitExceeded, BudgetExceeded)):
+        previous(args)
+        return
+    for w in list(_WATCHDOG._watches):
+        if w.thread == me and w.fired and isinstance(exc, w.late if w.budget else LimitExceeded):
+            w.fired -= REFIRE
+
+
+sys.unraisablehook = _unraisable
 
 
 def _offload_state() -> tuple[bool, Optional[int], list]:

@@ -266,11 +266,16 @@ def _rss(pid: int) -> Optional[int]:
 
 
 def _register_pickling() -> None:
-    """python-flint's ``nmod`` does not pickle by itself: by its value and modulus."""
+    """python-flint's ``nmod``, polynomials and matrices do not pickle by themselves: by their
+    values (the results of :mod:`.offload_exact`)."""
     import copyreg
 
     import flint
     copyreg.pickle(flint.nmod, lambda c: (flint.nmod, (int(c), c.modulus())))
+    copyreg.pickle(flint.fmpz_poly, lambda p: (flint.fmpz_poly, ([int(c) for c in p.coeffs()],)))
+    copyreg.pickle(flint.fmpq_poly, lambda p: (flint.fmpq_poly, ([int(c) for c in p.numer().coeffs()], int(p.denom()))))
+    copyreg.pickle(flint.fmpq_mat, lambda m: (flint.fmpq_mat, (m.nrows(), m.ncols(), m.entries())))
+    copyreg.pickle(flint.fmpz_mat, lambda m: (flint.fmpz_mat, (m.nrows(), m.ncols(), [int(x) for x in m.entries()])))
 
 
 _register_pickling()

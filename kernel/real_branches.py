@@ -31,6 +31,7 @@ from typing import Sequence
 import flint
 from flint import fmpq, fmpq_poly, fmpz_poly
 
+from . import offload_exact
 from .groebner import groebner
 from .ideals import dimension
 from .local import AlgebraicPoint, centre_at, tangent_cone_over
@@ -68,7 +69,7 @@ def point_families(prime: Sequence[Poly], ring: PolyRing) -> list[PointFamily]:
     if rep.count == 0:
         return []
     out = []
-    for f, _ in rep.poly.factor()[1]:
+    for f, _ in offload_exact.factor(rep.poly)[1]:
         f = primitive(f)
         out.append(PointFamily(f, [h % fmpq_poly(f) for h in rep.shape]))
     return out
@@ -174,7 +175,7 @@ def _critical_bound(S: _Setting) -> fmpq:
             lag = _lagrange(S, seed)
             if dimension(lag, S.ring) <= 0:
                 A = QuotientAlgebra(lag, S.ring)
-                bound = _smallest_positive(A.poly_matrix(S.dist).charpoly()) if A.dim else None
+                bound = _smallest_positive(offload_exact.charpoly(A.poly_matrix(S.dist))) if A.dim else None
                 return bound if bound is not None else fmpq(1)
         S.reweigh([rnd.randint(1, 9 + 4 * attempt) for _ in range(S.n)])
     raise RealSolvingError("the critical points of the distance to the point are not isolated")
@@ -285,7 +286,7 @@ def _hyperplane_bound(S: _Setting, form: list[fmpq]) -> fmpq:
     """A squared radius below the distance from ``p`` to the other points of the curve on the
     hyperplane ``form(x - p) = 0``."""
     A = QuotientAlgebra(S.base() + [_shifted(S, form)], S.ring)
-    bound = _smallest_positive(A.poly_matrix(S.dist).charpoly()) if A.dim else None
+    bound = _smallest_positive(offload_exact.charpoly(A.poly_matrix(S.dist))) if A.dim else None
     return bound if bound is not None else fmpq(1)
 
 

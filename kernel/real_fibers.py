@@ -17,6 +17,7 @@ from typing import Sequence
 
 from flint import fmpq, fmpq_poly, fmpz_poly
 
+from . import offload_exact
 from .dimension import krull_dim
 from .groebner import groebner
 from .ideals import dp_ring, move
@@ -84,7 +85,7 @@ class Fibres:
         return self._cache[a]
 
     def charpoly(self, a: fmpq, m: Sequence[fmpq]) -> fmpq_poly:
-        return self.algebra(a).linear_matrix(m).charpoly()
+        return offload_exact.charpoly(self.algebra(a).linear_matrix(m))
 
     def plane_curve(self, m: Sequence[fmpq]) -> Biv:
         """``g(X, Y)``: the characteristic polynomial of ``m`` on the fibre over ``X``."""
@@ -139,7 +140,7 @@ def irreducible_factors(p: fmpz_poly) -> list[fmpz_poly]:
     """The distinct irreducible factors (primitive, positive leading coefficient)."""
     if p.degree() <= 0:
         return []
-    _, facs = p.factor()
+    _, facs = offload_exact.factor(p)
     return [primitive(f) for f, _ in facs]
 
 

@@ -21,6 +21,7 @@ from typing import Any, Sequence
 import flint
 from flint import arb, fmpq, fmpq_poly, fmpz, fmpz_poly
 
+from . import offload_exact
 from .errors import KernelError
 
 Univariate = Any  # fmpz_poly | fmpq_poly | a coefficient list (constant first)
@@ -63,7 +64,7 @@ def squarefree_decomposition(f: Univariate) -> list[tuple[fmpz_poly, int]]:
     p = primitive(f)
     if p.degree() <= 0:
         return []
-    _, facs = p.factor_squarefree()
+    _, facs = offload_exact.factor_squarefree(p)
     return [(primitive(g), int(m)) for g, m in facs if g.degree() > 0]
 
 

@@ -28,6 +28,7 @@ from typing import Iterator, Sequence
 import flint
 from flint import arb, arb_poly, fmpq, fmpq_mat, fmpq_poly, fmpz_poly
 
+from . import offload_exact
 from .coeffs import RationalField
 from .dimension import krull_dim
 from .groebner import groebner, normal_form
@@ -204,7 +205,7 @@ def hermite_matrix(A: QuotientAlgebra, weight: Poly | None = None) -> fmpq_mat:
 def signature(S: fmpq_mat) -> tuple[int, int]:
     """``(rank, signature)`` of a symmetric rational matrix, from its characteristic polynomial
     (real-rooted, so Descartes' rule counts the positive and the negative eigenvalues)."""
-    chi = S.charpoly()
+    chi = offload_exact.charpoly(S)
     coeffs = chi.coeffs()
     zeros = next((k for k, c in enumerate(coeffs) if c != 0), len(coeffs))
     pos = variations(coeffs)
@@ -324,7 +325,7 @@ def rur_of(A: QuotientAlgebra, form: Sequence[fmpq] | None = None) -> RUR:
     distinct: int | None = None
     forms = [list(map(fmpq, form))] if form is not None else _candidate_forms(n)
     for lam in forms:
-        chi = A.linear_matrix(lam).charpoly()
+        chi = offload_exact.charpoly(A.linear_matrix(lam))
         f = squarefree_part(chi)
         if f.degree() < A.dim:
             if distinct is None:

@@ -31,7 +31,7 @@ INTERRUPT_GRACE = 2.0  # after Ctrl-C, seconds the child has to stop by itself
 
 def grace(timeout: float) -> float:
     """Seconds past the time limit before the parent steps in (the child's own limit, which gives
-    partial reports, acts first)."""
+    partial reports and may wait ``limits.overrun(timeout)`` past the limit for one, acts first)."""
     return 2.0 + min(timeout, 16.0) / 2
 
 

@@ -461,7 +461,7 @@ def analyze(m: Mechanism) -> Analysis:
 
 # ---------------------------------------------------------------- running it
 _CACHE: dict[str, Analysis] = {}
-RESERVE = 0.4  # the share of the statement's remaining time kept for printing a partial report
+RESERVE = 0.1  # the share of the statement's remaining time kept for the partial report (also after a late budget)
 
 
 def run_analysis(m: Mechanism, local: bool = True, decompose: bool = True) -> Analysis:
@@ -482,7 +482,7 @@ def run_analysis(m: Mechanism, local: bool = True, decompose: bool = True) -> An
             local_analysis(holder)
     try:
         with stage("analysis"):
-            ok, _ = within(budget, steps)
+            ok, _ = within(budget, steps, reserve=None if left is None else left * RESERVE)
     except MechanismError as e:
         raise MechRuntimeError(str(e)) from None
     if not ok:

@@ -164,13 +164,14 @@ def sample_configurations(m: Mechanism, count: int = 100, seed: int = 0) -> Samp
     """About ``count`` real configurations of each motion mode with real points of ``m`` (numeric
     lengths), with mode, circuit, variables, angles and points (see the module)."""
     import numpy as np
-    from mech.stdlib.analysis import require_numeric, run_analysis
+    from mech.stdlib.analysis import require_complete, require_numeric, run_analysis
     from mech.stdlib.mechanism_display import joint_readings
     from mech.stdlib.mode_names import mode_names
     from mech.stdlib.plots import _compile
     if not 0 < count <= MAX_ROWS:
         raise MechRuntimeError(f"the number of configurations per mode must be in 1..{MAX_ROWS}, not {count}")
     a = run_analysis(m, local=False)
+    require_complete(a, "sampleConfigurations")
     require_numeric(a, "sampleConfigurations")
     if not a.modes:
         raise MechRuntimeError("sampleConfigurations: the motion modes are not known (the analysis did not finish)")

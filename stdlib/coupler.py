@@ -60,10 +60,11 @@ def coupler_curve(m: Mechanism, point: str) -> list[Poly]:
 def coupler_path(m: Mechanism, point: str, count: int = 3000) -> Any:
     """Points ``(x, y)`` (a numpy array) of the path of ``point``, sampled on every real motion mode;
     also the configurations they come from."""
-    from mech.stdlib.analysis import run_analysis
+    from mech.stdlib.analysis import require_complete, run_analysis
     from mech.stdlib.plots import _compile, _numpy, sample_mode
     np = _numpy()
     a = run_analysis(m, local=False)
+    require_complete(a, "plotCouplerCurve")  # a time limit's partial analysis may lack modes
     pos, _ = m.positions(a.ring)
     where = _compile(list(pos[point]), a.ring.nvars)
     found = [sample_mode(md.prime, len(m.links), count, seed=i) for i, md in enumerate(a.modes, 1) if md.real]

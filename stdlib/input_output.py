@@ -419,11 +419,12 @@ def four_bar_io(m: Mechanism, a: Any) -> Optional[ModesIO]:
 
 # ---------------------------------------------------------------- command
 def _command(m: Mechanism, inp: Optional[int], out: Optional[int]) -> str:
-    from mech.stdlib.analysis import run_analysis
+    from mech.stdlib.analysis import require_complete, run_analysis
     from mech.stdlib.grashof import four_bar
     if m.symbols():
         raise MechRuntimeError(f"inputOutput needs numeric lengths (setLengths(m, ...) for {','.join(m.symbols())})")
     a = run_analysis(m, local=False)
+    require_complete(a, "inputOutput")
     if a.mobility != 1:
         raise MechRuntimeError(f"inputOutput: the mechanism must have one degree of freedom (mobility {a.mobility})")
     fb = four_bar(m)

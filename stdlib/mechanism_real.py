@@ -21,12 +21,12 @@ formats (:mod:`mech.stdlib.reports`) call :func:`real_sections` once per analysi
 """
 from __future__ import annotations
 
-import ctypes
-import threading
 import time
 from dataclasses import dataclass, field
 from typing import Any, Callable, Optional
 
+from mech.dsl.limits import REPORT_KEEP, cut, remaining
+from mech.dsl.limits import within as limited
 from mech.kernel import Poly
 from mech.kernel.real_roots import RealSolvingError
 from mech.stdlib.analysis import Analysis
@@ -47,10 +47,6 @@ _TYPES = {
 }
 
 
-class _OverBudget(BaseException):
-    """Raised into the running step when its budget is spent."""
-
-
 @dataclass
 class RealSections:
     """The real answers of one analysis: ``data`` under the JSON report's keys, ``lines`` for the
@@ -59,48 +55,17 @@ class RealSections:
     data: dict[str, Any] = field(default_factory=dict)
     lines: list[str] = field(default_factory=list)
     deadline: float = field(default_factory=lambda: time.monotonic() + BUDGET, repr=False)
-
-
-def _remaining() -> Optional[float]:
-    """Seconds left before the running statement's time limit (None: no limit)."""
-    from mech.dsl import limits
-    watch = getattr(getattr(limits, "_current", None), "watch", None)
-    deadline = getattr(watch, "deadline", None)
-    return None if deadline is None else deadline - time.monotonic()
+    cut: bool = field(default=False, repr=False)  # a step stopped by the statement's time limit
 
 
 def within(seconds: float, fn: Callable[..., Any], *args: Any) -> tuple[bool, Any]:
-    """``(True, fn(*args))``, or ``(False, None)`` when it runs longer than ``seconds`` (the step
-    is interrupted by an exception raised into this thread)."""
-    left = _remaining()
-    if left is not None:
-        seconds = min(seconds, left - 0.5)
+    """``(True, fn(*args))``, or ``(False, None)`` when it runs longer than ``seconds`` or than
+    the statement's time limit allows (keeping ``REPORT_KEEP`` seconds for the rest of the report,
+    also when one long call outlasts both: :func:`mech.dsl.limits.within`)."""
+    seconds = cut(seconds, REPORT_KEEP)
     if seconds <= 0:
         return False, None
-    tid = threading.get_ident()
-    lock = threading.Lock()
-    state = {"done": False, "fired": False}
-
-    def fire() -> None:
-        with lock:
-            if not state["done"]:
-                state["fired"] = True
-                ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(tid), ctypes.py_object(_OverBudget))
-
-    timer = threading.Timer(seconds, fire)
-    timer.daemon = True
-    try:
-        try:
-            timer.start()
-            return True, fn(*args)
-        finally:
-            timer.cancel()
-            with lock:
-                state["done"] = True
-            if state["fired"]:  # drop an exception still pending
-                ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(tid), None)
-    except _OverBudget:
-        return False, None
+    return limited(seconds, fn, *args, reserve=REPORT_KEEP)
 
 
 def _step(sec: RealSections, what: str, fn: Callable[..., Any], *args: Any) -> Any:
@@ -113,7 +78,8 @@ def _step(sec: RealSections, what: str, fn: Callable[..., Any], *args: Any) -> A
         sec.data.setdefault("real_notes", []).append(f"{what}: {e}")
         return None
     if not ok:
-        budget = f"the real answers' budget of {BUDGET:g} s" if _remaining() is None else "the statement's time limit"
+        sec.cut = remaining() is not None
+        budget = "the statement's time limit" if sec.cut else f"the real answers' budget of {BUDGET:g} s"
         sec.lines.append(f"  {what}: too expensive, not computed (over {budget})")
         sec.data.setdefault("real_notes", []).append(f"{what}: over budget")
         return None
@@ -266,8 +232,11 @@ _CACHE: dict[int, tuple[Analysis, RealSections]] = {}
 
 
 def real_sections(a: Analysis) -> RealSections:
-    """The real answers of ``a`` (computed once per analysis)."""
+    """The real answers of ``a`` (computed once per analysis, again when a statement's time limit
+    cut them short)."""
     hit = _CACHE.get(id(a))
     if hit is None or hit[0] is not a:
-        hit = _CACHE[id(a)] = (a, _compute(a))
+        hit = (a, _compute(a))
+        if not hit[1].cut:
+            _CACHE[id(a)] = hit
     return hit[1]

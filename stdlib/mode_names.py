@@ -229,12 +229,15 @@ def mode_names(a: Any) -> list[Optional[ModeName]]:
     if hit is not None and hit[0] is a:
         return hit[1]
     import time
-    from mech.dsl.limits import within
+    from mech.dsl.limits import REPORT_KEEP, cut, remaining, within
     names: list[Optional[ModeName]] = []
     if not a.params:
         deadline = time.monotonic() + BUDGET
         for md in a.modes:
-            ok, n = within(deadline - time.monotonic(), name_mode, a.mechanism, md.prime, md.dim)
+            seconds = cut(deadline - time.monotonic(), REPORT_KEEP)  # never beyond the statement's limit
+            ok, n = within(seconds, name_mode, a.mechanism, md.prime, md.dim, reserve=REPORT_KEEP) \
+                if seconds > 0 else (False, None)
             names.append(n if ok else None)
-    _CACHE[id(a)] = (a, names)
+    if remaining() is None or all(names):  # names cut short by the statement's time limit: again next time
+        _CACHE[id(a)] = (a, names)
     return names

@@ -20,7 +20,7 @@ from mech.dsl.errors import MechRuntimeError
 from mech.dsl.files import output_file
 from mech.dsl.values import IntVec, List
 from mech.kernel import Poly
-from mech.stdlib.analysis import Analysis, require_numeric, run_analysis
+from mech.stdlib.analysis import Analysis, require_complete, require_numeric, run_analysis
 from mech.stdlib.joints import LineSlider
 from mech.stdlib.mechanism import Mechanism
 from mech.dsl.registry import command
@@ -201,6 +201,7 @@ def _plot(ctx: Any, m: Mechanism, path: str, links: Sequence[Any] | None, count:
     if len(set(links)) < len(links):
         raise MechRuntimeError(f"plotConfigurations: a {what} is repeated in {', '.join(map(str, links))}")
     a = run_analysis(m)
+    require_complete(a, "plotConfigurations")
     require_numeric(a, "plotConfigurations")
     if planar:
         scene = configuration_scene(m, a, [k - 1 for k in links], count)

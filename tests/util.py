@@ -105,3 +105,32 @@ def cyclic(R):
     for x in X:
         t = t * x
     return ideal + [t - 1]
+
+
+class LongCCall:
+    """A stand-in for one long python-flint call, which the limits' watchdog cannot interrupt: it
+    blocks in C (a lock) until the watchdog has checked the statement past its time limit while a
+    budget's exception was pending (``overlap`` is then set), so both fall inside it whatever the
+    machine's speed.  Installed on ``mech.dsl.limits``'s watchdog through ``monkeypatch``."""
+
+    def __init__(self, monkeypatch: pytest.MonkeyPatch, wait: float = 60.0) -> None:
+        import threading
+
+        from mech.dsl import limits
+        self.wait = wait
+        self.overlap = threading.Event()
+        self.gate = threading.Lock()
+        self.gate.acquire()
+        check = limits._WATCHDOG._check_thread
+
+        def spy(watches: list, now: float, rss: int | None) -> None:
+            check(watches, now, rss)
+            statement = next((w for w in watches if not w.budget), None)
+            if statement is not None and statement.deadline is not None and now >= statement.deadline \
+                    and any(w.fired for w in watches if w.budget) and not self.overlap.is_set():
+                self.overlap.set()
+                self.gate.release()
+        monkeypatch.setattr(limits._WATCHDOG, "_check_thread", spy)
+
+    def __call__(self, *args: object) -> None:
+        self.gate.acquire(timeout=self.wait)  # one C call: asynchronous exceptions wait for its end

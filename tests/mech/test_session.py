@@ -158,3 +158,15 @@ def test_a_time_limit_stops_a_long_factorization():
     assert time.monotonic() - t < 30
     assert info.value.message == "time limit of 2 s exceeded in factorize"
     assert s.execute("k; defined(L);") == "7\n0\n"
+
+
+def test_a_time_limit_stops_a_long_real_root_isolation():
+    """The squarefree decomposition of real-root isolation: one flint call (minutes here)."""
+    s, _ = started()
+    s.execute("ring r1 = 0,x,dp; poly p = (x^6000+7^6000*x+1)^2*(x^5999-3x+5);")
+    t = time.monotonic()
+    with pytest.raises(MechLimitError) as info:
+        s.execute('limits("timeout", 2); list L = realRoots(p);')
+    assert time.monotonic() - t < 30
+    assert info.value.message == "time limit of 2 s exceeded in realRoots"
+    assert s.execute("k; defined(L); deg(p);") == "7\n0\n17999\n"
