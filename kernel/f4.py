@@ -27,6 +27,7 @@ from typing import Sequence
 
 import flint
 
+from .f4_rows import Flat, compiled
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing
@@ -240,6 +241,34 @@ class F4:
         E, used = echelon(vec, D, m)
         return T, pivcols, nonpivot, E, used, red_specs, c_specs
 
+    def _matrix_compiled(self, crow_specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]],
+                         want: list[int] = (), stop: bool = False):
+        """:meth:`_matrix` by the compiled kernel (:mod:`.f4_rows`): returns the pivot columns,
+        the non-pivot monomials, the kernel's ``(used, E, W)`` (``W``: the reduced tails of the
+        reducers with leading monomials ``want``) and, when recording, the row specs."""
+        rowmons, nonpivot = self._symbolic(crow_specs, pivots)
+        self.work += sum(map(len, rowmons.values()))
+        pivcols = sorted(pivots)
+        nonpivot.sort()
+        K, m = len(pivcols), len(nonpivot)
+        where = dict(zip(pivcols, range(K)))
+        where.update(zip(nonpivot, range(-1, -m - 1, -1)))
+        coefs, get = self.coefs, where.__getitem__
+        flat = Flat()
+        flat.ids.extend(range(K))
+        for col in pivcols:
+            k, u = pivots[col]
+            rm, cs = rowmons[(k, u)], coefs[k]
+            flat.add(map(get, rm[1:]), cs[1:])
+        for spec in crow_specs:
+            flat.add(map(get, rowmons[spec]), coefs[spec[0]])
+        out = flat.reduce(self.p, m, K, [where[x] for x in want], stop)
+        specs = None
+        if self.trace is not None:
+            specs = ([self._spec(rowmons[pivots[col]], pivots[col][0], where, True) for col in pivcols],
+                     [self._spec(rowmons[spec], spec[0], where, False) for spec in crow_specs])
+        return pivcols, nonpivot, out, specs
+
     def _record(self, K: int, m: int, red_specs: list[RowSpec], rows: list[tuple[RowSpec, int]],
                 new: list[list[int]], roots: Sequence[int] = ()) -> Step:
         """A trace step keeping only the reducers the given rows (and reducers ``roots``)
@@ -280,9 +309,16 @@ class F4:
         pivots, crows = self._pair_rows(sel)
         if not crows:
             return True
-        T, pivcols, nonpivot, E, used, red_specs, c_specs = self._matrix(crows, pivots)
-        m = len(nonpivot)
-        new = [support(self.vec, E[s0], m) for s0 in sorted(E)]  # increasing leading monomial
+        if compiled(self.p):
+            pivcols, nonpivot, (used, E, _), specs = self._matrix_compiled(crows, pivots)
+            m = len(nonpivot)
+            new = [(slots, vals) for _, slots, vals in E]  # increasing leading monomial
+            if specs is not None:
+                red_specs, c_specs = specs
+        else:
+            T, pivcols, nonpivot, E, used, red_specs, c_specs = self._matrix(crows, pivots)
+            m = len(nonpivot)
+            new = [support(self.vec, E[s0], m) for s0 in sorted(E)]  # increasing leading monomial
         if self.trace is not None and used:
             rows = [(c_specs[r], s0) for r, s0 in used]
             self.trace.steps.append(self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new]))
@@ -313,14 +349,19 @@ class F4:
                 and not any(((mons[k][0] | g) - lm) & g == g and lm != mons[k][0] for lm in lms)]
         keep.sort(key=lambda k: mons[k][0])
         pivots = {mons[k][0]: (k, 0) for k in keep}
-        T, pivcols, nonpivot, _, _, red_specs, _ = self._matrix([], pivots)
+        lead = [mons[k][0] for k in keep]
+        if compiled(self.p):
+            pivcols, nonpivot, (_, _, tails), specs = self._matrix_compiled([], pivots, lead)
+            red_specs = specs[0] if specs else None
+        else:
+            T, pivcols, nonpivot, _, _, red_specs, _ = self._matrix([], pivots)
+            column = dict(zip(pivcols, range(len(pivcols))))
+            tails = [support(self.vec, T[column[lm]], len(nonpivot)) for lm in lead]
         m = len(nonpivot)
         where = dict(zip(pivcols, range(len(pivcols))))
         out, final = [], []
-        for k in keep:
-            lm = mons[k][0]
+        for lm, (slots, vals) in zip(lead, tails):
             j = where[lm]
-            slots, vals = support(self.vec, T[j], m)
             out.append(([lm] + [nonpivot[s] for s in slots], [1] + vals))
             final.append((j, slots))
         if self.trace is not None:
@@ -340,6 +381,8 @@ def is_groebner(polys: Sequence[Row], packing: Packing, p: int) -> bool:
     pivots, crows = eng._pair_rows(eng.pairs)
     if not crows:
         return True
+    if compiled(p):
+        return not eng._matrix_compiled(crows, pivots, stop=True)[2][0]
     return not eng._matrix(crows, pivots)[3]
 
 

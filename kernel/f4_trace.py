@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Sequence
 
+from .f4_rows import compiled, replay_step
 from .f4_vectors import RowSpec, Vectors, echelon
 
 
@@ -29,6 +30,7 @@ class Step:
     reducers: list[tuple[int, RowSpec]]
     rows: list[tuple[RowSpec, int]]
     new: list[list[int]]
+    flat: list | None = field(default=None, repr=False, compare=False)  # kept by f4_rows
 
 
 @dataclass
@@ -72,6 +74,33 @@ def replay(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
     for j, spec in st.reducers:
         T[j] = combine(spec, coefs[spec.k], neg[spec.k], T)
     return [[1] + _values_on(vec, T[j], st.m, slots) for j, slots in trace.final_out]
+
+
+def _replay_compiled(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
+    """:func:`replay` with the matrices reduced by the compiled kernel (:mod:`.f4_rows`)."""
+    coefs: list[list[int]] = [list(c) for c in polys]
+    for st in trace.steps:
+        used, E, _ = replay_step(st, coefs, p)
+        if [s0 for _, s0 in used] != [s0 for _, s0 in st.rows]:
+            raise TraceMismatch("a pair row reduced differently")
+        rows = {s0: (slots, vals) for s0, slots, vals in E}
+        for slots in st.new:
+            coefs.append(_on_slots(*rows[slots[0]], slots))
+    if trace.unit:
+        return [[1]]
+    st = trace.final
+    _, _, W = replay_step(st, coefs, p, [j for j, _ in trace.final_out])
+    return [[1] + _on_slots(*w, slots) for w, (_, slots) in zip(W, trace.final_out)]
+
+
+def _on_slots(support: list[int], vals: list[int], slots: list[int]) -> list[int]:
+    """The entries of a vector (its nonzero slots and values) in the given slots, which must
+    hold all its nonzero entries."""
+    got = dict(zip(support, vals))
+    out = [got.pop(s, 0) for s in slots]
+    if got:
+        raise TraceMismatch("a polynomial has a term the recorded run did not have")
+    return out
 
 
 def _values_on(vec: Vectors, x: int, m: int, slots: list[int]) -> list[int]:
