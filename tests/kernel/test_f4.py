@@ -1,11 +1,12 @@
-"""The F4 engines (kernel/f4.py, f4_vectors.py, f4_trace.py, modular.py, monomials.py) against
-Buchberger's reduced bases: ``f4`` over Z/p, ``modular`` over QQ."""
+"""The F4 engines (kernel/f4.py, f4_vectors.py, f4_trace.py, f4_rows.py, modular.py, monomials.py)
+against Buchberger's reduced bases: ``f4`` over Z/p, ``modular`` over QQ; every test runs with the
+compiled row kernel and with the pure-Python linear algebra."""
 import random
 
 import flint
 import pytest
 
-from mech.kernel import GF, QQ, Block, MonomialOrder
+from mech.kernel import GF, QQ, Block, MonomialOrder, f4_rows
 from mech.kernel.groebner import groebner
 from mech.kernel.f4 import F4, pack_polys
 from mech.kernel.f4_trace import TraceMismatch, replay
@@ -14,6 +15,15 @@ from mech.kernel.monomials import Packing
 from tests.util import cyclic, katsura, ring
 
 P32003 = GF(32003)
+
+
+@pytest.fixture(autouse=True, params=["compiled", "python"])
+def row_kernel(request, monkeypatch):
+    """Run the test with the compiled row kernel (when built) and with the pure-Python path."""
+    if request.param == "python":
+        monkeypatch.setattr(f4_rows, "KERNEL", None)
+    elif f4_rows.KERNEL is None:
+        pytest.skip("the compiled row kernel is not built")
 
 
 def f4(R):

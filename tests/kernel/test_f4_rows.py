@@ -1,0 +1,79 @@
+"""The compiled F4 row kernel (kernel/_f4rows.c through kernel/f4_rows.py) against the
+pure-Python linear algebra of kernel/f4_vectors.py on random matrices."""
+import random
+
+import pytest
+
+from mech.kernel import f4_rows
+from mech.kernel.f4_rows import Flat
+from mech.kernel.f4_vectors import RowSpec, Vectors, echelon, support
+
+pytestmark = pytest.mark.skipif(f4_rows.KERNEL is None, reason="the compiled row kernel is not built")
+
+
+def random_matrix(rng, p, K, m, npair):
+    """Reducers (pivot j refers to pivots below j and to slots) and pair rows, as
+    (coefficients, pivot entries, slot entries)."""
+    rows = []
+    for j in range(K + npair):
+        top = j if j < K else K
+        piv = rng.sample(range(top), min(top, rng.randrange(0, 6)))
+        slots = rng.sample(range(m), rng.randrange(0, min(m, 5) + 1))
+        coefs = [rng.randrange(p) for _ in piv + slots]
+        rows.append((coefs, piv, slots))
+    return rows
+
+
+def by_python(p, K, m, rows):
+    vec = Vectors(p)
+    comb = vec.combiner(m)
+    T, D = [0] * K, []
+    for j, (cs, piv, slots) in enumerate(rows):
+        n = len(piv)
+        spec = RowSpec(0, list(range(n)), piv, list(range(n, n + len(slots))), slots)
+        v = comb(spec, cs, [p - c for c in cs], T)
+        if j < K:
+            T[j] = v
+        else:
+            D.append(v)
+    E, used = echelon(vec, D, m)
+    return used, [(s0, *support(vec, E[s0], m)) for s0 in sorted(E)], [support(vec, t, m) for t in T]
+
+
+def by_kernel(p, K, m, rows, stop=False):
+    flat = Flat()
+    flat.ids.extend(range(K))
+    for cs, piv, slots in rows:
+        flat.add(piv + [~s for s in slots], cs)
+    return flat.reduce(p, m, K, list(range(K)), stop)
+
+
+@pytest.mark.parametrize("p", [2, 3, 32003, (1 << 28) - 57, (1 << 31) - 1])
+def test_random_matrices(p):
+    rng = random.Random(p)
+    for trial in range(40):
+        K, m, npair = rng.randrange(0, 40), rng.randrange(1, 30), rng.randrange(0, 12)
+        rows = random_matrix(rng, p, K, m, npair)
+        used, E, W = by_kernel(p, K, m, rows)
+        assert (used, E, W) == by_python(p, K, m, rows)
+        first, _, _ = by_kernel(p, K, m, rows, stop=True)
+        assert first == used[:1]
+
+
+def test_dense_rows_need_intermediate_reduction():
+    """More products per slot than fit 64 bits at once: the kernel reduces on the way."""
+    p, K, m = (1 << 31) - 1, 30, 8
+    rows = [([p - 1] * (j + m), list(range(j)), list(range(m))) for j in range(K)]
+    rows.append(([p - 2] * (K + m), list(range(K)), list(range(m))))
+    assert by_kernel(p, K, m, rows) == by_python(p, K, m, rows)
+
+
+def test_bad_arguments_are_errors():
+    flat = Flat()
+    flat.ids.append(0)
+    flat.add([1], [1])  # refers to a pivot not yet filled
+    with pytest.raises(ValueError):
+        flat.reduce(32003, 2, 2)
+    with pytest.raises(ValueError):
+        Flat().reduce(1 << 31, 2, 0)
+    assert not f4_rows.compiled(1 << 31)
