@@ -23,11 +23,12 @@ With ``record=True`` the run keeps a :class:`~.f4_trace.Trace` for :func:`~.f4_t
 """
 from __future__ import annotations
 
+from itertools import islice
 from typing import Sequence
 
 import flint
 
-from .f4_rows import Flat, compiled
+from .f4_rows import CodedRow, Flat, compiled
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing
@@ -245,7 +246,8 @@ class F4:
                          want: list[int] = (), stop: bool = False):
         """:meth:`_matrix` by the compiled kernel (:mod:`.f4_rows`): returns the pivot columns,
         the non-pivot monomials, the kernel's ``(used, E, W)`` (``W``: the reduced tails of the
-        reducers with leading monomials ``want``) and, when recording, the row specs."""
+        reducers with leading monomials ``want``) and, when recording, the rows as
+        :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
         rowmons, nonpivot = self._symbolic(crow_specs, pivots)
         self.work += sum(map(len, rowmons.values()))
         pivcols = sorted(pivots)
@@ -256,18 +258,20 @@ class F4:
         coefs, get = self.coefs, where.__getitem__
         flat = Flat()
         flat.ids.extend(range(K))
-        for col in pivcols:
-            k, u = pivots[col]
-            rm, cs = rowmons[(k, u)], coefs[k]
-            flat.add(map(get, rm[1:]), cs[1:])
-        for spec in crow_specs:
-            flat.add(map(get, rowmons[spec]), coefs[spec[0]])
+        rows = [(1, pivots[col]) for col in pivcols] + [(0, spec) for spec in crow_specs]
+        if self.trace is None:
+            for start, spec in rows:
+                flat.add(map(get, islice(rowmons[spec], start, None)), coefs[spec[0]][start:])
+            recorded = None
+        else:
+            recorded = []
+            for start, spec in rows:
+                codes = list(map(get, islice(rowmons[spec], start, None)))
+                flat.add(codes, coefs[spec[0]][start:])
+                recorded.append(CodedRow(spec[0], start, codes))
+            recorded = (recorded[:K], recorded[K:])
         out = flat.reduce(self.p, m, K, [where[x] for x in want], stop)
-        specs = None
-        if self.trace is not None:
-            specs = ([self._spec(rowmons[pivots[col]], pivots[col][0], where, True) for col in pivcols],
-                     [self._spec(rowmons[spec], spec[0], where, False) for spec in crow_specs])
-        return pivcols, nonpivot, out, specs
+        return pivcols, nonpivot, out, recorded
 
     def _record(self, K: int, m: int, red_specs: list[RowSpec], rows: list[tuple[RowSpec, int]],
                 new: list[list[int]], roots: Sequence[int] = ()) -> Step:

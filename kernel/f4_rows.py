@@ -51,20 +51,50 @@ class Flat:
                              array("i", want), stop)
 
 
-def spec_codes(spec: RowSpec) -> tuple[list[int], list[int]]:
-    """A recorded row's term positions and their column codes."""
-    return spec.piv_t + spec.np_t, spec.piv_j + [~s for s in spec.np_s]
+class CodedRow:
+    """A recorded row as the kernel takes it: the terms of ``x^u * poly[k]`` from position
+    ``start`` on (1 for a reducer: its leading term is its pivot) with their column codes.
+    F4 records these instead of :class:`~.f4_vectors.RowSpec` when the kernel runs."""
+
+    __slots__ = ("k", "start", "codes", "_spec")
+
+    def __init__(self, k: int, start: int, codes: list[int]) -> None:
+        self.k, self.start, self.codes, self._spec = k, start, codes, None
+
+    @property
+    def piv_j(self) -> list[int]:
+        return [c for c in self.codes if c >= 0]
+
+    def spec(self) -> RowSpec:
+        """The row as a :class:`~.f4_vectors.RowSpec` (for the pure-Python path), kept."""
+        if self._spec is None:
+            piv_t, piv_j, np_t, np_s = [], [], [], []
+            for t, c in enumerate(self.codes, self.start):
+                if c >= 0:
+                    piv_t.append(t)
+                    piv_j.append(c)
+                else:
+                    np_t.append(t)
+                    np_s.append(~c)
+            self._spec = RowSpec(self.k, piv_t, piv_j, np_t, np_s)
+        return self._spec
+
+
+def as_spec(row: RowSpec | CodedRow) -> RowSpec:
+    """A recorded row as a :class:`~.f4_vectors.RowSpec`."""
+    return row.spec() if isinstance(row, CodedRow) else row
 
 
 def replay_step(step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
     """The kernel's ``(used, E, W)`` for a recorded step (:class:`~.f4_trace.Step`) with the
-    coefficients of another prime; the step's codes are computed once and kept on it."""
-    if step.flat is None:
-        rows = [(j, spec) for j, spec in step.reducers] + [(-1, spec) for spec, _ in step.rows]
-        step.flat = [(j, spec.k, *spec_codes(spec)) for j, spec in rows]
+    coefficients of another prime."""
     flat = Flat()
-    for j, k, tix, codes in step.flat:
+    rows = [(j, spec) for j, spec in step.reducers] + [(-1, spec) for spec, _ in step.rows]
+    for j, row in rows:
         if j >= 0:
             flat.ids.append(j)
-        flat.add(codes, map(coefs[k].__getitem__, tix))
+        if isinstance(row, CodedRow):
+            flat.add(row.codes, coefs[row.k][row.start:])
+        else:  # recorded by the pure-Python path
+            flat.add(row.piv_j + [~s for s in row.np_s], map(coefs[row.k].__getitem__, row.piv_t + row.np_t))
     return flat.reduce(p, step.m, step.K, want)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Sequence
 
-from .f4_rows import compiled, replay_step
+from .f4_rows import CodedRow, as_spec, compiled, replay_step
 from .f4_vectors import RowSpec, Vectors, echelon
 
 
@@ -27,10 +27,9 @@ class Step:
 
     K: int
     m: int
-    reducers: list[tuple[int, RowSpec]]
-    rows: list[tuple[RowSpec, int]]
+    reducers: list[tuple[int, RowSpec | CodedRow]]
+    rows: list[tuple[RowSpec | CodedRow, int]]
     new: list[list[int]]
-    flat: list | None = field(default=None, repr=False, compare=False)  # kept by f4_rows
 
 
 @dataclass
@@ -50,15 +49,18 @@ class Trace:
 def replay(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
     """The coefficients mod ``p`` of the reduced basis recorded in ``trace`` (monomials in
     ``trace.shape``), given the generators' coefficients mod ``p`` in the recorded shape."""
+    if compiled(p):
+        return _replay_compiled(trace, polys, p)
     vec = Vectors(p)
     coefs: list[list[int]] = [list(c) for c in polys]
     neg = [[p - c for c in cs] for cs in coefs]
     for st in trace.steps:
         T = [0] * st.K
         combine = vec.combiner(st.m)
-        for j, spec in st.reducers:
+        for j, row in st.reducers:
+            spec = as_spec(row)
             T[j] = combine(spec, coefs[spec.k], neg[spec.k], T)
-        D = [combine(spec, coefs[spec.k], neg[spec.k], T) for spec, _ in st.rows]
+        D = [combine(spec, coefs[spec.k], neg[spec.k], T) for spec in (as_spec(row) for row, _ in st.rows)]
         E, used = echelon(vec, D, st.m)
         if [s0 for _, s0 in used] != [s0 for _, s0 in st.rows]:
             raise TraceMismatch("a pair row reduced differently")
@@ -71,7 +73,8 @@ def replay(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
     st = trace.final
     T = [0] * st.K
     combine = vec.combiner(st.m)
-    for j, spec in st.reducers:
+    for j, row in st.reducers:
+        spec = as_spec(row)
         T[j] = combine(spec, coefs[spec.k], neg[spec.k], T)
     return [[1] + _values_on(vec, T[j], st.m, slots) for j, slots in trace.final_out]
 

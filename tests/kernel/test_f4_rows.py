@@ -4,9 +4,14 @@ import random
 
 import pytest
 
-from mech.kernel import f4_rows
-from mech.kernel.f4_rows import Flat
+from mech.kernel import Block, f4_rows
+from mech.kernel.f4 import F4
+from mech.kernel.f4_rows import CodedRow, Flat
+from mech.kernel.f4_trace import replay
 from mech.kernel.f4_vectors import RowSpec, Vectors, echelon, support
+from mech.kernel.modular import primitive
+from mech.kernel.monomials import Packing
+from tests.util import katsura, ring
 
 pytestmark = pytest.mark.skipif(f4_rows.KERNEL is None, reason="the compiled row kernel is not built")
 
@@ -77,3 +82,25 @@ def test_bad_arguments_are_errors():
     with pytest.raises(ValueError):
         Flat().reduce(1 << 31, 2, 0)
     assert not f4_rows.compiled(1 << 31)
+
+
+@pytest.mark.parametrize("record_compiled", [True, False], ids=["recorded-compiled", "recorded-python"])
+def test_trace_recorded_by_one_path_replays_on_the_other(record_compiled, monkeypatch):
+    """A trace recorded with the kernel (rows as CodedRow) replays in pure Python and the
+    reverse (rows as RowSpec), giving the basis a fresh F4 run gives."""
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    gens = [primitive(g.terms) for g in katsura(R, 4)]
+    P = Packing(R.order, 31)
+    rows = []
+    for t in gens:
+        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
+        rows.append(([m for m, _ in items], [c for _, c in items]))
+    kernel = f4_rows.KERNEL
+    p0, p = 32003, 1000003
+    monkeypatch.setattr(f4_rows, "KERNEL", kernel if record_compiled else None)
+    eng = F4([(ms, [c % p0 for c in cs]) for ms, cs in rows], P, p0, record=True)
+    eng.run()
+    assert isinstance(eng.trace.steps[0].rows[0][0], CodedRow) == record_compiled
+    monkeypatch.setattr(f4_rows, "KERNEL", None if record_compiled else kernel)
+    got = replay(eng.trace, [[c % p for c in cs] for _, cs in rows], p)
+    assert got == [cs for _, cs in F4([(ms, [c % p for c in cs]) for ms, cs in rows], P, p).run()]
