@@ -181,7 +181,7 @@ class F4:
         nonpivot: list[int] = []
         seen: set[int] = set(pivots)
         queue = list(specs) + list(pivots.values())
-        find = self._find_reducer
+        find, cached, active = self._find_reducer, self.divisor.get, self.active
         while queue:
             spec = queue.pop()
             if spec in rowmons:
@@ -189,12 +189,14 @@ class F4:
             k, u = spec
             if degree(u) + tdeg[k] > maxdeg:
                 raise PackingOverflow
-            rm = [u + x for x in mons[k]] if u else mons[k]
+            rm = list(map(u.__add__, mons[k])) if u else mons[k]
             rowmons[spec] = rm
             fresh = set(rm).difference(seen)
             seen.update(fresh)
             for x in fresh:
-                r = find(x, reducers)
+                r = cached(x)
+                if r is None or r < 0 or not active[r]:
+                    r = find(x, reducers)
                 if r >= 0:
                     s = (r, x - mons[r][0])
                     pivots[x] = s
@@ -260,8 +262,11 @@ class F4:
         flat.ids.extend(range(K))
         rows = [(1, pivots[col]) for col in pivcols] + [(0, spec) for spec in crow_specs]
         if self.trace is None:
+            col, val, off = flat.col.extend, flat.val.extend, flat.off
             for start, spec in rows:
-                flat.add(map(get, islice(rowmons[spec], start, None)), coefs[spec[0]][start:])
+                col(map(get, islice(rowmons[spec], start, None)))
+                val(coefs[spec[0]][start:])
+                off.append(len(flat.col))
             recorded = None
         else:
             recorded = []
