@@ -36,6 +36,9 @@ from .monomials import Packing
 Row = tuple[list[int], list[int]]  # (packed monomials, decreasing; coefficients mod p)
 
 
+FULL_TRACE_WORK = 2_000_000  # matrix entries up to which a trace keeps every row (memory)
+
+
 class PackingOverflow(Exception):
     """A monomial exceeds the packing's degree bound (start again with a wider packing)."""
 
@@ -328,9 +331,14 @@ class F4:
             T, pivcols, nonpivot, E, used, red_specs, c_specs = self._matrix(crows, pivots)
             m = len(nonpivot)
             new = [support(self.vec, E[s0], m) for s0 in sorted(E)]  # increasing leading monomial
-        if self.trace is not None and used:
+        if self.trace is not None:
             rows = [(c_specs[r], s0) for r, s0 in used]
-            self.trace.steps.append(self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new]))
+            step = self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new])
+            if self.work <= FULL_TRACE_WORK:  # every row, for a full replay (a certificate)
+                step.full = (red_specs, c_specs, used)
+            else:
+                self.trace.full = False
+            self.trace.steps.append(step)
         for slots, vals in new:
             k = self._add([nonpivot[s] for s in slots], vals, True, d)
             if self.mons[k][0] == 0:

@@ -85,16 +85,21 @@ def as_spec(row: RowSpec | CodedRow) -> RowSpec:
     return row.spec() if isinstance(row, CodedRow) else row
 
 
-def replay_step(step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
-    """The kernel's ``(used, E, W)`` for a recorded step (:class:`~.f4_trace.Step`) with the
+def replay_step(reducers, rows, step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
+    """The kernel's ``(used, E, W)`` for recorded rows (reducers as ``(pivot id, row)``,
+    pair rows) of a matrix shaped as ``step`` (:class:`~.f4_trace.Step`), with the
     coefficients of another prime."""
     flat = Flat()
-    rows = [(j, spec) for j, spec in step.reducers] + [(-1, spec) for spec, _ in step.rows]
-    for j, row in rows:
-        if j >= 0:
-            flat.ids.append(j)
-        if isinstance(row, CodedRow):
-            flat.add(row.codes, coefs[row.k][row.start:])
-        else:  # recorded by the pure-Python path
-            flat.add(row.piv_j + [~s for s in row.np_s], map(coefs[row.k].__getitem__, row.piv_t + row.np_t))
+    for j, row in reducers:
+        flat.ids.append(j)
+        _add_recorded(flat, row, coefs)
+    for row in rows:
+        _add_recorded(flat, row, coefs)
     return flat.reduce(p, step.m, step.K, want)
+
+
+def _add_recorded(flat: Flat, row: RowSpec | CodedRow, coefs: list[list[int]]) -> None:
+    if isinstance(row, CodedRow):
+        flat.add(row.codes, coefs[row.k][row.start:])
+    else:  # recorded by the pure-Python path
+        flat.add(row.piv_j + [~s for s in row.np_s], map(coefs[row.k].__getitem__, row.piv_t + row.np_t))
