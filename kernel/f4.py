@@ -36,7 +36,7 @@ from .monomials import Packing
 Row = tuple[list[int], list[int]]  # (packed monomials, decreasing; coefficients mod p)
 
 
-FULL_TRACE_WORK = 2_000_000  # matrix entries up to which a trace keeps every row (memory)
+FULL_TRACE_WORK = 1_000_000  # matrix entries up to which a trace keeps every row (memory)
 
 
 class PackingOverflow(Exception):
