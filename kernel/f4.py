@@ -176,7 +176,7 @@ class F4:
         ``pivots`` maps a column to its reducer ``(k, u)`` and is completed here; returns the
         monomial lists of all rows by spec and the non-pivot monomials."""
         P = self.P
-        degree, maxdeg = P.degree, P.maxdeg
+        dshift, emask, maxdeg = P.dshift, P.emask, P.maxdeg
         mons, tdeg = self.mons, self.tdeg
         reducers = sorted(((mons[k][0], k) for k in range(len(mons)) if self.active[k]),
                           key=lambda t: len(mons[t[1]]))
@@ -190,7 +190,7 @@ class F4:
             if spec in rowmons:
                 continue
             k, u = spec
-            if degree(u) + tdeg[k] > maxdeg:
+            if ((u >> dshift) & emask) + tdeg[k] > maxdeg:  # the degree of u times poly k
                 raise PackingOverflow
             rm = list(map(u.__add__, mons[k])) if u else mons[k]
             rowmons[spec] = rm
@@ -433,5 +433,6 @@ def f4_modp(gens: Sequence, ring) -> list[dict]:
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    unpack, nmod = P.unpack, flint.nmod
-    return [{unpack(m): nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in basis]
+    exps = {m: P.unpack(m) for m in {m for ms, _ in basis for m in ms}}  # a monomial once
+    nmod = flint.nmod
+    return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in basis]

@@ -198,8 +198,8 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
         if result is None:
             continue
         shape, G, trace = result
-        unpack = P.unpack
-        basis = [{unpack(mo): c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
+        exps = {mo: P.unpack(mo) for mo in {mo for ms in shape for mo in ms}}  # a monomial once
+        basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
         if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact",
                                             lambda q: _replayed_basis_agrees(trace, coefs, G, q)):
             return basis
