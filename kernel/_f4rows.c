@@ -167,6 +167,8 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     for (Py_ssize_t j = 0; j < K; j++)
         T.len[j] = -1;
     for (Py_ssize_t r = 0; r < nred; r++) {
+        if ((r & 1023) == 1023 && PyErr_CheckSignals())
+            goto done;  /* Ctrl-C, a time limit's signal: the handler's exception propagates */
         Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
         int32_t j = pid[r];
         if (b < 0 || j < 0 || j >= K) {
@@ -186,6 +188,8 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     }
     /* pair rows: reduce, then forward elimination by the earlier pivot rows in turn */
     for (Py_ssize_t r = nred; r < R; r++) {
+        if (((r - nred) & 255) == 255 && PyErr_CheckSignals())
+            goto done;
         Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
         if (b < 0) {
             PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
