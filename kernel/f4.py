@@ -20,6 +20,8 @@ critical pairs are reduced the same way and their (small) remainder block is bro
 reduced echelon form (:mod:`.f4_vectors`).
 
 With ``record=True`` the run keeps a :class:`~.f4_trace.Trace` for :func:`~.f4_trace.replay`.
+When the compiled kernel is built (:mod:`.f4_rows`), the linear algebra of a matrix modulo a
+prime below ``2^31`` runs there in one call, on the same rows.
 """
 from __future__ import annotations
 
@@ -334,10 +336,12 @@ class F4:
         if self.trace is not None:
             rows = [(c_specs[r], s0) for r, s0 in used]
             step = self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new])
-            if self.work <= FULL_TRACE_WORK:  # every row, for a full replay (a certificate)
+            if self.trace.full and self.work <= FULL_TRACE_WORK:  # every row, for a full replay
                 step.full = (red_specs, c_specs, used)
-            else:
+            elif self.trace.full:  # too large to keep: no full replay, the rows are let go
                 self.trace.full = False
+                for st in self.trace.steps:
+                    st.full = None
             self.trace.steps.append(step)
         for slots, vals in new:
             k = self._add([nonpivot[s] for s in slots], vals, True, d)

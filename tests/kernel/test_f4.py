@@ -8,6 +8,7 @@ import pytest
 
 from mech.kernel import GF, QQ, Block, MonomialOrder, f4_rows
 from mech.kernel.groebner import groebner
+from mech.kernel import f4 as f4_module
 from mech.kernel.f4 import F4, pack_polys
 from mech.kernel.f4_trace import TraceMismatch, replay
 from mech.kernel.modular import (ExactReducer, Reconstructor, _modular, _pack, _replayed_basis_agrees, primes, primitive,
@@ -211,3 +212,16 @@ def test_full_replay_certifies_the_lift_modulo_a_fresh_prime():
     assert not verify_basis(basis, ints, R, primes(), replayed=lambda p: _replayed_basis_agrees(trace, coefs, wrong, p))
     trace.full = False
     assert _replayed_basis_agrees(trace, coefs, G, q) is None
+
+
+def test_a_large_run_keeps_no_full_trace(monkeypatch):
+    """Past FULL_TRACE_WORK matrix entries the trace lets every row go (memory); the check
+    modulo a fresh prime then falls back to the direct one."""
+    monkeypatch.setattr(f4_module, "FULL_TRACE_WORK", 200)
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    ints = [primitive(g.terms) for g in katsura(R, 4)]
+    P = Packing(R.order, 31)
+    shapes, coefs = _pack(ints, P)
+    shape, G, trace = _modular(shapes, coefs, P, primes(), 100)
+    assert not trace.full and all(st.full is None for st in trace.steps)
+    assert _replayed_basis_agrees(trace, coefs, G, 1000003) is None
