@@ -194,7 +194,7 @@ class F4:
             k, u = spec
             if ((u >> dshift) & emask) + tdeg[k] > maxdeg:  # the degree of u times poly k
                 raise PackingOverflow
-            rm = list(map(u.__add__, mons[k])) if u else mons[k]
+            rm = [u + x for x in mons[k]] if u else mons[k]  # (u + x: the monomials may be fmpz)
             rowmons[spec] = rm
             fresh = set(rm).difference(seen)
             seen.update(fresh)
