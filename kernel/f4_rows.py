@@ -13,7 +13,7 @@ from typing import Sequence
 from .f4_vectors import RowSpec
 
 try:
-    from . import _f4rows as KERNEL
+    from ._f4rows import reduce as KERNEL  # the kernel's one function
 except ImportError:  # no compiler at install: the pure-Python path
     KERNEL = None
 
@@ -47,7 +47,7 @@ class Flat:
         """``(used, E, W)``: the pair rows that raised the rank with their pivot slots, the
         reduced echelon rows ``(slot, slots, values)`` by increasing pivot slot, and the
         reduced tails ``(slots, values)`` of the reducers ``want`` (slots highest first)."""
-        return KERNEL.reduce(p, m, K, len(self.ids), self.ids, self.off, self.col, self.val,
+        return KERNEL(p, m, K, len(self.ids), self.ids, self.off, self.col, self.val,
                              array("i", want), stop)
 
 
