@@ -237,15 +237,22 @@ def reduce_basis(basis: Sequence[dict[Exp, Any]], ring: PolyRing) -> list[dict[E
 
 
 def _reduce_basis(basis: Sequence[dict[Exp, Any]], pk: Packing) -> list[dict[int, Any]]:
+    """The elements of a minimal basis by increasing leading monomial, each tail reduced by
+    the elements before it, already reduced (a leading monomial dividing a term is at most
+    that term, so the later ones never apply; the reduced basis is unique, so this is the
+    basis reducing by all others gives, with less work: reduced reducers bring no terms that
+    reduce again)."""
     items = [(max(b), b) for b in (pack(pk, b) for b in basis if b)]
     minimal = [(lm, b) for idx, (lm, b) in enumerate(items)
                if not any(pk.divides(l2, lm) and (l2 != lm or j < idx)
                           for j, (l2, _) in enumerate(items) if j != idx)]
+    minimal.sort(key=lambda t: t[0])
+    done = Reducer(pk)
     out = []
-    for idx, (lm, b) in enumerate(minimal):
-        others = Reducer(pk, [m for j, (_, m) in enumerate(minimal) if j != idx])
-        r = others.reduce({e: c for e, c in b.items() if e != lm})
+    for lm, b in minimal:
+        r = done.reduce({e: c for e, c in b.items() if e != lm})
         r[lm] = b[lm]
-        out.append((lm, _monic(r, lm)))
-    out.sort(key=lambda t: t[0])
-    return [b for _, b in out]
+        r = _monic(r, lm)
+        done.add(r)
+        out.append(r)
+    return out

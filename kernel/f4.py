@@ -20,18 +20,25 @@ critical pairs are reduced the same way and their (small) remainder block is bro
 reduced echelon form (:mod:`.f4_vectors`).
 
 With ``record=True`` the run keeps a :class:`~.f4_trace.Trace` for :func:`~.f4_trace.replay`.
+When the compiled kernel is built (:mod:`.f4_rows`), the linear algebra of a matrix modulo a
+prime below ``2^31`` runs there in one call, on the same rows.
 """
 from __future__ import annotations
 
+from itertools import islice
 from typing import Sequence
 
 import flint
 
+from .f4_rows import CodedRow, Flat, compiled
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing
 
 Row = tuple[list[int], list[int]]  # (packed monomials, decreasing; coefficients mod p)
+
+
+FULL_TRACE_WORK = 1_000_000  # matrix entries up to which a trace keeps every row (memory)
 
 
 class PackingOverflow(Exception):
@@ -171,7 +178,7 @@ class F4:
         ``pivots`` maps a column to its reducer ``(k, u)`` and is completed here; returns the
         monomial lists of all rows by spec and the non-pivot monomials."""
         P = self.P
-        degree, maxdeg = P.degree, P.maxdeg
+        dshift, emask, maxdeg = P.dshift, P.emask, P.maxdeg
         mons, tdeg = self.mons, self.tdeg
         reducers = sorted(((mons[k][0], k) for k in range(len(mons)) if self.active[k]),
                           key=lambda t: len(mons[t[1]]))
@@ -179,20 +186,22 @@ class F4:
         nonpivot: list[int] = []
         seen: set[int] = set(pivots)
         queue = list(specs) + list(pivots.values())
-        find = self._find_reducer
+        find, cached, active = self._find_reducer, self.divisor.get, self.active
         while queue:
             spec = queue.pop()
             if spec in rowmons:
                 continue
             k, u = spec
-            if degree(u) + tdeg[k] > maxdeg:
+            if ((u >> dshift) & emask) + tdeg[k] > maxdeg:  # the degree of u times poly k
                 raise PackingOverflow
-            rm = [u + x for x in mons[k]] if u else mons[k]
+            rm = [u + x for x in mons[k]] if u else mons[k]  # (u + x: the monomials may be fmpz)
             rowmons[spec] = rm
             fresh = set(rm).difference(seen)
             seen.update(fresh)
             for x in fresh:
-                r = find(x, reducers)
+                r = cached(x)
+                if r is None or r < 0 or not active[r]:
+                    r = find(x, reducers)
                 if r >= 0:
                     s = (r, x - mons[r][0])
                     pivots[x] = s
@@ -240,6 +249,40 @@ class F4:
         E, used = echelon(vec, D, m)
         return T, pivcols, nonpivot, E, used, red_specs, c_specs
 
+    def _matrix_compiled(self, crow_specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]],
+                         want: list[int] = (), stop: bool = False):
+        """:meth:`_matrix` by the compiled kernel (:mod:`.f4_rows`): returns the pivot columns,
+        the non-pivot monomials, the kernel's ``(used, E, W)`` (``W``: the reduced tails of the
+        reducers with leading monomials ``want``) and, when recording, the rows as
+        :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
+        rowmons, nonpivot = self._symbolic(crow_specs, pivots)
+        self.work += sum(map(len, rowmons.values()))
+        pivcols = sorted(pivots)
+        nonpivot.sort()
+        K, m = len(pivcols), len(nonpivot)
+        where = dict(zip(pivcols, range(K)))
+        where.update(zip(nonpivot, range(-1, -m - 1, -1)))
+        coefs, get = self.coefs, where.__getitem__
+        flat = Flat()
+        flat.ids.extend(range(K))
+        rows = [(1, pivots[col]) for col in pivcols] + [(0, spec) for spec in crow_specs]
+        if self.trace is None:
+            col, val, off = flat.col.extend, flat.val.extend, flat.off
+            for start, spec in rows:
+                col(map(get, islice(rowmons[spec], start, None)))
+                val(coefs[spec[0]][start:])
+                off.append(len(flat.col))
+            recorded = None
+        else:
+            recorded = []
+            for start, spec in rows:
+                codes = list(map(get, islice(rowmons[spec], start, None)))
+                flat.add(codes, coefs[spec[0]][start:])
+                recorded.append(CodedRow(spec[0], start, codes))
+            recorded = (recorded[:K], recorded[K:])
+        out = flat.reduce(self.p, m, K, [where[x] for x in want], stop)
+        return pivcols, nonpivot, out, recorded
+
     def _record(self, K: int, m: int, red_specs: list[RowSpec], rows: list[tuple[RowSpec, int]],
                 new: list[list[int]], roots: Sequence[int] = ()) -> Step:
         """A trace step keeping only the reducers the given rows (and reducers ``roots``)
@@ -280,12 +323,26 @@ class F4:
         pivots, crows = self._pair_rows(sel)
         if not crows:
             return True
-        T, pivcols, nonpivot, E, used, red_specs, c_specs = self._matrix(crows, pivots)
-        m = len(nonpivot)
-        new = [support(self.vec, E[s0], m) for s0 in sorted(E)]  # increasing leading monomial
-        if self.trace is not None and used:
+        if compiled(self.p):
+            pivcols, nonpivot, (used, E, _), specs = self._matrix_compiled(crows, pivots)
+            m = len(nonpivot)
+            new = [(slots, vals) for _, slots, vals in E]  # increasing leading monomial
+            if specs is not None:
+                red_specs, c_specs = specs
+        else:
+            T, pivcols, nonpivot, E, used, red_specs, c_specs = self._matrix(crows, pivots)
+            m = len(nonpivot)
+            new = [support(self.vec, E[s0], m) for s0 in sorted(E)]  # increasing leading monomial
+        if self.trace is not None:
             rows = [(c_specs[r], s0) for r, s0 in used]
-            self.trace.steps.append(self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new]))
+            step = self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new])
+            if self.trace.full and self.work <= FULL_TRACE_WORK:  # every row, for a full replay
+                step.full = (red_specs, c_specs, used)
+            elif self.trace.full:  # too large to keep: no full replay, the rows are let go
+                self.trace.full = False
+                for st in self.trace.steps:
+                    st.full = None
+            self.trace.steps.append(step)
         for slots, vals in new:
             k = self._add([nonpivot[s] for s in slots], vals, True, d)
             if self.mons[k][0] == 0:
@@ -313,14 +370,19 @@ class F4:
                 and not any(((mons[k][0] | g) - lm) & g == g and lm != mons[k][0] for lm in lms)]
         keep.sort(key=lambda k: mons[k][0])
         pivots = {mons[k][0]: (k, 0) for k in keep}
-        T, pivcols, nonpivot, _, _, red_specs, _ = self._matrix([], pivots)
+        lead = [mons[k][0] for k in keep]
+        if compiled(self.p):
+            pivcols, nonpivot, (_, _, tails), specs = self._matrix_compiled([], pivots, lead)
+            red_specs = specs[0] if specs else None
+        else:
+            T, pivcols, nonpivot, _, _, red_specs, _ = self._matrix([], pivots)
+            column = dict(zip(pivcols, range(len(pivcols))))
+            tails = [support(self.vec, T[column[lm]], len(nonpivot)) for lm in lead]
         m = len(nonpivot)
         where = dict(zip(pivcols, range(len(pivcols))))
         out, final = [], []
-        for k in keep:
-            lm = mons[k][0]
+        for lm, (slots, vals) in zip(lead, tails):
             j = where[lm]
-            slots, vals = support(self.vec, T[j], m)
             out.append(([lm] + [nonpivot[s] for s in slots], [1] + vals))
             final.append((j, slots))
         if self.trace is not None:
@@ -340,6 +402,8 @@ def is_groebner(polys: Sequence[Row], packing: Packing, p: int) -> bool:
     pivots, crows = eng._pair_rows(eng.pairs)
     if not crows:
         return True
+    if compiled(p):
+        return not eng._matrix_compiled(crows, pivots, stop=True)[2][0]
     return not eng._matrix(crows, pivots)[3]
 
 
@@ -373,5 +437,6 @@ def f4_modp(gens: Sequence, ring) -> list[dict]:
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    unpack, nmod = P.unpack, flint.nmod
-    return [{unpack(m): nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in basis]
+    exps = {m: P.unpack(m) for m in {m for ms, _ in basis for m in ms}}  # a monomial once
+    nmod = flint.nmod
+    return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in basis]

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Sequence
 
+from .f4_rows import CodedRow, as_spec, compiled, replay_step
 from .f4_vectors import RowSpec, Vectors, echelon
 
 
@@ -26,9 +27,12 @@ class Step:
 
     K: int
     m: int
-    reducers: list[tuple[int, RowSpec]]
-    rows: list[tuple[RowSpec, int]]
+    reducers: list[tuple[int, RowSpec | CodedRow]]
+    rows: list[tuple[RowSpec | CodedRow, int]]
     new: list[list[int]]
+    # every reducer (by pivot id), every pair row and the rows that raised the rank with their
+    # pivot slots, for a full replay (None: not kept)
+    full: tuple[list, list, list[tuple[int, int]]] | None = None
 
 
 @dataclass
@@ -43,20 +47,26 @@ class Trace:
     final: Step | None = None
     final_out: list[tuple[int, list[int]]] = field(default_factory=list)
     shape: list[list[int]] = field(default_factory=list)
+    full: bool = True  # whether every step kept all its rows (see :func:`replay_full`)
 
 
 def replay(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
     """The coefficients mod ``p`` of the reduced basis recorded in ``trace`` (monomials in
     ``trace.shape``), given the generators' coefficients mod ``p`` in the recorded shape."""
+    if compiled(p):
+        return _replay_compiled(trace, polys, p)
     vec = Vectors(p)
     coefs: list[list[int]] = [list(c) for c in polys]
     neg = [[p - c for c in cs] for cs in coefs]
     for st in trace.steps:
+        if not st.rows:
+            continue
         T = [0] * st.K
         combine = vec.combiner(st.m)
-        for j, spec in st.reducers:
+        for j, row in st.reducers:
+            spec = as_spec(row)
             T[j] = combine(spec, coefs[spec.k], neg[spec.k], T)
-        D = [combine(spec, coefs[spec.k], neg[spec.k], T) for spec, _ in st.rows]
+        D = [combine(spec, coefs[spec.k], neg[spec.k], T) for spec in (as_spec(row) for row, _ in st.rows)]
         E, used = echelon(vec, D, st.m)
         if [s0 for _, s0 in used] != [s0 for _, s0 in st.rows]:
             raise TraceMismatch("a pair row reduced differently")
@@ -69,9 +79,64 @@ def replay(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
     st = trace.final
     T = [0] * st.K
     combine = vec.combiner(st.m)
-    for j, spec in st.reducers:
+    for j, row in st.reducers:
+        spec = as_spec(row)
         T[j] = combine(spec, coefs[spec.k], neg[spec.k], T)
     return [[1] + _values_on(vec, T[j], st.m, slots) for j, slots in trace.final_out]
+
+
+def _replay_compiled(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
+    """:func:`replay` with the matrices reduced by the compiled kernel (:mod:`.f4_rows`)."""
+    coefs: list[list[int]] = [list(c) for c in polys]
+    for st in trace.steps:
+        if not st.rows:
+            continue
+        used, E, _ = replay_step(st.reducers, [row for row, _ in st.rows], st, coefs, p)
+        if [s0 for _, s0 in used] != [s0 for _, s0 in st.rows]:
+            raise TraceMismatch("a pair row reduced differently")
+        rows = {s0: (slots, vals) for s0, slots, vals in E}
+        for slots in st.new:
+            coefs.append(_on_slots(*rows[slots[0]], slots))
+    if trace.unit:
+        return [[1]]
+    st = trace.final
+    _, _, W = replay_step(st.reducers, [], st, coefs, p, [j for j, _ in trace.final_out])
+    return [[1] + _on_slots(*w, slots) for w, (_, slots) in zip(W, trace.final_out)]
+
+
+def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
+    """:func:`replay` of every row of every matrix, also the pair rows that reduced to zero
+    (the trace must be ``full``; needs the compiled kernel for ``p``).  Raises
+    :class:`TraceMismatch` unless every matrix has the recorded rank profile: the replay is
+    then an F4 run modulo ``p`` (the same pairs, selected by leading monomials alone, and the
+    same symbolic preprocessing up to superfluous reducers), so the result is the reduced
+    Gröbner basis of the ideal modulo ``p``."""
+    if not trace.full or not compiled(p):
+        raise TraceMismatch("no full trace to replay")
+    coefs: list[list[int]] = [list(c) for c in polys]
+    for st in trace.steps:
+        reducers, rows, used_then = st.full
+        used, E, _ = replay_step(list(enumerate(reducers)), rows, st, coefs, p)
+        if used != used_then:
+            raise TraceMismatch("a matrix reduced differently")
+        got = {s0: (slots, vals) for s0, slots, vals in E}
+        for slots in st.new:
+            coefs.append(_on_slots(*got[slots[0]], slots))
+    if trace.unit:
+        return [[1]]
+    st = trace.final
+    _, _, W = replay_step(st.reducers, [], st, coefs, p, [j for j, _ in trace.final_out])
+    return [[1] + _on_slots(*w, slots) for w, (_, slots) in zip(W, trace.final_out)]
+
+
+def _on_slots(support: list[int], vals: list[int], slots: list[int]) -> list[int]:
+    """The entries of a vector (its nonzero slots and values) in the given slots, which must
+    hold all its nonzero entries."""
+    got = dict(zip(support, vals))
+    out = [got.pop(s, 0) for s in slots]
+    if got:
+        raise TraceMismatch("a polynomial has a term the recorded run did not have")
+    return out
 
 
 def _values_on(vec: Vectors, x: int, m: int, slots: list[int]) -> list[int]:

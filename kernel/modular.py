@@ -19,7 +19,13 @@
      ``G mod q`` is a Gröbner basis.  If ``G`` were not one over QQ, some S-pair would have a
      nonzero remainder whose numerators ``q`` divides; ``q`` is drawn independently of ``G``
      from about 7 million primes, so this has probability below ``b / 27 / 7e6`` for
-     remainders of ``b`` bits in all.
+     remainders of ``b`` bits in all.  The check modulo ``q`` is first made by replaying the
+     recorded run in full (every row of every matrix, also those that reduced to zero,
+     :func:`.f4_trace.replay_full`): if ``q`` keeps every matrix's rank profile, the replay
+     is an F4 run modulo ``q``, so ``G mod q`` equal to its result is the reduced Gröbner
+     basis of ``I mod q``, a Gröbner basis (the same remainders vanish mod ``q``: the
+     argument above applies unchanged).  A ``q`` that leaves the trace, or a run too large
+     to keep every row, gets the direct check (one F4 matrix of all S-pairs of ``G``).
 
    ``J = I`` then holds when ``I`` is homogeneous: with ``p`` any prime used, the rank of a
    matrix over ``Z`` only drops mod ``p``, so ``dim I_d >= dim (I mod p)_d = #LM(G)_d =
@@ -34,13 +40,13 @@ from __future__ import annotations
 
 import random
 from math import gcd, isqrt
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import flint
 
 from .errors import NotSupported
 from .f4 import F4, PackingOverflow, initial_degree, is_groebner
-from .f4_trace import TraceMismatch, replay
+from .f4_trace import Trace, TraceMismatch, replay, replay_full
 from .monomials import Packing, nonnegative_matrix
 from .poly import support_mask
 
@@ -191,10 +197,11 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
                 maxdeg = 2 * maxdeg + 1
         if result is None:
             continue
-        shape, G = result
-        unpack = P.unpack
-        basis = [{unpack(mo): c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
-        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact"):
+        shape, G, trace = result
+        exps = {mo: P.unpack(mo) for mo in {mo for ms in shape for mo in ms}}  # a monomial once
+        basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
+        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact",
+                                            lambda q: _replayed_basis_agrees(trace, coefs, G, q)):
             return basis
     raise ModularFailure("modular F4: no verified basis after 3 attempts (use another engine)")
 
@@ -243,18 +250,21 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
                 continue
             good += 1
             if not rec.check(res, p) and candidate is not None:
-                return shape, candidate
+                return shape, candidate, trace
             lifter.add(res, p)
             candidate = rec.attempt(lifter.values, lifter.m)
     return None
 
 
-def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool = False) -> bool:
+def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool = False,
+                 replayed: Callable[[int], bool | None] | None = None) -> bool:
     """Check a lifted reduced basis (see the module docstring).
 
     Always exact: every generator top-reduces to 0 over QQ.  The Gröbner basis property is
-    checked exactly over QQ (``exact``), or else modulo one fresh prime, where it is one F4
-    matrix of all S-pairs left by the Gebauer–Möller criteria."""
+    checked exactly over QQ (``exact``), or else modulo one fresh prime ``q``: by
+    ``replayed(q)`` when given (True: ``G mod q`` is the reduced basis of the ideal mod
+    ``q``; None: ``q`` cannot tell), else (or on None) by one F4 matrix of all S-pairs left
+    by the Gebauer–Möller criteria."""
     if len(basis) == 1 and len(basis[0]) == 1 and not any(next(iter(basis[0]))):
         return True  # the unit ideal: nothing to check beyond the lift
     red = ExactReducer(basis, ring.order)
@@ -265,6 +275,12 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
         checked = 0
         while checked < 1:
             q = next(stream)
+            agrees = replayed(q) if replayed is not None else None
+            if agrees is not None:
+                if not agrees:
+                    return False
+                checked += 1
+                continue
             rows = _reduce_mod(basis, ring.order, q)
             if rows is None:
                 continue
@@ -272,6 +288,28 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
                 return False
             checked += 1
     return all(red.reduces_to_zero(f) for f in ints)
+
+
+def _replayed_basis_agrees(trace: Trace, coefs: list[list[int]], G: list[list[Any]], q: int) -> bool | None:
+    """Whether the lifted basis ``G`` (rational coefficients in the trace's shape) is, modulo
+    ``q``, the reduced Gröbner basis of the ideal modulo ``q``, by a full replay of the trace
+    (:func:`.f4_trace.replay_full`); None if ``q`` cannot tell (it divides a leading
+    coefficient or a denominator, or does not follow the trace)."""
+    if any(cs[0] % q == 0 for cs in coefs):
+        return None
+    mod = []
+    for cs in G:
+        row = []
+        for c in cs:
+            d = int(c.q) % q
+            if d == 0:
+                return None
+            row.append(int(c.p) * pow(d, -1, q) % q)
+        mod.append(row)
+    try:
+        return replay_full(trace, [[c % q for c in cs] for cs in coefs], q) == mod
+    except TraceMismatch:
+        return None
 
 
 def _reduce_mod(basis: list[dict], order, q: int):

@@ -1,19 +1,31 @@
-"""The F4 engines (kernel/f4.py, f4_vectors.py, f4_trace.py, modular.py, monomials.py) against
-Buchberger's reduced bases: ``f4`` over Z/p, ``modular`` over QQ."""
+"""The F4 engines (kernel/f4.py, f4_vectors.py, f4_trace.py, f4_rows.py, modular.py, monomials.py)
+against Buchberger's reduced bases: ``f4`` over Z/p, ``modular`` over QQ; every test runs with the
+compiled row kernel and with the pure-Python linear algebra."""
 import random
 
 import flint
 import pytest
 
-from mech.kernel import GF, QQ, Block, MonomialOrder
+from mech.kernel import GF, QQ, Block, MonomialOrder, f4_rows
 from mech.kernel.groebner import groebner
+from mech.kernel import f4 as f4_module
 from mech.kernel.f4 import F4, pack_polys
 from mech.kernel.f4_trace import TraceMismatch, replay
-from mech.kernel.modular import ExactReducer, Reconstructor, primes, primitive, ratrec, verify_basis
+from mech.kernel.modular import (ExactReducer, Reconstructor, _modular, _pack, _replayed_basis_agrees, primes, primitive,
+                                 ratrec, verify_basis)
 from mech.kernel.monomials import Packing
 from tests.util import cyclic, katsura, ring
 
 P32003 = GF(32003)
+
+
+@pytest.fixture(autouse=True, params=["compiled", "python"])
+def row_kernel(request, monkeypatch):
+    """Run the test with the compiled row kernel (when built) and with the pure-Python path."""
+    if request.param == "python":
+        monkeypatch.setattr(f4_rows, "KERNEL", None)
+    elif f4_rows.KERNEL is None:
+        pytest.skip("the compiled row kernel is not built")
 
 
 def f4(R):
@@ -180,3 +192,36 @@ def test_verification_rejects_a_wrong_basis():
     assert not verify_basis(wrong, ints, R, primes())
     assert e == (0, 2, 0)
     assert ExactReducer(basis, R.order).reduces_to_zero(primitive((x**5 - z * y).terms))
+
+
+def test_full_replay_certifies_the_lift_modulo_a_fresh_prime():
+    """The fast check modulo q by a full replay of the trace: the true lift agrees, a changed
+    coefficient disagrees (and fails verification), a trace without all rows cannot tell."""
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    ints = [primitive(g.terms) for g in katsura(R, 4)]
+    P = Packing(R.order, 31)
+    shapes, coefs = _pack(ints, P)
+    shape, G, trace = _modular(shapes, coefs, P, primes(), 100)
+    q = 1000003
+    compiled = f4_rows.compiled(q)
+    assert _replayed_basis_agrees(trace, coefs, G, q) is (True if compiled else None)
+    wrong = [list(cs) for cs in G]
+    wrong[-1][-1] += flint.fmpq(1, 7)
+    assert _replayed_basis_agrees(trace, coefs, wrong, q) is (False if compiled else None)
+    basis = [{P.unpack(m): c for m, c in zip(ms, cs)} for ms, cs in zip(shape, wrong)]
+    assert not verify_basis(basis, ints, R, primes(), replayed=lambda p: _replayed_basis_agrees(trace, coefs, wrong, p))
+    trace.full = False
+    assert _replayed_basis_agrees(trace, coefs, G, q) is None
+
+
+def test_a_large_run_keeps_no_full_trace(monkeypatch):
+    """Past FULL_TRACE_WORK matrix entries the trace lets every row go (memory); the check
+    modulo a fresh prime then falls back to the direct one."""
+    monkeypatch.setattr(f4_module, "FULL_TRACE_WORK", 200)
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    ints = [primitive(g.terms) for g in katsura(R, 4)]
+    P = Packing(R.order, 31)
+    shapes, coefs = _pack(ints, P)
+    shape, G, trace = _modular(shapes, coefs, P, primes(), 100)
+    assert not trace.full and all(st.full is None for st in trace.steps)
+    assert _replayed_basis_agrees(trace, coefs, G, 1000003) is None

@@ -1,0 +1,340 @@
+/* The linear algebra of one F4 matrix modulo a prime p < 2^31, compiled (optional: the
+ * pure-Python path of kernel/f4_vectors.py computes the same, see kernel/f4_rows.py).
+ *
+ * reduce(p, m, K, nred, ids, off, col, val, want, stop) -> (used, E, W)
+ *
+ * Rows are given flat: row r has the entries off[r] .. off[r+1]-1 with column codes col[]
+ * (c >= 0: pivot column c, whose reducer is unit-leading; c < 0: non-pivot slot ~c) and
+ * coefficients val[] (below p).  The first nred rows are reducers (leading entry left out),
+ * filling the pivot ids ids[r] (0 <= id < K) in an order where every pivot a row refers to is
+ * filled before; each becomes its reduced tail T = N - sum c_j T_j over its pivot entries.
+ * The other rows (pair rows) are reduced the same way and brought to reduced echelon form
+ * exactly as kernel/f4_vectors.echelon does (same operations in the same order).
+ * Returns used = [(pair row index, pivot slot)], E = [(pivot slot, slots, values)] by
+ * increasing pivot slot (slots highest first), W = [(slots, values)] of the reduced tails
+ * of the pivot ids in want.  With stop set, returns as soon as a pair row does not reduce
+ * to zero (used then holds that row).
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    uint32_t **rows;
+    int32_t *len;
+    Py_ssize_t K;
+} Table;
+
+static void table_free(Table *t)
+{
+    if (t->rows) {
+        for (Py_ssize_t j = 0; j < t->K; j++)
+            free(t->rows[j]);
+        free(t->rows);
+    }
+    free(t->len);
+}
+
+static void normalize(uint64_t *acc, Py_ssize_t b, uint64_t p)
+{
+    for (Py_ssize_t s = 0; s < b; s++)
+        acc[s] %= p;
+}
+
+/* acc[0..m) := the reduced row r (entries < p); returns the bound (highest nonzero + 1),
+ * -1 on a bad pivot reference. */
+static Py_ssize_t combine(const Table *T, uint64_t *acc, Py_ssize_t m, uint64_t p, uint64_t hmax,
+                          const int64_t *off, const int32_t *col, const uint64_t *val, Py_ssize_t r)
+{
+    Py_ssize_t b = 0;
+    for (int64_t e = off[r]; e < off[r + 1]; e++) {
+        int32_t c = col[e];
+        Py_ssize_t need;
+        if (c < 0)
+            need = (Py_ssize_t)(~c) + 1;
+        else {
+            if (c >= T->K || T->len[c] < 0)
+                return -1;
+            need = T->len[c];
+        }
+        if (need > b)
+            b = need;
+    }
+    if (b > m)
+        return -1;
+    memset(acc, 0, (size_t)b * sizeof(uint64_t));
+    uint64_t count = 0;
+    for (int64_t e = off[r]; e < off[r + 1]; e++) {
+        int32_t c = col[e];
+        uint64_t v = val[e] % p;
+        if (c < 0) {
+            acc[~c] += v;
+            continue;
+        }
+        if (v == 0)
+            continue;
+        uint64_t nv = p - v;
+        const uint32_t *t = T->rows[c];
+        Py_ssize_t n = T->len[c];
+        for (Py_ssize_t s = 0; s < n; s++)
+            acc[s] += nv * t[s];
+        if (++count >= hmax) {
+            normalize(acc, b, p);
+            count = 0;
+        }
+    }
+    normalize(acc, b, p);
+    while (b > 0 && acc[b - 1] == 0)
+        b--;
+    return b;
+}
+
+static PyObject *support(const uint64_t *x, Py_ssize_t b)
+{
+    PyObject *slots = PyList_New(0), *vals = PyList_New(0);
+    if (!slots || !vals)
+        goto fail;
+    for (Py_ssize_t s = b - 1; s >= 0; s--) {
+        if (x[s]) {
+            PyObject *a = PyLong_FromSsize_t(s), *v = PyLong_FromUnsignedLongLong(x[s]);
+            if (!a || !v || PyList_Append(slots, a) || PyList_Append(vals, v)) {
+                Py_XDECREF(a);
+                Py_XDECREF(v);
+                goto fail;
+            }
+            Py_DECREF(a);
+            Py_DECREF(v);
+        }
+    }
+    return Py_BuildValue("(NN)", slots, vals);
+fail:
+    Py_XDECREF(slots);
+    Py_XDECREF(vals);
+    return NULL;
+}
+
+static uint64_t inverse(uint64_t a, uint64_t p)
+{
+    int64_t t = 0, nt = 1, r = (int64_t)p, nr = (int64_t)a;
+    while (nr) {
+        int64_t q = r / nr, tmp;
+        tmp = t - q * nt; t = nt; nt = tmp;
+        tmp = r - q * nr; r = nr; nr = tmp;
+    }
+    return (uint64_t)(t < 0 ? t + (int64_t)p : t);
+}
+
+static PyObject *f4_reduce(PyObject *self, PyObject *args)
+{
+    unsigned long long p_;
+    Py_ssize_t m, K, nred;
+    int stop;
+    Py_buffer ids, off, col, val, want;
+    if (!PyArg_ParseTuple(args, "Knnny*y*y*y*y*p", &p_, &m, &K, &nred, &ids, &off, &col, &val, &want, &stop))
+        return NULL;
+    uint64_t p = p_;
+    PyObject *result = NULL, *used = NULL, *E = NULL, *W = NULL;
+    Table T = {NULL, NULL, K};
+    uint64_t *acc = NULL, **piv = NULL;
+    Py_ssize_t *pslot = NULL, npiv = 0;
+    Py_ssize_t R = off.len / (Py_ssize_t)sizeof(int64_t) - 1;
+    const int32_t *pid = ids.buf, *pcol = col.buf, *pwant = want.buf;
+    const int64_t *poff = off.buf;
+    const uint64_t *pval = val.buf;
+    Py_ssize_t nwant = want.len / (Py_ssize_t)sizeof(int32_t);
+
+    if (p < 2 || p >= (1ULL << 31) || R < nred || ids.len / (Py_ssize_t)sizeof(int32_t) < nred) {
+        PyErr_SetString(PyExc_ValueError, "f4 rows: bad arguments");
+        goto done;
+    }
+    uint64_t hmax = (UINT64_MAX - p) / ((p - 1) * (p - 1));
+    if (hmax > (1ULL << 30))
+        hmax = 1ULL << 30;
+    T.rows = calloc((size_t)(K ? K : 1), sizeof(uint32_t *));
+    T.len = malloc((size_t)(K ? K : 1) * sizeof(int32_t));
+    acc = malloc((size_t)(m ? m : 1) * sizeof(uint64_t));
+    piv = calloc((size_t)(R - nred + 1), sizeof(uint64_t *));
+    pslot = malloc((size_t)(R - nred + 1) * sizeof(Py_ssize_t));
+    used = PyList_New(0);
+    E = PyList_New(0);
+    W = PyList_New(0);
+    if (!T.rows || !T.len || !acc || !piv || !pslot || !used || !E || !W) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t j = 0; j < K; j++)
+        T.len[j] = -1;
+    for (Py_ssize_t r = 0; r < nred; r++) {
+        if ((r & 1023) == 1023 && PyErr_CheckSignals())
+            goto done;  /* Ctrl-C, a time limit's signal: the handler's exception propagates */
+        Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
+        int32_t j = pid[r];
+        if (b < 0 || j < 0 || j >= K) {
+            PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
+            goto done;
+        }
+        uint32_t *t = malloc((size_t)(b ? b : 1) * sizeof(uint32_t));
+        if (!t) {
+            PyErr_NoMemory();
+            goto done;
+        }
+        for (Py_ssize_t s = 0; s < b; s++)
+            t[s] = (uint32_t)acc[s];
+        free(T.rows[j]);
+        T.rows[j] = t;
+        T.len[j] = (int32_t)b;
+    }
+    /* pair rows: reduce, then forward elimination by the earlier pivot rows in turn */
+    for (Py_ssize_t r = nred; r < R; r++) {
+        if (((r - nred) & 255) == 255 && PyErr_CheckSignals())
+            goto done;
+        Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
+        if (b < 0) {
+            PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
+            goto done;
+        }
+        if (b == 0)
+            continue;
+        memset(acc + b, 0, (size_t)(m - b) * sizeof(uint64_t));
+        uint64_t n = 0;
+        for (Py_ssize_t i = 0; i < npiv; i++) {
+            uint64_t c = acc[pslot[i]] % p;
+            if (c) {
+                uint64_t f = p - c, *y = piv[i];
+                for (Py_ssize_t s = 0; s <= pslot[i]; s++)
+                    acc[s] += f * y[s];
+                if (++n >= hmax) {
+                    normalize(acc, m, p);
+                    n = 0;
+                }
+            }
+        }
+        normalize(acc, m, p);
+        Py_ssize_t s0 = m - 1;
+        while (s0 >= 0 && acc[s0] == 0)
+            s0--;
+        if (s0 < 0)
+            continue;
+        if (acc[s0] != 1) {
+            uint64_t inv = inverse(acc[s0], p);
+            for (Py_ssize_t s = 0; s <= s0; s++)
+                acc[s] = acc[s] * inv % p;
+        }
+        PyObject *u = Py_BuildValue("(nn)", r - nred, s0);
+        if (!u || PyList_Append(used, u)) {
+            Py_XDECREF(u);
+            goto done;
+        }
+        Py_DECREF(u);
+        if (stop)
+            break;
+        uint64_t *y = malloc((size_t)m * sizeof(uint64_t));
+        if (!y) {
+            PyErr_NoMemory();
+            goto done;
+        }
+        memcpy(y, acc, (size_t)m * sizeof(uint64_t));
+        piv[npiv] = y;
+        pslot[npiv++] = s0;
+    }
+    /* back substitution from the last pivot row */
+    if (!stop) {
+        for (Py_ssize_t i = npiv - 2; i >= 0; i--) {
+            uint64_t *x = piv[i], n = 0;
+            for (Py_ssize_t k = i + 1; k < npiv; k++) {
+                uint64_t c = x[pslot[k]] % p;
+                if (c) {
+                    uint64_t f = p - c, *y = piv[k];
+                    for (Py_ssize_t s = 0; s <= pslot[k]; s++)
+                        x[s] += f * y[s];
+                    if (++n >= hmax) {
+                        normalize(x, pslot[i] + 1, p);
+                        n = 0;
+                    }
+                }
+            }
+            normalize(x, pslot[i] + 1, p);
+        }
+        /* E by increasing pivot slot */
+        Py_ssize_t *order = malloc((size_t)(npiv ? npiv : 1) * sizeof(Py_ssize_t));
+        if (!order) {
+            PyErr_NoMemory();
+            goto done;
+        }
+        for (Py_ssize_t i = 0; i < npiv; i++) {
+            Py_ssize_t k = i;
+            while (k > 0 && pslot[order[k - 1]] > pslot[i]) {
+                order[k] = order[k - 1];
+                k--;
+            }
+            order[k] = i;
+        }
+        for (Py_ssize_t i = 0; i < npiv; i++) {
+            Py_ssize_t k = order[i];
+            PyObject *sv = support(piv[k], pslot[k] + 1), *e;
+            if (!sv) {
+                free(order);
+                goto done;
+            }
+            e = Py_BuildValue("(nNN)", pslot[k], PyTuple_GET_ITEM(sv, 0), PyTuple_GET_ITEM(sv, 1));
+            Py_INCREF(PyTuple_GET_ITEM(sv, 0));
+            Py_INCREF(PyTuple_GET_ITEM(sv, 1));
+            Py_DECREF(sv);
+            if (!e || PyList_Append(E, e)) {
+                Py_XDECREF(e);
+                free(order);
+                goto done;
+            }
+            Py_DECREF(e);
+        }
+        free(order);
+    }
+    for (Py_ssize_t i = 0; i < nwant; i++) {
+        int32_t j = pwant[i];
+        if (j < 0 || j >= K || T.len[j] < 0) {
+            PyErr_SetString(PyExc_ValueError, "f4 rows: unknown pivot wanted");
+            goto done;
+        }
+        for (Py_ssize_t s = 0; s < T.len[j]; s++)
+            acc[s] = T.rows[j][s];
+        PyObject *sv = support(acc, T.len[j]);
+        if (!sv || PyList_Append(W, sv)) {
+            Py_XDECREF(sv);
+            goto done;
+        }
+        Py_DECREF(sv);
+    }
+    result = Py_BuildValue("(OOO)", used, E, W);
+done:
+    Py_XDECREF(used);
+    Py_XDECREF(E);
+    Py_XDECREF(W);
+    table_free(&T);
+    if (piv) {
+        for (Py_ssize_t i = 0; i < npiv; i++)
+            free(piv[i]);
+        free(piv);
+    }
+    free(pslot);
+    free(acc);
+    PyBuffer_Release(&ids);
+    PyBuffer_Release(&off);
+    PyBuffer_Release(&col);
+    PyBuffer_Release(&val);
+    PyBuffer_Release(&want);
+    return result;
+}
+
+static PyMethodDef methods[] = {
+    {"reduce", f4_reduce, METH_VARARGS, "Reduce one F4 matrix modulo p (see the module source)."},
+    {NULL, NULL, 0, NULL}
+};
+
+static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_f4rows", "F4 row reduction modulo p.", -1, methods};
+
+PyMODINIT_FUNC PyInit__f4rows(void)
+{
+    return PyModule_Create(&module);
+}

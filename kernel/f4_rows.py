@@ -1,0 +1,105 @@
+"""F4's matrices reduced in compiled code (the optional C extension ``_f4rows``).
+
+``setup.py`` builds ``kernel/_f4rows.c`` when a C compiler is present; without it (or for a
+prime of 2^31 or more) F4 uses the pure-Python linear algebra of :mod:`.f4_vectors`, which
+computes the same numbers by the same operations.  Rows go to C flat: per row its column
+codes (``j >= 0``: pivot ``j``; ``~s``: non-pivot slot ``s``) and coefficients mod ``p``.
+"""
+from __future__ import annotations
+
+from array import array
+from typing import Sequence
+
+from .f4_vectors import RowSpec
+
+try:
+    from ._f4rows import reduce as KERNEL  # the kernel's one function
+except ImportError:  # no compiler at install: the pure-Python path
+    KERNEL = None
+
+LIMIT = 1 << 31  # primes the kernel handles (products of two entries fit 62 bits)
+
+
+def compiled(p: int) -> bool:
+    """Whether matrices modulo ``p`` go to the compiled kernel."""
+    return KERNEL is not None and p < LIMIT
+
+
+class Flat:
+    """A matrix's rows collected flat for the kernel: reducers first (with their pivot ids),
+    then the pair rows."""
+
+    __slots__ = ("ids", "off", "col", "val")
+
+    def __init__(self) -> None:
+        self.ids = array("i")
+        self.off = array("q", [0])
+        self.col = array("i")
+        self.val = array("Q")
+
+    def add(self, codes, coefs) -> None:
+        """One row: its column codes and coefficients (iterables of equal length)."""
+        self.col.extend(codes)
+        self.val.extend(coefs)
+        self.off.append(len(self.col))
+
+    def reduce(self, p: int, m: int, K: int, want: Sequence[int] = (), stop: bool = False):
+        """``(used, E, W)``: the pair rows that raised the rank with their pivot slots, the
+        reduced echelon rows ``(slot, slots, values)`` by increasing pivot slot, and the
+        reduced tails ``(slots, values)`` of the reducers ``want`` (slots highest first)."""
+        return KERNEL(p, m, K, len(self.ids), self.ids, self.off, self.col, self.val,
+                             array("i", want), stop)
+
+
+class CodedRow:
+    """A recorded row as the kernel takes it: the terms of ``x^u * poly[k]`` from position
+    ``start`` on (1 for a reducer: its leading term is its pivot) with their column codes.
+    F4 records these instead of :class:`~.f4_vectors.RowSpec` when the kernel runs."""
+
+    __slots__ = ("k", "start", "codes", "_spec")
+
+    def __init__(self, k: int, start: int, codes: list[int]) -> None:
+        self.k, self.start, self.codes, self._spec = k, start, codes, None
+
+    @property
+    def piv_j(self) -> list[int]:
+        return [c for c in self.codes if c >= 0]
+
+    def spec(self) -> RowSpec:
+        """The row as a :class:`~.f4_vectors.RowSpec` (for the pure-Python path), kept."""
+        if self._spec is None:
+            piv_t, piv_j, np_t, np_s = [], [], [], []
+            for t, c in enumerate(self.codes, self.start):
+                if c >= 0:
+                    piv_t.append(t)
+                    piv_j.append(c)
+                else:
+                    np_t.append(t)
+                    np_s.append(~c)
+            self._spec = RowSpec(self.k, piv_t, piv_j, np_t, np_s)
+        return self._spec
+
+
+def as_spec(row: RowSpec | CodedRow) -> RowSpec:
+    """A recorded row as a :class:`~.f4_vectors.RowSpec`."""
+    return row.spec() if isinstance(row, CodedRow) else row
+
+
+def replay_step(reducers, rows, step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
+    """The kernel's ``(used, E, W)`` for recorded rows (reducers as ``(pivot id, row)``,
+    pair rows) of a matrix shaped as ``step`` (:class:`~.f4_trace.Step`), with the
+    coefficients of another prime."""
+    flat = Flat()
+    for j, row in reducers:
+        flat.ids.append(j)
+        _add_recorded(flat, row, coefs)
+    for row in rows:
+        _add_recorded(flat, row, coefs)
+    return flat.reduce(p, step.m, step.K, want)
+
+
+def _add_recorded(flat: Flat, row: RowSpec | CodedRow, coefs: list[list[int]]) -> None:
+    if isinstance(row, CodedRow):
+        flat.add(row.codes, coefs[row.k][row.start:])
+    else:  # recorded by the pure-Python path
+        flat.add(row.piv_j + [~s for s in row.np_s], map(coefs[row.k].__getitem__, row.piv_t + row.np_t))

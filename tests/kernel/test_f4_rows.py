@@ -1,0 +1,106 @@
+"""The compiled F4 row kernel (kernel/_f4rows.c through kernel/f4_rows.py) against the
+pure-Python linear algebra of kernel/f4_vectors.py on random matrices."""
+import random
+
+import pytest
+
+from mech.kernel import Block, f4_rows
+from mech.kernel.f4 import F4
+from mech.kernel.f4_rows import CodedRow, Flat
+from mech.kernel.f4_trace import replay
+from mech.kernel.f4_vectors import RowSpec, Vectors, echelon, support
+from mech.kernel.modular import primitive
+from mech.kernel.monomials import Packing
+from tests.util import katsura, ring
+
+pytestmark = pytest.mark.skipif(f4_rows.KERNEL is None, reason="the compiled row kernel is not built")
+
+
+def random_matrix(rng, p, K, m, npair):
+    """Reducers (pivot j refers to pivots below j and to slots) and pair rows, as
+    (coefficients, pivot entries, slot entries)."""
+    rows = []
+    for j in range(K + npair):
+        top = j if j < K else K
+        piv = rng.sample(range(top), min(top, rng.randrange(0, 6)))
+        slots = rng.sample(range(m), rng.randrange(0, min(m, 5) + 1))
+        coefs = [rng.randrange(p) for _ in piv + slots]
+        rows.append((coefs, piv, slots))
+    return rows
+
+
+def by_python(p, K, m, rows):
+    vec = Vectors(p)
+    comb = vec.combiner(m)
+    T, D = [0] * K, []
+    for j, (cs, piv, slots) in enumerate(rows):
+        n = len(piv)
+        spec = RowSpec(0, list(range(n)), piv, list(range(n, n + len(slots))), slots)
+        v = comb(spec, cs, [p - c for c in cs], T)
+        if j < K:
+            T[j] = v
+        else:
+            D.append(v)
+    E, used = echelon(vec, D, m)
+    return used, [(s0, *support(vec, E[s0], m)) for s0 in sorted(E)], [support(vec, t, m) for t in T]
+
+
+def by_kernel(p, K, m, rows, stop=False):
+    flat = Flat()
+    flat.ids.extend(range(K))
+    for cs, piv, slots in rows:
+        flat.add(piv + [~s for s in slots], cs)
+    return flat.reduce(p, m, K, list(range(K)), stop)
+
+
+@pytest.mark.parametrize("p", [2, 3, 32003, (1 << 28) - 57, (1 << 31) - 1])
+def test_random_matrices(p):
+    rng = random.Random(p)
+    for trial in range(40):
+        K, m, npair = rng.randrange(0, 40), rng.randrange(1, 30), rng.randrange(0, 12)
+        rows = random_matrix(rng, p, K, m, npair)
+        used, E, W = by_kernel(p, K, m, rows)
+        assert (used, E, W) == by_python(p, K, m, rows)
+        first, _, _ = by_kernel(p, K, m, rows, stop=True)
+        assert first == used[:1]
+
+
+def test_dense_rows_need_intermediate_reduction():
+    """More products per slot than fit 64 bits at once: the kernel reduces on the way."""
+    p, K, m = (1 << 31) - 1, 30, 8
+    rows = [([p - 1] * (j + m), list(range(j)), list(range(m))) for j in range(K)]
+    rows.append(([p - 2] * (K + m), list(range(K)), list(range(m))))
+    assert by_kernel(p, K, m, rows) == by_python(p, K, m, rows)
+
+
+def test_bad_arguments_are_errors():
+    flat = Flat()
+    flat.ids.append(0)
+    flat.add([1], [1])  # refers to a pivot not yet filled
+    with pytest.raises(ValueError):
+        flat.reduce(32003, 2, 2)
+    with pytest.raises(ValueError):
+        Flat().reduce(1 << 31, 2, 0)
+    assert not f4_rows.compiled(1 << 31)
+
+
+@pytest.mark.parametrize("record_compiled", [True, False], ids=["recorded-compiled", "recorded-python"])
+def test_trace_recorded_by_one_path_replays_on_the_other(record_compiled, monkeypatch):
+    """A trace recorded with the kernel (rows as CodedRow) replays in pure Python and the
+    reverse (rows as RowSpec), giving the basis a fresh F4 run gives."""
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    gens = [primitive(g.terms) for g in katsura(R, 4)]
+    P = Packing(R.order, 31)
+    rows = []
+    for t in gens:
+        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
+        rows.append(([m for m, _ in items], [c for _, c in items]))
+    kernel = f4_rows.KERNEL
+    p0, p = 32003, 1000003
+    monkeypatch.setattr(f4_rows, "KERNEL", kernel if record_compiled else None)
+    eng = F4([(ms, [c % p0 for c in cs]) for ms, cs in rows], P, p0, record=True)
+    eng.run()
+    assert isinstance(eng.trace.steps[0].rows[0][0], CodedRow) == record_compiled
+    monkeypatch.setattr(f4_rows, "KERNEL", None if record_compiled else kernel)
+    got = replay(eng.trace, [[c % p for c in cs] for _, cs in rows], p)
+    assert got == [cs for _, cs in F4([(ms, [c % p for c in cs]) for ms, cs in rows], P, p).run()]
