@@ -41,7 +41,7 @@ __all__ = ["Interpreter", "QuitSignal"]
 
 #: a script at least this long runs with fewer collections of the young objects (see _young_gc)
 LONG_SCRIPT = 1 << 16
-YOUNG_THRESHOLD = 50000  # allocations between two collections of the young generation (Python's default: 700)
+YOUNG_THRESHOLD = 10000  # allocations between two collections of the young generation (Python's default: 700)
 
 
 @contextmanager
