@@ -10,12 +10,12 @@ Each script repeats a mix of assignments of ints, numbers and polynomials, arith
 matrix entries, strings printed into a variable (``s = string(f);``), printed values, an ``if`` and
 a ``for``, with changing numbers, and declares its ring again every 500 statements; it runs in one
 process (``mech FILE``), output to /dev/null; the table shows the process's CPU time (start-up
-included), seconds per MB and statements per second.
+included), seconds per MB, statements per second and the process's peak memory (resident).
 """
 from __future__ import annotations
 
+import os
 import random
-import resource
 import subprocess
 import sys
 import tempfile
@@ -50,12 +50,14 @@ def script(megabytes: float, path: Path) -> int:
     return count
 
 
-def run(path: Path) -> float:
-    """CPU seconds of ``mech FILE`` (output dropped)."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    subprocess.run([sys.executable, "-m", "mech", "--no-warn", str(path)], stdout=subprocess.DEVNULL, check=True)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+def run(path: Path) -> tuple[float, float]:
+    """CPU seconds and peak memory (MB) of ``mech FILE`` (output dropped)."""
+    proc = subprocess.Popen([sys.executable, "-m", "mech", "--no-warn", str(path)], stdout=subprocess.DEVNULL)
+    _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    if proc.returncode:
+        raise SystemExit(f"mech {path} failed ({proc.returncode})")
+    return usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
 
 
 def loop(count: int = 200000) -> None:
@@ -78,13 +80,13 @@ def main() -> None:
         loop()
         return
     sizes = [float(a) for a in args] or [1, 5, 10, 50]
-    print("| script | statements | CPU time | s/MB | statements/s |\n|---|---|---|---|---|")
+    print("| script | statements | CPU time | s/MB | statements/s | peak memory |\n|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for mb in sizes:
             path = Path(tmp) / f"big{mb:g}.mech"
             n = script(mb, path)
-            cpu = run(path)
-            print(f"| {mb:g} MB | {n} | {cpu:.1f} s | {cpu / mb:.2f} | {n / cpu:.0f} |", flush=True)
+            cpu, peak = run(path)
+            print(f"| {mb:g} MB | {n} | {cpu:.1f} s | {cpu / mb:.2f} | {n / cpu:.0f} | {peak:.0f} MB |", flush=True)
 
 
 if __name__ == "__main__":

@@ -63,20 +63,25 @@ MIXED_LINES = ["k = k + {a};", "j = k * {b} - {a};", "f = {a}x2y-{b}/{c}z+y^{d};
 MIXED_COUNTS = {"if": 2, "for": 7}  # statements a line runs: if + one branch; for: init, 2 x (body + step)
 FLAT_HEAD = ("int k, i, j, m, b; string s; ring r = 0,(x,y,z),dp; poly f, g; ideal I; matrix M[2][2]; "
              "number n = 1;\n")
-FLAT_CASES = [("long flat script of plain int statements", PLAIN_LINES),
-              ("long flat script of mixed statements", MIXED_LINES)]
+#: (title, line templates, largest literal): small literals repeat lines (a repeated line shares the
+#: tree and the closure of its first), large ones make every line new (parsed and run cold)
+FLAT_CASES = [("long flat script of plain int statements", PLAIN_LINES, 99),
+              ("long flat script of plain int statements, literals up to 10^6 (few lines repeat)", PLAIN_LINES, 10**6),
+              ("long flat script of mixed statements", MIXED_LINES, 99)]
 
 #: lines of the flat scripts per system (Singular's larger: its start-up's noise is the same)
 FLAT_SIZES = {"mech": 40000, "base": 40000, "Singular": 400000}
 
 
-def flat_script(lines: list[str], n: int) -> tuple[str, int]:
-    """A flat script of ``n`` lines (fixed random choice); the text and its statement count."""
+def flat_script(lines: list[str], n: int, top: int = 99) -> tuple[str, int]:
+    """A flat script of ``n`` lines (fixed random choice, literals up to ``top``); the text and its
+    statement count."""
     rng = random.Random(n)
     out, count = [FLAT_HEAD], 0
     for _ in range(n):
         line = rng.choice(lines)
-        out.append(line.format(a=rng.randint(1, 99), b=rng.randint(1, 9), c=rng.randint(2, 9),
+        out.append(line.format(a=rng.randint(1, top), b=rng.randint(1, 9 if top == 99 else top),
+                               c=rng.randint(2, 9),
                                d=rng.randint(1, 5)) + "\n")
         count += MIXED_COUNTS.get(line.split(" ")[0], 1)
     return "".join(out), count
@@ -127,11 +132,11 @@ def loop_rates(which: dict, repeat: int, tmp: Path) -> list[tuple[str, dict[str,
 def flat_rates(which: dict, repeat: int, tmp: Path) -> list[tuple[str, dict[str, float]]]:
     """Statements/s of the flat scripts: (time with N lines - time with none) over their statements."""
     out = []
-    for title, lines in FLAT_CASES:
+    for title, lines, top in FLAT_CASES:
         rates: dict[str, float] = {}
         for _ in range(repeat):
             for name, (cmd, env) in which.items():
-                text, count = flat_script(lines, FLAT_SIZES[name])
+                text, count = flat_script(lines, FLAT_SIZES[name], top)
                 full, _ = run(cmd, _script(tmp, name, text), env)
                 empty, _ = run(cmd, _script(tmp, name, FLAT_HEAD), env)
                 rates[name] = max(rates.get(name, 0.0), count / max(full - empty, 1e-3))
@@ -140,9 +145,10 @@ def flat_rates(which: dict, repeat: int, tmp: Path) -> list[tuple[str, dict[str,
     return out
 
 
-def rows(which: dict, repeat: int) -> list[tuple[str, dict[str, float]]]:
+def rows(which: dict, repeat: int, only: str = "") -> list[tuple[str, dict[str, float]]]:
     with tempfile.TemporaryDirectory() as tmp:
-        return loop_rates(which, repeat, Path(tmp)) + flat_rates(which, repeat, Path(tmp))
+        return ((loop_rates(which, repeat, Path(tmp)) if only != "flat" else [])
+                + (flat_rates(which, repeat, Path(tmp)) if only != "loops" else []))
 
 
 def fmt(rate: float | None) -> str:
@@ -183,11 +189,14 @@ def main() -> None:
     ap.add_argument("--baseline", help="PYTHONPATH of an older mech package tree, for a speed-up column")
     ap.add_argument("--label", default="", help="what the baseline is (for the table's text)")
     ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--only", choices=["loops", "flat"], default="", help="only these cases (not with --write)")
     args = ap.parse_args()
+    if args.only and args.write:
+        ap.error("--write needs all the cases")
     which = systems(args.baseline)
     load = os.getloadavg()
     t0 = time.time()
-    results = rows(which, args.repeat)
+    results = rows(which, args.repeat, args.only)
     lines = table(results, args.baseline)
     print("\n".join(lines))
     if args.write:

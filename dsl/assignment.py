@@ -25,6 +25,12 @@ class Assignment:
 
     def _exec_assign(self, s: A.Assign) -> None:
         if len(s.targets) == 1:
+            if len(s.values) == 1:  # the common case: _rhs of one value
+                v = self.eval(s.values[0])
+                if isinstance(v, ExprList):
+                    v = v.items[0] if len(v.items) == 1 else ExprList(list(v.items))
+                self.assign(s.targets[0], v)
+                return
             self.assign(s.targets[0], self._rhs(s.values))
             return
         if len(s.values) == len(s.targets):  # Singular assigns pairwise, in turn: a, b = b, a; sets both to b

@@ -120,7 +120,7 @@ def _binop(node: A.BinOp, depth: int) -> Fn:
             except Exception as e:
                 raise _locate(e, node, it) from None
         return logic
-    fast, slow, poly = _INT_OPS.get(op), _INT_DIV.get(op), _POLY_OPS.get(op)
+    fast, slow, poly = INT_OPS.get(op), _INT_DIV.get(op), _POLY_OPS.get(op)
 
     def fn(it: Any) -> Any:
         a = lf(it)
@@ -149,7 +149,8 @@ def _binop(node: A.BinOp, depth: int) -> Fn:
     return fn
 
 
-_INT_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
+#: int operators with their results in Singular (comparisons give ints)
+INT_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
             "<": lambda a, b: int(a < b), "<=": lambda a, b: int(a <= b), ">": lambda a, b: int(a > b),
             ">=": lambda a, b: int(a >= b), "==": lambda a, b: int(a == b), "!=": lambda a, b: int(a != b)}
 _INT_DIV = {"div": ops.trunc_div, "mod": ops.trunc_mod}  # these raise "division by 0"

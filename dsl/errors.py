@@ -25,10 +25,27 @@ class Source:
     text: str
 
     def line(self, n: int) -> str:
-        if getattr(self, "_lines", None) is None or self._lines[0] is not self.text:
-            self._lines = (self.text, self.text.splitlines())  # split once: long scripts warn often
-        lines = self._lines[1]
-        return lines[n - 1] if 0 < n <= len(lines) else ""
+        """Line ``n`` (1-based; lines end at ``\n`` as the parser counts them, a ``\r`` before it
+        dropped), found from the last line asked for: long scripts warn often, mostly further on,
+        and a list of all their lines would cost memory in proportion to the script."""
+        text = self.text
+        k, start = getattr(self, "_at", (1, 0))
+        if getattr(self, "_of", None) is not text or n < k:
+            k, start = 1, 0
+            self._of = text
+        if n < 1:
+            return ""
+        while k < n:
+            j = text.find("\n", start)
+            if j < 0:
+                return ""
+            k, start = k + 1, j + 1
+        self._at = (k, start)
+        end = text.find("\n", start)
+        line = text[start:] if end < 0 else text[start:end]
+        if not line and start == len(text):
+            return ""
+        return line[:-1] if line.endswith("\r") else line
 
 
 @dataclass

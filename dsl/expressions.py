@@ -7,7 +7,7 @@ from ..kernel import Poly
 from . import ast as A
 from . import ops
 from .boundary import convert_exception
-from .compiled import expr_fn
+from .compiled import INT_OPS, expr_fn
 from .errors import MechError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
@@ -19,7 +19,8 @@ class Expressions:
     """Evaluating expressions (part of the interpreter)."""
 
     #: whether nodes run as closures made once (:mod:`~mech.dsl.compiled`, Singular's semantics
-    #: inline); a dialect with other semantics for the shared nodes sets it False
+    #: inline, also Singular's int operators in the evaluator); a dialect with other semantics for
+    #: the shared nodes sets it False
     compiled = True
 
     def eval(self, node: A.Expr) -> Any:
@@ -73,12 +74,20 @@ class Expressions:
             return int(ops.truth(self.eval(node.left)) and ops.truth(self.eval(node.right)))
         if op == "||":
             return int(ops.truth(self.eval(node.left)) or ops.truth(self.eval(node.right)))
+        if type(node.left) is not A.BinOp:  # the common case: one operator
+            a, b = self.eval(node.left), self.eval(node.right)
+            if type(a) is int and type(b) is int and op in INT_OPS and self.compiled:
+                return INT_OPS[op](a, b)
+            return self._binary(op, a, b)
         spine = [node]  # a long sum x+y+...+z nests to the left: evaluate its left spine by a loop
         while type(spine[-1].left) is A.BinOp and spine[-1].left.op not in ("&&", "||"):
             spine.append(spine[-1].left)
         a = self.eval(spine[-1].left)
         for n in reversed(spine[1:]):
             b = self.eval(n.right)
+            if type(a) is int and type(b) is int and n.op in INT_OPS and self.compiled:
+                a = INT_OPS[n.op](a, b)
+                continue
             try:
                 a = self._binary(n.op, a, b)
             except MechError as e:
@@ -87,7 +96,10 @@ class Expressions:
                 raise
             except Exception as e:
                 raise convert_exception(e).locate(n.pos, self.source, True) from None
-        return self._binary(op, a, self.eval(node.right))
+        b = self.eval(node.right)
+        if type(a) is int and type(b) is int and op in INT_OPS and self.compiled:
+            return INT_OPS[op](a, b)
+        return self._binary(op, a, b)
 
     def _binary(self, op: str, a: Any, b: Any) -> Any:
         ring = self.ring.poly if self.ring else None

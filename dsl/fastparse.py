@@ -16,14 +16,14 @@ from typing import Any, Callable, Optional
 from . import ast as A
 from .split import statement_ends
 
-_TOKEN = re.compile(r"""
-    (?P<ws>(?:[ \t\f\r\n]+|//[^\n]*|/\*.*?\*/)+)
+_TOKEN = re.compile(r"""[ \t]*+(?:   # spaces before a token are taken with it: one match a token
+    (?P<ws>(?:[ \t\f\r\n]+|//[^\n]*|/\*.*?\*/)+|\Z)
   | (?P<MONOM>[0-9]+(?:/[0-9]+)?[A-Za-z_@][A-Za-z0-9_@]*)
   | (?P<RATIONAL>[0-9]+/[0-9]+)
   | (?P<NUMBER>[0-9]+)
   | (?P<IDENT>[A-Za-z_@][A-Za-z0-9_@]*)
   | (?P<STRING>"[^"]*")
-  | (?P<OP>==|!=|<>|<=|>=|&&|\|\||\+\+|--|\*\*|\.\.|[-+*/%^<>!:=()\[\],;\#{}])
+  | (?P<OP>==|!=|<>|<=|>=|&&|\|\||\+\+|--|\*\*|\.\.|[-+*/%^<>!:=()\[\],;\#{}]))
 """, re.S | re.X)
 
 # binary operators by precedence level (lowest first), each token to the tree's operator
@@ -39,80 +39,108 @@ class _Fail(Exception):
     """Not a statement of the fast path (Lark decides)."""
 
 
-class _Tok:
-    __slots__ = ("kind", "value", "line", "col", "end_line", "end_col")
-
-    def __init__(self, kind: str, value: str, line: int, col: int, end_line: int, end_col: int) -> None:
-        self.kind, self.value = kind, value
-        self.line, self.col, self.end_line, self.end_col = line, col, end_line, end_col
+_new_pos = tuple.__new__  # _new_pos(A.Pos, (line, col, end_line, end_col)): without the named tuple's __new__
 
 
 def _tokens(text: str, start: int, end: int, line: int, line_start: int, keywords: frozenset,
-            at: tuple[int, int]) -> list[_Tok]:
+            at: tuple[int, int]) -> list[tuple]:
     """The tokens of ``text[start:end]`` (``line``: the line at ``start``, ``line_start``: the
     offset where that line starts), at their places in the source (``text`` starts at line and
     column ``at`` there), then an end token; keywords become tokens of their own kind."""
     out = []
+    append = out.append
     pos = start
     match = _TOKEN.match
     dline, dcol = at[0] - 1, at[1] - 1
+    shift = dcol if line == 1 else 0
     while pos < end:
         m = match(text, pos, end)
         if m is None:
             raise _Fail
         kind = m.lastgroup
-        value = m.group()
+        value = m.group(kind)
+        new = m.end()
+        pos = new - len(value)
         if kind == "ws":
             nl = value.count("\n")
             if nl:
                 line += nl
                 line_start = pos + value.rfind("\n") + 1
-            pos = m.end()
+                shift = 0
+            pos = new
             continue
-        if kind == "IDENT" and value in keywords:
-            kind = "KW"
+        if kind == "IDENT":
+            if value in keywords:
+                kind = "KW"
         elif kind == "OP":
             kind = value
-        col = pos - line_start + 1 + (dcol if line == 1 else 0)
+        col = pos - line_start + 1 + shift
         if kind == "STRING" and "\n" in value:
             nl = value.count("\n")
             new_start = pos + value.rfind("\n") + 1
-            out.append(_Tok(kind, value, line + dline, col, line + nl + dline, m.end() - new_start + 1))
-            line, line_start = line + nl, new_start
+            append((kind, value, line + dline, col, line + nl + dline, new - new_start + 1))
+            line, line_start, shift = line + nl, new_start, 0
         else:
-            out.append(_Tok(kind, value, line + dline, col, line + dline, col + len(value)))
-        pos = m.end()
-    out.append(_EOF)
+            append((kind, value, line + dline, col, line + dline, col + new - pos))
+        pos = new
+    append(_EOF)
     return out
 
 
-class _Parser:
-    """Recursive descent over one statement's tokens.  Each parse returns ``(node, first, last)``:
-    the node and the first and last token of its text (a parenthesized expression's node has the
-    inner position, its text the parentheses: the grammar's positions work so)."""
+_LEAF = frozenset(("IDENT", "#", "NUMBER", "RATIONAL", "MONOM", "STRING"))  # tokens that are whole atoms
+_AFTER_ATOM = frozenset(("[", "(", "^", "**", "++", "--"))  # tokens that extend an atom
 
-    def __init__(self, toks: list[_Tok], types: frozenset) -> None:
+
+def _leaf(tok: tuple) -> A.Expr:
+    """The node of a one-token atom."""
+    kind, value = tok[0], tok[1]
+    pos = _new_pos(A.Pos, tok[2:])
+    if kind == "IDENT" or kind == "#":
+        return A.Name(value, pos=pos)
+    if kind == "NUMBER":
+        return A.IntLit(_int(value), pos=pos)
+    if kind == "RATIONAL":
+        num, den = value.split("/")
+        return A.RatLit(_int(num), _int(den), pos=pos)
+    if kind == "MONOM":
+        k = 0
+        while value[k].isdigit() or value[k] == "/":
+            k += 1
+        num, _, den = value[:k].partition("/")
+        return A.MonomLit(_int(num), _int(den) if den else 1, value[k:], pos=pos)
+    return A.StrLit(value[1:-1], pos=pos)
+
+
+def _span(first: tuple, last: tuple) -> A.Pos:
+    return _new_pos(A.Pos, (first[2], first[3], last[4], last[5]))
+
+
+class _Parser:
+    """Recursive descent over one statement's tokens (tuples: kind, value, line, col, end line,
+    end col).  Each parse returns ``(node, first, last)``: the node and the first and last token of
+    its text (a parenthesized expression's node has the inner position, its text the parentheses:
+    the grammar's positions work so)."""
+
+    def __init__(self, toks: list[tuple], types: frozenset) -> None:
         self.toks, self.i, self.types = toks, 0, types      # toks end with _EOF
 
-    def peek(self, k: int = 0) -> _Tok:
+    def peek(self, k: int = 0) -> tuple:
         return self.toks[min(self.i + k, len(self.toks) - 1)]
 
-    def take(self, kind: str) -> _Tok:
+    def take(self, kind: str) -> tuple:
         tok = self.toks[self.i]
-        if tok.kind != kind:
+        if tok[0] != kind:
             raise _Fail
         self.i += 1
         return tok
 
-    @staticmethod
-    def pos(first: _Tok, last: _Tok) -> A.Pos:
-        return A.Pos(first.line, first.col, last.end_line, last.end_col)
+    pos = staticmethod(_span)
 
     # ---- expressions
-    def exprlist(self) -> tuple[list, _Tok, _Tok]:
+    def exprlist(self) -> tuple[list, tuple, tuple]:
         node, first, last = self.expr()
         items = [node]
-        while self.toks[self.i].kind == ",":
+        while self.toks[self.i][0] == ",":
             self.i += 1
             node, _, last = self.expr()
             items.append(node)
@@ -120,218 +148,216 @@ class _Parser:
 
     def expr(self) -> tuple:
         lo, first, last = self.binary(0)
-        if self.toks[self.i].kind == "..":
+        if self.toks[self.i][0] == "..":
             self.i += 1
             hi, _, last = self.binary(0)
-            return A.Range(lo, hi, pos=self.pos(first, last)), first, last
+            return A.Range(lo, hi, pos=_span(first, last)), first, last
         return lo, first, last
 
     def binary(self, level: int) -> tuple:
         """Left-associative binary operators of precedence ``level`` and above (precedence climbing)."""
         left, first, last = self.unary()
+        toks = self.toks
         while True:
-            tok = self.toks[self.i]
-            found = _BINARY.get(tok.value) if tok.kind in ("KW", tok.value) else None
+            tok = toks[self.i]
+            found = _BINARY.get(tok[1]) if tok[0] == "KW" or tok[0] == tok[1] else None
             if found is None or found[0] < level:
                 return left, first, last
             self.i += 1
             right, _, last = self.binary(found[0] + 1)
-            left = A.BinOp(found[1], left, right, pos=self.pos(first, last))
+            left = A.BinOp(found[1], left, right, pos=_span(first, last))
 
     def unary(self) -> tuple:
-        tok = self.toks[self.i]
-        op = _UNARY.get(tok.value) if tok.kind in ("KW", tok.value) else None
+        toks, i = self.toks, self.i
+        tok = toks[i]
+        kind = tok[0]
+        if kind in _LEAF and toks[i + 1][0] not in _AFTER_ATOM:  # the common case: a plain atom
+            self.i = i + 1
+            return _leaf(tok), tok, tok
+        op = _UNARY.get(tok[1]) if kind == "KW" or kind == tok[1] else None
         if op is None:
             return self.power()
         self.i += 1
         operand, _, last = self.unary()
-        return A.UnOp(op, operand, pos=self.pos(tok, last)), tok, last
+        return A.UnOp(op, operand, pos=_span(tok, last)), tok, last
 
     def power(self) -> tuple:
         base, first, last = self.postfix()
-        while self.toks[self.i].kind in ("^", "**"):
+        while self.toks[self.i][0] in ("^", "**"):
             self.i += 1
-            if self.peek().kind == "-":
+            if self.peek()[0] == "-":
                 self.i += 1
                 right, _, last = self.postfix()
                 right = A.UnOp("-", right, pos=right.pos)
             else:
                 right, _, last = self.postfix()
-            base = A.BinOp("^", base, right, pos=self.pos(first, last))
+            base = A.BinOp("^", base, right, pos=_span(first, last))
         return base, first, last
 
     def postfix(self) -> tuple:
         node, first, last = self.atom()
         while True:
-            kind = self.toks[self.i].kind
+            kind = self.toks[self.i][0]
             if kind == "[":
                 self.i += 1
                 items, _, _ = self.exprlist()
                 last = self.take("]")
-                node = A.Index(node, items, pos=self.pos(first, last))
+                node = A.Index(node, items, pos=_span(first, last))
             elif kind == "(":
                 self.i += 1
-                args = self.exprlist()[0] if self.peek().kind != ")" else []
+                args = self.exprlist()[0] if self.peek()[0] != ")" else []
                 last = self.take(")")
-                node = A.Call(node, args, pos=self.pos(first, last))
+                node = A.Call(node, args, pos=_span(first, last))
             else:
                 return node, first, last
 
     def atom(self) -> tuple:
         tok = self.toks[self.i]
-        kind = tok.kind
+        kind = tok[0]
         self.i += 1
-        if kind == "IDENT" or kind == "#":
-            return A.Name(tok.value, pos=A.Pos(tok.line, tok.col, tok.end_line, tok.end_col)), tok, tok
-        p = lambda: A.Pos(tok.line, tok.col, tok.end_line, tok.end_col)  # noqa: E731
-        if kind == "NUMBER":
-            return A.IntLit(_int(tok.value), pos=p()), tok, tok
-        if kind == "RATIONAL":
-            num, den = tok.value.split("/")
-            return A.RatLit(_int(num), _int(den), pos=p()), tok, tok
-        if kind == "MONOM":
-            s = tok.value
-            k = 0
-            while s[k].isdigit() or s[k] == "/":
-                k += 1
-            num, _, den = s[:k].partition("/")
-            return A.MonomLit(_int(num), _int(den) if den else 1, s[k:], pos=p()), tok, tok
-        if kind == "STRING":
-            return A.StrLit(tok.value[1:-1], pos=p()), tok, tok
+        if kind in _LEAF:
+            return _leaf(tok), tok, tok
         if kind == "(":
             items, _, _ = self.exprlist()
             last = self.take(")")
-            node = items[0] if len(items) == 1 else A.Tuple(items, pos=self.pos(tok, last))
+            node = items[0] if len(items) == 1 else A.Tuple(items, pos=_span(tok, last))
             return node, tok, last
-        if kind == "KW" and tok.value in self.types and self.peek().kind == "(":
+        if kind == "KW" and tok[1] in self.types and self.peek()[0] == "(":
             self.i += 1
-            args = self.exprlist()[0] if self.peek().kind != ")" else []
+            args = self.exprlist()[0] if self.peek()[0] != ")" else []
             last = self.take(")")
-            return A.TypeCall(tok.value, args, pos=self.pos(tok, last)), tok, last
+            return A.TypeCall(tok[1], args, pos=_span(tok, last)), tok, last
         raise _Fail
 
     # ---- statements
-    def statement(self) -> tuple[A.Stmt, _Tok]:
+    def statement(self) -> tuple[A.Stmt, tuple]:
         """One statement and its last token (its ``;`` or ``}``)."""
-        first = self.peek()
-        if first.kind == ";":
+        first = self.toks[self.i]
+        kind = first[0]
+        if kind == ";":
             self.i += 1
-            return A.Empty(pos=self.pos(first, first)), first
-        if first.kind == "{":
+            return A.Empty(pos=_span(first, first)), first
+        if kind == "{":
             block, last = self.block()
             return block, last
-        if first.kind == "KW" and first.value in _CONTROL:
-            return _CONTROL[first.value](self)
+        if kind == "KW" and first[1] in _CONTROL:
+            return _CONTROL[first[1]](self)
         stmt = self.simple()
         return stmt, self.take(";")
 
-    def block(self) -> tuple[A.Block, _Tok]:
+    def block(self) -> tuple[A.Block, tuple]:
         first = self.take("{")
         body = []
-        while self.peek().kind != "}":
-            if self.peek().kind == "$":
+        while self.peek()[0] != "}":
+            if self.peek()[0] == "$":
                 raise _Fail
             body.append(self.statement()[0])
         last = self.take("}")
-        return A.Block(body, pos=self.pos(first, last)), last
+        return A.Block(body, pos=_span(first, last)), last
 
-    def if_stmt(self) -> tuple[A.If, _Tok]:
+    def if_stmt(self) -> tuple[A.If, tuple]:
         first = self.take("KW")
         self.take("(")
         cond = self.expr()[0]
         self.take(")")
         then, last = self.block()
         orelse = None
-        if self.peek().value == "else" and self.peek().kind == "KW":
+        if self.peek()[1] == "else" and self.peek()[0] == "KW":
             self.i += 1
-            if self.peek().value == "if" and self.peek().kind == "KW":
+            if self.peek()[1] == "if" and self.peek()[0] == "KW":
                 nested, last = self.if_stmt()
                 orelse = [nested]
             else:
                 blk, last = self.block()
                 orelse = blk.body
-        return A.If(cond, then.body, orelse, pos=self.pos(first, last)), last
+        return A.If(cond, then.body, orelse, pos=_span(first, last)), last
 
-    def while_stmt(self) -> tuple[A.While, _Tok]:
+    def while_stmt(self) -> tuple[A.While, tuple]:
         first = self.take("KW")
         self.take("(")
         cond = self.expr()[0]
         self.take(")")
         body, last = self.block()
-        return A.While(cond, body.body, pos=self.pos(first, last)), last
+        return A.While(cond, body.body, pos=_span(first, last)), last
 
-    def for_stmt(self) -> tuple[A.For, _Tok]:
+    def for_stmt(self) -> tuple[A.For, tuple]:
         first = self.take("KW")
         self.take("(")
-        init = self.simple() if self.peek().kind != ";" else None
+        init = self.simple() if self.peek()[0] != ";" else None
         self.take(";")
-        cond = self.expr()[0] if self.peek().kind != ";" else None
+        cond = self.expr()[0] if self.peek()[0] != ";" else None
         self.take(";")
-        step = self.simple() if self.peek().kind != ")" else None
+        step = self.simple() if self.peek()[0] != ")" else None
         self.take(")")
         body, last = self.block()
-        return A.For(init, cond, step, body.body, pos=self.pos(first, last)), last
+        return A.For(init, cond, step, body.body, pos=_span(first, last)), last
 
-    def jump(self) -> tuple[A.Stmt, _Tok]:
+    def jump(self) -> tuple[A.Stmt, tuple]:
         tok = self.take("KW")
-        node = (A.Break if tok.value == "break" else A.Continue)(pos=self.pos(tok, tok))
+        node = (A.Break if tok[1] == "break" else A.Continue)(pos=_span(tok, tok))
         return node, self.take(";")
 
     def simple(self) -> A.Stmt:
         """An expression statement, assignment, declaration or ``x++`` (without its ``;``)."""
-        first = self.peek()
-        if first.kind == "KW":
-            if first.value in self.types and self.peek(1).kind == "IDENT":
+        toks = self.toks
+        first = toks[self.i]
+        kind = first[0]
+        if kind == "IDENT" and toks[self.i + 1][0] == "=":  # name = ...: the common assignment
+            self.i += 2
+            values, _, last = self.exprlist()
+            target = _new_pos(A.Pos, first[2:])
+            return A.Assign([A.Name(first[1], pos=target)], values, pos=_span(first, last))
+        if kind == "KW":
+            if first[1] in self.types and self.peek(1)[0] == "IDENT":
                 return self.decl()
-            if not (first.value in self.types or first.value in _UNARY):
+            if not (first[1] in self.types or first[1] in _UNARY):
                 raise _Fail
         start = self.i
         try:
             target, _, _ = self.postfix()
-            kind = self.peek().kind
+            kind = self.peek()[0]
         except _Fail:
             kind = ""
         if kind in ("++", "--"):
             last = self.take(kind)
             _check_target(target)
-            return A.IncDec(target, 1 if kind == "++" else -1, pos=self.pos(first, last))
+            return A.IncDec(target, 1 if kind == "++" else -1, pos=_span(first, last))
         self.i = start
         targets, _, last = self.exprlist()
-        if self.peek().kind == "=":
+        if self.peek()[0] == "=":
             self.i += 1
             values, _, last = self.exprlist()
             for t in targets:
                 _check_target(t)
-            return A.Assign(targets, values, pos=self.pos(first, last))
-        return A.ExprStmt(targets, pos=self.pos(first, last))
+            return A.Assign(targets, values, pos=_span(first, last))
+        return A.ExprStmt(targets, pos=_span(first, last))
 
     def decl(self) -> A.Decl:
         first = self.take("KW")
         items = [self.declarator()]
-        while self.peek().kind == ",":
+        while self.peek()[0] == ",":
             self.i += 1
             items.append(self.declarator())
         last = self.toks[self.i - 1]
         value = None
-        if self.peek().kind == "=":
+        if self.peek()[0] == "=":
             self.i += 1
             value, _, last = self.exprlist()
-        return A.Decl(first.value, items, value, pos=self.pos(first, last))
+        return A.Decl(first[1], items, value, pos=_span(first, last))
 
     def declarator(self) -> A.Declarator:
         name = last = self.take("IDENT")
         dims = []
-        while self.peek().kind == "[" and len(dims) < 2:
+        while self.peek()[0] == "[" and len(dims) < 2:
             self.i += 1
             dims.append(self.expr()[0])
             last = self.take("]")
-        return A.Declarator(name.value, dims, pos=self.pos(name, last))
-
+        return A.Declarator(name[1], dims, pos=_span(name, last))
 
 
 _CONTROL = {"if": _Parser.if_stmt, "while": _Parser.while_stmt, "for": _Parser.for_stmt, "break": _Parser.jump,
             "continue": _Parser.jump}
-_EOF = _Tok("$", "", 0, 0, 0, 0)
+_EOF = ("$", "", 0, 0, 0, 0)
 _SKIP = re.compile(r"(?:[ \t\f\r\n]+|//[^\n]*|/\*.*?\*/)*+", re.S)  # blanks and comments before a statement
 MAX_SHARED = 4096  # statement trees kept for reuse (about 2 KB each)
 _SHARED: dict[tuple, dict[tuple[str, int], A.Stmt]] = {}
@@ -439,9 +465,13 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
                 if pending < 0:
                     pending = prev
             else:
-                flush(prev)
+                if pending >= 0:
+                    flush(prev)
                 body.append(stmt)
-                _extend(span, A.Pos(stmt.pos.line, stmt.pos.col, last.end_line, last.end_col))
+                if span:
+                    span[1] = (last[4], last[5])
+                else:
+                    span.extend([(stmt.pos.line, stmt.pos.col), (last[4], last[5])])
             line += text.count("\n", prev, end)
             line_start = text.rfind("\n", 0, end) + 1
             prev = end

@@ -300,3 +300,20 @@ def test_reference_benchmark_scripts_run_unchanged(name, size):
     of their reduced dp bases, as stated in the scripts (Singular prints the same)."""
     script = BENCH / f"{name}.sing"
     assert Session().execute(script.read_text(), script.name) == f"{size}\n"
+
+
+def test_long_script_collects_young_garbage_less_often_and_restores_the_threshold():
+    """A long script runs with a larger young-generation threshold (dsl/interpreter._young_gc), its
+    errors keep their positions, and the threshold the caller had comes back, after an error too."""
+    import gc
+    from mech.dsl.interpreter import LONG_SCRIPT, YOUNG_THRESHOLD
+
+    before = gc.get_threshold()
+    lines = "int k;\n" + "k = k + 1;\n" * (LONG_SCRIPT // 11 + 1)
+    s = Session()
+    assert s.execute(lines + "k;\n") == f"{LONG_SCRIPT // 11 + 1}\n" and gc.get_threshold() == before
+    with pytest.raises(MechNameError) as e:
+        s.execute(lines + "k = undeclared + 1;\n")
+    assert (e.value.pos.line, e.value.pos.col) == (lines.count("\n") + 1, 5)
+    assert gc.get_threshold() == before
+    assert YOUNG_THRESHOLD > before[0]
