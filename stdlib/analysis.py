@@ -132,6 +132,7 @@ class Analysis:
     notes: list[str] = field(default_factory=list)  # strategies that ran out, budgets
     unfinished: list[str] = field(default_factory=list)  # steps not done (a partial report)
     running: str = ""  # the step running now (for the partial report)
+    finite: Any = None  # dim J = 0: mech.stdlib.analysis_finite.Finite (assembly modes, Jacobian ranks)
 
 
 # ---------------------------------------------------------------- steps
@@ -220,6 +221,9 @@ def global_analysis(m: Mechanism, decompose: bool = True, a: Analysis | None = N
         a.dim = dimension(J, R)
     a.mobility = a.dim - len(params)
     a.complete_intersection = len(J) == R.nvars - a.dim
+    from mech.stdlib.analysis_finite import finite_analysis
+    if a.dim == 0 and not params and finite_analysis(a):  # finitely many configurations: the quotient algebra
+        return a
     a.running = "radicality"
     with stage("radicality"):
         a.radical = generically_reduced(J, R, a.dim, n)
@@ -454,7 +458,7 @@ def _transition(components: list[list[Poly]], R: PolyRing,
 def analyze(m: Mechanism) -> Analysis:
     """All steps."""
     a = global_analysis(m)
-    if not a.params:
+    if not a.params and not a.singular_done:
         local_analysis(a)
     return a
 
