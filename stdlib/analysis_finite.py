@@ -297,7 +297,11 @@ def modes_line(a: Any) -> str:
     mult = "" if fin.total == fin.distinct else f" ({fin.total} with multiplicity)"
     return (f"assembly modes (Galois orbits of configurations over Q: the irreducible factors of the separating "
             f"polynomial of t = {poly_str(fin.form)}): {len(fin.orbits)}, of {sizes} configurations ({reals} real); "
-            f"{fin.distinct} complex configurations{mult}, {sum(o.real for o in fin.orbits)} real")
+            f"{_count(fin.distinct, 'complex configuration')}{mult}, {sum(o.real for o in fin.orbits)} real")
+
+
+def _count(k: int, word: str) -> str:
+    return f"{k} {word}{'' if k == 1 else 's'}"
 
 
 def singular_lines(a: Any) -> list[str]:
@@ -312,9 +316,9 @@ def singular_lines(a: Any) -> list[str]:
         out.append(f"  the Jacobian of J has full rank {n} at all {fin.distinct} configurations (checked exactly on "
                    f"each orbit): J is reduced, no constraint singularity")
     for i, o in low:
-        out.append(f"  mode {i}: the Jacobian of J has rank {o.rank} < {n} at its {o.degree} configuration"
-                   f"{'s' if o.degree > 1 else ''}, each of multiplicity {o.multiplicity}: J is not reduced there "
-                   f"(the constraints are dependent: a constraint singularity)")
+        where = "its configuration, of" if o.degree == 1 else f"its {o.degree} configurations, each of"
+        out.append(f"  mode {i}: the Jacobian of J has rank {o.rank} < {n} at {where} multiplicity {o.multiplicity}: "
+                   f"J is not reduced there (the constraints are dependent: a constraint singularity)")
     return out
 
 
