@@ -235,6 +235,7 @@ def finite_analysis(a: Any) -> bool:
     from mech.stdlib.mechanism import MechanismError
     from mech.stdlib.mechanism_real import DIGITS
     R, J, n = a.ring, a.ideal, a.nvars
+    a.running, a.modes_found = "assembly modes", False  # not found until the orbits are (a partial report)
     with stage("assembly modes", detail="quotient algebra and separating polynomial"):
         A = QuotientAlgebra(J, R)
         rep = rur_of(A)
@@ -260,7 +261,7 @@ def finite_analysis(a: Any) -> bool:
     a.finite = Finite(sols, form, [orbits[i] for i in order], n)
     a.modes_by = "assembly modes: the Galois orbits of the configurations, the irreducible factors over Q " \
                  "of the separating polynomial"
-    a.modes_found, a.decomposed, a.equidimensional, a.embedded = True, True, True, []
+    a.modes_found, a.decomposed, a.equidimensional, a.embedded, a.running = True, True, True, [], ""
     a.fitting_size, a.fitting, a.singular, a.singular_done = n, [], [], True
     if not any(o.real for o in orbits):
         raise MechanismError(f"{a.mechanism.name}: the mechanism does not close: the configuration space "
