@@ -96,3 +96,15 @@ def test_40_in_singular_on_point_coordinates():
                        'ideal G = std(I); print("dim " + string(dim(G))); print("vdim " + string(vdim(G)));',
                        timeout=300)
     assert dict(line.split() for line in out.splitlines() if line.strip()) == {"dim": "0", "vdim": "40"}
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_no_singular_configuration_in_singular():
+    """The Jacobian determinant of the independent ideal vanishes at none of its 40 solutions (over Z/32003:
+    J + <det> is the unit ideal), as mech's exact rank check on each Galois orbit finds (full rank 9)."""
+    names, eqs = point_ideal()
+    out = run_singular(f'ring r = 32003, ({",".join(names)}), dp; ideal I = {", ".join(eqs)};\n'
+                       'ideal G = std(I); poly D = reduce(det(jacob(I)), G); print("dim " + string(dim(std(G + D))));',
+                       timeout=600)
+    assert out.split() == ["dim", "-1"]
