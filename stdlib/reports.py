@@ -97,7 +97,8 @@ def report_data(a: Analysis) -> dict:
                 "minimal_polynomial": poly_str(normalize(s.algebraic.minpoly))} if s.algebraic else {}),
             "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
             "local_components": [ps(_local(s, c)) for c in s.local_components],
-            "transition": s.transition} for s in a.singular]
+            "transition": s.transition, **({"tangent_cone_note": s.cone_note} if s.cone_note else {})}
+            for s in a.singular]
     for section in DATA_SECTIONS:
         d.update(section(a))
     d["notes"], d["unfinished"] = list(a.notes), list(a.unfinished)
@@ -225,7 +226,8 @@ def _singular_lines(a: Analysis) -> list[str]:
             out.append(f"     where t = {poly_str(pt.form)}, {poly_str(normalize(pt.minpoly))} = 0: "
                        f"{pt.degree} conjugate points, {count_real_roots(pt.minpoly)} real")
         over = ", coefficients in Q(t)" if pt else ""
-        out.append(f"     tangent cone (coordinates centred at q{i}{over}): "
+        note = f"; {s.cone_note}" if s.cone_note else ""
+        out.append(f"     tangent cone (coordinates centred at q{i}{over}{note}): "
                    f"{_show(_local(s, s.tangent_cone))}")
         if a.decomposed and s.local_components:
             out.append(f"     local components (Theorem 3): {len(s.local_components)}: " +
