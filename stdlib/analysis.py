@@ -42,6 +42,7 @@ from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
+from mech.stdlib.analysis_finite import finite_analysis
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.modes import embedded_components, motion_modes
 from mech.stdlib.realpoints import has_real_points, linear_point
@@ -222,8 +223,7 @@ def global_analysis(m: Mechanism, decompose: bool = True, a: Analysis | None = N
         a.dim = dimension(J, R)
     a.mobility = a.dim - len(params)
     a.complete_intersection = len(J) == R.nvars - a.dim
-    from mech.stdlib.analysis_finite import finite_analysis
-    if a.dim == 0 and not params and finite_analysis(a):  # finitely many configurations: the quotient algebra
+    if a.dim == 0 and not params and finite_analysis(a, Mode):  # finitely many configurations: the quotient algebra
         return a
     a.running = "radicality"
     with stage("radicality"):

@@ -23,7 +23,7 @@ analysis are not run: they have nothing to add for finitely many points.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Callable
 
 from flint import fmpq, fmpq_mat, fmpq_poly, fmpz_poly, nmod_poly
 
@@ -32,6 +32,11 @@ from mech.kernel.ideals import std
 from mech.kernel.progress import stage
 from mech.kernel.real_roots import isolate_real_roots
 from mech.kernel.real_solve import RUR, QuotientAlgebra, RealSolution, Solutions, rur_of, solution_boxes
+from mech.stdlib.mechanism import MechanismError
+
+
+#: Decimals of the real solutions' boxes (those of the report's poses, mech.stdlib.mechanism_real.DIGITS).
+DIGITS = 4
 
 
 @dataclass
@@ -56,6 +61,7 @@ class Finite:
     form: Poly
     orbits: list[Orbit]
     nvars: int
+    digits: int  # the real solutions' boxes have width 10^-digits
 
     @property
     def total(self) -> int:
@@ -227,13 +233,11 @@ def _jacobian_rank(rep: RUR, gens: list[Poly], n: int, f: fmpz_poly, multiplicit
     return _rank([[_evaluate(e, shapes, fq, powers) for e in row] for row in jac], fq)
 
 
-def finite_analysis(a: Any) -> bool:
+def finite_analysis(a: Any, mode: Callable[..., Any]) -> bool:
     """Fill in the analysis ``a`` (numeric lengths, ``a.dim == 0``): radicality, the assembly
     modes as motion modes, no embedded components and no singular configurations (the Jacobian's
-    rank at the points in ``a.finite``).  True: ``a`` is complete."""
-    from mech.stdlib.analysis import Mode
-    from mech.stdlib.mechanism import MechanismError
-    from mech.stdlib.mechanism_real import DIGITS
+    rank at the points in ``a.finite``); ``mode(prime, primary, dim, real)`` makes a motion mode.  True:
+    ``a`` is complete."""
     R, J, n = a.ring, a.ideal, a.nvars
     a.running, a.modes_found = "assembly modes", False  # not found until the orbits are (a partial report)
     with stage("assembly modes", detail="quotient algebra and separating polynomial"):
@@ -256,9 +260,9 @@ def finite_analysis(a: Any) -> bool:
             Q = P if mult == 1 else _in(R, _ideal(A, M, rep, f, mult, False))
             modes.append((P, Q, real))
     order = _order(modes, R)
-    a.modes = [Mode(modes[i][0], modes[i][1], 0, modes[i][2] > 0) for i in order]
+    a.modes = [mode(modes[i][0], modes[i][1], 0, modes[i][2] > 0) for i in order]
     form = Poly(R, {tuple(int(j == i) for j in range(R.nvars)): c for i, c in enumerate(rep.form) if c != 0})
-    a.finite = Finite(sols, form, [orbits[i] for i in order], n)
+    a.finite = Finite(sols, form, [orbits[i] for i in order], n, DIGITS)
     a.modes_by = "assembly modes: the Galois orbits of the configurations, the irreducible factors over Q " \
                  "of the separating polynomial"
     a.modes_found, a.decomposed, a.equidimensional, a.embedded, a.running = True, True, True, [], ""

@@ -138,7 +138,7 @@ def assembly_modes(a: Analysis, digits: int = DIGITS) -> dict[str, Any]:
     for each real one the moving joint points and the configuration, as decimals."""
     from mech.kernel.real_solve import real_solutions
     finite = getattr(a, "finite", None)  # the zero-dimensional analysis computed them already
-    sols = finite.solutions if finite is not None and digits == DIGITS else real_solutions(a.ideal, a.ring, digits)
+    sols = finite.solutions if finite is not None and digits == finite.digits else real_solutions(a.ideal, a.ring, digits)
     rep = sols.representation
     roots = [s.root for s in sols.real]
     moving: list[str] = []

@@ -7,7 +7,7 @@ import pytest
 
 from mech.kernel.ideals import dimension, ideals_equal, std
 from mech.kernel.primdec import min_ass_gtz
-from mech.stdlib import analysis_finite
+from mech.stdlib import analysis
 from mech.stdlib.analysis import analyze, fitting_ideal
 from mech.stdlib.mechanism import parse_mechanism
 from mech.stdlib.reports import report_data, report_text
@@ -24,7 +24,7 @@ KEYS = ("dimension", "mobility", "radical", "motion_modes", "embedded_components
 def _both(spec: str, monkeypatch) -> tuple[dict, dict]:
     new = report_data(analyze(parse_mechanism(spec)))
     with monkeypatch.context() as mp:
-        mp.setattr(analysis_finite, "finite_analysis", lambda a: False)  # the general path
+        mp.setattr(analysis, "finite_analysis", lambda a, mode: False)  # the general path
         old = report_data(analyze(parse_mechanism(spec)))
     return new, old
 
