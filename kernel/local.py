@@ -233,20 +233,22 @@ class PointInfo:
     point: tuple
     local_dim: int
     tangent_space_dim: int
-    multiplicity: int
+    multiplicity: int | None
     tangent_cone: list[Poly] = field(default_factory=list)
     components: list[list[Poly]] = field(default_factory=list)
 
 
 def classify_point(gens: Sequence[Poly], point: Sequence[Any],
-                   primes: Sequence[Sequence[Poly]] | None = None) -> PointInfo:
+                   primes: Sequence[Sequence[Poly]] | None = None, cone: bool = True) -> PointInfo:
     """Classify a point of ``V(gens)``: "components meet" when several irreducible
     components pass through it (Theorem 3), otherwise "regular" when the tangent space of
     the one component through it has its dimension (Definition 3, the Jacobian criterion
     for its prime) and "singular" when it is larger.  ``primes``: the minimal primes of
     the ideal when they are known (a decomposition was made): those through the point are
-    its local components, no decomposition is made again.  :class:`~.errors.DomainError` when
-    the point is not on the variety."""
+    its local components, no decomposition is made again; then ``cone=False`` skips the local
+    standard basis of ``gens`` (its multiplicity is None, its tangent cone []; the local dimension
+    is the largest dimension of the primes through the point, a prime having its dimension at each
+    of its points).  :class:`~.errors.DomainError` when the point is not on the variety."""
     centred = _centred(gens, point)
     ring = centred[0].ring
     target = _global(ring)
@@ -258,6 +260,9 @@ def classify_point(gens: Sequence[Poly], point: Sequence[Any],
                  for P in primes if all(g.evaluate(p) == 0 for g in P)]
     radical = intersect(*(move(p, target) for p in comps), ring=target)
     t = ring.nvars - jacobian_rank(radical, [0] * ring.nvars)
+    if primes is not None and not cone:
+        d = max((dimension(move(c, target), target) for c in comps), default=-1)
+        return PointInfo(_kind(len(comps), t, d), tuple(point), d, t, None, [], comps)
     d = local_dim(centred)
     return PointInfo(_kind(len(comps), t, d), tuple(point), d, t, local_mult(centred),
                      tangent_cone(centred), comps)

@@ -42,6 +42,7 @@ from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
+from mech.stdlib.analysis_finite import finite_analysis
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.modes import embedded_components, motion_modes
 from mech.stdlib.realpoints import has_real_points, linear_point
@@ -102,6 +103,7 @@ class SingularPoint:
     # a Galois orbit of conjugate points: the primitive element t; the cone and the components are
     # then ideals of algebraic.ring = Q[configuration, t] containing the minimal polynomial of t
     algebraic: AlgebraicPoint | None = None
+    cone_note: str = ""  # how the tangent cone was found when it is not the ideal of lowest forms
 
 
 @dataclass
@@ -132,6 +134,7 @@ class Analysis:
     notes: list[str] = field(default_factory=list)  # strategies that ran out, budgets
     unfinished: list[str] = field(default_factory=list)  # steps not done (a partial report)
     running: str = ""  # the step running now (for the partial report)
+    finite: Any = None  # dim J = 0: mech.stdlib.analysis_finite.Finite (assembly modes, Jacobian ranks)
 
 
 # ---------------------------------------------------------------- steps
@@ -220,6 +223,8 @@ def global_analysis(m: Mechanism, decompose: bool = True, a: Analysis | None = N
         a.dim = dimension(J, R)
     a.mobility = a.dim - len(params)
     a.complete_intersection = len(J) == R.nvars - a.dim
+    if a.dim == 0 and not params and finite_analysis(a, Mode):  # finitely many configurations: the quotient algebra
+        return a
     a.running = "radicality"
     with stage("radicality"):
         a.radical = generically_reduced(J, R, a.dim, n)
@@ -393,12 +398,26 @@ def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
     elif not a.decomposed:
         sp.kind = _no_components(a)
         sp.tangent_cone = tangent_cone_at(variety, sp.point)
-    else:
-        info = classify_point(variety, sp.point, _minimal_modes(a))
-        sp.kind = info.kind
-        sp.tangent_cone = info.tangent_cone
-        sp.local_components = info.components
+    else:  # the kind, components and transition first (cheap), then the cone of J (a local standard basis)
+        info = classify_point(variety, sp.point, _minimal_modes(a), cone=False)
+        sp.kind, sp.local_components = info.kind, info.components
         sp.transition = _transition(info.components, a.ring)
+        ok, cone = within(CONE_BUDGET, tangent_cone_at, variety, sp.point, cpu=True)
+        sp.tangent_cone = cone if ok else _union_cone(info.components)
+        sp.cone_note = "" if ok else (f"as a set: the union of the local components' cones (the ideal of lowest "
+                                      f"forms ran out of its {CONE_BUDGET:g} s budget)")
+
+
+#: CPU seconds for the tangent cone of J at a singular configuration (a local standard basis: Bricard's
+#: 6R loop's does not finish in minutes, in Singular neither), after its kind and local components.
+CONE_BUDGET = 20.0
+
+
+def _union_cone(components: list[list[Poly]]) -> list[Poly]:
+    """The tangent cone as a set, the union of the components' cones (their intersection, in dp)."""
+    cones = [tangent_cone(c, c[0].ring) for c in components]
+    glob = dp_ring(cones[0][0].ring)
+    return move(intersect(*(move(c, glob) for c in cones), ring=glob), cones[0][0].ring)
 
 
 def _algebraic_local(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
@@ -454,7 +473,7 @@ def _transition(components: list[list[Poly]], R: PolyRing,
 def analyze(m: Mechanism) -> Analysis:
     """All steps."""
     a = global_analysis(m)
-    if not a.params:
+    if not a.params and not a.singular_done:
         local_analysis(a)
     return a
 

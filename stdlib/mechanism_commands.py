@@ -244,12 +244,13 @@ def analyze_cmd(ctx: Any, m: Mechanism, form: str = "", depth: str = "full") -> 
       →   s1
       →   c1^2+s1^2-1
       → mobility 0; J is radical
-      → motion modes (minimal primes of J): 2
+      → assembly modes (Galois orbits of configurations over Q: the irreducible factors of the separating polynomial of t = c1): 2, of 1 and 1 configurations (1 and 1 real); 2 complex configurations, 2 real
       →   [1] dim 0, has real points: <s1, c1-1>
       →       rigid mode (an isolated configuration: no link moves)
       →   [2] dim 0, has real points: <s1, c1+1>
       →       rigid mode (an isolated configuration: no link moves)
-      → singular configurations (Theorem 1: V(J + I_2(dJ))): 0
+      → singular configurations: 0 (finitely many configurations, each an isolated point; the Fitting ideal and the local analysis do not apply)
+      →   the Jacobian of J has full rank 2 at all 2 configurations (checked exactly on each orbit): J is reduced, no constraint singularity
       → real answers (exact real solving):
       →   assembly modes: 2 complex, 2 real
       →     [1] A = (-1.0000, 0.0000)

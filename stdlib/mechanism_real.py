@@ -103,7 +103,8 @@ def assembly_modes(a: Analysis, digits: int = DIGITS) -> dict[str, Any]:
     """Mobility 0: ``complex`` and ``real`` counts of the distinct configurations, and ``poses``:
     for each real one the moving joint points and the configuration, as decimals."""
     from mech.kernel.real_solve import real_solutions
-    sols = real_solutions(a.ideal, a.ring, digits)
+    finite = getattr(a, "finite", None)  # the zero-dimensional analysis computed them already
+    sols = finite.solutions if finite is not None and digits == finite.digits else real_solutions(a.ideal, a.ring, digits)
     rep = sols.representation
     roots = [s.root for s in sols.real]
     moving: list[str] = []

@@ -8,6 +8,7 @@ from typing import Any, Callable, Sequence
 from mech.kernel import Poly
 from mech.kernel.ideals import dp_ring, ideals_equal, move, std
 from mech.stdlib.analysis import Analysis, SingularPoint
+from mech.stdlib.analysis_finite import finite_data, modes_line, singular_lines
 from mech.stdlib.mechanism_real import real_sections
 from mech.stdlib.mode_names import mode_names
 from mech.stdlib.realpoints import count_real_roots
@@ -96,7 +97,8 @@ def report_data(a: Analysis) -> dict:
                 "minimal_polynomial": poly_str(normalize(s.algebraic.minpoly))} if s.algebraic else {}),
             "kind": s.kind, "tangent_cone": ps(_local(s, s.tangent_cone)),
             "local_components": [ps(_local(s, c)) for c in s.local_components],
-            "transition": s.transition} for s in a.singular]
+            "transition": s.transition, **({"tangent_cone_note": s.cone_note} if s.cone_note else {})}
+            for s in a.singular]
     for section in DATA_SECTIONS:
         d.update(section(a))
     d["notes"], d["unfinished"] = list(a.notes), list(a.unfinished)
@@ -105,13 +107,15 @@ def report_data(a: Analysis) -> dict:
 
 #: More entries of the ``json`` report: each maps an analysis to a dict merged into the data
 #: (before ``notes`` and ``unfinished``); the text report's :data:`TEXT_SECTIONS` is the twin.
-DATA_SECTIONS: list[Callable[[Analysis], dict]] = [lambda a: real_sections(a).data]
+DATA_SECTIONS: list[Callable[[Analysis], dict]] = [finite_data, lambda a: real_sections(a).data]
 
 
 def configuration_count(a: Analysis) -> int:
     """The number of complex configurations of a rigid mechanism (mobility 0, J radical): the
     vector-space dimension of Q[x]/J."""
     from mech.kernel.hilbert import vdim
+    if a.finite is not None:
+        return a.finite.total
     return vdim([g.lm() for g in std(a.ideal, a.ring)], a.ring.nvars)
 
 
@@ -184,7 +188,7 @@ def _modes_lines(a: Analysis) -> list[str]:
     elif not a.decomposed:
         out.append("motion modes: not computed (quick analysis); the configuration space has real points")
     else:
-        out.append(f"motion modes ({a.modes_by}): {len(a.modes)}")
+        out.append(modes_line(a) if a.finite else f"motion modes ({a.modes_by}): {len(a.modes)}")
     for i, m in enumerate(a.modes, 1):
         real = "has real points" if m.real else "no real points (not physically feasible)" \
             if m.real is False else "real points not decided (out of budget)"
@@ -201,6 +205,8 @@ def _singular_lines(a: Analysis) -> list[str]:
     from mech.dsl.printing import poly_str
     if not a.singular_done:
         return _STOP
+    if a.finite:
+        return singular_lines(a)
     out = []
     how = f"Theorem 1: V(J + I_{a.fitting_size}(dJ))" if a.radical and a.equidimensional else \
         "the singular loci of the motion modes and their intersections"
@@ -220,7 +226,8 @@ def _singular_lines(a: Analysis) -> list[str]:
             out.append(f"     where t = {poly_str(pt.form)}, {poly_str(normalize(pt.minpoly))} = 0: "
                        f"{pt.degree} conjugate points, {count_real_roots(pt.minpoly)} real")
         over = ", coefficients in Q(t)" if pt else ""
-        out.append(f"     tangent cone (coordinates centred at q{i}{over}): "
+        note = f"; {s.cone_note}" if s.cone_note else ""
+        out.append(f"     tangent cone (coordinates centred at q{i}{over}{note}): "
                    f"{_show(_local(s, s.tangent_cone))}")
         if a.decomposed and s.local_components:
             out.append(f"     local components (Theorem 3): {len(s.local_components)}: " +

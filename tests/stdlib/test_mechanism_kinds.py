@@ -251,3 +251,17 @@ def test_sliders_and_prismatic_legs_in_space():
     with pytest.raises(Exception) as e:
         parse_mechanism("fix O 0 0 0; fix P 2 0 0; bar O X 3; bar P Y 1; slider X O Y").constraints()
     assert "statement 5 'slider X O Y': O and Y are neither points of one link" in str(e.value)
+
+
+@pytest.mark.slow
+def test_bricard_local_analysis_finishes(tmp_path):
+    """Bricard's four singular configurations (where its two modes meet) are classified from the modes:
+    two local components each, meeting transversally; the tangent cone of J there (a local standard basis
+    that Singular does not finish in a minute either) is given as a set and said so (about 2 min of CPU)."""
+    d = example("bricard", tmp_path)
+    assert (d["mobility"], len(d["motion_modes"]), len(d["singular"])) == (1, 2, 4)
+    for s in d["singular"]:
+        assert (s["kind"], s["modes"], len(s["local_components"])) == ("components meet", [1, 2], 2)
+        assert s["transition"].startswith("the local components meet transversally")
+        assert s.get("tangent_cone_note", "").startswith("as a set") or "tangent_cone_note" not in s
+    assert not any("local analysis" in u for u in d["unfinished"])

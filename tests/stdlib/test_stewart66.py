@@ -1,8 +1,9 @@
 """The generic 6-6 Stewart–Gough platform (examples/stewart66.mech): mech counts its assembly modes
-exactly over Q (40 complex, 2 real); Singular counts 40 on an ideal written here independently, in
+exactly over Q (40 complex, 2 real) with ``analyze``; Singular counts 40 on an ideal written here independently, in
 the world coordinates of three platform points."""
 from __future__ import annotations
 
+import json
 import re
 import subprocess
 import sys
@@ -68,15 +69,21 @@ def test_home_pose_is_an_assembly():
         assert sum((x + o - y) ** 2 for x, o, y in zip(q, (3, 0, 6), b)) == l * l
 
 
-def test_example_counts_40_assembly_modes(tmp_path):
+def test_example_analysis_counts_40_assembly_modes(tmp_path):
+    """analyze(m, "json") goes the zero-dimensional way: mobility 0, J radical (40 distinct = vdim), two
+    Galois orbits over Q (the home pose and 39 conjugates), 2 real poses, the Jacobian of full rank 9 at all
+    40 configurations, no singular configuration."""
     r = subprocess.run([sys.executable, "-m", "mech", str(EXAMPLE)], cwd=tmp_path, capture_output=True,
                        text=True, timeout=600)
     assert r.returncode == 0, r.stderr
-    lines = r.stdout.splitlines()
-    assert lines[0] == "assembly modes: 40 complex, 2 real"
-    assert len(lines) == 3
-    home = "P1 = (3.0000, 0.0000, 6.0000), P2 = (0.0000, 3.0000, 7.0000), P3 = (2.0000, -3.0000, 6.0000)"
-    assert sum(home in line for line in lines[1:]) == 1
+    d = json.loads(r.stdout.splitlines()[-1])
+    assert (d["dimension"], d["mobility"], d["radical"], d["complex_configurations"]) == (0, 0, True, 40)
+    am = d["assembly_modes"]
+    assert (am["complex"], am["real"], am["with_multiplicity"], len(am["poses"])) == (40, 2, 40, 2)
+    assert [(o["configurations"], o["real"], o["jacobian_rank"]) for o in d["assembly_orbits"]] == [(1, 1, 9), (39, 1, 9)]
+    assert [m["dimension"] for m in d["motion_modes"]] == [0, 0] and d["singular"] == [] and d["unfinished"] == []
+    home = {"P1": ["3.0000", "0.0000", "6.0000"], "P2": ["0.0000", "3.0000", "7.0000"], "P3": ["2.0000", "-3.0000", "6.0000"]}
+    assert sum(all(p["points"][k] == v for k, v in home.items()) for p in am["poses"]) == 1
 
 
 @pytest.mark.singular
@@ -89,3 +96,15 @@ def test_40_in_singular_on_point_coordinates():
                        'ideal G = std(I); print("dim " + string(dim(G))); print("vdim " + string(vdim(G)));',
                        timeout=300)
     assert dict(line.split() for line in out.splitlines() if line.strip()) == {"dim": "0", "vdim": "40"}
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
+def test_no_singular_configuration_in_singular():
+    """The Jacobian determinant of the independent ideal vanishes at none of its 40 solutions (over Z/32003:
+    J + <det> is the unit ideal), as mech's exact rank check on each Galois orbit finds (full rank 9)."""
+    names, eqs = point_ideal()
+    out = run_singular(f'ring r = 32003, ({",".join(names)}), dp; ideal I = {", ".join(eqs)};\n'
+                       'ideal G = std(I); poly D = reduce(det(jacob(I)), G); print("dim " + string(dim(std(G + D))));',
+                       timeout=600)
+    assert out.split() == ["dim", "-1"]
