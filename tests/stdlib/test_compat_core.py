@@ -1,0 +1,24 @@
+"""Core Singular commands added for issue 21 in session 8, checked against Singular."""
+from __future__ import annotations
+
+import pytest
+
+from tests.util import run, run_singular
+
+QHWEIGHT_SRC = """
+ring r=0,(x,y,z),dp;
+qhweight(ideal(x2y+y3,z2)); qhweight(ideal(x2+y3+xy)); qhweight(ideal(y2+z3)); qhweight(ideal(xy+z));
+qhweight(ideal(x7+y3z2+z4y)); qhweight(ideal(x9+y2z11)); qhweight(ideal(x5+yz7)); qhweight(ideal(x13+y5z7+y2));
+qhweight(ideal(xy)); qhweight(ideal(0)); qhweight(x33+x11y12z13);
+ring r4=0,(t,x,y,z),dp; qhweight(ideal(x4+y3+z2)); qhweight(ideal(x4+z2)); qhweight(ideal(x4+y3+z2+t5+xy));
+ring s=0,(x,y,z),ds; qhweight(ideal(z+xy));
+"""
+
+
+@pytest.mark.singular
+def test_qhweight_as_singular() -> None:
+    assert run(QHWEIGHT_SRC).split() == run_singular(QHWEIGHT_SRC).split()
+
+
+def test_qhweight_makes_quasihomogeneous() -> None:
+    assert run("ring r=0,(t,x,y,z),dp; qhweight(ideal(x4+y3+z2));").split() == ["0,3,4,6"]
