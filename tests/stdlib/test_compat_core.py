@@ -22,3 +22,27 @@ def test_qhweight_as_singular() -> None:
 
 def test_qhweight_makes_quasihomogeneous() -> None:
     assert run("ring r=0,(t,x,y,z),dp; qhweight(ideal(x4+y3+z2));").split() == ["0,3,4,6"]
+
+
+PREIMAGE_LOCAL_SRC = """
+ring r=0,(x,y,z),ds;
+map m=r,x+y+z+y2+x3,x-y-z,z;
+ideal id=2y+2z+x^3+y^2,x-y-z,y2+2z3;
+ideal pid=preimage(basering,m,id);
+ideal imid=m(pid);
+size(reduce(id,std(imid))); size(reduce(imid,std(id)));
+ring s = 0,(a,b,c),ds;
+ring t = 0,(x,y,z,u,v,w),dp;
+map phi = s,x-w,u2w+1,yz-v;
+ideal Z;
+setring s;
+preimage(t,phi,Z);
+"""
+
+
+@pytest.mark.singular
+def test_preimage_local_source_as_singular() -> None:
+    assert run(PREIMAGE_LOCAL_SRC).split() == run_singular(PREIMAGE_LOCAL_SRC).split()
+    std_src = "ring r=0,(x,y,z),ds; map m=r,x+y+z+y2+x3,x-y-z,z; ideal id=2y+2z+x^3+y^2,x-y-z,y2+2z3; " \
+              "std(preimage(basering,m,id));"
+    assert run(std_src).split() == run_singular(std_src).split()
