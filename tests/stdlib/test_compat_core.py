@@ -46,3 +46,14 @@ def test_preimage_local_source_as_singular() -> None:
     std_src = "ring r=0,(x,y,z),ds; map m=r,x+y+z+y2+x3,x-y-z,z; ideal id=2y+2z+x^3+y^2,x-y-z,y2+2z3; " \
               "std(preimage(basering,m,id));"
     assert run(std_src).split() == run_singular(std_src).split()
+
+
+INDEXED_NAMES_SRC = """
+ring R = (0,p_(1..2)),(c(1..2)(1..2),d(1,2),a_(3,2,3)),dp; R;
+d(1,2)+c(1)(2); int i=2; d(1,i); a_(3,2,3)^2*p_(2); subst(a_(3,2,3)+d(1,2), a_(3,2,3), p_(1)*d(1,2));
+"""
+
+
+@pytest.mark.singular
+def test_names_with_several_indices_as_singular() -> None:
+    assert run(INDEXED_NAMES_SRC).split() == run_singular(INDEXED_NAMES_SRC).split()
