@@ -156,6 +156,10 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
         return A.Declarator(str(c[0]), list(c[1:]), pos=meta_pos(meta))
 
     @v_args(meta=True)
+    def indexed_declarator(self, meta, c):
+        return A.Declarator(str(c[0]), [], [list(x) for x in c[1:]], pos=meta_pos(meta))
+
+    @v_args(meta=True)
     def decl(self, meta, c):
         typ, rest = c[0], c[1:]
         value = rest[-1]

@@ -131,19 +131,20 @@ class Names:
         return m * (f(node.num) / f(node.den))
 
     def _indexed_vars(self, node: A.Call) -> Any:
-        """Ring variables (or parameters) written ``x(2)``, ``x(1..3)`` (several), ``y(1)(2)``; None if not
-        such."""
-        if self.ring is None:
-            return None
+        """Variables declared with an index (``poly p(2)``), ring variables or parameters written ``x(2)``,
+        ``x(1..3)`` (several), ``y(1)(2)``; None if not such."""
         names = indexed_names(node, self.eval)
         if names is None:
             return None
         gens = []
         for n in names:
-            i = self.ring.var_index(n)
-            if i is not None:
+            var = self.lookup(n)
+            i = self.ring.var_index(n) if self.ring is not None else None
+            if var is not None:  # declared as `poly rp(3) = ...;`
+                gens.append(var.value)
+            elif i is not None:
                 gens.append(self.ring.poly.gen(i))
-            elif n in self.ring.params:
+            elif self.ring is not None and n in self.ring.params:
                 gens.append(self._param(self.ring, n))
             else:
                 return None

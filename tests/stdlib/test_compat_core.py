@@ -57,3 +57,17 @@ d(1,2)+c(1)(2); int i=2; d(1,i); a_(3,2,3)^2*p_(2); subst(a_(3,2,3)+d(1,2), a_(3
 @pytest.mark.singular
 def test_names_with_several_indices_as_singular() -> None:
     assert run(INDEXED_NAMES_SRC).split() == run_singular(INDEXED_NAMES_SRC).split()
+
+
+INDEXED_DECL_SRC = """
+ring R; int n=3; ideal j(3); ideal j(n); ideal j(2)=x; j(2..3); int foo(1)=42; foo(1)+1;
+poly rp(2..3); rp(3); listvar();
+for (n=1; n<4; n=n+1) { poly q(n) = x^n; } q(3); kill q(2); listvar();
+"""
+
+
+@pytest.mark.singular
+def test_indexed_declarations_as_singular() -> None:
+    def plain(text: str) -> list[str]:  # without the warnings of redefinitions
+        return " ".join(line for line in text.splitlines() if not line.startswith("// **")).split()
+    assert plain(run(INDEXED_DECL_SRC)) == plain(run_singular(INDEXED_DECL_SRC))
