@@ -199,6 +199,7 @@ class Return(Stmt):
 class Param(Node):
     type: Optional[str]
     name: str
+    alias: bool = False  # `alias T x`: listvar shows the caller's variable it stands for
 
 
 @dataclass(eq=False)

@@ -289,6 +289,10 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
             return A.Param(c[0], str(c[1]), pos=meta_pos(meta))
         return A.Param(None, str(c[0]), pos=meta_pos(meta))
 
+    @v_args(meta=True)
+    def alias_param(self, meta, c):
+        return A.Param(c[0], str(c[1]), True, pos=meta_pos(meta))
+
 
 def _check_target(t: A.Expr) -> None:
     """Assignment targets are names, possibly indexed (``I[2]``, ``D[i,j]``, ``L[2][1]``)."""

@@ -71,3 +71,21 @@ def test_indexed_declarations_as_singular() -> None:
     def plain(text: str) -> list[str]:  # without the warnings of redefinitions
         return " ".join(line for line in text.splitlines() if not line.startswith("// **")).split()
     assert plain(run(INDEXED_DECL_SRC)) == plain(run_singular(INDEXED_DECL_SRC))
+
+
+ALIAS_SRC = """
+proc probe3(alias int i) { i; listvar(); };
+int j = 2; probe3(j); probe3(1+2);
+proc adummy4(alias int a, alias int b) { return("works"); };
+int a, b; adummy4(a, b);
+proc p1(alias list j) { def br = basering; listvar(); ring s = 0, x, ds; list k = fetch(br, j); setring(br); }
+ring rr = 0, x, dp; list l = list(ideal(x)); p1(l);
+proc p2(alias ideal i) { def br = basering; ring s = 0, x, ds; ideal i = imap(br, i); setring(br); return(i); }
+ideal i = x; p2(i);
+ring r=32003,(x,y,z),dp; poly f = x; def s=basering; setring s; listvar(); listvar(r);
+"""
+
+
+@pytest.mark.singular
+def test_alias_parameters_and_ring_names_as_singular() -> None:
+    assert run(ALIAS_SRC).split() == run_singular(ALIAS_SRC).split()
