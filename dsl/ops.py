@@ -370,21 +370,28 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
 
 
 def _poly_cmp(p: Poly, q: Poly) -> int:
-    """Singular's order of polynomials: by leading monomial (0 below every monomial), then by the sign
+    """Singular's order of polynomials: constants as numbers; else by leading monomial (0 below every
+    monomial), then by the sign
     of the difference of the leading coefficients (over Z/p its symmetric representative: ``6x > x`` is
     0 in Z/7); the other terms do not count (``x+2 > x+1`` is 0)."""
-    if p.is_zero() or q.is_zero():
+    field = p.ring.field
+    if p.is_constant() and q.is_constant():  # as numbers: a constant's sign counts, 0 is no monomial
+        x, y = p.coeff_of(p.ring.zero_exp), q.coeff_of(q.ring.zero_exp)
+        if getattr(field, "params", ()):  # as Singular orders numbers with parameters
+            return 1 if compare_params(">", x, y) else -1 if compare_params(">", y, x) else 0
+        d = x - y
+    elif p.is_zero() or q.is_zero():
         return int(not p.is_zero()) - int(not q.is_zero())
-    key = p.ring.order.key
-    a, b = key(p.lm()), key(q.lm())
-    if a != b:
-        return 1 if a > b else -1
-    d = p.lc() - q.lc()  # Singular asks whether the difference is positive
+    else:
+        a, b = p.ring.order.key(p.lm()), p.ring.order.key(q.lm())
+        if a != b:
+            return 1 if a > b else -1
+        d = p.lc() - q.lc()  # Singular asks whether the difference is positive
     if not d:
         return 0
-    field = p.ring.field
     if getattr(field, "params", ()):
         return 1 if compare_params(">", d, field.zero) else -1
     if field.characteristic:
         return 1 if field.symmetric(d) > 0 else -1
     return 1 if d > 0 else -1
+

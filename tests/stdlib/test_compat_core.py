@@ -89,3 +89,19 @@ ring r=32003,(x,y,z),dp; poly f = x; def s=basering; setring s; listvar(); listv
 @pytest.mark.singular
 def test_alias_parameters_and_ring_names_as_singular() -> None:
     assert run(ALIAS_SRC).split() == run_singular(ALIAS_SRC).split()
+
+
+COMPARE_SRC = """
+ring rc = (0,c),(x,y),dp;
+c/2 > c/3; c2/3 < c; -c < c; 0 < c; 0 > -c; (c+1)/(c-1) > 1; (c+1)/(c-1) >= 1; 2c/(3c+1) > 1/2;
+-c/(2c+1) < 0; c >= 2c; 1 < c; x2/3 < x2/2; x2/3 <x;
+ring rab = (0,a,b),x,dp; a+b > a2; a > b; b > a; a2b > ab2; a/b > b/a; -a < b;
+ring rp = (7,c),x,dp; c > 2c; 3c > 2c; c2 > c; 0 < c; 0 > c; c/3 > c/2;
+ring r = 0,x,dp; poly p = -1; p < 0; p > 0; poly q=0; q > p;
+ring r7=7,x,dp; poly p=6; p > 0; p > 1; poly z=0; z > p; 6x > x;
+"""
+
+
+@pytest.mark.singular
+def test_comparisons_with_parameters_and_constants_as_singular() -> None:
+    assert run(COMPARE_SRC).split() == run_singular(COMPARE_SRC).split()
