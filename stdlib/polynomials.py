@@ -9,6 +9,7 @@ from ..dsl.registry import command
 from ..dsl.values import Ideal, IntVec, List, Map, Matrix, Number, Ring, to_poly
 from ..dsl.values import typeof as _typeof
 from ..kernel import Poly
+from ..kernel.algext import AlgebraicField
 
 
 @command("size")
@@ -156,6 +157,38 @@ def _var_index(x: Poly, cmd: str) -> int:
     raise MechRuntimeError(f"{cmd}: the second argument must be a ring variable")
 
 
+def _param_index(x: Poly) -> Optional[int]:
+    """j if x is the j-th parameter of its ring's coefficient field, else None."""
+    params = getattr(x.ring.field, "params", ())
+    if not params or not x.is_constant() or x.is_zero():
+        return None
+    c = x.lc()
+    return next((j for j in range(len(params)) if c == x.ring.field.gen(j)), None)
+
+
+def _subst_param(f: Poly, j: int, g: Poly) -> Poly:
+    """f with g for the j-th parameter in its coefficients (polynomials in the parameters of QQ(a,..), or
+    the parameter of an algebraic extension, its coefficients read as polynomials of degree < deg m)."""
+    ring, field = g.ring, f.ring.field  # g's ring: f may be minpoly, a number of QQ(a)
+    out = ring.zero()
+    for e, c in f.terms.items():
+        if isinstance(field, AlgebraicField):
+            value = sum((field(v) * g ** k for k, v in enumerate(c.u.coeffs()) if v), ring.zero())
+        else:
+            if c.den != 1:  # Singular then drops the denominators (with a warning)
+                raise MechRuntimeError("subst: substituting a parameter in coefficients with denominators is not "
+                                       "supported")
+            value = ring.zero()
+            for m, v in zip(c.num.monoms(), c.num.coeffs()):
+                rest = ring.field(int(v))
+                for k, mk in enumerate(m):
+                    if k != j and mk:
+                        rest = rest * ring.field.gen(k) ** int(mk)
+                value = value + g ** int(m[j]) * rest
+        out = out + ring.monomial(e, ring.field.one) * value
+    return out
+
+
 @command("jacob")
 def jacob(f: Poly | Ideal) -> Any:
     """jacob(f): the ideal of partial derivatives of a poly; for an ideal the Jacobian matrix
@@ -177,8 +210,9 @@ def jacob(f: Poly | Ideal) -> Any:
 
 
 @command("subst")
-def subst(f: Poly | Ideal | Matrix, *pairs: Any) -> Any:
-    """subst(f, x, g, ...): substitute g for the ring variable x in f (several pairs in turn).
+def subst(f: Poly | Ideal | Matrix | Number, *pairs: Any) -> Any:
+    """subst(f, x, g, ...): substitute g for the ring variable (or parameter) x in f (several pairs in
+    turn).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -189,10 +223,26 @@ def subst(f: Poly | Ideal | Matrix, *pairs: Any) -> Any:
     """
     if not pairs or len(pairs) % 2:
         raise MechTypeError("subst(f, x, g): give a variable and its substitute")
+    if isinstance(f, Number):
+        f = to_poly(f, f.ring)
+        if len(pairs) == 2 and isinstance(pairs[1], Poly) and pairs[1].ring is not f.ring:
+            # minpoly (a number of QQ(a)) as a polynomial in a: evaluated at a polynomial of the basering
+            j = _param_index(to_poly(pairs[0], pairs[1].ring))
+            if j is not None and not isinstance(f.ring.field, AlgebraicField):
+                return _subst_param(f, j, pairs[1])
     ring = f.ring
     for k in range(0, len(pairs), 2):
         x = to_poly(pairs[k], ring)
         g = to_poly(pairs[k + 1], ring)
+        j = _param_index(x)
+        if j is not None:  # a parameter: in every coefficient
+            if isinstance(f, Poly):
+                f = _subst_param(f, j, g)
+            elif isinstance(f, Ideal):
+                f = Ideal(ring, [_subst_param(p, j, g) for p in f.gens])
+            else:
+                f = Matrix(ring, f.nrows, f.ncols, [_subst_param(p, j, g) for p in f.entries])
+            continue
         i = _var_index(x, "subst")
         images = ring.gens()
         images[i] = g

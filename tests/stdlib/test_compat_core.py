@@ -105,3 +105,17 @@ ring r7=7,x,dp; poly p=6; p > 0; p > 1; poly z=0; z > p; 6x > x;
 @pytest.mark.singular
 def test_comparisons_with_parameters_and_constants_as_singular() -> None:
     assert run(COMPARE_SRC).split() == run_singular(COMPARE_SRC).split()
+
+
+SUBST_PARAM_SRC = """
+ring r = (0,a), x, dp; minpoly = a2+1; poly p = x; subst(p,a,x); subst(p,x,a); p = x+a; subst(p,a,x);
+subst(p,x,a); subst(minpoly,a,x);
+ring r2=(0,a,b),(x,y),dp; poly f = a*b*x + (a2+b)*y + a; subst(f,a,x+1); subst(f,b,y); subst(f,a,b);
+ring s=(0,a),x,dp; minpoly=a2+a+1; poly f=(a+1)*x2+a; subst(f,a,x); subst(f,a,2);
+ring t=(7,a),x,dp; subst((a2+3)*x+a,a,x2);
+"""
+
+
+@pytest.mark.singular
+def test_subst_parameter_as_singular() -> None:
+    assert run(SUBST_PARAM_SRC).split() == run_singular(SUBST_PARAM_SRC).split()
