@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.util import run, run_singular
+from tests.util import error, run, run_singular
 
 QHWEIGHT_SRC = """
 ring r=0,(x,y,z),dp;
@@ -119,3 +119,10 @@ ring t=(7,a),x,dp; subst((a2+3)*x+a,a,x2);
 @pytest.mark.singular
 def test_subst_parameter_as_singular() -> None:
     assert run(SUBST_PARAM_SRC).split() == run_singular(SUBST_PARAM_SRC).split()
+
+
+def test_radical_algorithm_options_same_result() -> None:
+    base = 'LIB "primdec.lib"; ring r=0,(x,y,z),dp; ideal i = x2y, (z-1)^3*x, y3; '
+    assert run(base + 'radical(i, "KL");') == run(base + "radical(i);") == run(base + 'radical(i, "SL", 0);')
+    assert "unknown option" in str(error(base + 'radical(i, "foo");'))
+    assert "not supported" in str(error(base + "radical(i, 1);"))
