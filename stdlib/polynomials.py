@@ -149,6 +149,31 @@ def diff(f: Poly | Ideal | Matrix, x: Poly) -> Any:
     return Matrix(f.ring, f.nrows, f.ncols, [g.diff(i) for g in f.entries])
 
 
+@command("diff")
+def diff_operators(H: Ideal, I: Ideal) -> Matrix:
+    """diff(H, I): the matrix of the H[i] applied to the I[j] as differential operators (x^a acts as
+    the a-th partial derivative).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      print(diff(ideal(x, y2), ideal(x2, xy2)));
+      → 2x,y2,
+      → 0, 2x
+    """
+    return Matrix(I.ring, len(H.gens), len(I.gens), [_apply_operator(h, f) for h in H.gens for f in I.gens])
+
+
+def _apply_operator(h: Poly, f: Poly) -> Poly:
+    out = f.ring.zero()
+    for e, c in h.terms.items():
+        g = f
+        for i, k in enumerate(e):
+            for _ in range(k):
+                g = g.diff(i)
+        out = out + g * c
+    return out
+
+
 def _var_index(x: Poly, cmd: str) -> int:
     if len(x.terms) == 1:
         (e, c), = x.terms.items()

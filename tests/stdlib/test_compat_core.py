@@ -126,3 +126,14 @@ def test_radical_algorithm_options_same_result() -> None:
     assert run(base + 'radical(i, "KL");') == run(base + "radical(i);") == run(base + 'radical(i, "SL", 0);')
     assert "unknown option" in str(error(base + 'radical(i, "foo");'))
     assert "not supported" in str(error(base + "radical(i, 1);"))
+
+
+DIFF_SRC = """
+ring r=0,(x,y),dp; print(diff(ideal(x, y2), ideal(x2, xy2))); print(diff(ideal(x+2y2, 3), ideal(x2y2, xy3+1)));
+ring r2=2,(x,y),dp; print(diff(ideal(x,y),ideal(x2,y2))); print(diff(ideal(x),ideal(x2+x,x4+x)));
+"""
+
+
+@pytest.mark.singular
+def test_diff_by_operators_as_singular() -> None:
+    assert run(DIFF_SRC).split() == run_singular(DIFF_SRC).split()
