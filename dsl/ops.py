@@ -332,6 +332,9 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
     """``a op b`` for ``== != < <= > >=`` (1 or 0)."""
     if isinstance(a, ExprList) or isinstance(b, ExprList):
         raise MechTypeError("cannot compare expression lists")
+    for m, other in ((a, b), (b, a)):  # a 1 x 1 matrix against a polynomial: its entry (as Singular)
+        if isinstance(m, Matrix) and m.nrows == m.ncols == 1 and op in ("==", "!=") and _rank(other) >= 0:
+            return compare(op, m.entries[0], other, ring)
     if type(a) is int and type(b) is int or (isinstance(a, str) and isinstance(b, str)):
         x, y = a, b
     elif _rank(a) >= 0 and _rank(b) >= 0:

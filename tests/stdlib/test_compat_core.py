@@ -137,3 +137,15 @@ ring r2=2,(x,y),dp; print(diff(ideal(x,y),ideal(x2,y2))); print(diff(ideal(x),id
 @pytest.mark.singular
 def test_diff_by_operators_as_singular() -> None:
     assert run(DIFF_SRC).split() == run_singular(DIFF_SRC).split()
+
+
+COEFFS_SRC = """
+ring r=0,(x,y,z),dp; poly f = x4+2x2+x3y4+y5+z7; matrix T; matrix M = coeffs(f,y,T); T; T*M == f;
+ideal I = x3y4+z7+y5+x4+2x2,x2y+y3; matrix TT; matrix NN = coeffs(I,y,TT); TT*NN; print(coeffs(I,y));
+matrix m[1][1]=x; m==x; m!=x; x==m; m==2;
+"""
+
+
+@pytest.mark.singular
+def test_coeffs_with_powers_as_singular() -> None:
+    assert run(COEFFS_SRC).split() == run_singular(COEFFS_SRC).split()
