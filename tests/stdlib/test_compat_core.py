@@ -149,3 +149,14 @@ matrix m[1][1]=x; m==x; m!=x; x==m; m==2;
 @pytest.mark.singular
 def test_coeffs_with_powers_as_singular() -> None:
     assert run(COEFFS_SRC).split() == run_singular(COEFFS_SRC).split()
+
+
+MATRIX_ARGS_SRC = """
+LIB "primdec.lib"; ring r = (2,t),(x),dp; matrix m[1][1] = x+t; primdecSY(m);
+ring s = 0,(x,y,z),dp; matrix n[1][3] = x2-y, xy-z, y2; print(std(n)); size(minAssGTZ(std(n))); dim(std(minAssGTZ(n)[1]));
+"""
+
+
+@pytest.mark.singular
+def test_matrix_arguments_as_singular() -> None:
+    assert run(MATRIX_ARGS_SRC).split() == run_singular(MATRIX_ARGS_SRC).split()
