@@ -299,6 +299,8 @@ def _check_target(t: A.Expr) -> None:
     base = t
     while isinstance(base, A.Index):
         base = base.base
+    while isinstance(base, A.Call):  # `len(3) = ...`: a variable declared with an index
+        base = base.func
     if not isinstance(base, A.Name):
         raise MechSyntaxError("cannot assign to this expression", t.pos, underline=True)
 

@@ -160,3 +160,14 @@ ring s = 0,(x,y,z),dp; matrix n[1][3] = x2-y, xy-z, y2; print(std(n)); size(minA
 @pytest.mark.singular
 def test_matrix_arguments_as_singular() -> None:
     assert run(MATRIX_ARGS_SRC).split() == run_singular(MATRIX_ARGS_SRC).split()
+
+
+INDEXED_ASSIGN_SRC = """
+int c; for (c=1; c<=3; c=c+1) { int len(c); len(c) = c*c; } len(2); len(3) = len(3) + 1; len(3); pagewidth;
+ring r=0,(x,y,z),dp; maxideal(1); ring s=0,(x,y,z),ds; maxideal(1); maxideal(2);
+"""
+
+
+@pytest.mark.singular
+def test_assign_to_indexed_names_as_singular() -> None:
+    assert run(INDEXED_ASSIGN_SRC).split() == run_singular(INDEXED_ASSIGN_SRC).split()
