@@ -223,6 +223,9 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
         return intmat_op(op, a, b)
     if isinstance(a, (IntVec,)) or isinstance(b, IntVec):
         return _intvec_op(op, a, b)
+    if op == "+" and any(isinstance(x, Ideal) for x in (a, b)) and \
+            any(isinstance(x, Matrix) and x.nrows == 1 for x in (a, b)):  # a rank-1 module: the ideal's sum
+        return _ideal_op(op, *(Ideal(x.ring, x.entries) if isinstance(x, Matrix) else x for x in (a, b)), ring)
     if isinstance(a, Matrix) or isinstance(b, Matrix):
         return _matrix_op(op, a, b, ring)
     if isinstance(a, Ideal) or isinstance(b, Ideal):

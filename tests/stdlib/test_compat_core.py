@@ -171,3 +171,13 @@ ring r=0,(x,y,z),dp; maxideal(1); ring s=0,(x,y,z),ds; maxideal(1); maxideal(2);
 @pytest.mark.singular
 def test_assign_to_indexed_names_as_singular() -> None:
     assert run(INDEXED_ASSIGN_SRC).split() == run_singular(INDEXED_ASSIGN_SRC).split()
+
+
+IDEAL_PLUS_ROW_SRC = """
+ring A=0,(x,y,z),dp; ideal I=zy2-zx3-x6; ideal sing=I+jacob(I); sing; matrix m[1][2]=x,y; ideal s2 = m+I; s2;
+"""
+
+
+@pytest.mark.singular
+def test_ideal_plus_one_row_matrix_as_singular() -> None:
+    assert run(IDEAL_PLUS_ROW_SRC).split() == run_singular(IDEAL_PLUS_ROW_SRC).split()
