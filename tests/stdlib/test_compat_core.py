@@ -181,3 +181,8 @@ ring A=0,(x,y,z),dp; ideal I=zy2-zx3-x6; ideal sing=I+jacob(I); sing; matrix m[1
 @pytest.mark.singular
 def test_ideal_plus_one_row_matrix_as_singular() -> None:
     assert run(IDEAL_PLUS_ROW_SRC).split() == run_singular(IDEAL_PLUS_ROW_SRC).split()
+
+
+def test_reduce_with_bad_ecart_in_local_ordering_is_refused() -> None:
+    src = "ring r = 32003,(x,y),ds; ideal j = std(ideal(y2+x10y, x22)); reduce(y2+y3+x2y2, j, 2);"
+    assert "not supported" in str(error(src))
