@@ -36,5 +36,8 @@ EXPLAINED: dict[str, str] = {
     "Buch/Example_1_6_13.tst": "reduce by generators that are no standard basis (Singular warns so): the remainder "
                                "depends on the divisors chosen; f minus mech's remainder lies in the ideal "
                                "(checked in Singular)",
+    "Short/bug_tr661.tst": "primdecSY gives the same two components in the other order and the script picks L[2]: "
+                           "mech's L[1][1] is Singular's L[2][1] (same text), its L[2][1] equals Singular's "
+                           "L[1][1] (idealsEqual in Singular), the radicals agree",
     "Old/err2.tst": "Singular refuses assigning a bigint to an int; mech has one integer type",
 }
