@@ -12,6 +12,7 @@ from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .intmat import IntMat, to_intmat
 from .minpoly import set_minpoly
 from .printing import set_short
+from .rings import indexed_names
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, to_ideal, to_int, to_matrix, to_poly, typeof
 
 
@@ -55,6 +56,11 @@ class Assignment:
         while isinstance(base, A.Index):
             chain.append(base)
             base = base.base
+        if isinstance(base, A.Call):  # `len(3) = ...`: the variable declared as `int len(3)`
+            names = indexed_names(base, self.eval)
+            if not names or len(names) != 1:
+                raise MechRuntimeError("cannot assign to this expression", base.pos, self.source)
+            base = A.Name(names[0], pos=base.pos)
         assert isinstance(base, A.Name)
         name = base.id
         var = self.lookup(name)

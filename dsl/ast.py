@@ -124,6 +124,7 @@ class ExprStmt(Stmt):
 class Declarator(Node):
     name: str
     dims: list[Expr]
+    indices: list[list[Expr]] = field(default_factory=list)  # `poly p(1)(2..3)`: names with indices
 
 
 @dataclass(eq=False)
@@ -198,6 +199,7 @@ class Return(Stmt):
 class Param(Node):
     type: Optional[str]
     name: str
+    alias: bool = False  # `alias T x`: listvar shows the caller's variable it stands for
 
 
 @dataclass(eq=False)

@@ -156,6 +156,10 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
         return A.Declarator(str(c[0]), list(c[1:]), pos=meta_pos(meta))
 
     @v_args(meta=True)
+    def indexed_declarator(self, meta, c):
+        return A.Declarator(str(c[0]), [], [list(x) for x in c[1:]], pos=meta_pos(meta))
+
+    @v_args(meta=True)
     def decl(self, meta, c):
         typ, rest = c[0], c[1:]
         value = rest[-1]
@@ -285,12 +289,18 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
             return A.Param(c[0], str(c[1]), pos=meta_pos(meta))
         return A.Param(None, str(c[0]), pos=meta_pos(meta))
 
+    @v_args(meta=True)
+    def alias_param(self, meta, c):
+        return A.Param(c[0], str(c[1]), True, pos=meta_pos(meta))
+
 
 def _check_target(t: A.Expr) -> None:
     """Assignment targets are names, possibly indexed (``I[2]``, ``D[i,j]``, ``L[2][1]``)."""
     base = t
     while isinstance(base, A.Index):
         base = base.base
+    while isinstance(base, A.Call):  # `len(3) = ...`: a variable declared with an index
+        base = base.func
     if not isinstance(base, A.Name):
         raise MechSyntaxError("cannot assign to this expression", t.pos, underline=True)
 

@@ -6,7 +6,7 @@ from typing import Any
 
 from . import ast as A
 from .errors import MechRuntimeError, MechTypeError
-from .rings import build_ring, default_ring
+from .rings import build_ring, default_ring, indexed_names
 from .scopes import RING_TYPES
 from .types import find_type
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Ring, convert, to_int, to_matrix, typeof
@@ -36,6 +36,8 @@ class Declarations:
         if typ == "qring":
             self._declare_qring(s)
             return
+        if any(d.indices for d in s.items):
+            s = A.Decl(typ, [n for d in s.items for n in self._expanded(d)], s.value, pos=s.pos)
         for d in s.items:
             if d.dims and typ not in ("matrix", "intmat"):
                 raise MechTypeError(f"only a matrix is declared with dimensions, not a {typ}")
@@ -56,6 +58,18 @@ class Declarations:
                 raise MechRuntimeError(f"{len(s.items)} variables declared but {len(values)} values given")
         for d, v in zip(s.items, values):
             self._declare_item(typ, d, v)
+
+    def _expanded(self, d: A.Declarator) -> list[A.Declarator]:
+        """``poly p(i)`` declares the variable named ``p(3)`` (i = 3); ``p(1..2)`` two of them."""
+        if not d.indices:
+            return [d]
+        node: A.Expr = A.Name(d.name, pos=d.pos)
+        for args in d.indices:
+            node = A.Call(node, args, pos=d.pos)
+        names = indexed_names(node, self.eval)
+        if names is None:
+            raise MechTypeError(f"the indices of the name {d.name}(...) must be int or intvec")
+        return [A.Declarator(n, d.dims, pos=d.pos) for n in names]
 
     def _declare_item(self, typ: str, d: A.Declarator, v: Any) -> None:
         kring = self.ring.poly if self.ring else None

@@ -89,7 +89,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.last: Any = NONE
         self.argnames: list[str] = []
         self.ticks_per_sec = 1
-        self.sysvars: dict[str, int] = {"printlevel": 0, "echo": 0}
+        self.sysvars: dict[str, int] = {"printlevel": 0, "echo": 0, "pagewidth": 80}  # pagewidth: as Singular
         self._t0 = time.process_time()
         self._r0 = time.time()
         self._exec: dict[type, Callable] = {

@@ -7,6 +7,7 @@ transcendental field) are killed.  Reading ``minpoly`` gives the minimal polynom
 (``(a2+1)``), 0 in a ring without one."""
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any
 
 from ..kernel import Poly, PolyRing
@@ -78,11 +79,14 @@ def get_minpoly(ring: Ring) -> Any:
 def compare_params(op: str, x: Any, y: Any) -> int:
     """``x op y`` for ``< <= > >=`` of numbers with parameters, as Singular orders them: in QQ[a]/(m) and
     Z/p[a]/(m) by degree in ``a``, then by leading coefficient (0 is above the numbers whose leading
-    coefficient is negative); with transcendental parameters only constants are ordered."""
+    coefficient is negative); with transcendental parameters by the degree of numerator minus denominator,
+    then by the quotient of their leading coefficients (terms by degree, then lexicographically)."""
     field = x.field
     if not isinstance(field, AlgebraicField):
         if not (x.is_constant() and y.is_constant()):
-            raise MechRuntimeError("numbers with parameters cannot be ordered (only constants are)")
+            if op in ("<", "<="):
+                x, y = y, x
+            return int(_greater_rational(x, y) or (op in ("<=", ">=") and x == y))
         if field.characteristic:
             p = field.characteristic
             x, y = field.to_fraction(x) % p, field.to_fraction(y) % p
@@ -92,6 +96,25 @@ def compare_params(op: str, x: Any, y: Any) -> int:
     if op in ("<", "<="):
         x, y = y, x
     return int(_greater(x, y) or (op in ("<=", ">=") and x == y))
+
+
+def _greater_rational(x: Any, y: Any) -> bool:
+    """x > y in Singular's order of QQ(a,..) and Z/p(a,..) (x, y not both constants)."""
+    def key(c: Any) -> tuple[int, Fraction]:
+        (dn, cn), (dd, cd) = _lead_term(c.num), _lead_term(c.den)
+        p = c.field.characteristic
+        return dn - dd, (Fraction(cn % p * pow(cd, -1, p) % p) if p else Fraction(cn, cd))
+    if not x:
+        return y.field.characteristic == 0 and key(y)[1] < 0
+    if not y:
+        return x.field.characteristic != 0 or key(x)[1] > 0
+    return key(x) > key(y)
+
+
+def _lead_term(p: Any) -> tuple[int, int]:
+    """Total degree and coefficient of the leading term of a flint polynomial (by degree, then lex)."""
+    exp, c = max(zip(p.monoms(), p.coeffs()), key=lambda t: (sum(t[0]), t[0]))
+    return sum(exp), int(c)
 
 
 def _greater(x: Any, y: Any) -> bool:

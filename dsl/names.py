@@ -131,14 +131,21 @@ class Names:
         return m * (f(node.num) / f(node.den))
 
     def _indexed_vars(self, node: A.Call) -> Any:
-        """Ring variables written ``x(2)``, ``x(1..3)`` (several), ``y(1)(2)``; None if not such."""
-        if self.ring is None:
-            return None
+        """Variables declared with an index (``poly p(2)``), ring variables or parameters written ``x(2)``,
+        ``x(1..3)`` (several), ``y(1)(2)``; None if not such."""
         names = indexed_names(node, self.eval)
         if names is None:
             return None
-        idx = [self.ring.var_index(n) for n in names]
-        if any(i is None for i in idx):
-            return None
-        gens = [self.ring.poly.gen(i) for i in idx]
+        gens = []
+        for n in names:
+            var = self.lookup(n)
+            i = self.ring.var_index(n) if self.ring is not None else None
+            if var is not None:  # declared as `poly rp(3) = ...;`
+                gens.append(var.value)
+            elif i is not None:
+                gens.append(self.ring.poly.gen(i))
+            elif self.ring is not None and n in self.ring.params:
+                gens.append(self._param(self.ring, n))
+            else:
+                return None
         return gens[0] if len(gens) == 1 else ExprList(gens)

@@ -223,6 +223,9 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
         return intmat_op(op, a, b)
     if isinstance(a, (IntVec,)) or isinstance(b, IntVec):
         return _intvec_op(op, a, b)
+    if op == "+" and any(isinstance(x, Ideal) for x in (a, b)) and \
+            any(isinstance(x, Matrix) and x.nrows == 1 for x in (a, b)):  # a rank-1 module: the ideal's sum
+        return _ideal_op(op, *(Ideal(x.ring, x.entries) if isinstance(x, Matrix) else x for x in (a, b)), ring)
     if isinstance(a, Matrix) or isinstance(b, Matrix):
         return _matrix_op(op, a, b, ring)
     if isinstance(a, Ideal) or isinstance(b, Ideal):
@@ -332,6 +335,9 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
     """``a op b`` for ``== != < <= > >=`` (1 or 0)."""
     if isinstance(a, ExprList) or isinstance(b, ExprList):
         raise MechTypeError("cannot compare expression lists")
+    for m, other in ((a, b), (b, a)):  # a 1 x 1 matrix against a polynomial: its entry (as Singular)
+        if isinstance(m, Matrix) and m.nrows == m.ncols == 1 and op in ("==", "!=") and _rank(other) >= 0:
+            return compare(op, m.entries[0], other, ring)
     if type(a) is int and type(b) is int or (isinstance(a, str) and isinstance(b, str)):
         x, y = a, b
     elif _rank(a) >= 0 and _rank(b) >= 0:
@@ -370,21 +376,28 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
 
 
 def _poly_cmp(p: Poly, q: Poly) -> int:
-    """Singular's order of polynomials: by leading monomial (0 below every monomial), then by the sign
+    """Singular's order of polynomials: constants as numbers; else by leading monomial (0 below every
+    monomial), then by the sign
     of the difference of the leading coefficients (over Z/p its symmetric representative: ``6x > x`` is
     0 in Z/7); the other terms do not count (``x+2 > x+1`` is 0)."""
-    if p.is_zero() or q.is_zero():
+    field = p.ring.field
+    if p.is_constant() and q.is_constant():  # as numbers: a constant's sign counts, 0 is no monomial
+        x, y = p.coeff_of(p.ring.zero_exp), q.coeff_of(q.ring.zero_exp)
+        if getattr(field, "params", ()):  # as Singular orders numbers with parameters
+            return 1 if compare_params(">", x, y) else -1 if compare_params(">", y, x) else 0
+        d = x - y
+    elif p.is_zero() or q.is_zero():
         return int(not p.is_zero()) - int(not q.is_zero())
-    key = p.ring.order.key
-    a, b = key(p.lm()), key(q.lm())
-    if a != b:
-        return 1 if a > b else -1
-    d = p.lc() - q.lc()  # Singular asks whether the difference is positive
+    else:
+        a, b = p.ring.order.key(p.lm()), p.ring.order.key(q.lm())
+        if a != b:
+            return 1 if a > b else -1
+        d = p.lc() - q.lc()  # Singular asks whether the difference is positive
     if not d:
         return 0
-    field = p.ring.field
     if getattr(field, "params", ()):
         return 1 if compare_params(">", d, field.zero) else -1
     if field.characteristic:
         return 1 if field.symmetric(d) > 0 else -1
     return 1 if d > 0 else -1
+

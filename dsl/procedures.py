@@ -28,7 +28,7 @@ class Procedures:
         saved_stmt, saved_shift = self.stmt, self.line_shift
         self.line_shift = 0
         try:
-            self._bind_params(proc, args)
+            self._bind_params(proc, args, node.args if isinstance(node, A.Call) else None)
         except MechError as e:
             self.frames.pop()
             self.ring, self.line_shift = frame.ring_at_entry, saved_shift
@@ -60,7 +60,7 @@ class Procedures:
             if not frame.keep_ring:
                 self.ring = frame.ring_at_entry
 
-    def _bind_params(self, proc: Proc, args: list[Any]) -> None:
+    def _bind_params(self, proc: Proc, args: list[Any], nodes: Optional[list[A.Expr]] = None) -> None:
         params = proc.params or []
         if proc.params is None and args:
             params = [A.Param("list", "#")]
@@ -87,7 +87,9 @@ class Procedures:
                 except MechError as e:
                     e.message = f"argument {i + 1} of {proc.name}: {e.message}"
                     raise
-            self.declare(p.name, typ, v)
+            var = self.declare(p.name, typ, v)
+            if p.alias and nodes is not None and len(nodes) == len(args) and isinstance(nodes[i], A.Name):
+                var.alias = nodes[i].id
             i += 1
         if i < len(args):
             raise MechTypeError(f"too many arguments for procedure {proc.name}: expected {len(params)}, got {len(args)}")

@@ -252,6 +252,8 @@ def invoke(cmd: Command, ctx: Any, args: list) -> Any:
                     ctx.argnames = [n if b is a else "_" for n, a, b in zip(ctx.argnames, args, bound)]
                 result = ov.func(ctx, *bound) if ov.wants_ctx else ov.func(*bound)
                 return result_value(result)
+    if cmd.lib and any(isinstance(a, Matrix) for a in args):  # a library's `ideal i` takes a matrix's entries
+        return invoke(cmd, ctx, [to_ideal(a, a.ring) if isinstance(a, Matrix) else a for a in args])
     got = ", ".join(typeof(a) for a in args)
     raise MechTypeError(f"wrong arguments for {cmd.name}: got ({got}), expected {cmd.usage()}")
 

@@ -99,8 +99,9 @@ def _characteristic(node: A.Expr, evaluate: Evaluate) -> tuple[int, tuple[str, .
 
 
 def indexed_names(node: A.Expr, evaluate: Evaluate) -> list[str] | None:
-    """The names ``x(1)``, ``x(2)``, ... that ``x(1..2)`` or ``y(1..2)(1..3)`` stand for (None when the
-    node is not such a call or an index is not an int or intvec)."""
+    """The names ``x(1)``, ``x(2)``, ... that ``x(1..2)`` or ``y(1..2)(1..3)`` stand for, and the one name
+    ``a(3,2)`` of several int indices (None when the node is not such a call or an index is not an int or
+    intvec)."""
     levels: list[list[A.Expr]] = []
     while isinstance(node, A.Call):
         levels.append(node.args)
@@ -109,12 +110,15 @@ def indexed_names(node: A.Expr, evaluate: Evaluate) -> list[str] | None:
         return None
     names = [node.id]
     for args in reversed(levels):
-        idx: list[int] = []
-        for a in args:
-            v = evaluate(a)
-            if isinstance(v, bool) or not isinstance(v, (int, IntVec)):
+        values = [evaluate(a) for a in args]
+        if any(isinstance(v, bool) or not isinstance(v, (int, IntVec)) for v in values):
+            return None
+        if len(values) > 1:  # a(3,2,3): one name with several int indices, as Singular
+            if not all(isinstance(v, int) for v in values):
                 return None
-            idx.extend(_ints(v, "an index"))
+            names = [f"{n}({','.join(map(str, values))})" for n in names]
+            continue
+        idx = _ints(values[0], "an index") if values else []
         if not idx:
             return None
         names = [f"{n}({i})" for n in names for i in idx]

@@ -22,10 +22,11 @@ RING_TYPES = {"number", "poly", "ideal", "matrix", "map"}
 class Var:
     """A variable: declared type, value, the ring it belongs to (None if ring-independent), level."""
 
-    __slots__ = ("name", "type", "value", "ring", "level")
+    __slots__ = ("name", "type", "value", "ring", "level", "alias")
 
     def __init__(self, name: str, type_: str, value: Any, ring: Optional[Ring], level: int) -> None:
         self.name, self.type, self.value, self.ring, self.level = name, type_, value, ring, level
+        self.alias: Optional[str] = None  # an alias parameter: the caller's variable it stands for
 
 
 class Frame:

@@ -3,6 +3,8 @@ definitions, kill, export, keepring, setring and quit; declarations, assignments
 have their own modules."""
 from __future__ import annotations
 
+from typing import Any
+
 from . import ast as A
 from . import ops
 from .boundary import convert_exception
@@ -10,6 +12,7 @@ from .compiled import stmt_fn
 from .errors import MechError, MechNameError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .printing import join_outputs, render
+from .rings import indexed_names
 from .signals import SIGNALS, BreakSignal, ContinueSignal, QuitSignal, ReturnSignal
 from .values import NONE, ExprList, List, Proc, Ring, typeof
 
@@ -80,6 +83,10 @@ class Statements:
                 continue
             self.last = v
             values.append(v)
+            named = self._indexed_declared(node, v)
+            if named:
+                parts.extend((render(x, n), isinstance(x, List)) for n, x in named)
+                continue
             parts.append((render(v, node.id if isinstance(node, A.Name) else None), isinstance(v, List)))
         if not parts:
             return
@@ -91,6 +98,20 @@ class Statements:
                 self.display(rich)
                 return
         self.write(text)
+
+    def _indexed_declared(self, node: A.Expr, v: Any) -> list[tuple[str, Any]]:
+        """(name, value) of variables declared with indices that ``j(2..3)`` shows, as Singular names them."""
+        base = node
+        while isinstance(base, A.Call):
+            base = base.func
+        if (base is node or not isinstance(base, A.Name) or self.lookup(base.id) is not None
+                or self.registry.find(base.id, self.loaded_libs) is not None):
+            return []
+        names = indexed_names(node, self.eval)
+        if not names or any(self.lookup(n) is None for n in names):
+            return []
+        items = v.items if isinstance(v, ExprList) and len(names) > 1 else [v]
+        return list(zip(names, items)) if len(items) == len(names) else []
 
     def _exec_if(self, s: A.If) -> None:
         if ops.truth(self.eval(s.cond)):
@@ -141,6 +162,11 @@ class Statements:
         for t in targets:
             items = t.items if isinstance(t, A.Tuple) else [t]
             for it in items:
+                if isinstance(it, A.Call):  # `kill p(2)`: a variable declared with an index
+                    names = indexed_names(it, self.eval)
+                    if names:
+                        out.extend(A.Name(n, pos=it.pos) for n in names)
+                        continue
                 if not isinstance(it, A.Name):
                     raise MechRuntimeError(f"{what} needs variable names", it.pos, self.source)
                 out.append(it)

@@ -12,6 +12,7 @@ from ..kernel import Poly
 from ..kernel import homog as _homog
 from ..kernel import ideals as K
 from ..kernel import primdec as _primdec
+from ..kernel.qhweight import qh_weights
 from ..dsl.qrings import quotient_of, with_quotient
 from ..dsl.registry import command
 from .standard import normalize
@@ -162,3 +163,18 @@ def homogenize(I: Poly | Ideal, h: Poly) -> Any:
     if isinstance(I, Poly):
         return _homog.homogenize(I, e.index(1))
     return Ideal(I.ring, _homog.homogenize(list(I.gens), e.index(1)))
+
+
+@command("qhweight")
+def qhweight(I: Poly | Ideal) -> IntVec:
+    """qhweight(I): weights of the variables for which every generator of I is quasi-homogeneous, as
+    Singular chooses them (0 for the variables before the first one the terms constrain, a positive
+    solution with the smallest sum for the others; the zero vector when there is none).
+
+    Example:
+      ring r = 0,(t,x,y,z),dp;
+      qhweight(ideal(x4+y3+z2));
+      → 0,3,4,6
+    """
+    polys = [I] if isinstance(I, Poly) else list(I.gens)
+    return IntVec(qh_weights([p for p in polys if not p.is_zero()], I.ring.nvars))

@@ -38,6 +38,10 @@ def describe(value: Any, basering: Optional[Ring]) -> str:
     return shape() if callable(shape) else typeof(value)
 
 
+def _text(var: Any, basering: Optional[Ring]) -> str:
+    return f"alias for {var.alias}" if getattr(var, "alias", None) else describe(var.value, basering)
+
+
 def _line(name: str, level: int, text: str, nested: bool) -> str:
     lead = "//      " if nested else "// "
     return f"{lead}{name:<30} [{level}]  {text}\n"
@@ -69,22 +73,28 @@ def listvar(ctx, *nodes: A.Expr) -> None:
             ring = ctx.eval(node)
             if not isinstance(ring, Ring):
                 raise MechTypeError(f"listvar({node.id}): listing the variables of one type is not supported")
-            ctx.write(_line(node.id, 0, describe(ring, basering), False))
+            other_name = ring is basering and getattr(ring, "name", None) not in (None, node.id)
+            ctx.write(_line(node.id, 0, "ring(*)" if other_name else describe(ring, basering), False))
             for f in frames:
                 for var in reversed(list(_ring_vars(ctx, f, ring).values())):
                     ctx.write(_line(var.name, var.level, describe(var.value, basering), False))
             return
     every = bool(nodes)
     out: list[str] = []
+    shown = False  # the basering is listed with its objects once; other names of it show ring(*)
     for f in frames:
         for var in reversed(list(f.vars.values())):
             if isinstance(var.value, Proc):
                 continue
-            out.append(_line(var.name, var.level, describe(var.value, basering), False))
+            if var.value is basering and basering is not None and shown:
+                out.append(_line(var.name, var.level, "ring(*)", False))
+                continue
+            out.append(_line(var.name, var.level, _text(var, basering), False))
+            shown = shown or var.value is basering
             if isinstance(var.value, Ring) and (every or var.value is basering):
                 for g in frames:
                     for dep in reversed(list(_ring_vars(ctx, g, var.value).values())):
-                        out.append(_line(dep.name, dep.level, describe(dep.value, basering), True))
+                        out.append(_line(dep.name, dep.level, _text(dep, basering), True))
         if f.proc is not None and f.proc.params is None and "#" not in f.vars:  # its empty argument list
             out.append(_line("#", f.level, "list, size: 0", False))
     ctx.write("".join(out))

@@ -9,6 +9,7 @@ from ..dsl.registry import command
 from ..dsl.values import Ideal, IntVec, List, Map, Matrix, Number, Ring, to_poly
 from ..dsl.values import typeof as _typeof
 from ..kernel import Poly
+from ..kernel.algext import AlgebraicField
 
 
 @command("size")
@@ -148,12 +149,69 @@ def diff(f: Poly | Ideal | Matrix, x: Poly) -> Any:
     return Matrix(f.ring, f.nrows, f.ncols, [g.diff(i) for g in f.entries])
 
 
+@command("diff")
+def diff_operators(H: Ideal, I: Ideal) -> Matrix:
+    """diff(H, I): the matrix of the H[i] applied to the I[j] as differential operators (x^a acts as
+    the a-th partial derivative).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      print(diff(ideal(x, y2), ideal(x2, xy2)));
+      → 2x,y2,
+      → 0, 2x
+    """
+    return Matrix(I.ring, len(H.gens), len(I.gens), [_apply_operator(h, f) for h in H.gens for f in I.gens])
+
+
+def _apply_operator(h: Poly, f: Poly) -> Poly:
+    out = f.ring.zero()
+    for e, c in h.terms.items():
+        g = f
+        for i, k in enumerate(e):
+            for _ in range(k):
+                g = g.diff(i)
+        out = out + g * c
+    return out
+
+
 def _var_index(x: Poly, cmd: str) -> int:
     if len(x.terms) == 1:
         (e, c), = x.terms.items()
         if c == 1 and sum(e) == 1:
             return e.index(1)
     raise MechRuntimeError(f"{cmd}: the second argument must be a ring variable")
+
+
+def _param_index(x: Poly) -> Optional[int]:
+    """j if x is the j-th parameter of its ring's coefficient field, else None."""
+    params = getattr(x.ring.field, "params", ())
+    if not params or not x.is_constant() or x.is_zero():
+        return None
+    c = x.lc()
+    return next((j for j in range(len(params)) if c == x.ring.field.gen(j)), None)
+
+
+def _subst_param(f: Poly, j: int, g: Poly) -> Poly:
+    """f with g for the j-th parameter in its coefficients (polynomials in the parameters of QQ(a,..), or
+    the parameter of an algebraic extension, its coefficients read as polynomials of degree < deg m)."""
+    ring, field = g.ring, f.ring.field  # g's ring: f may be minpoly, a number of QQ(a)
+    out = ring.zero()
+    for e, c in f.terms.items():
+        if isinstance(field, AlgebraicField):
+            value = sum((field(v) * g ** k for k, v in enumerate(c.u.coeffs()) if v), ring.zero())
+        else:
+            if c.den != 1:  # Singular then drops the denominators (with a warning)
+                raise MechRuntimeError("subst: substituting a parameter in coefficients with denominators is not "
+                                       "supported")
+            value = ring.zero()
+            for m, v in zip(c.num.monoms(), c.num.coeffs()):
+                rest = ring.field(int(v))
+                for k, mk in enumerate(m):
+                    if k != j and mk:
+                        rest = rest * ring.field.gen(k) ** int(mk)
+                value = value + g ** int(m[j]) * rest
+        out = out + ring.monomial(e, ring.field.one) * value
+    return out
 
 
 @command("jacob")
@@ -177,8 +235,9 @@ def jacob(f: Poly | Ideal) -> Any:
 
 
 @command("subst")
-def subst(f: Poly | Ideal | Matrix, *pairs: Any) -> Any:
-    """subst(f, x, g, ...): substitute g for the ring variable x in f (several pairs in turn).
+def subst(f: Poly | Ideal | Matrix | Number, *pairs: Any) -> Any:
+    """subst(f, x, g, ...): substitute g for the ring variable (or parameter) x in f (several pairs in
+    turn).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -189,10 +248,26 @@ def subst(f: Poly | Ideal | Matrix, *pairs: Any) -> Any:
     """
     if not pairs or len(pairs) % 2:
         raise MechTypeError("subst(f, x, g): give a variable and its substitute")
+    if isinstance(f, Number):
+        f = to_poly(f, f.ring)
+        if len(pairs) == 2 and isinstance(pairs[1], Poly) and pairs[1].ring is not f.ring:
+            # minpoly (a number of QQ(a)) as a polynomial in a: evaluated at a polynomial of the basering
+            j = _param_index(to_poly(pairs[0], pairs[1].ring))
+            if j is not None and not isinstance(f.ring.field, AlgebraicField):
+                return _subst_param(f, j, pairs[1])
     ring = f.ring
     for k in range(0, len(pairs), 2):
         x = to_poly(pairs[k], ring)
         g = to_poly(pairs[k + 1], ring)
+        j = _param_index(x)
+        if j is not None:  # a parameter: in every coefficient
+            if isinstance(f, Poly):
+                f = _subst_param(f, j, g)
+            elif isinstance(f, Ideal):
+                f = Ideal(ring, [_subst_param(p, j, g) for p in f.gens])
+            else:
+                f = Matrix(ring, f.nrows, f.ncols, [_subst_param(p, j, g) for p in f.entries])
+            continue
         i = _var_index(x, "subst")
         images = ring.gens()
         images[i] = g
@@ -219,6 +294,8 @@ def maxideal(ctx, k: int) -> Ideal:
     ring = ctx.basering().poly
     if k <= 0:
         return Ideal(ring, [ring.one()], is_std=True)
+    if k == 1:  # Singular: the variables in their order
+        return Ideal(ring, ring.gens(), is_std=True)
     exps: list[tuple[int, ...]] = []
 
     def rec(i: int, left: int, cur: list[int]) -> None:

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 from math import gcd as int_gcd
 from typing import Any
-from ..dsl.errors import MechRuntimeError
+from ..dsl import ast as A
+from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec, Matrix
+from ..dsl.values import Ideal, IntVec, Matrix, typeof
 from ..kernel import Poly
 from ..kernel import factor
 from ..kernel import matrix as KM
@@ -112,10 +113,11 @@ def _coeffs_in(f: Poly, i: int) -> list[Poly]:
     return [Poly(f.ring, p) for p in parts]
 
 
-@command("coeffs")
-def coeffs(f: Poly | Ideal, v: Poly) -> Matrix:
+@command("coeffs", raw=True)
+def coeffs(ctx, f_node: A.Expr, v_node: A.Expr, *t_node: A.Expr) -> Matrix:
     """coeffs(f, x): the coefficients of f as a polynomial in the variable x, a column from x^0 up;
-    for an ideal one column per generator.
+    for an ideal one column per generator; coeffs(f, x, T) also sets the matrix T to the row of powers
+    1, x, x2, ... (T*coeffs(f, x, T) == f).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -124,6 +126,19 @@ def coeffs(f: Poly | Ideal, v: Poly) -> Matrix:
       → 2z,
       → 3y
     """
+    f, v = ctx.eval(f_node), ctx.eval(v_node)
+    if len(t_node) > 1 or not isinstance(f, (Poly, Ideal)) or not isinstance(v, Poly):
+        got = ", ".join(typeof(a) for a in (f, v)) + ", matrix" * len(t_node)
+        raise MechTypeError(f"wrong arguments for coeffs: got ({got}), expected coeffs(poly|ideal, poly[, matrix])")
+    m = _coeffs(f, v)
+    if t_node:
+        i = _var_index(v, "coeffs")
+        x = v.ring.gen(i)
+        ctx.assign(t_node[0], Matrix(v.ring, 1, m.nrows, [x ** k for k in range(m.nrows)]))
+    return m
+
+
+def _coeffs(f: Poly | Ideal, v: Poly) -> Matrix:
     i = _var_index(v, "coeffs")
     polys = [f] if isinstance(f, Poly) else list(f.gens)
     cols = [_coeffs_in(p, i) for p in polys]

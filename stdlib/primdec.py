@@ -141,17 +141,28 @@ def primdec_sy(I: Ideal) -> List:
 
 #: The options of primdec.lib's decompositions: they choose among algorithms, not the result.
 _OPTIONS = {"minAssGTZ": ({0, 1}, {"facstd", "noFacstd", "GTZ", "SL"}), "primdecGTZ": (set(), {"GTZ", "SL", "keep_comp"}),
-            "primdecSY": ({0, 1, 2, 3}, set()), "minAssChar": ({0, 1, 2, 3}, set())}
+            "primdecSY": ({0, 1, 2, 3}, set()), "minAssChar": ({0, 1, 2, 3}, set()),
+            "radical": ({0}, {"fullRad", "KL", "SL", "facstd", "noFacstd"})}
 
 
 def _options(cmd: str, opts: tuple) -> None:
     ints, words = _OPTIONS[cmd]
     for o in opts:
+        if cmd == "radical" and o in (1, "equiRad"):
+            raise MechRuntimeError("radical(I, 1): the equiradical is not supported")
         if o == "global":
             raise MechRuntimeError(f'{cmd}(I, "global"): the decomposition in the global ring is not supported')
         if not ((isinstance(o, int) and o in ints) or (isinstance(o, str) and o in words)):
             allowed = ", ".join([str(i) for i in sorted(ints)] + [f'"{w}"' for w in sorted(words)])
             raise MechRuntimeError(f"{cmd}: unknown option {o!r} (options: {allowed})")
+
+
+@command("radical", lib="primdec.lib")
+def radical_options(I: Ideal, *opts: Any) -> Ideal:
+    """radical(I, "KL") and the other options of radical that choose an algorithm (not the result)."""
+    from .ideals import radical
+    _options("radical", opts)
+    return radical(I)
 
 
 @command("minAssGTZ", lib="primdec.lib")

@@ -279,3 +279,12 @@ def dim(ctx, I: Ideal) -> int:
         ctx.warn(f"dim({ctx.argnames[0]}) may be wrong because the mixed monomial ordering")
     lms = [g.lm() for g in with_quotient(I.nonzero(), I.ring)]
     return krull_dim(lms, I.ring.nvars)
+
+
+@command("std")
+def std_row(m: Matrix) -> Matrix:
+    """std(m) of a one-row matrix (a module of rank 1: the ideal of its entries), as a one-row matrix."""
+    if m.nrows != 1:
+        raise MechRuntimeError("std of a matrix with several rows (a module) is not supported")
+    basis = std(Ideal(m.ring, m.entries))
+    return Matrix(m.ring, 1, len(basis.gens), list(basis.gens))

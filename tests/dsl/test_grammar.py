@@ -144,7 +144,8 @@ def test_assignments():
     with pytest.raises(MechSyntaxError, match="cannot assign"):
         parse("1 = 2;")
     with pytest.raises(MechSyntaxError, match="cannot assign"):
-        parse("f(x) = 2;")
+        parse("f(x)[1] + 1 = 2;")
+    assert isinstance(one("len(2) = 2;"), A.Assign)  # a variable declared as `int len(2)`
 
 
 def test_control_flow():
