@@ -54,3 +54,19 @@ def contains_all(basis: Sequence[Poly], polys: Sequence[Poly]) -> bool:
         red = Reducer(pk, [pack(pk, b) for b in bs])
         return not any(red.reduce(pack(pk, f), False) for f in fs)
     return packed(ring, bs + fs, run)
+
+
+def normal_forms(polys: Sequence[Poly], basis: Sequence[Poly]) -> list[Poly]:
+    """``[normal_form(f, basis) for f in polys]`` with the basis packed once."""
+    if not polys:
+        return []
+    ring = polys[0].ring
+    if not ring.order.is_global:
+        raise OrderingError("normal forms need a global ordering; use the weak normal form for local orderings")
+    bs = [b.terms for b in basis if not b.is_zero()]
+    fs = [f.terms for f in polys]
+
+    def run(pk: Packing) -> list[dict[Exp, Any]]:
+        red = Reducer(pk, [pack(pk, b) for b in bs])
+        return [unpack(pk, red.reduce(pack(pk, f))) for f in fs]
+    return [Poly(ring, t) for t in packed(ring, bs + fs, run)]

@@ -103,9 +103,12 @@ def _min_ass(basis: list[Poly], ring: PolyRing, cache: dict, split: bool = True)
             primes.append(piece)
             continue
         red = Reduction(piece, ring)
-        primes.extend(red.primes())
+        found = red.primes()
+        primes.extend(found)
         h = red.h
-        if h.is_constant() or _contained(quotient(piece, [h], ring), piece):
+        # nothing outside V(h)'s complement when the piece is itself one of its primes, or I : h = I
+        if h.is_constant() or any(_contained(P, piece) for P in found) or \
+                _contained(quotient(piece, [h], ring), piece):
             continue
         for f in irreducible(h, cache):
             primes.extend(_min_ass(groebner(piece + [f], ring), ring, cache))
