@@ -296,7 +296,10 @@ def _length_conditions(a: Analysis) -> None:
         if _unit(S):
             a.length_components.append(LengthComponent(P, None, [], []))
             continue
-        E = [g for g in eliminate(S, list(range(n)), R) if not g.is_zero()]
+        if R.order.is_elimination_for(list(range(n))):  # S is already a basis of J + P for it
+            E = [g for g in S if not any(any(e[:n]) for e in g.terms)]
+        else:
+            E = [g for g in eliminate(S, list(range(n)), R) if not g.is_zero()]
         sat = saturate_poly(E, lengths, R) if E else []
         cond = [] if _unit(sat) else sat
         facs = []
