@@ -12,7 +12,7 @@ from __future__ import annotations
 import heapq
 from typing import Any, Callable, Sequence
 
-from .monomials import Packing
+from .monomials import Packing, packing
 from .poly import Exp, Poly, PolyRing
 
 
@@ -33,7 +33,7 @@ def packed(ring: PolyRing, polys: Sequence[dict[Exp, Any]], run: Callable[[Packi
     maxdeg = max(maxdeg, 2 * max((sum(e) for p in polys for e in p), default=0))
     while True:
         try:
-            return run(Packing(ring.order, maxdeg))
+            return run(packing(ring.order, maxdeg))
         except Overflow:
             maxdeg *= 4
 

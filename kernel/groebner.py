@@ -37,3 +37,36 @@ def normal_form(f: Poly, basis: Sequence[Poly], full: bool = True) -> Poly:
 def contains(basis: Sequence[Poly], f: Poly) -> bool:
     """Ideal membership of ``f`` given a Gröbner basis."""
     return normal_form(f, basis).is_zero()
+
+
+def contains_all(basis: Sequence[Poly], polys: Sequence[Poly]) -> bool:
+    """Whether every one of ``polys`` lies in the ideal of the Gröbner basis ``basis`` (the
+    basis packed once for all of them; top reductions suffice for a Gröbner basis)."""
+    fs = [f.terms for f in polys if not f.is_zero()]
+    if not fs:
+        return True
+    ring = polys[0].ring
+    if not ring.order.is_global:
+        raise OrderingError("ideal membership by normal forms needs a global ordering")
+    bs = [b.terms for b in basis if not b.is_zero()]
+
+    def run(pk: Packing) -> bool:
+        red = Reducer(pk, [pack(pk, b) for b in bs])
+        return not any(red.reduce(pack(pk, f), False) for f in fs)
+    return packed(ring, bs + fs, run)
+
+
+def normal_forms(polys: Sequence[Poly], basis: Sequence[Poly]) -> list[Poly]:
+    """``[normal_form(f, basis) for f in polys]`` with the basis packed once."""
+    if not polys:
+        return []
+    ring = polys[0].ring
+    if not ring.order.is_global:
+        raise OrderingError("normal forms need a global ordering; use the weak normal form for local orderings")
+    bs = [b.terms for b in basis if not b.is_zero()]
+    fs = [f.terms for f in polys]
+
+    def run(pk: Packing) -> list[dict[Exp, Any]]:
+        red = Reducer(pk, [pack(pk, b) for b in bs])
+        return [unpack(pk, red.reduce(pack(pk, f))) for f in fs]
+    return [Poly(ring, t) for t in packed(ring, bs + fs, run)]

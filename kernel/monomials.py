@@ -64,7 +64,8 @@ def _independent(echelon: list[list[Fraction]], row: Sequence[int]) -> bool:
 
 
 class Packing:
-    """Packed monomials in ``nvars`` variables for a global ordering, total degree <= ``maxdeg``."""
+    """Packed monomials in ``nvars`` variables for a global ordering, total degree <= ``maxdeg``
+    (immutable: :func:`packing` shares one per ordering and degree)."""
 
     def __init__(self, order: MonomialOrder, maxdeg: int) -> None:
         n = self.nvars = order.nvars
@@ -135,3 +136,11 @@ class Packing:
             if x:
                 m += x * u
         return m
+
+
+@lru_cache(maxsize=64)
+def packing(order: MonomialOrder, maxdeg: int) -> Packing:
+    """The shared :class:`Packing` of ``order`` and ``maxdeg`` (building one costs about as much
+    as a small normal form, and the analyses ask for the same few thousands of times)."""
+    return Packing(order, maxdeg)
+

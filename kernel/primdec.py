@@ -41,7 +41,7 @@ from typing import Callable, Sequence
 
 from .coeffs import GF, QQ
 from .factor import normalize
-from .groebner import groebner, normal_form
+from .groebner import contains_all, groebner, normal_form
 from .ideals import (Ideal, dimension, independent_set, intersect, is_unit, move,
                      product_order, quotient, ring_of, saturate_poly, saturation_exponent, std,
                      with_order)
@@ -58,7 +58,7 @@ def _is_linear(basis: Sequence[Poly]) -> bool:
 
 def _contained(polys: Sequence[Poly], basis: Sequence[Poly]) -> bool:
     """Whether the polynomials lie in the ideal of the Gröbner basis ``basis``."""
-    return all(normal_form(p, basis).is_zero() for p in polys)
+    return contains_all(basis, polys)
 
 
 def _facstd(basis: list[Poly], ring: PolyRing, cache: dict) -> list[list[Poly]]:
@@ -103,9 +103,12 @@ def _min_ass(basis: list[Poly], ring: PolyRing, cache: dict, split: bool = True)
             primes.append(piece)
             continue
         red = Reduction(piece, ring)
-        primes.extend(red.primes())
+        found = red.primes()
+        primes.extend(found)
         h = red.h
-        if h.is_constant() or _contained(quotient(piece, [h], ring), piece):
+        # nothing outside V(h)'s complement when the piece is itself one of its primes, or I : h = I
+        if h.is_constant() or any(_contained(P, piece) for P in found) or \
+                _contained(quotient(piece, [h], ring), piece):
             continue
         for f in irreducible(h, cache):
             primes.extend(_min_ass(groebner(piece + [f], ring), ring, cache))

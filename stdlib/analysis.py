@@ -33,7 +33,7 @@ from mech.dsl.errors import MechRuntimeError
 from mech.dsl.limits import MechLimitError, remaining, within
 from mech.kernel import Poly, PolyRing
 from mech.kernel.factor import factorize
-from mech.kernel.groebner import normal_form
+from mech.kernel.groebner import normal_forms
 from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, intersect, is_subset, move, saturate_poly,
                                 std)
 from mech.kernel.local import (AlgebraicPoint, centre_at, classify_algebraic_point, classify_point,
@@ -301,7 +301,10 @@ def _length_conditions(a: Analysis) -> None:
         if _unit(S):
             a.length_components.append(LengthComponent(P, None, [], []))
             continue
-        E = [g for g in eliminate(S, list(range(n)), R) if not g.is_zero()]
+        if R.order.is_elimination_for(list(range(n))):  # S is already a basis of J + P for it
+            E = [g for g in S if not any(any(e[:n]) for e in g.terms)]
+        else:
+            E = [g for g in eliminate(S, list(range(n)), R) if not g.is_zero()]
         sat = saturate_poly(E, lengths, R) if E else []
         cond = [] if _unit(sat) else sat
         facs = []
@@ -339,8 +342,7 @@ def singular_primes(a: Analysis) -> list[list[Poly]]:
 def _reduced(minors: list[Poly], ideal: list[Poly], R: PolyRing) -> list[Poly]:
     """The minors' normal forms modulo ``ideal`` (``ideal + minors`` unchanged): the Jacobian
     minors of a spatial loop have 10^5 terms, their normal forms 10^3 (Bricard's 6R loop)."""
-    basis = std(ideal, R)
-    return [r for g in minors if not (r := normal_form(g, basis)).is_zero()]
+    return [r for r in normal_forms(minors, std(ideal, R)) if not r.is_zero()]
 
 
 def _contains(small: list[Poly], big: list[Poly], R: PolyRing) -> bool:
@@ -377,8 +379,7 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
             d = dimension(P, R)
             point = linear_point(P)
             sp = SingularPoint(P, tuple(point) if point else None, d, True if point else _real(a, P))
-            sp.modes = [i for i, md in enumerate(a.modes, 1)
-                        if all(_vanishes(g, P, R) for g in md.prime)]
+            sp.modes = [i for i, md in enumerate(a.modes, 1) if is_subset(md.prime, P, R)]
             out.append(sp)
             if point is None and d != 0:
                 continue
@@ -444,10 +445,6 @@ def _minimal_modes(a: Analysis) -> list[list[Poly]]:
     """The minimal primes of J: the motion modes' primes without the embedded ones."""
     primes = [md.prime for md in a.modes]
     return [P for P in primes if not any(_contains(Q, P, a.ring) for Q in primes if Q is not P)]
-
-
-def _vanishes(g: Poly, P: list[Poly], R: PolyRing) -> bool:
-    return normal_form(g, std(P, R)).is_zero()
 
 
 def _transition(components: list[list[Poly]], R: PolyRing,

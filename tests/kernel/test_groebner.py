@@ -81,3 +81,17 @@ def test_live_singular_agrees():
     script = (DATA / "groebner_truths.sing").read_text()
     blocks = ideal_blocks(run_singular(script))
     assert [blocks[0]] + blocks[2:] == truths()
+
+
+def test_batched_normal_forms_and_membership():
+    """normal_forms and contains_all pack the basis once and agree with normal_form one by one;
+    the packing of an ordering and degree is shared."""
+    from mech.kernel.groebner import contains_all, normal_forms
+    from mech.kernel.monomials import packing
+    R = ring("xyzuv", [Block("dp", 3), Block("dp", 2)])
+    B = groebner([parse_poly(R, p) for p in ("x^2+y^2-u", "x*y-v", "z^3-x*u")], R)
+    fs = [parse_poly(R, p) for p in ("x^3*y+z^4", "x^2*y^2-v^2", "u*z-1", "x^5")]
+    assert normal_forms(fs, B) == [normal_form(f, B) for f in fs]
+    inside = [B[0] * fs[0], B[1] * parse_poly(R, "z-u") + B[2]]
+    assert contains_all(B, inside) and contains_all(B, []) and not contains_all(B, inside + [fs[2]])
+    assert packing(R.order, 8) is packing(R.order, 8)
