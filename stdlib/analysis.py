@@ -279,10 +279,12 @@ def _numeric_modes(a: Analysis) -> None:
             a.radical = ideals_equal(intersect(*primes, ring=R), J, R)
     dims = [dimension(P, R) for P in primes]
     a.equidimensional = len(set(dims)) == 1
+    # the modes first, their real points after: a limit during the real points keeps the modes
+    a.modes.extend(Mode(P, P if a.radical else None, d, None) for P, d in zip(primes, dims))
     with stage("real points", total=len(primes)) as st:
-        for k, (P, d) in enumerate(zip(primes, dims)):
+        for k, md in enumerate(a.modes):
             st.step(k, f"mode {k + 1}")
-            a.modes.append(Mode(P, P if a.radical else None, d, _real(a, P)))
+            md.real = _real(a, md.prime)
     if not a.radical:
         comps = embedded_components(a)
         a.embedded = None if comps is None else [
