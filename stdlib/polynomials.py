@@ -219,6 +219,8 @@ def maxideal(ctx, k: int) -> Ideal:
     ring = ctx.basering().poly
     if k <= 0:
         return Ideal(ring, [ring.one()], is_std=True)
+    if k == 1:  # Singular lists the variables in their order
+        return Ideal(ring, ring.gens(), is_std=True)
     exps: list[tuple[int, ...]] = []
 
     def rec(i: int, left: int, cur: list[int]) -> None:
