@@ -1,0 +1,233 @@
+"""Commands of Singular's polylib.lib (and general.lib's ``lcm`` of ideals and intvecs): elementary
+symmetric polynomials (``elemSymmPoly``, ``elemSymmId``), ``substitute``, the Newton diagram
+(``newtonDiag``), the smallest and largest (weighted) degrees of the monomials whatever the ordering
+(``mindeg``, ``mindeg1``, ``maxdeg``, ``maxdeg1``) and the longest coefficient (``maxcoef``)."""
+from __future__ import annotations
+
+from itertools import combinations
+from typing import Any, Callable
+
+from ..dsl.errors import MechRuntimeError
+from ..dsl.intmat import IntMat
+from ..dsl.printing import coeff_str, is_short
+from ..dsl.registry import command
+from ..dsl.values import Ideal, IntVec, Matrix
+from ..kernel import Poly
+from .polyops import lcm_int, lcm_poly
+
+LIB = "polylib.lib"
+
+
+@command("lcm", lib="general.lib")
+def lcm_mixed(*xs: Ideal | Poly | IntVec | int) -> Any:
+    """lcm of integers, intvecs (their entries), polynomials and ideals (their generators)."""
+    flat: list[Any] = []
+    for x in xs:
+        flat.extend(x.gens if isinstance(x, Ideal) else x.values if isinstance(x, IntVec) else [x])
+    if all(isinstance(x, int) for x in flat):
+        return lcm_int(*flat)
+    ring = next(x.ring for x in flat if isinstance(x, Poly))
+    return lcm_poly(*[x if isinstance(x, Poly) else ring.const(x) for x in flat])
+
+
+def _elem(ring, d: int, lo: int, hi: int) -> Poly:
+    out = ring.zero()
+    for idx in combinations(range(lo - 1, hi), d):
+        out = out + ring.monomial(tuple(int(i in idx) for i in range(ring.nvars)))
+    return out
+
+
+@command("elemSymmPoly", lib=LIB)
+def elem_symm_poly(ctx, d: int, lo: int, hi: int) -> Poly:
+    """elemSymmPoly(d, lo, hi): the elementary symmetric polynomial of degree d in the variables
+    var(lo), ..., var(hi).
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y,z),dp;
+      elemSymmPoly(2, 1, 3);
+      → xy+xz+yz
+    """
+    ring = ctx.basering().poly
+    if not 1 <= lo <= hi <= ring.nvars and d:
+        raise MechRuntimeError(f"elemSymmPoly: the variables {lo}..{hi} are not variables of the ring")
+    if hi - lo + 1 < d:
+        ctx.write("========================================================\n"
+                  f"There is no elementary symmetric polynomial of degree {d}\n"
+                  f"for just {hi - lo + 1} variables.\n"
+                  "========================================================\n")
+        return ring.zero()
+    return _elem(ring, d, lo, hi)
+
+
+@command("elemSymmId", lib=LIB)
+def elem_symm_id(ctx, n: int) -> Ideal:
+    """elemSymmId(n): the ideal of the elementary symmetric polynomials in the first n variables.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y,z),dp;
+      elemSymmId(2);
+      → _[1]=x+y
+      → _[2]=xy
+    """
+    ring = ctx.basering().poly
+    if not 1 <= n <= ring.nvars:
+        raise MechRuntimeError(f"elemSymmId({n}): the ring has {ring.nvars} variables")
+    return Ideal(ring, [_elem(ring, d, 1, n) for d in range(1, n + 1)])
+
+
+def _var(p: Poly, cmd: str) -> int:
+    if len(p.terms) == 1:
+        (e, c), = p.terms.items()
+        if c == p.ring.field.one and sum(e) == 1:
+            return e.index(1)
+    raise MechRuntimeError(f"{cmd}: {p} is not a ring variable")
+
+
+def _apply(x: Any, images: list[Poly]) -> Any:
+    if isinstance(x, Poly):
+        return x.compose(images)
+    if isinstance(x, Ideal):
+        return Ideal(x.ring, [g.compose(images) for g in x.gens])
+    if isinstance(x, Matrix):
+        return Matrix(x.ring, x.nrows, x.ncols, [g.compose(images) for g in x.entries])
+    raise MechRuntimeError("substitute takes a poly, an ideal or a matrix")
+
+
+@command("substitute", lib=LIB)
+def substitute(x: Poly | Ideal | Matrix, *pairs: Poly | Ideal) -> Any:
+    """substitute(I, v, f[, v1, f1, ...]): I with the variable v replaced by f, then v1 by f1, ... (one
+    after the other); substitute(I, V, F) with ideals: the variables V[i] by F[i] at once.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),dp;
+      substitute(x2+y, x, y, y, 2);
+      → 6
+      substitute(x2+y, ideal(x,y), ideal(y,2));
+      → y2+2
+    """
+    ring = x.ring
+    gens = ring.gens()
+    if len(pairs) == 2 and all(isinstance(p, Ideal) for p in pairs):
+        vs, fs = pairs
+        images = list(gens)
+        for v, f in zip(vs.gens, fs.gens):
+            images[_var(v, "substitute")] = f
+        return _apply(x, images)
+    if len(pairs) % 2 or not pairs:
+        raise MechRuntimeError("substitute(I, v, f, ...) needs pairs of a variable and a polynomial")
+    for v, f in zip(pairs[::2], pairs[1::2]):
+        images = list(gens)
+        images[_var(v, "substitute")] = f if isinstance(f, Poly) else ring.zero()
+        x = _apply(x, images)
+    return x
+
+
+@command("newtonDiag", lib=LIB)
+def newton_diag(f: Poly) -> IntMat:
+    """newtonDiag(f): the intmat of the exponent vectors of the terms of f, from the leading term down.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),dp;
+      print(newtonDiag(x2y+3y+1));
+      →      2     1
+      →      0     1
+      →      0     0
+    """
+    n = f.ring.nvars
+    exps = [e for e, _ in f.sorted_terms()] or [f.ring.zero_exp]
+    return IntMat(len(exps), n, [k for e in exps for k in e])
+
+
+def _degrees(p: Poly, w: list[int] | None) -> list[int]:
+    return [sum(a * b for a, b in zip(e, w)) if w else sum(e) for e in p.terms]
+
+
+def _per_entry(x: Poly | Ideal | Matrix, pick: Callable[[list[int]], int]) -> int | IntMat:
+    if isinstance(x, Poly):
+        return pick(_degrees(x, None)) if not x.is_zero() else -1
+    m = x if isinstance(x, Matrix) else Matrix(x.ring, 1, len(x.gens), x.gens)
+    return IntMat(m.nrows, m.ncols, [pick(_degrees(p, None)) if not p.is_zero() else -1 for p in m.entries])
+
+
+def _overall(x: Poly | Ideal | Matrix, w: IntVec | None, pick: Callable[[list[int]], int]) -> int:
+    polys = [x] if isinstance(x, Poly) else list(x.entries if isinstance(x, Matrix) else x.gens)
+    ws = list(w.values) if w is not None else None
+    return pick([pick(_degrees(p, ws)) if not p.is_zero() else -1 for p in polys])
+
+
+@command("mindeg", lib=LIB)
+def mindeg(x: Poly | Ideal | Matrix) -> int | IntMat:
+    """mindeg(f): the smallest total degree of a monomial of f, whatever the ordering (-1 for 0); of an
+    ideal or matrix, the intmat of those of its entries.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),ls;
+      mindeg(x5+y2);
+      → 2
+    """
+    return _per_entry(x, min)
+
+
+@command("maxdeg", lib=LIB)
+def maxdeg(x: Poly | Ideal | Matrix) -> int | IntMat:
+    """maxdeg(f): the largest total degree of a monomial of f, whatever the ordering (-1 for 0); of an
+    ideal or matrix, the intmat of those of its entries.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),wp(1,3);
+      maxdeg(x2+y);
+      → 2
+    """
+    return _per_entry(x, max)
+
+
+@command("mindeg1", lib=LIB)
+def mindeg1(x: Poly | Ideal | Matrix, w: IntVec | None = None) -> int:
+    """mindeg1(f[, w]): the smallest (w-weighted) degree of a monomial of the entries of f (-1 counts
+    for a zero entry).
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),dp;
+      mindeg1(x5+y2, intvec(1,-3));
+      → -6
+    """
+    return _overall(x, w, min)
+
+
+@command("maxdeg1", lib=LIB)
+def maxdeg1(x: Poly | Ideal | Matrix, w: IntVec | None = None) -> int:
+    """maxdeg1(f[, w]): the largest (w-weighted) degree of a monomial of the entries of f.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),dp;
+      maxdeg1(x5+y2, intvec(1,3));
+      → 6
+    """
+    return _overall(x, w, max)
+
+
+@command("maxcoef", lib=LIB)
+def maxcoef(x: Poly | Ideal | Matrix) -> int:
+    """maxcoef(f): the length of the longest coefficient of f (of its string, without a sign).
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),dp;
+      maxcoef(123x-7/4y);
+      → 3
+    """
+    polys = [x] if isinstance(x, Poly) else list(x.entries if isinstance(x, Matrix) else x.gens)
+    best = 0
+    for p in polys:
+        for c in p.terms.values():
+            s = coeff_str(p.ring.field, c, is_short(p.ring))
+            best = max(best, len(s) - s.startswith("-"))
+    return best
