@@ -19,7 +19,7 @@ from .standard import _nf, normalize, standard_basis
 LIB = "sing.lib"
 
 
-def _comment(ctx, *lines: str) -> None:
+def comment(ctx, *lines: str) -> None:
     """sing.lib's comments, shown when printlevel >= 0 counted from the caller (printlevel-voice+3)."""
     if ctx.sysvars.get("printlevel", 0) - len(ctx.frames) + 2 > 0:
         for line in lines:
@@ -116,10 +116,10 @@ def is_ci(ctx, I: Ideal) -> IntVec:
     gens = list(minbase(I).gens)
     dims = [_std_dim(gens[:k], ring) for k in range(1, len(gens) + 1)]
     if dims[-1] + len(gens) == ring.nvars:
-        _comment(ctx, f"// complete intersection of dim {dims[-1]}")
+        comment(ctx, f"// complete intersection of dim {dims[-1]}")
     else:
-        _comment(ctx, "// no complete intersection")
-    _comment(ctx, "// dim-sequence:")
+        comment(ctx, "// no complete intersection")
+    comment(ctx, "// dim-sequence:")
     return IntVec(dims)
 
 
@@ -138,7 +138,7 @@ def is_is(ctx, I: Ideal) -> IntVec:
     """
     ring = I.ring
     dims = [_std_dim(slocus(Ideal(ring, list(I.gens[:k]))).nonzero(), ring) for k in range(1, len(I.gens) + 1)]
-    _comment(ctx, f"// dim of singular locus = {dims[-1]}",
+    comment(ctx, f"// dim of singular locus = {dims[-1]}",
              "// isolated singularity if last number is 0 in dim-sequence:")
     return IntVec(dims)
 
