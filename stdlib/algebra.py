@@ -14,7 +14,8 @@ from ..dsl.qrings import quotient_of
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Map, OrderBlock, Ring
 from ..kernel import MonomialOrder, Poly, PolyRing
-from .algebra_subrings import _export, _relation_ring, _relations, _x_free
+from .algebra_subrings import _relation_ring, _relations, _x_free
+from .ring_lib import export
 from .sing_lib import comment
 from .standard import _nf, normalize, standard_basis
 
@@ -98,7 +99,7 @@ def alg_kernel(ctx, phi: Map, pr: Ring, *opts: Any) -> str:
     text = ",".join(poly_str(Poly(dp, g.terms)) for g in polys) if polys else "0"
     name = next((o for o in opts if isinstance(o, str)), None)
     if name is not None:
-        _export(pr, name, "ideal", Ideal(pr.poly, polys or [pr.poly.zero()]))
+        export(pr, name, "ideal", Ideal(pr.poly, polys or [pr.poly.zero()]))
     return text
 
 
@@ -120,7 +121,7 @@ def is_injective(ctx, phi: Map, pr: Ring, *opts: Any) -> Any:
     injective = int(_zero_mod_source(ker, len(R2.names) - m, pr))
     if not any(isinstance(o, str) for o in opts):
         return injective
-    _export(R2, "ker", "ideal", Ideal(R2.poly, ker or [R2.poly.zero()]))
+    export(R2, "ker", "ideal", Ideal(R2.poly, ker or [R2.poly.zero()]))
     comment(ctx, "\n// The 2nd element of the list is a ring with variables x(1),...,x(n),\n"
             "// y(1),...,y(m) if the basering has n variables and the map is\n// F[1],...,F[m].\n"
             "// It contains the ideal ker, the kernel of the given map y(i) --> F[i].\n"

@@ -13,11 +13,11 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.qrings import quotient_ideal
 from ..dsl.registry import command
 from ..dsl.rings import make_ring
-from ..dsl.scopes import Var
 from ..dsl.printing import poly_str
 from ..dsl.values import Ideal, IntVec, List, Map, OrderBlock, Ring
 from ..kernel import Poly
 from ..kernel.ideals import eliminate
+from .ring_lib import export
 from .sing_lib import comment
 from .standard import _nf, normalize, standard_basis
 
@@ -42,10 +42,6 @@ def _relations(base: Ring, gens: list[Poly], big: Any, first_y: int) -> list[Pol
     out = [_emb(g, big) - big.gen(first_y + i) for i, g in enumerate(gens)]
     out += [_emb(q, big) for q in quotient_ideal(base.poly) or []]
     return out
-
-
-def _export(ring: Ring, name: str, typ: str, value: Any) -> None:
-    ring.objects[name] = Var(name, typ, value, ring, 0)
 
 
 def _x_free(p: Poly, n: int) -> bool:
@@ -75,7 +71,7 @@ def algebra_containment(ctx, p: Poly, A: Ideal, k: int = 0) -> Any:
     if not k:
         comment(ctx, "// " + poly_str(check))
         return inside
-    _export(R, "check", "poly", check)
+    export(R, "check", "poly", check)
     comment(ctx, "\n// 'algebra_containment' created a ring as 2nd element of the list.\n"
             "// The ring contains the polynomial check which defines the algebraic relation.\n"
             "// To access to the ring and see check you must give the ring a name,\n// e.g.:\n"
@@ -146,7 +142,7 @@ def alg_dependent(ctx, A: Ideal, method: int = 0) -> List:
     basis = standard_basis(Ideal(R3.poly, _relations(base, list(A.gens), R3.poly, n)))
     R2 = _relation_ring(base, n, list(range(1, m + 1)), [OrderBlock("dp", n + m)])
     ker = [normalize(Poly(R2.poly, g.terms)) for g in basis if _x_free(g, n)]
-    _export(R2, "ker", "ideal", Ideal(R2.poly, ker or [R2.poly.zero()]))
+    export(R2, "ker", "ideal", Ideal(R2.poly, ker or [R2.poly.zero()]))
     comment(ctx, "\n// The 2nd element of the list l is a ring with variables x(1),...,x(n),\n"
             "// and y(1),...,y(m) if the basering has n variables and if the ideal\n"
             "// is f[1],...,f[m]. The ring contains the ideal ker which depends only\n"

@@ -1,6 +1,7 @@
 """Commands of Singular's general.lib: letters (``A_Z``, ``A_Z_L``, ``ASCII``), integers
 (``absValue``, ``factorial``, ``fibonacci``, ``primes``, ``number_e``), ``product`` of the entries of
-an ideal, matrix or intvec, and ``deleteSublist``.  (``binomial`` is in :mod:`mech.stdlib.crt`.)"""
+an ideal, matrix or intvec, ``deleteSublist``, and prime factors (``primefactors``, built in, and
+``primecoeffs``).  (``binomial`` is in :mod:`mech.stdlib.crt`.)"""
 from __future__ import annotations
 
 from fractions import Fraction
@@ -272,3 +273,93 @@ def number_e(ctx, n: int) -> Any:
         poly = ring.poly
         return Number(poly, poly.field(value.numerator) / poly.field(value.denominator))
     return ("2." + "".join(map(str, digits)))[:n + 1]
+
+
+@command("primefactors")
+def primefactors(n: int | Number, bound: int | None = None) -> List:
+    """primefactors(n[, p]): the list of the prime factors of the integer n (with bound p: those up
+    to p, by trial division), their multiplicities, and the factor left (the sign, 0 for n = 0, or
+    the cofactor without prime factors up to p).
+
+    Example:
+      primefactors(-360);
+      → [1]:
+      →    [1]:
+      →       2
+      →    [2]:
+      →       3
+      →    [3]:
+      →       5
+      → [2]:
+      →    [1]:
+      →       3
+      →    [2]:
+      →       2
+      →    [3]:
+      →       1
+      → [3]:
+      →    -1
+    """
+    import flint
+    n = int(n)
+    if n == 0:
+        return List([List(), List(), 0])
+    sign, rest = (-1 if n < 0 else 1), abs(n)
+    if bound is None:
+        pairs = [(int(p), int(e)) for p, e in flint.fmpz(rest).factor()] if rest > 1 else []
+        return List([List([p for p, _ in pairs]), List([e for _, e in pairs]), sign])
+    pairs, p = [], 2
+    while p <= bound and rest > 1:
+        e = 0
+        while rest % p == 0:
+            rest //= p
+            e += 1
+        if e:
+            pairs.append((p, e))
+        p += 1
+        while not flint.fmpz(p).is_prime():
+            p += 1
+    if 1 < rest < (bound + 1) ** 2:  # no prime factor up to the bound: a prime itself
+        pairs.append((rest, 1))
+        rest = 1
+    return List([List([p for p, _ in pairs]), List([e for _, e in pairs]), sign * rest])
+
+
+def _coefficients(x: Any) -> list[int]:
+    if isinstance(x, (int, IntVec, IntMat)):
+        return [int(v) for v in _entries(x)]
+    polys = _entries(x)
+    out = []
+    for p in polys:
+        for c in (p.terms.values() if isinstance(p, Poly) else [p.c]):
+            out.append(int(Number(p.ring, c)))
+    return out
+
+
+@command("primecoeffs", lib=LIB)
+def primecoeffs(ctx, J: Any, bound: int = 32003) -> List:
+    """primecoeffs(J[, p]): the list of the intvec of the prime factors up to p (default 32003) of
+    the coefficients of J (a poly, ideal, matrix, int or intvec) and the factors left of them (an
+    intvec without a basering, else an ideal), each once.
+
+    Example:
+      LIB "general.lib";
+      primecoeffs(intvec(12, 45));
+      → [1]:
+      →    2,3,5
+      → [2]:
+      →    1
+    """
+    bound = min(bound, 32003)
+    primes: set[int] = set()
+    rests: list[int] = []
+    for c in dict.fromkeys(c for c in _coefficients(J) if c):
+        found = primefactors(c, bound)
+        primes.update(found.items[0].items)
+        if found.items[2] not in rests:
+            rests.append(found.items[2])
+    ring = ctx.ring
+    if ring is None:
+        return List([IntVec(sorted(primes)), IntVec(rests)])
+    poly = ring.poly
+    return List([IntVec(sorted(primes)), Ideal(poly, [poly.const(r) for r in rests] or [poly.zero()])])

@@ -1,7 +1,8 @@
 """Commands of Singular's matrix.lib: building matrices (``concat``, ``diag``, ``dsum``, ``outer``,
 ``submat``, ``headStand``, ``power``), elementary row and column operations (``addcol``, ``addrow``,
 ``multcol``, ``multrow``, ``permcol``, ``permrow``), Gaussian elimination by constant pivots
-(``rowred``, ``colred``) and removing unit rows and columns (``rm_unitcol``, ``rm_unitrow``).
+(``rowred``, ``colred``), removing unit rows and columns (``rm_unitcol``, ``rm_unitrow``) and the
+basis of a symmetric power (``symmetricBasis``).
 (``unitmat`` is in :mod:`mech.stdlib.idealops`.)"""
 from __future__ import annotations
 
@@ -10,7 +11,8 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError
 from ..dsl.intmat import IntMat
 from ..dsl.registry import command
-from ..dsl.values import IntVec, List, Matrix
+from ..dsl.rings import make_ring
+from ..dsl.values import Ideal, IntVec, List, Matrix, OrderBlock, Ring
 from ..kernel import Poly
 
 LIB = "matrix.lib"
@@ -417,3 +419,28 @@ def rm_unitrow(A: Matrix) -> Matrix | int:
     """
     out = rm_unitcol(_transpose(A))
     return _transpose(out) if isinstance(out, Matrix) else out
+
+
+@command("symmetricBasis", lib=LIB)
+def symmetric_basis(n: int, k: int, name: str = "e") -> Ring:
+    """symmetricBasis(n, k[, s]): the ring 0,(s(1..n)),dp holding the ideal ``symBasis`` of the monomials
+    of degree k: a basis of the k-th symmetric power of an n-dimensional vector space.
+
+    Example:
+      LIB "matrix.lib";
+      def R = symmetricBasis(2, 2);
+      setring R;
+      symBasis;
+      → symBasis[1]=e(2)^2
+      → symBasis[2]=e(1)*e(2)
+      → symBasis[3]=e(1)^2
+    """
+    from .ring_lib import export
+    from .standard_lib import monomials_of_degree
+    if "(" in name or ")" in name:
+        raise MechRuntimeError("Wrong optional argument: must be a string without brackets")
+    ring = make_ring(0, (), [f"{name}({i})" for i in range(1, n + 1)], [OrderBlock("dp", n), OrderBlock("C")])
+    poly = ring.poly
+    mons = sorted(monomials_of_degree(n, [1] * n, k))  # as maxideal(k): increasing lexicographically
+    export(ring, "symBasis", "ideal", Ideal(poly, [poly.monomial(e) for e in mons] or [poly.zero()]))
+    return ring

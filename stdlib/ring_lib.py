@@ -5,11 +5,13 @@ parameter (``rootofUnity``)."""
 from __future__ import annotations
 
 import re
+from typing import Any
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.qrings import make_qring, quotient_ideal
 from ..dsl.registry import command
 from ..dsl.rings import make_ring
+from ..dsl.scopes import Var
 from ..dsl.values import Ideal, IntVec, Number, OrderBlock, Ring
 from ..kernel import Poly
 from .general_lib import _letters
@@ -17,6 +19,12 @@ from .polynomials import _ring_weights
 
 LIB = "ring.lib"
 _WEIGHTED = ("wp", "Wp", "ws", "Ws", "a")
+
+
+def export(ring: Ring, name: str, typ: str, value: Any) -> None:
+    """Make ``value`` the variable ``name`` of the ring (what a library procedure exports into a ring
+    it returns: seen after ``setring``)."""
+    ring.objects[name] = Var(name, typ, value, ring, 0)
 
 
 def parse_ordering(text: str, nvars: int) -> list[OrderBlock]:

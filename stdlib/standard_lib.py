@@ -70,7 +70,7 @@ def min_(*xs: Any) -> Any:
     return _extreme(xs, -1)
 
 
-def _monomials(n: int, weights: list[int], d: int) -> list[tuple[int, ...]]:
+def monomials_of_degree(n: int, weights: list[int], d: int) -> list[tuple[int, ...]]:
     """The exponent vectors of weighted degree d in n variables of positive weights."""
     out: list[tuple[int, ...]] = []
 
@@ -104,7 +104,7 @@ def weight_kb(I: Ideal, d: int, w: IntVec | List) -> Ideal:
     if len(weights) < ring.nvars or any(v <= 0 for v in weights):
         raise MechRuntimeError("weightKB: the weights must be positive, one for each variable")
     leads = [g.lm() for g in I.nonzero()]
-    mons = [e for e in _monomials(ring.nvars, weights, d)
+    mons = [e for e in monomials_of_degree(ring.nvars, weights, d)
             if not any(all(a <= b for a, b in zip(m, e)) for m in leads)] if d >= 0 else []
     mons.sort(key=cmp_to_key(ring.order.compare), reverse=True)
     return Ideal(ring, [ring.monomial(e) for e in mons] or [ring.zero()])
