@@ -1,7 +1,8 @@
 """Commands of Singular's polylib.lib (and general.lib's ``lcm`` of ideals and intvecs): elementary
 symmetric polynomials (``elemSymmPoly``, ``elemSymmId``), ``substitute``, the Newton diagram
 (``newtonDiag``), the smallest and largest (weighted) degrees of the monomials whatever the ordering
-(``mindeg``, ``mindeg1``, ``maxdeg``, ``maxdeg1``) and the longest coefficient (``maxcoef``)."""
+(``mindeg``, ``mindeg1``, ``maxdeg``, ``maxdeg1``), the longest coefficient (``maxcoef``), the Hilbert
+polynomial (``hilbPoly``) and radical membership (``rad_con``)."""
 from __future__ import annotations
 
 from itertools import combinations
@@ -14,6 +15,7 @@ from ..dsl.registry import command
 from ..dsl.values import Ideal, IntVec, Matrix
 from ..kernel import Poly
 from .polyops import lcm_int, lcm_poly
+from .standard import standard_basis
 
 LIB = "polylib.lib"
 
@@ -231,3 +233,61 @@ def maxcoef(x: Poly | Ideal | Matrix) -> int:
             s = coeff_str(p.ring.field, c, is_short(p.ring))
             best = max(best, len(s) - s.startswith("-"))
     return best
+
+
+@command("hilbPoly", lib=LIB)
+def hilb_poly(I: Ideal) -> IntVec:
+    """hilbPoly(I): the Hilbert polynomial of R/I for a homogeneous ideal I as the intvec v_0, ...,
+    v_r of its coefficients times r! (the polynomial is (v_0 + v_1 t + ... + v_r t^r)/r!); 0 when
+    R/I has dimension <= 0.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y,z),dp;
+      hilbPoly(ideal(x2));
+      → 1,2
+    """
+    from ..kernel import hilbert as H
+    basis = I.nonzero() if I.is_std else standard_basis(I)
+    _, second, s = H.hilbert_numerators([g.lm() for g in basis], I.ring.nvars)
+    if s <= 0:
+        return IntVec([0])
+    hp = [0] * s  # coefficients of t^0 .. t^(s-1) of (s-1)! * sum_i h_i * binomial(t - i + s - 1, s - 1)
+    for i, h in enumerate(second):
+        term = [h]
+        for j in range(1, s):  # times (t + j - i)
+            term = [(term[k] * (j - i) if k < len(term) else 0) + (term[k - 1] if k else 0)
+                    for k in range(len(term) + 1)]
+        for k, c in enumerate(term):
+            hp[k] += c
+    return IntVec(hp)
+
+
+@command("rad_con", lib=LIB)
+def rad_con(g: Poly, I: Ideal) -> int:
+    """rad_con(g, I): 1 if g lies in the radical of I (in a local ordering: of I in the local ring),
+    else 0: whether I and g*z - 1 generate the unit ideal, z a new variable (Rabinowitsch).
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),dp;
+      rad_con(x, ideal(x3, y));
+      → 1
+      rad_con(x+1, ideal(x3, y));
+      → 0
+    """
+    from ..kernel import MonomialOrder, PolyRing
+    from ..kernel.order import Block
+    ring = I.ring
+    n = ring.nvars
+    if ring.order.is_global:
+        big = PolyRing(ring.field, list(ring.names) + ["@z"], MonomialOrder([Block("dp", n + 1)]))
+        lift = lambda p: Poly(big, {e + (0,): c for e, c in p.terms.items()})  # noqa: E731
+        z = big.gen(n)
+    else:
+        big = PolyRing(ring.field, ["@z"] + list(ring.names), MonomialOrder([Block("dp", 1)] + list(ring.order.blocks)))
+        lift = lambda p: Poly(big, {(0,) + e: c for e, c in p.terms.items()})  # noqa: E731
+        z = big.gen(0)
+    gens = [lift(f) for f in I.nonzero()] + [lift(g) * z - big.one()]
+    basis = standard_basis(Ideal(big, gens))
+    return int(any(b.is_constant() and not b.is_zero() for b in basis))

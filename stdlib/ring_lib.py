@@ -245,3 +245,16 @@ def root_of_unity(ctx, n: int) -> Number:
         if c:
             value = value + q ** k * int(c)
     return Number(ring.poly, value)
+
+
+@command("hasCommutativeVars", lib=LIB)
+def has_commutative_vars(r: Ring) -> int:
+    """hasCommutativeVars(r): 1 if r is a commutative polynomial ring (always, in mech).
+
+    Example:
+      LIB "ring.lib";
+      ring r = 0,(x,y),dp;
+      hasCommutativeVars(r);
+      → 1
+    """
+    return 1
