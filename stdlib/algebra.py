@@ -14,7 +14,7 @@ from ..dsl.qrings import quotient_of
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Map, OrderBlock, Ring
 from ..kernel import MonomialOrder, Poly, PolyRing
-from .algebra_subrings import _relation_ring, _relations, _x_free
+from .algebra_subrings import dependent_comment, _relation_ring, _relations, _x_free
 from .ring_lib import export
 from .sing_lib import comment
 from .standard import _nf, normalize, standard_basis
@@ -92,6 +92,7 @@ def alg_kernel(ctx, phi: Map, pr: Ring, *opts: Any) -> str:
     """
     m = len(pr.names)
     R2, ker = _kernel(ctx, _images(ctx, phi, m))
+    dependent_comment(ctx, depth=1)  # algebra.lib computes the kernel by algDependent
     n = len(R2.names) - m
     polys = _in_source(ker, n, pr)
     dp = PolyRing(pr.poly.field, pr.poly.names, MonomialOrder.simple("dp", m))  # algebra.lib prints from dp
@@ -118,6 +119,7 @@ def is_injective(ctx, phi: Map, pr: Ring, *opts: Any) -> Any:
     """
     m = len(pr.names)
     R2, ker = _kernel(ctx, _images(ctx, phi, m))
+    dependent_comment(ctx, depth=1)
     injective = int(_zero_mod_source(ker, len(R2.names) - m, pr))
     if not any(isinstance(o, str) for o in opts):
         return injective

@@ -110,6 +110,17 @@ def in_subring(ctx, p: Poly, I: Ideal) -> List:
     return List([0, ",".join(found)])
 
 
+def dependent_comment(ctx, depth: int = 0) -> None:
+    """algDependent's comment on the ring it returns (``depth``: calls deeper than the command's)."""
+    comment(ctx, "\n// The 2nd element of the list l is a ring with variables x(1),...,x(n),\n"
+            "// and y(1),...,y(m) if the basering has n variables and if the ideal\n"
+            "// is f[1],...,f[m]. The ring contains the ideal ker which depends only\n"
+            "// on the y(i) and generates the relations between the f[i].\n"
+            "// I.e. substituting y(i) by f[i] yields 0.\n"
+            "// To access to the ring and see ker you must give the ring a name,\n// e.g.:\n"
+            "             def S = l[2]; setring S; ker;\n        ", depth=depth)
+
+
 @command("algDependent", lib=LIB)
 def alg_dependent(ctx, A: Ideal, method: int = 0) -> List:
     """algDependent(A): the list of 1 if the polynomials A[1], ..., A[m] are algebraically dependent
@@ -143,13 +154,7 @@ def alg_dependent(ctx, A: Ideal, method: int = 0) -> List:
     R2 = _relation_ring(base, n, list(range(1, m + 1)), [OrderBlock("dp", n + m)])
     ker = [normalize(Poly(R2.poly, g.terms)) for g in basis if _x_free(g, n)]
     export(R2, "ker", "ideal", Ideal(R2.poly, ker or [R2.poly.zero()]))
-    comment(ctx, "\n// The 2nd element of the list l is a ring with variables x(1),...,x(n),\n"
-            "// and y(1),...,y(m) if the basering has n variables and if the ideal\n"
-            "// is f[1],...,f[m]. The ring contains the ideal ker which depends only\n"
-            "// on the y(i) and generates the relations between the f[i].\n"
-            "// I.e. substituting y(i) by f[i] yields 0.\n"
-            "// To access to the ring and see ker you must give the ring a name,\n// e.g.:\n"
-            "             def S = l[2]; setring S; ker;\n        ")
+    dependent_comment(ctx)
     return List([int(bool(ker)), R2])
 
 

@@ -19,9 +19,10 @@ from .standard import _nf, normalize, standard_basis
 LIB = "sing.lib"
 
 
-def comment(ctx, *lines: str) -> None:
-    """sing.lib's comments, shown when printlevel >= 0 counted from the caller (printlevel-voice+3)."""
-    if ctx.sysvars.get("printlevel", 0) - len(ctx.frames) + 2 > 0:
+def comment(ctx, *lines: str, depth: int = 0) -> None:
+    """A library procedure's comments, shown when printlevel-voice+3 > 0 (voice: the procedure's
+    level, ``depth`` calls below the command's)."""
+    if ctx.sysvars.get("printlevel", 0) - len(ctx.frames) - depth + 2 > 0:
         for line in lines:
             ctx.write(line + "\n")
 
