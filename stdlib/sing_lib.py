@@ -1,12 +1,17 @@
 """Commands of Singular's sing.lib beyond :mod:`mech.stdlib.local`: ``codim`` of two standard bases,
 the dimension of the singular locus (``dim_slocus``), complete intersections and isolated
-singularities by dimension sequences (``is_ci``, ``is_is``), non-zerodivisors (``is_reg``) and
-standard bases for a local degree ordering by homogenizing (``locstd``)."""
+singularities by dimension sequences (``is_ci``, ``is_is``), non-zerodivisors (``is_reg``),
+standard bases for a local degree ordering by homogenizing (``locstd``) and the spectrum of a
+weighted homogeneous singularity (``qhspectrum``)."""
 from __future__ import annotations
 
+from typing import Any
+
+from ..dsl.errors import MechRuntimeError
+from ..dsl.printing import field_params
 from ..dsl.qrings import with_quotient
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec
+from ..dsl.values import NONE, Ideal, IntVec
 from ..kernel import MonomialOrder, Poly, PolyRing
 from ..kernel import hilbert as H
 from ..kernel.dimension import krull_dim
@@ -192,3 +197,35 @@ def locstd(I: Ideal) -> Ideal:
             terms[e[1:]] = terms.get(e[1:], 0) + c
         out.append(normalize(Poly(ring, {e: c for e, c in terms.items() if c != 0})))
     return Ideal(ring, out, is_std=True)
+
+
+@command("qhspectrum", lib=LIB)
+def qhspectrum(ctx, f: Poly, w: IntVec) -> Any:
+    """qhspectrum(f, w): for f weighted homogeneous for the positive weights w with an isolated
+    singularity, the intvec d, s_1, ..., s_u: d the weighted degree of f and s_i/d its spectral
+    numbers (sum(w) - d plus the weighted degree of each monomial of a basis of the Milnor algebra).
+
+    Example:
+      LIB "sing.lib";
+      ring r = 0,(x,y),ds;
+      qhspectrum(x2y+y4, intvec(3,2));
+      → 8,-3,-1,0,1,3
+    """
+    ring = f.ring
+    weights = list(w.values)
+    if field_params(ring.field) or hasattr(ring.field, "modulus"):
+        ctx.write("// coefficient field must not have parameters!\n")
+        return NONE
+    if len(weights) != ring.nvars or any(v <= 0 for v in weights):
+        raise MechRuntimeError("qhspectrum(f, w): w must hold one positive weight for each variable")
+    graded = PolyRing(ring.field, ring.names, MonomialOrder([Block("wp", ring.nvars, tuple(weights))]))
+    g = Poly(graded, f.terms)
+    wdeg = lambda e: sum(a * b for a, b in zip(e, weights))  # noqa: E731
+    d = max(wdeg(e) for e in g.terms)
+    basis = standard_basis(Ideal(graded, [h for h in (g.diff(i) for i in range(ring.nvars)) if not h.is_zero()]))
+    lms = [b.lm() for b in basis]
+    if H.vdim(lms, ring.nvars) < 0:
+        ctx.write("// f is no isolated singularity!\n")
+        return NONE
+    shift = sum(weights) - d
+    return IntVec([d] + sorted(shift + wdeg(e) for e in H.kbase(lms, ring.nvars)))
