@@ -167,7 +167,7 @@ is_reg(xy,i); is_reg(x-1,i);
 ring u = 0,(x,y,z),ds;
 ideal i5 = xyz+z5,2x2+y3+z7,3z5+y5;
 ring q = 32003,(x,y,z),dp;
-qhspectrum(x3+y5+z2,intvec(10,6,15)); qhspectrum(x2y,intvec(1,1));
+qhspectrum(x3+y5+z2,intvec(10,6,15)); qhspectrum(xy+z2,intvec(1,1,1)); qhspectrum(x2y+z3,intvec(1,1,1));
 setring u;
 ideal L5 = locstd(i5); size(reduce(L5,std(i5))); size(reduce(std(i5),L5)); locstd(ideal(x2+y3,xy));
 """,
