@@ -258,3 +258,42 @@ def has_commutative_vars(r: Ring) -> int:
       → 1
     """
     return 1
+
+
+@command("ringtensor", lib=LIB)
+def ringtensor(*rings: Ring) -> Ring:
+    """ringtensor(r1, r2, ...): the tensor product of the rings: their variables side by side, their
+    ordering blocks one after the other (the module component last), the characteristic of the one
+    that has one, and the quotient ideals of the quotient rings together.
+
+    Example:
+      LIB "ring.lib";
+      ring r = 32003,(x,y),dp;
+      ring s = 0,(a,b),ls;
+      def R = ringtensor(r, s);
+      R;
+      → // coefficients: ZZ/32003
+      → // number of vars : 4
+      → //        block   1 : ordering dp
+      → //                  : names    x y
+      → //        block   2 : ordering ls
+      → //                  : names    a b
+      → //        block   3 : ordering C
+    """
+    if len(rings) < 2:
+        raise MechRuntimeError("ringtensor needs at least two rings")
+    chars = {r.characteristic for r in rings if r.characteristic}
+    if len(chars) > 1:
+        raise MechRuntimeError(f"ringtensor: the characteristics {sorted(chars)} differ")
+    names = [n for r in rings for n in r.names]
+    params = tuple(p for r in rings for p in r.params)
+    blocks = [b for r in rings for b in r.blocks if b.kind not in ("c", "C")] + [OrderBlock("C")]
+    ring = make_ring(chars.pop() if chars else 0, params, names, blocks)
+    big, quotient, offset = ring.poly, [], 0
+    for r in rings:
+        n = len(r.names)
+        for g in quotient_ideal(r.poly) or []:
+            quotient.append(Poly(big, {(0,) * offset + e + (0,) * (big.nvars - offset - n): c
+                                       for e, c in g.terms.items()}))
+        offset += n
+    return make_qring(ring, Ideal(big, quotient)) if quotient else ring

@@ -82,6 +82,8 @@ isQuotientRing(w); isQuotientRing(Q); hasCommutativeVars(w);
 ring q = (0,q),(x,y,z),dp;
 rootofUnity(6); rootofUnity(7); rootofUnity(12); rootofUnity(1);
 minpoly = rootofUnity(8); q;
+ring a1 = 32003,(x,y,u,v),dp; ring a2 = 0,(a,b,c),wp(1,2,3); ring a3 = 0,x(1..3),(c,ls);
+def RT = ringtensor(a1,a2,a3); RT;
 """,
     "inout": """
 LIB "inout.lib";
