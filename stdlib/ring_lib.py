@@ -1,7 +1,8 @@
 """Commands of Singular's ring.lib: new rings from strings (``defring``, ``defrings``, ``defringp``),
 renamed variables (``changevar``), the kind of an ordering (``ord_test``), the variables' weights
-(``ringweights``), ``isQuotientRing`` and the primitive roots of unity as a minimal polynomial of a
-parameter (``rootofUnity``)."""
+(``ringweights``), ``isQuotientRing``, ``hasCommutativeVars``, the primitive roots of unity as a
+minimal polynomial of a parameter (``rootofUnity``) and tensor products of rings (``ringtensor``).
+``export`` puts a procedure's result variables into the ring it returns."""
 from __future__ import annotations
 
 import re

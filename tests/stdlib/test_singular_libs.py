@@ -231,6 +231,18 @@ max(x+1,x2+x); min(x+1,x2+x);
 ring R = 0,(x,y),wp(1,2);
 weightKB(ideal(0),3,intvec(1,2)); weightKB(std(ideal(x2)),5,intvec(1,2));
 """,
+    "elim": """
+LIB "elim.lib";
+ring R = 0,(x,y,z,u,v),(c,lp);
+def P = elimRing(yu); P;
+intvec w = 1,1,3,4,5;
+elimRing(yu,w); elimRing(xz,w,"b"); elimRing(v,"b");
+ring S = 0,(x,y,z),ds;
+elimRing(y);
+ring T = (0,a),(x,y,z,u,v),ws(1,2,3,4,5);
+minpoly = a2+1;
+def E = elimRing(yv)[1]; setring E; E;
+""",
     "primdec": """
 LIB "primdec.lib";
 ring r = 0,(x,y,z),dp;
