@@ -1,5 +1,6 @@
 """Commands of Singular's inout.lib: strings laid out for reading (``pmat``, ``lprint``, ``split``,
-``tab``), reading Macaulay's format (``rMacaulay``) and ``pause``."""
+``tab``), reading Macaulay's format (``rMacaulay``), ``pause``, a polynomial shown in some of its
+variables (``showrecursive``) and ``allprint``."""
 from __future__ import annotations
 
 import sys
@@ -203,4 +204,64 @@ def pause(ctx, prompt: str = "pause>") -> object:
     """
     ctx.write(prompt)
     sys.stdin.readline()
+    return NONE
+
+
+@command("showrecursive", lib=LIB)
+def showrecursive(ctx, f: Poly, p: Poly, order: str = "dp") -> object:
+    """showrecursive(f, p[, ord]): show f as a polynomial in the variables of the monomial p with
+    coefficients in the other variables (made parameters; the ordering ord, default dp).
+
+    Example:
+      LIB "inout.lib";
+      ring r = 0,(a,x,y),dp;
+      showrecursive(ax2+x2y+y, x);
+      → // poly, 2 monomial(s)
+      → (a+y)*x2+(y)
+    """
+    from ..dsl.rings import make_ring
+    from .ring_lib import parse_ordering
+    ring = f.ring
+    if len(p.terms) != 1:
+        raise MechRuntimeError("showrecursive(f, p): p must be a product of variables")
+    (mono,) = p.terms
+    keep = [i for i in range(ring.nvars) if mono[i]]
+    made = [i for i in range(ring.nvars) if not mono[i]]
+    base = ctx.basering()
+    names = [ring.names[i] for i in keep]
+    new = make_ring(base.characteristic, base.params + tuple(ring.names[i] for i in made), names,
+                    parse_ordering(order, len(names))).poly
+    field, k = new.field, len(base.params)
+    terms: dict = {}
+    for e, c in f.terms.items():
+        coeff = field(c) if not k else c
+        for j, i in enumerate(made):
+            coeff = coeff * field.gen(k + j) ** e[i]
+        key = tuple(e[i] for i in keep)
+        terms[key] = terms[key] + coeff if key in terms else coeff
+    g = Poly(new, {e: c for e, c in terms.items() if c != 0})
+    ctx.write(f"// poly, {len(g.terms)} monomial(s)\n{poly_str(g)}\n")
+    return NONE
+
+
+@command("allprint", lib=LIB)
+def allprint(ctx, *xs: object) -> object:
+    """allprint(a, b, ...): print each argument, when a variable named ALLprint is defined (and wait
+    for input after them when it is > 0).
+
+    Example:
+      LIB "inout.lib";
+      int ALLprint = 0;
+      allprint("M =", 3);
+      → M =
+      → 3
+    """
+    from .language import print_
+    var = ctx.lookup("ALLprint")
+    if var is None:
+        return NONE
+    for x in xs:
+        print_(ctx, x)
+    if isinstance(var.value, int) and var.value > 0:
+        pause(ctx)
     return NONE

@@ -106,6 +106,12 @@ a3 0  0
 rMacaulay(s2);
 rMacaulay("first line
 x[1]2-x[2]", 1);
+ring t = 2,(a,b,c,d,x,y),ds;
+poly f = y+ax2+bx3+cx2y2+dxy3;
+showrecursive(f,x); showrecursive(f,xy,"lp"); showrecursive(f,abcd);
+allprint("not shown");
+int ALLprint = 0;
+allprint("M =", f);
 """,
     "polylib": """
 LIB "polylib.lib";
