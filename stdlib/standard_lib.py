@@ -1,7 +1,8 @@
 """Commands of Singular's standard.lib beyond the standard bases (:mod:`mech.stdlib.standard`):
-``max`` and ``min`` of ints, intvecs or polynomials, and the monomials of one weighted degree
-outside a leading ideal (``weightKB``).  Singular loads standard.lib at start; mech has weightKB
-built in and max and min after ``LIB "standard.lib";`` (so that they stay free as variable names)."""
+``max`` and ``min`` of ints, intvecs or polynomials, the monomials of one weighted degree outside a
+leading ideal (``weightKB``) and ``stdfglm`` from a given ordering.  Singular loads standard.lib at
+start; mech has weightKB and stdfglm built in and max and min after ``LIB "standard.lib";`` (so that
+they stay free as variable names)."""
 from __future__ import annotations
 
 from functools import cmp_to_key
@@ -11,6 +12,7 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
 from ..dsl.values import Ideal, IntVec, List
 from ..kernel import Poly
+from .ring_lib import parse_ordering
 
 LIB = "standard.lib"
 
@@ -108,3 +110,21 @@ def weight_kb(I: Ideal, d: int, w: IntVec | List) -> Ideal:
             if not any(all(a <= b for a, b in zip(m, e)) for m in leads)] if d >= 0 else []
     mons.sort(key=cmp_to_key(ring.order.compare), reverse=True)
     return Ideal(ring, [ring.monomial(e) for e in mons] or [ring.zero()])
+
+
+@command("stdfglm")
+def stdfglm_from(I: Ideal, how: str) -> Ideal:
+    """stdfglm(I, s): the reduced Groebner basis of the zero-dimensional ideal I for the basering's
+    ordering, as stdfglm(I); s names the ordering (or "std"/"slimgb", the algorithm) standard.lib
+    starts the FGLM conversion from: the result is the same.
+
+    Example:
+      ring r = 0,(x,y),lp;
+      stdfglm(ideal(x2-y, y2-1), "std");
+      → _[1]=y2-1
+      → _[2]=x2-y
+    """
+    from .standard import stdfglm
+    if how not in ("std", "slimgb"):
+        parse_ordering(how, I.ring.nvars)  # the ordering must be one
+    return stdfglm(I)

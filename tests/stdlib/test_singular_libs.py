@@ -236,6 +236,9 @@ ring r = 0,x,dp;
 max(x+1,x2+x); min(x+1,x2+x);
 ring R = 0,(x,y),wp(1,2);
 weightKB(ideal(0),3,intvec(1,2)); weightKB(std(ideal(x2)),5,intvec(1,2));
+ring l = 0,(x,y,z),lp;
+ideal i = y3+x2,x2y+x2,x3-x2,z4-x2-y;
+stdfglm(i,"std"); stdfglm(i,"(a(2,3,4),dp)");
 """,
     "elim": """
 LIB "elim.lib";
