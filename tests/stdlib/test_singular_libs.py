@@ -1,5 +1,6 @@
 """Commands of Singular's libraries (matrix, general, ring, inout, polylib, sing, algebra, standard,
-primdec) and the built-ins ord, contract, ludecomp, lusolve, luinverse, rank, primefactors: each
+primdec, elim) and the built-ins ord, contract, ludecomp, lusolve, luinverse, rank, primefactors,
+numerator, denominator, variables, univariate, sortvec, tensor, jacob(matrix), intvec(intmat): each
 snippet runs the library's kind of example and further cases; its output is compared with the
 installed Singular's, line by line (the help examples are compared in test_help_examples)."""
 from __future__ import annotations
@@ -156,6 +157,12 @@ Q[1]; print(Q[2]); print(Q[3]);
 matrix E[3][3] = 1,2,3,1,1,1,2,2,1;
 list N = luinverse(E); N[1]; print(N[2]);
 matrix F[2][2] = 1,2,2,4; luinverse(F); rank(F); rank(E); rank(A);
+ring t = 0,(x,y,z),dp;
+number n = -6/4; numerator(n); denominator(n); numerator(5); denominator(5);
+variables(2); variables(x+y2); variables(ideal(z, x3y)); univariate(x2+1); univariate(1); univariate(z+z2);
+sortvec(ideal(y,z,x,x3,xz)); sortvec(ideal(x,0,1));
+matrix P[2][2] = x,y,0,z; matrix Q[1][2] = 1,2; print(tensor(Q,P)); print(tensor(P,Q));
+print(jacob(P)); intmat im[2][3] = 1,2,3,4,5,6; intvec(im);
 """,
     "sing": """
 LIB "sing.lib";

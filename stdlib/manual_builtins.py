@@ -1,0 +1,125 @@
+"""Small built-in commands of Singular that its manual shows: ``numerator`` and ``denominator`` of a
+number, the ``variables`` a polynomial or ideal involves, ``univariate``, ``sortvec``, the Kronecker
+product ``tensor`` of two matrices, ``jacob`` of a matrix and ``intvec`` of an intmat."""
+from __future__ import annotations
+
+from functools import cmp_to_key
+
+from ..dsl.errors import MechRuntimeError
+from ..dsl.intmat import IntMat
+from ..dsl.registry import command
+from ..dsl.values import Ideal, IntVec, Matrix, Number
+from ..kernel import Poly
+from ..kernel.coeffs import RationalField
+from .matrix_lib import outer
+
+
+def _rational(n: Number, cmd: str):
+    if not isinstance(n.ring.field, RationalField):
+        raise MechRuntimeError(f"{cmd} of a number is supported over QQ")
+    return n.to_fraction()
+
+
+@command("numerator")
+def numerator(n: Number) -> Number:
+    """numerator(n): the numerator of the rational number n.
+
+    Example:
+      ring r = 0,x,dp;
+      numerator(-3/2);
+      → -3
+    """
+    return Number(n.ring, n.ring.field(_rational(n, "numerator").numerator))
+
+
+@command("denominator")
+def denominator(n: Number) -> Number:
+    """denominator(n): the (positive) denominator of the rational number n.
+
+    Example:
+      ring r = 0,x,dp;
+      denominator(-3/2);
+      → 2
+    """
+    return Number(n.ring, n.ring.field(_rational(n, "denominator").denominator))
+
+
+@command("variables")
+def variables(ctx, f: Poly | Ideal | int) -> Ideal:
+    """variables(f): the ideal of the ring variables the polynomial or ideal f involves, in the ring's
+    order (the zero ideal for a constant).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      variables(ideal(z2, x+1));
+      → _[1]=x
+      → _[2]=z
+    """
+    ring = ctx.basering().poly
+    polys = [] if isinstance(f, int) else [f] if isinstance(f, Poly) else list(f.gens)
+    used = sorted({i for p in polys for e in p.terms for i, k in enumerate(e) if k})
+    return Ideal(ring, [ring.gen(i) for i in used] or [ring.zero()])
+
+
+@command("univariate")
+def univariate(f: Poly) -> int:
+    """univariate(f): i if the polynomial f involves only the i-th variable, -1 if it is constant,
+    else 0.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      univariate(y3+1);
+      → 2
+      univariate(xy);
+      → 0
+    """
+    used = {i for e in f.terms for i, k in enumerate(e) if k}
+    if not used:
+        return -1
+    return used.pop() + 1 if len(used) == 1 else 0
+
+
+@command("sortvec")
+def sortvec(I: Ideal) -> IntVec:
+    """sortvec(I): the permutation that sorts the nonzero generators of I increasingly by their leading
+    monomials (the positions of the smallest first; a 0 for each zero generator, at the end).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      sortvec(ideal(y, z, x3, x));
+      → 2,1,4,3
+    """
+    order = I.ring.order
+    nonzero = [i for i, g in enumerate(I.gens) if not g.is_zero()]
+    nonzero.sort(key=cmp_to_key(lambda i, j: order.compare(I.gens[i].lm(), I.gens[j].lm())))
+    return IntVec([i + 1 for i in nonzero] + [0] * (len(I.gens) - len(nonzero)))
+
+
+@command("tensor")
+def tensor(A: Matrix, B: Matrix) -> Matrix:
+    """tensor(A, B): the tensor (Kronecker) product of the matrices: the blocks A[i,j]*B.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      matrix A[1][2] = 1,2;
+      matrix B[2][1] = x,y;
+      print(tensor(A, B));
+      → x,2x,
+      → y,2y
+    """
+    return outer(A, B)
+
+
+@command("jacob")
+def jacob_matrix(M: Matrix) -> Matrix:
+    """jacob(M) of a matrix (as Singular, of the module of its columns): one row for each column i of M,
+    entry (i, (k-1)*nrows(M)+j) the derivative of M[j,i] by the k-th variable."""
+    n, m = M.ring.nvars, M.nrows
+    return Matrix(M.ring, M.ncols, m * n, [M.get(j, i).diff(k) for i in range(1, M.ncols + 1)
+                                           for k in range(n) for j in range(1, m + 1)])
+
+
+@command("intvec")
+def intvec_of_intmat(m: IntMat) -> IntVec:
+    """intvec(m) of an intmat: its entries row by row."""
+    return IntVec(m.values)
