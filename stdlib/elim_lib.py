@@ -9,7 +9,7 @@ from ..dsl.minpoly import extended, get_minpoly
 from ..dsl.qrings import make_qring, quotient_ideal
 from ..dsl.registry import command
 from ..dsl.rings import make_ring
-from ..dsl.values import Ideal, IntVec, List, OrderBlock, Ring
+from ..dsl.values import Ideal, IntVec, List, OrderBlock
 from ..kernel import Poly
 from ..kernel.algext import AlgebraicField
 from .ring_lib import ringweights

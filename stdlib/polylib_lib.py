@@ -280,14 +280,15 @@ def rad_con(g: Poly, I: Ideal) -> int:
     from ..kernel.order import Block
     ring = I.ring
     n = ring.nvars
-    if ring.order.is_global:
-        big = PolyRing(ring.field, list(ring.names) + ["@z"], MonomialOrder([Block("dp", n + 1)]))
-        lift = lambda p: Poly(big, {e + (0,): c for e, c in p.terms.items()})  # noqa: E731
-        z = big.gen(n)
-    else:
+    front = not ring.order.is_global  # z first, with its own dp block before a local ordering
+    if front:
         big = PolyRing(ring.field, ["@z"] + list(ring.names), MonomialOrder([Block("dp", 1)] + list(ring.order.blocks)))
-        lift = lambda p: Poly(big, {(0,) + e: c for e, c in p.terms.items()})  # noqa: E731
-        z = big.gen(0)
+    else:
+        big = PolyRing(ring.field, list(ring.names) + ["@z"], MonomialOrder([Block("dp", n + 1)]))
+    z = big.gen(0 if front else n)
+
+    def lift(p: Poly) -> Poly:
+        return Poly(big, {((0,) + e if front else e + (0,)): c for e, c in p.terms.items()})
     gens = [lift(f) for f in I.nonzero()] + [lift(g) * z - big.one()]
     basis = standard_basis(Ideal(big, gens))
     return int(any(b.is_constant() and not b.is_zero() for b in basis))

@@ -220,7 +220,9 @@ def qhspectrum(ctx, f: Poly, w: IntVec) -> Any:
         raise MechRuntimeError("qhspectrum(f, w): w must hold one positive weight for each variable")
     graded = PolyRing(ring.field, ring.names, MonomialOrder([Block("wp", ring.nvars, tuple(weights))]))
     g = Poly(graded, f.terms)
-    wdeg = lambda e: sum(a * b for a, b in zip(e, weights))  # noqa: E731
+
+    def wdeg(e: tuple[int, ...]) -> int:
+        return sum(a * b for a, b in zip(e, weights))
     d = max(wdeg(e) for e in g.terms)
     basis = standard_basis(Ideal(graded, [h for h in (g.diff(i) for i in range(ring.nvars)) if not h.is_zero()]))
     lms = [b.lm() for b in basis]
