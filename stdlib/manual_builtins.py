@@ -1,15 +1,18 @@
 """Small built-in commands of Singular that its manual shows: ``numerator`` and ``denominator`` of a
 number, the ``variables`` a polynomial or ideal involves, ``univariate``, ``sortvec``, the Kronecker
-product ``tensor`` of two matrices, ``jacob`` of a matrix and ``intvec`` of an intmat."""
+product ``tensor`` of two matrices, the exterior power ``wedge`` of a matrix, ``jacob`` of a matrix and
+``intvec`` of an intmat."""
 from __future__ import annotations
 
 from functools import cmp_to_key
+from itertools import combinations
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.intmat import IntMat
 from ..dsl.registry import command
 from ..dsl.values import Ideal, IntVec, Matrix, Number
 from ..kernel import Poly
+from ..kernel import matrix as KM
 from ..kernel.coeffs import RationalField
 from .matrix_lib import outer
 
@@ -108,6 +111,30 @@ def tensor(A: Matrix, B: Matrix) -> Matrix:
       → y,2y
     """
     return outer(A, B)
+
+
+@command("wedge")
+def wedge(M: Matrix, k: int) -> Matrix:
+    """wedge(M, k): the k-th exterior power of the matrix M as Singular gives it: the k x k minors of M,
+    rows and columns indexed by the k-subsets in lexicographic order, the minor of rows I and
+    columns J taken with the sign (-1)^(sum(I) + sum(J)).
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      matrix m[2][3] = x,y,y,z,z,x;
+      print(wedge(m, 2));
+      → xz-yz,-x2+yz,xy-yz
+    """
+    if not 0 < k <= min(M.nrows, M.ncols):
+        raise MechRuntimeError(f"wedge(M, {k}): k must be between 1 and the size of M")
+    rows = list(combinations(range(1, M.nrows + 1), k))
+    cols = list(combinations(range(1, M.ncols + 1), k))
+    out = []
+    for I in rows:
+        for J in cols:
+            minor = KM.det(KM.Matrix(M.ring, k, k, [M.get(i, j) for i in I for j in J]))
+            out.append(-minor if (sum(I) + sum(J)) % 2 else minor)
+    return Matrix(M.ring, len(rows), len(cols), out)
 
 
 @command("jacob")

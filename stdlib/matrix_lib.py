@@ -2,7 +2,7 @@
 ``submat``, ``headStand``, ``power``), elementary row and column operations (``addcol``, ``addrow``,
 ``multcol``, ``multrow``, ``permcol``, ``permrow``), Gaussian elimination by constant pivots
 (``rowred``, ``colred``), removing unit rows and columns (``rm_unitcol``, ``rm_unitrow``) and the
-basis of a symmetric power (``symmetricBasis``).
+basis of a symmetric power (``symmetricBasis``), and the entries of a matrix as an ideal (``flatten``).
 (``unitmat`` is in :mod:`mech.stdlib.idealops`.)"""
 from __future__ import annotations
 
@@ -444,3 +444,20 @@ def symmetric_basis(n: int, k: int, name: str = "e") -> Ring:
     mons = sorted(monomials_of_degree(n, [1] * n, k))  # as maxideal(k): increasing lexicographically
     export(ring, "symBasis", "ideal", Ideal(poly, [poly.monomial(e) for e in mons] or [poly.zero()]))
     return ring
+
+
+@command("flatten", lib=LIB)
+def flatten(A: Matrix) -> Ideal:
+    """flatten(A): the ideal of the entries of the matrix A, row by row.
+
+    Example:
+      LIB "matrix.lib";
+      ring r = 0,(x,y),dp;
+      matrix A[2][2] = 1,x,y,0;
+      flatten(A);
+      → _[1]=1
+      → _[2]=x
+      → _[3]=y
+      → _[4]=0
+    """
+    return Ideal(A.ring, list(A.entries) or [A.ring.zero()])

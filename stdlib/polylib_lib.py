@@ -2,7 +2,7 @@
 symmetric polynomials (``elemSymmPoly``, ``elemSymmId``), ``substitute``, the Newton diagram
 (``newtonDiag``), the smallest and largest (weighted) degrees of the monomials whatever the ordering
 (``mindeg``, ``mindeg1``, ``maxdeg``, ``maxdeg1``), the longest coefficient (``maxcoef``), the Hilbert
-polynomial (``hilbPoly``) and radical membership (``rad_con``)."""
+polynomial (``hilbPoly``), radical membership (``rad_con``) and the Katsura ideals (``katsura``)."""
 from __future__ import annotations
 
 from itertools import combinations
@@ -292,3 +292,34 @@ def rad_con(g: Poly, I: Ideal) -> int:
     gens = [lift(f) for f in I.nonzero()] + [lift(g) * z - big.one()]
     basis = standard_basis(Ideal(big, gens))
     return int(any(b.is_constant() and not b.is_zero() for b in basis))
+
+
+@command("katsura", lib=LIB)
+def katsura(ctx, n: int | None = None) -> Ideal:
+    """katsura([n]): the n-th Katsura ideal in the first variables x_0, x_1, ... of the basering:
+    x_0 + 2x_1 + ... + 2x_(n-1) - 1 and, for i < n-1, the sums of x_|j| x_|i-j| minus x_i (n generators;
+    without n, n = nvars).  With fewer than n variables, katsura(n) first makes the ring
+    32003,x(0..n),dp the basering (as polylib.lib).
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(a,b),dp;
+      katsura();
+      → _[1]=a+2b-1
+      → _[2]=a2+2b2-a
+    """
+    from ..dsl.rings import make_ring
+    from ..dsl.values import OrderBlock
+    if n is not None and (ctx.ring is None or len(ctx.ring.names) < n):
+        new = make_ring(32003, (), [f"x({i})" for i in range(n + 1)], [OrderBlock("dp", n + 1), OrderBlock("C")])
+        new.name = "katsura_ring"
+        ctx.ring = new
+    ring = ctx.basering().poly
+    m = (n if n is not None else ring.nvars) - 1
+
+    def kat(i: int) -> Poly:
+        return ring.gen(abs(i)) if abs(i) <= m else ring.zero()
+    gens = [sum((kat(i) for i in range(-m, m + 1)), ring.zero()) - ring.one()]
+    for i in range(m):
+        gens.append(sum((kat(j) * kat(i - j) for j in range(-m, m + 1)), ring.zero()) - kat(i))
+    return Ideal(ring, gens)

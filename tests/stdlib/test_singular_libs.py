@@ -22,7 +22,7 @@ print(diag(xy,3)); print(diag(B));
 print(dsum(A,B)); print(dsum(C,B,C));
 print(outer(B,C)); print(outer(C,B));
 print(headStand(A));
-print(submat(A,intvec(3,1),2..3));
+print(submat(A,intvec(3,1),2..3)); flatten(B);
 print(power(A,2)); print(power(B,0));
 intmat M[2][2] = 1,2,3,4; print(power(M,5));
 """,
@@ -137,6 +137,8 @@ ring h = 0,(b,c,t,h),dp;
 ideal H = bct-t2h+2th2+h3, bt3-ct3-t4+b2th+c2th-2bt2h+2ct2h+2t3h-bch2-2bth2+2cth2+2th3;
 hilbPoly(H); hilbPoly(ideal(b2,c));
 ring k = 0,(x,y,z),dp;
+katsura(); katsura(2); katsura(4); basering;
+setring k;
 rad_con(x4+y4, ideal(x2+y2,z2)); rad_con(z, ideal(x2+y2,z2)); rad_con(x+y, ideal((x+y)^3));
 """,
     "builtins": """
@@ -163,6 +165,7 @@ variables(2); variables(x+y2); variables(ideal(z, x3y)); univariate(x2+1); univa
 sortvec(ideal(y,z,x,x3,xz)); sortvec(ideal(x,0,1));
 matrix P[2][2] = x,y,0,z; matrix Q[1][2] = 1,2; print(tensor(Q,P)); print(tensor(P,Q));
 print(jacob(P)); intmat im[2][3] = 1,2,3,4,5,6; intvec(im);
+matrix W[3][3] = x,y,z,y,z,x,1,2,x+y; print(wedge(W,1)); print(wedge(W,2)); print(wedge(W,3));
 """,
     "sing": """
 LIB "sing.lib";
