@@ -139,8 +139,9 @@ def wedge(M: Matrix, k: int) -> Matrix:
 
 @command("jacob")
 def jacob_matrix(M: Matrix) -> Matrix:
-    """jacob(M) of a matrix (as Singular, of the module of its columns): one row for each column i of M,
-    entry (i, (k-1)*nrows(M)+j) the derivative of M[j,i] by the k-th variable."""
+    # jacob(M) of a matrix (as Singular, of the module of its columns): one row for each column i of M,
+    # entry (i, (k-1)*nrows(M)+j) the derivative of M[j,i] by the k-th variable.  No docstring: the
+    # command's help is polynomials.jacob's (this module registers first).
     n, m = M.ring.nvars, M.nrows
     return Matrix(M.ring, M.ncols, m * n, [M.get(j, i).diff(k) for i in range(1, M.ncols + 1)
                                            for k in range(n) for j in range(1, m + 1)])
@@ -148,5 +149,5 @@ def jacob_matrix(M: Matrix) -> Matrix:
 
 @command("intvec")
 def intvec_of_intmat(m: IntMat) -> IntVec:
-    """intvec(m) of an intmat: its entries row by row."""
+    # intvec(m) of an intmat: its entries row by row (the help is conversions.intvec's)
     return IntVec(m.values)

@@ -16,7 +16,6 @@ from ..dsl.scopes import Var
 from ..dsl.values import Ideal, IntVec, Number, OrderBlock, Ring
 from ..kernel import Poly
 from .general_lib import _letters
-from .polynomials import _ring_weights
 
 LIB = "ring.lib"
 _WEIGHTED = ("wp", "Wp", "ws", "Ws", "a")
@@ -197,6 +196,7 @@ def ringweights(r: Ring) -> IntVec:
       ringweights(r);
       → 2,3,1
     """
+    from .polynomials import _ring_weights  # imported late: polynomials' size(x) must follow intmats' size
     ws = _ring_weights(r.poly)
     return IntVec(ws if ws is not None else [1] * r.poly.nvars)
 
