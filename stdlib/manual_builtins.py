@@ -1,11 +1,11 @@
 """Small built-in commands of Singular that its manual shows: ``numerator`` and ``denominator`` of a
 number, the ``variables`` a polynomial or ideal involves, ``univariate``, ``sortvec``, the Kronecker
-product ``tensor`` of two matrices, the exterior power ``wedge`` of a matrix, ``jacob`` of a matrix and
-``intvec`` of an intmat."""
+product ``tensor`` of two matrices, the exterior power ``wedge`` of a matrix, ``jacob`` of a matrix,
+``intvec`` of an intmat and interpolation at the powers of a point (``vandermonde``)."""
 from __future__ import annotations
 
 from functools import cmp_to_key
-from itertools import combinations
+from itertools import combinations, product
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.intmat import IntMat
@@ -151,3 +151,50 @@ def jacob_matrix(M: Matrix) -> Matrix:
 def intvec_of_intmat(m: IntMat) -> IntVec:
     # intvec(m) of an intmat: its entries row by row (the help is conversions.intvec's)
     return IntVec(m.values)
+
+
+@command("vandermonde")
+def vandermonde(p: Ideal, v: Ideal, d: int) -> Poly:
+    """vandermonde(p, v, d): the polynomial f with each exponent at most d (in n variables) whose value
+    at the point p^i = (p_1^i, ..., p_n^i) is v[i+1] for i = 0, ..., (d+1)^n - 1 (the entries of p
+    and v numbers; the monomials' values at p must be distinct).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      vandermonde(ideal(2,3), ideal(1,2,3,4), 1);
+      → 1/30xy+5/2x-5/6y-7/10
+    """
+    ring = p.ring
+    n = ring.nvars
+    if len(p.gens) != n or not all(g.is_constant() for g in list(p.gens) + list(v.gens)):
+        raise MechRuntimeError("vandermonde(p, v, d): p must hold a number for each variable, v numbers")
+    field = ring.field
+    point = [g.coeff_of(ring.zero_exp) if not g.is_zero() else field(0) for g in p.gens]
+    mons = list(product(range(d + 1), repeat=n))
+    values = [g.coeff_of(ring.zero_exp) if not g.is_zero() else field(0) for g in v.gens]
+    if len(values) < len(mons):
+        raise MechRuntimeError(f"vandermonde: {len(mons)} values needed, {len(values)} given")
+    nodes = []
+    for e in mons:
+        w = field(1)
+        for c, k in zip(point, e):
+            w = w * c ** k
+        nodes.append(w)
+    if len(set(nodes)) != len(nodes):
+        raise MechRuntimeError("vandermonde: the monomials take equal values at the point")
+    # solve sum_m c_m * nodes[m]^i = values[i], i = 0..N-1, by Gaussian elimination
+    N = len(mons)
+    rows, power = [], [field(1)] * N
+    for i in range(N):
+        rows.append(list(power) + [values[i]])
+        power = [a * b for a, b in zip(power, nodes)]
+    for c in range(N):
+        k = next(r for r in range(c, N) if rows[r][c] != 0)
+        rows[c], rows[k] = rows[k], rows[c]
+        inv = field(1) / rows[c][c]
+        rows[c] = [x * inv for x in rows[c]]
+        for r in range(N):
+            if r != c and rows[r][c] != 0:
+                f = rows[r][c]
+                rows[r] = [a - f * b for a, b in zip(rows[r], rows[c])]
+    return Poly(ring, {e: rows[m][N] for m, e in enumerate(mons) if rows[m][N] != 0})

@@ -165,6 +165,10 @@ variables(2); variables(x+y2); variables(ideal(z, x3y)); univariate(x2+1); univa
 sortvec(ideal(y,z,x,x3,xz)); sortvec(ideal(x,0,1));
 matrix P[2][2] = x,y,0,z; matrix Q[1][2] = 1,2; print(tensor(Q,P)); print(tensor(P,Q));
 print(jacob(P)); intmat im[2][3] = 1,2,3,4,5,6; intvec(im);
+ring v2 = 0,(x,y),dp;
+poly ip = vandermonde(ideal(2,3),ideal(1,2,3,4,5,6,7,8,9),2); ip;
+subst(subst(ip,x,2^8),y,3^8); vandermonde(ideal(2,3),ideal(1,2,3,4),1);
+setring t;
 matrix W[3][3] = x,y,z,y,z,x,1,2,x+y; print(wedge(W,1)); print(wedge(W,2)); print(wedge(W,3));
 """,
     "sing": """
