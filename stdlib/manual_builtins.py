@@ -1,7 +1,8 @@
 """Small built-in commands of Singular that its manual shows: ``numerator`` and ``denominator`` of a
 number, the ``variables`` a polynomial or ideal involves, ``univariate``, ``sortvec``, the Kronecker
 product ``tensor`` of two matrices, the exterior power ``wedge`` of a matrix, ``jacob`` of a matrix,
-``intvec`` of an intmat and interpolation at the powers of a point (``vandermonde``)."""
+``intvec`` of an intmat, interpolation at the powers of a point (``vandermonde``) and the highest
+corner of a zero-dimensional standard basis (``highcorner``)."""
 from __future__ import annotations
 
 from functools import cmp_to_key
@@ -12,6 +13,7 @@ from ..dsl.intmat import IntMat
 from ..dsl.registry import command
 from ..dsl.values import Ideal, IntVec, Matrix, Number
 from ..kernel import Poly
+from ..kernel import hilbert as H
 from ..kernel import matrix as KM
 from ..kernel.coeffs import RationalField
 from .matrix_lib import outer
@@ -198,3 +200,22 @@ def vandermonde(p: Ideal, v: Ideal, d: int) -> Poly:
                 f = rows[r][c]
                 rows[r] = [a - f * b for a, b in zip(rows[r], rows[c])]
     return Poly(ring, {e: rows[m][N] for m, e in enumerate(mons) if rows[m][N] != 0})
+
+
+@command("highcorner")
+def highcorner(I: Ideal) -> Poly:
+    """highcorner(I): for a standard basis I of a zero-dimensional ideal, the highest corner: the
+    smallest monomial (in the ring's ordering) outside the leading ideal; 0 if there is none (the
+    unit ideal, or R/I infinite-dimensional).
+
+    Example:
+      ring r = 0,(x,y),ds;
+      highcorner(std(ideal(x3, x2y, y3)));
+      → xy2
+    """
+    ring = I.ring
+    lms = [g.lm() for g in I.nonzero()]
+    if not lms or H.vdim(lms, ring.nvars) <= 0:
+        return ring.zero()
+    mons = H.kbase(lms, ring.nvars)
+    return ring.monomial(min(mons, key=ring.order.key))

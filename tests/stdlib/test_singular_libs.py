@@ -1,6 +1,7 @@
 """Commands of Singular's libraries (matrix, general, ring, inout, polylib, sing, algebra, standard,
 primdec, elim) and the built-ins ord, contract, ludecomp, lusolve, luinverse, rank, primefactors,
-numerator, denominator, variables, univariate, sortvec, tensor, jacob(matrix), intvec(intmat): each
+numerator, denominator, variables, univariate, sortvec, tensor, wedge, jacob(matrix), intvec(intmat),
+vandermonde, highcorner: each
 snippet runs the library's kind of example and further cases; its output is compared with the
 installed Singular's, line by line (the help examples are compared in test_help_examples)."""
 from __future__ import annotations
@@ -168,6 +169,9 @@ print(jacob(P)); intmat im[2][3] = 1,2,3,4,5,6; intvec(im);
 ring v2 = 0,(x,y),dp;
 poly ip = vandermonde(ideal(2,3),ideal(1,2,3,4,5,6,7,8,9),2); ip;
 subst(subst(ip,x,2^8),y,3^8); vandermonde(ideal(2,3),ideal(1,2,3,4),1);
+highcorner(std(ideal(x2,y3))); highcorner(std(ideal(x)));
+ring hc = 0,(x,y),ds;
+highcorner(std(ideal(x3,x2y,y3))); highcorner(std(ideal(1))); highcorner(std(ideal(x2)));
 setring t;
 matrix W[3][3] = x,y,z,y,z,x,1,2,x+y; print(wedge(W,1)); print(wedge(W,2)); print(wedge(W,3));
 """,
