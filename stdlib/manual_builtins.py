@@ -2,7 +2,8 @@
 number, the ``variables`` a polynomial or ideal involves, ``univariate``, ``sortvec``, the Kronecker
 product ``tensor`` of two matrices, the exterior power ``wedge`` of a matrix, ``jacob`` of a matrix,
 ``intvec`` of an intmat, interpolation at the powers of a point (``vandermonde``) and the highest
-corner of a zero-dimensional standard basis (``highcorner``)."""
+corner of a zero-dimensional standard basis (``highcorner``) and the ideal of the polynomials
+vanishing to given orders at given points (``interpolation``)."""
 from __future__ import annotations
 
 from functools import cmp_to_key
@@ -11,7 +12,7 @@ from itertools import combinations, product
 from ..dsl.errors import MechRuntimeError
 from ..dsl.intmat import IntMat
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec, Matrix, Number
+from ..dsl.values import Ideal, IntVec, List, Matrix, Number
 from ..kernel import Poly
 from ..kernel import hilbert as H
 from ..kernel import matrix as KM
@@ -219,3 +220,32 @@ def highcorner(I: Ideal) -> Poly:
         return ring.zero()
     mons = H.kbase(lms, ring.nvars)
     return ring.monomial(min(mons, key=ring.order.key))
+
+
+@command("interpolation")
+def interpolation(points: List, v: IntVec) -> Ideal:
+    """interpolation(l, v): for a list l of maximal ideals (points, e.g. ideal(x-1, y+2)) and the
+    intvec v of orders, the reduced standard basis of the polynomials vanishing to order v[i] at the
+    i-th point: the intersection of the powers l[i]^v[i].
+
+    Example:
+      ring r = 0,(x,y),dp;
+      interpolation(list(ideal(x,y), ideal(x-1,y)), intvec(2,1));
+      → _[1]=y2
+      → _[2]=xy
+      → _[3]=x3-x2
+    """
+    from .ideals import intersect
+    ideals = [p for p in points.items if isinstance(p, Ideal)]
+    if len(ideals) != len(points.items) or len(v.values) < len(ideals) or not ideals:
+        raise MechRuntimeError("interpolation(l, v): l must be a list of ideals of points, v an order for each")
+    ring = ideals[0].ring
+    powers = []
+    for P, k in zip(ideals, v.values):
+        if k < 1:
+            raise MechRuntimeError("interpolation: the orders must be positive")
+        gens = [ring.one()]
+        for _ in range(k):
+            gens = [g * h for g in gens for h in P.nonzero()]
+        powers.append(Ideal(ring, gens))
+    return intersect(*powers)

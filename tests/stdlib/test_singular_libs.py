@@ -1,7 +1,7 @@
 """Commands of Singular's libraries (matrix, general, ring, inout, polylib, sing, algebra, standard,
 primdec, elim) and the built-ins ord, contract, ludecomp, lusolve, luinverse, rank, primefactors,
 numerator, denominator, variables, univariate, sortvec, tensor, wedge, jacob(matrix), intvec(intmat),
-vandermonde, highcorner: each
+vandermonde, highcorner, interpolation: each
 snippet runs the library's kind of example and further cases; its output is compared with the
 installed Singular's, line by line (the help examples are compared in test_help_examples)."""
 from __future__ import annotations
@@ -170,6 +170,8 @@ ring v2 = 0,(x,y),dp;
 poly ip = vandermonde(ideal(2,3),ideal(1,2,3,4,5,6,7,8,9),2); ip;
 subst(subst(ip,x,2^8),y,3^8); vandermonde(ideal(2,3),ideal(1,2,3,4),1);
 highcorner(std(ideal(x2,y3))); highcorner(std(ideal(x)));
+ideal J = interpolation(list(ideal(x,y),ideal(x-1,y)),intvec(2,1));
+size(reduce(J,std(ideal(y2,xy,x3-x2)))); size(reduce(ideal(y2,xy,x3-x2),std(J)));
 ring hc = 0,(x,y),ds;
 highcorner(std(ideal(x3,x2y,y3))); highcorner(std(ideal(1))); highcorner(std(ideal(x2)));
 setring t;
