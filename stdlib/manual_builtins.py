@@ -2,17 +2,19 @@
 number, the ``variables`` a polynomial or ideal involves, ``univariate``, ``sortvec``, the Kronecker
 product ``tensor`` of two matrices, the exterior power ``wedge`` of a matrix, ``jacob`` of a matrix,
 ``intvec`` of an intmat, interpolation at the powers of a point (``vandermonde``) and the highest
-corner of a zero-dimensional standard basis (``highcorner``) and the ideal of the polynomials
-vanishing to given orders at given points (``interpolation``)."""
+corner of a zero-dimensional standard basis (``highcorner``), the ideal of the polynomials vanishing
+to given orders at given points (``interpolation``), the ``kernel`` of a map, the Groebner basis from
+another ring (``frwalk``) and the matrices of the Koszul complex (``koszul``)."""
 from __future__ import annotations
 
 from functools import cmp_to_key
+from typing import Any
 from itertools import combinations, product
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.intmat import IntMat
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec, List, Matrix, Number
+from ..dsl.values import Ideal, IntVec, List, Map, Matrix, Number, Ring
 from ..kernel import Poly
 from ..kernel import hilbert as H
 from ..kernel import matrix as KM
@@ -249,3 +251,79 @@ def interpolation(points: List, v: IntVec) -> Ideal:
             gens = [g * h for g in gens for h in P.nonzero()]
         powers.append(Ideal(ring, gens))
     return intersect(*powers)
+
+
+@command("kernel", raw=True)
+def kernel(ctx, ring_node: Any, map_node: Any) -> Ideal:
+    """kernel(S, phi): the kernel of the map phi from the basering to the ring S (preimage of 0).
+
+    Example:
+      ring r1 = 0,(a,b,c),dp;
+      ring r = 0,(x,y),dp;
+      map f = r1, x, y, x+y;
+      setring r1;
+      kernel(r, f);
+      → _[1]=a+b-c
+    """
+    from .idealops import preimage_polys
+    from .rings import _in_ring
+    source = ctx.basering().poly
+    target, phi = _in_ring(ctx, ring_node, map_node, "kernel")
+    if not isinstance(target, Ring) or not isinstance(phi, Map):
+        raise MechRuntimeError("kernel(S, phi): S a ring, phi a map from the basering into it")
+    images = (list(phi.images) + [target.poly.zero()] * source.nvars)[:source.nvars]
+    out = preimage_polys(source, target.poly, images, [])
+    return Ideal(source, out or [source.zero()])
+
+
+@command("frwalk", raw=True)
+def frwalk(ctx, ring_node: Any, ideal_node: Any) -> Ideal:
+    """frwalk(r, I): the reduced Groebner basis, for the basering's ordering, of the ideal I of the ring
+    r (its variables mapped by name), as Singular's Groebner walk gives it.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      ideal i = std(ideal(x2+y, xy-1));
+      ring s = 0,(x,y),lp;
+      frwalk(r, i);
+      → _[1]=y3+1
+      → _[2]=x+y2
+    """
+    from ..kernel.maps import imap as imap_polys
+    from .rings import _in_ring
+    from .standard import standard_basis
+    source, I = _in_ring(ctx, ring_node, ideal_node, "frwalk")
+    if not isinstance(I, Ideal):
+        raise MechRuntimeError("frwalk(r, I): I must be an ideal of the ring r")
+    target = ctx.basering().poly
+    mapped = Ideal(target, imap_polys(I.nonzero(), source.poly, target) or [target.zero()])
+    return Ideal(target, standard_basis(mapped), is_std=True)
+
+
+@command("koszul")
+def koszul(ctx, d: int, f: int | Ideal) -> Matrix:
+    """koszul(d, n) or koszul(d, I): the d-th matrix of the Koszul complex of the first n variables (of
+    the generators of I): rows the (d-1)-subsets, columns the d-subsets in lexicographic order, the
+    entry for T and T without its j-th element (-1)^(j+1) times the j-th element's generator.
+
+    Example:
+      ring r = 0,(x,y,z),dp;
+      print(koszul(2, 3));
+      → -y,-z,0,
+      → x, 0, -z,
+      → 0, x, y
+    """
+    ring = ctx.basering().poly
+    gens = list(ring.gens()[:f]) if isinstance(f, int) else list(f.gens)
+    n = len(gens)
+    if not 1 <= d <= n:
+        raise MechRuntimeError(f"koszul({d}, ...): d must be between 1 and {n}")
+    rows = list(combinations(range(n), d - 1))
+    cols = list(combinations(range(n), d))
+    where = {S: i for i, S in enumerate(rows)}
+    entries = [ring.zero()] * (len(rows) * len(cols))
+    for c, T in enumerate(cols):
+        for j, t in enumerate(T):
+            S = T[:j] + T[j + 1:]
+            entries[where[S] * len(cols) + c] = gens[t] if j % 2 == 0 else -gens[t]
+    return Matrix(ring, len(rows), len(cols), entries)

@@ -1,7 +1,7 @@
 """Commands of Singular's libraries (matrix, general, ring, inout, polylib, sing, algebra, standard,
 primdec, elim) and the built-ins ord, contract, ludecomp, lusolve, luinverse, rank, primefactors,
 numerator, denominator, variables, univariate, sortvec, tensor, wedge, jacob(matrix), intvec(intmat),
-vandermonde, highcorner, interpolation: each
+vandermonde, highcorner, interpolation, kernel, frwalk, koszul: each
 snippet runs the library's kind of example and further cases; its output is compared with the
 installed Singular's, line by line (the help examples are compared in test_help_examples)."""
 from __future__ import annotations
@@ -172,6 +172,17 @@ subst(subst(ip,x,2^8),y,3^8); vandermonde(ideal(2,3),ideal(1,2,3,4),1);
 highcorner(std(ideal(x2,y3))); highcorner(std(ideal(x)));
 ideal J = interpolation(list(ideal(x,y),ideal(x-1,y)),intvec(2,1));
 size(reduce(J,std(ideal(y2,xy,x3-x2)))); size(reduce(ideal(y2,xy,x3-x2),std(J)));
+setring t;
+print(koszul(1,2)); print(koszul(2,3)); print(koszul(3,3));
+ideal KI = xy,y2,x2+y; print(koszul(2,KI)); print(koszul(2,KI)*koszul(3,KI));
+ring k1 = 0,(a,b,c,d),dp;
+ring k2 = 0,(x,y),dp;
+map kf = k1,x,y,x+y,xy;
+setring k1; kernel(k2,kf);
+ring fw = 0,(x,y,z),dp;
+ideal fi = std(ideal(y3+x2,x2y+x2,x3-x2,z4-x2-y));
+ring fw2 = 0,(x,y,z),lp;
+frwalk(fw,fi);
 ring hc = 0,(x,y),ds;
 highcorner(std(ideal(x3,x2y,y3))); highcorner(std(ideal(1))); highcorner(std(ideal(x2)));
 setring t;
