@@ -1,6 +1,6 @@
 """Commands of Singular's general.lib: letters (``A_Z``, ``A_Z_L``, ``ASCII``), integers
-(``absValue``, ``factorial``, ``fibonacci``, ``primes``, ``number_e``), ``product`` of the entries of
-an ideal, matrix or intvec, ``deleteSublist``, and prime factors (``primefactors``, built in, and
+(``absValue``, ``factorial``, ``fibonacci``, ``primes``, ``number_e``), ``product`` and ``sum`` of the
+entries of an ideal, matrix or intvec, ``deleteSublist``, and prime factors (``primefactors``, built in, and
 ``primecoeffs``).  (``binomial`` is in :mod:`mech.stdlib.crt`.)"""
 from __future__ import annotations
 
@@ -189,14 +189,33 @@ def _entries(x: Any) -> list[Any]:
         return list(x.values)
     if isinstance(x, IntVec):
         return list(x.values)
+    if isinstance(x, List):
+        return list(x.items)
     return [x]
+
+
+def _selected(args: tuple[Any, ...], cmd: str) -> list[Any]:
+    """The entries product and sum combine: of the one argument x (an ideal, matrix row by row, intvec,
+    intmat or list) or of the arguments, those at the positions of a last intvec argument
+    (None when one is outside)."""
+    args = list(args)
+    v = args.pop() if len(args) > 1 and isinstance(args[-1], (IntVec, int)) else None
+    if not args:
+        raise MechRuntimeError(f"{cmd} needs something to combine")
+    ents = _entries(args[0]) if len(args) == 1 else args
+    if v is not None:
+        pos = list(v) if isinstance(v, IntVec) else [v]
+        if any(not 1 <= k <= len(ents) for k in pos):
+            return None
+        ents = [ents[k - 1] for k in pos]
+    return ents
 
 
 @command("product", lib=LIB)
 def product(*args: Any) -> Any:
-    """product(x[, v]): the product of the entries of the ideal, matrix (row by row), intvec or intmat
-    x, or of those at the positions in the intvec v (1 when a position is outside x); product(a, b,
-    ...[, v]): of the list of the arguments.
+    """product(x[, v]): the product of the entries of the ideal, matrix (row by row), intvec, intmat or
+    list x, or of those at the positions in the intvec v (1 when a position is outside x); product(a,
+    b, ...[, v]): of the arguments.
 
     Example:
       LIB "general.lib";
@@ -206,19 +225,35 @@ def product(*args: Any) -> Any:
       product(intvec(2,3,4), 2..3);
       → 12
     """
-    args = list(args)
-    v = args.pop() if len(args) > 1 and isinstance(args[-1], (IntVec, int)) else None
-    if not args:
-        raise MechRuntimeError("product needs something to multiply")
-    ents = _entries(args[0]) if len(args) == 1 else args
-    if v is not None:
-        pos = list(v) if isinstance(v, IntVec) else [v]
-        if any(not 1 <= k <= len(ents) for k in pos):
-            return 1
-        ents = [ents[k - 1] for k in pos]
+    ents = _selected(args, "product")
+    if ents is None:
+        return 1
     out = ents[0]
     for e in ents[1:]:
         out = out * e
+    return out
+
+
+@command("sum", lib=LIB)
+def sum_(*args: Any) -> Any:
+    """sum(x[, v]): the sum of the entries of the ideal, matrix (row by row), intvec, intmat or list x,
+    or of those at the positions in the intvec v (0 when a position is outside x); sum(a, b, ...[, v]):
+    of the arguments.
+
+    Example:
+      LIB "general.lib";
+      ring r = 0,(x,y,z),dp;
+      sum(maxideal(1));
+      → x+y+z
+      sum(intvec(1..100));
+      → 5050
+    """
+    ents = _selected(args, "sum")
+    if ents is None:
+        return 0
+    out = ents[0]
+    for e in ents[1:]:
+        out = out + e
     return out
 
 

@@ -62,7 +62,8 @@ number e = number_e(12); e;
 ideal m = maxideal(1); product(m); product(m[2..3]);
 matrix M[2][3] = 1,x,2,y,3,z; product(M); product(M,intvec(2,4,6));
 intvec iv = 1,2,3,4,5,6,7,8,9; product(iv,1..5); product(iv,12);
-intmat T[2][3] = 1,1,1,2,2,2; product(T,3..5);
+intmat T[2][3] = 1,1,1,2,2,2; product(T,3..5); product(list(x,y,3));
+sum(m); sum(M,intvec(2,4,6)); sum(iv,2..4); sum(intvec(1..100)); sum(M,9); sum(T);
 primecoeffs(ideal(-13x6y3z+4x5y4z,-10x4y2z-5x4yz2));
 lcm(ideal(x2-y2, x+y), x-y); lcm(2..6); lcm(2,3,6);
 """,
