@@ -276,8 +276,9 @@ def ring_str(r: Ring) -> str:
             for i in range(size):
                 row = b.weights[i * size:(i + 1) * size]
                 lines.append("//                  : weights  " + " ".join(str(w) for w in row))
-        elif b.weights:
-            lines.append("//                  : weights  " + " ".join(str(w) for w in b.weights))
+        elif b.weights:  # as Singular: each weight right-aligned in the width of the longest name
+            width = max(len(n) for n in r.names[start:start + size])
+            lines.append("//                  : weights " + "".join(f" {w:>{width}}" for w in b.weights))
         if b.kind != "a":
             start += size
     gens = quotient_ideal(r.poly)  # a qring: its ideal
