@@ -447,15 +447,31 @@ def _primdec(I: Ideal) -> list[tuple[list[Poly], list[Poly]]]:
 
 @command("primaryDecomposition", dialect="m2")
 @in_quotients
-def primary_decomposition(I: Ideal) -> List:
-    """primaryDecomposition I: primary ideals whose intersection is I."""
+def primary_decomposition(ctx, I: Ideal) -> List:
+    """primaryDecomposition I: primary ideals whose intersection is I (with Strategy =>
+    EisenbudHunekeVasconcelos: primaryComponent(I, P) for each associated prime P)."""
+    strategy = ctx.m2_options.get("Strategy")
+    if getattr(strategy, "name", None) == "EisenbudHunekeVasconcelos":
+        from .m2_primdec import primary_component
+        return List([primary_component(I, P) for P in associated_primes(I).items])
+    from .m2_primdec import monomial_primdec
+    mono = monomial_primdec(I)
+    if mono is not None:
+        return List([q for q, _ in mono])
     return List([_reduced(I, q) for q, _ in _primdec(I)])
+
+
+primary_decomposition.m2_options = ("Strategy",)
 
 
 @command("associatedPrimes", dialect="m2")
 @in_quotients
 def associated_primes(I: Ideal) -> List:
     """associatedPrimes I: the associated primes of I."""
+    from .m2_primdec import monomial_primdec
+    mono = monomial_primdec(I)
+    if mono is not None:
+        return List([p for _, p in mono])
     out: list[Ideal] = []
     for _, p in _primdec(I):
         P = _reduced(I, p)

@@ -314,6 +314,31 @@ def ring(x: Poly | Ideal | Matrix | Number) -> Ring:
     return _owner(x.ring)
 
 
+@command("ambient", dialect="m2")
+@in_quotients
+def ambient_ring(R: M2Ring) -> M2Ring:
+    """ambient R: the ring a quotient ring R = A/I is a quotient of (A)."""
+    if R.parent is None:
+        raise MechRuntimeError("ambient R: R is not a quotient ring")
+    return R.parent
+
+
+@command("presentation", dialect="m2")
+@in_quotients
+def ring_presentation(R: M2Ring) -> Matrix:
+    """presentation R: the relations of a quotient ring as one row over its polynomial ring (the
+    last quotient's first)."""
+    A = R.ambient()
+    if R.parent is None or A.info.get("localized_at") is not None:
+        raise MechRuntimeError("presentation R is supported for quotients of polynomial rings")
+    rels: list[Poly] = []
+    r = R
+    while r.parent is not None:
+        rels.extend(Poly(A.poly, dict(g.terms)) for g in r.relations)
+        r = r.parent
+    return Matrix(A.poly, 1, len(rels), rels)
+
+
 # ---------------------------------------------------------------- ring maps
 @command("map", dialect="m2")
 @in_quotients
