@@ -30,7 +30,7 @@ from .m2_printing import to_string
 from .m2_ringcons import build_ring
 from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
-from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function,
+from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Iterator, M2Function,
                         M2Set, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
 from ..kernel import Poly
@@ -119,7 +119,7 @@ class M2Interpreter(M2Control, Interpreter):
             if not value.name:
                 value.name = name
             self.use(value)
-        elif isinstance(value, M2Function) and value.name == "-*Function*-":
+        elif isinstance(value, (M2Function, Iterator)) and value.name == "-*Function*-":
             value.name = name
         elif isinstance(value, CoeffRing) and value.characteristic and not value.name.isidentifier():
             value.name = name

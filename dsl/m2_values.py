@@ -154,6 +154,18 @@ class Partial:
 FUNCTIONS = (M2Function, CommandRef, Composed, Partial, RingMap)
 
 
+class Iterator:
+    """``iterator x`` (and ``apply``/``select`` on one or on a string): a lazy stream of values that
+    ``next`` takes one by one; printed by the name it was first assigned to, as Macaulay2 does."""
+
+    __slots__ = ("source", "name")
+    type_name = "Iterator"
+
+    def __init__(self, source: Iterable[Any]) -> None:
+        self.source = iter(source)
+        self.name = "-*Function*-"
+
+
 @dataclass(eq=False)
 class IndexedTable:
     """The value of ``x`` once a ring has variables ``x_i``: its indexed variables by index."""
