@@ -148,6 +148,8 @@ class M2Interpreter(M2Control, Interpreter):
             return name == "true"
         if name == "null":
             return NONE
+        if name == "oo" and self.last is not NONE:  # the last value printed
+            return self.last
         if name == "QQ":
             return QQ_RING
         if name == "ZZ":

@@ -102,6 +102,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         if not isinstance(b, (List, ExprList)):
             raise MechTypeError(f"f \\ L takes a list, not a {typeof(b)}")
         return type(b)([apply(a, [x]) for x in b.items])
+    if op == "//" and isinstance(b, FUNCTIONS):  # x // f: f x
+        return apply(b, [a])
     if op == "/" and isinstance(a, (List, ExprList)) and isinstance(b, FUNCTIONS):  # L / f: apply(L, f)
         return type(a)([apply(b, [x]) for x in a.items])
     if op == "@@" and isinstance(a, FUNCTIONS) and isinstance(b, FUNCTIONS):
