@@ -14,7 +14,7 @@ from itertools import combinations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
-from ..dsl.m2_local import local_ideal_subset, localized_at
+from ..dsl.m2_local import in_local_rings, local_ideal_subset, localized_at
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_rings import in_quotients, is_integral
 from ..dsl.m2_values import FUNCTIONS, Array, Iterator, M2Set, Symbol, Tally
@@ -455,8 +455,12 @@ def _extreme(xs: tuple, sign: int, what: str) -> Any:
 
 @command("max", dialect="m2")
 @in_quotients
+@in_local_rings
 def max_(*xs: Any) -> Any:
-    """max L (or max(a, b, ...)): the largest entry."""
+    """max L (or max(a, b, ...)): the largest entry; max R_P: the maximal ideal of a local ring."""
+    if len(xs) == 1 and localized_at(xs[0]) is not None:
+        S = xs[0]
+        return Ideal(S.poly, [Poly(S.poly, dict(g.terms)) for g in localized_at(S).nonzero()])
     return _extreme(xs, 1, "max")
 
 

@@ -8,7 +8,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_local import LocalFraction, in_local_rings, local_ring, localized_at, to_global, to_local
 from ..dsl.m2_modules import CyclicModule, FreeModule
-from ..dsl.m2_rings import M2Ring
+from ..dsl.m2_rings import M2Ring, in_quotients
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Matrix
 from ..kernel import Poly
@@ -62,6 +62,14 @@ def lift_up(v: Any) -> Any:
 def ring_of_fraction(f: LocalFraction) -> M2Ring:
     """ring f: the local ring of a fraction."""
     return f.num.ring.owner
+
+
+@command("ring", dialect="m2")
+@in_local_rings
+@in_quotients
+def ring_of_module(M: CyclicModule | FreeModule) -> M2Ring:
+    """ring M: the ring of the module R^1/I (or R^n)."""
+    return M.ring.owner if isinstance(M, CyclicModule) else M.ring
 
 
 @command("numerator", dialect="m2")
