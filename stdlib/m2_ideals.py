@@ -13,7 +13,7 @@ from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, normal, quotie
                              tower_terms)
 from ..dsl.m2_values import MonomialIdeal, RingMap
 from ..dsl.registry import command
-from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
+from ..dsl.values import ExprList, Ideal, List, Matrix, Number, OrderBlock, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
 from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, gens
@@ -321,6 +321,21 @@ def ambient_ring(R: M2Ring) -> M2Ring:
     if R.parent is None:
         raise MechRuntimeError("ambient R: R is not a quotient ring")
     return R.parent
+
+
+@command("describe", dialect="m2")
+@in_quotients
+def describe(R: M2Ring) -> str:
+    """describe R: how R was made (a polynomial ring with the default order and degrees, or a quotient)."""
+    if R.parent is not None:
+        return R.describe()
+    own = len(R.own)
+    default = R.blocks[:1] == (OrderBlock("dp", own),) and len(R.blocks) == 2 and R.blocks[1].kind == "C"
+    if R.info or not default or any(d != 1 for d in R.degrees[:own]) or R.max_exponent is not None:
+        raise MechRuntimeError("describe is supported for quotients and for polynomial rings with the default "
+                               "order and degrees")
+    degrees = f"{own}:1" if own > 1 else "1"
+    return f"{R.describe()[:-1]}, Degrees => {{{degrees}}}, Heft => {{1}}]"
 
 
 @command("presentation", dialect="m2")
