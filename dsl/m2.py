@@ -374,7 +374,10 @@ class M2Interpreter(M2Control, Interpreter):
             v = self.registry.invoke(cmd, self, list(args))
         except (LimitExceeded, MemoryError) as e:
             raise limit_error(e, cmd.name) from None
-        if cmd.overloads[0].func.__annotations__.get("return") in ("bool", bool):
+        func = cmd.overloads[0].func
+        if hasattr(func, "m2_result"):  # the command's own value from the registry's (a bool or an index)
+            return func.m2_result(args, v)
+        if func.__annotations__.get("return") in ("bool", bool):
             return bool(v)  # the registry gives Singular's 0 and 1
         return v
 

@@ -116,3 +116,19 @@ def _unit(f: Poly, unit: Any) -> Any:
     if field.characteristic:
         return int(field.symmetric(unit))
     return int(unit.p) if unit.q == 1 else unit
+
+
+@command("symmetricPower", dialect="m2")
+def symmetric_power(d: int, M: Matrix) -> Matrix:
+    """symmetricPower(d, m) for a one-row matrix m: the row of the products of d of its entries
+    (indices i1 <= ... <= id, in lexicographic order)."""
+    from itertools import combinations_with_replacement
+    if M.nrows != 1 or type(d) is not int or d < 0:
+        raise MechRuntimeError("symmetricPower(d, m) is supported for a one-row matrix m and d >= 0")
+    out = []
+    for idx in combinations_with_replacement(range(M.ncols), d):
+        p = M.ring.one()
+        for i in idx:
+            p = p * M.entries[i]
+        out.append(p)
+    return Matrix(M.ring, 1, len(out), out)

@@ -4,11 +4,13 @@
 the primary decomposition of the kernel."""
 from __future__ import annotations
 
+from typing import Any
+
 from ..dsl.errors import MechRuntimeError
 from ..dsl.m2_values import MonomialIdeal
 from ..dsl.m2_rings import in_quotients
 from ..dsl.registry import command
-from ..dsl.values import Ideal, List
+from ..dsl.values import NONE, Ideal, List
 from ..kernel import Poly
 from ..kernel import ideals as K
 from .m2 import _global, _lift, _minimal, _primdec, _reduced, associated_primes, minimal_primes
@@ -177,3 +179,23 @@ def monomial_primdec(I: Ideal) -> list[tuple[Ideal, Ideal]] | None:
         prime = cast(ring, [ring.gen(i) for i in reversed(support)])
         out.append((comp, prime))
     return out
+
+
+@command("radicalContainment", dialect="m2")
+@in_quotients
+def radical_containment(g: Poly | Ideal, I: Ideal) -> Any:
+    """radicalContainment(g, I): whether g is in the radical of I (Rabinowitsch: I : g^infinity is
+    the unit ideal); for an ideal G: null when G lies in it, else the index of G's first generator
+    that does not."""
+    _global(I, "radicalContainment")
+    basis = K.std(_lift(I), ring=I.ring)
+
+    def inside(f: Poly) -> bool:
+        return K.is_unit(K.saturate_poly(basis, f, ring=I.ring, is_basis=True))
+    if isinstance(g, Ideal):
+        return next((i for i, f in enumerate(g.gens) if not inside(f)), NONE)
+    return inside(g)
+
+
+#: an element's answer is a Boolean (the registry gives 0 or 1), an ideal's an index or null
+radical_containment.m2_result = lambda args, v: v if isinstance(args[0], Ideal) else bool(v)

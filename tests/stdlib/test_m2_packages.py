@@ -61,6 +61,16 @@ print toString position({10,20,43,105,6,93}, odd, Reverse => true)
 print toString position((10,20,43),(18,82,12), (a,b) -> a>b)
 """,
      '1\n(2,3)\nStopIteration\n{o, o}\nF\n{1, 4, 5}\n(fb,oa,or)\n{1, 3, 5, 7, 9}\n5\n2\n'),
+    ("symmetric_power_and_radical_containment", """R = ZZ/32003[a..f];
+print toString symmetricPower(2, matrix{{a,b,c}})
+print toString symmetricPower(3, matrix{{c,a}})
+F = map(R, R, symmetricPower(2, matrix{{a,b,c}}));
+I = ker F;
+print toString radicalContainment(I_0, I^2)
+print toString radicalContainment(I_0 - a^2, I^2)
+print toString radicalContainment(ideal(b, I_0), I^2)
+""",
+     'matrix {{a^2, a*b, a*c, b^2, b*c, c^2}}\nmatrix {{c^3, a*c^2, a^2*c, a^3}}\ntrue\nfalse\n0\n'),
     ("hilbert_samuel", """R = QQ[x,y,z];
 RP = localRing(R, ideal gens R);
 M = RP^1/ideal(x^5+y^3+z^3,x^3+y^5+z^3,x^3+y^3+z^5);
