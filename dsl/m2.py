@@ -423,7 +423,8 @@ class M2Interpreter(M2Control, Interpreter):
 
 
 #: options of Macaulay2's functions that do not change the value (how it is computed, what is printed)
-NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check", "Unmixed"}
+NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check", "Unmixed",
+                   "CompleteIntersection"}
 
 
 def _options(cmd: Any, args: list[Any]) -> tuple[list[Any], dict[str, Any]]:

@@ -63,8 +63,8 @@ def _polys(ctx, args: tuple, ring: Any = None) -> list[Poly]:
     for a in args:
         if isinstance(a, (List, ExprList)):
             out.extend(_polys(ctx, tuple(a.items), ring))
-        elif isinstance(a, Matrix):
-            out.extend(a.entries)
+        elif isinstance(a, Matrix):  # column by column, as Macaulay2 flattens a matrix
+            out.extend(a.entries[i * a.ncols + j] for j in range(a.ncols) for i in range(a.nrows))
         elif isinstance(a, Ideal):
             out.extend(a.gens)
         elif isinstance(a, (Poly, Number)):

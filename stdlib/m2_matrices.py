@@ -55,9 +55,13 @@ def diff(x: Poly | Matrix, f: Poly | Ideal | Matrix) -> Any:
     differential operator (x^2*y: d^3/dx^2dy) applied to f; diff(M, f): to each entry of M."""
     if isinstance(x, Poly) and x.ring is not f.ring and hasattr(f.ring, "owner"):  # a coefficient ring's variable
         x = lift_to(x, f.ring.owner)
+    if isinstance(x, Matrix) and isinstance(f, Matrix):  # entry (i*r+k, j*s+l): diff(x_(i,j), f_(k,l))
+        p, q, r, t = x.nrows, x.ncols, f.nrows, f.ncols
+        return Matrix(f.ring, p * r, q * t, [_operator(x.entries[i * q + j], f.entries[k * t + m])
+                                             for i in range(p) for k in range(r) for j in range(q) for m in range(t)])
     if isinstance(x, Matrix):
         if not isinstance(f, Poly):
-            raise MechTypeError("diff(M, f) takes a matrix M and a polynomial f")
+            raise MechTypeError("diff(M, f) takes a matrix M and a polynomial f (or a matrix)")
         return Matrix(x.ring, x.nrows, x.ncols, [_operator(p, f) for p in x.entries])
     if isinstance(f, Poly):
         return _operator(x, f)

@@ -13,7 +13,7 @@ from ..dsl.registry import command
 from ..dsl.values import NONE, Ideal, List
 from ..kernel import Poly
 from ..kernel import ideals as K
-from .m2 import _global, _lift, _minimal, _primdec, _reduced, associated_primes, minimal_primes
+from .m2 import _global, _lift, _minimal, _primdec, _quotient_of, _reduced, associated_primes, minimal_primes
 from .m2_ideals import trim
 
 
@@ -43,11 +43,14 @@ def _components(I: Ideal) -> list[tuple[Ideal, Ideal, int]]:
 def _intersection(I: Ideal, parts: list[Ideal]) -> Ideal:
     if not parts:
         return Ideal(I.ring, [I.ring.one()])
-    polys = K.intersect(*[J.nonzero() for J in parts], ring=I.ring)
+    polys = K.intersect(*[_lift(J) for J in parts], ring=I.ring)
+    if _quotient_of(I.ring) is not None:  # computed on the preimages in R: back in R/Q, trimmed
+        return trim(_reduced(I, K.std(polys, ring=I.ring)))
     return _minimal(I, sorted(polys, key=lambda p: I.ring.order.key(p.lm())))
 
 
 @command("topComponents", dialect="m2")
+@in_quotients
 def top_components(I: Ideal) -> Ideal:
     """topComponents I: the intersection of I's primary components of the largest dimension."""
     comps = _components(I)
@@ -58,6 +61,7 @@ def top_components(I: Ideal) -> Ideal:
 
 
 @command("removeLowestDimension", dialect="m2")
+@in_quotients
 def remove_lowest_dimension(I: Ideal) -> Ideal:
     """removeLowestDimension I: the intersection of I's primary components above the lowest
     dimension (the unit ideal when all have one dimension)."""

@@ -71,6 +71,15 @@ print toString radicalContainment(I_0 - a^2, I^2)
 print toString radicalContainment(ideal(b, I_0), I^2)
 """,
      'matrix {{a^2, a*b, a*c, b^2, b*c, c^2}}\nmatrix {{c^3, a*c^2, a^2*c, a^3}}\ntrue\nfalse\n0\n'),
+    ("matrices_flatten_by_columns", """R = ZZ/101[a..f];
+print toString ideal matrix{{a,b},{c,d},{e,f}}
+print toString diff(matrix{{a,b},{c,a}}, matrix{{a^2*b, b*c},{a*c^2, a^3*b^2*c}})
+S = R/(a^3, b^3);
+print toString topComponents ideal(a^2*c, a*d)
+print toString removeLowestDimension ideal(a^2*c, a*d)
+""",
+     'ideal(a,c,e,b,d,f)\nmatrix {{2*a*b, 0, a^2, c}, {c^2, 3*a^2*b^2*c, 0, 2*a^3*b*c}, {0, b, 2*a*b, 0}, '
+     '{2*a*c, a^3*b^2, c^2, 3*a^2*b^2*c}}\nideal a\nideal(a*d,a^2)\n'),
     ("hilbert_samuel", """R = QQ[x,y,z];
 RP = localRing(R, ideal gens R);
 M = RP^1/ideal(x^5+y^3+z^3,x^3+y^5+z^3,x^3+y^3+z^5);
