@@ -265,11 +265,6 @@ def _no_zz(I: Ideal, what: str) -> None:
         raise MechRuntimeError(f"{what} of an ideal over ZZ is not supported by mech (a Gröbner basis over ZZ)")
 
 
-def _no_quotient(I: Ideal, what: str) -> None:
-    if _quotient_of(I.ring) is not None:
-        raise MechRuntimeError(f"{what} on ideals of a quotient ring R/I is not supported by mech")
-
-
 def _global(I: Ideal, cmd: str) -> None:
     if not I.ring.order.is_global:
         raise MechRuntimeError(f"{cmd} needs a ring with a global monomial order")
@@ -297,8 +292,10 @@ def quotient(a: Any, b: Any) -> Ideal:
     """``I : J`` (``I : f``), the ideal quotient."""
     if isinstance(a, Ideal) and isinstance(b, (Ideal, Poly)):
         _global(a, "the ideal quotient")
-        _no_quotient(a, "the ideal quotient I : J")
         other = b.nonzero() if isinstance(b, Ideal) else [b]
+        if _quotient_of(a.ring) is not None:  # in R/Q: (I + Q) : J, back in R/Q
+            from .m2_ideals import trim
+            return trim(_reduced(a, K.std(K.quotient(_lift(a), other, ring=a.ring), ring=a.ring)))
         if is_integral(a.ring):
             return Ideal(a.ring, Z.quotient(a.nonzero(), other, a.ring))
         return _minimal(a, _sorted(a, K.quotient(a.nonzero(), other, ring=a.ring)))
@@ -306,12 +303,14 @@ def quotient(a: Any, b: Any) -> Ideal:
 
 
 @command("quotient", dialect="m2")
+@in_quotients
 def quotient_cmd(I: Ideal, J: Ideal | Poly) -> Ideal:
     """quotient(I, J): the ideal quotient I : J."""
     return quotient(I, J)
 
 
 @command("saturate", dialect="m2")
+@in_quotients
 def saturate(I: Ideal, J: Ideal | Poly | None = None) -> Ideal:
     """saturate(I, J): the saturation I : J^infinity (J a polynomial or ideal; without J the ideal
     of the variables)."""
@@ -320,6 +319,9 @@ def saturate(I: Ideal, J: Ideal | Poly | None = None) -> Ideal:
     if J is None:
         J = Ideal(ring, [ring.gen(i) for i in range(ring.nvars)])
     other = J.nonzero() if isinstance(J, Ideal) else [J]
+    if _quotient_of(ring) is not None:  # in R/Q: (I + Q) : J^infinity, back in R/Q
+        from .m2_ideals import trim
+        return trim(_reduced(I, K.std(K.saturate(_lift(I), other, ring=ring)[0], ring=ring)))
     if is_integral(ring):
         return Ideal(ring, Z.saturate(I.nonzero(), other, ring))
     return _minimal(I, _sorted(I, K.saturate(I.nonzero(), other, ring=ring)[0]))

@@ -80,6 +80,14 @@ print toString removeLowestDimension ideal(a^2*c, a*d)
 """,
      'ideal(a,c,e,b,d,f)\nmatrix {{2*a*b, 0, a^2, c}, {c^2, 3*a^2*b^2*c, 0, 2*a^3*b*c}, {0, b, 2*a*b, 0}, '
      '{2*a*c, a^3*b^2, c^2, 3*a^2*b^2*c}}\nideal a\nideal(a*d,a^2)\n'),
+    ("quotients_in_quotient_rings", """R = ZZ/101[vars(0..3)]/(a*d);
+I2 = ideal(a^3);
+print toString quotient(I2, ideal(a^3, b*d))
+print toString (I2 : ideal(a))
+print toString quotient(I2, d)
+print toString saturate(ideal(b*d^2), a)
+""",
+     'ideal a\nideal(d,a^2)\nideal a\nideal d\n'),
     ("hilbert_samuel", """R = QQ[x,y,z];
 RP = localRing(R, ideal gens R);
 M = RP^1/ideal(x^5+y^3+z^3,x^3+y^5+z^3,x^3+y^3+z^5);
