@@ -275,15 +275,19 @@ def _homogenize(p: Poly, i: int, degs: tuple) -> Poly:
 
 
 @command("homogenize", dialect="m2")
+@in_quotients
 def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
-    """homogenize(f, v): f made homogeneous with the variable v; homogenize(I, v): the ideal of
-    the homogenized Gröbner basis (a degree order: I's homogenization)."""
+    """homogenize(f, v): f made homogeneous with the variable v (in R/Q: its normal form, the result
+    reduced); homogenize(I, v): the ideal of the homogenized Gröbner basis (a degree order: I's
+    homogenization)."""
     i = _indices(f.ring, v)[0]
     degs = _owner(f.ring).degrees or (1,) * f.ring.nvars
     if isinstance(f, Poly):
-        return _homogenize(f, i, degs)
+        return normal(_homogenize(f, i, degs))
     if isinstance(f, Matrix):
-        return Matrix(f.ring, f.nrows, f.ncols, [_homogenize(p, i, degs) for p in f.entries])
+        return Matrix(f.ring, f.nrows, f.ncols, [normal(_homogenize(p, i, degs)) for p in f.entries])
+    if _quotient_of(f.ring) is not None:
+        raise MechRuntimeError("homogenize of an ideal of a quotient ring R/I is not supported by mech")
     _no_zz(f, "homogenize")
     order = f.ring.order
     if not order.is_global or any(b.kind not in ("dp", "Dp", "wp", "Wp") for b in order.blocks) or len(order.blocks) != 1:
