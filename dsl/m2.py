@@ -30,8 +30,8 @@ from .m2_printing import to_string
 from .m2_ringcons import build_ring
 from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
-from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Iterator, M2Function,
-                        M2Set, Opt, Partial, RingMap, Symbol)
+from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Factored, Iterator,
+                        M2Function, M2Set, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
 from ..kernel import Poly
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -258,6 +258,8 @@ class M2Interpreter(M2Control, Interpreter):
             return len(v)
         if isinstance(v, Ideal):
             return len(v.gens)
+        if isinstance(v, Factored):  # the factors, and the unit when it is printed
+            return len(v.factors) + (v.unit != 1)
         raise MechTypeError(f"# needs a list, sequence or string, not a {typeof(v)}")
 
     # ------------------------------------------------------------ values

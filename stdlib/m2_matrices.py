@@ -1,6 +1,7 @@
 """The Macaulay2 dialect's commands on matrices and polynomials: jacobian, minors, det, diff, sub, factor."""
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
@@ -119,7 +120,18 @@ def _unit(f: Poly, unit: Any) -> Any:
     field = f.ring.field
     if field.characteristic:
         return int(field.symmetric(unit))
-    return int(unit.p) if unit.q == 1 else unit
+    return int(unit.p) if unit.q == 1 else Fraction(int(unit.p), int(unit.q))
+
+
+@command("value", dialect="m2")
+def value(F: Factored) -> Poly:
+    """value F: the product a factorization stands for."""
+    out = F.factors[0][0].ring.one() if F.factors else None
+    for g, k in F.factors:
+        out = out * g ** k
+    if out is None:
+        return F.unit
+    return out * out.ring.field(F.unit) if F.unit != 1 else out
 
 
 @command("symmetricPower", dialect="m2")

@@ -88,6 +88,17 @@ print toString quotient(I2, d)
 print toString saturate(ideal(b*d^2), a)
 """,
      'ideal a\nideal(d,a^2)\nideal a\nideal d\n'),
+    ("factor_over_zz", """R = ZZ[x,y,z];
+d = factor((x - 2^32*y) * (x + 2^33*z - 77*y));
+print toString d
+print(#d)
+print toString factor(6*x^2-6)
+print(#factor(6*x^2-6))
+S = QQ[t];
+print toString factor(t/2+1)
+print toString value factor(t/2+1)
+""",
+     '(x-4294967296*y)*(x-77*y+8589934592*z)\n2\n(x-1)*(x+1)*(6)\n3\n(t+2)*(1/2)\n(1/2)*t+1\n'),
     ("hilbert_samuel", """R = QQ[x,y,z];
 RP = localRing(R, ideal gens R);
 M = RP^1/ideal(x^5+y^3+z^3,x^3+y^5+z^3,x^3+y^3+z^5);
