@@ -48,17 +48,21 @@ def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
 @command("vars", dialect="m2")
 @in_quotients
 def vars_(R: Ring | int | List | ExprList) -> Any:
-    """vars R: the one-row matrix of R's variables; vars n, vars(0..3): Macaulay2's symbols number
-    n (a..z, A..Z, then x0, x1, ...), values of the variables where a ring has them."""
+    """vars R: the one-row matrix of R's variables; vars n, vars(0..3), vars(0..2, 7): Macaulay2's
+    symbols number n (a..z, A..Z, then x0, x1, ...; X1, X2, ... for -1, -2, ...), values of the
+    variables where a ring has them."""
     if not isinstance(R, Ring):
         from ..dsl.m2_values import Symbol
-        ns = [R] if type(R) is int else list(R.items)
+
+        def flat(v: Any) -> list:
+            return [x for y in v.items for x in flat(y)] if isinstance(v, (List, ExprList)) else [v]
         out = []
-        for n in ns:
-            if type(n) is not int or n < 0:
-                raise MechRuntimeError("vars(n) takes numbers n >= 0")
-            out.append(Symbol(chr(97 + n) if n < 26 else chr(65 + n - 26) if n < 52 else f"x{n - 52}"))
-        return out[0] if type(R) is int else type(R)(out)
+        for n in flat(R):
+            if type(n) is not int:
+                raise MechRuntimeError("vars(n) takes integers n")
+            out.append(Symbol(f"X{-n}" if n < 0 else chr(97 + n) if n < 26 else chr(65 + n - 26) if n < 52
+                              else f"x{n - 52}"))
+        return out[0] if type(R) is int else type(R)(out) if isinstance(R, List) else ExprList(out)
     xs = gens(R).items
     return Matrix(R.poly, 1, len(xs), xs)
 

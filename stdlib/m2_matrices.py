@@ -23,13 +23,15 @@ def jacobian(I: Ideal | Matrix) -> Matrix:
 
 
 @command("minors", dialect="m2")
-def minors(k: int, M: Matrix) -> Ideal:
+def minors(ctx, k: int, M: Matrix) -> Ideal:
     """minors(k, M): the ideal of the k x k minors of M (column subsets outermost, as Macaulay2
-    lists them; zero minors left out)."""
+    lists them; zero minors left out; Limit => n: the first n; k <= 0: the unit ideal)."""
     from itertools import combinations
 
     from ..kernel import matrix as KM
-    if not 0 < k <= min(M.nrows, M.ncols):
+    if k <= 0:
+        return Ideal(M.ring, [M.ring.one()])
+    if k > min(M.nrows, M.ncols):
         raise MechRuntimeError(f"minors: k must be between 1 and {min(M.nrows, M.ncols)}")
     found = []
     for cols in combinations(range(1, M.ncols + 1), k):
@@ -38,7 +40,13 @@ def minors(k: int, M: Matrix) -> Ideal:
             d = KM.det(sub)
             if not d.is_zero():
                 found.append(d)
+    limit = ctx.m2_options.get("Limit")
+    if type(limit) is int:
+        found = found[:limit]
     return Ideal(M.ring, found, is_std=not found)
+
+
+minors.m2_options = ("Limit",)
 
 
 @command("det", dialect="m2")

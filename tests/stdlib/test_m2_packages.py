@@ -99,6 +99,14 @@ print toString factor(t/2+1)
 print toString value factor(t/2+1)
 """,
      '(x-4294967296*y)*(x-77*y+8589934592*z)\n2\n(x-1)*(x+1)*(6)\n3\n(t+2)*(1/2)\n(1/2)*t+1\n'),
+    ("minors_and_vars", """R = ZZ[a..f];
+M = matrix{{a,b,c},{d,e,f}};
+print toString minors(2, M, Limit => 1)
+print toString minors(0, M)
+print toString vars(-3..-1)
+print toString vars(3 .. 5, 51 .. 53)
+""",
+     'ideal(-b*d+a*e)\nideal 1\n(X3,X2,X1)\n(d,e,f,Z,x0,x1)\n'),
     ("hilbert_samuel", """R = QQ[x,y,z];
 RP = localRing(R, ideal gens R);
 M = RP^1/ideal(x^5+y^3+z^3,x^3+y^5+z^3,x^3+y^3+z^5);
