@@ -12,7 +12,7 @@ from typing import Any, Iterable, Optional
 
 from ..kernel import GF, QQ, Poly
 from .errors import Source
-from .values import Ideal, List
+from .values import Ideal, List, Matrix
 
 
 @dataclass(frozen=True)
@@ -113,6 +113,11 @@ class RingMap:
     target: Any
     source: Any
     images: tuple[Poly, ...]
+
+    @property
+    def m2_fields(self) -> dict[str, Any]:
+        """``F.matrix``: the one-row matrix of the images."""
+        return {"matrix": Matrix(self.target.poly, 1, len(self.images), list(self.images))}
 
 
 @dataclass(eq=False)

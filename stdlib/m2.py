@@ -138,6 +138,7 @@ def _classic(text: str) -> str:
 
 
 @command("matrix", dialect="m2")
+@in_quotients
 def matrix(ctx, rows: List) -> Matrix:
     """matrix {{a, b}, {c, d}}: the matrix with these rows."""
     ring = _first_ring(rows.items) or ctx.basering().poly

@@ -11,8 +11,8 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, normal, quotient_ring, term_degree,
                              tower_terms)
-from ..dsl.m2_values import MonomialIdeal, RingMap
-from ..dsl.registry import command
+from ..dsl.m2_values import MonomialIdeal, Opt, RingMap
+from ..dsl.registry import command, operator
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, OrderBlock, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
@@ -369,9 +369,16 @@ def map_(ctx, target: Ring, source: Ring, images: List | Matrix | None = None) -
     """map(S, R, {a, b, ...}): the ring map R -> S sending R's variables to a, b, ...;
     map(S, R): variables to the variables of the same names (others to 0)."""
     n = source.poly.nvars
-    if images is None:
+    opts = isinstance(images, List) and images.items and all(isinstance(x, Opt) for x in images.items)
+    if images is None or opts:  # variables to those of the same names (others to 0); {x => f, ...}: x to f
         ims = [target.poly.gen(target.poly.names.index(x)) if x in target.poly.names else target.poly.zero()
                for x in source.poly.names]
+        for o in images.items if opts else ():
+            key = o.key
+            if not (isinstance(key, Poly) and len(key.terms) == 1 and sum(key.lm()) == 1
+                    and key.ring.names == source.poly.names):
+                raise MechRuntimeError("map(S, R, {x => f, ...}) takes variables x of R")
+            ims[key.lm().index(1)] = _polys(ctx, (o.value,), target.poly)[0]
     else:
         ims = _polys(ctx, (images,), target.poly)
         if len(ims) != n:
@@ -379,10 +386,50 @@ def map_(ctx, target: Ring, source: Ring, images: List | Matrix | None = None) -
     return RingMap(target, source, tuple(normal(p) for p in ims))
 
 
+@operator("*", dialect="m2")
+def compose(g: Any, f: Any) -> Any:
+    """``g * f`` for ring maps R -> S -> T: the composite R -> T (x to g(f(x)))."""
+    if not (isinstance(g, RingMap) and isinstance(f, RingMap)):
+        return NotImplemented
+    if f.target is not g.source:
+        raise MechTypeError("g * f: f's target is not g's source")
+    from ..dsl.m2_maps import apply_map
+    return RingMap(g.target, f.source, tuple(apply_map(g, p) for p in f.images))
+
+
 @command("kernel", dialect="m2")
 @command("ker", dialect="m2")
 def kernel(f: RingMap) -> Ideal:
     """kernel f (ker f): the ideal of the source mapped to 0."""
+    return _preimage(f, [])
+
+
+@command("preimage", dialect="m2")
+@in_quotients
+def preimage(f: RingMap, J: Ideal) -> Ideal:
+    """preimage(f, J): the ideal of the source mapped into the ideal J of the target."""
+    if J.ring is not f.target.poly:
+        raise MechTypeError("preimage(f, J): J is an ideal of f's target")
+    return _preimage(f, J.nonzero())
+
+
+@command("isInjective", dialect="m2")
+@in_quotients
+def is_injective(f: RingMap) -> bool:
+    """isInjective f: whether the ring map's kernel is zero."""
+    return not _preimage(f, []).nonzero()
+
+
+@command("coimage", dialect="m2")
+@in_quotients
+def coimage(f: RingMap) -> M2Ring:
+    """coimage f: the source modulo the kernel (the source itself when f is injective)."""
+    ker = _preimage(f, []).nonzero()
+    return quotient_ring(f.source, ker) if ker else f.source
+
+
+def _preimage(f: RingMap, extra: list[Poly]) -> Ideal:
+    """The ideal of the source mapped into the ideal of ``extra`` (and the target's relations)."""
     R, S = f.source, f.target
     if R.quotient is not None:
         raise MechRuntimeError("kernel of a map from a quotient ring is not supported by mech")
@@ -393,7 +440,7 @@ def kernel(f: RingMap) -> Ideal:
     def up(p: Poly, shift: int) -> Poly:
         return Poly(big, {(0,) * shift + e + (0,) * (m + n - shift - len(e)): c for e, c in p.terms.items()})
     rel = [up(R.poly.gen(i), m) - up(img, 0) for i, img in enumerate(f.images)]
-    rel += [up(q, 0) for q in (S.quotient.basis if S.quotient is not None else [])]
+    rel += [up(q, 0) for q in list(S.quotient.basis if S.quotient is not None else []) + list(extra)]
     kept = K.eliminate(rel, list(range(m)), ring=big)
     polys = [Poly(R.poly, {e[m:]: c for e, c in p.terms.items()}) for p in kept]
     I = Ideal(R.poly, polys)

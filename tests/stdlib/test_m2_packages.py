@@ -107,6 +107,18 @@ print toString vars(-3..-1)
 print toString vars(3 .. 5, 51 .. 53)
 """,
      'ideal(-b*d+a*e)\nideal 1\n(X3,X2,X1)\n(d,e,f,Z,x0,x1)\n'),
+    ("ring_maps", """R = QQ[a,b,c]; S = QQ[s,t];
+F = map(S,R,{s^3-t^2, s^3-t, s-t});
+print toString F.matrix
+print toString preimage(F, ideal(s-3))
+G = map(R,R,{a=>b*c,b=>a*c,c=>a*b});
+print toString(G*G)
+print isInjective G
+print toString coimage G
+print toString coimage map(S,R,{s,s,t})
+""",
+     'matrix {{s^3-t^2, s^3-t, s-t}}\nideal(b-c-24,c^2+a-6*c-18)\nmap(R,R,{a^2*b*c, a*b^2*c, a*b*c^2})\ntrue\nR\n'
+     'R/(a-b)\n'),
     ("hilbert_samuel", """R = QQ[x,y,z];
 RP = localRing(R, ideal gens R);
 M = RP^1/ideal(x^5+y^3+z^3,x^3+y^5+z^3,x^3+y^3+z^5);
