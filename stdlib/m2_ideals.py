@@ -386,6 +386,26 @@ def map_(ctx, target: Ring, source: Ring, images: List | Matrix | None = None) -
     return RingMap(target, source, tuple(normal(p) for p in ims))
 
 
+@command("map", dialect="m2")
+@in_quotients
+def map_from_matrix(source: Ring, images: Matrix) -> RingMap:
+    """map(R, m): the ring map from R to the ring of the one-row matrix m, R's variables to its entries."""
+    target = _owner(images.ring)
+    if images.nrows != 1 or images.ncols != source.poly.nvars:
+        raise MechRuntimeError(f"map(R, m) takes a matrix of one row of {source.poly.nvars} entries")
+    return RingMap(target, source, tuple(normal(p) for p in images.entries))
+
+
+@command("id", dialect="m2")
+@in_quotients
+def identity_map(R: M2Ring) -> RingMap:
+    """id_R: the identity map of the ring R."""
+    return RingMap(R, R, tuple(normal(R.poly.gen(i)) for i in range(R.poly.nvars)))
+
+
+identity_map.subscript_value = True
+
+
 @operator("*", dialect="m2")
 def compose(g: Any, f: Any) -> Any:
     """``g * f`` for ring maps R -> S -> T: the composite R -> T (x to g(f(x)))."""

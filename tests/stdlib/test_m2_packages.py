@@ -119,6 +119,15 @@ print toString coimage map(S,R,{s,s,t})
 """,
      'matrix {{s^3-t^2, s^3-t, s-t}}\nideal(b-c-24,c^2+a-6*c-18)\nmap(R,R,{a^2*b*c, a*b^2*c, a*b*c^2})\ntrue\nR\n'
      'R/(a-b)\n'),
+    ("ring_map_from_a_matrix_and_identity", """R = QQ[a..d];
+S = QQ[s,t];
+F = map(R, matrix{{s^4,s^3*t,s*t^3,t^4}});
+print toString F
+print toString kernel F
+print(map(S,S) === id_S)
+print(map(S,S,{t,s}) === id_S)
+""",
+     'map(S,R,{s^4, s^3*t, s*t^3, t^4})\nideal(b*c-a*d,c^3-b*d^2,a*c^2-b^2*d,b^3-a^2*c)\ntrue\nfalse\n'),
     ("hilbert_samuel", """R = QQ[x,y,z];
 RP = localRing(R, ideal gens R);
 M = RP^1/ideal(x^5+y^3+z^3,x^3+y^5+z^3,x^3+y^3+z^5);
