@@ -301,11 +301,14 @@ def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
 
 
 @command("substitute", dialect="m2")
+@in_quotients
 def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> Any:
     """substitute(f, {x => a, ...}), substitute(f, S): as sub; substitute(f, matrix {{a, b, ...}}):
     the variables replaced by a, b, ..."""
     if isinstance(where, Matrix):
         from ..dsl.maps import map_value
+        if _quotient_of(f.ring) is not None or _quotient_of(where.ring) is not None:
+            raise MechRuntimeError("substitute(f, M) in quotient rings is not supported by mech")
         if where.nrows != 1 or where.ncols != f.ring.nvars:
             raise MechRuntimeError(f"substitute(f, M): M is one row of {f.ring.nvars} entries")
         if f.ring.field.characteristic and all(p.is_constant() for p in where.entries):
@@ -344,6 +347,23 @@ def describe(R: M2Ring) -> str:
                                "order and degrees")
     degrees = f"{own}:1" if own > 1 else "1"
     return f"{R.describe()[:-1]}, Degrees => {{{degrees}}}, Heft => {{1}}]"
+
+
+@command("lift", dialect="m2")
+@in_quotients
+def lift(x: Poly | Ideal, A: M2Ring) -> Any:
+    """lift(f, A), lift(I, A): an element (its normal form) or ideal of a quotient ring R of A in A
+    (an ideal with R's relations over A)."""
+    R = _owner(x.ring)
+    r, rels = R, []
+    while r is not A and r.parent is not None:
+        rels.extend(Poly(A.poly, dict(g.terms)) for g in r.relations)
+        r = r.parent
+    if r is not A:
+        raise MechRuntimeError("lift(x, A): A is not a ring R is a quotient of")
+    if isinstance(x, Poly):
+        return Poly(A.poly, dict(x.terms))
+    return Ideal(A.poly, [Poly(A.poly, dict(g.terms)) for g in x.nonzero()] + rels)
 
 
 @command("presentation", dialect="m2")
@@ -526,15 +546,16 @@ def discriminant(f: Poly, x: Poly) -> Poly:
 
 
 @command("singularLocus", dialect="m2")
+@in_quotients
 def singular_locus(I: Ideal | Ring) -> Ring:
     """singularLocus I (or R/I): the ring R/(I + the codim-sized minors of I's Jacobian)."""
     from ..kernel import matrix as KM
     from itertools import combinations
     if isinstance(I, Ring):
-        owner = I
-        if owner.parent is None:
+        if I.parent is None:
             raise MechRuntimeError("singularLocus R takes a quotient ring R/I")
-        I = Ideal(owner.parent.poly, [Poly(owner.parent.poly, dict(g.terms)) for g in owner.relations])
+        P = ring_presentation(I)  # R/I/J: all the relations, in the polynomial ring
+        I = Ideal(P.ring, list(P.entries))
     R = _owner(I.ring)
     if R.quotient is not None:
         raise MechRuntimeError("singularLocus of an ideal of a quotient ring is not supported by mech")

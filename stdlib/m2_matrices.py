@@ -6,7 +6,7 @@ from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_ops import lift_to
-from ..dsl.m2_rings import is_integral
+from ..dsl.m2_rings import in_quotients, is_integral, normal
 from ..dsl.m2_values import Factored, Opt
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Matrix, Ring
@@ -92,6 +92,7 @@ def _operator(P: Poly, f: Poly) -> Poly:
 
 
 @command("sub", dialect="m2")
+@in_quotients
 def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
     """sub(f, {x => a, y => b}): substitute for the variables; sub(f, S): the same polynomials
     (variables matched by name, the others sent to 0) in the ring S."""
@@ -113,6 +114,13 @@ def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
     out = map_value(f, images, target)
     if is_integral(target) and any(getattr(c, "q", 1) != 1 for g in _polys(ctx, (out,), target) for c in g.terms.values()):
         raise MechRuntimeError("sub: the result has a fractional coefficient: it is not in a ring over ZZ")
+    if getattr(getattr(target, "owner", None), "quotient", None) is not None:  # in R/Q: normal forms
+        if isinstance(out, Poly):
+            return normal(out)
+        if isinstance(out, Ideal):
+            return Ideal(out.ring, [g for g in (normal(p) for p in out.gens) if not g.is_zero()])
+        if isinstance(out, Matrix):
+            return Matrix(out.ring, out.nrows, out.ncols, [normal(p) for p in out.entries])
     return out
 
 

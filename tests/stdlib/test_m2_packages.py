@@ -128,6 +128,18 @@ print(map(S,S) === id_S)
 print(map(S,S,{t,s}) === id_S)
 """,
      'map(S,R,{s^4, s^3*t, s*t^3, t^4})\nideal(b*c-a*d,c^3-b*d^2,a*c^2-b^2*d,b^3-a^2*c)\ntrue\nfalse\n'),
+    ("lift_substitute_singular_locus", """R = ZZ/101[a..d];
+S = R/(a*b-c^2);
+T = S/(a^3, b^3);
+J1 = lift(ideal c, R);
+print toString J1
+J1 = J1 + ideal(R_3^5);
+print toString trim substitute(J1, T)
+print toString lift(c^2+a*b, R)
+U = QQ[x,y]/(x^2-y^3);
+print toString singularLocus U
+""",
+     'ideal(c,a^3,b^3,a*b-c^2)\nideal(c,d^5)\n2*c^2\nQQ[x..y]/(-y^3+x^2,2*x,-3*y^2)\n'),
     ("hilbert_samuel", """R = QQ[x,y,z];
 RP = localRing(R, ideal gens R);
 M = RP^1/ideal(x^5+y^3+z^3,x^3+y^5+z^3,x^3+y^3+z^5);
