@@ -186,6 +186,19 @@ def _reduced(I: Ideal, polys: list[Poly]) -> Ideal:
     return Ideal(I.ring, [normalize(p) for p in polys], is_std=True)
 
 
+def _trim(I: Ideal) -> Ideal:
+    """I on fewer generators, as Macaulay2 trims: the generators (normalized) by increasing lead
+    monomial, each kept unless it lies in the ideal of those kept before it (and of R/Q's relations)."""
+    q = _quotient_of(I.ring)
+    cands = sorted({normalize(g): None for g in I.nonzero()}, key=lambda p: I.ring.order.key(p.lm()))
+    keep: list[Poly] = []
+    for g in cands:
+        basis = keep + (list(q.basis) if q is not None else [])
+        if not basis or not K.is_subset([g], basis, ring=I.ring):
+            keep.append(g)
+    return Ideal(I.ring, keep)
+
+
 def _lift(I: Ideal) -> list[Poly]:
     """Generators of I's preimage in the polynomial ring (I + Q for an ideal of R/Q)."""
     q = _quotient_of(I.ring)
@@ -295,8 +308,7 @@ def quotient(a: Any, b: Any) -> Ideal:
         _global(a, "the ideal quotient")
         other = b.nonzero() if isinstance(b, Ideal) else [b]
         if _quotient_of(a.ring) is not None:  # in R/Q: (I + Q) : J, back in R/Q
-            from .m2_ideals import trim
-            return trim(_reduced(a, K.std(K.quotient(_lift(a), other, ring=a.ring), ring=a.ring)))
+            return _trim(_reduced(a, K.std(K.quotient(_lift(a), other, ring=a.ring), ring=a.ring)))
         if is_integral(a.ring):
             return Ideal(a.ring, Z.quotient(a.nonzero(), other, a.ring))
         return _minimal(a, _sorted(a, K.quotient(a.nonzero(), other, ring=a.ring)))
@@ -321,8 +333,7 @@ def saturate(I: Ideal, J: Ideal | Poly | None = None) -> Ideal:
         J = Ideal(ring, [ring.gen(i) for i in range(ring.nvars)])
     other = J.nonzero() if isinstance(J, Ideal) else [J]
     if _quotient_of(ring) is not None:  # in R/Q: (I + Q) : J^infinity, back in R/Q
-        from .m2_ideals import trim
-        return trim(_reduced(I, K.std(K.saturate(_lift(I), other, ring=ring)[0], ring=ring)))
+        return _trim(_reduced(I, K.std(K.saturate(_lift(I), other, ring=ring)[0], ring=ring)))
     if is_integral(ring):
         return Ideal(ring, Z.saturate(I.nonzero(), other, ring))
     return _minimal(I, _sorted(I, K.saturate(I.nonzero(), other, ring=ring)[0]))
@@ -446,41 +457,6 @@ def _primdec(I: Ideal) -> list[tuple[list[Poly], list[Poly]]]:
         return primdec_gtz(_lift(I), I.ring)
     from ..kernel.local import primdec_local
     return primdec_local(I.nonzero(), I.ring)
-
-
-@command("primaryDecomposition", dialect="m2")
-@in_quotients
-def primary_decomposition(ctx, I: Ideal) -> List:
-    """primaryDecomposition I: primary ideals whose intersection is I (with Strategy =>
-    EisenbudHunekeVasconcelos: primaryComponent(I, P) for each associated prime P)."""
-    strategy = ctx.m2_options.get("Strategy")
-    if getattr(strategy, "name", None) == "EisenbudHunekeVasconcelos":
-        from .m2_primdec import primary_component
-        return List([primary_component(I, P) for P in associated_primes(I).items])
-    from .m2_primdec import monomial_primdec
-    mono = monomial_primdec(I)
-    if mono is not None:
-        return List([q for q, _ in mono])
-    return List([_reduced(I, q) for q, _ in _primdec(I)])
-
-
-primary_decomposition.m2_options = ("Strategy",)
-
-
-@command("associatedPrimes", dialect="m2")
-@in_quotients
-def associated_primes(I: Ideal) -> List:
-    """associatedPrimes I: the associated primes of I."""
-    from .m2_primdec import monomial_primdec
-    mono = monomial_primdec(I)
-    if mono is not None:
-        return List([p for _, p in mono])
-    out: list[Ideal] = []
-    for _, p in _primdec(I):
-        P = _reduced(I, p)
-        if P not in out:
-            out.append(P)
-    return List(out)
 
 
 @command("isPrime", dialect="m2")

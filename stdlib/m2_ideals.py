@@ -13,10 +13,10 @@ from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, normal, quotie
                              tower_terms)
 from ..dsl.m2_values import MonomialIdeal, Opt, RingMap
 from ..dsl.registry import command, operator
-from ..dsl.values import ExprList, Ideal, List, Matrix, Number, OrderBlock, Ring
+from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
-from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, gens
+from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, _trim, gens
 from .m2_matrices import sub
 from .standard import normalize
 
@@ -107,14 +107,7 @@ def monomial_curve_ideal(R: Ring, exps: List) -> Ideal:
 def trim(I: Ideal) -> Ideal:
     """trim I: I on fewer generators, as Macaulay2 trims: the generators (normalized) by increasing
     lead monomial, each kept unless it lies in the ideal of those kept before it."""
-    q = _quotient_of(I.ring)
-    cands = sorted({normalize(g): None for g in I.nonzero()}, key=lambda p: I.ring.order.key(p.lm()))
-    keep: list[Poly] = []
-    for g in cands:
-        basis = keep + (list(q.basis) if q is not None else [])
-        if not basis or not K.is_subset([g], basis, ring=I.ring):
-            keep.append(g)
-    return Ideal(I.ring, keep)
+    return _trim(I)
 
 
 @command("mingens", dialect="m2")
@@ -325,63 +318,6 @@ def ring(x: Poly | Ideal | Matrix | Number) -> Ring:
     return _owner(x.ring)
 
 
-@command("ambient", dialect="m2")
-@in_quotients
-def ambient_ring(R: M2Ring) -> M2Ring:
-    """ambient R: the ring a quotient ring R = A/I is a quotient of (A)."""
-    if R.parent is None:
-        raise MechRuntimeError("ambient R: R is not a quotient ring")
-    return R.parent
-
-
-@command("describe", dialect="m2")
-@in_quotients
-def describe(R: M2Ring) -> str:
-    """describe R: how R was made (a polynomial ring with the default order and degrees, or a quotient)."""
-    if R.parent is not None:
-        return R.describe()
-    own = len(R.own)
-    default = R.blocks[:1] == (OrderBlock("dp", own),) and len(R.blocks) == 2 and R.blocks[1].kind == "C"
-    if R.info or not default or any(d != 1 for d in R.degrees[:own]) or R.max_exponent is not None:
-        raise MechRuntimeError("describe is supported for quotients and for polynomial rings with the default "
-                               "order and degrees")
-    degrees = f"{own}:1" if own > 1 else "1"
-    return f"{R.describe()[:-1]}, Degrees => {{{degrees}}}, Heft => {{1}}]"
-
-
-@command("lift", dialect="m2")
-@in_quotients
-def lift(x: Poly | Ideal, A: M2Ring) -> Any:
-    """lift(f, A), lift(I, A): an element (its normal form) or ideal of a quotient ring R of A in A
-    (an ideal with R's relations over A)."""
-    R = _owner(x.ring)
-    r, rels = R, []
-    while r is not A and r.parent is not None:
-        rels.extend(Poly(A.poly, dict(g.terms)) for g in r.relations)
-        r = r.parent
-    if r is not A:
-        raise MechRuntimeError("lift(x, A): A is not a ring R is a quotient of")
-    if isinstance(x, Poly):
-        return Poly(A.poly, dict(x.terms))
-    return Ideal(A.poly, [Poly(A.poly, dict(g.terms)) for g in x.nonzero()] + rels)
-
-
-@command("presentation", dialect="m2")
-@in_quotients
-def ring_presentation(R: M2Ring) -> Matrix:
-    """presentation R: the relations of a quotient ring as one row over its polynomial ring (the
-    last quotient's first)."""
-    A = R.ambient()
-    if R.parent is None or A.info.get("localized_at") is not None:
-        raise MechRuntimeError("presentation R is supported for quotients of polynomial rings")
-    rels: list[Poly] = []
-    r = R
-    while r.parent is not None:
-        rels.extend(Poly(A.poly, dict(g.terms)) for g in r.relations)
-        r = r.parent
-    return Matrix(A.poly, 1, len(rels), rels)
-
-
 # ---------------------------------------------------------------- ring maps
 @command("map", dialect="m2")
 @in_quotients
@@ -554,6 +490,7 @@ def singular_locus(I: Ideal | Ring) -> Ring:
     if isinstance(I, Ring):
         if I.parent is None:
             raise MechRuntimeError("singularLocus R takes a quotient ring R/I")
+        from .m2_quotients import ring_presentation
         P = ring_presentation(I)  # R/I/J: all the relations, in the polynomial ring
         I = Ideal(P.ring, list(P.entries))
     R = _owner(I.ring)

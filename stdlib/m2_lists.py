@@ -223,24 +223,6 @@ def to_sequence(L: Seq) -> ExprList:
     return ExprList(_items(L))
 
 
-@command("concatenate", dialect="m2")
-def concatenate(*xs: Any) -> str:
-    """concatenate(x, ...): the strings, symbols and integers joined (lists and sequences
-    flattened, null as nothing)."""
-    out: list[str] = []
-
-    def visit(x: Any) -> None:
-        if isinstance(x, (List, ExprList)):
-            for y in x.items:
-                visit(y)
-        elif isinstance(x, (str, int, Symbol)) and not isinstance(x, bool):
-            out.append(x.name if isinstance(x, Symbol) else str(x))
-        elif x is not NONE:
-            raise MechTypeError(f"concatenate takes strings, symbols and integers, not a {typeof(x)}")
-    visit(ExprList(list(xs)))
-    return "".join(out)
-
-
 @command("sequence", dialect="m2")
 @in_quotients
 def sequence(*xs: Any) -> ExprList:
@@ -509,30 +491,6 @@ def last(L: List | ExprList) -> Any:
 def append(L: List, x: Any) -> List:
     """append(L, x): L with x added at the end."""
     return List([*L.items, x])
-
-
-@command("iterator", dialect="m2")
-def iterator(x: Seq) -> Iterator:
-    """iterator x: an iterator over the entries of a list, sequence or string (itself for an iterator)."""
-    return x if isinstance(x, Iterator) else Iterator(_items(x))
-
-
-@command("next", dialect="m2")
-def next_(it: Iterator) -> Any:
-    """next it: the iterator's next value (the symbol StopIteration at its end)."""
-    return next(it.source, Symbol("StopIteration"))
-
-
-@command("toUpper", dialect="m2")
-def to_upper(s: str) -> str:
-    """toUpper s: the string in upper case."""
-    return s.upper()
-
-
-@command("toLower", dialect="m2")
-def to_lower(s: str) -> str:
-    """toLower s: the string in lower case."""
-    return s.lower()
 
 
 @command("join", dialect="m2")

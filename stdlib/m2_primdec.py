@@ -13,8 +13,7 @@ from ..dsl.registry import command
 from ..dsl.values import NONE, Ideal, List
 from ..kernel import Poly
 from ..kernel import ideals as K
-from .m2 import _global, _lift, _minimal, _primdec, _quotient_of, _reduced, associated_primes, minimal_primes
-from .m2_ideals import trim
+from .m2 import _global, _lift, _minimal, _primdec, _quotient_of, _reduced, _trim, minimal_primes
 
 
 @command("minprimes", dialect="m2")
@@ -45,7 +44,7 @@ def _intersection(I: Ideal, parts: list[Ideal]) -> Ideal:
         return Ideal(I.ring, [I.ring.one()])
     polys = K.intersect(*[_lift(J) for J in parts], ring=I.ring)
     if _quotient_of(I.ring) is not None:  # computed on the preimages in R: back in R/Q, trimmed
-        return trim(_reduced(I, K.std(polys, ring=I.ring)))
+        return _trim(_reduced(I, K.std(polys, ring=I.ring)))
     return _minimal(I, sorted(polys, key=lambda p: I.ring.order.key(p.lm())))
 
 
@@ -93,7 +92,7 @@ def primary_component(I: Ideal, P: Ideal) -> Ideal:
     while True:
         Q = _top(K.ideal_sum(I0, K.ideal_power(P0, m, ring=ring), ring=ring), ring)
         if K.is_subset(K.intersect(Q, colon, ring=ring), local, ring=ring):
-            return trim(_reduced(I, K.std(Q, ring=ring)))
+            return _trim(_reduced(I, K.std(Q, ring=ring)))
         m += 1
 
 
@@ -203,3 +202,35 @@ def radical_containment(g: Poly | Ideal, I: Ideal) -> Any:
 
 #: an element's answer is a Boolean (the registry gives 0 or 1), an ideal's an index or null
 radical_containment.m2_result = lambda args, v: v if isinstance(args[0], Ideal) else bool(v)
+
+
+@command("primaryDecomposition", dialect="m2")
+@in_quotients
+def primary_decomposition(ctx, I: Ideal) -> List:
+    """primaryDecomposition I: primary ideals whose intersection is I (with Strategy =>
+    EisenbudHunekeVasconcelos: primaryComponent(I, P) for each associated prime P)."""
+    strategy = ctx.m2_options.get("Strategy")
+    if getattr(strategy, "name", None) == "EisenbudHunekeVasconcelos":
+        return List([primary_component(I, P) for P in associated_primes(I).items])
+    mono = monomial_primdec(I)
+    if mono is not None:
+        return List([q for q, _ in mono])
+    return List([_reduced(I, q) for q, _ in _primdec(I)])
+
+
+primary_decomposition.m2_options = ("Strategy",)
+
+
+@command("associatedPrimes", dialect="m2")
+@in_quotients
+def associated_primes(I: Ideal) -> List:
+    """associatedPrimes I: the associated primes of I."""
+    mono = monomial_primdec(I)
+    if mono is not None:
+        return List([p for _, p in mono])
+    out: list[Ideal] = []
+    for _, p in _primdec(I):
+        P = _reduced(I, p)
+        if P not in out:
+            out.append(P)
+    return List(out)
