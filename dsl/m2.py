@@ -30,8 +30,8 @@ from .m2_printing import to_string
 from .m2_ringcons import build_ring
 from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
-from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, M2Function,
-                        M2Set, Opt, Partial, RingMap, Symbol)
+from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Factored, Iterator,
+                        M2Function, M2Set, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
 from ..kernel import Poly
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -119,7 +119,7 @@ class M2Interpreter(M2Control, Interpreter):
             if not value.name:
                 value.name = name
             self.use(value)
-        elif isinstance(value, M2Function) and value.name == "-*Function*-":
+        elif isinstance(value, (M2Function, Iterator)) and value.name == "-*Function*-":
             value.name = name
         elif isinstance(value, CoeffRing) and value.characteristic and not value.name.isidentifier():
             value.name = name
@@ -148,6 +148,8 @@ class M2Interpreter(M2Control, Interpreter):
             return name == "true"
         if name == "null":
             return NONE
+        if name == "oo" and self.last is not NONE:  # the last value printed
+            return self.last
         if name == "QQ":
             return QQ_RING
         if name == "ZZ":
@@ -256,6 +258,8 @@ class M2Interpreter(M2Control, Interpreter):
             return len(v)
         if isinstance(v, Ideal):
             return len(v.gens)
+        if isinstance(v, Factored):  # the factors, and the unit when it is printed
+            return len(v.factors) + (v.unit != 1)
         raise MechTypeError(f"# needs a list, sequence or string, not a {typeof(v)}")
 
     # ------------------------------------------------------------ values
@@ -372,7 +376,10 @@ class M2Interpreter(M2Control, Interpreter):
             v = self.registry.invoke(cmd, self, list(args))
         except (LimitExceeded, MemoryError) as e:
             raise limit_error(e, cmd.name) from None
-        if cmd.overloads[0].func.__annotations__.get("return") in ("bool", bool):
+        func = cmd.overloads[0].func
+        if hasattr(func, "m2_result"):  # the command's own value from the registry's (a bool or an index)
+            return func.m2_result(args, v)
+        if func.__annotations__.get("return") in ("bool", bool):
             return bool(v)  # the registry gives Singular's 0 and 1
         return v
 
@@ -418,7 +425,8 @@ class M2Interpreter(M2Control, Interpreter):
 
 
 #: options of Macaulay2's functions that do not change the value (how it is computed, what is printed)
-NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check", "Unmixed"}
+NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check", "Unmixed",
+                   "CompleteIntersection"}
 
 
 def _options(cmd: Any, args: list[Any]) -> tuple[list[Any], dict[str, Any]]:

@@ -14,7 +14,7 @@ from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, Map, quotient_module, rows, scaled
 from .m2_submodules import Module
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
-from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, Symbol
+from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
 #: Macaulay2 symbols mech knows (option names and monomial orders)
@@ -70,6 +70,8 @@ def strictly_equal(a: Any, b: Any) -> bool:
         return strictly_equal(a.key, b.key) and strictly_equal(a.value, b.value)
     if isinstance(a, M2Set):
         return set(a.keys) == set(b.keys)
+    if isinstance(a, RingMap):
+        return a.target is b.target and a.source is b.source and a.images == b.images
     try:
         return bool(a == b)
     except Exception:
@@ -102,6 +104,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         if not isinstance(b, (List, ExprList)):
             raise MechTypeError(f"f \\ L takes a list, not a {typeof(b)}")
         return type(b)([apply(a, [x]) for x in b.items])
+    if op == "//" and isinstance(b, FUNCTIONS):  # x // f: f x
+        return apply(b, [a])
     if op == "/" and isinstance(a, (List, ExprList)) and isinstance(b, FUNCTIONS):  # L / f: apply(L, f)
         return type(a)([apply(b, [x]) for x in a.items])
     if op == "@@" and isinstance(a, FUNCTIONS) and isinstance(b, FUNCTIONS):

@@ -12,7 +12,7 @@ from typing import Any, Iterable, Optional
 
 from ..kernel import GF, QQ, Poly
 from .errors import Source
-from .values import Ideal, List
+from .values import Ideal, List, Matrix
 
 
 @dataclass(frozen=True)
@@ -114,6 +114,11 @@ class RingMap:
     source: Any
     images: tuple[Poly, ...]
 
+    @property
+    def m2_fields(self) -> dict[str, Any]:
+        """``F.matrix``: the one-row matrix of the images."""
+        return {"matrix": Matrix(self.target.poly, 1, len(self.images), list(self.images))}
+
 
 @dataclass(eq=False)
 class M2Function:
@@ -152,6 +157,18 @@ class Partial:
 
 
 FUNCTIONS = (M2Function, CommandRef, Composed, Partial, RingMap)
+
+
+class Iterator:
+    """``iterator x`` (and ``apply``/``select`` on one or on a string): a lazy stream of values that
+    ``next`` takes one by one; printed by the name it was first assigned to, as Macaulay2 does."""
+
+    __slots__ = ("source", "name")
+    type_name = "Iterator"
+
+    def __init__(self, source: Iterable[Any]) -> None:
+        self.source = iter(source)
+        self.name = "-*Function*-"
 
 
 @dataclass(eq=False)

@@ -63,8 +63,8 @@ def _polys(ctx, args: tuple, ring: Any = None) -> list[Poly]:
     for a in args:
         if isinstance(a, (List, ExprList)):
             out.extend(_polys(ctx, tuple(a.items), ring))
-        elif isinstance(a, Matrix):
-            out.extend(a.entries)
+        elif isinstance(a, Matrix):  # column by column, as Macaulay2 flattens a matrix
+            out.extend(a.entries[i * a.ncols + j] for j in range(a.ncols) for i in range(a.nrows))
         elif isinstance(a, Ideal):
             out.extend(a.gens)
         elif isinstance(a, (Poly, Number)):
@@ -138,6 +138,7 @@ def _classic(text: str) -> str:
 
 
 @command("matrix", dialect="m2")
+@in_quotients
 def matrix(ctx, rows: List) -> Matrix:
     """matrix {{a, b}, {c, d}}: the matrix with these rows."""
     ring = _first_ring(rows.items) or ctx.basering().poly
@@ -183,6 +184,19 @@ def _reduced(I: Ideal, polys: list[Poly]) -> Ideal:
         polys = [q for q in (normal(p) for p in polys) if not q.is_zero()]
         return Ideal(I.ring, [normalize(p) for p in polys])
     return Ideal(I.ring, [normalize(p) for p in polys], is_std=True)
+
+
+def _trim(I: Ideal) -> Ideal:
+    """I on fewer generators, as Macaulay2 trims: the generators (normalized) by increasing lead
+    monomial, each kept unless it lies in the ideal of those kept before it (and of R/Q's relations)."""
+    q = _quotient_of(I.ring)
+    cands = sorted({normalize(g): None for g in I.nonzero()}, key=lambda p: I.ring.order.key(p.lm()))
+    keep: list[Poly] = []
+    for g in cands:
+        basis = keep + (list(q.basis) if q is not None else [])
+        if not basis or not K.is_subset([g], basis, ring=I.ring):
+            keep.append(g)
+    return Ideal(I.ring, keep)
 
 
 def _lift(I: Ideal) -> list[Poly]:
@@ -265,11 +279,6 @@ def _no_zz(I: Ideal, what: str) -> None:
         raise MechRuntimeError(f"{what} of an ideal over ZZ is not supported by mech (a Gröbner basis over ZZ)")
 
 
-def _no_quotient(I: Ideal, what: str) -> None:
-    if _quotient_of(I.ring) is not None:
-        raise MechRuntimeError(f"{what} on ideals of a quotient ring R/I is not supported by mech")
-
-
 def _global(I: Ideal, cmd: str) -> None:
     if not I.ring.order.is_global:
         raise MechRuntimeError(f"{cmd} needs a ring with a global monomial order")
@@ -297,8 +306,9 @@ def quotient(a: Any, b: Any) -> Ideal:
     """``I : J`` (``I : f``), the ideal quotient."""
     if isinstance(a, Ideal) and isinstance(b, (Ideal, Poly)):
         _global(a, "the ideal quotient")
-        _no_quotient(a, "the ideal quotient I : J")
         other = b.nonzero() if isinstance(b, Ideal) else [b]
+        if _quotient_of(a.ring) is not None:  # in R/Q: (I + Q) : J, back in R/Q
+            return _trim(_reduced(a, K.std(K.quotient(_lift(a), other, ring=a.ring), ring=a.ring)))
         if is_integral(a.ring):
             return Ideal(a.ring, Z.quotient(a.nonzero(), other, a.ring))
         return _minimal(a, _sorted(a, K.quotient(a.nonzero(), other, ring=a.ring)))
@@ -306,12 +316,14 @@ def quotient(a: Any, b: Any) -> Ideal:
 
 
 @command("quotient", dialect="m2")
+@in_quotients
 def quotient_cmd(I: Ideal, J: Ideal | Poly) -> Ideal:
     """quotient(I, J): the ideal quotient I : J."""
     return quotient(I, J)
 
 
 @command("saturate", dialect="m2")
+@in_quotients
 def saturate(I: Ideal, J: Ideal | Poly | None = None) -> Ideal:
     """saturate(I, J): the saturation I : J^infinity (J a polynomial or ideal; without J the ideal
     of the variables)."""
@@ -320,6 +332,8 @@ def saturate(I: Ideal, J: Ideal | Poly | None = None) -> Ideal:
     if J is None:
         J = Ideal(ring, [ring.gen(i) for i in range(ring.nvars)])
     other = J.nonzero() if isinstance(J, Ideal) else [J]
+    if _quotient_of(ring) is not None:  # in R/Q: (I + Q) : J^infinity, back in R/Q
+        return _trim(_reduced(I, K.std(K.saturate(_lift(I), other, ring=ring)[0], ring=ring)))
     if is_integral(ring):
         return Ideal(ring, Z.saturate(I.nonzero(), other, ring))
     return _minimal(I, _sorted(I, K.saturate(I.nonzero(), other, ring=ring)[0]))
@@ -443,25 +457,6 @@ def _primdec(I: Ideal) -> list[tuple[list[Poly], list[Poly]]]:
         return primdec_gtz(_lift(I), I.ring)
     from ..kernel.local import primdec_local
     return primdec_local(I.nonzero(), I.ring)
-
-
-@command("primaryDecomposition", dialect="m2")
-@in_quotients
-def primary_decomposition(I: Ideal) -> List:
-    """primaryDecomposition I: primary ideals whose intersection is I."""
-    return List([_reduced(I, q) for q, _ in _primdec(I)])
-
-
-@command("associatedPrimes", dialect="m2")
-@in_quotients
-def associated_primes(I: Ideal) -> List:
-    """associatedPrimes I: the associated primes of I."""
-    out: list[Ideal] = []
-    for _, p in _primdec(I):
-        P = _reduced(I, p)
-        if P not in out:
-            out.append(P)
-    return List(out)
 
 
 @command("isPrime", dialect="m2")

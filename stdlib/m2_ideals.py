@@ -11,12 +11,12 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, normal, quotient_ring, term_degree,
                              tower_terms)
-from ..dsl.m2_values import MonomialIdeal, RingMap
-from ..dsl.registry import command
+from ..dsl.m2_values import MonomialIdeal, Opt, RingMap
+from ..dsl.registry import command, operator
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
-from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, gens
+from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, _trim, gens
 from .m2_matrices import sub
 from .standard import normalize
 
@@ -48,17 +48,21 @@ def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
 @command("vars", dialect="m2")
 @in_quotients
 def vars_(R: Ring | int | List | ExprList) -> Any:
-    """vars R: the one-row matrix of R's variables; vars n, vars(0..3): Macaulay2's symbols number
-    n (a..z, A..Z, then x0, x1, ...), values of the variables where a ring has them."""
+    """vars R: the one-row matrix of R's variables; vars n, vars(0..3), vars(0..2, 7): Macaulay2's
+    symbols number n (a..z, A..Z, then x0, x1, ...; X1, X2, ... for -1, -2, ...), values of the
+    variables where a ring has them."""
     if not isinstance(R, Ring):
         from ..dsl.m2_values import Symbol
-        ns = [R] if type(R) is int else list(R.items)
+
+        def flat(v: Any) -> list:
+            return [x for y in v.items for x in flat(y)] if isinstance(v, (List, ExprList)) else [v]
         out = []
-        for n in ns:
-            if type(n) is not int or n < 0:
-                raise MechRuntimeError("vars(n) takes numbers n >= 0")
-            out.append(Symbol(chr(97 + n) if n < 26 else chr(65 + n - 26) if n < 52 else f"x{n - 52}"))
-        return out[0] if type(R) is int else type(R)(out)
+        for n in flat(R):
+            if type(n) is not int:
+                raise MechRuntimeError("vars(n) takes integers n")
+            out.append(Symbol(f"X{-n}" if n < 0 else chr(97 + n) if n < 26 else chr(65 + n - 26) if n < 52
+                              else f"x{n - 52}"))
+        return out[0] if type(R) is int else type(R)(out) if isinstance(R, List) else ExprList(out)
     xs = gens(R).items
     return Matrix(R.poly, 1, len(xs), xs)
 
@@ -103,14 +107,7 @@ def monomial_curve_ideal(R: Ring, exps: List) -> Ideal:
 def trim(I: Ideal) -> Ideal:
     """trim I: I on fewer generators, as Macaulay2 trims: the generators (normalized) by increasing
     lead monomial, each kept unless it lies in the ideal of those kept before it."""
-    q = _quotient_of(I.ring)
-    cands = sorted({normalize(g): None for g in I.nonzero()}, key=lambda p: I.ring.order.key(p.lm()))
-    keep: list[Poly] = []
-    for g in cands:
-        basis = keep + (list(q.basis) if q is not None else [])
-        if not basis or not K.is_subset([g], basis, ring=I.ring):
-            keep.append(g)
-    return Ideal(I.ring, keep)
+    return _trim(I)
 
 
 @command("mingens", dialect="m2")
@@ -275,15 +272,19 @@ def _homogenize(p: Poly, i: int, degs: tuple) -> Poly:
 
 
 @command("homogenize", dialect="m2")
+@in_quotients
 def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
-    """homogenize(f, v): f made homogeneous with the variable v; homogenize(I, v): the ideal of
-    the homogenized Gröbner basis (a degree order: I's homogenization)."""
+    """homogenize(f, v): f made homogeneous with the variable v (in R/Q: its normal form, the result
+    reduced); homogenize(I, v): the ideal of the homogenized Gröbner basis (a degree order: I's
+    homogenization)."""
     i = _indices(f.ring, v)[0]
     degs = _owner(f.ring).degrees or (1,) * f.ring.nvars
     if isinstance(f, Poly):
-        return _homogenize(f, i, degs)
+        return normal(_homogenize(f, i, degs))
     if isinstance(f, Matrix):
-        return Matrix(f.ring, f.nrows, f.ncols, [_homogenize(p, i, degs) for p in f.entries])
+        return Matrix(f.ring, f.nrows, f.ncols, [normal(_homogenize(p, i, degs)) for p in f.entries])
+    if _quotient_of(f.ring) is not None:
+        raise MechRuntimeError("homogenize of an ideal of a quotient ring R/I is not supported by mech")
     _no_zz(f, "homogenize")
     order = f.ring.order
     if not order.is_global or any(b.kind not in ("dp", "Dp", "wp", "Wp") for b in order.blocks) or len(order.blocks) != 1:
@@ -293,11 +294,14 @@ def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
 
 
 @command("substitute", dialect="m2")
+@in_quotients
 def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> Any:
     """substitute(f, {x => a, ...}), substitute(f, S): as sub; substitute(f, matrix {{a, b, ...}}):
     the variables replaced by a, b, ..."""
     if isinstance(where, Matrix):
         from ..dsl.maps import map_value
+        if _quotient_of(f.ring) is not None or _quotient_of(where.ring) is not None:
+            raise MechRuntimeError("substitute(f, M) in quotient rings is not supported by mech")
         if where.nrows != 1 or where.ncols != f.ring.nvars:
             raise MechRuntimeError(f"substitute(f, M): M is one row of {f.ring.nvars} entries")
         if f.ring.field.characteristic and all(p.is_constant() for p in where.entries):
@@ -321,9 +325,16 @@ def map_(ctx, target: Ring, source: Ring, images: List | Matrix | None = None) -
     """map(S, R, {a, b, ...}): the ring map R -> S sending R's variables to a, b, ...;
     map(S, R): variables to the variables of the same names (others to 0)."""
     n = source.poly.nvars
-    if images is None:
+    opts = isinstance(images, List) and images.items and all(isinstance(x, Opt) for x in images.items)
+    if images is None or opts:  # variables to those of the same names (others to 0); {x => f, ...}: x to f
         ims = [target.poly.gen(target.poly.names.index(x)) if x in target.poly.names else target.poly.zero()
                for x in source.poly.names]
+        for o in images.items if opts else ():
+            key = o.key
+            if not (isinstance(key, Poly) and len(key.terms) == 1 and sum(key.lm()) == 1
+                    and key.ring.names == source.poly.names):
+                raise MechRuntimeError("map(S, R, {x => f, ...}) takes variables x of R")
+            ims[key.lm().index(1)] = _polys(ctx, (o.value,), target.poly)[0]
     else:
         ims = _polys(ctx, (images,), target.poly)
         if len(ims) != n:
@@ -331,10 +342,70 @@ def map_(ctx, target: Ring, source: Ring, images: List | Matrix | None = None) -
     return RingMap(target, source, tuple(normal(p) for p in ims))
 
 
+@command("map", dialect="m2")
+@in_quotients
+def map_from_matrix(source: Ring, images: Matrix) -> RingMap:
+    """map(R, m): the ring map from R to the ring of the one-row matrix m, R's variables to its entries."""
+    target = _owner(images.ring)
+    if images.nrows != 1 or images.ncols != source.poly.nvars:
+        raise MechRuntimeError(f"map(R, m) takes a matrix of one row of {source.poly.nvars} entries")
+    return RingMap(target, source, tuple(normal(p) for p in images.entries))
+
+
+@command("id", dialect="m2")
+@in_quotients
+def identity_map(R: M2Ring) -> RingMap:
+    """id_R: the identity map of the ring R."""
+    return RingMap(R, R, tuple(normal(R.poly.gen(i)) for i in range(R.poly.nvars)))
+
+
+identity_map.subscript_value = True
+
+
+@operator("*", dialect="m2")
+def compose(g: Any, f: Any) -> Any:
+    """``g * f`` for ring maps R -> S -> T: the composite R -> T (x to g(f(x)))."""
+    if not (isinstance(g, RingMap) and isinstance(f, RingMap)):
+        return NotImplemented
+    if f.target is not g.source:
+        raise MechTypeError("g * f: f's target is not g's source")
+    from ..dsl.m2_maps import apply_map
+    return RingMap(g.target, f.source, tuple(apply_map(g, p) for p in f.images))
+
+
 @command("kernel", dialect="m2")
 @command("ker", dialect="m2")
 def kernel(f: RingMap) -> Ideal:
     """kernel f (ker f): the ideal of the source mapped to 0."""
+    return _preimage(f, [])
+
+
+@command("preimage", dialect="m2")
+@in_quotients
+def preimage(f: RingMap, J: Ideal) -> Ideal:
+    """preimage(f, J): the ideal of the source mapped into the ideal J of the target."""
+    if J.ring is not f.target.poly:
+        raise MechTypeError("preimage(f, J): J is an ideal of f's target")
+    return _preimage(f, J.nonzero())
+
+
+@command("isInjective", dialect="m2")
+@in_quotients
+def is_injective(f: RingMap) -> bool:
+    """isInjective f: whether the ring map's kernel is zero."""
+    return not _preimage(f, []).nonzero()
+
+
+@command("coimage", dialect="m2")
+@in_quotients
+def coimage(f: RingMap) -> M2Ring:
+    """coimage f: the source modulo the kernel (the source itself when f is injective)."""
+    ker = _preimage(f, []).nonzero()
+    return quotient_ring(f.source, ker) if ker else f.source
+
+
+def _preimage(f: RingMap, extra: list[Poly]) -> Ideal:
+    """The ideal of the source mapped into the ideal of ``extra`` (and the target's relations)."""
     R, S = f.source, f.target
     if R.quotient is not None:
         raise MechRuntimeError("kernel of a map from a quotient ring is not supported by mech")
@@ -345,7 +416,7 @@ def kernel(f: RingMap) -> Ideal:
     def up(p: Poly, shift: int) -> Poly:
         return Poly(big, {(0,) * shift + e + (0,) * (m + n - shift - len(e)): c for e, c in p.terms.items()})
     rel = [up(R.poly.gen(i), m) - up(img, 0) for i, img in enumerate(f.images)]
-    rel += [up(q, 0) for q in (S.quotient.basis if S.quotient is not None else [])]
+    rel += [up(q, 0) for q in list(S.quotient.basis if S.quotient is not None else []) + list(extra)]
     kept = K.eliminate(rel, list(range(m)), ring=big)
     polys = [Poly(R.poly, {e[m:]: c for e, c in p.terms.items()}) for p in kept]
     I = Ideal(R.poly, polys)
@@ -411,15 +482,17 @@ def discriminant(f: Poly, x: Poly) -> Poly:
 
 
 @command("singularLocus", dialect="m2")
+@in_quotients
 def singular_locus(I: Ideal | Ring) -> Ring:
     """singularLocus I (or R/I): the ring R/(I + the codim-sized minors of I's Jacobian)."""
     from ..kernel import matrix as KM
     from itertools import combinations
     if isinstance(I, Ring):
-        owner = I
-        if owner.parent is None:
+        if I.parent is None:
             raise MechRuntimeError("singularLocus R takes a quotient ring R/I")
-        I = Ideal(owner.parent.poly, [Poly(owner.parent.poly, dict(g.terms)) for g in owner.relations])
+        from .m2_quotients import ring_presentation
+        P = ring_presentation(I)  # R/I/J: all the relations, in the polynomial ring
+        I = Ideal(P.ring, list(P.entries))
     R = _owner(I.ring)
     if R.quotient is not None:
         raise MechRuntimeError("singularLocus of an ideal of a quotient ring is not supported by mech")

@@ -16,7 +16,7 @@ _EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2.submatrix, m2
           m2_ideals.is_homogeneous, m2_ideals.degrees, m2_ideals.homogenize, m2_ideals.substitute,
           m2_ideals.ring, m2_ideals.map_, m2_ideals.matrix_of_map, m2_ideals.source, m2_ideals.target,
           m2_ideals.coefficient_ring, m2_ideals.base_name, m2_ideals.resultant, m2_ideals.discriminant,
-          m2_ideals.sylvester_matrix, m2_modules.map_modules, m2_modules.identity, m2_modules.source,
+          m2_ideals.sylvester_matrix, m2_matrices.factor, m2_matrices.value, m2_modules.map_modules, m2_modules.identity, m2_modules.source,
           m2_modules.target, m2_modules.degrees, m2_modules.rank, m2_modules.numgens, m2_modules.is_homogeneous,
           m2_modules.transpose, m2_local.numerator, m2_local.denominator,
           m2_ideals.monomial_ideal, m2_ideals.degree_in, m2_modules.transpose_table, m2.eliminate, m2.eliminate_ideal_first, m2.quotient_cmd, m2.saturate,

@@ -14,10 +14,10 @@ from itertools import combinations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
-from ..dsl.m2_local import local_ideal_subset, localized_at
+from ..dsl.m2_local import in_local_rings, local_ideal_subset, localized_at
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_rings import in_quotients, is_integral
-from ..dsl.m2_values import FUNCTIONS, Array, M2Set, Symbol, Tally
+from ..dsl.m2_values import FUNCTIONS, Array, Iterator, M2Set, Symbol, Tally
 from ..dsl.registry import command
 from ..dsl.values import NONE, ExprList, Ideal, List, Number, typeof
 from ..kernel import Poly
@@ -25,7 +25,7 @@ from ..kernel import Poly
 #: the packages whose functions the dialect has (needsPackage accepts them)
 PACKAGES = {"PrimaryDecomposition", "MinimalPrimes", "Saturation", "Elimination", "LocalRings", "Core"}
 
-Seq = List | ExprList | str
+Seq = List | ExprList | str | Iterator
 
 
 def key(x: Any) -> Any:
@@ -39,6 +39,8 @@ def _items(L: Any) -> list:
         return list(L.items)
     if isinstance(L, str):  # a string as the sequence of its characters
         return list(L)
+    if isinstance(L, Iterator):  # what is left of it
+        return list(L.source)
     raise MechTypeError(f"expected a list, not a {typeof(L)}")
 
 
@@ -99,13 +101,15 @@ def apply(ctx, L: Seq | int, f: Any, g: Any = None) -> Any:
     """apply(L, f): f(x) for x in L (the same kind of list); apply(n, f): for x in 0..n-1;
     apply(L1, L2, f): f(x, y) for the pairs of entries."""
     if g is not None:
-        if not isinstance(f, (List, ExprList)) or len(f.items) != len(_items(L)):
+        if not isinstance(f, (List, ExprList, str)) or len(_items(f)) != len(_items(L)):
             raise MechRuntimeError("apply(L1, L2, f): the lists need the same length")
         _fn(g)
-        return _same_kind(L, [ctx.apply(g, [x, y]) for x, y in zip(_items(L), f.items)])
+        return _same_kind(f if isinstance(f, str) else L, [ctx.apply(g, [x, y]) for x, y in zip(_items(L), _items(f))])
     _fn(f)
     if type(L) is int:
         return List([ctx.apply(f, [i]) for i in range(L)])
+    if isinstance(L, Iterator):
+        return Iterator(ctx.apply(f, [x]) for x in L.source)
     return _same_kind(L, [ctx.apply(f, [x]) for x in _items(L)])
 
 
@@ -130,12 +134,19 @@ def scan(ctx, L: Seq | int, f: Any) -> None:
 @command("select", dialect="m2")
 @in_quotients
 def select(ctx, L: Seq | int, f: Any, g: Any = None) -> Any:
-    """select(L, f): the entries x with f(x) true; select(n, L, f): the first n of them."""
+    """select(L, f): the entries x with f(x) true; select(n, L, f): the first n of them;
+    select(n, f): the integers 0 <= i < n with f(i) true."""
+    if type(L) is int and g is None:
+        _fn(f)
+        return List([i for i in range(L) if _truth(ctx.apply(f, [i]), "select")])
     if g is not None:
         n, L, f = L, f, g
     else:
         n = None
     _fn(f)
+    if n is None and isinstance(L, (str, Iterator)):  # Macaulay2 1.21: an iterator
+        source = iter(L) if isinstance(L, str) else L.source
+        return Iterator(x for x in source if _truth(ctx.apply(f, [x]), "select"))
     out = []
     for x in _items(L):
         if n is not None and len(out) >= n:
@@ -163,10 +174,22 @@ def all_(ctx, L: Seq | int, f: Any) -> bool:
 
 @command("position", dialect="m2")
 @in_quotients
-def position(ctx, L: Seq, f: Any) -> Any:
-    """position(L, f): the index of the first entry with f true (null if none)."""
+def position(ctx, L: Seq, f: Any, g: Any = None) -> Any:
+    """position(L, f): the index of the first entry with f true (null if none); position(A, B, f):
+    the first index i with f(A_i, B_i) true; with Reverse => true the last."""
+    if g is not None:
+        rows = list(zip(_items(L), _items(f)))
+        if len(_items(L)) != len(_items(f)):
+            raise MechRuntimeError("position(A, B, f): the lists need the same length")
+        f = g
+    else:
+        rows = [(x,) for x in _items(L)]
     _fn(f)
-    return next((i for i, x in enumerate(_items(L)) if _truth(ctx.apply(f, [x]), "position")), NONE)
+    order = range(len(rows) - 1, -1, -1) if ctx.m2_options.get("Reverse") is True else range(len(rows))
+    return next((i for i in order if _truth(ctx.apply(f, list(rows[i])), "position")), NONE)
+
+
+position.m2_options = ("Reverse",)
 
 
 @command("positions", dialect="m2")
@@ -414,8 +437,12 @@ def _extreme(xs: tuple, sign: int, what: str) -> Any:
 
 @command("max", dialect="m2")
 @in_quotients
+@in_local_rings
 def max_(*xs: Any) -> Any:
-    """max L (or max(a, b, ...)): the largest entry."""
+    """max L (or max(a, b, ...)): the largest entry; max R_P: the maximal ideal of a local ring."""
+    if len(xs) == 1 and localized_at(xs[0]) is not None:
+        S = xs[0]
+        return Ideal(S.poly, [Poly(S.poly, dict(g.terms)) for g in localized_at(S).nonzero()])
     return _extreme(xs, 1, "max")
 
 
@@ -468,9 +495,12 @@ def append(L: List, x: Any) -> List:
 
 @command("join", dialect="m2")
 @in_quotients
-def join(*lists: List | ExprList) -> List | ExprList:
-    """join(L1, L2, ...): the concatenated lists (of the first one's kind)."""
-    items = [x for L in lists for x in L.items]
+def join(*lists: List | ExprList | Iterator) -> List | ExprList:
+    """join(L1, L2, ...): the concatenated lists (of the first one's kind; later iterators as
+    their entries)."""
+    if lists and isinstance(lists[0], Iterator):
+        raise MechRuntimeError("join with an iterator first (an iterator of iterators) is not supported by mech")
+    items = [x for L in lists for x in _items(L)]
     return type(lists[0])(items) if lists else List([])
 
 

@@ -7,8 +7,8 @@ from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_local import LocalFraction, in_local_rings, local_ring, localized_at, to_global, to_local
-from ..dsl.m2_modules import CyclicModule
-from ..dsl.m2_rings import M2Ring
+from ..dsl.m2_modules import CyclicModule, FreeModule
+from ..dsl.m2_rings import M2Ring, in_quotients
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Matrix
 from ..kernel import Poly
@@ -64,6 +64,14 @@ def ring_of_fraction(f: LocalFraction) -> M2Ring:
     return f.num.ring.owner
 
 
+@command("ring", dialect="m2")
+@in_local_rings
+@in_quotients
+def ring_of_module(M: CyclicModule | FreeModule) -> M2Ring:
+    """ring M: the ring of the module R^1/I (or R^n)."""
+    return M.ring.owner if isinstance(M, CyclicModule) else M.ring
+
+
 @command("numerator", dialect="m2")
 @in_local_rings
 def numerator(f: LocalFraction | Poly) -> Poly:
@@ -112,3 +120,43 @@ for _f in (m2.ideal, m2.matrix, m2_ideals.ring, m2.quotient_cmd, m2.saturate, m2
            m2_lists.any_, m2_lists.all_, m2_lists.first, m2_lists.last, m2_lists.length, m2_lists.to_list,
            m2_lists.error):
     _f.local_ok = True
+
+
+@command("hilbertSamuelFunction", dialect="m2")
+@in_local_rings
+def hilbert_samuel_function(*args: Any) -> Any:
+    """hilbertSamuelFunction([q,] M, n) (or n0, n1 for the list of values): the length of
+    q^n M / q^(n+1) M for M = R_P^1/I (or R_P^1), q an ideal primary to P (default P)."""
+    q = args[0] if args and isinstance(args[0], Ideal) else None
+    rest = args[1:] if q is not None else args
+    if len(rest) not in (2, 3) or not all(type(n) is int for n in rest[1:]):
+        raise MechTypeError("hilbertSamuelFunction([q,] M, n) or ([q,] M, n0, n1)")
+    M = rest[0]
+    if isinstance(M, FreeModule) and M.rank == 1:
+        M = CyclicModule(Ideal(M.ring.poly, []))
+    if not isinstance(M, CyclicModule) or localized_at(M.ring.owner) is None:
+        raise MechRuntimeError("hilbertSamuelFunction is supported for R_P^1/I over a local ring R_P")
+    S = M.ring.owner
+    ring, P = S.info["over"].poly, localized_at(S)
+    base = [to_global(g, S) for g in M.ideal.nonzero()]
+    qs = [to_global(g, S) if g.ring is not ring else g for g in (q.nonzero() if q is not None else P.nonzero())]
+    from ..kernel import ideals as K
+    from ..kernel.errors import NotSupported
+    from ..kernel.localization import local_length
+    lengths: dict[int, int] = {}
+
+    def colength(k: int) -> int:  # length of M / q^k M
+        if k <= 0:
+            return 0
+        if k not in lengths:
+            try:
+                lengths[k] = local_length(base + K.ideal_power(qs, k, ring=ring), list(P.nonzero()), ring)
+            except NotSupported as e:
+                raise MechRuntimeError(str(e)) from None
+        return lengths[k]
+
+    def h(n: int) -> int:
+        return colength(n + 1) - colength(n) if n >= 0 else 0
+    if len(rest) == 2:
+        return h(rest[1])
+    return List([h(n) for n in range(rest[1], rest[2] + 1)])

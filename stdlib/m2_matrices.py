@@ -1,11 +1,12 @@
 """The Macaulay2 dialect's commands on matrices and polynomials: jacobian, minors, det, diff, sub, factor."""
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_ops import lift_to
-from ..dsl.m2_rings import is_integral
+from ..dsl.m2_rings import in_quotients, is_integral, normal
 from ..dsl.m2_values import Factored, Opt
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Matrix, Ring
@@ -22,13 +23,15 @@ def jacobian(I: Ideal | Matrix) -> Matrix:
 
 
 @command("minors", dialect="m2")
-def minors(k: int, M: Matrix) -> Ideal:
+def minors(ctx, k: int, M: Matrix) -> Ideal:
     """minors(k, M): the ideal of the k x k minors of M (column subsets outermost, as Macaulay2
-    lists them; zero minors left out)."""
+    lists them; zero minors left out; Limit => n: the first n; k <= 0: the unit ideal)."""
     from itertools import combinations
 
     from ..kernel import matrix as KM
-    if not 0 < k <= min(M.nrows, M.ncols):
+    if k <= 0:
+        return Ideal(M.ring, [M.ring.one()])
+    if k > min(M.nrows, M.ncols):
         raise MechRuntimeError(f"minors: k must be between 1 and {min(M.nrows, M.ncols)}")
     found = []
     for cols in combinations(range(1, M.ncols + 1), k):
@@ -37,7 +40,13 @@ def minors(k: int, M: Matrix) -> Ideal:
             d = KM.det(sub)
             if not d.is_zero():
                 found.append(d)
+    limit = ctx.m2_options.get("Limit")
+    if type(limit) is int:
+        found = found[:limit]
     return Ideal(M.ring, found, is_std=not found)
+
+
+minors.m2_options = ("Limit",)
 
 
 @command("det", dialect="m2")
@@ -55,9 +64,13 @@ def diff(x: Poly | Matrix, f: Poly | Ideal | Matrix) -> Any:
     differential operator (x^2*y: d^3/dx^2dy) applied to f; diff(M, f): to each entry of M."""
     if isinstance(x, Poly) and x.ring is not f.ring and hasattr(f.ring, "owner"):  # a coefficient ring's variable
         x = lift_to(x, f.ring.owner)
+    if isinstance(x, Matrix) and isinstance(f, Matrix):  # entry (i*r+k, j*s+l): diff(x_(i,j), f_(k,l))
+        p, q, r, t = x.nrows, x.ncols, f.nrows, f.ncols
+        return Matrix(f.ring, p * r, q * t, [_operator(x.entries[i * q + j], f.entries[k * t + m])
+                                             for i in range(p) for k in range(r) for j in range(q) for m in range(t)])
     if isinstance(x, Matrix):
         if not isinstance(f, Poly):
-            raise MechTypeError("diff(M, f) takes a matrix M and a polynomial f")
+            raise MechTypeError("diff(M, f) takes a matrix M and a polynomial f (or a matrix)")
         return Matrix(x.ring, x.nrows, x.ncols, [_operator(p, f) for p in x.entries])
     if isinstance(f, Poly):
         return _operator(x, f)
@@ -79,6 +92,7 @@ def _operator(P: Poly, f: Poly) -> Poly:
 
 
 @command("sub", dialect="m2")
+@in_quotients
 def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
     """sub(f, {x => a, y => b}): substitute for the variables; sub(f, S): the same polynomials
     (variables matched by name, the others sent to 0) in the ring S."""
@@ -100,6 +114,13 @@ def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
     out = map_value(f, images, target)
     if is_integral(target) and any(getattr(c, "q", 1) != 1 for g in _polys(ctx, (out,), target) for c in g.terms.values()):
         raise MechRuntimeError("sub: the result has a fractional coefficient: it is not in a ring over ZZ")
+    if getattr(getattr(target, "owner", None), "quotient", None) is not None:  # in R/Q: normal forms
+        if isinstance(out, Poly):
+            return normal(out)
+        if isinstance(out, Ideal):
+            return Ideal(out.ring, [g for g in (normal(p) for p in out.gens) if not g.is_zero()])
+        if isinstance(out, Matrix):
+            return Matrix(out.ring, out.nrows, out.ncols, [normal(p) for p in out.entries])
     return out
 
 
@@ -115,4 +136,31 @@ def _unit(f: Poly, unit: Any) -> Any:
     field = f.ring.field
     if field.characteristic:
         return int(field.symmetric(unit))
-    return int(unit.p) if unit.q == 1 else unit
+    return int(unit.p) if unit.q == 1 else Fraction(int(unit.p), int(unit.q))
+
+
+@command("value", dialect="m2")
+def value(F: Factored) -> Poly:
+    """value F: the product a factorization stands for."""
+    out = F.factors[0][0].ring.one() if F.factors else None
+    for g, k in F.factors:
+        out = out * g ** k
+    if out is None:
+        return F.unit
+    return out * out.ring.field(F.unit) if F.unit != 1 else out
+
+
+@command("symmetricPower", dialect="m2")
+def symmetric_power(d: int, M: Matrix) -> Matrix:
+    """symmetricPower(d, m) for a one-row matrix m: the row of the products of d of its entries
+    (indices i1 <= ... <= id, in lexicographic order)."""
+    from itertools import combinations_with_replacement
+    if M.nrows != 1 or type(d) is not int or d < 0:
+        raise MechRuntimeError("symmetricPower(d, m) is supported for a one-row matrix m and d >= 0")
+    out = []
+    for idx in combinations_with_replacement(range(M.ncols), d):
+        p = M.ring.one()
+        for i in idx:
+            p = p * M.entries[i]
+        out.append(p)
+    return Matrix(M.ring, 1, len(out), out)
