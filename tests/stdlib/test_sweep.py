@@ -6,6 +6,7 @@ from __future__ import annotations
 import csv
 import re
 import shlex
+import time
 from fractions import Fraction
 
 import pytest
@@ -229,17 +230,25 @@ def test_the_cli_subcommand(tmp_path, capsys):
     assert main(["sweep", str(script)]) == 2  # --designs is required
 
 
-def test_the_cli_whole_sweep_time_limit_keeps_the_rows_and_resumes(tmp_path, capsys):
+def test_the_cli_whole_sweep_time_limit_keeps_the_rows_and_resumes(tmp_path, capsys, monkeypatch):
     """``mech sweep --timeout`` is per design; ``--total-timeout T`` (or ``mech --timeout T sweep``)
     limits the whole sweep: it stops with the rows done in the table and says how to resume."""
     from mech.cli import main
+    from mech.stdlib import sweep_run
+    run_batch = sweep_run.run_batch
+
+    def slow_batch(*args):  # each design at least 50 ms: the 144 outlast the 1 s limit on any machine
+        time.sleep(0.05)
+        return run_batch(*args)
     script = tmp_path / "rpr.mech"
     script.write_text(f'LIB "mechanism.lib";\nmechanism rpr {{ {RPR}; }}\n')
     grid = ["--designs", "grid r1=1:12:12 r2=1:12:12 r3=4", "--answers", "real", "--scheduler", "inline"]
     # each spelling writes its own table: a second run on the first's table would resume it and could finish
     for name, limit in (("total", ["sweep", str(script), "--total-timeout", "1"]),
                         ("rpr", ["--timeout", "1", "sweep", str(script)])):
-        assert main(limit + grid + ["--out", str(tmp_path / f"{name}.csv")]) == 1  # 144 designs take seconds
+        with monkeypatch.context() as patch:
+            patch.setattr(sweep_run, "run_batch", slow_batch)
+            assert main(limit + grid + ["--out", str(tmp_path / f"{name}.csv")]) == 1
         err = capsys.readouterr().err
         kept = (tmp_path / f"{name}.csv").read_text().count("\n") - 1
         assert re.fullmatch(rf"mech sweep: error: time limit of 1 s exceeded: the sweep stopped after {kept} of 144 "
