@@ -454,6 +454,19 @@ def jacobian(polys: Sequence[Poly], ring: PolyRing | None = None) -> Matrix:
     return Matrix(ring, len(polys), ring.nvars, [f.diff(j) for f in polys for j in range(ring.nvars)])
 
 
+def apply_operator(P: Poly, f: Poly) -> Poly:
+    """The differential operator of the polynomial ``P`` applied to ``f`` (each monomial of P a
+    product of partial derivatives: Singular's ``diff(ideal, ideal)``, Macaulay2's ``diff(M, N)``)."""
+    out = f.ring.zero()
+    for e, c in P.terms.items():
+        g = f
+        for i, k in enumerate(e):
+            for _ in range(k):
+                g = g.diff(i)
+        out = out + g * c
+    return out
+
+
 def gradient(f: Poly) -> list[Poly]:
     """Singular's ``jacob(f)`` for a polynomial: its partial derivatives."""
     return [f.diff(j) for j in range(f.ring.nvars)]

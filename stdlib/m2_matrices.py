@@ -11,6 +11,7 @@ from ..dsl.m2_values import Factored, Opt
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Matrix, Ring
 from ..kernel import Poly
+from ..kernel.matrix import apply_operator
 from .m2 import _indices, _polys
 
 @command("jacobian", dialect="m2")
@@ -66,29 +67,18 @@ def diff(x: Poly | Matrix, f: Poly | Ideal | Matrix) -> Any:
         x = lift_to(x, f.ring.owner)
     if isinstance(x, Matrix) and isinstance(f, Matrix):  # entry (i*r+k, j*s+l): diff(x_(i,j), f_(k,l))
         p, q, r, t = x.nrows, x.ncols, f.nrows, f.ncols
-        return Matrix(f.ring, p * r, q * t, [_operator(x.entries[i * q + j], f.entries[k * t + m])
+        return Matrix(f.ring, p * r, q * t, [apply_operator(x.entries[i * q + j], f.entries[k * t + m])
                                              for i in range(p) for k in range(r) for j in range(q) for m in range(t)])
     if isinstance(x, Matrix):
         if not isinstance(f, Poly):
             raise MechTypeError("diff(M, f) takes a matrix M and a polynomial f (or a matrix)")
-        return Matrix(x.ring, x.nrows, x.ncols, [_operator(p, f) for p in x.entries])
+        return Matrix(x.ring, x.nrows, x.ncols, [apply_operator(p, f) for p in x.entries])
     if isinstance(f, Poly):
-        return _operator(x, f)
+        return apply_operator(x, f)
     entries = f.gens if isinstance(f, Ideal) else f.entries
     rows, cols = (1, len(f.gens)) if isinstance(f, Ideal) else (f.nrows, f.ncols)
-    return Matrix(f.ring, rows, cols, [_operator(x, g) for g in entries])
+    return Matrix(f.ring, rows, cols, [apply_operator(x, g) for g in entries])
 
-
-def _operator(P: Poly, f: Poly) -> Poly:
-    """The differential operator of the polynomial P applied to f."""
-    out = f.ring.zero()
-    for e, c in P.terms.items():
-        g = f
-        for i, k in enumerate(e):
-            for _ in range(k):
-                g = g.diff(i)
-        out = out + g * c
-    return out
 
 
 @command("sub", dialect="m2")

@@ -10,6 +10,7 @@ from ..dsl.values import Ideal, IntVec, List, Map, Matrix, Number, Ring, to_poly
 from ..dsl.values import typeof as _typeof
 from ..kernel import Poly
 from ..kernel.algext import AlgebraicField
+from ..kernel.matrix import apply_operator
 
 
 @command("size")
@@ -160,18 +161,8 @@ def diff_operators(H: Ideal, I: Ideal) -> Matrix:
       → 2x,y2,
       → 0, 2x
     """
-    return Matrix(I.ring, len(H.gens), len(I.gens), [_apply_operator(h, f) for h in H.gens for f in I.gens])
+    return Matrix(I.ring, len(H.gens), len(I.gens), [apply_operator(h, f) for h in H.gens for f in I.gens])
 
-
-def _apply_operator(h: Poly, f: Poly) -> Poly:
-    out = f.ring.zero()
-    for e, c in h.terms.items():
-        g = f
-        for i, k in enumerate(e):
-            for _ in range(k):
-                g = g.diff(i)
-        out = out + g * c
-    return out
 
 
 def _var_index(x: Poly, cmd: str) -> int:
