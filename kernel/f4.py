@@ -223,18 +223,25 @@ class F4:
                 np_s.append(~c)
         return RowSpec(k, piv_t, piv_j, np_t, np_s)
 
+    def _layout(self, crow_specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]]):
+        """Symbolic preprocessing and the matrix's columns: the rows' monomials, the pivot columns
+        and the non-pivot monomials (both increasing), and each column's code (pivot ``j`` >= 0,
+        non-pivot slot ``s`` as ``-1 - s``)."""
+        rowmons, nonpivot = self._symbolic(crow_specs, pivots)
+        self.work += sum(map(len, rowmons.values()))
+        pivcols = sorted(pivots)
+        nonpivot.sort()
+        where = dict(zip(pivcols, range(len(pivcols))))
+        where.update(zip(nonpivot, range(-1, -len(nonpivot) - 1, -1)))
+        return rowmons, pivcols, nonpivot, where
+
     def _matrix(self, crow_specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]]):
         """Build and reduce a matrix.  Returns the reduced reducers ``T`` (by pivot id), the
         pivot columns (increasing), the non-pivot monomials (increasing: slot order), the
         echelon form of the reduced pair rows, the rows that raised the rank, and the row specs
         (reducers by pivot id, pair rows) for the trace."""
-        rowmons, nonpivot = self._symbolic(crow_specs, pivots)
-        self.work += sum(map(len, rowmons.values()))
-        pivcols = sorted(pivots)
-        nonpivot.sort()
+        rowmons, pivcols, nonpivot, where = self._layout(crow_specs, pivots)
         K, m = len(pivcols), len(nonpivot)
-        where = dict(zip(pivcols, range(K)))
-        where.update(zip(nonpivot, range(-1, -m - 1, -1)))
         vec, coefs, neg, spec = self.vec, self.coefs, self.neg, self._spec
         combine = vec.combiner(m)
         T = [0] * K
@@ -255,13 +262,8 @@ class F4:
         the non-pivot monomials, the kernel's ``(used, E, W)`` (``W``: the reduced tails of the
         reducers with leading monomials ``want``) and, when recording, the rows as
         :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
-        rowmons, nonpivot = self._symbolic(crow_specs, pivots)
-        self.work += sum(map(len, rowmons.values()))
-        pivcols = sorted(pivots)
-        nonpivot.sort()
+        rowmons, pivcols, nonpivot, where = self._layout(crow_specs, pivots)
         K, m = len(pivcols), len(nonpivot)
-        where = dict(zip(pivcols, range(K)))
-        where.update(zip(nonpivot, range(-1, -m - 1, -1)))
         coefs, get = self.coefs, where.__getitem__
         flat = Flat()
         flat.ids.extend(range(K))
