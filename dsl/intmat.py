@@ -123,15 +123,17 @@ def intmat_op(op: str, a: Any, b: Any) -> Any:
             bt = b.transpose().rows()
             return IntMat(a.nrows, b.ncols, [sum(x * y for x, y in zip(r, c)) for r in a.rows() for c in bt])
     if op in ("div", "/") and isinstance(a, IntMat) and isinstance(b, int) and b:
-        return IntMat(a.nrows, a.ncols, [_trunc_div(x, b) for x in a.values])
+        return IntMat(a.nrows, a.ncols, [euclid_div(x, b) for x in a.values])
     if op in ("mod", "%") and isinstance(a, IntMat) and isinstance(b, int) and b:
         return IntMat(a.nrows, a.ncols, [x % abs(b) for x in a.values])
     raise MechTypeError(f"operator {op} is not defined for {_name(a)} and {_name(b)}")
 
 
-def _trunc_div(x: int, b: int) -> int:
-    q = abs(x) // abs(b)
-    return q if (x >= 0) == (b > 0) else -q
+def euclid_div(a: int, b: int) -> int:
+    """Singular's division of intvec and intmat entries: the quotient whose remainder lies in [0, |b|)."""
+    if b == 0:
+        raise MechRuntimeError("division by 0")
+    return (a - a % abs(b)) // b
 
 
 def _diag_add(m: IntMat, c: int) -> IntMat:

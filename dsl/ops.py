@@ -11,7 +11,7 @@ from typing import Any, Callable, Optional
 
 from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
-from .intmat import IntMat, intmat_op
+from .intmat import IntMat, euclid_div, intmat_op
 from .minpoly import compare_params
 from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number, to_poly,
                      typeof)
@@ -179,8 +179,8 @@ def _intvec_op(op: str, a: Any, b: Any) -> Any:
         raise _bad(op, a, b)
     if isinstance(a, IntVec) and isinstance(b, int):
         fn = {"+": lambda u: u + b, "-": lambda u: u - b, "*": lambda u: u * b,
-              "/": lambda u: trunc_div(u, b), "div": lambda u: trunc_div(u, b),
-              "mod": lambda u: trunc_mod(u, b)}.get(op)
+              "/": lambda u: euclid_div(u, b), "div": lambda u: euclid_div(u, b),
+              "mod": lambda u: u - b * euclid_div(u, b)}.get(op)
     elif isinstance(a, int) and isinstance(b, IntVec) and op in ("+", "*"):
         return _intvec_op(op, b, a)
     else:
