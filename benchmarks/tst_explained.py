@@ -17,6 +17,8 @@ _ELIMRING = ("Singular's elimRing puts the variables to eliminate first (y v x z
              "basis of Q for the new ordering); mech carries it over by name (checked in Singular)")
 
 EXPLAINED: dict[str, str] = {
+    "Manual/indepSet.tst": "indepSet(I, 0) and indepSet(I, 1) give the same independent sets as Singular's, listed in "
+                           "another order (checked in Singular)",
     "Manual/elimRing.tst": _ELIMRING,
     "LIB/elim.lib:elimRing": _ELIMRING,
     "Manual/reduce.tst": _LAZY,
