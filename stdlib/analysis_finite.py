@@ -315,8 +315,8 @@ def singular_lines(a: Any) -> list[str]:
     fin: Finite = a.finite
     n = fin.nvars
     low = [(i, o) for i, o in enumerate(fin.orbits, 1) if o.rank < n]
-    out = [f"singular configurations: 0 (finitely many configurations, each an isolated point; the Fitting ideal "
-           f"and the local analysis do not apply)"]
+    out = ["singular configurations: 0 (finitely many configurations, each an isolated point; the Fitting ideal "
+           "and the local analysis do not apply)"]
     if not low:
         out.append(f"  the Jacobian of J has full rank {n} at all {fin.distinct} configurations (checked exactly on "
                    f"each orbit): J is reduced, no constraint singularity")

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from typing import Any, Callable, Optional
+from typing import Any, Callable
 
 from mech.dsl.limits import REPORT_KEEP, cut, remaining
 from mech.dsl.limits import within as limited
