@@ -215,7 +215,8 @@ def gruebler_kutzbach(m: Described) -> int:
     """The planar Grübler–Kutzbach count ``3 (n - 1) - 2 j1``: each link a body (a prismatic bar
     two, with a prismatic joint between them), each slider a block with a revolute joint at its
     point and a prismatic joint along its line; a point where k bodies meet (the ground counting
-    for a fixed point) is k - 1 revolute joints."""
+    for a fixed point) is k - 1 revolute joints; two links (or a link and the ground) sharing
+    ``k >= 2`` points are welded: 3 constraints, not ``2 k``."""
     bodies = len(m.links) + sum(link.prismatic for link in m.links) + len(m.sliders)
     meet: dict[str, int] = {p: 1 for p in m.fixed}
     for link in m.links:
@@ -224,5 +225,8 @@ def gruebler_kutzbach(m: Described) -> int:
     for sl in m.sliders:
         meet[sl.point] = meet.get(sl.point, 0) + 1
     revolute = sum(max(k - 1, 0) for k in meet.values())
+    parts = [set(m.fixed)] + [set(link.points) for link in m.links]
+    shared = [len(a & b) for i, a in enumerate(parts) for b in parts[i + 1:]]
+    welded = sum(2 * k - 3 for k in shared if k >= 2)
     prismatic = sum(link.prismatic for link in m.links) + len(m.sliders)
-    return 3 * bodies - 2 * revolute - 2 * prismatic - len(m.gears)  # a gear pair: a higher pair, one constraint
+    return 3 * bodies - 2 * revolute + welded - 2 * prismatic - len(m.gears)  # a gear pair: a higher pair, one constraint

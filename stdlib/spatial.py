@@ -161,7 +161,9 @@ def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list
 def gruebler_kutzbach(m: Described) -> int:
     """The spatial count ``6 (n - 1) - 3 j3 - spins``: each link a body, a point where k bodies meet
     (the ground counting for a fixed point) k - 1 spherical joints, and each bar's spin about its
-    own axis (a passive freedom that moves nothing) not counted."""
+    own axis (a passive freedom that moves nothing) not counted.  Two rigid parts (bodies or the
+    ground) sharing two points are hinged: a revolute joint, 5 constraints, not two spherical
+    joints' 6; sharing ``k >= 3`` points they are welded, 6 constraints, not ``3 k``."""
     meet: dict[str, int] = {p: 1 for p in m.fixed}
     for link in m.links:
         for p in link.points:
@@ -169,4 +171,7 @@ def gruebler_kutzbach(m: Described) -> int:
     spherical = sum(max(k - 1, 0) for k in meet.values())
     bars = sum(not isinstance(link, Body) for link in m.links)
     prismatic = sum(link.prismatic for link in m.links)
-    return 6 * len(m.links) - 3 * spherical - bars + prismatic - 2 * len(m.sliders)
+    parts = [set(m.fixed)] + [set(link.points) for link in m.links if isinstance(link, Body)]
+    shared = [len(a & b) for i, a in enumerate(parts) for b in parts[i + 1:]]
+    repeated = sum(1 if k == 2 else 3 * k - 6 for k in shared if k >= 2)
+    return 6 * len(m.links) - 3 * spherical + repeated - bars + prismatic - 2 * len(m.sliders)
