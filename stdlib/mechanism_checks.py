@@ -4,8 +4,9 @@ Errors (the description is refused): a point fixed twice at different places, a 
 used twice, loop joints together with points, lengths set to zero or negative numbers.  Warnings
 (the description stands, the message says what is odd): a fixed point that nothing uses, a point
 fixed twice at the same place, two fixed points at one place, a point that only one bar mentions
-(a misspelt name leaves the chain open: a dangling link), a bar repeated or between two fixed
-points, a slider repeated or on a fixed point (redundant constraints).  Every message names the
+(a misspelt name leaves the chain open: a dangling link), a bar repeated, between two fixed
+points or between two points of one body, a slider repeated or on a fixed point (redundant
+constraints).  Every message names the
 statement (its number in the description and its text).  The Grübler–Kutzbach count beside the
 true mobility is in the analysis' report.
 """
@@ -116,6 +117,10 @@ def _redundant(m: Described, warn: Callable[[str], None]) -> None:
                 warn(f"mechanism: {where(e.source)}: {' and '.join(e.points)} are joined by "
                      f"{where(bars[key].source)} already: a redundant constraint")
             bars.setdefault(key, e)
+            body = next((b for b in m.links if b is not e and len(b.points) > 2 and key <= set(b.points)), None)
+            if body is not None and not e.prismatic:
+                warn(f"mechanism: {where(e.source)}: {' and '.join(e.points)} are points of one body "
+                     f"({where(body.source)}): the bar is a redundant constraint")
             if all(p in m.fixed for p in e.points) and not e.prismatic:
                 warn(f"mechanism: {where(e.source)}: both ends are fixed: the bar moves nothing (a redundant "
                      "constraint, or no configuration when the lengths differ)")

@@ -229,4 +229,5 @@ def gruebler_kutzbach(m: Described) -> int:
     shared = [len(a & b) for i, a in enumerate(parts) for b in parts[i + 1:]]
     welded = sum(2 * k - 3 for k in shared if k >= 2)
     prismatic = sum(link.prismatic for link in m.links) + len(m.sliders)
-    return 3 * bodies - 2 * revolute + welded - 2 * prismatic - len(m.gears)  # a gear pair: a higher pair, one constraint
+    # a gear pair: a higher pair, one constraint
+    return 3 * bodies - 2 * revolute + welded - 2 * prismatic - len(m.gears)
