@@ -6,12 +6,12 @@ used twice, loop joints together with points, lengths set to zero or negative nu
 fixed twice at the same place, two fixed points at one place, a point that only one bar mentions
 (a misspelt name leaves the chain open: a dangling link), a bar repeated, between two fixed
 points or between two points of one body, a slider repeated or on a fixed point (redundant
-constraints).  Every message names the
-statement (its number in the description and its text).  The Grübler–Kutzbach count beside the
-true mobility is in the analysis' report.
+constraints).  Every message names the statement (its number in the description and its text).
+The Grübler–Kutzbach count beside the true mobility is in the analysis' report.
 """
 from __future__ import annotations
 
+from fractions import Fraction
 from typing import Callable
 
 from mech.stdlib.joints import (Bar, Described, Fix, Helical, LineSlider, Link, LoopJoint, MechanismError, PrismaticBar, Slider,
@@ -32,6 +32,7 @@ def check(m: Described, warn: Callable[[str], None]) -> None:
         return
     _undefined(m)
     _unused_and_dangling(m, warn)
+    _fixed_bars(m)
     _redundant(m, warn)
 
 
@@ -134,6 +135,26 @@ def _redundant(m: Described, warn: Callable[[str], None]) -> None:
                      "constraint)")
 
 
+def _fixed_bars(m: Described) -> None:
+    """A bar between two fixed points must fit their distance (numbers known): else no configuration."""
+    fixed = m.fixed
+    for e in m.elements:
+        if not isinstance(e, Bar) or not all(p in fixed for p in e.points):
+            continue
+        a, b, length = fixed[e.points[0]], fixed[e.points[1]], e.local[0][0]
+        if any(isinstance(v, str) for v in (*a, *b, length)):
+            continue
+        dist2 = sum((Fraction(q) - Fraction(p)) ** 2 for p, q in zip(a, b))
+        if dist2 != Fraction(length) ** 2:
+            raise MechanismError(f"{where(e.source)}: both ends are fixed, {_distance(dist2)} apart: a bar of length "
+                                 f"{length} does not fit (no configuration)")
+
+
+def _distance(d2: Fraction) -> str:
+    q = Fraction(float(d2) ** 0.5).limit_denominator(10 ** 6)
+    return str(q) if q * q == d2 else f"sqrt({d2})"
+
+
 def check_values(m: Described) -> None:
     """Lengths given values must stay positive (bars, loop link lengths >= 0), two ground points
     apart."""
@@ -142,6 +163,7 @@ def check_values(m: Described) -> None:
             raise MechanismError(f"{where(e.source)}: the length of a bar is positive, not {e.local[0][0]}")
         if isinstance(e, LoopJoint) and not isinstance(e.a, str) and e.a < 0:
             raise MechanismError(f"{where(e.source)}: a is a distance (>= 0), not {e.a}")
+    _fixed_bars(m)
     fixed = [e for e in m.elements if isinstance(e, Fix)]
     for i, a in enumerate(fixed):
         for b in fixed[i + 1:]:

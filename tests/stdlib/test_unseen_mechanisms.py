@@ -303,6 +303,8 @@ def test_gruebler_kutzbach_counts_hinges(desc, count):
     (INVERTED.replace("slider B A C", "slider b A C"), "statement 5 'slider b A C': b is not a point"),
     (STEWART63.replace("fix B2 0 -3 0", "fix B1 0 -3 0"), "statement 2 'fix B1 0 -3 0': B1 is already fixed"),
     (STEWART63.replace("bar B5 P3 3", "bar B5 P3 0"), "statement 12 'bar B5 P3 0': the length of a bar is positive"),
+    ("fix O 0 0 0; fix P 3 0 0; bar O P 2; bar O A 1; bar P A 3",
+     "statement 3 'bar O P 2': both ends are fixed, 3 apart: a bar of length 2 does not fit"),
     (CHEBYSHEV + "; bar B C 5/2", "statement 5 'bar B C 5/2': B and C are points of one body (statement 3"),
 ])
 def test_mistakes_on_unseen_mechanisms(desc, message):
@@ -312,3 +314,9 @@ def test_mistakes_on_unseen_mechanisms(desc, message):
     except Exception as e:  # an error: the message names the statement
         warnings.append(str(e))
     assert any(message in w for w in warnings), warnings
+
+
+def test_a_bar_between_fixed_points_set_to_a_wrong_length():
+    m = parse_mechanism("fix O; fix P 2 3; bar O P l; bar O A 1; bar P A 3")
+    with pytest.raises(Exception, match=r"statement 3 'bar O P l': both ends are fixed, sqrt\(13\) apart"):
+        m.with_values({"l": 2})
