@@ -366,7 +366,7 @@ def test_docs_examples(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     s = Session()
     blocks = code_blocks(ROOT / "docs" / "mechanisms.md")
-    assert len(blocks) == 10
+    assert len(blocks) == 11
     for code, expected in blocks:
         out = s.execute(code)
         if expected is not None:
