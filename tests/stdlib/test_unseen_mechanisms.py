@@ -170,6 +170,13 @@ def test_sarrus_example(tmp_path):
     assert (d["mobility"], modes(d), d["gruebler_kutzbach"], d["overconstrained"]) == (1, [1, 1], 0, True)
     links = [(2, (1, 0), -2), (1, (1, 0), 0), (0, R90, 2), (1, (1, 0), 0), (2, (1, 0), 0), (0, R90, 0)]
     assert singular_primes(*loop_axes(links), char=32003) == [1, 1]
+    # the singular configurations: the two modes are smooth and meet in 4 points
+    names, eqs = loop_axes(links)
+    script = (f'LIB "primdec.lib"; ring r = 32003, ({",".join(names)}), dp; ideal J = {", ".join(eqs)};\n'
+              'list L = minAssGTZ(J); list M = minAssGTZ(L[1] + L[2]); print(size(M)); int k;\n'
+              f'for (k = 1; k <= 2; k++) {{ print(dim(std(L[k] + minor(jacob(L[k]), {len(names) - 1})))); }}\n')
+    assert run_singular(script, timeout=300).split() == ["4", "-1", "-1"]
+    assert len(d["singular"]) == 4
 
 
 @pytest.mark.singular
