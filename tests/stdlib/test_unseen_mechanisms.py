@@ -291,6 +291,20 @@ def test_stewart_6_3_non_planar_base():
     assert singular_orbits(names, eqs, [3, -2, 5, 7, -1, 4, 2, -3, 1]) == (16, [1, 15])
 
 
+@pytest.mark.singular
+def test_closed_6r_arm_example(tmp_path):
+    """A general 6R arm closed into a loop (its inverse kinematics): 16 complex assembly modes, one orbit
+    over Q (Singular agrees over Q with a separating form's minimal polynomial, irreducible of degree 16,
+    but takes minutes; here its count modulo 32003 on the axes' ideal: dimension 0, vdim 16)."""
+    d = report(example="arm6r", cwd=tmp_path)
+    assert (d["mobility"], d["complex_configurations"], [o["configurations"] for o in d["assembly_orbits"]]) == \
+        (0, 16, [16])
+    names, eqs = loop_axes([(1, R90, 0), (2, R35, 0), (1, R513, 0), (F(3, 2), R90, 0), (1, R45, 0), (2, R1213, 0)])
+    script = (f'ring r = 32003, ({",".join(names)}), dp; ideal J = {", ".join(eqs)}; ideal G = std(J);\n'
+              'print(dim(G)); print(vdim(G));\n')
+    assert run_singular(script, timeout=300).split() == ["0", "16"]
+
+
 # ---------------------------------------------------------------- counts and mistakes
 @pytest.mark.parametrize("desc, count", [
     ("fix O1 0 0 0; fix O2 0 0 1; body O1 O2 1 0 0 B 0 1 0; fix G1 3 0 0; fix G2 3 1 0; "
