@@ -116,6 +116,7 @@ class Analysis:
     dim: int = -1
     mobility: int = -1
     radical: bool = False
+    radical_decided: bool = False  # False: the analysis stopped before deciding (the report says so)
     complete_intersection: bool = False
     decomposed: bool = True  # False: without the motion modes (quick, or no strategy found them)
     modes: list[Mode] = field(default_factory=list)
@@ -227,9 +228,9 @@ def global_analysis(m: Mechanism, decompose: bool = True, a: Analysis | None = N
         return a
     a.running = "radicality"
     with stage("radicality"):
-        a.radical = generically_reduced(J, R, a.dim, n)
+        a.radical = a.radical_decided = generically_reduced(J, R, a.dim, n)
         if not a.radical and (params or not decompose):
-            a.radical = ideals_equal(radical(J, R), J, R)
+            a.radical, a.radical_decided = ideals_equal(radical(J, R), J, R), True
     if not decompose and not params and not (a.radical and a.complete_intersection):
         raise MechanismError(f"{m.name}: the quick analysis needs a radical complete intersection")
     if not params:
@@ -277,6 +278,7 @@ def _numeric_modes(a: Analysis) -> None:
     if not a.radical:
         with stage("radicality", detail="the intersection of the minimal primes"):
             a.radical = ideals_equal(intersect(*primes, ring=R), J, R)
+    a.radical_decided = True
     dims = [dimension(P, R) for P in primes]
     a.equidimensional = len(set(dims)) == 1
     # the modes first, their real points after: a limit during the real points keeps the modes

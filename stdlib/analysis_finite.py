@@ -248,6 +248,7 @@ def finite_analysis(a: Any, mode: Callable[..., Any]) -> bool:
     sols = Solutions(A.dim, rep.count, [RealSolution(b, r.multiplicity, r) for r, b in boxes], rep)  # as real_solutions
     M = A.linear_matrix(rep.form)
     a.radical = radical = sols.total == sols.complex_count
+    a.radical_decided = True
     factors = sorted((g for g, _ in rep.poly.factor()[1]), key=lambda g: (g.degree(), [int(c) for c in g.coeffs()]))
     orbits, modes = [], []
     with stage("assembly modes", total=len(factors)) as st:

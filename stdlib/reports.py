@@ -62,7 +62,8 @@ def report_data(a: Analysis) -> dict:
     d: dict[str, Any] = {
         "mechanism": str(a.mechanism), "variables": list(a.ring.names[:a.nvars]),
         "lengths": a.params, "constraints": ps(a.ideal), "dimension": a.dim,
-        "mobility": a.mobility, **_count_data(a), "radical": a.radical, "fitting_minor_size": a.fitting_size}
+        "mobility": a.mobility, **_count_data(a), "radical": a.radical if a.radical_decided else None,
+        "fitting_minor_size": a.fitting_size}
     if a.params:
         d["fitting_components"] = [
             {"prime": ps(c.prime),
@@ -127,7 +128,9 @@ def report_text(a: Analysis) -> str:
                                          if a.params else ""),
            "constraint ideal J:"] + [f"  {poly_str(g)}" for g in a.ideal]
     mob = f"mobility {a.mobility}" + (f" (dim J = {a.dim} minus {len(a.params)} lengths)" if a.params else "")
-    out.append(f"{mob}{_count_note(a)}; J is {'radical' if a.radical else 'not radical'}"
+    radical = "radical" if a.radical else "not radical" if a.radical_decided else \
+        "not known to be radical (the analysis stopped before deciding)"
+    out.append(f"{mob}{_count_note(a)}; J is {radical}"
                + ("" if a.equidimensional else ", not equidimensional"))
     if a.params:
         out.append(f"singular variety (Theorem 1): V(J + I_{a.fitting_size}(dJ)); "
@@ -240,7 +243,7 @@ def _singular_lines(a: Analysis) -> list[str]:
 
 def _embedded_lines(a: Analysis) -> list[str]:
     """The embedded components of a non-radical J and what they mean for the linkage."""
-    if a.radical or not a.decomposed:
+    if a.radical or not a.decomposed or not a.radical_decided:
         return []
     if a.embedded is None:
         return ["embedded components of J: not computed (out of budget)"]

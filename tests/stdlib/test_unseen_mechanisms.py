@@ -341,3 +341,17 @@ def test_a_bar_between_fixed_points_set_to_a_wrong_length():
     m = parse_mechanism("fix O; fix P 2 3; bar O P l; bar O A 1; bar P A 3")
     with pytest.raises(Exception, match=r"statement 3 'bar O P l': both ends are fixed, sqrt\(13\) apart"):
         m.with_values({"l": 2})
+
+
+def test_radicality_not_decided_is_not_reported_as_not_radical():
+    """An analysis stopped before deciding radicality (the Peaucellier inversor's decomposition over a time
+    limit left J's radicality open, and the report said "not radical": Singular finds J radical) says so."""
+    from mech.stdlib.analysis import Analysis
+    from mech.stdlib.reports import report_data, report_text
+    m = parse_mechanism("fix O; fix Q 1 0; bar Q C 1; bar O B 3; bar O D 3; bar C B 1; bar C D 1; bar B P 1; bar D P 1")
+    R, gens = m.constraints()
+    a = Analysis(m, R, gens, R.nvars, [], dim=2, mobility=2)
+    a.modes_found, a.unfinished = False, ["decomposition: interrupted by the time limit, and the steps after it"]
+    assert "J is not known to be radical (the analysis stopped before deciding)" in report_text(a)
+    assert "embedded components" not in report_text(a)
+    assert report_data(a)["radical"] is None
