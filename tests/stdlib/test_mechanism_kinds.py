@@ -38,7 +38,7 @@ def description(name: str) -> str:
     ("bennett", 1, 1, None),
     ("spatial4r", 0, 2, 2),
     ("spherical4r", 1, 1, None),
-    ("stewart", 0, 1, 16),
+    ("stewart33", 0, 1, 16),
     ("spatial_slider", 1, 1, None),
     ("twoloops", 1, 1, None),
     ("screw", 2, 1, None),  # the helical coupling is not in the ideal: the screw itself has one freedom
@@ -200,7 +200,7 @@ def test_stewart_assembly_modes_in_singular(tmp_path):
               'ideal G = std(J); print(string(dim(G)) + " " + string(vdim(G)) + " " + '
               'string(vdim(std(radical(J)))) + " " + string(nrRootsDeterm(G)));\n')
     assert run_singular(script, timeout=300).split() == ["0", "16", "16", "8"]   # 8 real (Hermite's form)
-    d = example("stewart", tmp_path)
+    d = example("stewart33", tmp_path)
     assert (d["mobility"], d["complex_configurations"]) == (0, 16)
     modes = d["assembly_modes"]
     assert (modes["complex"], modes["real"], len(modes["poses"])) == (16, 8, 8)

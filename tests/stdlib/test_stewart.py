@@ -1,4 +1,4 @@
-"""The generic 6-6 Stewart–Gough platform (examples/stewart66.mech): mech counts its assembly modes
+"""The generic 6-6 Stewart–Gough platform (examples/stewart.mech): mech counts its assembly modes
 exactly over Q (40 complex, 2 real) with ``analyze``; Singular counts 40 on an ideal written here independently, in
 the world coordinates of three platform points."""
 from __future__ import annotations
@@ -13,7 +13,7 @@ import pytest
 
 from tests.util import ROOT, SINGULAR, run_singular
 
-EXAMPLE = ROOT / "examples" / "stewart66.mech"
+EXAMPLE = ROOT / "examples" / "stewart.mech"
 
 
 def design() -> tuple[list[tuple[int, ...]], list[tuple[int, ...]], list[int]]:
