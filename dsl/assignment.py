@@ -13,7 +13,8 @@ from .intmat import IntMat, to_intmat
 from .minpoly import set_minpoly
 from .printing import set_short
 from .rings import indexed_names
-from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, to_ideal, to_int, to_matrix, to_poly, typeof
+from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, ring_of, to_ideal, to_int, to_matrix,
+                     to_poly, typeof)
 
 
 #: Singular's bounds on standard basis computations: mech computes without them (only 0 is accepted).
@@ -148,6 +149,8 @@ class Assignment:
                 items[i - 1] = value
             else:
                 items[i - 1] = self._set_in(items[i - 1], chain, k + 1, value)
+            if ring_of(container) is None:  # the new entry is the only one that may depend on a ring
+                return List(items, ring_of(items[i - 1]))
             return List(items)
         if isinstance(container, IntVec):
             if not last:
