@@ -3,7 +3,7 @@ several at once (``a, b = b, a;``), ``x++;``.  Values are immutable: an entry as
 new value and rebinds the variable."""
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
 from ..kernel import Poly
 from . import ast as A
@@ -104,9 +104,12 @@ class Assignment:
         new = self._set_in(var.value, chain, 0, value)
         self._rebind(var, new)
 
-    def _set_in(self, container: Any, chain: list[A.Index], k: int, value: Any) -> Any:
+    def _set_in(self, container: Any, chain: list[A.Index], k: int, value: Any, idx: Optional[list] = None) -> Any:
+        """``container`` with the entry ``chain[k:]`` set to ``value`` (``idx``: the values of
+        ``chain[k]``'s indices when they are evaluated already)."""
         node = chain[k]
-        idx = [self.eval(i) for i in node.indices]
+        if idx is None:
+            idx = [self.eval(i) for i in node.indices]
         last = k == len(chain) - 1
         ring = self.ring.poly if self.ring else None
         if isinstance(container, IntMat):

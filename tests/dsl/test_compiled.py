@@ -36,6 +36,22 @@ SCRIPTS = [
     "int a = 1; int b = 2; a, b = b, a; a; b; int c;\nc = a, b;",
     "int k;\nk = k + 1;\nk = k + 1;\nk = q + 1;",
     "int k = 1;\nk = k + 1;\nk = k div 0;\nk = k div 0;",
+    # entries set in loops: intvec, ideal and matrix inline (padding, other rings, bounds), the rest as the evaluator
+    "ring r = 0, (x,y), dp; ideal I; intvec v; matrix M[2][3]; def d = I; int i; list L;\n"
+    "for (i = 1; i <= 6; i++) { v[i + 2] = i*i; I[i mod 4 + 2] = x^i + y; M[i mod 2 + 1, i mod 3 + 1] = x*i; "
+    "d[i] = y^i; L[size(L) + 1] = i; }\n"
+    "v; I; M; d; typeof(d); L[6]; I[2] = 3; I; v[1] = 2, 3; v; M[1,1] = 5; M;",
+    "ring r = 0, (x,y), dp; matrix M[2][2]; int i;\nfor (i = 1; i <= 3; i++) {\n  M[i, 1] = x;\n}",
+    "ring r = 0, (x,y), dp; ideal I = x; ring s = 0, (x,y), lp; poly p = x; int i;\nsetring r;\n"
+    "for (i = 1; i <= 2; i++) {\n  I[i] = p;\n}",
+    "ring r = 0, (x,y), dp; list L = 1, 2; int i;\nfor (i = 3; i <= 5; i++) { L[i] = i; } L[7] = x;\n"
+    "ring s = 0, (a), dp; listvar(); setring r; L[7]; size(L);",
+    "intvec v = 1, 2; int i;\nfor (i = 1; i <= 2; i++) {\n  v[i - 1] = 3;\n}",
+    # commands called in loops: argument names (warnings), coercions, errors at the call
+    "ring r = 0, (x,y), dp; ideal I = x2 - y, y3; poly f = x5 + y; int i, k; list L = 1, 2;\n"
+    "for (i = 1; i <= 2; i++) { k = k + size(L) + deg(f) + size(string(i)); reduce(f, I); } k; deg(3);",
+    "ring r = 0, (x,y), dp; int i, k;\nfor (i = 1; i <= 2; i++) {\n  k = k + deg(\"a\");\n}",
+    "int i, k;\nfor (i = 1; i <= 2; i++) {\n  k = k + nosuchcommand(i);\n}",
 ]
 
 
