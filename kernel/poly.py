@@ -123,7 +123,7 @@ class Poly:
 
     def total_degree(self) -> int:
         """Largest total degree of a term (-1 for zero), Singular's ``deg``."""
-        return max((sum(e) for e in self.terms), default=-1)
+        return max(map(sum, self.terms), default=-1)
 
     def degree_in(self, i: int) -> int:
         return max((e[i] for e in self.terms), default=-1)
