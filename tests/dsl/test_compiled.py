@@ -76,3 +76,33 @@ def test_same_as_the_evaluator(script):
 def test_errors_name_the_line():
     out, err = _run("int k = 5;\nint j;\nfor (j = 3; j >= 0; j--) {\n  k = k div j;\n}", True)
     assert err.startswith("t.sing:4:") and "division by 0" in err
+
+
+def test_a_list_follows_its_entries_ring_as_in_singular():
+    # Singular 4.3.1 prints the same: L holds x after the loop of ints (it belongs to r), M holds
+    # only ints after its x is replaced (it is seen from s)
+    out, err = _run("ring r = 0,(x,y),dp; list L = 1,2; int i; for (i=3;i<=6;i++) { L[i] = i; } L[8] = x;\n"
+                    "ring s = 0,(a),dp; listvar(); setring r; L[8]; list M = 1, x; M[2] = 3; setring s;\n"
+                    "listvar(); size(M);", True)
+    assert err == ""
+    assert out == ("// s                              [0]  *ring\n// i                              [0]  int 7\n"
+                   "// r                              [0]  ring\nx\n"
+                   "// M                              [0]  list, size: 2\n// s                              [0]  *ring\n"
+                   "// i                              [0]  int 7\n// r                              [0]  ring\n2\n")
+
+
+def test_long_appends_keep_entries_and_ring():
+    s = Session()
+    out = s.execute("list L; int i; for (i = 1; i <= 3000; i++) { L[size(L) + 1] = i; } size(L); L[2999];\n"
+                    "ring r = 0, (x), dp; L[3001] = x; L[3001]; ring t = 0, (y), dp; defined(L);")
+    assert out == "3000\n2999\nx\n0\n"
+
+
+def test_a_time_limit_stops_a_loop_of_inline_commands_and_entries():
+    from mech.dsl.limits import MechLimitError
+    s = Session(timeout=0.5)
+    with pytest.raises(MechLimitError) as info:
+        s.execute("ring r = 0, (x,y), dp; ideal I; intvec v; int i;\n"
+                  "while (1) { i++; I[i mod 5 + 1] = x^(i mod 3); v[i mod 4 + 1] = i; i = i + size(string(i)) - 1; }")
+    assert info.value.line == 2 and info.value.message.startswith("time limit of 0.5 s exceeded")
+    assert s.execute("size(I); size(v);") == "5\n4\n"
