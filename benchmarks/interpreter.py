@@ -183,7 +183,7 @@ def table(results: list[tuple[str, dict[str, float]]], baseline: str | None) -> 
     lines = [head, rule]
     for name, r in results:
         m, s, b = r.get("mech"), r.get("Singular"), r.get("base")
-        row = f"| {name} | {fmt(m)} | {fmt(s)} | {s / m:.0f}× |" if s else f"| {name} | {fmt(m)} | — | — |"
+        row = f"| {name} | {fmt(m)} | {fmt(s)} | {s / m:.{0 if s >= 10 * m else 1}f}× |" if s else f"| {name} | {fmt(m)} | — | — |"
         if baseline:
             row += f" {fmt(b)} | {m / b:.1f}× |"
         lines.append(row)

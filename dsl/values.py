@@ -259,6 +259,10 @@ class List:
     def __len__(self) -> int:
         return len(self.items)
 
+    def __reduce__(self) -> tuple:
+        """Pickled and copied without the ring found (the copy finds its own)."""
+        return type(self), (self.items,)
+
     def __iter__(self):
         return iter(self.items)
 

@@ -106,3 +106,19 @@ def test_a_time_limit_stops_a_loop_of_inline_commands_and_entries():
                   "while (1) { i++; I[i mod 5 + 1] = x^(i mod 3); v[i mod 4 + 1] = i; i = i + size(string(i)) - 1; }")
     assert info.value.line == 2 and info.value.message.startswith("time limit of 0.5 s exceeded")
     assert s.execute("size(I); size(v);") == "5\n4\n"
+
+
+def test_lists_pickle_and_copy_without_their_ring():
+    import copy
+    import pickle
+
+    from mech.dsl.m2_values import Array
+    from mech.dsl.values import List, ring_of
+    s = Session()
+    s.execute("ring r = 0, (x), dp; list L = 1, x; list M = 1, 2;")
+    L, M = s.interpreter.lookup("L").value, s.interpreter.lookup("M").value
+    assert ring_of(L) is s.interpreter.ring.poly and ring_of(M) is None
+    assert ring_of(pickle.loads(pickle.dumps(M))) is None  # (polynomial rings do not pickle)
+    for f in (copy.copy, copy.deepcopy):
+        assert ring_of(f(M)) is None and ring_of(f(L)) is not None and len(f(L)) == 2
+    assert type(copy.copy(Array([1, 2]))) is Array and ring_of(List([Array([1])])) is None
