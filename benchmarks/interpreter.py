@@ -51,6 +51,23 @@ LOOP_CASES = [
     ("string concatenation",
      "string s, t, u; int i;\n"
      "for (i = 1; i <= {n}; i++) {{ s = \"a\" + string(i); t = s + \",\"; u = t + s; }}\n", 4, 50000),
+    ("`for (int i=1; i<=n; i++) { s = s + i; }` at the top level",
+     "int s; for (int i = 1; i <= {n}; i++) {{ s = s + i; }}\n", 2, 100000),
+    ("`if` ... `else` chains in a loop",
+     "int k, i; for (i = 1; i <= {n}; i++) {{ if (i mod 3 == 0) {{ k = k + 1; }} else {{ if (i mod 3 == 1) "
+     "{{ k = k + 2; }} else {{ k = k - 1; }} }} }}\n", 11 / 3, 30000),  # 2 or 3 statements, and the step
+    ("list appends (`L[size(L)+1] = i`)",
+     "list L; int i; for (i = 1; i <= {n}; i++) {{ L[size(L) + 1] = i; }}\n", 2, 10000),
+    ("a recursive proc (`fib(20)`, 21,891 calls)",
+     "proc fib(int n) {{ if (n < 2) {{ return(n); }} return(fib(n - 1) + fib(n - 2)); }}\n"
+     "int r = fib({n});\n", 2 * 21891 / 20, 20),  # each call: its if and one return
+    ("built-in commands in a loop (`k = size(L) + deg(p) + k`)",
+     "ring r = 0, (x,y), dp; poly p = x2+y; list L = 1, 2, 3, 4, 5; int i, k;\n"
+     "for (i = 1; i <= {n}; i++) {{ k = size(L) + deg(p) + k; }}\n", 2, 50000),
+    ("ideal, intvec and matrix entries (`I[j] = ...`, `v[j] = i`, `M[j,1] = x*i`)",
+     "ring r = 0, (x,y), dp; ideal I; intvec v; matrix M[3][3]; int i;\n"
+     "for (i = 1; i <= {n}; i++) {{ I[i mod 10 + 1] = x^(i mod 5) + y; v[i mod 10 + 1] = i; "
+     "M[i mod 3 + 1, 1] = x*i; }}\n", 4, 20000),
 ]
 TIMED = 'system("--ticks-per-sec", 1000); int t_0 = timer;\n{body}int t_1 = timer; t_1 - t_0;\n'
 
@@ -166,7 +183,7 @@ def table(results: list[tuple[str, dict[str, float]]], baseline: str | None) -> 
     lines = [head, rule]
     for name, r in results:
         m, s, b = r.get("mech"), r.get("Singular"), r.get("base")
-        row = f"| {name} | {fmt(m)} | {fmt(s)} | {s / m:.0f}× |" if s else f"| {name} | {fmt(m)} | — | — |"
+        row = f"| {name} | {fmt(m)} | {fmt(s)} | {s / m:.{0 if s >= 10 * m else 1}f}× |" if s else f"| {name} | {fmt(m)} | — | — |"
         if baseline:
             row += f" {fmt(b)} | {m / b:.1f}× |"
         lines.append(row)

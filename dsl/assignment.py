@@ -3,7 +3,7 @@ several at once (``a, b = b, a;``), ``x++;``.  Values are immutable: an entry as
 new value and rebinds the variable."""
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Optional
 
 from ..kernel import Poly
 from . import ast as A
@@ -13,7 +13,8 @@ from .intmat import IntMat, to_intmat
 from .minpoly import set_minpoly
 from .printing import set_short
 from .rings import indexed_names
-from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, to_ideal, to_int, to_matrix, to_poly, typeof
+from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, ring_of, to_ideal, to_int, to_matrix,
+                     to_poly, typeof)
 
 
 #: Singular's bounds on standard basis computations: mech computes without them (only 0 is accepted).
@@ -103,9 +104,12 @@ class Assignment:
         new = self._set_in(var.value, chain, 0, value)
         self._rebind(var, new)
 
-    def _set_in(self, container: Any, chain: list[A.Index], k: int, value: Any) -> Any:
+    def _set_in(self, container: Any, chain: list[A.Index], k: int, value: Any, idx: Optional[list] = None) -> Any:
+        """``container`` with the entry ``chain[k:]`` set to ``value`` (``idx``: the values of
+        ``chain[k]``'s indices when they are evaluated already)."""
         node = chain[k]
-        idx = [self.eval(i) for i in node.indices]
+        if idx is None:
+            idx = [self.eval(i) for i in node.indices]
         last = k == len(chain) - 1
         ring = self.ring.poly if self.ring else None
         if isinstance(container, IntMat):
@@ -148,6 +152,8 @@ class Assignment:
                 items[i - 1] = value
             else:
                 items[i - 1] = self._set_in(items[i - 1], chain, k + 1, value)
+            if ring_of(container) is None:  # the new entry is the only one that may depend on a ring
+                return List(items, ring_of(items[i - 1]))
             return List(items)
         if isinstance(container, IntVec):
             if not last:

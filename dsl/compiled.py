@@ -18,7 +18,7 @@ from . import ops
 from .boundary import convert_exception
 from .errors import MechError, MechRuntimeError
 from .signals import SIGNALS, BreakSignal, ContinueSignal, ReturnSignal
-from .values import NONE, ExprList, Ideal, List, Proc
+from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, Proc
 
 Fn = Callable[[Any], Any]
 
@@ -214,14 +214,32 @@ def _values(nodes: list[A.Expr], depth: int) -> Callable[[Any], list]:
     return values
 
 
+def arg_names(nodes: list[A.Expr]) -> list[str]:
+    """The names of a call's argument expressions as commands see them (``ctx.argnames``: "_" for
+    an argument that is not a name)."""
+    return [n.id if isinstance(n, A.Name) else "_" for n in nodes]
+
+
 def _call(node: A.Call, depth: int) -> Fn:
-    """``name(args)`` calling a procedure inline; other calls (commands, maps) as the evaluator does."""
+    """``name(args)`` calling a procedure or a command (not raw) inline, with the arguments'
+    closures; other calls (raw commands, maps, indexed names) as the evaluator does."""
     name = node.func.id
     values = _values(node.args, depth)
+    names = arg_names(node.args)
 
     def fn(it: Any) -> Any:
         var = it.lookup(name)
-        if var is None or type(var.value) is not Proc:
+        if var is None:  # as the evaluator: a variable first, then a command
+            cmd = it.registry.find(name, it.loaded_libs)
+            if cmd is None or cmd.raw:
+                return it._eval_node(node)
+            try:
+                return it.invoke_command(cmd, values(it), names)
+            except SIGNALS:
+                raise
+            except Exception as e:
+                raise _locate(e, node, it) from None
+        if type(var.value) is not Proc:
             return it._eval_node(node)
         try:
             return it.call_proc(var.value, values(it), node)
@@ -237,6 +255,9 @@ def _stmt(s: A.Stmt) -> Fn:
     kind = type(s)
     if kind is A.Assign and len(s.targets) == 1 and len(s.values) == 1 and type(s.targets[0]) is A.Name:
         return _assign(s)
+    if (kind is A.Assign and len(s.targets) == 1 and len(s.values) == 1 and type(s.targets[0]) is A.Index
+            and type(s.targets[0].base) is A.Name and 1 <= len(s.targets[0].indices) <= 2):
+        return _assign_entry(s)
     if kind is A.IncDec and type(s.target) is A.Name:
         return _incdec(s)
     if kind is A.If:
@@ -288,6 +309,57 @@ def _assign(s: A.Assign) -> Fn:
             items = list(v.items)
             v = items[0] if len(items) == 1 else ExprList(items)
         it.assign(target, v)
+    return inner
+
+
+def _assign_entry(s: A.Assign) -> Fn:
+    """``name[i] = value;`` and ``name[i,j] = value;``: an int into an intvec, a poly of the
+    basering into an ideal or a matrix inline; other entries by the interpreter's ``_set_in`` (the
+    value first, then the indices, as the evaluator)."""
+    target = s.targets[0]
+    name = target.base.id
+    vf = expr_fn(s.values[0])
+    kfs = [expr_fn(i) for i in target.indices]
+    chain = [target]
+
+    def inner(it: Any) -> None:
+        v = vf(it)
+        if isinstance(v, ExprList):  # as the evaluator's list of values: one item is that item
+            items = list(v.items)
+            v = items[0] if len(items) == 1 else ExprList(items)
+        var = it.lookup(name)
+        if var is None:
+            it.assign(target, v)
+            return
+        c = var.value
+        idx = [f(it) for f in kfs]
+        tc, tv = type(c), type(v)
+        if len(idx) == 1:
+            k = idx[0]
+            if type(k) is int and k >= 1:
+                if tc is IntVec and tv is int:
+                    vals = list(c.values)
+                    if k > len(vals):
+                        vals += [0] * (k - len(vals))
+                    vals[k - 1] = v
+                    var.value = IntVec(vals)
+                    return
+                ring = it.ring
+                if tc is Ideal and tv is Poly and ring is not None and v.ring is ring.poly:
+                    gens = list(c.gens)
+                    if k > len(gens):
+                        gens += [c.ring.zero()] * (k - len(gens))
+                    gens[k - 1] = v
+                    var.value = Ideal(c.ring, gens)
+                    return
+        elif tc is Matrix and tv is Poly and v.ring is c.ring:
+            i, j = idx
+            if type(i) is int and type(j) is int and 1 <= i <= c.nrows and 1 <= j <= c.ncols:
+                ents = list(c.entries)
+                ents[(i - 1) * c.ncols + j - 1] = v
+                var.value = Matrix(c.ring, c.nrows, c.ncols, ents)
+                return
+        it._rebind(var, it._set_in(c, chain, 0, v, idx))
     return inner
 
 

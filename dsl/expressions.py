@@ -7,7 +7,7 @@ from ..kernel import Poly
 from . import ast as A
 from . import ops
 from .boundary import convert_exception
-from .compiled import INT_OPS, expr_fn
+from .compiled import INT_OPS, arg_names, expr_fn
 from .errors import MechError, MechRuntimeError, MechTypeError
 from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
@@ -223,14 +223,23 @@ class Expressions:
         return self.call_command(cmd, node.args)
 
     def call_command(self, cmd: Any, arg_nodes: list[A.Expr]) -> Any:
-        args = None if cmd.raw else self._values(arg_nodes)
+        if not cmd.raw:
+            return self.invoke_command(cmd, self._values(arg_nodes), arg_names(arg_nodes))
         saved = self.argnames
         try:
-            if cmd.raw:
-                return self.registry.invoke_raw(cmd, self, arg_nodes)
-            self.argnames = [n.id if isinstance(n, A.Name) else "_" for n in arg_nodes]
-            return self.registry.invoke(cmd, self, args)
+            return self.registry.invoke_raw(cmd, self, arg_nodes)
         except (LimitExceeded, MemoryError) as e:  # "time limit of 5 s exceeded in std"
+            raise limit_error(e, cmd.name) from None
+        finally:
+            self.argnames = saved
+
+    def invoke_command(self, cmd: Any, args: list[Any], argnames: list[str]) -> Any:
+        """A command (not raw) on evaluated arguments; ``argnames``: their names (:func:`arg_names`)."""
+        saved = self.argnames
+        self.argnames = argnames
+        try:
+            return self.registry.invoke(cmd, self, args)
+        except (LimitExceeded, MemoryError) as e:
             raise limit_error(e, cmd.name) from None
         finally:
             self.argnames = saved

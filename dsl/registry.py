@@ -227,10 +227,23 @@ def _accept(spec: Optional[tuple], v: Any, ring: Optional[PolyRing], coerce: boo
 
 
 def _bind(ov: Overload, args: list, ring: Optional[PolyRing], coerce: bool) -> Optional[list]:
-    _resolve(ov)
+    if not ov.resolved:
+        _resolve(ov)
     n = len(args)
-    if n < ov.required or (not ov.has_varargs and n > len(ov.specs)):
+    specs = ov.specs
+    if n < ov.required or (not ov.has_varargs and n > len(specs)):
         return None
+    if not coerce:  # _accept without coercion, inline (commands called in loops)
+        for i, a in enumerate(args):
+            spec = specs[i] if i < len(specs) else ov.varargs
+            if spec is not None:
+                ta = type(a)
+                for t in spec:
+                    if (ta is int) if t is int else isinstance(a, t):
+                        break
+                else:
+                    return None
+        return args
     out = []
     for i, a in enumerate(args):
         spec = ov.specs[i] if i < len(ov.specs) else ov.varargs

@@ -35,6 +35,7 @@ class NoneValue:
 
 
 NONE = NoneValue()
+UNKNOWN = object()  # a list's ring not looked for yet
 
 
 class Number:
@@ -247,13 +248,20 @@ class IntVec:
 class List:
     """A Singular list; unset entries (after ``L[5] = ...`` on a shorter list) hold :data:`NONE`."""
 
-    __slots__ = ("items",)
+    __slots__ = ("items", "_ring")
 
-    def __init__(self, items: Iterable[Any] = ()) -> None:
+    def __init__(self, items: Iterable[Any] = (), ring: Any = UNKNOWN) -> None:
         self.items: tuple[Any, ...] = tuple(items)
+        #: the kernel ring of its first ring-dependent entry (None: none), found once by ring_of
+        #: (or given by who built the list); a list's entries never change
+        self._ring: Any = ring
 
     def __len__(self) -> int:
         return len(self.items)
+
+    def __reduce__(self) -> tuple:
+        """Pickled and copied without the ring found (the copy finds its own)."""
+        return type(self), (self.items,)
 
     def __iter__(self):
         return iter(self.items)
@@ -383,11 +391,23 @@ def ring_of(v: Any) -> Optional[PolyRing]:
     """The kernel ring a value depends on (None for ring-independent values)."""
     if isinstance(v, (Poly, Number, Ideal, Matrix, Map)):
         return v.ring
+    if type(v) is List:
+        r = v._ring
+        if r is UNKNOWN:  # found once per list: appending to a long list in a loop stays linear
+            r = v._ring = _first_ring(v.items)
+        return r
     if isinstance(v, (List, ExprList)):
-        for x in v.items:
-            r = ring_of(x)
-            if r is not None:
-                return r
+        return _first_ring(v.items)
+    return None
+
+
+def _first_ring(items: tuple) -> Optional[PolyRing]:
+    for x in items:
+        if type(x) is int or type(x) is str:  # the common ring-free entries, without a call
+            continue
+        r = ring_of(x)
+        if r is not None:
+            return r
     return None
 
 

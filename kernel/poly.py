@@ -123,7 +123,7 @@ class Poly:
 
     def total_degree(self) -> int:
         """Largest total degree of a term (-1 for zero), Singular's ``deg``."""
-        return max((sum(e) for e in self.terms), default=-1)
+        return max(map(sum, self.terms), default=-1)
 
     def degree_in(self, i: int) -> int:
         return max((e[i] for e in self.terms), default=-1)
@@ -194,6 +194,14 @@ class Poly:
             a, b = self.terms, other.terms
         else:
             a, b = other.terms, self.terms
+        if len(b) == 1:  # a term times a polynomial (p*x in loops): no two products meet
+            (eb, cb), = b.items()
+            t = {}
+            for ea, ca in a.items():
+                c = ca * cb
+                if c != 0:
+                    t[tuple([x + y for x, y in zip(ea, eb)])] = c
+            return Poly(self.ring, t)
         if len(a) * len(b) >= _FLINT_PAIRS and _collisions(a, b):
             t = flint_bridge.product(self.ring.field, self.ring.nvars, a, b)
             if t is not None:

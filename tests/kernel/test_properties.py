@@ -118,3 +118,14 @@ def test_primary_components_intersect_to_the_ideal(data):
     assert intersect(*[q for q, _ in comps], ring=R) == groebner(I, R)
     for q, p in comps:
         assert radical(q, R) == p and is_prime(p, R)
+
+
+@settings(max_examples=80, deadline=None)
+@given(small_ideals(), st.tuples(*[st.integers(0, 3)] * N), st.integers(1, 6), st.tuples(*[st.integers(0, 3)] * N))
+def test_a_term_times_a_polynomial_is_the_general_product(data, e, c, e2):
+    R, polys = data
+    f = polys[0]
+    m, n = R.from_dict({e: c}), R.from_dict({e2: -1})  # c is not 0 in any of the fields
+    assert f * m == m * f == f.mul_term(e, R.field(c))
+    if e != e2:  # m + n has two terms: the general product
+        assert f * m + f * n == f * (m + n)
