@@ -28,7 +28,7 @@ import heapq
 from operator import neg
 from typing import Any, Callable, Sequence
 
-from .hilbert import hilbert_numerators
+from .mora_corner import Corner
 from .mora_packed import MAX_DEGREE, PackedFront, Packing
 from .order import Exp
 from .poly import Poly, PolyRing, add_exp, divides, lcm_exp, support_mask
@@ -149,46 +149,6 @@ class Front:
             self.heap = [(self.rank(lm), lm)]
             return True
         return False
-
-
-class Corner:
-    """The highest corner for a local degree ordering (``ds``, ``Ds``; GP 1.7.10–1.7.15).
-
-    ``used``: the variables that occur in the generators (by default all); the others occur in
-    no element of the computation, which lives in the local ring of the ``used`` ones.
-    Once the leading monomials found contain a pure power of every used variable, the quotient by
-    their ideal ``L`` is finite; every monomial of degree above ``cut``, the largest degree of a
-    monomial outside ``L``, lies in ``L`` and hence (the ordering being local) in the ideal
-    itself.  Terms of such degrees can then be dropped everywhere: the computation goes on in
-    the finite-dimensional algebra ``K[x]_> / m^(cut+1)``, where it terminates quickly.  The
-    cut only decreases as ``L`` grows."""
-
-    def __init__(self, ring: PolyRing, cut: int | None = None, used: Sequence[int] | None = None) -> None:
-        blocks = ring.order.blocks
-        self.enabled = len(blocks) == 1 and blocks[0].kind in ("ds", "Ds")
-        self.used = tuple(range(ring.nvars)) if used is None else tuple(used)
-        self.powers: set[int] = set()
-        self.cut = cut  # terms of higher degree are dropped
-        self.found = False  # whether the cut comes from the leading ideal
-
-    def update(self, lm: Exp, lms: Callable[[], list[Exp]]) -> bool:
-        """Account for a new leading monomial (``lms()``: all current ones); whether the cut
-        went down."""
-        if not self.enabled:
-            return False
-        support = [i for i, v in enumerate(lm) if v]
-        if len(support) == 1:
-            self.powers.add(support[0])
-        if len(self.powers) < len(self.used):
-            return False
-        used = self.used
-        _, p, d = hilbert_numerators([tuple(m[i] for i in used) for m in lms()], len(used))
-        top = len(p) - 1 if d == 0 else None
-        if top is None or (self.cut is not None and top >= self.cut):
-            return False
-        self.cut, self.found = top, True
-        return True
-
 
 
 class BudgetExceeded(Exception):
