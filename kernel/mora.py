@@ -15,7 +15,9 @@ intermediate polynomials) persist, leading unit factors ``x^a u`` are cancelled.
 usually the ones Singular prints.  Mora's normal form terminates, but on some ideals only after
 reductions into degree 50 with coefficients of thousands of digits (Singular's own ``reduce``
 hangs on some of them): a :class:`Budget` bounds it, and the engine driver (:mod:`.engines`)
-then falls back to Lazard's method (:mod:`.lazard`).
+then falls back to Lazard's method (:mod:`.lazard`).  For ``ds`` the polynomial under
+reduction lives on packed monomials (:mod:`.mora_packed`); the highest corner that cuts the
+tails of zero-dimensional ideals is :mod:`.mora_corner`.
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
 terms, valid for every ordering, GP 2.5.9) and the product criterion only when it really
