@@ -28,7 +28,6 @@ import datetime
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -270,8 +269,8 @@ def main() -> None:
             text, q = ratio(mech, sing)
             if q is not None:
                 quotients.append(q)
-            m = re.search(r"\), *(.*);", _source(case).split("\n")[0] if case.ring else "")
-            order = m.group(1) if m else "ds"
+            ring_line = next(line for line in _source(case).splitlines() if line.startswith("ring"))
+            order = ring_line.rstrip(";").rsplit(", ", 1)[1]
             rows.append(f"| {case.name} | {case.source} | {order} | {case.task} | {fmt(mech)} | {fmt(sing)} | "
                         f"{text} | {mech.get('size', '—')} | {ok} |")
             print(rows[-1], flush=True)
