@@ -15,7 +15,9 @@ intermediate polynomials) persist, leading unit factors ``x^a u`` are cancelled.
 usually the ones Singular prints.  Mora's normal form terminates, but on some ideals only after
 reductions into degree 50 with coefficients of thousands of digits (Singular's own ``reduce``
 hangs on some of them): a :class:`Budget` bounds it, and the engine driver (:mod:`.engines`)
-then falls back to Lazard's method (:mod:`.lazard`).
+then falls back to Lazard's method (:mod:`.lazard`).  For ``ds`` the polynomial under
+reduction lives on packed monomials (:mod:`.mora_packed`); the highest corner that cuts the
+tails of zero-dimensional ideals is :mod:`.mora_corner`.
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
 terms, valid for every ordering, GP 2.5.9) and the product criterion only when it really
@@ -28,7 +30,8 @@ import heapq
 from operator import neg
 from typing import Any, Callable, Sequence
 
-from .hilbert import hilbert_numerators
+from .mora_corner import Corner
+from .mora_packed import MAX_DEGREE, PackedFront, Packing
 from .order import Exp
 from .poly import Poly, PolyRing, add_exp, divides, lcm_exp, support_mask
 
@@ -41,13 +44,14 @@ class Elem:
     ``ecart`` is ``D - deg LM`` for the degree ``D`` of the homogenized polynomial the
     element stands for (its sugar); by default ``D`` is the polynomial's own degree."""
 
-    __slots__ = ("p", "lm", "mask", "ecart", "key", "_tail", "_rows")
+    __slots__ = ("p", "lm", "mask", "ecart", "key", "_tail", "_rows", "_packed")
 
     def __init__(self, p: Terms, key: Callable, ecart: int | None = None, lm: Exp | None = None) -> None:
         self.p, self.key = p, key
         self.lm = max(p, key=key) if lm is None else lm
         self._tail: Any = False  # the second monomial, found when first asked for
         self._rows: list | None = None
+        self._packed: list | None = None
         self.mask = support_mask(self.lm)
         self.ecart = max(sum(e) for e in p) - sum(self.lm) if ecart is None else ecart
 
@@ -67,6 +71,12 @@ class Elem:
             self._rows = sorted(((sum(e), e, c) for e, c in self.p.items()), key=lambda r: r[0])
         return self._rows
 
+    def packed(self, pk: Packing) -> list[tuple[int, Any]]:
+        """``(packed monomial, coefficient)`` by increasing packed monomial (degree first)."""
+        if self._packed is None:
+            self._packed = sorted((pk.pack(e), c) for e, c in self.p.items())
+        return self._packed
+
     @property
     def sugar(self) -> int:
         return self.ecart + sum(self.lm)
@@ -75,7 +85,7 @@ class Elem:
         """Drop the tail terms of degree above ``cut`` (they lie in the ideal)."""
         if max(sum(e) for e in self.p) > cut:
             self.p = {e: c for e, c in self.p.items() if e == self.lm or sum(e) <= cut}
-            self._tail, self._rows = False, None
+            self._tail, self._rows, self._packed = False, None, None
 
 
 class Front:
@@ -97,6 +107,12 @@ class Front:
         if cut is not None and (self.cut is None or cut < self.cut):
             self.p = {e: c for e, c in self.p.items() if sum(e) <= cut}
             self.cut = cut
+
+    def coeff(self, lm: Exp) -> Any:
+        return self.p[lm]
+
+    def terms(self) -> Terms:
+        return self.p
 
     def lm(self) -> Exp:
         """The leading monomial (``p`` must not be empty)."""
@@ -135,43 +151,6 @@ class Front:
             self.heap = [(self.rank(lm), lm)]
             return True
         return False
-
-
-class Corner:
-    """The highest corner for a local degree ordering (``ds``, ``Ds``; GP 1.7.10–1.7.15).
-
-    Once the leading monomials found contain a pure power of every variable, the quotient by
-    their ideal ``L`` is finite; every monomial of degree above ``cut``, the largest degree of a
-    monomial outside ``L``, lies in ``L`` and hence (the ordering being local) in the ideal
-    itself.  Terms of such degrees can then be dropped everywhere: the computation goes on in
-    the finite-dimensional algebra ``K[x]_> / m^(cut+1)``, where it terminates quickly.  The
-    cut only decreases as ``L`` grows."""
-
-    def __init__(self, ring: PolyRing, cut: int | None = None) -> None:
-        blocks = ring.order.blocks
-        self.enabled = len(blocks) == 1 and blocks[0].kind in ("ds", "Ds")
-        self.n = ring.nvars
-        self.powers: set[int] = set()
-        self.cut = cut  # terms of higher degree are dropped
-        self.found = False  # whether the cut comes from the leading ideal
-
-    def update(self, lm: Exp, lms: Callable[[], list[Exp]]) -> bool:
-        """Account for a new leading monomial (``lms()``: all current ones); whether the cut
-        went down."""
-        if not self.enabled:
-            return False
-        support = [i for i, v in enumerate(lm) if v]
-        if len(support) == 1:
-            self.powers.add(support[0])
-        if len(self.powers) < self.n:
-            return False
-        _, p, d = hilbert_numerators(lms(), self.n)
-        top = len(p) - 1 if d == 0 else None
-        if top is None or (self.cut is not None and top >= self.cut):
-            return False
-        self.cut, self.found = top, True
-        return True
-
 
 
 class BudgetExceeded(Exception):
@@ -316,7 +295,7 @@ def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
 
 
 # Trial cuts (see mora): multiples of the generators' largest degree, and the steps one may take
-TRIAL_CUTS = (2, 4)
+TRIAL_CUTS = (2, 3, 4, 6)
 TRIAL_STEPS = 200_000
 
 
@@ -360,12 +339,21 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     pool: list[Elem] = []  # reducers, sorted by sugar
     queue: list[tuple] = []  # (sugar, rank of LM, counter, pair or (h, sugar))
     counter = 0
-    corner = Corner(ring, cut)
+    corner = Corner(ring, cut, sorted({i for g in gens for e in g.terms for i, v in enumerate(e) if v}))
 
     def rank(e: Exp) -> tuple:  # smallest first for global orderings, largest first otherwise
         return tuple(sign * v for v in key(e))
 
     lead = _leading_rank(ring)
+    blocks = ring.order.blocks
+    packing = Packing(ring.nvars) if len(blocks) == 1 and blocks[0].kind == "ds" else None
+
+    def front(terms: Terms) -> Front | PackedFront:
+        if packing is not None:
+            if max((sum(e) for e in terms), default=0) > MAX_DEGREE:
+                raise BudgetExceeded
+            return PackedFront(terms, packing, corner.cut)
+        return Front(terms, lead, corner.cut)
 
     def push(sugar: int, lm: Exp, item: Any) -> None:
         nonlocal counter
@@ -417,15 +405,17 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             ecart = sugar - sum(lm)
             g = _choose(pool, lm, ecart)
             if g is None:
-                return w.p, sugar
+                return w.terms(), sugar
             if budget is not None:
-                budget.charge(w.p[lm])
+                budget.charge(w.coeff(lm))
             if g.ecart > ecart:
                 if not first_in_queue(sugar, lm):
                     push(sugar, lm, (w, sugar))
                     return None
-                _insert(pool, Elem(dict(w.p), key, ecart, lm))
+                _insert(pool, Elem(dict(w.terms()), key, ecart, lm))
                 sugar += g.ecart - ecart
+                if sugar > MAX_DEGREE and packing is not None:
+                    raise BudgetExceeded
             w.reduce(lm, g)
             if not w.p:
                 break
@@ -434,14 +424,14 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 lm = w.lm()
                 if not first_in_queue(sugar, lm):
                     if _choose(pool, lm, sugar - sum(lm)) is None:
-                        return w.p, sugar
+                        return w.terms(), sugar
                     push(sugar, lm, (w, sugar))
                     return None
-        return w.p, sugar
+        return w.terms(), sugar
 
     for g in gens:
         if not g.is_zero():
-            push(g.total_degree(), g.lm(), (Front(dict(g.terms), lead, corner.cut), g.total_degree()))
+            push(g.total_degree(), g.lm(), (front(dict(g.terms)), g.total_degree()))
     while queue:
         sugar, _, _, item = heapq.heappop(queue)
         if isinstance(item, _Pair):
@@ -451,7 +441,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             pairs.remove(item)
             if corner.cut is not None and sum(item.lcm) > corner.cut:
                 continue  # every term of the S-polynomial is above the cut
-            w = Front(_spoly(basis[item.i], basis[item.j], item.lcm), lead, corner.cut)
+            w = front(_spoly(basis[item.i], basis[item.j], item.lcm))
         else:
             w, sugar = item
         done = reduce(w, sugar)
