@@ -75,7 +75,7 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
 
     @v_args(meta=True)
     def str_lit(self, meta, c):
-        return A.StrLit(str(c[0])[1:-1], pos=token_pos(c[0]))
+        return A.StrLit(A.string_value(str(c[0])), pos=token_pos(c[0]))
 
     def exprlist(self, c):
         return list(c)

@@ -46,3 +46,25 @@ def attrib(ctx, node: A.Expr, *rest: A.Expr) -> Any:
         raise MechRuntimeError("attrib(x, \"isSB\", 1): x must be a variable")
     ctx.assign(node, Ideal(value.ring, value.gens, is_std=bool(flag)))
     return None
+
+
+@command("killattrib", raw=True)
+def killattrib(ctx, node: A.Expr, *rest: A.Expr) -> None:
+    """killattrib(I, "isSB"): remove the standard-basis mark of the ideal variable I (killattrib(I):
+    all its attributes).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      ideal I = std(ideal(x2, y));
+      killattrib(I, "isSB");
+      attrib(I, "isSB");
+      → 0
+    """
+    value = ctx.eval(node)
+    names = [ctx.eval(r) for r in rest]
+    if len(names) > 1 or not all(isinstance(n, str) for n in names):
+        raise MechRuntimeError("killattrib(x) or killattrib(x, name): the attribute's name is a string")
+    if isinstance(value, Ideal) and value.is_std and names in ([], ["isSB"]):
+        if not isinstance(node, A.Name):
+            raise MechRuntimeError("killattrib(x, ...): x must be a variable")
+        ctx.assign(node, Ideal(value.ring, value.gens, is_std=False))

@@ -1,4 +1,4 @@
-"""The interpreter's own commands (``print``, ``defined``, ``nameof``, ``execute``, ``option``,
+"""The interpreter's own commands (``print``, ``defined``, ``nameof``, ``reservedName``, ``execute``, ``option``,
 ``system``, ``export``, ``ERROR``, ``ASSUME``) and the help texts of the language's keywords and types (``help if;``)."""
 from __future__ import annotations
 
@@ -7,7 +7,8 @@ from typing import Any
 from ..dsl import ast as A
 from ..dsl.errors import MechNameError, MechRuntimeError, MechTypeError
 from ..dsl.printing import print_form, render
-from ..dsl.registry import TOPICS, command
+from ..dsl.highlight import KEYWORDS, type_words
+from ..dsl.registry import TOPICS, command, is_builtin
 from ..dsl.values import NONE, Map
 
 
@@ -93,6 +94,20 @@ def nameof(ctx, node: A.Expr) -> str:
     if isinstance(node, A.Name) and node.id == "basering":
         return ctx.basering().name
     return node.id if isinstance(node, A.Name) else ""
+
+
+@command("reservedName")
+def reserved_name(name: str) -> int:
+    """reservedName(s): 1 if the word s is reserved by the language (a keyword, a type or a command
+    available without a library), else 0.
+
+    Example:
+      reservedName("ring");
+      → 1
+      reservedName("xyz");
+      → 0
+    """
+    return int(name in KEYWORDS or name in type_words() or is_builtin(name))
 
 
 @command("execute")
