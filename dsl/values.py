@@ -299,6 +299,7 @@ class Ring:
     blocks: tuple[OrderBlock, ...]
     name: str = ""
     objects: dict = field(default_factory=dict)
+    attributes: dict = field(default_factory=dict)  #: attrib(r, name, value)
 
     @property
     def names(self) -> tuple[str, ...]:

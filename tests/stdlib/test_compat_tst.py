@@ -53,6 +53,28 @@ factorize(g); factorize(g,1); factorize(g,2);
 ring r7 = (7,a,b),(x,y),dp;
 factorize((a2-b2)*(x2-a*y2)*(x+y)^2);
 """,
+    "attributes": """
+ring r;
+ideal i;
+attrib(i,"a",x); attrib(i); attrib(i,"a");
+intmat A[2][2] = 1, 0, 0, 1;
+attrib(basering, "mgrad", A);
+proc getGrad(def R) { attrib(R, "mgrad"); }
+getGrad(basering);
+intmat m[3][3] = 3, 0, 1, 0, 1, 0, 0, 0, 1;
+ring R = 0, (x,y,z), M(m);
+attrib(R,"global");
+ring S = 0, (x,y), ds;
+attrib(S,"global");
+""",
+    "gcd_over_algebraic_extension_mod_p": """
+ring r=(32003,a),x,dp;
+minpoly= a^4+20186*a^3+a^2+23269*a+1;
+poly f= (6182*a+7698)*x^19+(7698*a+77)*x^16+102*x^113+91*x^3+a;
+poly g= x^21+91*x^13+(127*a+102)*x^10+77*x^6+1;
+poly d=a*x^3+(3757*a+20186)*x^2+23268;
+gcd(d*f^3,d*g^3); gcd(f, g); gcd(d*(x+a)^2, (x+a)*(x-1));
+""",
 }
 
 
