@@ -37,6 +37,21 @@ class NoneValue:
 NONE = NoneValue()
 
 
+class BigInt(int):
+    """Singular's bigint: an integer like int (mech's ints have any size too) whose ``div`` and
+    ``mod`` are Euclidean (the remainder in [0, |b|)) where int's truncate; arithmetic with a
+    bigint operand gives a bigint."""
+
+    type_name = "bigint"
+    __slots__ = ()
+
+    def __neg__(self) -> "BigInt":
+        return BigInt(-int(self))
+
+    def __abs__(self) -> "BigInt":
+        return BigInt(abs(int(self)))
+
+
 class Number:
     """An element of the coefficient field of a ring (Singular's ``number``).
 
@@ -352,7 +367,7 @@ class LibCommand:
         return f"// the {self.command.lib} procedure {self.command.name}"
 
 
-TYPE_NAMES = {int: "int", str: "string", Number: "number", Poly: "poly", Ideal: "ideal", Matrix: "matrix",
+TYPE_NAMES = {int: "int", BigInt: "bigint", str: "string", Number: "number", Poly: "poly", Ideal: "ideal", Matrix: "matrix",
               IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none",
               LibCommand: "proc"}
 
@@ -541,8 +556,13 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing], warn: Optional[Callable[
     library type's converter reports mistakes that are not errors)."""
     if typ == "def":
         return List(v.items) if isinstance(v, ExprList) else v
-    if typ in ("int", "bigint"):
-        return to_int(_single(v, typ))
+    if typ == "int":
+        v = _single(v, typ)
+        if type(v) is BigInt:
+            raise MechTypeError("int = bigint is not supported (as in Singular: int(b) converts)")
+        return to_int(v)
+    if typ == "bigint":
+        return BigInt(to_int(_single(v, typ)))
     if typ == "number":
         return to_number(_single(v, typ), ring)
     if typ == "poly":

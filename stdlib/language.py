@@ -234,7 +234,7 @@ TOPICS.update({
     "help": "help NAME; or ?NAME;: what a command, procedure, type or keyword does; help; lists the commands.",
     "basering": "basering: the current ring.",
     "int": "int i = 3;: a machine integer (div, mod, % and / divide; comparisons give 0 or 1).",
-    "bigint": "bigint b = 2^70;: an integer of any size (in mech the same as int).",
+    "bigint": "bigint b = 2^70;: an integer of any size like int, with Euclidean div and mod.",
     "number": "number c = 3/4;: an element of the coefficient field of the basering.",
     "poly": "poly f = x2+y;: a polynomial of the basering.",
     "ring": "ring r = 0, (x,y,z), dp;: a polynomial ring (characteristic or (char, params), variables, "

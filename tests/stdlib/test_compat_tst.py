@@ -75,6 +75,14 @@ poly g= x^21+91*x^13+(127*a+102)*x^10+77*x^6+1;
 poly d=a*x^3+(3757*a+20186)*x^2+23268;
 gcd(d*f^3,d*g^3); gcd(f, g); gcd(d*(x+a)^2, (x+a)*(x-1));
 """,
+    "bigint": """
+(-5) div 2, (-5) mod 2, 7 div -3, 7 mod -3, (-7) div -3, (-7) mod -3;
+bigint(7) div -3, bigint(7) mod -3, bigint(-7) div -3, bigint(-7) mod -3;
+bigint b=-5; b div 2; typeof(b div 2); int k = -5; typeof(k div bigint(2)); k div bigint(2); k mod bigint(2);
+typeof(bigint(3)+1); bigint(-5)/2; -b; typeof(-b); bigint(2)^70; b < 3; b == -5;
+proc check(bigint a, bigint b) { return((a div b)*b+(a mod b)==a && (a mod b)>=0); }
+check(7,-3); check(-70000000000,3);
+""",
 }
 
 
