@@ -37,6 +37,19 @@ class NoneValue:
 NONE = NoneValue()
 
 
+class Nothing:
+    """What ``_`` holds after a top-level call of a procedure that returned nothing (Singular's
+    ``typeof(_)`` is then ``?unknown type?``)."""
+
+    type_name = "?unknown type?"
+
+    def __repr__(self) -> str:
+        return "NOTHING"
+
+
+NOTHING = Nothing()
+
+
 class BigInt(int):
     """Singular's bigint: an integer like int (mech's ints have any size too) whose ``div`` and
     ``mod`` are Euclidean (the remainder in [0, |b|)) where int's truncate; arithmetic with a

@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from itertools import combinations
-from typing import Any
+from typing import Any, Optional
 
 from ..dsl import ast as A
 from ..dsl.errors import MechRuntimeError, MechTypeError
@@ -264,9 +264,10 @@ def indepSet(ctx, I: Ideal, which: int = -1) -> Any:
 
 # ---------------------------------------------------------------- preimage
 @command("preimage", raw=True)
-def preimage(ctx, ring_node: A.Expr, map_node: A.Expr, ideal_node: A.Expr) -> Ideal:
+def preimage(ctx, ring_node: A.Expr, map_node: Optional[A.Expr] = None,
+             ideal_node: Optional[A.Expr] = None) -> Ideal | Ring:
     """preimage(S, phi, J): the ideal of the basering R of the f with phi(f) in J, for a map phi from
-    R to the ring S and an ideal J of S (kernel(phi) for J = 0).
+    R to the ring S and an ideal J of S (kernel(phi) for J = 0); preimage(phi): the source ring of phi.
 
     Example:
       ring r = 0,(a,b),dp;
@@ -278,6 +279,11 @@ def preimage(ctx, ring_node: A.Expr, map_node: A.Expr, ideal_node: A.Expr) -> Id
       → _[1]=0
     """
     from .rings import _in_ring
+    if map_node is None or ideal_node is None:
+        phi = ctx.eval(ring_node)
+        if map_node is not None or not isinstance(phi, Map):
+            raise MechTypeError("preimage(phi) takes a map; preimage(S, phi, J) a ring, a map and an ideal")
+        return phi.source
     source = ctx.basering().poly
     target_ring, phi = _in_ring(ctx, ring_node, map_node, "preimage")
     _, J = _in_ring(ctx, ring_node, ideal_node, "preimage")

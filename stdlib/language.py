@@ -9,7 +9,7 @@ from ..dsl.errors import MechNameError, MechRuntimeError, MechTypeError
 from ..dsl.printing import print_form, render
 from ..dsl.highlight import KEYWORDS, type_words
 from ..dsl.registry import TOPICS, command, is_builtin
-from ..dsl.values import NONE, Map
+from ..dsl.values import NONE, Map, Ring
 
 
 @command("print")
@@ -83,7 +83,8 @@ def defined(ctx, node: A.Expr) -> int:
 
 @command("nameof", raw=True)
 def nameof(ctx, node: A.Expr) -> str:
-    """nameof(x): the name of the variable x ("" for an expression; for basering the ring's name).
+    """nameof(x): the name of the variable x ("" for an expression; for basering or an expression
+    giving a ring, the ring's name).
 
     Example:
       ring r = 0,(x,y),dp;
@@ -92,8 +93,11 @@ def nameof(ctx, node: A.Expr) -> str:
       → f
     """
     if isinstance(node, A.Name) and node.id == "basering":
-        return ctx.basering().name
-    return node.id if isinstance(node, A.Name) else ""
+        return ctx.ring.name if ctx.ring is not None else "basering"  # as Singular without a ring
+    if isinstance(node, A.Name):
+        return node.id
+    v = ctx.eval(node)  # an expression: a ring has its name (nameof(preimage(phi)))
+    return v.name if isinstance(v, Ring) else ""
 
 
 @command("reservedName")

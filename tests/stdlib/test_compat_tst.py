@@ -83,6 +83,18 @@ typeof(bigint(3)+1); bigint(-5)/2; -b; typeof(-b); bigint(2)^70; b < 3; b == -5;
 proc check(bigint a, bigint b) { return((a div b)*b+(a mod b)==a && (a mod b)>=0); }
 check(7,-3); check(-70000000000,3);
 """,
+    "empty_results_and_names": """
+nameof(basering);
+proc p() {  "hello"; return();}
+proc q() { int a=1; }
+"x"; p(); typeof(_);
+"y"; q(); typeof(_);
+int i = 9; print(i); typeof(_);
+ring r1=32003,(x,y,z,w),lp;
+ring r=32003,(x,y,z),dp;
+map f=r1,x,y,z;
+nameof(preimage(f)); typeof(preimage(f)); nameof(basering); nameof(i+1);
+""",
 }
 
 
