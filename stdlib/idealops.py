@@ -16,7 +16,7 @@ from ..kernel.ideals import _drop, _lift, _prefixed, eliminate, independent_set,
 from ..kernel.order import Block, MonomialOrder
 from ..kernel.poly import divides, sub_exp
 from ..kernel.engines import standard_basis as kernel_standard_basis
-from .standard import _nf, normalize, standard_basis
+from .standard import _nf, normalize, standard_basis, std
 
 
 # ---------------------------------------------------------------- interreduction
@@ -158,6 +158,35 @@ def minbase(I: Ideal) -> Ideal:
             kept = rest
     kept.sort(key=lambda p: ring.order.key(p.lm()))
     return Ideal(ring, kept or [ring.zero()])
+
+
+@command("mstd")
+def mstd(I: Ideal) -> List:
+    """mstd(I): the list of a standard basis S of the homogeneous ideal I and a minimal set of
+    generators of I taken from S (by increasing degree, each element of S not in the ideal of those
+    kept before).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      mstd(ideal(x2, xy, x2+xy, x3));
+      → [1]:
+      →    _[1]=xy
+      →    _[2]=x2
+      → [2]:
+      →    _[1]=xy
+      →    _[2]=x2
+    """
+    ring = I.ring
+    if not ring.order.is_global or not all(p.is_homogeneous() for p in I.nonzero()):
+        raise MechRuntimeError("mstd: only homogeneous ideals in a global ordering are supported")
+    S = std(I)
+    kept: list[Poly] = []
+    for p in sorted(S.nonzero(), key=lambda p: p.total_degree()):  # stable: S's order within a degree
+        if not _member(p, kept):
+            kept.append(p)
+    order = {id(p): k for k, p in enumerate(S.gens)}
+    kept.sort(key=lambda p: order[id(p)])
+    return List([S, Ideal(ring, kept or [ring.zero()])])
 
 
 # ---------------------------------------------------------------- std and reduce variants

@@ -95,6 +95,15 @@ ring r=32003,(x,y,z),dp;
 map f=r1,x,y,z;
 nameof(preimage(f)); typeof(preimage(f)); nameof(basering); nameof(i+1);
 """,
+    "mstd": """
+ring r=0,(x,y,z,t),dp;
+poly f=x3+y4+z6+xyz;
+ideal j=jacob(f),f;
+j=homog(j,t);
+mstd(j);
+ring s=0,(x,y),dp;
+mstd(ideal(x2, xy, x2+xy, x3));
+""",
 }
 
 
