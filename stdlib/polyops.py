@@ -305,9 +305,10 @@ def leadexp(f: Poly) -> IntVec:
     return IntVec(f.lm() if not f.is_zero() else (0,) * f.ring.nvars)
 
 
-@command("rvar")
-def rvar(ctx, v: Any) -> int:
-    """rvar(x): the index of the ring variable x (a variable or its name), 0 if it is none.
+@command("rvar", raw=True)
+def rvar(ctx, node: A.Expr) -> int:
+    """rvar(x): the index of the ring variable x (a variable or its name), 0 if it is none (an
+    undefined name too).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -317,6 +318,9 @@ def rvar(ctx, v: Any) -> int:
       → 0
     """
     ring = ctx.basering()
+    if isinstance(node, A.Name) and ring.var_index(node.id) is None and ctx.lookup(node.id) is None:
+        return 0
+    v = ctx.eval(node)
     if isinstance(v, str):
         i = ring.var_index(v)
         return 0 if i is None else i + 1

@@ -104,6 +104,10 @@ mstd(j);
 ring s=0,(x,y),dp;
 mstd(ideal(x2, xy, x2+xy, x3));
 """,
+    "rvar": """
+ring r1 = 32003,(x,y,z),dp;
+rvar(y); rvar(r); rvar(r1); rvar("z"); rvar("w");
+""",
 }
 
 
