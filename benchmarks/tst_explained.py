@@ -95,5 +95,7 @@ NOT_RUN: dict[str, str] = {
     "Short/factorizeQa_s.tst": "multivariate factorization over QQ[j]/(j^2+1) (sympy's algebraic factorization is slow "
                                "for 6 variables)",
     "Short/bug_31.tst": "multivariate factorization over Z/p[a]/(m): flint has none over extension fields",
+    "Short/bug_46.tst": ("absPrimdecGTZ's primitive elements are random linear forms (-43x-12y+z in one run): its "
+                         "output is not reproducible; not built"),
     "Old/factor.tst": "multivariate factorization over Z/p[a]/(m): flint has none over extension fields",
 }
