@@ -108,6 +108,13 @@ mstd(ideal(x2, xy, x2+xy, x3));
 ring r1 = 32003,(x,y,z),dp;
 rvar(y); rvar(r); rvar(r1); rvar("z"); rvar("w");
 """,
+    "facstd": """
+ring r=32003,(x,y,z),(c,dp);
+ideal I=xyz,x2z;
+facstd(I); facstd(I,x);
+ring s=0,(x,y,z),dp;
+facstd(ideal(x2-y2, z*(x-y))); facstd(ideal(x2+1));
+""",
 }
 
 
