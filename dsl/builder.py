@@ -91,6 +91,9 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
     def type_call(self, meta, c):
         return A.TypeCall(c[0], _list(c[1]), pos=meta_pos(meta))
 
+    def proc_cast(self, c):  # proc(L[1]): the procedure the value holds, called by a following (...)
+        return c[0]
+
     @v_args(meta=True)
     def call(self, meta, c):
         return A.Call(c[0], _list(c[1]), pos=meta_pos(meta))

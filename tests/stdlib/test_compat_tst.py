@@ -115,6 +115,15 @@ facstd(I); facstd(I,x);
 ring s=0,(x,y,z),dp;
 facstd(ideal(x2-y2, z*(x-y))); facstd(ideal(x2+1));
 """,
+    "procedure_values": """
+proc huhu(int i) { print(i); }
+proc hihi() { return(huhu); }
+hihi()(1);
+list ll = huhu;
+proc(ll[1])(2);
+def ll_1 = ll[1];
+ll_1(3);
+""",
 }
 
 
