@@ -13,8 +13,8 @@ from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
 from .intmat import IntMat, euclid_div, intmat_op
 from .minpoly import compare_params
-from .values import (BigInt, ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number, to_poly,
-                     typeof)
+from .values import (BigInt, ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number,
+                     to_poly, typeof)
 
 Warn = Callable[[str], None]
 

@@ -380,8 +380,8 @@ class LibCommand:
         return f"// the {self.command.lib} procedure {self.command.name}"
 
 
-TYPE_NAMES = {int: "int", BigInt: "bigint", str: "string", Number: "number", Poly: "poly", Ideal: "ideal", Matrix: "matrix",
-              IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none",
+TYPE_NAMES = {int: "int", BigInt: "bigint", str: "string", Number: "number", Poly: "poly", Ideal: "ideal",
+              Matrix: "matrix", IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none",
               LibCommand: "proc"}
 
 

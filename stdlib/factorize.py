@@ -1,4 +1,5 @@
-"""Singular's ``factorize`` over QQ and Z/p (with parameters: :mod:`.factorize_params`), with Singular 4.3.1's choice of signs and order.
+"""Singular's ``factorize`` over QQ and Z/p (with parameters: :mod:`.factorize_params`), with Singular
+4.3.1's choice of signs and order.
 
 The factors come from :mod:`mech.kernel.factor`; what Singular prints follows its factory library:
 
