@@ -351,7 +351,8 @@ def jet(f: Poly | Ideal, d: int) -> Any:
 @command("cleardenom")
 def cleardenom(f: Poly) -> Poly:
     """cleardenom(f): f times a constant so that its coefficients are coprime integers with a positive
-    leading one (over QQ and QQ(parameters); over Z/p f itself).
+    leading one (over QQ and QQ(parameters); over Z/p f itself; over Z/p(parameters) coprime
+    polynomials in the parameters).
 
     Example:
       ring r = 0,(x,y),dp;
@@ -360,6 +361,20 @@ def cleardenom(f: Poly) -> Poly:
     """
     from .standard import normalize
     field = f.ring.field
-    if field.characteristic and getattr(field, "params", ()):
-        raise MechRuntimeError("cleardenom over Z/p(parameters) is not supported")
+    if field.characteristic and getattr(field, "params", ()) and not hasattr(field, "modulus") and f.terms:
+        return _cleardenom_params_mod_p(f)
     return f if field.characteristic else normalize(f)
+
+
+def _cleardenom_params_mod_p(f: Poly) -> Poly:
+    """Over Z/p(a,...) as Singular: times the lcm of the (monic) denominators, divided by the monic gcd
+    of the numerators; constant factors stay."""
+    field = f.ring.field
+    lcm = None
+    for c in f.terms.values():
+        lcm = c.den if lcm is None else lcm * c.den // lcm.gcd(c.den)
+    nums = {e: c.num * (lcm // c.den) for e, c in f.terms.items()}
+    g = None
+    for n in nums.values():
+        g = n if g is None else g.gcd(n)
+    return Poly(f.ring, {e: field.from_polys(n // g) for e, n in nums.items()})

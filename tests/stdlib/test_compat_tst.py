@@ -124,6 +124,13 @@ proc(ll[1])(2);
 def ll_1 = ll[1];
 ll_1(3);
 """,
+    "cleardenom_mod_p_with_parameters": """
+ring r=(7,a),(x,y),dp;
+cleardenom(a*x+a*y); cleardenom(2x+4); cleardenom((a2-1)*x+(a+1)*y);
+cleardenom(3/(a+1)*x + 2/(a+1)^2); cleardenom((2a+2)*x+4*y);
+ring R=(32003,a,b),(x,y),dp;
+cleardenom((a/(1/2*b+1))/((b+5)/(2*(a+b)))*x+1/2*y);
+""",
 }
 
 
