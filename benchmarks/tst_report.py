@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections import Counter, defaultdict
 from dataclasses import dataclass
 
-from tst_explained import EXPLAINED
+from tst_explained import EXPLAINED, NOT_RUN
 from tst_source import FOLDERS, Case
 
 CATEGORIES = ("agree", "differ", "unsupported", "error", "crash", "timeout")
@@ -72,8 +72,12 @@ def report(results: list[Result], excluded: list[Case], meta: dict) -> str:
         rs = sorted((r for r in run_ if r.category == cat and key in (None, r.key)), key=lambda r: r.name)
         lines += ["", f"## {title} ({len(rs)})", ""]
         shown = (lambda r: r.detail) if key else (lambda r: r.key + (f" — `{r.detail}`" if r.detail else ""))
-        lines += [f"- `{r.name}`: {_md(shown(r))}" + (f" — **why:** {EXPLAINED[r.name]}" if cat == "differ" and
-                                                     r.name in EXPLAINED else "") for r in rs] or ["none"]
+        why = EXPLAINED if cat == "differ" else NOT_RUN
+        lines += [f"- `{r.name}`: {_md(shown(r))}" + (f" — **why:** {why[r.name]}" if r.name in why else "")
+                  for r in rs] or ["none"]
+    named = sorted((r for r in run_ if r.category == "unsupported" and r.name in NOT_RUN), key=lambda r: r.name)
+    lines += ["", f"## Unsupported, looked at: why ({len(named)})", ""]
+    lines += [f"- `{r.name}`: {_md(r.key)} — **why:** {NOT_RUN[r.name]}" for r in named] or ["none"]
     lines += ["", "## Set aside", ""]
     for key, n in Counter(r.key for r in aside).most_common():
         names = sorted(r.name for r in aside if r.key == key)

@@ -159,7 +159,7 @@ def scope_reason(script: str) -> Optional[str]:
         m = rx.search(masked)
         if m:
             found.append((m.start(), reason))
-    for m in re.finditer(r'LIB\s*"([^"]*)"', script):
+    for m in re.finditer(r'LIB\s*\(?\s*"([^"]*)"', script):
         if masked[m.start()] != "L":
             continue
         lib = _LIB_ALIASES.get(Path(m.group(1)).name, Path(m.group(1)).name)

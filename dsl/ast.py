@@ -5,6 +5,7 @@ interpreter uses for ``file:line:col`` errors and for underlining a call.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import NamedTuple, Optional
 
@@ -64,6 +65,13 @@ class MonomLit(Expr):
 @dataclass(eq=False)
 class StrLit(Expr):
     value: str
+
+
+def string_value(token: str) -> str:
+    """The value of a string literal ``"..."`` as Singular reads it: a backslash takes the next
+    character as it is (``\\"`` a quote, ``\\\\`` a backslash, ``\\n`` the letter n)."""
+    body = token[1:-1]
+    return re.sub(r"\\(.)", r"\1", body, flags=re.S) if "\\" in body else body
 
 
 @dataclass(eq=False)

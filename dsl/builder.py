@@ -75,7 +75,7 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
 
     @v_args(meta=True)
     def str_lit(self, meta, c):
-        return A.StrLit(str(c[0])[1:-1], pos=token_pos(c[0]))
+        return A.StrLit(A.string_value(str(c[0])), pos=token_pos(c[0]))
 
     def exprlist(self, c):
         return list(c)
@@ -90,6 +90,9 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
     @v_args(meta=True)
     def type_call(self, meta, c):
         return A.TypeCall(c[0], _list(c[1]), pos=meta_pos(meta))
+
+    def proc_cast(self, c):  # proc(L[1]): the procedure the value holds, called by a following (...)
+        return c[0]
 
     @v_args(meta=True)
     def call(self, meta, c):

@@ -27,6 +27,8 @@ class Declarations:
         typ = s.type
         if typ in UNSUPPORTED_TYPES:
             raise MechTypeError(f"type '{typ}' is not supported yet")
+        if any(d.indices for d in s.items):
+            s = A.Decl(typ, [n for d in s.items for n in self._expanded(d)], s.value, pos=s.pos)
         if typ == "ring":
             self._declare_ring(s)
             return
@@ -36,8 +38,6 @@ class Declarations:
         if typ == "qring":
             self._declare_qring(s)
             return
-        if any(d.indices for d in s.items):
-            s = A.Decl(typ, [n for d in s.items for n in self._expanded(d)], s.value, pos=s.pos)
         for d in s.items:
             if d.dims and typ not in ("matrix", "intmat"):
                 raise MechTypeError(f"only a matrix is declared with dimensions, not a {typ}")

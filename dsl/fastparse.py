@@ -22,7 +22,7 @@ _TOKEN = re.compile(r"""[ \t]*+(?:   # spaces before a token are taken with it: 
   | (?P<RATIONAL>[0-9]+/[0-9]+)
   | (?P<NUMBER>[0-9]+)
   | (?P<IDENT>[A-Za-z_@][A-Za-z0-9_@]*)
-  | (?P<STRING>"[^"]*")
+  | (?P<STRING>"(?:[^"\\]|\\.)*")
   | (?P<OP>==|!=|<>|<=|>=|&&|\|\||\+\+|--|\*\*|\.\.|[-+*/%^<>!:=()\[\],;\#{}]))
 """, re.S | re.X)
 
@@ -108,7 +108,7 @@ def _leaf(tok: tuple) -> A.Expr:
             k += 1
         num, _, den = value[:k].partition("/")
         return A.MonomLit(_int(num), _int(den) if den else 1, value[k:], pos=pos)
-    return A.StrLit(value[1:-1], pos=pos)
+    return A.StrLit(A.string_value(value), pos=pos)
 
 
 def _span(first: tuple, last: tuple) -> A.Pos:

@@ -50,7 +50,7 @@ class MechLexer(RegexLexer):
             (r"[ \t\r\n\f]+", Whitespace),
             (r"//.*?$", Comment.Single),
             (r"/\*[\s\S]*?(\*/|\Z)", Comment.Multiline),
-            (r'"[^"]*"?', String),
+            (r'"(?:[^"\\]|\\.)*"?', String),
             (words(KEYWORDS, suffix=r"\b"), Keyword),
             (words(TYPES, suffix=r"\b"), Keyword.Type),
             (words(SYSTEM_VARIABLES, suffix=r"\b"), Name.Builtin.Pseudo),

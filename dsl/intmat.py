@@ -96,13 +96,14 @@ def to_intmat(v: Any, nrows: int = 0, ncols: int = 0) -> IntMat:
 
 
 def intmat_op(op: str, a: Any, b: Any) -> Any:
-    """``a op b`` with an intmat operand: + - of equal shapes (or an int on the diagonal... as
+    """``a op b`` with an intmat operand: + - of equal shapes (an intvec is a column; an int on the diagonal... as
     Singular: added to every diagonal entry), products with ints, intmats and intvecs."""
     if op in ("+", "-"):
         sign = 1 if op == "+" else -1
+        a, b = (IntMat(len(x.values), 1, x.values) if isinstance(x, IntVec) else x for x in (a, b))  # a column
         if isinstance(a, IntMat) and isinstance(b, IntMat):
             if (a.nrows, a.ncols) != (b.nrows, b.ncols):
-                raise MechRuntimeError(f"intmat sizes do not match: {a.nrows} x {a.ncols} and {b.nrows} x {b.ncols}")
+                raise MechRuntimeError(f"intmat size not compatible: {a.nrows} x {a.ncols} and {b.nrows} x {b.ncols}")
             return IntMat(a.nrows, a.ncols, [x + sign * y for x, y in zip(a.values, b.values)])
         if isinstance(a, IntMat) and isinstance(b, int):
             return _diag_add(a, sign * b)

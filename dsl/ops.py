@@ -13,8 +13,8 @@ from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
 from .intmat import IntMat, euclid_div, intmat_op
 from .minpoly import compare_params
-from .values import (ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number, to_poly,
-                     typeof)
+from .values import (BigInt, ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number,
+                     to_poly, typeof)
 
 Warn = Callable[[str], None]
 
@@ -28,6 +28,9 @@ def trunc_div(a: int, b: int) -> int:
 
 def trunc_mod(a: int, b: int) -> int:
     return a - b * trunc_div(a, b)
+
+
+_INTS = (int, BigInt)
 
 
 def _rank(v: Any) -> int:
@@ -192,6 +195,8 @@ def _intvec_op(op: str, a: Any, b: Any) -> Any:
 
 def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any:
     """``a op b`` for the arithmetic operators ``+ - * / div mod ^ :``."""
+    if (type(a) is BigInt or type(b) is BigInt) and type(a) in _INTS and type(b) in _INTS:
+        return _bigint_op(op, a, b)
     if type(a) is int and type(b) is int:
         if op == "+":
             return a + b
@@ -298,6 +303,28 @@ def power(a: Any, k: Any) -> Any:
     raise MechTypeError(f"operator ^ is not defined for {typeof(a)} and int")
 
 
+def _bigint_op(op: str, a: int, b: int) -> Any:
+    """``a op b`` with a bigint operand: a bigint; div, / and mod Euclidean as Singular's bigint."""
+    if op in ("div", "/", "mod", "%") and b == 0:
+        raise MechRuntimeError("division by 0")
+    if op == "+":
+        return BigInt(a + b)
+    if op == "-":
+        return BigInt(a - b)
+    if op == "*":
+        return BigInt(a * b)
+    if op in ("div", "/"):
+        return BigInt(euclid_div(a, b))
+    if op in ("mod", "%"):
+        return BigInt(a % abs(b))
+    if op == "^":
+        if b < 0:
+            raise MechRuntimeError("negative exponent for a bigint")
+        _check_power(abs(a).bit_length(), b, MAX_INT_BITS, "bigint")
+        return BigInt(a ** b)
+    raise _bad(op, a, b)
+
+
 def negate(a: Any) -> Any:
     if isinstance(a, int):
         return -a
@@ -338,7 +365,7 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
     for m, other in ((a, b), (b, a)):  # a 1 x 1 matrix against a polynomial: its entry (as Singular)
         if isinstance(m, Matrix) and m.nrows == m.ncols == 1 and op in ("==", "!=") and _rank(other) >= 0:
             return compare(op, m.entries[0], other, ring)
-    if type(a) is int and type(b) is int or (isinstance(a, str) and isinstance(b, str)):
+    if type(a) in _INTS and type(b) in _INTS or (isinstance(a, str) and isinstance(b, str)):
         x, y = a, b
     elif _rank(a) >= 0 and _rank(b) >= 0:
         ring = _ring(a, b, ring)

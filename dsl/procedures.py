@@ -62,7 +62,7 @@ class Procedures:
 
     def _bind_params(self, proc: Proc, args: list[Any], nodes: Optional[list[A.Expr]] = None) -> None:
         params = proc.params or []
-        if proc.params is None and args:
+        if proc.params is None:  # a procedure without parameters takes any arguments in #
             params = [A.Param("list", "#")]
         i = 0
         for p in params:

@@ -67,7 +67,7 @@ def is_complete(text: str) -> bool:
     return not split_complete(masked)[1]
 
 
-_CLOSED_STRINGS = re.compile(r'//[^\n]*|/\*.*?(?:\*/|$)|"[^"]*"', re.S)
+_CLOSED_STRINGS = re.compile(r'//[^\n]*|/\*.*?(?:\*/|$)|"(?:[^"\\]|\\.)*"', re.S)
 
 
 class StatusLine:

@@ -22,11 +22,12 @@ RING_TYPES = {"number", "poly", "ideal", "matrix", "map"}
 class Var:
     """A variable: declared type, value, the ring it belongs to (None if ring-independent), level."""
 
-    __slots__ = ("name", "type", "value", "ring", "level", "alias")
+    __slots__ = ("name", "type", "value", "ring", "level", "alias", "attributes")
 
     def __init__(self, name: str, type_: str, value: Any, ring: Optional[Ring], level: int) -> None:
         self.name, self.type, self.value, self.ring, self.level = name, type_, value, ring, level
         self.alias: Optional[str] = None  # an alias parameter: the caller's variable it stands for
+        self.attributes: Optional[dict] = None  # attrib(x, name, value): Singular's attributes but isSB
 
 
 class Frame:

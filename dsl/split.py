@@ -65,7 +65,7 @@ def split_complete(text: str) -> tuple[int, bool]:
     return boundary, pending or depth > 0
 
 
-_SPECIAL = re.compile(r'"[^"]*"?|//[^\n]*|/\*.*?(?:\*/|\Z)|[][(){};]', re.S)
+_SPECIAL = re.compile(r'"(?:[^"\\]|\\.)*"?|//[^\n]*|/\*.*?(?:\*/|\Z)|[][(){};]', re.S)
 _SIMPLE = re.compile(r'(?:[^][(){};"/]++|/(?![/*]))*+;')
 _ELSE = re.compile(r'(?:\s+|//[^\n]*|/\*.*?\*/)*+else(?![A-Za-z0-9_@])', re.S)
 

@@ -14,7 +14,7 @@ from .limits import LimitExceeded, limit_error
 from .printing import join_outputs, render
 from .rings import indexed_names
 from .signals import SIGNALS, BreakSignal, ContinueSignal, QuitSignal, ReturnSignal
-from .values import NONE, ExprList, List, Proc, Ring, typeof
+from .values import NONE, NOTHING, ExprList, List, Proc, Ring, typeof
 
 
 class Statements:
@@ -80,6 +80,9 @@ class Statements:
         for node in s.exprs:
             v = self.eval(node)
             if v is NONE:
+                if isinstance(node, A.Call) and isinstance(node.func, A.Name) and \
+                        isinstance(getattr(self.lookup(node.func.id), "value", None), Proc):
+                    self.last = NOTHING  # a procedure's empty result: Singular's `_` holds nothing
                 continue
             self.last = v
             values.append(v)

@@ -38,6 +38,34 @@ NONE = NoneValue()
 UNKNOWN = object()  # a list's ring not looked for yet
 
 
+class Nothing:
+    """What ``_`` holds after a top-level call of a procedure that returned nothing (Singular's
+    ``typeof(_)`` is then ``?unknown type?``)."""
+
+    type_name = "?unknown type?"
+
+    def __repr__(self) -> str:
+        return "NOTHING"
+
+
+NOTHING = Nothing()
+
+
+class BigInt(int):
+    """Singular's bigint: an integer like int (mech's ints have any size too) whose ``div`` and
+    ``mod`` are Euclidean (the remainder in [0, |b|)) where int's truncate; arithmetic with a
+    bigint operand gives a bigint."""
+
+    type_name = "bigint"
+    __slots__ = ()
+
+    def __neg__(self) -> "BigInt":
+        return BigInt(-int(self))
+
+    def __abs__(self) -> "BigInt":
+        return BigInt(abs(int(self)))
+
+
 class Number:
     """An element of the coefficient field of a ring (Singular's ``number``).
 
@@ -307,6 +335,7 @@ class Ring:
     blocks: tuple[OrderBlock, ...]
     name: str = ""
     objects: dict = field(default_factory=dict)
+    attributes: dict = field(default_factory=dict)  #: attrib(r, name, value)
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -359,8 +388,8 @@ class LibCommand:
         return f"// the {self.command.lib} procedure {self.command.name}"
 
 
-TYPE_NAMES = {int: "int", str: "string", Number: "number", Poly: "poly", Ideal: "ideal", Matrix: "matrix",
-              IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none",
+TYPE_NAMES = {int: "int", BigInt: "bigint", str: "string", Number: "number", Poly: "poly", Ideal: "ideal",
+              Matrix: "matrix", IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none",
               LibCommand: "proc"}
 
 
@@ -560,8 +589,13 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing], warn: Optional[Callable[
     library type's converter reports mistakes that are not errors)."""
     if typ == "def":
         return List(v.items) if isinstance(v, ExprList) else v
-    if typ in ("int", "bigint"):
-        return to_int(_single(v, typ))
+    if typ == "int":
+        v = _single(v, typ)
+        if type(v) is BigInt:
+            raise MechTypeError("int = bigint is not supported (as in Singular: int(b) converts)")
+        return to_int(v)
+    if typ == "bigint":
+        return BigInt(to_int(_single(v, typ)))
     if typ == "number":
         return to_number(_single(v, typ), ring)
     if typ == "poly":

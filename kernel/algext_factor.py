@@ -11,6 +11,7 @@ from typing import Any
 import flint
 
 from .algext import AlgebraicField
+from .algext_fq import fq_gcd
 from .errors import NotSupported
 from .poly import Poly, PolyRing
 
@@ -65,7 +66,8 @@ def gcd(f: Poly, g: Poly) -> Poly:
     if f.is_zero() or g.is_zero():
         return (g if f.is_zero() else f).monic()
     if f.ring.field.characteristic:
-        return euclid_gcd(f, g)
+        h = fq_gcd(f, g)
+        return euclid_gcd(f, g) if h is None else h
     R, K = _sympy_ring(f.ring)
     return _from_sympy(_to_sympy(f, R, K).gcd(_to_sympy(g, R, K)), f.ring).monic()
 

@@ -8,7 +8,7 @@ from ..dsl import ast as A
 from ..dsl.errors import MechNameError, MechRuntimeError, MechTypeError
 from ..dsl.printing import value_str
 from ..dsl.registry import command
-from ..dsl.values import (ExprList, Ideal, Ring, IntVec, List, Matrix, Number, to_ideal, to_intvec, to_matrix,
+from ..dsl.values import (BigInt, ExprList, Ideal, Ring, IntVec, List, Matrix, Number, to_ideal, to_intvec, to_matrix,
                           to_number, to_poly)
 from ..dsl.values import typeof as _typeof
 from ..kernel import Poly
@@ -80,7 +80,7 @@ def int_(x: int | Number | Poly | str) -> int:
       → 43
     """
     if isinstance(x, int):
-        return x
+        return int(x)
     if isinstance(x, str):
         try:
             return int(x.strip())
@@ -94,14 +94,17 @@ def int_(x: int | Number | Poly | str) -> int:
 
 
 @command("bigint")
-def bigint_(x: int | Number | Poly | str) -> int:
-    """bigint(x): x as an integer of any size (in mech the same as int).
+def bigint_(x: int | Number | Poly | str) -> BigInt:
+    """bigint(x): x as a bigint (an integer like int, whose div and mod are Euclidean: the remainder
+    in [0, |b|)).
 
     Example:
       bigint(2)^70;
       → 1180591620717411303424
+      bigint(-5) div 2, bigint(-5) mod 2;
+      → -3 1
     """
-    return int_(x)
+    return BigInt(int_(x))
 
 
 @command("intvec")

@@ -1,4 +1,5 @@
-"""Singular's ``factorize`` over QQ and Z/p, with Singular 4.3.1's choice of signs and order.
+"""Singular's ``factorize`` over QQ and Z/p (with parameters: :mod:`.factorize_params`), with Singular
+4.3.1's choice of signs and order.
 
 The factors come from :mod:`mech.kernel.factor`; what Singular prints follows its factory library:
 
@@ -23,6 +24,7 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.values import Ideal, IntVec, List
 from ..kernel import Poly
 from ..dsl.registry import command
+from .factorize_params import param_factorization
 from .standard import normalize
 
 Factors = list[tuple[Poly, int]]
@@ -126,6 +128,17 @@ def _split(terms: dict, v: int) -> list[tuple[int, dict]]:
     return sorted(parts.items(), key=lambda t: -t[0])
 
 
+def factory_factors(f: Poly) -> Factors:
+    """The non-constant factors of ``f`` with their multiplicities, scaled and sorted as factory does."""
+    try:
+        factors = _factory(normalize(f))
+    except NotImplementedError:
+        raise MechRuntimeError(f"factorize is not available over the coefficient field {f.ring.field!r}") from None
+    char = f.ring.field.characteristic
+    factors.sort(key=cmp_to_key(lambda s, t: (s[1] > t[1]) - (s[1] < t[1]) or _compare(s[0].terms, t[0].terms, char)))
+    return factors
+
+
 def singular_factorization(f: Poly) -> tuple[Any, Factors]:
     """``(unit, [(factor, multiplicity), ...])`` in Singular's order, ``f = unit * prod``."""
     ring = f.ring
@@ -133,12 +146,9 @@ def singular_factorization(f: Poly) -> tuple[Any, Factors]:
         unit = f.lc() if f.terms else ring.field.zero
         e = f.lm() if f.terms else ring.zero_exp
         return unit, [(ring.gen(i), k) for i, k in enumerate(e) if k]
-    try:
-        factors = _factory(normalize(f))
-    except NotImplementedError:
-        raise MechRuntimeError(f"factorize is not available over the coefficient field {ring.field!r}") from None
-    char = ring.field.characteristic
-    factors.sort(key=cmp_to_key(lambda s, t: (s[1] > t[1]) - (s[1] < t[1]) or _compare(s[0].terms, t[0].terms, char)))
+    if getattr(ring.field, "params", ()) and not hasattr(ring.field, "modulus"):
+        return param_factorization(f, factory_factors)
+    factors = factory_factors(f)
     lead = ring.field.one
     for g, m in factors:
         lead = lead * g.lc() ** m

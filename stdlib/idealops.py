@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from itertools import combinations
-from typing import Any
+from typing import Any, Optional
 
 from ..dsl import ast as A
 from ..dsl.errors import MechRuntimeError, MechTypeError
@@ -16,7 +16,7 @@ from ..kernel.ideals import _drop, _lift, _prefixed, eliminate, independent_set,
 from ..kernel.order import Block, MonomialOrder
 from ..kernel.poly import divides, sub_exp
 from ..kernel.engines import standard_basis as kernel_standard_basis
-from .standard import _nf, normalize, standard_basis
+from .standard import _nf, normalize, standard_basis, std
 
 
 # ---------------------------------------------------------------- interreduction
@@ -160,6 +160,35 @@ def minbase(I: Ideal) -> Ideal:
     return Ideal(ring, kept or [ring.zero()])
 
 
+@command("mstd")
+def mstd(I: Ideal) -> List:
+    """mstd(I): the list of a standard basis S of the homogeneous ideal I and a minimal set of
+    generators of I taken from S (by increasing degree, each element of S not in the ideal of those
+    kept before).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      mstd(ideal(x2, xy, x2+xy, x3));
+      → [1]:
+      →    _[1]=xy
+      →    _[2]=x2
+      → [2]:
+      →    _[1]=xy
+      →    _[2]=x2
+    """
+    ring = I.ring
+    if not ring.order.is_global or not all(p.is_homogeneous() for p in I.nonzero()):
+        raise MechRuntimeError("mstd: only homogeneous ideals in a global ordering are supported")
+    S = std(I)
+    kept: list[Poly] = []
+    for p in sorted(S.nonzero(), key=lambda p: p.total_degree()):  # stable: S's order within a degree
+        if not _member(p, kept):
+            kept.append(p)
+    order = {id(p): k for k, p in enumerate(S.gens)}
+    kept.sort(key=lambda p: order[id(p)])
+    return List([S, Ideal(ring, kept or [ring.zero()])])
+
+
 # ---------------------------------------------------------------- std and reduce variants
 @command("std")
 def std_add(ctx, I: Ideal, f: Poly | Ideal) -> Ideal:
@@ -264,9 +293,10 @@ def indepSet(ctx, I: Ideal, which: int = -1) -> Any:
 
 # ---------------------------------------------------------------- preimage
 @command("preimage", raw=True)
-def preimage(ctx, ring_node: A.Expr, map_node: A.Expr, ideal_node: A.Expr) -> Ideal:
+def preimage(ctx, ring_node: A.Expr, map_node: Optional[A.Expr] = None,
+             ideal_node: Optional[A.Expr] = None) -> Ideal | Ring:
     """preimage(S, phi, J): the ideal of the basering R of the f with phi(f) in J, for a map phi from
-    R to the ring S and an ideal J of S (kernel(phi) for J = 0).
+    R to the ring S and an ideal J of S (kernel(phi) for J = 0); preimage(phi): the source ring of phi.
 
     Example:
       ring r = 0,(a,b),dp;
@@ -278,6 +308,11 @@ def preimage(ctx, ring_node: A.Expr, map_node: A.Expr, ideal_node: A.Expr) -> Id
       → _[1]=0
     """
     from .rings import _in_ring
+    if map_node is None or ideal_node is None:
+        phi = ctx.eval(ring_node)
+        if map_node is not None or not isinstance(phi, Map):
+            raise MechTypeError("preimage(phi) takes a map; preimage(S, phi, J) a ring, a map and an ideal")
+        return phi.source
     source = ctx.basering().poly
     target_ring, phi = _in_ring(ctx, ring_node, map_node, "preimage")
     _, J = _in_ring(ctx, ring_node, ideal_node, "preimage")

@@ -1,4 +1,4 @@
-"""The interpreter's own commands (``print``, ``defined``, ``nameof``, ``execute``, ``option``,
+"""The interpreter's own commands (``print``, ``defined``, ``nameof``, ``reservedName``, ``execute``, ``option``,
 ``system``, ``export``, ``ERROR``, ``ASSUME``) and the help texts of the language's keywords and types (``help if;``)."""
 from __future__ import annotations
 
@@ -7,8 +7,9 @@ from typing import Any
 from ..dsl import ast as A
 from ..dsl.errors import MechNameError, MechRuntimeError, MechTypeError
 from ..dsl.printing import print_form, render
-from ..dsl.registry import TOPICS, command
-from ..dsl.values import NONE, Map
+from ..dsl.highlight import KEYWORDS, type_words
+from ..dsl.registry import TOPICS, command, is_builtin
+from ..dsl.values import NONE, Map, Ring
 
 
 @command("print")
@@ -82,7 +83,8 @@ def defined(ctx, node: A.Expr) -> int:
 
 @command("nameof", raw=True)
 def nameof(ctx, node: A.Expr) -> str:
-    """nameof(x): the name of the variable x ("" for an expression; for basering the ring's name).
+    """nameof(x): the name of the variable x ("" for an expression; for basering or an expression
+    giving a ring, the ring's name).
 
     Example:
       ring r = 0,(x,y),dp;
@@ -91,8 +93,25 @@ def nameof(ctx, node: A.Expr) -> str:
       → f
     """
     if isinstance(node, A.Name) and node.id == "basering":
-        return ctx.basering().name
-    return node.id if isinstance(node, A.Name) else ""
+        return ctx.ring.name if ctx.ring is not None else "basering"  # as Singular without a ring
+    if isinstance(node, A.Name):
+        return node.id
+    v = ctx.eval(node)  # an expression: a ring has its name (nameof(preimage(phi)))
+    return v.name if isinstance(v, Ring) else ""
+
+
+@command("reservedName")
+def reserved_name(name: str) -> int:
+    """reservedName(s): 1 if the word s is reserved by the language (a keyword, a type or a command
+    available without a library), else 0.
+
+    Example:
+      reservedName("ring");
+      → 1
+      reservedName("xyz");
+      → 0
+    """
+    return int(name in KEYWORDS or name in type_words() or is_builtin(name))
 
 
 @command("execute")
@@ -219,7 +238,7 @@ TOPICS.update({
     "help": "help NAME; or ?NAME;: what a command, procedure, type or keyword does; help; lists the commands.",
     "basering": "basering: the current ring.",
     "int": "int i = 3;: a machine integer (div, mod, % and / divide; comparisons give 0 or 1).",
-    "bigint": "bigint b = 2^70;: an integer of any size (in mech the same as int).",
+    "bigint": "bigint b = 2^70;: an integer of any size like int, with Euclidean div and mod.",
     "number": "number c = 3/4;: an element of the coefficient field of the basering.",
     "poly": "poly f = x2+y;: a polynomial of the basering.",
     "ring": "ring r = 0, (x,y,z), dp;: a polynomial ring (characteristic or (char, params), variables, "

@@ -1,5 +1,5 @@
 """Singular's commands on single polynomials and integers: ``gcd``, ``lcm`` (general.lib),
-``resultant``, ``coef``, ``coeffs``, ``prime``, ``find``, the ``cyclic`` ideal (polylib.lib),
+``extgcd``, ``resultant``, ``coef``, ``coeffs``, ``prime``, ``find``, the ``cyclic`` ideal (polylib.lib),
 ``leadexp``, ``rvar``, ``jet``, ``cleardenom``."""
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from typing import Any
 from ..dsl import ast as A
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec, Matrix, typeof
+from ..dsl.values import Ideal, IntVec, List, Matrix, typeof
 from ..kernel import Poly
 from ..kernel import factor
 from ..kernel import matrix as KM
@@ -45,6 +45,60 @@ def gcd_poly(f: Poly, g: Poly) -> Poly:
         from .standard import normalize
         return normalize(h)
     return h
+
+
+@command("extgcd")
+def extgcd_int(a: int, b: int) -> List:
+    """extgcd(a, b): the list [g, s, t] with g = gcd(a, b) = s*a + t*b (integers, or univariate
+    polynomials: g monic, s and t of the least degrees).
+
+    Example:
+      extgcd(12, 18);
+      → [1]:
+      →    6
+      → [2]:
+      →    -1
+      → [3]:
+      →    1
+    """
+    s0, t0, s1, t1 = 1, 0, 0, 1
+    while b:
+        q = a // b
+        a, b = b, a - q * b
+        s0, t0, s1, t1 = s1, t1, s0 - q * s1, t0 - q * t1
+    sign = -1 if a < 0 else 1
+    return List([sign * a, sign * s0, sign * t0])
+
+
+@command("extgcd")
+def extgcd_poly(f: Poly, g: Poly) -> List:
+    ring = f.ring
+    used = f.variables() | g.variables()
+    if len(used) > 1:
+        raise MechRuntimeError("extgcd takes univariate polynomials")
+    i = used.pop() if used else 0
+    a, b = f, g
+    s0, t0, s1, t1 = ring.one(), ring.zero(), ring.zero(), ring.one()
+    while not b.is_zero():
+        q, r = _divmod_in(a, b, i)
+        a, b = b, r
+        s0, t0, s1, t1 = s1, t1, s0 - q * s1, t0 - q * t1
+    if a.is_zero():
+        return List([a, s0, t0])
+    inv = ring.field.one / a.lc()
+    return List([a * inv, s0 * inv, t0 * inv])
+
+
+def _divmod_in(a: Poly, b: Poly, i: int) -> tuple[Poly, Poly]:
+    """Quotient and remainder of univariate polynomials in the i-th variable."""
+    ring, q, r = a.ring, a.ring.zero(), a
+    eb = max(b.terms, key=lambda e: e[i])
+    lb = b.terms[eb]
+    while not r.is_zero() and r.degree_in(i) >= eb[i]:
+        er = max(r.terms, key=lambda e: e[i])
+        t = ring.monomial(tuple(x - y for x, y in zip(er, eb)), r.terms[er] / lb)
+        q, r = q + t, r - t * b
+    return q, r
 
 
 @command("lcm", lib="general.lib")
@@ -251,9 +305,10 @@ def leadexp(f: Poly) -> IntVec:
     return IntVec(f.lm() if not f.is_zero() else (0,) * f.ring.nvars)
 
 
-@command("rvar")
-def rvar(ctx, v: Any) -> int:
-    """rvar(x): the index of the ring variable x (a variable or its name), 0 if it is none.
+@command("rvar", raw=True)
+def rvar(ctx, node: A.Expr) -> int:
+    """rvar(x): the index of the ring variable x (a variable or its name), 0 if it is none (an
+    undefined name too).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -263,6 +318,9 @@ def rvar(ctx, v: Any) -> int:
       → 0
     """
     ring = ctx.basering()
+    if isinstance(node, A.Name) and ring.var_index(node.id) is None and ctx.lookup(node.id) is None:
+        return 0
+    v = ctx.eval(node)
     if isinstance(v, str):
         i = ring.var_index(v)
         return 0 if i is None else i + 1
@@ -293,7 +351,8 @@ def jet(f: Poly | Ideal, d: int) -> Any:
 @command("cleardenom")
 def cleardenom(f: Poly) -> Poly:
     """cleardenom(f): f times a constant so that its coefficients are coprime integers with a positive
-    leading one (over QQ and QQ(parameters); over Z/p f itself).
+    leading one (over QQ and QQ(parameters); over Z/p f itself; over Z/p(parameters) coprime
+    polynomials in the parameters).
 
     Example:
       ring r = 0,(x,y),dp;
@@ -302,6 +361,20 @@ def cleardenom(f: Poly) -> Poly:
     """
     from .standard import normalize
     field = f.ring.field
-    if field.characteristic and getattr(field, "params", ()):
-        raise MechRuntimeError("cleardenom over Z/p(parameters) is not supported")
+    if field.characteristic and getattr(field, "params", ()) and not hasattr(field, "modulus") and f.terms:
+        return _cleardenom_params_mod_p(f)
     return f if field.characteristic else normalize(f)
+
+
+def _cleardenom_params_mod_p(f: Poly) -> Poly:
+    """Over Z/p(a,...) as Singular: times the lcm of the (monic) denominators, divided by the monic gcd
+    of the numerators; constant factors stay."""
+    field = f.ring.field
+    lcm = None
+    for c in f.terms.values():
+        lcm = c.den if lcm is None else lcm * c.den // lcm.gcd(c.den)
+    nums = {e: c.num * (lcm // c.den) for e, c in f.terms.items()}
+    g = None
+    for n in nums.values():
+        g = n if g is None else g.gcd(n)
+    return Poly(f.ring, {e: field.from_polys(n // g) for e, n in nums.items()})
