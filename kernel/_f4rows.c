@@ -327,8 +327,11 @@ done:
     return result;
 }
 
+PyObject *f4_layout(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
+
 static PyMethodDef methods[] = {
     {"reduce", f4_reduce, METH_VARARGS, "Reduce one F4 matrix modulo p (see the module source)."},
+    {"layout", f4_layout, METH_VARARGS, "F4's symbolic preprocessing and matrix layout (see kernel/_f4sym.c)."},
     {NULL, NULL, 0, NULL}
 };
 

@@ -30,7 +30,7 @@ from typing import Sequence
 
 import flint
 
-from .f4_rows import CodedRow, Flat, compiled
+from .f4_rows import LAYOUT, CodedRow, Flat, Packed, compiled
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing
@@ -65,6 +65,7 @@ class F4:
         self.pairs: list[tuple[int, int, int, int]] = []  # (sugar, lcm, i, j); j < 0: an input row
         self.divisor: dict[int, int] = {}  # monomial -> reducer, or -1 - (basis size scanned)
         self.trace = Trace(len(polys)) if record else None
+        self.packed = Packed(packing) if compiled(p) and LAYOUT is not None else None
         self.work = 0  # matrix entries handled, a measure of the size of the computation
         for ms, cs in polys:
             k = self._add(ms, cs, is_basis=False)
@@ -262,6 +263,8 @@ class F4:
         the non-pivot monomials, the kernel's ``(used, E, W)`` (``W``: the reduced tails of the
         reducers with leading monomials ``want``) and, when recording, the rows as
         :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
+        if self.packed is not None:
+            return self._matrix_packed(crow_specs, pivots, want, stop)
         rowmons, pivcols, nonpivot, where = self._layout(crow_specs, pivots)
         K, m = len(pivcols), len(nonpivot)
         coefs, get = self.coefs, where.__getitem__
@@ -284,6 +287,31 @@ class F4:
             recorded = (recorded[:K], recorded[K:])
         out = flat.reduce(self.p, m, K, [where[x] for x in want], stop)
         return pivcols, nonpivot, out, recorded
+
+    def _matrix_packed(self, crow_specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]],
+                       want: Sequence[int], stop: bool):
+        """:meth:`_matrix_compiled` with the symbolic preprocessing compiled too
+        (:class:`~.f4_rows.Packed`); the reducer of a monomial is the first active element, by
+        increasing length, whose leading monomial divides it."""
+        mons, active = self.mons, self.active
+        reducers = sorted((k for k in range(len(mons)) if active[k]), key=lambda k: len(mons[k]))
+        out = self.packed.layout(mons, self.coefs, self.tdeg, reducers, crow_specs, pivots)
+        if out is None:
+            raise PackingOverflow
+        pivcols, nonpivot, redk, flat, work = out
+        self.work += work
+        K = len(pivcols)
+        if want:
+            where = dict(zip(pivcols, range(K)))
+            want = [where[x] for x in want]
+        result = flat.reduce(self.p, len(nonpivot), K, want, stop)
+        recorded = None
+        if self.trace is not None:
+            off, col = flat.off, flat.col
+            rows = [CodedRow(k, 1, col[off[j]:off[j + 1]].tolist()) for j, k in enumerate(redk)]
+            rows += [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]].tolist()) for i, (k, _) in enumerate(crow_specs)]
+            recorded = (rows[:K], rows[K:])
+        return pivcols, nonpivot, result, recorded
 
     def _record(self, K: int, m: int, red_specs: list[RowSpec], rows: list[tuple[RowSpec, int]],
                 new: list[list[int]], roots: Sequence[int] = ()) -> Step:

@@ -13,9 +13,9 @@ from typing import Sequence
 from .f4_vectors import RowSpec
 
 try:
-    from ._f4rows import reduce as KERNEL  # the kernel's one function
+    from ._f4rows import layout as LAYOUT, reduce as KERNEL  # symbolic preprocessing, row reduction
 except ImportError:  # no compiler at install: the pure-Python path
-    KERNEL = None
+    KERNEL = LAYOUT = None
 
 LIMIT = 1 << 31  # primes the kernel handles (products of two entries fit 62 bits)
 
@@ -37,6 +37,14 @@ class Flat:
         self.col = array("i")
         self.val = array("Q")
 
+    @classmethod
+    def of(cls, K: int, off: bytes, col: bytes, val: bytes) -> "Flat":
+        """The rows as :meth:`Packed.layout` returns them (``K`` reducers by pivot id first)."""
+        flat = cls()
+        flat.ids.extend(range(K))
+        flat.off, flat.col, flat.val = array("q", off), array("i", col), array("Q", val)
+        return flat
+
     def add(self, codes, coefs) -> None:
         """One row: its column codes and coefficients (iterables of equal length)."""
         self.col.extend(codes)
@@ -49,6 +57,42 @@ class Flat:
         reduced tails ``(slots, values)`` of the reducers ``want`` (slots highest first)."""
         return KERNEL(p, m, K, len(self.ids), self.ids, self.off, self.col, self.val,
                              array("i", want), stop)
+
+
+class Packed:
+    """F4's basis elements as the compiled symbolic preprocessing (``kernel/_f4sym.c``) takes
+    them: per element its monomials as ``nw`` little-endian words and its coefficients as
+    64-bit words (bytes), converted once per element."""
+
+    def __init__(self, P) -> None:
+        self.nw = -(-P.bits // 64)
+        self.nb = 8 * self.nw
+        self.guard = P.guard.to_bytes(self.nb, "little")
+        self.fields = (P.dshift, P.ebits, P.maxdeg)
+        self.mons: list[bytes] = []
+        self.coefs: list[bytes] = []
+
+    def _sync(self, mons: list[list[int]], coefs: list[list[int]]) -> None:
+        nb = self.nb
+        for k in range(len(self.mons), len(mons)):
+            self.mons.append(b"".join([int(x).to_bytes(nb, "little") for x in mons[k]]))
+            self.coefs.append(array("Q", map(int, coefs[k])).tobytes())
+
+    def layout(self, mons: list[list[int]], coefs: list[list[int]], tdeg: list[int], reducers: list[int],
+               specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]]):
+        """Symbolic preprocessing and the matrix's rows (see ``kernel/_f4sym.c``):
+        ``(pivcols, nonpivot, redk, flat, work)``, or None when a row exceeds the packing."""
+        self._sync(mons, coefs)
+        nb = self.nb
+        dshift, ebits, maxdeg = self.fields
+        out = LAYOUT(self.nw, self.guard, dshift, ebits, maxdeg, self.mons, tdeg, self.coefs,
+                     array("i", reducers), [(k, int(u).to_bytes(nb, "little")) for k, u in specs],
+                     [(int(x).to_bytes(nb, "little"), k, int(u).to_bytes(nb, "little"))
+                      for x, (k, u) in pivots.items()])
+        if out is None:
+            return None
+        pivcols, nonpivot, redk, off, col, val, work = out
+        return pivcols, nonpivot, redk, Flat.of(len(pivcols), off, col, val), work
 
 
 class CodedRow:
