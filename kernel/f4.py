@@ -30,7 +30,7 @@ from typing import Sequence
 
 import flint
 
-from .f4_rows import LAYOUT, CodedRow, Flat, Packed, compiled
+from .f4_rows import LAYOUT, CodedRow, Flat, Packed, Plan, compiled
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing
@@ -66,6 +66,7 @@ class F4:
         self.divisor: dict[int, int] = {}  # monomial -> reducer, or -1 - (basis size scanned)
         self.trace = Trace(len(polys)) if record else None
         self.packed = Packed(packing) if compiled(p) and LAYOUT is not None else None
+        self._plan = None  # the last matrix's rows flat (compiled layout, recording)
         self.work = 0  # matrix entries handled, a measure of the size of the computation
         for ms, cs in polys:
             k = self._add(ms, cs, is_basis=False)
@@ -307,10 +308,11 @@ class F4:
         result = flat.reduce(self.p, len(nonpivot), K, want, stop)
         recorded = None
         if self.trace is not None:
-            off, col = flat.off, flat.col
-            rows = [CodedRow(k, 1, col[off[j]:off[j + 1]].tolist()) for j, k in enumerate(redk)]
-            rows += [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]].tolist()) for i, (k, _) in enumerate(crow_specs)]
+            off, col = flat.off, flat.col  # rows keep array slices of the column codes
+            rows = [CodedRow(k, 1, col[off[j]:off[j + 1]]) for j, k in enumerate(redk)]
+            rows += [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]]) for i, (k, _) in enumerate(crow_specs)]
             recorded = (rows[:K], rows[K:])
+            self._plan = Plan.of_flat(flat, redk + [k for k, _ in crow_specs], [1] * K + [0] * len(crow_specs))
         return pivcols, nonpivot, result, recorded
 
     def _record(self, K: int, m: int, red_specs: list[RowSpec], rows: list[tuple[RowSpec, int]],
@@ -368,6 +370,8 @@ class F4:
             step = self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new])
             if self.trace.full and self.work <= FULL_TRACE_WORK:  # every row, for a full replay
                 step.full = (red_specs, c_specs, used)
+                if self._plan is not None:  # the rows as the kernel reduced them, for full replays
+                    step.plans["full"] = self._plan
             elif self.trace.full:  # too large to keep: no full replay, the rows are let go
                 self.trace.full = False
                 for st in self.trace.steps:

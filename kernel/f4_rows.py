@@ -13,9 +13,9 @@ from typing import Sequence
 from .f4_vectors import RowSpec
 
 try:
-    from ._f4rows import layout as LAYOUT, reduce as KERNEL  # symbolic preprocessing, row reduction
+    from ._f4rows import gather as GATHER, layout as LAYOUT, reduce as KERNEL
 except ImportError:  # no compiler at install: the pure-Python path
-    KERNEL = LAYOUT = None
+    KERNEL = LAYOUT = GATHER = None
 
 LIMIT = 1 << 31  # primes the kernel handles (products of two entries fit 62 bits)
 
@@ -102,7 +102,7 @@ class CodedRow:
 
     __slots__ = ("k", "start", "codes", "_spec")
 
-    def __init__(self, k: int, start: int, codes: list[int]) -> None:
+    def __init__(self, k: int, start: int, codes: Sequence[int]) -> None:
         self.k, self.start, self.codes, self._spec = k, start, codes, None
 
     @property
@@ -129,10 +129,20 @@ def as_spec(row: RowSpec | CodedRow) -> RowSpec:
     return row.spec() if isinstance(row, CodedRow) else row
 
 
-def replay_step(reducers, rows, step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
+def replay_step(reducers, rows, step, coefs: list[list[int]], p: int, want: Sequence[int] = (), key: str = "rows"):
     """The kernel's ``(used, E, W)`` for recorded rows (reducers as ``(pivot id, row)``,
     pair rows) of a matrix shaped as ``step`` (:class:`~.f4_trace.Step`), with the
-    coefficients of another prime."""
+    coefficients of another prime.  Rows recorded as :class:`CodedRow` are laid out once
+    (a :class:`Plan` kept in ``step.plans[key]``); a replay then only gathers coefficients."""
+    plan = step.plans.get(key)
+    if plan is None and GATHER is not None and all(isinstance(r, CodedRow) for r in rows) \
+            and all(isinstance(r, CodedRow) for _, r in reducers):
+        plan = step.plans[key] = Plan([j for j, _ in reducers], [r for _, r in reducers] + list(rows))
+    if plan is not None:
+        try:
+            return plan.reduce(coefs, p, step.m, step.K, want)
+        except TypeError:  # coefficients that are not Python ints
+            pass
     flat = Flat()
     for j, row in reducers:
         flat.ids.append(j)
@@ -140,6 +150,38 @@ def replay_step(reducers, rows, step, coefs: list[list[int]], p: int, want: Sequ
     for row in rows:
         _add_recorded(flat, row, coefs)
     return flat.reduce(p, step.m, step.K, want)
+
+
+class Plan:
+    """Recorded rows of a matrix flat for the kernel, without coefficients: column codes,
+    offsets, and per row its polynomial and first term; :meth:`reduce` gathers the
+    coefficients of a prime (in C) and reduces."""
+
+    __slots__ = ("ids", "off", "col", "rk", "rstart")
+
+    def __init__(self, ids: list[int], rows: list[CodedRow]) -> None:
+        self.ids = array("i", ids)
+        self.off, self.col = array("q", [0]), array("i")
+        self.rk, self.rstart = array("i"), array("i")
+        for row in rows:
+            self.col.extend(row.codes)
+            self.off.append(len(self.col))
+            self.rk.append(row.k)
+            self.rstart.append(row.start)
+
+    @classmethod
+    def of_flat(cls, flat: Flat, rk: list[int], rstart: list[int]) -> "Plan":
+        """The plan of a matrix's rows as they were reduced (``flat``; polynomial and first
+        term of each row)."""
+        plan = cls.__new__(cls)
+        plan.ids, plan.off, plan.col = flat.ids, flat.off, flat.col
+        plan.rk, plan.rstart = array("i", rk), array("i", rstart)
+        return plan
+
+    def reduce(self, coefs: list[list[int]], p: int, m: int, K: int, want: Sequence[int] = ()):
+        """The kernel's ``(used, E, W)`` with the coefficients ``coefs`` (by polynomial)."""
+        val = GATHER(coefs, self.rk, self.rstart, self.off)
+        return KERNEL(p, m, K, len(self.ids), self.ids, self.off, self.col, val, array("i", want), False)
 
 
 def _add_recorded(flat: Flat, row: RowSpec | CodedRow, coefs: list[list[int]]) -> None:

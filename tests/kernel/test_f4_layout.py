@@ -87,3 +87,32 @@ def test_bad_arguments_are_errors():
         f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b""], b"", [], [])  # terms and coefficients disagree
     with pytest.raises(ValueError):
         f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b"\1" + b"\0" * 7], b"", [(5, b"\0" * 8)], [])
+
+
+def test_replays_through_plans_agree_with_rows_added_one_by_one(monkeypatch):
+    """A recorded run's matrices replayed with their rows laid out once (f4_rows.Plan, the
+    coefficients gathered in C), and again row by row: the same basis, the full replay too."""
+    from mech.kernel.f4_trace import replay_full
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)], GF(P))
+    fast = engines(cyclic(R), R, 63, record=True)[0]
+    fast.run()
+    assert all("full" in st.plans for st in fast.trace.steps)
+    q = 1000003
+    coefs = [[(7 * c + 1) % q for c in cs] for cs in fast.coefs[:fast.trace.npolys]]
+    with_plans = replay(fast.trace, coefs, q), replay_full(fast.trace, coefs, q)
+    for st in fast.trace.steps + [fast.trace.final]:
+        assert st.plans  # laid out by the replays
+        st.plans.clear()
+    monkeypatch.setattr(f4_rows, "GATHER", None)
+    assert (replay(fast.trace, coefs, q), replay_full(fast.trace, coefs, q)) == with_plans
+    assert all(not st.plans for st in fast.trace.steps)
+
+
+def test_gather_checks_the_rows():
+    from array import array
+    rk, start, off = array("i", [0, 1]), array("i", [1, 0]), array("q", [0, 2, 3])
+    assert array("Q", f4_rows.GATHER([[5, 6, 7], [8]], rk, start, off)).tolist() == [6, 7, 8]
+    with pytest.raises(ValueError):
+        f4_rows.GATHER([[5, 6], [8]], rk, start, off)  # row 0 is one term short
+    with pytest.raises(TypeError):
+        f4_rows.GATHER([[5, 6, 7], ["x"]], rk, start, off)
