@@ -96,12 +96,14 @@ class F4:
         mons, active = self.mons, self.active
         H = mons[h][0]
         He = H & eall
+        Hg, shift, fill = He | eg, P.ebits - 1, (1 << P.ebits) - 1
         cands = []
         for i in range(h):
             if active[i]:
-                li = mons[i][0]
-                Le = lcm_e(li, H)
-                cands.append((Le, i, Le == (li & eall) + He))
+                ei = mons[i][0] & eall
+                sel = (((Hg - ei) & eg) >> shift) * fill  # lcm_e inline: the fields where H >= l_i
+                Le = (He & sel) | (ei & ~sel)
+                cands.append((Le, i, Le == ei + He))
         # criterion M: drop (i,h) if another new pair's lcm properly divides its lcm;
         # criterion F: among equal lcms keep one, a coprime one if there is one.  In increasing
         # order of the exponent fields (lexicographic, so divisors come first) it suffices to
