@@ -30,6 +30,7 @@ from typing import Sequence
 
 import flint
 
+from .buchberger import TooLong
 from .f4_rows import LAYOUT, CodedRow, Flat, Packed, Plan, compiled
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
@@ -39,6 +40,7 @@ Row = tuple[list[int], list[int]]  # (packed monomials, decreasing; coefficients
 
 
 FULL_TRACE_WORK = 1_000_000  # matrix entries up to which a trace keeps every row (memory)
+DENSE_PER_ENTRY = 1250  # a budget of n entries allows 1250 n for the dense reduction's cost bound
 
 
 class PackingOverflow(Exception):
@@ -52,7 +54,8 @@ class F4:
     leading coefficient; zero coefficients may occur (they keep the shape prime-independent).
     """
 
-    def __init__(self, polys: Sequence[Row], packing: Packing, p: int, record: bool = False) -> None:
+    def __init__(self, polys: Sequence[Row], packing: Packing, p: int, record: bool = False,
+                 budget: float = float("inf")) -> None:
         self.P = packing
         self.p = p
         self.vec = Vectors(p)
@@ -68,6 +71,10 @@ class F4:
         self.packed = Packed(packing) if compiled(p) and LAYOUT is not None else None
         self._plan = None  # the last matrix's rows flat (compiled layout, recording)
         self.work = 0  # matrix entries handled, a measure of the size of the computation
+        # TooLong once a matrix takes the work past ``budget``, or the dense reduction's cost bound
+        # (entries times non-pivot columns, summed over the matrices) past DENSE_PER_ENTRY times it
+        self.budget = budget
+        self.dense = 0
         for ms, cs in polys:
             k = self._add(ms, cs, is_basis=False)
             key = packing.weighted_degree(ms[0]) if packing.graded else self.tdeg[k]
@@ -232,7 +239,11 @@ class F4:
         and the non-pivot monomials (both increasing), and each column's code (pivot ``j`` >= 0,
         non-pivot slot ``s`` as ``-1 - s``)."""
         rowmons, nonpivot = self._symbolic(crow_specs, pivots)
-        self.work += sum(map(len, rowmons.values()))
+        work = sum(map(len, rowmons.values()))
+        self.work += work
+        self.dense += work * len(nonpivot)
+        if self.work > self.budget or self.dense > DENSE_PER_ENTRY * self.budget:
+            raise TooLong
         pivcols = sorted(pivots)
         nonpivot.sort()
         where = dict(zip(pivcols, range(len(pivcols))))
@@ -303,6 +314,9 @@ class F4:
             raise PackingOverflow
         pivcols, nonpivot, redk, flat, work = out
         self.work += work
+        self.dense += work * len(nonpivot)
+        if self.work > self.budget or self.dense > DENSE_PER_ENTRY * self.budget:
+            raise TooLong
         K = len(pivcols)
         if want:
             where = dict(zip(pivcols, range(K)))
@@ -461,15 +475,16 @@ def initial_degree(gens: Sequence) -> int:
     return bound
 
 
-def f4_modp(gens: Sequence, ring) -> list[dict]:
-    """The reduced Gröbner basis over Z/p by F4, as ``{exponent: coefficient}`` dicts."""
+def f4_modp(gens: Sequence, ring, budget: float = float("inf")) -> list[dict]:
+    """The reduced Gröbner basis over Z/p by F4, as ``{exponent: coefficient}`` dicts;
+    :class:`~.buchberger.TooLong` once its matrices have more than ``budget`` entries."""
     p = ring.field.characteristic
     maxdeg = initial_degree(gens)
     while True:
         P = Packing(ring.order, maxdeg)
         rows = pack_polys(gens, P, int)
         try:
-            basis = F4([r for r in rows if r[0]], P, p).run()
+            basis = F4([r for r in rows if r[0]], P, p, budget=budget).run()
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
