@@ -392,6 +392,7 @@ class F4:
                 self.trace.full = False
                 for st in self.trace.steps:
                     st.full = None
+                    st.plans.pop("full", None)
             self.trace.steps.append(step)
         for slots, vals in new:
             k = self._add([nonpivot[s] for s in slots], vals, True, d)

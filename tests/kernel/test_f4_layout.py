@@ -116,3 +116,13 @@ def test_gather_checks_the_rows():
         f4_rows.GATHER([[5, 6], [8]], rk, start, off)  # row 0 is one term short
     with pytest.raises(TypeError):
         f4_rows.GATHER([[5, 6, 7], ["x"]], rk, start, off)
+
+
+def test_a_trace_too_large_to_keep_lets_its_full_layouts_go(monkeypatch):
+    from mech.kernel import f4 as f4_module
+    monkeypatch.setattr(f4_module, "FULL_TRACE_WORK", 2000)
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)], GF(P))
+    fast = engines(cyclic(R), R, 63, record=True)[0]
+    fast.run()
+    assert not fast.trace.full
+    assert all(st.full is None and "full" not in st.plans for st in fast.trace.steps)
