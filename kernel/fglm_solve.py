@@ -25,7 +25,9 @@ MAX_PRIMES = 400  # of about 62 bits: answers up to ~12000 bits per entry
 DIRECT = 0.25
 """Systems whose dense worst case (:func:`direct_seconds`) is below this many seconds go to
 flint's ``fmpq_mat.solve`` directly (faster than the multimodular loop on large answers:
-katsura-5 in ``lp``, D = 32 with 2700-bit entries, 11 ms against 35 ms)."""
+katsura-5 in ``lp``, D = 32 with 2700-bit entries, 11 ms against 35 ms).  That is one C call:
+entries far above 24 bits make it longer before an interrupt is seen (a script's time limit
+still ends it through ``mech/watcher.py``)."""
 
 
 def direct_seconds(D: int, L: int) -> float:
