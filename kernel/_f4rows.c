@@ -327,8 +327,55 @@ done:
     return result;
 }
 
+/* gather(coefs, rk, rstart, off) -> val: the coefficients of the recorded rows of a matrix
+ * for another prime, flat (uint64 bytes): row r is coefs[rk[r]][rstart[r]:], whose length
+ * must be off[r+1] - off[r] (kernel/f4_rows.Plan). */
+static PyObject *f4_gather(PyObject *self, PyObject *args)
+{
+    PyObject *coefs, *out = NULL;
+    Py_buffer rk, rstart, off;
+    if (!PyArg_ParseTuple(args, "O!y*y*y*", &PyList_Type, &coefs, &rk, &rstart, &off))
+        return NULL;
+    Py_ssize_t R = rk.len / (Py_ssize_t)sizeof(int32_t);
+    const int32_t *pk = rk.buf, *ps = rstart.buf;
+    const int64_t *po = off.buf;
+    if (rstart.len != rk.len || off.len != (R + 1) * (Py_ssize_t)sizeof(int64_t) || po[0] != 0) {
+        PyErr_SetString(PyExc_ValueError, "f4 gather: bad arguments");
+        goto done;
+    }
+    out = PyBytes_FromStringAndSize(NULL, (Py_ssize_t)(po[R] * (int64_t)sizeof(uint64_t)));
+    if (!out)
+        goto done;
+    uint64_t *val = (uint64_t *)PyBytes_AS_STRING(out);
+    for (Py_ssize_t r = 0; r < R; r++) {
+        PyObject *cs = pk[r] >= 0 && pk[r] < PyList_GET_SIZE(coefs) ? PyList_GET_ITEM(coefs, pk[r]) : NULL;
+        if (!cs || !PyList_Check(cs) || ps[r] < 0 || PyList_GET_SIZE(cs) - ps[r] != po[r + 1] - po[r]) {
+            PyErr_SetString(PyExc_ValueError, "f4 gather: a row does not fit its polynomial");
+            Py_CLEAR(out);
+            goto done;
+        }
+        for (Py_ssize_t t = ps[r]; t < PyList_GET_SIZE(cs); t++) {
+            uint64_t v = PyLong_AsUnsignedLongLong(PyList_GET_ITEM(cs, t));
+            if (v == (uint64_t)-1 && PyErr_Occurred()) {
+                Py_CLEAR(out);
+                goto done;
+            }
+            *val++ = v;
+        }
+    }
+done:
+    PyBuffer_Release(&rk);
+    PyBuffer_Release(&rstart);
+    PyBuffer_Release(&off);
+    return out;
+}
+
+PyObject *f4_layout(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
+
 static PyMethodDef methods[] = {
     {"reduce", f4_reduce, METH_VARARGS, "Reduce one F4 matrix modulo p (see the module source)."},
+    {"gather", f4_gather, METH_VARARGS, "The coefficients of recorded rows for another prime (see the source)."},
+    {"layout", f4_layout, METH_VARARGS, "F4's symbolic preprocessing and matrix layout (see kernel/_f4sym.c)."},
     {NULL, NULL, 0, NULL}
 };
 

@@ -14,9 +14,10 @@ orderings (``is_graded``) over Z/p, and over QQ modular F4, except for systems t
 its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot verify a basis
 (then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
 (:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations), then a ``dp`` basis
-(kept in the cache) and from it FGLM for zero-dimensional ideals, the Hilbert-driven algorithm
-for the others (F4's degree-by-degree matrices grow far past these on such orderings);
-Buchberger over other fields.  Local orderings: Mora within a :class:`~.mora.Budget`, then
+(kept in the cache) and from it FGLM for zero-dimensional ideals; for the others, over Z/p and
+a lex ordering F4 on that ordering within :data:`F4_BUDGET` (its matrices can grow far past
+the Hilbert-driven algorithm's work), then the Hilbert-driven algorithm; Buchberger over other
+fields.  Local orderings: Mora within a :class:`~.mora.Budget`, then
 Lazard.
 
 :func:`using_engine` sets the default for a dynamic extent (a context variable); it applies to
@@ -53,7 +54,8 @@ Run = Callable[[list[Poly], PolyRing], list[Terms]]
 
 AUTO = "auto"
 AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p; block and lex orderings: "
-                "Buchberger if small, else FGLM or Hilbert-driven from a dp basis; local orderings: Mora, then Lazard")
+                "Buchberger if small, else from a dp basis FGLM (zero-dimensional ideals), F4 (lex over Z/p) or Hilbert-driven; "
+                "local orderings: Mora, then Lazard")
 
 SMALL_WORK = 600
 """Below this much work (matrix entries) in the first modular run, ``auto`` leaves a system over
@@ -68,6 +70,16 @@ SMALL_BUCHBERGER = 5000
 ideals) or the Hilbert-driven algorithm.  Measured on benchmarks/cases.py: a budget of 20000
 wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and katsura-5 in (dp(3),dp(3)) before
 FGLM (1.3-3x slower); 2000 sent the four-bar curve to the Hilbert-driven algorithm (5x slower)."""
+
+
+F4_BUDGET = 4_000_000
+"""Over Z/p, ``auto`` computes a positive-dimensional ideal's basis for a lexicographic ordering by
+F4 on that ordering while its matrices stay within this many entries and their dense reduction
+within 1250 times as many operations (about a second; :data:`.f4.DENSE_PER_ENTRY`), then by the
+Hilbert-driven algorithm.  F4 took Singular's rcyclic-13 in lp (13 variables, 200k
+entries) in 0.1 s where the Hilbert-driven Buchberger took more than 30 s; on zero-dimensional
+ideals FGLM goes first (F4 in lp needed minutes for katsura-5).  Block orderings stay with the
+Hilbert-driven algorithm (faster on benchmarks/cases.py's elimination)."""
 
 
 def field_kind(field: Field) -> str | None:
@@ -293,6 +305,11 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
         try:
             return _finish(_convert(basis, ring), ring, True)
         except NotZeroDimensional:
+            if kind == "Z/p" and all(b.kind == "lp" for b in ring.order.blocks):
+                try:
+                    return _finish(f4_modp(gens, ring, F4_BUDGET), ring, True)
+                except TooLong:
+                    pass
             return _finish(hilbert_driven(gens, ring, _dp_auto), ring, False)
         except ModularFailure:
             pass

@@ -30,7 +30,8 @@ from typing import Sequence
 
 import flint
 
-from .f4_rows import CodedRow, Flat, compiled
+from .buchberger import TooLong
+from .f4_rows import LAYOUT, CodedRow, Flat, Packed, Plan, compiled
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing
@@ -39,6 +40,7 @@ Row = tuple[list[int], list[int]]  # (packed monomials, decreasing; coefficients
 
 
 FULL_TRACE_WORK = 1_000_000  # matrix entries up to which a trace keeps every row (memory)
+DENSE_PER_ENTRY = 1250  # a budget of n entries allows 1250 n for the dense reduction's cost bound
 
 
 class PackingOverflow(Exception):
@@ -52,7 +54,8 @@ class F4:
     leading coefficient; zero coefficients may occur (they keep the shape prime-independent).
     """
 
-    def __init__(self, polys: Sequence[Row], packing: Packing, p: int, record: bool = False) -> None:
+    def __init__(self, polys: Sequence[Row], packing: Packing, p: int, record: bool = False,
+                 budget: float = float("inf")) -> None:
         self.P = packing
         self.p = p
         self.vec = Vectors(p)
@@ -65,7 +68,13 @@ class F4:
         self.pairs: list[tuple[int, int, int, int]] = []  # (sugar, lcm, i, j); j < 0: an input row
         self.divisor: dict[int, int] = {}  # monomial -> reducer, or -1 - (basis size scanned)
         self.trace = Trace(len(polys)) if record else None
+        self.packed = Packed(packing) if compiled(p) and LAYOUT is not None else None
+        self._plan = None  # the last matrix's rows flat (compiled layout, recording)
         self.work = 0  # matrix entries handled, a measure of the size of the computation
+        # TooLong once a matrix takes the work past ``budget``, or the dense reduction's cost bound
+        # (entries times non-pivot columns, summed over the matrices) past DENSE_PER_ENTRY times it
+        self.budget = budget
+        self.dense = 0
         for ms, cs in polys:
             k = self._add(ms, cs, is_basis=False)
             key = packing.weighted_degree(ms[0]) if packing.graded else self.tdeg[k]
@@ -94,12 +103,14 @@ class F4:
         mons, active = self.mons, self.active
         H = mons[h][0]
         He = H & eall
+        Hg, shift, fill = He | eg, P.ebits - 1, (1 << P.ebits) - 1
         cands = []
         for i in range(h):
             if active[i]:
-                li = mons[i][0]
-                Le = lcm_e(li, H)
-                cands.append((Le, i, Le == (li & eall) + He))
+                ei = mons[i][0] & eall
+                sel = (((Hg - ei) & eg) >> shift) * fill  # lcm_e inline: the fields where H >= l_i
+                Le = (He & sel) | (ei & ~sel)
+                cands.append((Le, i, Le == ei + He))
         # criterion M: drop (i,h) if another new pair's lcm properly divides its lcm;
         # criterion F: among equal lcms keep one, a coprime one if there is one.  In increasing
         # order of the exponent fields (lexicographic, so divisors come first) it suffices to
@@ -228,7 +239,11 @@ class F4:
         and the non-pivot monomials (both increasing), and each column's code (pivot ``j`` >= 0,
         non-pivot slot ``s`` as ``-1 - s``)."""
         rowmons, nonpivot = self._symbolic(crow_specs, pivots)
-        self.work += sum(map(len, rowmons.values()))
+        work = sum(map(len, rowmons.values()))
+        self.work += work
+        self.dense += work * len(nonpivot)
+        if self.work > self.budget or self.dense > DENSE_PER_ENTRY * self.budget:
+            raise TooLong
         pivcols = sorted(pivots)
         nonpivot.sort()
         where = dict(zip(pivcols, range(len(pivcols))))
@@ -262,6 +277,8 @@ class F4:
         the non-pivot monomials, the kernel's ``(used, E, W)`` (``W``: the reduced tails of the
         reducers with leading monomials ``want``) and, when recording, the rows as
         :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
+        if self.packed is not None:
+            return self._matrix_packed(crow_specs, pivots, want, stop)
         rowmons, pivcols, nonpivot, where = self._layout(crow_specs, pivots)
         K, m = len(pivcols), len(nonpivot)
         coefs, get = self.coefs, where.__getitem__
@@ -284,6 +301,35 @@ class F4:
             recorded = (recorded[:K], recorded[K:])
         out = flat.reduce(self.p, m, K, [where[x] for x in want], stop)
         return pivcols, nonpivot, out, recorded
+
+    def _matrix_packed(self, crow_specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]],
+                       want: Sequence[int], stop: bool):
+        """:meth:`_matrix_compiled` with the symbolic preprocessing compiled too
+        (:class:`~.f4_rows.Packed`); the reducer of a monomial is the first active element, by
+        increasing length, whose leading monomial divides it."""
+        mons, active = self.mons, self.active
+        reducers = sorted((k for k in range(len(mons)) if active[k]), key=lambda k: len(mons[k]))
+        out = self.packed.layout(mons, self.coefs, self.tdeg, reducers, crow_specs, pivots)
+        if out is None:
+            raise PackingOverflow
+        pivcols, nonpivot, redk, flat, work = out
+        self.work += work
+        self.dense += work * len(nonpivot)
+        if self.work > self.budget or self.dense > DENSE_PER_ENTRY * self.budget:
+            raise TooLong
+        K = len(pivcols)
+        if want:
+            where = dict(zip(pivcols, range(K)))
+            want = [where[x] for x in want]
+        result = flat.reduce(self.p, len(nonpivot), K, want, stop)
+        recorded = None
+        if self.trace is not None:
+            off, col = flat.off, flat.col  # rows keep array slices of the column codes
+            rows = [CodedRow(k, 1, col[off[j]:off[j + 1]]) for j, k in enumerate(redk)]
+            rows += [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]]) for i, (k, _) in enumerate(crow_specs)]
+            recorded = (rows[:K], rows[K:])
+            self._plan = Plan.of_flat(flat, redk + [k for k, _ in crow_specs], [1] * K + [0] * len(crow_specs))
+        return pivcols, nonpivot, result, recorded
 
     def _record(self, K: int, m: int, red_specs: list[RowSpec], rows: list[tuple[RowSpec, int]],
                 new: list[list[int]], roots: Sequence[int] = ()) -> Step:
@@ -340,10 +386,13 @@ class F4:
             step = self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new])
             if self.trace.full and self.work <= FULL_TRACE_WORK:  # every row, for a full replay
                 step.full = (red_specs, c_specs, used)
+                if self._plan is not None:  # the rows as the kernel reduced them, for full replays
+                    step.plans["full"] = self._plan
             elif self.trace.full:  # too large to keep: no full replay, the rows are let go
                 self.trace.full = False
                 for st in self.trace.steps:
                     st.full = None
+                    st.plans.pop("full", None)
             self.trace.steps.append(step)
         for slots, vals in new:
             k = self._add([nonpivot[s] for s in slots], vals, True, d)
@@ -427,15 +476,16 @@ def initial_degree(gens: Sequence) -> int:
     return bound
 
 
-def f4_modp(gens: Sequence, ring) -> list[dict]:
-    """The reduced Gröbner basis over Z/p by F4, as ``{exponent: coefficient}`` dicts."""
+def f4_modp(gens: Sequence, ring, budget: float = float("inf")) -> list[dict]:
+    """The reduced Gröbner basis over Z/p by F4, as ``{exponent: coefficient}`` dicts;
+    :class:`~.buchberger.TooLong` once its matrices have more than ``budget`` entries."""
     p = ring.field.characteristic
     maxdeg = initial_degree(gens)
     while True:
         P = Packing(ring.order, maxdeg)
         rows = pack_polys(gens, P, int)
         try:
-            basis = F4([r for r in rows if r[0]], P, p).run()
+            basis = F4([r for r in rows if r[0]], P, p, budget=budget).run()
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1

@@ -13,9 +13,9 @@ from typing import Sequence
 from .f4_vectors import RowSpec
 
 try:
-    from ._f4rows import reduce as KERNEL  # the kernel's one function
+    from ._f4rows import gather as GATHER, layout as LAYOUT, reduce as KERNEL
 except ImportError:  # no compiler at install: the pure-Python path
-    KERNEL = None
+    KERNEL = LAYOUT = GATHER = None
 
 LIMIT = 1 << 31  # primes the kernel handles (products of two entries fit 62 bits)
 
@@ -37,6 +37,14 @@ class Flat:
         self.col = array("i")
         self.val = array("Q")
 
+    @classmethod
+    def of(cls, K: int, off: bytes, col: bytes, val: bytes) -> "Flat":
+        """The rows as :meth:`Packed.layout` returns them (``K`` reducers by pivot id first)."""
+        flat = cls()
+        flat.ids.extend(range(K))
+        flat.off, flat.col, flat.val = array("q", off), array("i", col), array("Q", val)
+        return flat
+
     def add(self, codes, coefs) -> None:
         """One row: its column codes and coefficients (iterables of equal length)."""
         self.col.extend(codes)
@@ -51,6 +59,42 @@ class Flat:
                              array("i", want), stop)
 
 
+class Packed:
+    """F4's basis elements as the compiled symbolic preprocessing (``kernel/_f4sym.c``) takes
+    them: per element its monomials as ``nw`` little-endian words and its coefficients as
+    64-bit words (bytes), converted once per element."""
+
+    def __init__(self, P) -> None:
+        self.nw = -(-P.bits // 64)
+        self.nb = 8 * self.nw
+        self.guard = P.guard.to_bytes(self.nb, "little")
+        self.fields = (P.dshift, P.ebits, P.maxdeg)
+        self.mons: list[bytes] = []
+        self.coefs: list[bytes] = []
+
+    def _sync(self, mons: list[list[int]], coefs: list[list[int]]) -> None:
+        nb = self.nb
+        for k in range(len(self.mons), len(mons)):
+            self.mons.append(b"".join([int(x).to_bytes(nb, "little") for x in mons[k]]))
+            self.coefs.append(array("Q", map(int, coefs[k])).tobytes())
+
+    def layout(self, mons: list[list[int]], coefs: list[list[int]], tdeg: list[int], reducers: list[int],
+               specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]]):
+        """Symbolic preprocessing and the matrix's rows (see ``kernel/_f4sym.c``):
+        ``(pivcols, nonpivot, redk, flat, work)``, or None when a row exceeds the packing."""
+        self._sync(mons, coefs)
+        nb = self.nb
+        dshift, ebits, maxdeg = self.fields
+        out = LAYOUT(self.nw, self.guard, dshift, ebits, maxdeg, self.mons, tdeg, self.coefs,
+                     array("i", reducers), [(k, int(u).to_bytes(nb, "little")) for k, u in specs],
+                     [(int(x).to_bytes(nb, "little"), k, int(u).to_bytes(nb, "little"))
+                      for x, (k, u) in pivots.items()])
+        if out is None:
+            return None
+        pivcols, nonpivot, redk, off, col, val, work = out
+        return pivcols, nonpivot, redk, Flat.of(len(pivcols), off, col, val), work
+
+
 class CodedRow:
     """A recorded row as the kernel takes it: the terms of ``x^u * poly[k]`` from position
     ``start`` on (1 for a reducer: its leading term is its pivot) with their column codes.
@@ -58,7 +102,7 @@ class CodedRow:
 
     __slots__ = ("k", "start", "codes", "_spec")
 
-    def __init__(self, k: int, start: int, codes: list[int]) -> None:
+    def __init__(self, k: int, start: int, codes: Sequence[int]) -> None:
         self.k, self.start, self.codes, self._spec = k, start, codes, None
 
     @property
@@ -85,10 +129,20 @@ def as_spec(row: RowSpec | CodedRow) -> RowSpec:
     return row.spec() if isinstance(row, CodedRow) else row
 
 
-def replay_step(reducers, rows, step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
+def replay_step(reducers, rows, step, coefs: list[list[int]], p: int, want: Sequence[int] = (), key: str = "rows"):
     """The kernel's ``(used, E, W)`` for recorded rows (reducers as ``(pivot id, row)``,
     pair rows) of a matrix shaped as ``step`` (:class:`~.f4_trace.Step`), with the
-    coefficients of another prime."""
+    coefficients of another prime.  Rows recorded as :class:`CodedRow` are laid out once
+    (a :class:`Plan` kept in ``step.plans[key]``); a replay then only gathers coefficients."""
+    plan = step.plans.get(key)
+    if plan is None and GATHER is not None and all(isinstance(r, CodedRow) for r in rows) \
+            and all(isinstance(r, CodedRow) for _, r in reducers):
+        plan = step.plans[key] = Plan([j for j, _ in reducers], [r for _, r in reducers] + list(rows))
+    if plan is not None:
+        try:
+            return plan.reduce(coefs, p, step.m, step.K, want)
+        except TypeError:  # coefficients that are not Python ints
+            pass
     flat = Flat()
     for j, row in reducers:
         flat.ids.append(j)
@@ -96,6 +150,38 @@ def replay_step(reducers, rows, step, coefs: list[list[int]], p: int, want: Sequ
     for row in rows:
         _add_recorded(flat, row, coefs)
     return flat.reduce(p, step.m, step.K, want)
+
+
+class Plan:
+    """Recorded rows of a matrix flat for the kernel, without coefficients: column codes,
+    offsets, and per row its polynomial and first term; :meth:`reduce` gathers the
+    coefficients of a prime (in C) and reduces."""
+
+    __slots__ = ("ids", "off", "col", "rk", "rstart")
+
+    def __init__(self, ids: list[int], rows: list[CodedRow]) -> None:
+        self.ids = array("i", ids)
+        self.off, self.col = array("q", [0]), array("i")
+        self.rk, self.rstart = array("i"), array("i")
+        for row in rows:
+            self.col.extend(row.codes)
+            self.off.append(len(self.col))
+            self.rk.append(row.k)
+            self.rstart.append(row.start)
+
+    @classmethod
+    def of_flat(cls, flat: Flat, rk: list[int], rstart: list[int]) -> "Plan":
+        """The plan of a matrix's rows as they were reduced (``flat``; polynomial and first
+        term of each row)."""
+        plan = cls.__new__(cls)
+        plan.ids, plan.off, plan.col = flat.ids, flat.off, flat.col
+        plan.rk, plan.rstart = array("i", rk), array("i", rstart)
+        return plan
+
+    def reduce(self, coefs: list[list[int]], p: int, m: int, K: int, want: Sequence[int] = ()):
+        """The kernel's ``(used, E, W)`` with the coefficients ``coefs`` (by polynomial)."""
+        val = GATHER(coefs, self.rk, self.rstart, self.off)
+        return KERNEL(p, m, K, len(self.ids), self.ids, self.off, self.col, val, array("i", want), False)
 
 
 def _add_recorded(flat: Flat, row: RowSpec | CodedRow, coefs: list[list[int]]) -> None:

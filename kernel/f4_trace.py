@@ -33,6 +33,7 @@ class Step:
     # every reducer (by pivot id), every pair row and the rows that raised the rank with their
     # pivot slots, for a full replay (None: not kept)
     full: tuple[list, list, list[tuple[int, int]]] | None = None
+    plans: dict = field(default_factory=dict)  # the rows laid out for replays (f4_rows.Plan)
 
 
 @dataclass
@@ -116,7 +117,7 @@ def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[i
     coefs: list[list[int]] = [list(c) for c in polys]
     for st in trace.steps:
         reducers, rows, used_then = st.full
-        used, E, _ = replay_step(list(enumerate(reducers)), rows, st, coefs, p)
+        used, E, _ = replay_step(list(enumerate(reducers)), rows, st, coefs, p, key="full")
         if used != used_then:
             raise TraceMismatch("a matrix reduced differently")
         got = {s0: (slots, vals) for s0, slots, vals in E}

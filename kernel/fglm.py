@@ -29,10 +29,10 @@ from typing import Any, Sequence
 
 import flint
 
-from . import offload_exact
 from .errors import NotSupported
 from .f4 import F4, PackingOverflow
 from .f4_vectors import Vectors
+from .fglm_solve import solve_qq
 from .hilbert import kbase
 from .monomials import Packing
 from .order import Exp, MonomialOrder
@@ -391,7 +391,7 @@ def _exact(conv: Conversion, border: dict[Exp, list[Any]], B: list[Exp], target:
     V = flint.fmpq_mat(D, D, [cols[c][r] for r in range(D) for c in range(D)])
     N = flint.fmpq_mat(D, L, [rhs[c][r] for r in range(D) for c in range(L)])
     try:
-        A = offload_exact.solve(V, N)  # one long C call: in a child when large (Ctrl-C, limits)
+        A = solve_qq(V, N)  # multimodular, in the process
     except ZeroDivisionError:
         return None
     tkey = target.key

@@ -1,6 +1,6 @@
 """Long single python-flint calls of exact linear algebra and univariate polynomials
-(``mech.kernel.offload_exact``): FGLM's linear solve over Q, characteristic polynomials and the
-squarefree decompositions and factorizations of real-root isolation go to a child when their
+(``mech.kernel.offload_exact``): FGLM's linear solve over Q (when its multimodular solve gives up),
+characteristic polynomials and the squarefree decompositions and factorizations of real-root isolation go to a child when their
 estimate is long, with the same results, and Ctrl-C stops them there."""
 import _thread
 import os
@@ -11,7 +11,7 @@ import time
 import flint
 import pytest
 
-from mech.kernel import QQ, Block, offload, offload_exact
+from mech.kernel import QQ, Block, fglm_solve, offload, offload_exact
 from mech.kernel.engines import standard_basis
 from mech.kernel.real_roots import isolate_real_roots
 
@@ -46,6 +46,10 @@ def test_results_through_a_child_equal_the_process(forking):
 
 
 def test_fglm_and_real_roots_use_them(forking, monkeypatch):
+    """FGLM's solve runs in the process (kernel/fglm_solve.py) and comes here only when its
+    multimodular loop gives up (forced: no primes)."""
+    monkeypatch.setattr(fglm_solve, "DIRECT", 0.0)
+    monkeypatch.setattr(fglm_solve, "MAX_PRIMES", 0)
     calls = []
     for name in ("solve", "factor_squarefree"):
         real = getattr(offload_exact, name)

@@ -1,0 +1,469 @@
+/* F4's symbolic preprocessing and matrix layout, compiled (part of the optional extension
+ * _f4rows; kernel/f4.py's F4._layout and F4._matrix_compiled do the same in Python).
+ *
+ * layout(nw, guard, dshift, ebits, maxdeg, mons, tdeg, coefs, reducers, specs, pivots)
+ *   -> (pivcols, nonpivot, redk, off, col, val, work), or None when a row's degree exceeds maxdeg
+ *
+ * Monomials are packed as in kernel/monomials.py, here as nw little-endian 64-bit words
+ * (``int.to_bytes(8 nw, "little")``); guard holds the guard bits, the total degree is the
+ * field of ebits bits at bit dshift.  mons[k] and coefs[k] (bytes): the terms of basis element
+ * k, decreasing, and their coefficients (uint64); tdeg[k] its total degree; reducers (int32):
+ * the basis elements to search, in order, for a divisor of a monomial; specs: the pair rows
+ * (k, u) (u: packed cofactor, bytes); pivots: the pair rows chosen as reducers (L, k, u) of
+ * their leading monomial L.  Every monomial of a row x^u * poly[k] that is not a pivot yet
+ * gets as reducer the first element of reducers whose leading monomial divides it (its row
+ * joins the matrix), else it is a non-pivot column.
+ * Returns the pivot columns and the non-pivot monomials (Python ints, increasing), redk (the
+ * basis element of each reducer by pivot id) and the rows flat as kernel/f4_rows.Flat holds
+ * them (bytes: off int64, col int32, val uint64): the reducers by pivot id without their
+ * leading term, then the pair rows in the order given; work: the number of terms of the
+ * distinct rows.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* -- a hash table of fixed-length word keys, numbered in insertion order -------------------- */
+typedef struct {
+    int kw;
+    uint64_t *keys;
+    Py_ssize_t n, cap;
+    int32_t *slot;
+    size_t mask;
+} Keys;
+
+static uint64_t hash_words(const uint64_t *k, int kw)
+{
+    uint64_t h = 0x9E3779B97F4A7C15ULL;
+    for (int i = 0; i < kw; i++) {
+        h ^= k[i];
+        h *= 0xff51afd7ed558ccdULL;
+        h ^= h >> 32;
+    }
+    return h;
+}
+
+static int keys_init(Keys *t, int kw)
+{
+    t->kw = kw;
+    t->n = 0;
+    t->cap = 256;
+    t->mask = 511;
+    t->keys = malloc((size_t)t->cap * kw * sizeof(uint64_t));
+    t->slot = malloc((t->mask + 1) * sizeof(int32_t));
+    if (!t->keys || !t->slot)
+        return -1;
+    memset(t->slot, 0xff, (t->mask + 1) * sizeof(int32_t));
+    return 0;
+}
+
+static void keys_free(Keys *t)
+{
+    free(t->keys);
+    free(t->slot);
+}
+
+static const uint64_t *key_at(const Keys *t, Py_ssize_t i)
+{
+    return t->keys + (size_t)i * t->kw;
+}
+
+/* The number of key, inserted when absent (*fresh then 1); -1 when out of memory. */
+static Py_ssize_t keys_put(Keys *t, const uint64_t *key, int *fresh)
+{
+    int kw = t->kw;
+    size_t h = hash_words(key, kw) & t->mask;
+    for (;;) {
+        int32_t i = t->slot[h];
+        if (i < 0)
+            break;
+        if (!memcmp(key_at(t, i), key, (size_t)kw * sizeof(uint64_t))) {
+            *fresh = 0;
+            return i;
+        }
+        h = (h + 1) & t->mask;
+    }
+    if (t->n == t->cap) {
+        uint64_t *k = realloc(t->keys, (size_t)t->cap * 2 * kw * sizeof(uint64_t));
+        if (!k)
+            return -1;
+        t->keys = k;
+        t->cap *= 2;
+    }
+    memcpy(t->keys + (size_t)t->n * kw, key, (size_t)kw * sizeof(uint64_t));
+    t->slot[h] = (int32_t)t->n;
+    *fresh = 1;
+    Py_ssize_t id = t->n++;
+    if ((size_t)(2 * t->n) > t->mask) {  /* grow and rehash at half load */
+        size_t size = 2 * (t->mask + 1);
+        int32_t *s = malloc(size * sizeof(int32_t));
+        if (!s)
+            return -1;
+        memset(s, 0xff, size * sizeof(int32_t));
+        t->mask = size - 1;
+        for (Py_ssize_t i = 0; i < t->n; i++) {
+            size_t g = hash_words(key_at(t, i), kw) & t->mask;
+            while (s[g] >= 0)
+                g = (g + 1) & t->mask;
+            s[g] = (int32_t)i;
+        }
+        free(t->slot);
+        t->slot = s;
+    }
+    return id;
+}
+
+/* -- packed monomials as words ---------------------------------------------------------------- */
+static void add_words(uint64_t *c, const uint64_t *a, const uint64_t *b, int nw)
+{
+    uint64_t carry = 0;
+    for (int i = 0; i < nw; i++) {
+        uint64_t s = a[i] + carry;
+        uint64_t c1 = s < carry;
+        c[i] = s + b[i];
+        carry = c1 | (c[i] < s);
+    }
+}
+
+static void sub_words(uint64_t *c, const uint64_t *a, const uint64_t *b, int nw)
+{
+    uint64_t borrow = 0;
+    for (int i = 0; i < nw; i++) {
+        uint64_t d = a[i] - b[i];
+        uint64_t b1 = a[i] < b[i];
+        c[i] = d - borrow;
+        borrow = b1 | (d < borrow);
+    }
+}
+
+/* Whether a divides x: ((x | G) - a) & G == G, no field borrowing from the next. */
+static int divides(const uint64_t *a, const uint64_t *x, const uint64_t *G, int nw)
+{
+    uint64_t borrow = 0;
+    for (int i = 0; i < nw; i++) {
+        uint64_t v = x[i] | G[i];
+        uint64_t d = v - a[i];
+        uint64_t b1 = v < a[i];
+        uint64_t e = d - borrow;
+        borrow = b1 | (d < borrow);
+        if ((e & G[i]) != G[i])
+            return 0;
+    }
+    return 1;
+}
+
+static uint64_t field(const uint64_t *w, int shift, int width, int nw)
+{
+    int i = shift >> 6, o = shift & 63;
+    uint64_t v = w[i] >> o;
+    if (o && o + width > 64 && i + 1 < nw)
+        v |= w[i + 1] << (64 - o);
+    return v & ((1ULL << width) - 1);
+}
+
+static int cmp_nw;
+static const uint64_t *cmp_base;
+
+static int cmp_mono(const void *a, const void *b)
+{
+    const uint64_t *x = cmp_base + (size_t)*(const int32_t *)a * cmp_nw;
+    const uint64_t *y = cmp_base + (size_t)*(const int32_t *)b * cmp_nw;
+    for (int i = cmp_nw - 1; i >= 0; i--)
+        if (x[i] != y[i])
+            return x[i] < y[i] ? -1 : 1;
+    return 0;
+}
+
+typedef struct {
+    int nw;
+    Py_ssize_t nbasis;
+    const uint64_t **mons;
+    const uint64_t **coefs;
+    Py_ssize_t *len;
+} Basis;
+
+/* Grow an int32 array to hold n entries. */
+static int reserve32(int32_t **a, Py_ssize_t *cap, Py_ssize_t n)
+{
+    if (n <= *cap)
+        return 0;
+    Py_ssize_t c = *cap ? *cap : 256;
+    while (c < n)
+        c *= 2;
+    int32_t *b = realloc(*a, (size_t)c * sizeof(int32_t));
+    if (!b)
+        return -1;
+    *a = b;
+    *cap = c;
+    return 0;
+}
+
+static int reserve64(int64_t **a, Py_ssize_t *cap, Py_ssize_t n)
+{
+    if (n <= *cap)
+        return 0;
+    Py_ssize_t c = *cap ? *cap : 256;
+    while (c < n)
+        c *= 2;
+    int64_t *b = realloc(*a, (size_t)c * sizeof(int64_t));
+    if (!b)
+        return -1;
+    *a = b;
+    *cap = c;
+    return 0;
+}
+
+static int parse_row(PyObject *o, int with_lead, const Basis *B, uint64_t *key, uint64_t *lead)
+{
+    /* (k, u) or (L, k, u): key = u words then k; lead = L */
+    Py_ssize_t n = with_lead ? 3 : 2;
+    if (!PyTuple_Check(o) || PyTuple_GET_SIZE(o) != n)
+        return -1;
+    int nw = B->nw;
+    PyObject *ko = PyTuple_GET_ITEM(o, n - 2), *uo = PyTuple_GET_ITEM(o, n - 1);
+    Py_ssize_t k = PyLong_AsSsize_t(ko);
+    if (k < 0 || k >= B->nbasis || !PyBytes_Check(uo) || PyBytes_GET_SIZE(uo) != 8 * nw)
+        return -1;
+    memcpy(key, PyBytes_AS_STRING(uo), 8 * (size_t)nw);
+    key[nw] = (uint64_t)k;
+    if (with_lead) {
+        PyObject *lo = PyTuple_GET_ITEM(o, 0);
+        if (!PyBytes_Check(lo) || PyBytes_GET_SIZE(lo) != 8 * nw)
+            return -1;
+        memcpy(lead, PyBytes_AS_STRING(lo), 8 * (size_t)nw);
+    }
+    return 0;
+}
+
+PyObject *f4_layout(PyObject *self, PyObject *args)
+{
+    int nw, dshift, ebits;
+    long long maxdeg;
+    Py_buffer guard, reducers;
+    PyObject *mons_o, *tdeg_o, *coefs_o, *specs_o, *pivots_o;
+    if (!PyArg_ParseTuple(args, "iy*iiLO!O!O!y*O!O!", &nw, &guard, &dshift, &ebits, &maxdeg,
+                          &PyList_Type, &mons_o, &PyList_Type, &tdeg_o, &PyList_Type, &coefs_o,
+                          &reducers, &PyList_Type, &specs_o, &PyList_Type, &pivots_o))
+        return NULL;
+    PyObject *result = NULL;
+    Basis B = {nw, PyList_GET_SIZE(mons_o), NULL, NULL, NULL};
+    Keys rows = {0}, mono = {0};
+    int32_t *red = NULL, *midx = NULL, *crow = NULL, *order = NULL, *code = NULL, *col = NULL;
+    int64_t *rowoff = NULL, *off = NULL;
+    long long *tdeg = NULL;
+    uint64_t *val = NULL, *leads = NULL, *tmp = NULL;
+    Py_ssize_t redcap = 0, midxcap = 0, rowoffcap = 0, nmidx = 0;
+    Py_ssize_t nspec = PyList_GET_SIZE(specs_o), npiv0 = PyList_GET_SIZE(pivots_o);
+    Py_ssize_t nred = reducers.len / (Py_ssize_t)sizeof(int32_t);
+    const int32_t *rk = reducers.buf;
+    const uint64_t *G = guard.buf;
+
+    if (nw < 1 || nw > 64 || guard.len != 8 * nw || ebits < 1 || ebits > 62 || dshift < 0 || dshift + ebits > 64 * nw
+        || PyList_GET_SIZE(tdeg_o) != B.nbasis || PyList_GET_SIZE(coefs_o) != B.nbasis)
+        goto bad;
+    B.mons = malloc((size_t)(B.nbasis + 1) * sizeof(uint64_t *));
+    B.coefs = malloc((size_t)(B.nbasis + 1) * sizeof(uint64_t *));
+    B.len = malloc((size_t)(B.nbasis + 1) * sizeof(Py_ssize_t));
+    tdeg = malloc((size_t)(B.nbasis + 1) * sizeof(long long));
+    leads = malloc((size_t)(nred + 1) * nw * sizeof(uint64_t));
+    tmp = malloc(3 * ((size_t)nw + 1) * sizeof(uint64_t));
+    crow = malloc((size_t)(nspec + 1) * sizeof(int32_t));
+    if (!B.mons || !B.coefs || !B.len || !tdeg || !leads || !tmp || !crow || keys_init(&rows, nw + 1) || keys_init(&mono, nw))
+        goto nomem;
+    for (Py_ssize_t k = 0; k < B.nbasis; k++) {
+        PyObject *m = PyList_GET_ITEM(mons_o, k), *c = PyList_GET_ITEM(coefs_o, k);
+        if (!PyBytes_Check(m) || !PyBytes_Check(c) || PyBytes_GET_SIZE(m) != PyBytes_GET_SIZE(c) * nw
+            || PyBytes_GET_SIZE(c) % 8)
+            goto bad;
+        B.mons[k] = (const uint64_t *)PyBytes_AS_STRING(m);
+        B.coefs[k] = (const uint64_t *)PyBytes_AS_STRING(c);
+        B.len[k] = PyBytes_GET_SIZE(c) / 8;
+        tdeg[k] = PyLong_AsLongLong(PyList_GET_ITEM(tdeg_o, k));
+        if (tdeg[k] == -1 && PyErr_Occurred())
+            goto done;
+    }
+    for (Py_ssize_t i = 0; i < nred; i++) {
+        if (rk[i] < 0 || rk[i] >= B.nbasis || B.len[rk[i]] == 0)
+            goto bad;
+        memcpy(leads + (size_t)i * nw, B.mons[rk[i]], 8 * (size_t)nw);
+    }
+    uint64_t *key = tmp, *x = tmp + nw + 1, *lead = tmp + 2 * (nw + 1);
+    int fresh;
+    /* the pair rows chosen as reducers, then the other pair rows */
+    for (Py_ssize_t i = 0; i < npiv0; i++) {
+        if (parse_row(PyList_GET_ITEM(pivots_o, i), 1, &B, key, lead))
+            goto bad;
+        Py_ssize_t r = keys_put(&rows, key, &fresh);
+        Py_ssize_t xi = keys_put(&mono, lead, &fresh);
+        if (r < 0 || xi < 0 || reserve32(&red, &redcap, mono.n))
+            goto nomem;
+        red[xi] = (int32_t)r;
+    }
+    for (Py_ssize_t i = 0; i < nspec; i++) {
+        if (parse_row(PyList_GET_ITEM(specs_o, i), 0, &B, key, lead))
+            goto bad;
+        Py_ssize_t r = keys_put(&rows, key, &fresh);
+        if (r < 0)
+            goto nomem;
+        crow[i] = (int32_t)r;
+    }
+    /* every row's monomials; new rows (reducers) join the end of the list */
+    long long work = 0;
+    Py_ssize_t rowoffn = 0;
+    for (Py_ssize_t r = 0; r < rows.n; r++) {
+        if ((r & 1023) == 1023 && PyErr_CheckSignals())
+            goto done;
+        const uint64_t *u = key_at(&rows, r);
+        Py_ssize_t k = (Py_ssize_t)u[nw], n = B.len[k];
+        if ((long long)field(u, dshift, ebits, nw) + tdeg[k] > maxdeg) {
+            result = Py_None;
+            Py_INCREF(result);
+            goto done;
+        }
+        work += n;
+        if (reserve64(&rowoff, &rowoffcap, r + 2) || reserve32(&midx, &midxcap, nmidx + n))
+            goto nomem;
+        rowoff[r] = nmidx;
+        rowoffn = r + 1;
+        for (Py_ssize_t t = 0; t < n; t++) {
+            add_words(x, u, B.mons[k] + (size_t)t * nw, nw);
+            Py_ssize_t xi = keys_put(&mono, x, &fresh);
+            if (xi < 0 || reserve32(&red, &redcap, mono.n))
+                goto nomem;
+            midx[nmidx++] = (int32_t)xi;
+            if (!fresh)
+                continue;
+            red[xi] = -1;
+            for (Py_ssize_t i = 0; i < nred; i++) {
+                const uint64_t *lm = leads + (size_t)i * nw;
+                if (divides(lm, x, G, nw)) {
+                    sub_words(key, x, lm, nw);
+                    key[nw] = (uint64_t)rk[i];
+                    Py_ssize_t rr = keys_put(&rows, key, &fresh);
+                    if (rr < 0)
+                        goto nomem;
+                    red[xi] = (int32_t)rr;
+                    break;
+                }
+            }
+            u = key_at(&rows, r);  /* the row keys may have moved */
+        }
+    }
+    if (reserve64(&rowoff, &rowoffcap, rowoffn + 1))
+        goto nomem;
+    rowoff[rowoffn] = nmidx;
+    /* columns: pivots and non-pivots, each increasing */
+    Py_ssize_t N = mono.n, K = 0, m = 0;
+    order = malloc((size_t)(N + 1) * sizeof(int32_t));
+    code = malloc((size_t)(N + 1) * sizeof(int32_t));
+    if (!order || !code)
+        goto nomem;
+    for (Py_ssize_t i = 0; i < N; i++)
+        order[i] = (int32_t)i;
+    cmp_nw = nw;
+    cmp_base = mono.keys;
+    qsort(order, (size_t)N, sizeof(int32_t), cmp_mono);
+    PyObject *pivcols = PyList_New(0), *nonpivot = PyList_New(0), *redk = PyList_New(0);
+    result = Py_BuildValue("(NNN)", pivcols, nonpivot, redk);  /* owns the lists */
+    if (!pivcols || !nonpivot || !redk || !result)
+        goto done;
+    int32_t *pivrow = malloc((size_t)(N + 1) * sizeof(int32_t));
+    if (!pivrow)
+        goto nomem;
+    for (Py_ssize_t i = 0; i < N; i++) {
+        Py_ssize_t xi = order[i];
+        PyObject *v = _PyLong_FromByteArray((const unsigned char *)key_at(&mono, xi), 8 * (size_t)nw, 1, 0);
+        if (!v) {
+            free(pivrow);
+            goto fail;
+        }
+        int bad_append;
+        if (red[xi] >= 0) {
+            pivrow[K] = red[xi];
+            code[xi] = (int32_t)K++;
+            bad_append = PyList_Append(pivcols, v);
+        } else {
+            code[xi] = ~(int32_t)m++;
+            bad_append = PyList_Append(nonpivot, v);
+        }
+        Py_DECREF(v);
+        if (bad_append) {
+            free(pivrow);
+            goto fail;
+        }
+    }
+    /* the flat rows: reducers by pivot id (leading term left out), then the pair rows */
+    Py_ssize_t total = 0;
+    for (Py_ssize_t j = 0; j < K; j++)
+        total += rowoff[pivrow[j] + 1] - rowoff[pivrow[j]] - 1;
+    for (Py_ssize_t i = 0; i < nspec; i++)
+        total += rowoff[crow[i] + 1] - rowoff[crow[i]];
+    off = malloc((size_t)(K + nspec + 1) * sizeof(int64_t));
+    col = malloc((size_t)(total + 1) * sizeof(int32_t));
+    val = malloc((size_t)(total + 1) * sizeof(uint64_t));
+    if (!off || !col || !val) {
+        free(pivrow);
+        goto nomem_result;
+    }
+    Py_ssize_t e = 0;
+    off[0] = 0;
+    for (Py_ssize_t q = 0; q < K + nspec; q++) {
+        Py_ssize_t r = q < K ? pivrow[q] : crow[q - K], start = q < K ? 1 : 0;
+        Py_ssize_t k = (Py_ssize_t)key_at(&rows, r)[nw];
+        if (q < K) {
+            PyObject *kv = PyLong_FromSsize_t(k);
+            if (!kv || PyList_Append(redk, kv)) {
+                Py_XDECREF(kv);
+                free(pivrow);
+                goto fail;
+            }
+            Py_DECREF(kv);
+        }
+        const int32_t *mi = midx + rowoff[r];
+        Py_ssize_t n = rowoff[r + 1] - rowoff[r];
+        for (Py_ssize_t t = start; t < n; t++) {
+            col[e] = code[mi[t]];
+            val[e++] = B.coefs[k][t];
+        }
+        off[q + 1] = e;
+    }
+    free(pivrow);
+    PyObject *full = Py_BuildValue("(OOOy#y#y#L)", PyTuple_GET_ITEM(result, 0), PyTuple_GET_ITEM(result, 1),
+                                   PyTuple_GET_ITEM(result, 2), (const char *)off, (Py_ssize_t)((K + nspec + 1) * sizeof(int64_t)),
+                                   (const char *)col, (Py_ssize_t)(e * sizeof(int32_t)),
+                                   (const char *)val, (Py_ssize_t)(e * sizeof(uint64_t)), work);
+    Py_DECREF(result);
+    result = full;
+    goto done;
+bad:
+    PyErr_SetString(PyExc_ValueError, "f4 layout: bad arguments");
+    goto done;
+nomem_result:
+nomem:
+    PyErr_NoMemory();
+fail:
+    Py_CLEAR(result);
+done:
+    PyBuffer_Release(&guard);
+    PyBuffer_Release(&reducers);
+    free(B.mons);
+    free(B.coefs);
+    free(B.len);
+    free(tdeg);
+    free(leads);
+    free(tmp);
+    free(crow);
+    free(red);
+    free(midx);
+    free(rowoff);
+    free(order);
+    free(code);
+    free(off);
+    free(col);
+    free(val);
+    keys_free(&rows);
+    keys_free(&mono);
+    return result;
+}
