@@ -88,8 +88,8 @@ def tjurina(I: Ideal) -> int:
     """
     gens = _simplify(list(I.gens))
     if len(gens) > 1:
-        raise MechRuntimeError("tjurina: only hypersurfaces (one generator) are supported; the "
-                               "Tjurina module of a complete intersection is a module")
+        from .sing_modules import tjurina_ci
+        return tjurina_ci(gens, I.ring)
     f = gens[0] if gens else I.ring.zero()
     return _vdim([g for g in [f] + L.jacobian_ideal(f) if not g.is_zero()], I.ring)
 
