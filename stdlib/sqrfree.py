@@ -1,5 +1,5 @@
-"""Singular's built-ins ``sqrfree`` (a squarefree decomposition, grouped as Singular's factory groups
-it) and ``extgcd`` (the extended Euclidean algorithm for integers and univariate polynomials)."""
+"""Singular's built-in ``sqrfree``: a squarefree decomposition, grouped as Singular's factory groups it
+(the irreducible factors of one multiplicity and one main variable together)."""
 from __future__ import annotations
 
 from typing import Any
@@ -69,70 +69,3 @@ def sqrfree(f: Poly, how: int = 0) -> Any:
     if how == 2:
         return List([Ideal(ring, polys or [ring.const(unit)]), IntVec(mults or [1])])
     return List([Ideal(ring, [ring.const(unit)] + polys), IntVec([1] + mults)])
-
-
-def _int_extgcd(a: int, b: int) -> tuple[int, int, int]:
-    r0, r1, s0, s1, t0, t1 = abs(a), abs(b), 1, 0, 0, 1
-    while r1:
-        q = r0 // r1
-        r0, r1, s0, s1, t0, t1 = r1, r0 - q * r1, s1, s0 - q * s1, t1, t0 - q * t1
-    return r0, s0 * (1 if a >= 0 else -1), t0 * (1 if b >= 0 else -1)
-
-
-def _divmod(f: Poly, g: Poly, v: int) -> tuple[Poly, Poly]:
-    """Division with remainder of polynomials in the variable v alone."""
-    ring = f.ring
-    q, r = ring.zero(), f
-    dg = max(e[v] for e in g.terms)
-    lead = g.terms[tuple(dg if i == v else 0 for i in range(ring.nvars))]
-    while not r.is_zero():
-        dr = max(e[v] for e in r.terms)
-        if dr < dg:
-            break
-        c = r.terms[tuple(dr if i == v else 0 for i in range(ring.nvars))] / lead
-        t = Poly(ring, {tuple(dr - dg if i == v else 0 for i in range(ring.nvars)): c})
-        q, r = q + t, r - t * g
-    return q, r
-
-
-@command("extgcd")
-def extgcd_int(a: int, b: int) -> List:
-    """extgcd(a, b): the list of g = gcd(a, b) and integers s, t with g = s*a + t*b; for univariate
-    polynomials the monic gcd and the cofactors of least degree.
-
-    Example:
-      extgcd(24, 10);
-      → [1]:
-      →    2
-      → [2]:
-      →    -2
-      → [3]:
-      →    5
-      ring r = 0,x,dp;
-      extgcd(x2-1, x2+2x+1);
-      → [1]:
-      →    x+1
-      → [2]:
-      →    1/2
-      → [3]:
-      →    -1/2
-    """
-    return List(list(_int_extgcd(a, b)))
-
-
-@command("extgcd")
-def extgcd_poly(f: Poly, g: Poly) -> List:
-    ring = f.ring
-    used = {i for p in (f, g) for e in p.terms for i, k in enumerate(e) if k}
-    if len(used) > 1:
-        raise MechRuntimeError("extgcd: the polynomials must be univariate (in one and the same variable)")
-    v = used.pop() if used else 0
-    r0, r1, s0, s1, t0, t1 = f, g, ring.one(), ring.zero(), ring.zero(), ring.one()
-    while not r1.is_zero():
-        q, r = _divmod(r0, r1, v)
-        r0, r1, s0, s1, t0, t1 = r1, r, s1, s0 - q * s1, t1, t0 - q * t1
-    if r0.is_zero():
-        return List([r0, s0, t0])
-    c = max(r0.terms.items(), key=lambda kv: kv[0][v])[1]
-    inv = ring.const(ring.field.one / c)
-    return List([r0 * inv, s0 * inv, t0 * inv])
