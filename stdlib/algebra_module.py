@@ -33,6 +33,7 @@ def module_containment(ctx, p: Poly, P: Ideal, M: Ideal, k: int = 0) -> Any:
       LIB "algebra.lib";
       ring r = 0,(x,y),dp;
       module_containment(x3y+xy3, ideal(x2,y2), ideal(1,xy));
+      → // y(2)*z(1)+y(2)*z(2)
       → 1
     """
     base = ctx.basering()

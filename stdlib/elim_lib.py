@@ -156,7 +156,7 @@ def blowup0(ctx, J: Ideal | Poly, C: Ideal, *ambient: Ideal) -> Any:
 
     def up(polys: list[Poly]) -> list[Poly]:
         return [Poly(big, {e + pad: c for e, c in p.terms.items()}) for p in polys]
-    rees = PolyRing(ring.field, [f"x({i + 1})" for i in range(n)] + ["t"], MonomialOrder.simple("dp", n + 1))
+    rees = PolyRing(ring.field, [f"@x({i + 1})" for i in range(n)] + ["@t"], MonomialOrder.simple("dp", n + 1))
     t = rees.gen(n)
     images = [rees.gen(i) for i in range(n)] + [t * Poly(rees, {e + (0,): c for e, c in f.terms.items()})
                                                 for f in centre]
@@ -170,7 +170,7 @@ def blowup0(ctx, J: Ideal | Poly, C: Ideal, *ambient: Ideal) -> Any:
         return Ideal(big, polys or [big.zero()])
     tT = interred(ctx, ideal(Jb + bR))
     found = {
-        "bR": ideal(bR), "C": ideal(Cb), "J": ideal(Jb), "W": ideal(Wb),
+        "bR": ideal(bR), "C": Ideal(big, Cb), "J": Ideal(big, Jb), "W": Ideal(big, Wb),
         "aS": interred(ctx, ideal(bR + Wb)), "tT": tT,
         "eD": interred(ctx, ideal(Cb + Jb + bR)),
         "sT": ideal(_saturation(tT.nonzero(), [p for p in Cb if not p.is_zero()], big)),

@@ -52,12 +52,9 @@ def facstd(I: Ideal, *nonzero: Poly | Ideal) -> List:
       ring r = 0,(x,y),dp;
       facstd(ideal(x2y - xy2, x3 - x2y));
       → [1]:
-      →    _[1]=x
-      → [2]:
-      →    _[1]=y
-      →    _[2]=x2
-      → [3]:
       →    _[1]=x-y
+      → [2]:
+      →    _[1]=x
     """
     ring = I.ring
     if not ring.order.is_global:
@@ -72,6 +69,7 @@ def facstd(I: Ideal, *nonzero: Poly | Ideal) -> List:
     _split(I.nonzero(), excluded, found)
     kept = [b for i, b in enumerate(found)
             if not any(j != i and _contains(b, c) and not (_contains(c, b) and j > i) for j, c in enumerate(found))]
+    kept.reverse()  # Singular lists the branches of the last factor first
     return List([Ideal(ring, b, is_std=True) for b in kept]) if kept else List([Ideal(ring, [ring.one()], is_std=True)])
 
 
@@ -148,7 +146,7 @@ def janet(ctx, I: Ideal, *opts: Any) -> Ideal:
       → Length of Janet basis: 3
       → _[1]=y2
       → _[2]=x2
-      → _[3]=x2y
+      → _[3]=xy2
     """
     ring = I.ring
     if not ring.order.is_global:

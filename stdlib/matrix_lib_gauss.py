@@ -111,9 +111,9 @@ def gauss_col(A: Matrix, *flag: Any) -> Matrix | List:
       ring r = 0,x,(c,dp);
       matrix A[3][3] = 1,2,3,4,5,6,7,8,9;
       print(gauss_col(A));
-      → -1,0,0,
-      → 0, 1,0,
-      → 1, 2,0
+      → 2,-1,0,
+      → 1,0, 0,
+      → 0,1, 0
     """
     ring = A.ring
     cols, track = interred_columns(_columns(A))
@@ -134,8 +134,8 @@ def gauss_row(A: Matrix, *flag: Any) -> Matrix | List:
       ring r = 0,x,(c,dp);
       matrix A[2][3] = 1,2,3,4,5,6;
       print(gauss_row(A));
-      → -1,0,1,
-      → 2, 1,0
+      → 2, 1,0,
+      → -1,0,1
     """
     if flag:
         return gauss_col(_transpose(A), *flag)

@@ -128,11 +128,11 @@ def zerodec(I: Ideal) -> List:
       ring r = 0,(x,y),dp;
       zerodec(ideal(x2-1, y-x));
       → [1]:
-      →    _[1]=y+1
-      →    _[2]=x+1
-      → [2]:
       →    _[1]=y-1
       →    _[2]=x-1
+      → [2]:
+      →    _[1]=y+1
+      →    _[2]=x+1
     """
     if not _zero_dimensional(I, "zerodec"):
         raise MechRuntimeError("zerodec: the ideal must be zero-dimensional")
@@ -221,14 +221,14 @@ def new_max_independ_set_dp(ctx, j: Ideal, *opts: Any) -> List:
       newMaxIndependSetDp(std(ideal(x, yz)));
       → [1]:
       →    [1]:
-      →       var(1), var(2), var(3)
+      →       var(1), var(3), var(2)
       →    [2]:
       →       dp(2), dp(1)
       →    [3]:
       →       1
       → [2]:
       →    [1]:
-      →       var(1), var(3), var(2)
+      →       var(1), var(2), var(3)
       →    [2]:
       →       dp(2), dp(1)
       →    [3]:
