@@ -2,7 +2,8 @@
 zero_decomp, newZero_decomp, newMaxIndependSetDp/Lp; sqrfree, facstd, mstd, janet, fglmquot; tjurina of a
 complete intersection; matrix.lib's gauss_col/gauss_row; ring.lib's preimageLoc; algebra.lib's
 noetherNormal and module_containment; elim.lib's blowup0; hilb(I, 1, w); minor(M, k, I, n); milnor's and
-nf_icis's comments; indepSet's order.  Each snippet's output is compared with the installed Singular's,
+nf_icis's comments; indepSet's order; ringlist, ring(list), ring_list, create_ring, quotientList, changechar,
+changeord; the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
 line by line; where Singular's answer is random or not unique, the snippet prints what is determined."""
 from __future__ import annotations
 
@@ -115,6 +116,41 @@ ring r = 0,(a,b,c,d,e,f,g,h,s,t,u,v),ds;
 matrix m[3][4] = a,b,c,d,e,f,g,h,s,t,u,v;
 ideal i = std(ideal(a, c));
 minor(m, 2, i, 4); minor(m, 2, i, -4, "Laplace"); minor(m, 3, i, 2);
+""",
+    "ringlists": """
+LIB "ring.lib";
+ring r = (0,a),(x,y),(dp,C); minpoly = a2+1;
+ringlist(r);
+ring s = (7,a,b),(x,y,z),(c,wp(1,2),ls(1));
+ringlist(s);
+ring t = 32003,(x,y,z),(a(1,2),M(1,0,0,0,1,0,0,0,1));
+qring q = std(x2);
+list l = ringlist(q); l;
+def u = ring(l); setring u; u;
+ring v = 0,(x(1..3)),dp;
+list m = ringlist(v);
+m[1] = list(0,list("a"),list(list("lp",1)),ideal(0));
+m[2][size(m[2])+1] = "y";
+m[3][3] = m[3][2]; m[3][1] = list("dp",intvec(1,1)); m[3][2] = list("wp",intvec(3,4));
+def ra = ring(m); ra; setring ra;
+list lra = ringlist(ra); lra[1][4] = ideal(a2+1);
+def Ra = ring(lra); setring Ra; Ra;
+ring w = (0,a),x,lp; minpoly = a2+1;
+qring Q = ideal(x3-2);
+list LQ = ring_list(Q); LQ;
+ring S = create_ring(LQ[1], "(x,y,t)", "dp", "no_minpoly"); S;
+ring S2 = create_ring(0, "(x,y)", "(lp(1),dp(1))"); S2;
+ring P = 0,(y,z,u,v),lp;
+qring Q2 = std(ideal(y+u2+uv3, z+uv3));
+list L2 = ringlist(Q2); L2[3][1][1] = "dp";
+option(redSB);
+quotientList(L2)[4];
+ring rr = 2,A,dp;
+ring r4 = 0,(x,y,u,v),(dp(2),ds);
+def R5 = changechar(ringlist(rr)); R5;
+def R6 = changechar(32003, r4); R6;
+def R7 = changeord(list(list("wp",intvec(2,3)),list("dp",1:2))); R7;
+ring n = 0,(xxx,y,zz),(wp(3,4,5)); n;
 """,
 }
 
