@@ -343,3 +343,25 @@ def preimage_loc(ctx, ring_name: str, map_name: str, ideal_name: str) -> Ideal:
     images += [glob.zero()] * (source.nvars - len(images))
     out = preimage_polys(source, glob, images[:source.nvars], move(gens, glob) + extra)
     return Ideal(source, out or [source.zero()])
+
+
+@command("optionIsSet", lib=LIB)
+def option_is_set(ctx, name: str) -> int:
+    """optionIsSet(name): 1 if the option name is active (as ring.lib finds it: the name occurs in the
+    list option() prints), else 0; an unknown option is an error.
+
+    Example:
+      LIB "ring.lib";
+      optionIsSet("redSB");
+      → 0
+      option(redSB);
+      optionIsSet("redSB");
+      → 1
+    """
+    from ..dsl.errors import MechNameError
+    from ..dsl.options import OPTION_ORDER
+    base = name[2:] if name.startswith("no") and name[2:] in OPTION_ORDER else name
+    if base not in OPTION_ORDER:
+        raise MechNameError(f"unknown option '{name}'")
+    shown = [o for o in OPTION_ORDER if o in ctx.options] + sorted(o for o in ctx.options if o not in OPTION_ORDER)
+    return int(name in " ".join(shown))
