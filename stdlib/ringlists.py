@@ -188,6 +188,33 @@ def ring_list(r: Ring) -> List:
     return out
 
 
+def _lenient_ordering(text: str, nvars: int) -> list[OrderBlock]:
+    """The blocks of an ordering string; as Singular, the last block of a size is extended when the
+    blocks cover fewer than nvars variables."""
+    covered = _covered(text)
+    if covered >= nvars:
+        return parse_ordering(text, nvars)
+    blocks = parse_ordering(text, covered)
+    last = max((k for k, b in enumerate(blocks) if b.kind in _SIZED), default=None)
+    if last is not None:
+        blocks[last] = OrderBlock(blocks[last].kind, blocks[last].size + nvars - covered)
+    return blocks
+
+
+def _covered(text: str) -> int:
+    """The variables an ordering string's blocks cover by their explicit sizes and weights (a block
+    without a size: all, as many as can be)."""
+    total = 0
+    for kind, args in re.findall(r"([A-Za-z]+)\s*(?:\(([^()]*)\))?", text):
+        nums = [a for a in args.split(",") if a.strip()] if args else []
+        if kind in ("c", "C", "a"):
+            continue
+        if kind in _SIZED and not nums:
+            return 1 << 30
+        total += int(nums[0]) if kind in _SIZED else len(nums)
+    return total
+
+
 @command("create_ring")
 def create_ring(l1: Any, l2: Any, l3: Any, *rest: Any) -> Ring:
     """create_ring(l1, l2, l3[, l4][, "no_minpoly"]): ring(list(l1, l2, l3, l4)), where l1 may be a
@@ -211,7 +238,7 @@ def create_ring(l1: Any, l2: Any, l3: Any, *rest: Any) -> Ring:
     if isinstance(l3, str):
         names = l2 if isinstance(l2, List) else List([n.strip() for n in l2.strip().strip("()").split(",") if n.strip()])
         l3 = List([List([b.kind, IntVec(b.weights or ([0] if b.kind in "cC" else [1] * b.size))])
-                   for b in parse_ordering(l3, len(names))])
+                   for b in _lenient_ordering(l3, len(names))])
         l2 = names
     return list_ring(List([l1, l2, l3, ideal]), minpoly=keep)
 

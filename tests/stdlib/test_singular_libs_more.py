@@ -3,7 +3,7 @@ zero_decomp, newZero_decomp, newMaxIndependSetDp/Lp; sqrfree, facstd, mstd, jane
 complete intersection; matrix.lib's gauss_col/gauss_row; ring.lib's preimageLoc; algebra.lib's
 noetherNormal and module_containment; elim.lib's blowup0; hilb(I, 1, w); minor(M, k, I, n); milnor's and
 nf_icis's comments; indepSet's order; ringlist, ring(list), ring_list, create_ring, quotientList, changechar,
-changeord; the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
+changeord, extendring, optionIsSet, show; the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
 line by line; where Singular's answer is random or not unique, the snippet prints what is determined."""
 from __future__ import annotations
 
@@ -151,6 +151,21 @@ def R5 = changechar(ringlist(rr)); R5;
 def R6 = changechar(32003, r4); R6;
 def R7 = changeord(list(list("wp",intvec(2,3)),list("dp",1:2))); R7;
 ring n = 0,(xxx,y,zz),(wp(3,4,5)); n;
+""",
+    "show_extendring": """
+LIB "ring.lib";
+ring r = (0,a),(x,y),(dp,C); minpoly = a2+1;
+ideal i = x2,a*y; poly f = x+y; int k = 3; intvec v = 1,2; string s = "hi"; number n = a;
+matrix m[2][2] = 1,x,y,2; list L = 1,i;
+show(r); show(i); show(f); show(k); show(v); show(s); show(n); show(m); show(L);
+ring t = 7,(x,y,z),(c,lp); qring q = std(x2); show(q);
+setring r;
+def R1 = extendring(3, "u", "dp"); show(R1);
+def R2 = extendring(2, "T(", "c,ls", 1); show(R2);
+intvec w = 2,1,2,1;
+def R3 = extendring(5, "A", "ws,dp", w, 0, t); show(R3);
+def R4 = extendring(3, "b", "dp(1)", 0, t); show(R4);
+optionIsSet("redSB"); option("redSB"); optionIsSet("redSB"); option(noredSB); optionIsSet("redSB");
 """,
 }
 
