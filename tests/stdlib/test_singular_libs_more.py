@@ -3,7 +3,7 @@ zero_decomp, newZero_decomp, newMaxIndependSetDp/Lp; sqrfree, facstd, mstd, jane
 complete intersection; matrix.lib's gauss_col/gauss_row; ring.lib's preimageLoc; algebra.lib's
 noetherNormal and module_containment; elim.lib's blowup0; hilb(I, 1, w); minor(M, k, I, n); milnor's and
 nf_icis's comments; indepSet's order; ringlist, ring(list), ring_list, create_ring, quotientList, changechar,
-changeord, extendring, optionIsSet, show; the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
+changeord, extendring, optionIsSet, show; factmodd; the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
 line by line; where Singular's answer is random or not unique, the snippet prints what is determined."""
 from __future__ import annotations
 
@@ -151,6 +151,14 @@ def R5 = changechar(ringlist(rr)); R5;
 def R6 = changechar(32003, r4); R6;
 def R7 = changeord(list(list("wp",intvec(2,3)),list("dp",1:2))); R7;
 ring n = 0,(xxx,y,zz),(wp(3,4,5)); n;
+""",
+    "factmodd": """
+ring s = 7,(x,y),dp; poly h = (y2+3+x*y)*(y+x2)+x3*y+2x4; poly f0 = y2+3; poly g0 = y;
+factmodd(h, 5, f0, g0);
+ring s2 = 0,(x,y),dp; poly h = (y2+3+x*y)*(y+x2)+x3*y+2x4; poly f0 = y2+3; poly g0 = y;
+factmodd(h, 5, f0, g0); factmodd(h, 5, g0, f0);
+ring s3 = 0,(y,x),dp; poly h = (y2+3+x*y)*(y+x2)+x3*y+2x4; poly f0 = y2+3; poly g0 = y;
+factmodd(h, 5, f0, g0, 2, 1);
 """,
     "show_extendring": """
 LIB "ring.lib";
