@@ -3,7 +3,7 @@ zero_decomp, newZero_decomp, newMaxIndependSetDp/Lp; sqrfree, facstd, mstd, jane
 complete intersection; matrix.lib's gauss_col/gauss_row; ring.lib's preimageLoc; algebra.lib's
 noetherNormal and module_containment; elim.lib's blowup0; hilb(I, 1, w); minor(M, k, I, n); milnor's and
 nf_icis's comments; indepSet's order; ringlist, ring(list), ring_list, create_ring, quotientList, changechar,
-changeord, extendring, optionIsSet, show; factmodd; the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
+changeord, extendring, optionIsSet, show; factmodd; general.lib's sort; the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
 line by line; where Singular's answer is random or not unique, the snippet prints what is determined."""
 from __future__ import annotations
 
@@ -159,6 +159,14 @@ ring s2 = 0,(x,y),dp; poly h = (y2+3+x*y)*(y+x2)+x3*y+2x4; poly f0 = y2+3; poly 
 factmodd(h, 5, f0, g0); factmodd(h, 5, g0, f0);
 ring s3 = 0,(y,x),dp; poly h = (y2+3+x*y)*(y+x2)+x3*y+2x4; poly f0 = y2+3; poly g0 = y;
 factmodd(h, 5, f0, g0, 2, 1);
+""",
+    "sort": """
+LIB "general.lib";
+ring r0 = 0,(x,y,z,t),lp;
+ideal i = x3,z3,xyz;
+sort(i); sort(i,3..1); sort(i,"ls")[1];
+intvec v = 1,10..5,2..4;
+sort(v); sort(i,"Dp",1); sort(ideal(x,0,y,x)); sort(list(3,1,2)); sort(ideal(x,x));
 """,
     "show_extendring": """
 LIB "ring.lib";
