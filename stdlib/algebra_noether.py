@@ -7,6 +7,7 @@ from __future__ import annotations
 import random
 from typing import Any
 
+from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List
 from ..kernel import MonomialOrder, Poly, PolyRing
@@ -19,6 +20,8 @@ from .algebra_subrings import _finiteness
 
 #: The changes of coordinates come from this generator (the entries as algebra.lib's: 1..10).
 _SEED = 2024
+#: How many changes are tried (over a small prime field none may do).
+_ATTEMPTS = 100
 
 
 @command("noetherNormal", lib=LIB)
@@ -47,7 +50,7 @@ def noether_normal(I: Ideal, *sparse: Any) -> List:
     blocks = ([Block("dp", n - d)] if n > d else []) + [Block("lp", d)]
     mixed = PolyRing(ring.field, ring.names, MonomialOrder(blocks, n))
     rnd = random.Random(_SEED)
-    while True:
+    for _ in range(_ATTEMPTS):
         images = []
         for k in range(n):
             p = ring.gen(k)
@@ -59,3 +62,5 @@ def noether_normal(I: Ideal, *sparse: Any) -> List:
         free = [g for g in test.items[2].gens if not g.is_zero()]
         if test.items[0] == 1 and len(free) == d:
             return List([Ideal(ring, images), Ideal(ring, [Poly(ring, g.terms) for g in free])])
+    raise MechRuntimeError(f"noetherNormal: no random change of coordinates in {_ATTEMPTS} tries put the ideal "
+                           "in Noether position (the field may be too small)")

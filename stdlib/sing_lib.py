@@ -206,6 +206,8 @@ def nf_icis(ctx, I: Ideal) -> Ideal:
     rnd = random.Random(n)
     loops, bound = 0, 0
     while sum(sl.values) != 0:
+        if loops == 100:
+            raise MechRuntimeError("nf_icis: no generic combination found in 100 tries (the field may be too small)")
         loops, bound = loops + 1, bound + 10
         while True:
             rows = [[rnd.randint(1, bound) for _ in range(n)] for _ in range(n)]
