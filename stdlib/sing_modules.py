@@ -53,10 +53,17 @@ def local_length(ring: PolyRing, rank: int, gens: list[list[Poly]]) -> int:
 
 
 def tjurina_ci(gens: list[Poly], ring: PolyRing) -> int:
-    """The Tjurina number of the complete intersection of ``gens`` at the origin (-1 when the
-    singularity is not isolated: the module has infinite length)."""
+    """The Tjurina number of the complete intersection of ``gens``: at the origin in a local ring, summed
+    over all points in a global one (-1 when the module has infinite length)."""
     k, n = len(gens), ring.nvars
     jac = [[f.diff(j) for j in range(n)] for f in gens]
+    if ring.order.is_global:  # Singular's vdim in a global ring: the sum over all points
+        cols = [[jac[i][j] for i in range(k)] for j in range(n)]
+        cols += [[f if i == c else ring.zero() for i in range(k)] for f in gens for c in range(k)]
+        gb = ModuleGB(ring, k)
+        gb.add([v for v in (vector(c) for c in cols) if v])
+        parts = [H.vdim([e for e, i in gb.leads if i == c], n) for c in range(k)]
+        return -1 if any(p < 0 for p in parts) else sum(parts)
     flat = [p for row in jac for p in row]
     minors = [m for m in KM.minors(KM.Matrix(ring, k, n, flat), k) if not m.is_zero()] if k <= n else []
     if L.local_vdim(gens + minors, ring) < 0:

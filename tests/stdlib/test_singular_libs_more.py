@@ -59,6 +59,8 @@ ring r = 32003,(x,y,z),(c,ds);
 tjurina(ideal(x2+y2+z2, x2+2y2+3z2));
 ring s = 0,(x,y,z),ds;
 tjurina(ideal(xy, x2+y3+z2)); tjurina(ideal(x2+y3+z5, y2-x*z)); tjurina(ideal(xy, xz));
+ring g = 0,(c1,s1,c2,s2),dp; tjurina(ideal(s1+s2, c1^2+s1^2-1, c2^2+s2^2-1)); tjurina(ideal(c1*s1-1, c2));
+ring s = 0,(x,y,z),ds;
 int p = printlevel; printlevel = 1;
 milnor(ideal(xy, xz)); milnor(ideal(x5+y6+z6, x2+2y2+3z2, xyz+yx));
 proc m(ideal i) { return(milnor(i)); }
