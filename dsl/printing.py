@@ -281,8 +281,8 @@ def ring_str(r: Ring) -> str:
             for i in range(size):
                 row = b.weights[i * size:(i + 1) * size]
                 lines.append("//                  : weights  " + " ".join(str(w) for w in row))
-        elif b.weights:  # as Singular: each weight right-aligned in the width of the ring's last name
-            width = len(r.names[-1])
+        elif b.weights:  # as Singular: each weight right-aligned in the width of the block's last name
+            width = len(r.names[start + size - 1])
             lines.append("//                  : weights " + "".join(f" {w:>{width}}" for w in b.weights))
         if b.kind != "a":
             start += size
