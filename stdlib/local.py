@@ -58,14 +58,17 @@ def milnor(ctx, I: Ideal) -> int:
       milnor(x3+y5+z2);
       → 8
     """
-    from .sing_lib import comment
     ring = I.ring
+
+    def comment(*lines: str, depth: int = 0) -> None:  # sing.lib's comment, shown when printlevel >= 1
+        if ctx.sysvars.get("printlevel", 0) - len(ctx.frames) - depth + 2 > 0:
+            ctx.write("".join(line + "\n" for line in lines))
     gens = _simplify(list(I.gens))
     if len(gens) <= 1:
         f = gens[0] if gens else ring.zero()
         mu = _vdim([d for d in L.jacobian_ideal(f) if not d.is_zero()], ring)
         if mu < 0:
-            comment(ctx, "// Milnor number is infinite", depth=1)
+            comment("// Milnor number is infinite", depth=1)
         return mu
     # the ICIS formula (Le-Greuel): mu = sum of alternating discriminant numbers
     mu = 0
@@ -76,11 +79,11 @@ def milnor(ctx, I: Ideal) -> int:
         q = _vdim(first[:-1] + t, ring)
         disc[l - 1] = q
         if q == -1:
-            comment(ctx, "// not in generic form or no ICIS; use proc nf_icis to put",
+            comment("// not in generic form or no ICIS; use proc nf_icis to put",
                     "// generators in generic form and then try milnor again!", depth=1)
             return -1
         mu = q - mu
-    comment(ctx, "//sequence of discriminant numbers: " + ",".join(map(str, disc)), depth=1)
+    comment("//sequence of discriminant numbers: " + ",".join(map(str, disc)), depth=1)
     return abs(mu)
 
 

@@ -13,8 +13,7 @@ from ..dsl.qrings import make_qring, quotient_ideal
 from ..dsl.registry import command
 from ..dsl.rings import make_ring
 from ..dsl.scopes import Var
-from ..dsl.printing import ordstr
-from ..dsl.values import Ideal, IntVec, List, Number, OrderBlock, Ring
+from ..dsl.values import Ideal, IntVec, Number, OrderBlock, Ring
 from ..kernel import Poly
 from .general_lib import _letters
 
@@ -367,101 +366,3 @@ def option_is_set(ctx, name: str) -> int:
     shown = [o for o in OPTION_ORDER if o in ctx.options] + sorted(o for o in ctx.options if o not in OPTION_ORDER)
     return int(name in " ".join(shown))
 
-
-def _new_names(va: str, n: int) -> list[str]:
-    """extendring's new variables: T(1..n) for "T(", n letters from a single letter (n <= 26), else va(1..n)."""
-    if va.endswith("("):
-        return [f"{va}{i})" for i in range(1, n + 1)]
-    if len(va) == 1 and va.isalpha() and n <= 26:
-        return _letters(va, n)
-    return [f"{va}({i})" for i in range(1, n + 1)]
-
-
-def _sized_blocks(o: str, iv: list[int], n: int) -> str:
-    """ring.lib's use of an intvec in extendring: the sizes of the blocks of o in turn; a weighted block
-    (w or W) takes iv[1] weights iv[2..iv[1]+1] first; the rest of the n variables go to the last block."""
-    left = n
-    weighted = ""
-    w = max(o.find("w"), o.find("W"))
-    if w >= 0:
-        k = iv[0]
-        weighted = o[w:w + 2] + "(" + ",".join(str(v) for v in iv[1:k + 1]) + ")"
-        o = o[:w] + "@" + o[w + 2:]
-        left -= k
-        iv = iv[k + 1:]
-    parts = o.split(",")
-    sizes = iter(iv)
-    for j, part in enumerate(parts[:-1]):
-        if part != "@":
-            size = next(sizes, None)
-            if size is None:
-                break
-            parts[j] = f"{part}({size})"
-            left -= size
-    o = ",".join(parts).replace("@", weighted)
-    if left > 0 and not o.endswith(")"):
-        o += f"({left})"
-    return o
-
-
-@command("extendring", lib=LIB)
-def extendring(ctx, n: int, va: str, o: str, *rest: Any) -> Ring:
-    """extendring(n, va, o[, iv, i, r]): the ring r (default the basering) with n new variables named
-    from va ("T" gives T, U, ... (T(1..n) beyond 26), "x(" gives x(1..n)), in front (i = 0, default) or
-    after the old ones (i != 0), ordered by o (dp gets the size n) followed (preceded) by r's ordering;
-    a c or C at either end of o is the module ordering of the whole; a nonzero intvec iv gives the
-    blocks' sizes (and the weights of a weighted block).
-
-    Example:
-      LIB "ring.lib";
-      ring r = 0,(x,y),ds;
-      def R = extendring(2, "t(", "dp");
-      R;
-      → // coefficients: QQ
-      → // number of vars : 4
-      → //        block   1 : ordering dp
-      → //                  : names    t(1) t(2)
-      → //        block   2 : ordering ds
-      → //                  : names    x y
-      → //        block   3 : ordering C
-    """
-    from .ringlists import create_ring, ring_list
-    from .sing_lib import comment
-    o1 = o2 = ""
-    has_c = any(c in o for c in "cC")
-    if has_c:
-        if o[0] in "cC":
-            o1, o = o[:2], o[2:]
-        else:
-            o2, o = o[-2:], o[:-2]
-    rest = rest or (0,)
-    iv: list[int] = []
-    if isinstance(rest[0], IntVec):
-        iv = list(rest[0].values)
-        i = rest[1] if len(rest) > 1 else 0
-        r = rest[2] if len(rest) > 2 else ctx.basering()
-        if not any(iv) and not o.endswith(")") and "," not in o:
-            o += f"({n})"
-    else:
-        i = rest[0]
-        r = rest[1] if len(rest) > 1 else ctx.basering()
-        if not o.endswith(")") and "," not in o:
-            o += f"({n})"
-    ro = ordstr(r)
-    v = w = ""
-    if ro[0] in "cC":
-        v, ro = ro[:2], ro[2:]
-    else:
-        w, ro = ro[-2:], ro[:-2]
-    if not has_c:
-        o1, o2 = v, w
-    if any(iv):
-        o = _sized_blocks(o, iv, n)
-    old = list(r.names)
-    if i == 0:
-        names, o = _new_names(va, n) + old, o1 + o + "," + ro + o2
-    else:
-        names, o = old + _new_names(va, n), o1 + ro + "," + o + o2
-    comment(ctx, "\n// 'extendring' created a new ring.\n// To see the ring, type (if the name 'R' was "
-            "assigned to the return value):\n     show(R);\n", depth=1)
-    return create_ring(ring_list(r).items[0], List(names), "(" + o.replace(" ", "") + ")")

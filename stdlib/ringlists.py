@@ -1,7 +1,7 @@
 """Rings as lists: Singular's ``ringlist(r)`` (the coefficients, the variables' names, the ordering's
 blocks as [name, intvec] and the quotient ideal) and ``ring(L)`` (the ring a list describes), with the
 library procedures built on them: standard.lib's ``ring_list``, ``create_ring`` and ``quotientList``,
-ring.lib's ``changechar`` and ``changeord``."""
+ring.lib's ``changechar``, ``changeord`` and ``extendring``."""
 from __future__ import annotations
 
 import re
@@ -16,6 +16,8 @@ from ..dsl.values import NONE, Ideal, IntVec, List, OrderBlock, Ring
 from ..kernel import Poly
 from ..kernel.algext import AlgebraicField
 from ..kernel.maps import fetch
+from ..dsl.printing import ordstr
+from .general_lib import _letters
 from .ring_lib import parse_ordering
 from .standard import standard_basis
 
@@ -314,3 +316,101 @@ def changeord(ctx, o: List, *r: Ring) -> Ring:
     base = _ring_arg(ctx, r)
     rl = ringlist(base)
     return list_ring(List([rl.items[0], rl.items[1], o, rl.items[3]]))
+
+
+def _new_names(va: str, n: int) -> list[str]:
+    """extendring's new variables: T(1..n) for "T(", n letters from a single letter (n <= 26), else va(1..n)."""
+    if va.endswith("("):
+        return [f"{va}{i})" for i in range(1, n + 1)]
+    if len(va) == 1 and va.isalpha() and n <= 26:
+        return _letters(va, n)
+    return [f"{va}({i})" for i in range(1, n + 1)]
+
+
+def _sized_blocks(o: str, iv: list[int], n: int) -> str:
+    """ring.lib's use of an intvec in extendring: the sizes of the blocks of o in turn; a weighted block
+    (w or W) takes iv[1] weights iv[2..iv[1]+1] first; the rest of the n variables go to the last block."""
+    left = n
+    weighted = ""
+    w = max(o.find("w"), o.find("W"))
+    if w >= 0:
+        k = iv[0]
+        weighted = o[w:w + 2] + "(" + ",".join(str(v) for v in iv[1:k + 1]) + ")"
+        o = o[:w] + "@" + o[w + 2:]
+        left -= k
+        iv = iv[k + 1:]
+    parts = o.split(",")
+    sizes = iter(iv)
+    for j, part in enumerate(parts[:-1]):
+        if part != "@":
+            size = next(sizes, None)
+            if size is None:
+                break
+            parts[j] = f"{part}({size})"
+            left -= size
+    o = ",".join(parts).replace("@", weighted)
+    if left > 0 and not o.endswith(")"):
+        o += f"({left})"
+    return o
+
+
+@command("extendring", lib="ring.lib")
+def extendring(ctx, n: int, va: str, o: str, *rest: Any) -> Ring:
+    """extendring(n, va, o[, iv, i, r]): the ring r (default the basering) with n new variables named
+    from va ("T" gives T, U, ... (T(1..n) beyond 26), "x(" gives x(1..n)), in front (i = 0, default) or
+    after the old ones (i != 0), ordered by o (dp gets the size n) followed (preceded) by r's ordering;
+    a c or C at either end of o is the module ordering of the whole; a nonzero intvec iv gives the
+    blocks' sizes (and the weights of a weighted block).
+
+    Example:
+      LIB "ring.lib";
+      ring r = 0,(x,y),ds;
+      def R = extendring(2, "t(", "dp");
+      R;
+      → // coefficients: QQ
+      → // number of vars : 4
+      → //        block   1 : ordering dp
+      → //                  : names    t(1) t(2)
+      → //        block   2 : ordering ds
+      → //                  : names    x y
+      → //        block   3 : ordering C
+    """
+    from .sing_lib import comment
+    o1 = o2 = ""
+    has_c = any(c in o for c in "cC")
+    if has_c:
+        if o[0] in "cC":
+            o1, o = o[:2], o[2:]
+        else:
+            o2, o = o[-2:], o[:-2]
+    rest = rest or (0,)
+    iv: list[int] = []
+    if isinstance(rest[0], IntVec):
+        iv = list(rest[0].values)
+        i = rest[1] if len(rest) > 1 else 0
+        r = rest[2] if len(rest) > 2 else ctx.basering()
+        if not any(iv) and not o.endswith(")") and "," not in o:
+            o += f"({n})"
+    else:
+        i = rest[0]
+        r = rest[1] if len(rest) > 1 else ctx.basering()
+        if not o.endswith(")") and "," not in o:
+            o += f"({n})"
+    ro = ordstr(r)
+    v = w = ""
+    if ro[0] in "cC":
+        v, ro = ro[:2], ro[2:]
+    else:
+        w, ro = ro[-2:], ro[:-2]
+    if not has_c:
+        o1, o2 = v, w
+    if any(iv):
+        o = _sized_blocks(o, iv, n)
+    old = list(r.names)
+    if i == 0:
+        names, o = _new_names(va, n) + old, o1 + o + "," + ro + o2
+    else:
+        names, o = old + _new_names(va, n), o1 + ro + "," + o + o2
+    comment(ctx, "\n// 'extendring' created a new ring.\n// To see the ring, type (if the name 'R' was "
+            "assigned to the return value):\n     show(R);\n", depth=1)
+    return create_ring(ring_list(r).items[0], List(names), "(" + o.replace(" ", "") + ")")
