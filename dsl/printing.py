@@ -179,6 +179,8 @@ def _render_list(lst: List, indent: str) -> str:
             lines.append(_render_list(x, sub))
         elif isinstance(x, (str, Ring)):  # printed as one text: Singular indents only its first line
             lines.append(sub + render(x))
+        elif getattr(x, "unindented", False):  # a coefficient ring (cring): Singular does not indent it
+            lines.append(render(x))
         else:
             lines.extend(sub + line for line in render(x).split("\n"))
     return "\n".join(lines)
@@ -260,8 +262,11 @@ def ring_str(r: Ring) -> str:
     """What ``r;`` prints: coefficients, number of variables, the ordering blocks."""
     p = r.characteristic
     coeffs = f"ZZ/{p}" if p else "QQ"
-    if hasattr(r.poly.field, "modulus"):  # an algebraic extension: QQ[a]/(a2+1)
+    if hasattr(r.poly.field, "modulus"):  # an algebraic extension: QQ[a]/(a2+1), a^2+1 if not short
         coeffs = repr(r.poly.field)
+        if not is_short(r.poly):
+            from ..kernel.algext import _terms_str
+            coeffs = coeffs.split("/(")[0] + f"/({_terms_str(r.poly.field.modulus, r.poly.field, False)})"
     elif r.params:
         coeffs += f"({', '.join(r.params)})"
     lines = [f"// coefficients: {coeffs}", f"// number of vars : {len(r.names)}"]
@@ -276,8 +281,8 @@ def ring_str(r: Ring) -> str:
             for i in range(size):
                 row = b.weights[i * size:(i + 1) * size]
                 lines.append("//                  : weights  " + " ".join(str(w) for w in row))
-        elif b.weights:  # as Singular: each weight right-aligned in the width of the longest name
-            width = max(len(n) for n in r.names[start:start + size])
+        elif b.weights:  # as Singular: each weight right-aligned in the width of the block's last name
+            width = len(r.names[start + size - 1])
             lines.append("//                  : weights " + "".join(f" {w:>{width}}" for w in b.weights))
         if b.kind != "a":
             start += size

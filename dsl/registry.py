@@ -364,7 +364,9 @@ def help_text(name: str) -> Optional[str]:
     if cmd is None:
         return TOPICS.get(name)
     head = f"{cmd.usage()}" + (f"    [{cmd.lib}]" if cmd.lib else "")
-    return head + ("\n" + cmd.doc if cmd.doc else "")
+    text = head + ("\n" + cmd.doc if cmd.doc else "")
+    topic = TOPICS.get(name)  # a type that is also a conversion command (ring(L)): the type first
+    return topic + "\n\n" + text if topic else text
 
 
 __all__ = ["command", "Context", "COMMANDS", "LIBRARIES", "invoke", "find", "add_loader", "load_plugins",

@@ -398,3 +398,4 @@ def primecoeffs(ctx, J: Any, bound: int = 32003) -> List:
         return List([IntVec(sorted(primes)), IntVec(rests)])
     poly = ring.poly
     return List([IntVec(sorted(primes)), Ideal(poly, [poly.const(r) for r in rests] or [poly.zero()])])
+

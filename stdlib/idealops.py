@@ -256,10 +256,11 @@ def _independent(lms: list[tuple], subset: tuple[int, ...], n: int) -> bool:
 
 
 def _all_independent(lms: list[tuple], n: int) -> list[tuple[int, ...]]:
-    """The maximal (by inclusion) independent sets of variables, largest first."""
+    """The maximal (by inclusion) independent sets of variables, largest first, those of one size in
+    colexicographic order (by the last variable, then the one before...), as Singular lists them."""
     found: list[set[int]] = []
     for k in range(n, -1, -1):
-        for s in combinations(range(n), k):
+        for s in sorted(combinations(range(n), k), key=lambda c: c[::-1]):
             if _independent(lms, s, n) and not any(set(s) <= t for t in found):
                 found.append(set(s))
     return [tuple(sorted(s)) for s in found]

@@ -4,6 +4,7 @@ variables (``showrecursive``) and ``allprint``."""
 from __future__ import annotations
 
 import sys
+from typing import Any
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.printing import poly_str
@@ -265,3 +266,82 @@ def allprint(ctx, *xs: object) -> object:
     if isinstance(var.value, int) and var.value > 0:
         pause(ctx)
     return NONE
+
+
+def _show_lines(ctx, x: Any) -> list[str]:
+    """inout.lib's show: a comment line with the type and size, then the value."""
+    from ..dsl.intmat import IntMat
+    from ..dsl.minpoly import get_minpoly
+    from ..dsl.printing import charstr, number_str, ordstr, print_form, value_str
+    from ..dsl.qrings import quotient_ideal
+    from ..dsl.values import IntVec, List, Map, Number, Ring
+    from .listvar import _line, _ring_vars, describe
+    if isinstance(x, bool) or isinstance(x, int):
+        return ["// int, size 1", str(x)]
+    if isinstance(x, str):
+        return [f"// string, size {len(x)}", x]
+    if isinstance(x, IntVec):
+        return [f"// intvec, size {len(x.values)}", value_str(x)]
+    if isinstance(x, IntMat):
+        return [f"// intmat, {x.nrows} rows, {x.ncols} columns", print_form(x)]
+    if isinstance(x, Number):
+        return ["// number", number_str(x)]
+    if isinstance(x, Poly):
+        return [f"// poly, {len(x.terms)} monomial(s)", poly_str(x)]
+    if isinstance(x, Ideal):
+        return [f"// ideal, {len(x.gens)} generator(s)", print_form(x)]
+    if isinstance(x, Matrix):
+        return [f"// matrix, {x.nrows}x{x.ncols}", print_form(x)]
+    if isinstance(x, List):
+        out = [f"// list, {len(x.items)} element(s):"]
+        for i, item in enumerate(x.items, 1):
+            head, *rest = _show_lines(ctx, item)
+            out += [f"[{i}]:", "   " + head] + rest
+        return out
+    if isinstance(x, Ring):
+        char = charstr(x)
+        minpoly = get_minpoly(x)
+        out = [f"// ring: ({char}),({','.join(x.names)}),({ordstr(x)});",
+               f"// minpoly = {number_str(minpoly) if not minpoly.c == 0 else 0}"]
+        q = quotient_ideal(x.poly)
+        if q:
+            out += ["// quotient ring from ideal:"] + [f"_[{i}]={poly_str(g)}" for i, g in enumerate(q, 1)]
+        out.append("// objects belonging to this ring:")
+        found = [var for f in sorted(ctx.frames, key=lambda f: -f.level)
+                 for var in reversed(list(_ring_vars(ctx, f, x).values()))]
+        kinds = (Poly, Ideal, Map, Matrix, Number)  # inout.lib lists these types first, in this order
+
+        def rank(var: Any) -> int:
+            return next((k for k, t in enumerate(kinds) if isinstance(var.value, t)), len(kinds))
+        for var in sorted(found, key=rank):
+            out.append(_line(var.name, var.level, describe(var.value, ctx.ring), False).rstrip("\n"))
+        return out
+    raise MechRuntimeError(f"show: the type {type(x).__name__} is not supported")
+
+
+@command("show", lib=LIB)
+def show(ctx, x: Any, *rest: Any) -> None:
+    """show(x): x with a comment line before it saying its type and size (a ring: its coefficients,
+    variables, ordering, minimal polynomial, quotient ideal and the objects belonging to it).
+
+    Example:
+      LIB "inout.lib";
+      ring r = 0,(x,y),ds;
+      show(r);
+      → // ring: (QQ),(x,y),(ds(2),C);
+      → // minpoly = 0
+      → // objects belonging to this ring:
+      show(ideal(x2, y));
+      → // ideal, 2 generator(s)
+      → x2,
+      → y
+      show(list(1, "a"));
+      → // list, 2 element(s):
+      → [1]:
+      →    // int, size 1
+      → 1
+      → [2]:
+      →    // string, size 1
+      → a
+    """
+    ctx.write("\n".join(_show_lines(ctx, x)) + "\n")

@@ -143,9 +143,9 @@ def option(ctx, *nodes: A.Expr) -> None:
         ctx.write("//options: " + " ".join(shown) + "\n")
         return
     for n in nodes:
-        if not isinstance(n, A.Name):
-            raise MechTypeError("option(...) takes option names, e.g. option(redSB)")
-        name = n.id
+        if not isinstance(n, (A.Name, A.StrLit)):
+            raise MechTypeError("option(...) takes option names, e.g. option(redSB) or option(\"redSB\")")
+        name = n.id if isinstance(n, A.Name) else n.value
         if name.startswith("no") and name[2:] in OPTION_ORDER:
             ctx.options.discard(name[2:])
             continue

@@ -46,11 +46,11 @@ def _simplify(gens: list[Poly]) -> list[Poly]:
 
 
 @command("milnor", lib="sing.lib")
-def milnor(I: Ideal) -> int:
+def milnor(ctx, I: Ideal) -> int:
     """milnor(I): the Milnor number of the hypersurface or complete intersection I for the
     basering's ordering (in a local ring: at the origin; in a global one: summed over all
     critical points); -1 when infinite (not an isolated singularity, or an ICIS not in generic
-    form).
+    form).  With printlevel >= 1 sing.lib's comments: the discriminant numbers, or why -1.
 
     Example:
       LIB "sing.lib";
@@ -59,19 +59,31 @@ def milnor(I: Ideal) -> int:
       → 8
     """
     ring = I.ring
+
+    def comment(*lines: str, depth: int = 0) -> None:  # sing.lib's comment, shown when printlevel >= 1
+        if ctx.sysvars.get("printlevel", 0) - len(ctx.frames) - depth + 2 > 0:
+            ctx.write("".join(line + "\n" for line in lines))
     gens = _simplify(list(I.gens))
     if len(gens) <= 1:
         f = gens[0] if gens else ring.zero()
-        return _vdim([d for d in L.jacobian_ideal(f) if not d.is_zero()], ring)
+        mu = _vdim([d for d in L.jacobian_ideal(f) if not d.is_zero()], ring)
+        if mu < 0:
+            comment("// Milnor number is infinite", depth=1)
+        return mu
     # the ICIS formula (Le-Greuel): mu = sum of alternating discriminant numbers
     mu = 0
+    disc = [0] * len(gens)
     for l in range(len(gens), 0, -1):
         first = gens[:l]
         t = [m for m in minors(jacobian(first, ring), l) if not m.is_zero()]
         q = _vdim(first[:-1] + t, ring)
+        disc[l - 1] = q
         if q == -1:
+            comment("// not in generic form or no ICIS; use proc nf_icis to put",
+                    "// generators in generic form and then try milnor again!", depth=1)
             return -1
         mu = q - mu
+    comment("//sequence of discriminant numbers: " + ",".join(map(str, disc)), depth=1)
     return abs(mu)
 
 
@@ -88,8 +100,8 @@ def tjurina(I: Ideal) -> int:
     """
     gens = _simplify(list(I.gens))
     if len(gens) > 1:
-        raise MechRuntimeError("tjurina: only hypersurfaces (one generator) are supported; the "
-                               "Tjurina module of a complete intersection is a module")
+        from .sing_modules import tjurina_ci
+        return tjurina_ci(gens, I.ring)
     f = gens[0] if gens else I.ring.zero()
     return _vdim([g for g in [f] + L.jacobian_ideal(f) if not g.is_zero()], I.ring)
 

@@ -298,3 +298,71 @@ def ringtensor(*rings: Ring) -> Ring:
                                        for e, c in g.terms.items()}))
         offset += n
     return make_qring(ring, Ideal(big, quotient)) if quotient else ring
+
+
+@command("preimageLoc", lib=LIB)
+def preimage_loc(ctx, ring_name: str, map_name: str, ideal_name: str) -> Ideal:
+    """preimageLoc("R", "phi", "J"): the preimage in the basering of the ideal J of the ring R under the
+    map phi into R, the three given by name, for any orderings: when R is a quotient ring with a local
+    ordering, only the primary components of its ideal through the origin are kept (the quotient of the
+    local ring), then the preimage is taken as for global orderings.
+
+    Example:
+      LIB "ring.lib";
+      ring S = 0,(x,y),dp;
+      ring R0 = 0,(x,y),ds;
+      qring R = std(x2+x);
+      map psi = S,x,y;
+      ideal null;
+      setring S;
+      preimageLoc("R","psi","null");
+      → _[1]=x
+    """
+    from ..kernel.ideals import intersect, move, with_order
+    from ..kernel.primdec import primdec_gtz
+    from ..kernel.order import Block, MonomialOrder
+    from .idealops import preimage_polys
+    source = ctx.basering().poly
+    var = ctx.lookup(ring_name)
+    if var is None or not isinstance(var.value, Ring):
+        raise MechRuntimeError(f"preimageLoc: {ring_name} is not a ring")
+    target = var.value
+    phi, J = ctx.lookup_in_ring(target, map_name), ctx.lookup_in_ring(target, ideal_name)
+    if phi is None or J is None:
+        raise MechRuntimeError(f"preimageLoc: {map_name} or {ideal_name} is not defined in {ring_name}")
+    ring = target.poly
+    glob = with_order(ring, MonomialOrder([Block("dp", ring.nvars)], ring.nvars))
+    gens = list(J.value.nonzero()) if isinstance(J.value, Ideal) else [J.value]
+    q = quotient_ideal(ring)
+    extra = move([p for p in q if not p.is_zero()], glob) if q is not None else []
+    if extra and not ring.order.is_global:
+        through = [move(c[0], glob) for c in primdec_gtz(extra, glob)
+                   if all(p.terms.get(glob.zero_exp) is None for p in c[1])]
+        extra = intersect(*through, ring=glob) if through else [glob.one()]
+    images = [Poly(glob, p.terms) for p in phi.value.images]
+    images += [glob.zero()] * (source.nvars - len(images))
+    out = preimage_polys(source, glob, images[:source.nvars], move(gens, glob) + extra)
+    return Ideal(source, out or [source.zero()])
+
+
+@command("optionIsSet", lib=LIB)
+def option_is_set(ctx, name: str) -> int:
+    """optionIsSet(name): 1 if the option name is active (as ring.lib finds it: the name occurs in the
+    list option() prints), else 0; an unknown option is an error.
+
+    Example:
+      LIB "ring.lib";
+      optionIsSet("redSB");
+      → 0
+      option(redSB);
+      optionIsSet("redSB");
+      → 1
+    """
+    from ..dsl.errors import MechNameError
+    from ..dsl.options import OPTION_ORDER
+    base = name[2:] if name.startswith("no") and name[2:] in OPTION_ORDER else name
+    if base not in OPTION_ORDER:
+        raise MechNameError(f"unknown option '{name}'")
+    shown = [o for o in OPTION_ORDER if o in ctx.options] + sorted(o for o in ctx.options if o not in OPTION_ORDER)
+    return int(name in " ".join(shown))
+

@@ -118,14 +118,18 @@ def is_ci(ctx, I: Ideal) -> IntVec:
       → // dim-sequence:
       → 2,2
     """
+    return _is_ci(ctx, I, 0)
+
+
+def _is_ci(ctx, I: Ideal, depth: int) -> IntVec:
     ring = I.ring
     gens = list(minbase(I).gens)
     dims = [_std_dim(gens[:k], ring) for k in range(1, len(gens) + 1)]
     if dims[-1] + len(gens) == ring.nvars:
-        comment(ctx, f"// complete intersection of dim {dims[-1]}")
+        comment(ctx, f"// complete intersection of dim {dims[-1]}", depth=depth)
     else:
-        comment(ctx, "// no complete intersection")
-    comment(ctx, "// dim-sequence:")
+        comment(ctx, "// no complete intersection", depth=depth)
+    comment(ctx, "// dim-sequence:", depth=depth)
     return IntVec(dims)
 
 
@@ -142,11 +146,83 @@ def is_is(ctx, I: Ideal) -> IntVec:
       → // isolated singularity if last number is 0 in dim-sequence:
       → 1
     """
+    return _is_is(ctx, I, 0)
+
+
+def _is_is(ctx, I: Ideal, depth: int) -> IntVec:
     ring = I.ring
     dims = [_std_dim(slocus(Ideal(ring, list(I.gens[:k]))).nonzero(), ring) for k in range(1, len(I.gens) + 1)]
     comment(ctx, f"// dim of singular locus = {dims[-1]}",
-             "// isolated singularity if last number is 0 in dim-sequence:")
+            "// isolated singularity if last number is 0 in dim-sequence:", depth=depth)
     return IntVec(dims)
+
+
+def _invertible(rows: list[list[int]]) -> bool:
+    """Whether the integer matrix is invertible over QQ."""
+    from fractions import Fraction
+    a = [[Fraction(v) for v in row] for row in rows]
+    n = len(a)
+    for c in range(n):
+        pivot = next((r for r in range(c, n) if a[r][c] != 0), None)
+        if pivot is None:
+            return False
+        a[c], a[pivot] = a[pivot], a[c]
+        for r in range(c + 1, n):
+            f = a[r][c] / a[c][c]
+            a[r] = [x - f * y for x, y in zip(a[r], a[c])]
+    return True
+
+
+@command("nf_icis", lib=LIB)
+def nf_icis(ctx, I: Ideal) -> Ideal:
+    """nf_icis(I): for an isolated complete intersection singularity, generic linear combinations of
+    the generators (random, invertible: the same ideal) whose partial ideals all have isolated
+    singularities, as milnor needs them; I itself if it is no complete intersection or no isolated
+    singularity (with sing.lib's comments).
+
+    Example:
+      LIB "sing.lib";
+      ring r = 0,(x,y,z),ds;
+      nf_icis(ideal(xy, xz, yz));
+      → // no complete intersection
+      → _[1]=xy
+      → _[2]=xz
+      → _[3]=yz
+    """
+    import random
+    from .local import _simplify
+    ring = I.ring
+    gens = _simplify(list(I.gens))
+    n = len(gens)
+    J = Ideal(ring, gens or [ring.zero()])
+    sl = _is_ci(ctx, J, 1)
+    if n + sl.values[-1] != ring.nvars:
+        comment(ctx, "// no complete intersection")
+        return J
+    sl = _is_is(ctx, J, 1)
+    if sl.values[-1] != 0:
+        comment(ctx, "// no isolated singularity")
+        return J
+    rnd = random.Random(n)
+    loops, bound = 0, 0
+    while sum(sl.values) != 0:
+        if loops == 100:
+            raise MechRuntimeError("nf_icis: no generic combination found in 100 tries (the field may be too small)")
+        loops, bound = loops + 1, bound + 10
+        while True:
+            rows = [[rnd.randint(1, bound) for _ in range(n)] for _ in range(n)]
+            if _invertible(rows):
+                break
+        combos = []
+        for row in rows:
+            g = ring.zero()
+            for a, f in zip(row, gens):
+                g = g + ring.const(ring.field(a)) * f
+            combos.append(g)
+        J = Ideal(ring, combos)
+        sl = _is_is(ctx, J, 1)
+    comment(ctx, f"// ICIS in generic form after {loops} genericity loop(s)")
+    return J
 
 
 @command("is_reg", lib=LIB)

@@ -109,7 +109,6 @@ def test_point_commands():
     ("pointType(J, list(c1,1,0,1))", "coordinate 1 of the point is not a number"),
     ("tangentSpaceDim(J, 5)", "give the point as a list, intvec or ideal of coordinates"),
     ("tangentcone(J, 2)", "the second argument must be 0 or 1"),
-    ("tjurina(J)", "only hypersurfaces"),
 ])
 def test_errors(call, message):
     with pytest.raises(MechError) as e:
