@@ -29,7 +29,7 @@ from mech.dsl.limits import REPORT_KEEP, cut, remaining
 from mech.dsl.limits import within as limited
 from mech.kernel import Poly
 from mech.kernel.real_roots import RealSolvingError
-from mech.stdlib.analysis import Analysis
+from mech.stdlib.analysis import Analysis, relaxed_gc
 from mech.stdlib.grashof import four_bar
 
 #: Seconds the real steps of one report may take together (besides the statement's time limit).
@@ -237,7 +237,8 @@ def real_sections(a: Analysis) -> RealSections:
     cut them short)."""
     hit = _CACHE.get(id(a))
     if hit is None or hit[0] is not a:
-        hit = (a, _compute(a))
+        with relaxed_gc():
+            hit = (a, _compute(a))
         if not hit[1].cut:
             _CACHE[id(a)] = hit
     return hit[1]
