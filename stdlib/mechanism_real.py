@@ -122,9 +122,9 @@ def assembly_modes(a: Analysis, digits: int = DIGITS) -> dict[str, Any]:
             "poses": poses}
 
 
-def _circuits(gens: list[Poly], a: Analysis) -> int:
+def _circuits(gens: list[Poly], a: Analysis, is_prime: bool) -> int:
     from mech.stdlib.circuit_counts import circuit_count
-    return circuit_count(gens, a.ring)
+    return circuit_count(gens, a.ring, is_prime)
 
 
 def _branches(a: Analysis, s: Any) -> list[dict[str, Any]]:
@@ -199,7 +199,7 @@ def _circuit_section(sec: RealSections, a: Analysis) -> None:
     out = []
     for i, prime in parts:
         what = f"real circuits of mode {i}" if i else "real circuits"
-        n = _step(sec, what, _circuits, prime, a)
+        n = _step(sec, what, _circuits, prime, a, i is not None)
         if n is None:
             continue
         out.append({"mode": i, "circuits": n})
