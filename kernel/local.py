@@ -24,6 +24,7 @@ from .groebner import groebner, normal_form
 from .hilbert import mult, vdim
 from .ideals import dimension, independent_set, intersect, is_subset, move, std, with_order
 from .localnf import weak_normal_form
+from .modular_rank import jacobian_rank_mod
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing
 from .primdec import min_ass_gtz, primdec_gtz
@@ -379,10 +380,17 @@ def tangent_cone_over(centred: Sequence[Poly], point: AlgebraicPoint) -> list[Po
     return groebner([_lowest_in(g, n) for g in move(basis, ring)] + [point.minpoly], ring)
 
 
-def _tangent_dim(gens: Sequence[Poly], at: Sequence[Poly], ring: PolyRing, m: Poly) -> int:
+def _tangent_dim(gens: Sequence[Poly], at: Sequence[Poly], ring: PolyRing, m: Poly,
+                 at_least: int | None = None) -> int:
     """The dimension over ``Q[t]/m(t)`` of the Zariski tangent space of ``V(gens)`` (gens of
-    ``ring = Q[x, t]``) at ``x = at(t)``: the kernel of the Jacobian there, as a linear ideal."""
+    ``ring = Q[x, t]``) at ``x = at(t)``: the kernel of the Jacobian there, as a linear ideal.
+    ``at_least``: a known lower bound (the dimension of the variety at the point); when the
+    Jacobian's rank modulo a prime reaches it (:mod:`.modular_rank`), it is the answer."""
     n = ring.nvars - 1
+    if at_least is not None and isinstance(ring.field, RationalField):
+        rank = jacobian_rank_mod(gens, at, m)
+        if rank is not None and n - rank == at_least:
+            return at_least
     images = list(at) + ring.gens()[n:]
     linear = [sum((normal_form(g.diff(i).compose(images), [m]) * x
                    for i, x in enumerate(ring.gens()[:n])), ring.zero()) for g in gens]
@@ -414,7 +422,7 @@ def stays_prime(prime: Sequence[Poly], point: AlgebraicPoint, tries: int = 6) ->
             continue
         for Z in min_ass_gtz(sliced, ring):
             z = primitive_element(Z, ring)
-            if (_tangent_dim(lift(basis, z.ring), z.coords, z.ring, z.minpoly) == d
+            if (_tangent_dim(lift(basis, z.ring), z.coords, z.ring, z.minpoly, d) == d
                     and _irreducible_over(point.minpoly, z.minpoly)):
                 return True
     return False
@@ -476,8 +484,8 @@ def classify_algebraic_point(gens: Sequence[Poly], point: AlgebraicPoint,
     if not comps:
         raise DomainError("no component through the points: primes must be the ideal's minimal primes")
     radical = intersect(*comps, ring=ring) if len(comps) > 1 else comps[0]
-    t = _tangent_dim(radical, [ring.zero()] * n, ring, point.minpoly)
     d = max(dimension(c, ring) for c in comps)
+    t = _tangent_dim(radical, [ring.zero()] * n, ring, point.minpoly, d)
     cone = tangent_cone_over(centred, point)
     lms = [g.lm()[:n] for g in cone if not _in_t(g, n)]
     return PointInfo(_kind(len(comps), t, d), tuple(point.coords), d, t, mult(lms, n), cone, comps)

@@ -447,12 +447,14 @@ def _topology(gens: list[Poly], ring: PolyRing, width: fmpq | None,
     raise RealSolvingError("no projection of the curve in generic position found")
 
 
-def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: int | None = 6) -> CurveTopology:
+def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: int | None = 6,
+                   prime: bool = False) -> CurveTopology:
     """The circuits (connected components of the real points) and isolated real points of the
     curve ``V(gens)`` over QQ; sample points in boxes of width ``10^-digits`` and a certified
     bounding box for each bounded circuit (none when ``digits`` is None: counting is faster).  A
     0-dimensional ideal gives only isolated points; RealSolvingError for a component of dimension
-    two or more."""
+    two or more.  ``prime``: the ideal is known to be prime (a motion mode), so its minimal primes
+    are not computed."""
     ring = ring or gens[0].ring
     if ring.field != QQ:
         raise RealSolvingError("real curves need rational coefficients (the field QQ)")
@@ -468,7 +470,7 @@ def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: i
     if len(chart.free) == 1:
         origin = chart.lift([(fmpq(0), fmpq(0))])
         return CurveTopology([Circuit([origin], origin, False, 2)], [])
-    curve, point_ideals = curve_part(chart.gens, chart.ring)
+    curve, point_ideals = curve_part(chart.gens, chart.ring, prime)
     isolated = [s.box for P in point_ideals for s in real_solutions(P, chart.ring, digits or 6).real]
     circuits, more, certified = _topology(curve, chart.ring, width, chart.directions())
     for c in circuits:  # the hull in the original coordinates (lifting a hull would widen it)

@@ -144,13 +144,14 @@ def irreducible_factors(p: fmpz_poly) -> list[fmpz_poly]:
     return [primitive(f) for f, _ in facs]
 
 
-def curve_part(gens: Sequence[Poly], ring: PolyRing) -> tuple[list[Poly], list[list[Poly]]]:
+def curve_part(gens: Sequence[Poly], ring: PolyRing, prime: bool = False) -> tuple[list[Poly], list[list[Poly]]]:
     """``(C, points)``: the radical of the union of the one-dimensional components of ``V(gens)``
     and the zero-dimensional minimal primes (isolated points).  A complete intersection of
     dimension one whose Jacobian has full rank on a dense set (the singular scheme is finite) is
     already radical and unmixed (Serre's criterion: Cohen–Macaulay and generically reduced);
-    otherwise the minimal primes (:func:`.primdec.min_ass_gtz`) decide.  RealSolvingError for a
-    component of dimension two or more."""
+    otherwise the minimal primes (:func:`.primdec.min_ass_gtz`) decide (not for a ``prime`` ideal,
+    as the caller knows a motion mode to be: its minimal primes took minutes on a six-bar's mode of
+    degree 16).  RealSolvingError for a component of dimension two or more."""
     from .ideals import dimension, intersect
     from .matrix import jacobian, minors
     from .primdec import min_ass_gtz
@@ -161,6 +162,8 @@ def curve_part(gens: Sequence[Poly], ring: PolyRing) -> tuple[list[Poly], list[l
     d = krull_dim([g.lm() for g in basis], n) if basis else n
     if d > 1:
         raise RealSolvingError(f"not a curve: the variety has dimension {d}")
+    if prime and d == 1:
+        return gens, []
     if len(gens) == n - 1 and d == 1:
         sing = gens + [p for p in minors(jacobian(gens, R), n - 1) if not p.is_zero()]
         if dimension(sing, R) <= 0:

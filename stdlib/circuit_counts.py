@@ -29,9 +29,10 @@ def _keep(table: dict, key: tuple, value: Any) -> None:
     table[key] = value
 
 
-def circuit_count(prime: Sequence[Any], ring: Any) -> int:
+def circuit_count(prime: Sequence[Any], ring: Any, is_prime: bool = False) -> int:
     """The number of real circuits of the curve ``V(prime)`` (``prime`` a one-dimensional ideal's
-    generators in ``ring``); raises the exact methods' RealSolvingError when they refuse it."""
+    generators in ``ring``, a prime ideal's when ``is_prime``: a motion mode, whose minimal primes
+    are then not computed); raises the exact methods' RealSolvingError when they refuse it."""
     key = _key(prime, ring)
     known = _COUNTS.get(key)
     if isinstance(known, RealSolvingError):
@@ -41,7 +42,7 @@ def circuit_count(prime: Sequence[Any], ring: Any) -> int:
     from mech.kernel.real_curve import curve_topology
     start = time.monotonic()
     try:
-        n = curve_topology(list(prime), ring, None).count
+        n = curve_topology(list(prime), ring, None, is_prime).count
     except RealSolvingError as e:
         _keep(_COUNTS, key, e)
         raise

@@ -110,7 +110,7 @@ def _circuit_count(prime: list, ring: Any) -> Optional[int]:
     if time_tried(prime, ring) >= CIRCUIT_BUDGET:  # the report already ran out of this much time on it
         return None
     try:
-        ok, n = within(CIRCUIT_BUDGET, circuit_count, prime, ring)
+        ok, n = within(CIRCUIT_BUDGET, circuit_count, prime, ring, True)
     except RealSolvingError:
         return None
     return n if ok else None

@@ -178,7 +178,6 @@ def _critical_points(J: list[Poly], grad: list[Poly], on: Optional[list[Poly]] =
     reduced along it): those where the curve is smooth, and the singular configurations among them
     (where ``dJ`` has rank below ``n - 1``: the smallest singular values of the Jacobian at the
     10^-12-boxes' centres tell)."""
-    import numpy as np
     R = J[0].ring
     if on is None:
         sols = real_solutions(_critical_system(J, grad), R, 12)
@@ -191,7 +190,7 @@ def _critical_points(J: list[Poly], grad: list[Poly], on: Optional[list[Poly]] =
     jac = [[g.diff(k) for k in range(R.nvars)] for g in J]
     smooth, singular = [], []
     for p in pts:
-        sv = np.linalg.svd(np.array([[_eval(d, p) for d in row] for row in jac]), compute_uv=False)
+        sv = singular_values([[_eval(d, p) for d in row] for row in jac])
         (smooth if sv[R.nvars - 2] > 1e-8 else singular).append(p)
     return smooth, singular
 
@@ -300,9 +299,13 @@ def input_output(m: Mechanism, J: list[Poly], inp: int, out: int,
 def _circuits(m: Mechanism, prime: list[Poly]) -> Optional[tuple[Callable[[list[float]], int], int]]:
     """For a mode with several real circuits whose samples split clearly
     (:func:`mech.stdlib.configurations.circuit_split`): the circuit of a point (that of the nearest
-    sample) and the number of circuits; None otherwise."""
+    sample) and the number of circuits; None otherwise (without sampling when the exact count,
+    computed first and shared with the report, is below 2)."""
+    from mech.stdlib.configurations import _circuit_count, circuit_split
+    known = _circuit_count(prime, prime[0].ring)
+    if known is not None and known < 2:
+        return None
     import numpy as np
-    from mech.stdlib.configurations import circuit_split
     x, labels, k = circuit_split(prime, prime[0].ring, len(m.links))
     if labels is None or not k or k < 2:
         return None
@@ -399,6 +402,33 @@ def _joints(m: Mechanism) -> set[str]:
         for p in link.points:
             seen[p] = seen.get(p, 0) + 1
     return {p for p, c in seen.items() if c > 1 or p in m.fixed}
+
+
+def singular_values(rows: list[list[float]], sweeps: int = 60) -> list[float]:
+    """The singular values of a small real matrix (one per column, largest first) by one-sided
+    Jacobi rotations (Hestenes 1958; Demmel and Veselić 1992: as accurate as an SVD, to
+    relative precision): the columns are rotated pairwise until orthogonal, then their norms."""
+    cols = [list(c) for c in zip(*rows)]
+    eps = 1e-15
+    for _ in range(sweeps):
+        rotated = False
+        for i in range(len(cols)):
+            for j in range(i + 1, len(cols)):
+                a, b = cols[i], cols[j]
+                alpha, beta = sum(x * x for x in a), sum(y * y for y in b)
+                gamma = sum(x * y for x, y in zip(a, b))
+                if abs(gamma) <= eps * math.sqrt(alpha * beta) or gamma == 0:
+                    continue
+                rotated = True
+                zeta = (beta - alpha) / (2 * gamma)
+                t = math.copysign(1.0, zeta) / (abs(zeta) + math.sqrt(1 + zeta * zeta))
+                c = 1 / math.sqrt(1 + t * t)
+                s = c * t
+                cols[i] = [c * x - s * y for x, y in zip(a, b)]
+                cols[j] = [s * x + c * y for x, y in zip(a, b)]
+        if not rotated:
+            break
+    return sorted((math.sqrt(sum(x * x for x in c)) for c in cols), reverse=True)
 
 
 def _eval(p: Poly, pt: list[float]) -> float:

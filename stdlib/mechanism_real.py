@@ -29,7 +29,7 @@ from mech.dsl.limits import REPORT_KEEP, cut, remaining
 from mech.dsl.limits import within as limited
 from mech.kernel import Poly
 from mech.kernel.real_roots import RealSolvingError
-from mech.stdlib.analysis import Analysis
+from mech.stdlib.analysis import Analysis, relaxed_gc
 from mech.stdlib.grashof import four_bar
 
 #: Seconds the real steps of one report may take together (besides the statement's time limit).
@@ -122,9 +122,9 @@ def assembly_modes(a: Analysis, digits: int = DIGITS) -> dict[str, Any]:
             "poses": poses}
 
 
-def _circuits(gens: list[Poly], a: Analysis) -> int:
+def _circuits(gens: list[Poly], a: Analysis, is_prime: bool) -> int:
     from mech.stdlib.circuit_counts import circuit_count
-    return circuit_count(gens, a.ring)
+    return circuit_count(gens, a.ring, is_prime)
 
 
 def _branches(a: Analysis, s: Any) -> list[dict[str, Any]]:
@@ -199,7 +199,7 @@ def _circuit_section(sec: RealSections, a: Analysis) -> None:
     out = []
     for i, prime in parts:
         what = f"real circuits of mode {i}" if i else "real circuits"
-        n = _step(sec, what, _circuits, prime, a)
+        n = _step(sec, what, _circuits, prime, a, i is not None)
         if n is None:
             continue
         out.append({"mode": i, "circuits": n})
@@ -237,7 +237,8 @@ def real_sections(a: Analysis) -> RealSections:
     cut them short)."""
     hit = _CACHE.get(id(a))
     if hit is None or hit[0] is not a:
-        hit = (a, _compute(a))
+        with relaxed_gc():
+            hit = (a, _compute(a))
         if not hit[1].cut:
             _CACHE[id(a)] = hit
     return hit[1]

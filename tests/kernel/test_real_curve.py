@@ -165,3 +165,18 @@ def test_not_a_curve():
         curve_topology([X ** 2 + Y ** 2 + Z ** 2 - 1], R3)
     topo = curve_topology([x ** 2 - 2, y - 1], R2)  # a 0-dimensional ideal: isolated points only
     assert topo.count == 0 and len(topo.isolated) == 2
+
+
+def test_prime_curve_skips_its_minimal_primes(monkeypatch):
+    """A curve known to be prime (a motion mode) is not decomposed again: the space curve
+    x^2 + y^2 = 1, z = x y, given with the redundant x z - x^2 y (three generators: not the
+    complete-intersection case) has one circuit with and without ``prime``."""
+    import mech.kernel.primdec as primdec
+    x, y, z = R3.gens()
+    gens = [x * x + y * y - 1, z - x * y, x * z - x * x * y]
+    assert curve_topology(gens, R3, None).count == 1
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("decomposed a prime curve")
+    monkeypatch.setattr(primdec, "min_ass_gtz", refuse)
+    assert curve_topology(gens, R3, None, prime=True).count == 1

@@ -180,3 +180,17 @@ def test_json_reports_are_json_lines(tmp_path):
     assert r.returncode == 0 and r.stderr == ""
     reports = [json.loads(line) for line in r.stdout.splitlines()]
     assert [d["mobility"] for d in reports] == [1, 1] and len(reports[1]["motion_modes"]) == 2
+
+
+def test_startup_frozen_once(monkeypatch):
+    """The start-up's objects are moved out of the collector's reach once per process, not at
+    every program run in it (a second freeze would keep the first program's garbage cycles)."""
+    import gc
+
+    from mech import cli
+    calls = []
+    monkeypatch.setattr(cli, "_FROZEN", [])
+    monkeypatch.setattr(gc, "freeze", lambda: calls.append(1))
+    assert cli.run_text("int a = 1;", "<string>") == 0
+    assert cli.run_text("int b = 2;", "<string>") == 0
+    assert calls == [1]

@@ -178,6 +178,33 @@ def test_two_parabolas_against_singular():
     assert same_over_k(info.tangent_cone, cone, pt) and count == len(info.components) == 2
 
 
+WATT_I_C = "ground O A 5; body O B 2 0 E 1 2; body B C 4 0 F 2 2; bar C A 3; bar E H 3; bar H F 2"
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(not SINGULAR, reason="Singular is not installed")
+def test_watt_i_algebraic_point_against_singular():
+    """A Watt I six-bar whose one singular configuration is a pair of real conjugate points
+    (17 t^2 - 24 t + 8 = 0): J is prime and stays prime over K (one local component, the
+    tangent dimension certified modulo a prime), a singular point; the tangent cone over K
+    equals Singular's tangentcone in the ring (0,t) with that minpoly."""
+    a = analyze(parse_mechanism(WATT_I_C))
+    [s] = a.singular
+    pt = s.algebraic
+    assert poly_str(normalize(pt.minpoly)) == "17*t^2-24*t+8"
+    assert (s.kind, len(s.local_components)) == ("singular", 1)
+    n = pt.ring.nvars - 1
+    images = ",".join(f"{x}+({poly_str(c)})" for x, c in zip(pt.ring.names, pt.coords))
+    out = run_singular(f"""LIB "sing.lib";
+ring r = (0,t),({",".join(pt.ring.names[:n])}),ds; minpoly = {poly_str(normalize(pt.minpoly))}; short = 0;
+ideal J = {",".join(poly_str(g) for g in a.ideal)};
+map f = r, {images};
+tangentcone(f(J));
+""")
+    cone = [parse_poly(pt.ring, g) for g in ideal_blocks(out)[0]]
+    assert same_over_k(s.tangent_cone, cone, pt)
+
+
 def test_report_text():
     a = analyze(parse_mechanism(TILTED2))
     lines = report_text(a).splitlines()

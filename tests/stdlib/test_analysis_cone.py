@@ -4,6 +4,8 @@ finish on Bricard's 6R loop) has its own budget, and when it runs out the report
 union of the local components' cones) and says so."""
 from __future__ import annotations
 
+import pytest
+
 from mech.kernel.ideals import dp_ring, ideals_equal, move
 from mech.kernel.primdec import radical
 from mech.stdlib import analysis
@@ -38,3 +40,22 @@ def test_cone_out_of_budget_keeps_the_classification(monkeypatch):
            "of lowest forms ran out of its 0.3 s budget)): <" in text
     assert report_data(part)["singular"][0]["tangent_cone_note"] == part.singular[0].cone_note
     assert "tangent_cone_note" not in report_data(full)["singular"][0]
+
+
+def test_relaxed_gc_restores_the_threshold():
+    """The analysis raises the young generation's threshold while it runs and restores it after,
+    also when it fails."""
+    import gc
+
+    from mech.stdlib.analysis import YOUNG_THRESHOLD, relaxed_gc
+    old = gc.get_threshold()
+    try:
+        gc.set_threshold(700, *old[1:])
+        with relaxed_gc():
+            assert gc.get_threshold()[0] == YOUNG_THRESHOLD
+        assert gc.get_threshold()[0] == 700
+        with pytest.raises(ValueError), relaxed_gc():
+            raise ValueError
+        assert gc.get_threshold()[0] == 700
+    finally:
+        gc.set_threshold(*old)

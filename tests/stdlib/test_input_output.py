@@ -175,3 +175,26 @@ def test_crank_rocker_per_circuit():
         assert c.input_range == [(-180.0, 180.0)] and c.dead_centres == [] and c.transmission == (36.87, 101.54)
     d = report_data(analyze(parse_mechanism(CRANK_ROCKER)))["input_output"]
     assert [c["circuit"] for c in d["modes"][0]["circuits"]] == [1, 2]
+
+
+def test_singular_values_by_hand():
+    """One-sided Jacobi against hand values: diag(3, 2) padded by a zero column; a rank-one
+    3x2 matrix u v^T (singular values |u| |v| and 0); the rotation of (3, 4) by 90 degrees."""
+    from mech.stdlib.input_output import singular_values
+    assert singular_values([[3.0, 0.0, 0.0], [0.0, 2.0, 0.0]]) == [3.0, 2.0, 0.0]
+    sv = singular_values([[1.0 * a * b for b in (3.0, 4.0)] for a in (1.0, 2.0, 2.0)])
+    assert abs(sv[0] - 15.0) < 1e-12 and abs(sv[1]) < 1e-12
+    sv = singular_values([[0.0, -1.0], [1.0, 0.0]])
+    assert all(abs(s - 1.0) < 1e-15 for s in sv)
+
+
+def test_one_circuit_modes_not_sampled(monkeypatch):
+    """A mode with one real circuit (the exact count) is not sampled to split its circuits: the
+    four-bar with lengths 1, 1, 1 has three modes of one circuit each."""
+    import mech.stdlib.configurations as conf
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("sampled a mode with one circuit")
+    monkeypatch.setattr(conf, "circuit_split", refuse)
+    ios = _modes("ground O A 1; bar O B 1; bar B C 1; bar C A 1")
+    assert len(ios) == 3 and all(io.circuits == [] for io in ios.values())
