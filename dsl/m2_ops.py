@@ -86,14 +86,14 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return strictly_equal(a, b)
     if op == "=!=":
         return not strictly_equal(a, b)
+    if op == ":" and type(a) is int:  # n copies of anything, a symbol too
+        if a < 0:
+            raise MechRuntimeError("n : x takes n >= 0")
+        return ExprList([b] * a)
     unknown(a)
     unknown(b)
     if op == "..<":
         return ExprList(list(range(to_int(a), to_int(b))))
-    if op == ":" and type(a) is int:
-        if a < 0:
-            raise MechRuntimeError("n : x takes n >= 0")
-        return ExprList([b] * a)
     if op == "|":
         return _bar(a, b)
     if op == "||":

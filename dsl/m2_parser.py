@@ -79,7 +79,7 @@ class _Build(Transformer_NonRecursive):
     @v_args(meta=True)
     def str_lit(self, meta, c):
         text = str(c[0])[1:-1]
-        return A.StrLit(re.sub(r"\\(.)", lambda m: {"n": "\n", "t": "\t"}.get(m.group(1), m.group(1)), text),
+        return A.StrLit(re.sub(r"\\(.)", lambda m: {"n": "\n", "t": "\t", "r": "\r"}.get(m.group(1), m.group(1)), text),
                         pos=_tpos(c[0]))
 
     def exprlist(self, c):
