@@ -27,11 +27,11 @@ from .m2_modules import columns
 from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
-from .m2_ringcons import build_ring
+from .m2_ringcons import build_ring, variable_names
 from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Factored, Iterator,
-                        M2Function, M2Set, Opt, Partial, RingMap, Symbol)
+                        M2Function, M2Set, Monoid, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
 from ..kernel import Poly
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -120,6 +120,8 @@ class M2Interpreter(M2Control, Interpreter):
                 value.name = name
             self.use(value)
         elif isinstance(value, (M2Function, Iterator)) and value.name == "-*Function*-":
+            value.name = name
+        elif isinstance(value, Monoid) and not value.name:
             value.name = name
         elif isinstance(value, CoeffRing) and value.characteristic and not value.name.isidentifier():
             value.name = name
@@ -297,6 +299,8 @@ class M2Interpreter(M2Control, Interpreter):
             images = [lift_to(v, ring) if isinstance(v, (Poly, Number)) else normal(ring.poly.const(ring.poly.field(v)))
                       for v in values]
             return normal(map_value(base, images, ring.poly))
+        if getattr(base, "name", None) == "monoid" and isinstance(base, (Symbol, CommandRef)):  # monoid[x, y]
+            return Monoid(n for item in node.items for n in variable_names(item, self.eval, to_string))
         ring = build_ring(node, base, self.eval, to_string)
         self.use(ring)
         return ring

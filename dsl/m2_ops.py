@@ -50,6 +50,19 @@ def unknown(v: Any) -> None:
                             f"the current ring)")
 
 
+def _tensor(a: Matrix, b: Matrix) -> Matrix:
+    """``a ** b``: the tensor (Kronecker) product, entry (i r + k, j s + l) = a_ij b_kl."""
+    if a.ring is not b.ring:
+        b = Matrix(a.ring, b.nrows, b.ncols, [lift_to(p, a.ring.owner) for p in b.entries]) \
+            if isinstance(getattr(a.ring, "owner", None), M2Ring) else b
+    if a.ring is not b.ring:
+        raise MechTypeError("a ** b: the matrices are over different rings")
+    r, s = b.nrows, b.ncols
+    return Matrix(a.ring, a.nrows * r, a.ncols * s, [a.entries[i * a.ncols + j] * b.entries[k * s + m]
+                                                     for i in range(a.nrows) for k in range(r)
+                                                     for j in range(a.ncols) for m in range(s)])
+
+
 def strictly_equal(a: Any, b: Any) -> bool:
     """``a === b``: the same value of the same type (rings: the same ring; ideals: the same generators)."""
     if isinstance(a, bool) or isinstance(b, bool):
@@ -122,10 +135,14 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return rows(a, [to_int(i) for i in b.items])
     if op == "/" and isinstance(a, FreeModule):
         return quotient_module(a, b)
+    if op in ("==", "!=") and isinstance(a, M2Ring) and b == 0 and type(b) is int:  # R == 0: the zero ring
+        return normal(a.poly.one()).is_zero() == (op == "==")
     if op in ("==", "!=") and isinstance(a, FreeModule) and isinstance(b, FreeModule):
         return (a == b) == (op == "==")
     if op in ("==", "!=") and isinstance(a, Module) and isinstance(b, Module):
         return a.same(b) == (op == "==")
+    if op == "**" and isinstance(a, Matrix) and isinstance(b, Matrix):
+        return _tensor(a, b)
     if op == "**" and isinstance(b, M2Ring) and isinstance(a, (Poly, Ideal, Matrix)):
         return _base_change(a, b)
     if op in ("//", "%") and any(is_integral(getattr(v, "ring", None)) for v in (a, b)):

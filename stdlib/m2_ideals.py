@@ -557,9 +557,11 @@ def coefficient_ring(R: Ring) -> Any:
 
 @command("baseName", dialect="m2")
 @in_quotients
-def base_name(x: Poly) -> Any:
-    """baseName x: the symbol of a variable."""
+def base_name(x: Any) -> Any:
+    """baseName x: the symbol of a variable (a symbol itself)."""
     from ..dsl.m2_values import Symbol
+    if isinstance(x, Symbol):
+        return x
     i = _indices(x.ring, x)[0]
     return Symbol(x.ring.names[i])
 
