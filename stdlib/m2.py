@@ -104,9 +104,20 @@ def ideal(ctx, *args: Any) -> Ideal:
         args = (args[0].matrix,)
     if len(args) == 1 and isinstance(args[0], str):  # ideal "x2,y": Macaulay's classic notation
         args = tuple(ctx.eval_text(_classic(part)) for part in args[0].split(","))
-    ring = _first_ring(args) or ctx.basering().poly
+    ring = _first_ring(args) or _integers_or_basering(ctx, args)
     polys = _polys(ctx, args, ring)
     return Ideal(ring, polys, is_std=not polys)
+
+
+def _integers_or_basering(ctx, items: Any) -> Any:
+    """The ring of values with none of their own: ZZ's for integers when no ring is in use (as
+    Macaulay2's ``matrix {{1, 2}}``, ``ideal 7``), else the ring in use."""
+    def ints(v: Any) -> bool:
+        return all(ints(x) for x in v.items) if isinstance(v, (List, ExprList)) else type(v) is int
+    if ctx.ring is None and all(ints(v) for v in items):
+        from ..dsl.m2_rings import integers
+        return integers().poly
+    return ctx.basering().poly
 
 
 _CLASSIC = re.compile(r"\s*(?:(\d+)|([A-Za-z])(\d*)|([-+*/^()]))")
@@ -139,9 +150,16 @@ def _classic(text: str) -> str:
 
 @command("matrix", dialect="m2")
 @in_quotients
+def matrix_of_element(ctx, f: int | Poly) -> Matrix:
+    """matrix f: the 1 x 1 matrix of a ring element (an integer: over ZZ when no ring is in use)."""
+    return matrix(ctx, List([List([f])]))
+
+
+@command("matrix", dialect="m2")
+@in_quotients
 def matrix(ctx, rows: List) -> Matrix:
     """matrix {{a, b}, {c, d}}: the matrix with these rows."""
-    ring = _first_ring(rows.items) or ctx.basering().poly
+    ring = _first_ring(rows.items) or _integers_or_basering(ctx, rows.items)
     entries = [_polys(ctx, (r,), ring) for r in rows.items]
     if not entries or any(len(r) != len(entries[0]) for r in entries) or not isinstance(rows.items[0], List):
         raise MechRuntimeError("matrix takes a list of rows of equal length: matrix {{a, b}, {c, d}}")
