@@ -110,11 +110,12 @@ def ideal(ctx, *args: Any) -> Ideal:
 
 
 def _integers_or_basering(ctx, items: Any) -> Any:
-    """The ring of values with none of their own: ZZ's for integers when no ring is in use (as
-    Macaulay2's ``matrix {{1, 2}}``, ``ideal 7``), else the ring in use."""
+    """The ring of values with none of their own: ZZ's for integers (as Macaulay2's ``matrix {{1, 2}}``,
+    ``ideal 7``) when no ring is in use or the ring in use has a positive characteristic (where
+    its arithmetic would differ), else the ring in use (whose elements they stand for)."""
     def ints(v: Any) -> bool:
         return all(ints(x) for x in v.items) if isinstance(v, (List, ExprList)) else type(v) is int
-    if ctx.ring is None and all(ints(v) for v in items):
+    if (ctx.ring is None or ctx.ring.poly.field.characteristic) and all(ints(v) for v in items):
         from ..dsl.m2_rings import integers
         return integers().poly
     return ctx.basering().poly
