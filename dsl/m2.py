@@ -417,6 +417,8 @@ class M2Interpreter(M2Control, Interpreter):
             return self._truth(self.eval(node.left)) and self._truth(self.eval(node.right))
         if node.op == "or":
             return self._truth(self.eval(node.left)) or self._truth(self.eval(node.right))
+        if node.op == "||":  # Macaulay2's || joins matrices (and lists) one above the other
+            return self._binary("||", self.eval(node.left), self.eval(node.right))
         return super()._eval_binop(node)
 
     def _eval_unop(self, node: A.UnOp) -> Any:

@@ -51,7 +51,7 @@ def promote(v: Any, S: M2Ring) -> Any:
 def _from_integers(v: Any, S: M2Ring) -> Any:
     one = S.poly.one()
     out = [normal(one * int(p.lc().p)) if not p.is_zero() else S.poly.zero()
-           for p in (v.gens if isinstance(v, Ideal) else v.entries)]
+           for p in (v.nonzero() if isinstance(v, Ideal) else v.entries)]
     return Ideal(S.poly, out, is_std=not out) if isinstance(v, Ideal) else Matrix(S.poly, v.nrows, v.ncols, out)
 
 

@@ -1,7 +1,8 @@
 """Monoids in the Macaulay2 dialect: ``monoid[x, y]`` (built by the interpreter), ``monoid R``, and
-``vars``, ``gens``/``generators`` and ``numgens`` of a monoid (its variables as symbols)."""
+``vars``, ``gens``/``generators`` and ``numgens`` of a monoid (its variables as symbols); ``toField``."""
 from __future__ import annotations
 
+from ..dsl.m2_rings import in_quotients
 from ..dsl.m2_values import Monoid, Symbol
 from ..dsl.registry import command
 from ..dsl.values import List, Ring
@@ -41,3 +42,11 @@ def generators_monoid(M: Monoid) -> List:
 def numgens_monoid(M: Monoid) -> int:
     """numgens M: the number of the monoid's variables."""
     return len(M.names)
+
+
+@command("toField", dialect="m2")
+@in_quotients
+def to_field(R: Ring) -> Ring:
+    """toField R: R (a quotient ring the user knows is a field) to be used as a field: mech's
+    towers over R/I compute in the flattened ring, which needs no mark."""
+    return R
