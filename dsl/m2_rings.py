@@ -253,6 +253,8 @@ def degree_vectors(ring: M2Ring) -> list[tuple[int, ...]]:
         width = 1 + (len(below[0]) if below else 1)
         own = [(d,) + (0,) * (width - 1) for d in ring.degrees[:len(ring.own)]]
         return own + [(0,) + v for v in below]
+    if "multidegrees" in ring.ambient().info:  # R/I: R's
+        return list(ring.ambient().info["multidegrees"])
     return [(d,) for d in (ring.degrees or (1,) * ring.poly.nvars)]
 
 

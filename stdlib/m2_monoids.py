@@ -2,10 +2,12 @@
 ``vars``, ``gens``/``generators`` and ``numgens`` of a monoid (its variables as symbols); ``toField``."""
 from __future__ import annotations
 
+from typing import Any
+
 from ..dsl.m2_rings import in_quotients
 from ..dsl.m2_values import Monoid, Symbol
 from ..dsl.registry import command
-from ..dsl.values import List, Ring
+from ..dsl.values import NONE, List, Ring
 
 
 @command("monoid", dialect="m2")
@@ -50,3 +52,15 @@ def to_field(R: Ring) -> Ring:
     """toField R: R (a quotient ring the user knows is a field) to be used as a field: mech's
     towers over R/I compute in the flattened ring, which needs no mark."""
     return R
+
+
+@command("heft", dialect="m2")
+def heft(R: Ring) -> Any:
+    """heft R: the heft vector of R's degrees (a list w with w . d > 0 for each variable's degree d;
+    {1} for a singly graded ring with positive degrees; null when there is none)."""
+    from ..dsl.m2_rings import degree_vectors
+    from ..dsl.m2_ringcons import heft as find_heft
+    owner = getattr(R.poly, "owner", None) or R
+    vecs = degree_vectors(owner)
+    w = find_heft(vecs) if vecs else (1,)
+    return List(list(w)) if w is not None else NONE
