@@ -16,7 +16,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_local import LocalFraction, local_ideal_is_unit, local_ideals_equal, localized_at
-from ..dsl.m2_modules import with_default_degrees
+from ..dsl.m2_modules import Map, with_default_degrees
 from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, is_integral, multidegree, normal, owner, promote, promotes
 from ..dsl.m2_submodules import Module
@@ -570,7 +570,9 @@ def equal(a: Any, b: Any) -> bool:
         return getattr(a.ring, "owner", b) is b and _is_unit(a)
     if isinstance(a, Ideal) and type(b) is int and b in (0, 1):
         return _is_unit(a) if b == 1 else not _gb(a).nonzero()
-    if isinstance(a, Matrix) and isinstance(b, Matrix):  # entry by entry (maps of any degrees)
+    if isinstance(a, Matrix) and isinstance(b, Matrix):  # entry by entry, maps between the same free modules
+        if isinstance(a, Map) and isinstance(b, Map) and (a.target != b.target or a.source != b.source):
+            return False
         return a.ring is b.ring and a.shape == b.shape and a.entries == b.entries
     if isinstance(a, Matrix) and type(b) is int and b == 0:
         return all(p.is_zero() for p in a.entries)
