@@ -440,9 +440,15 @@ def codim(I: Ideal | Ring) -> int:
 
 
 @command("degree", dialect="m2")
-def degree(I: Ideal | Poly) -> Any:
+@in_quotients
+def degree(I: Ideal | Poly | Ring) -> Any:
     """degree I: the degree of R/I (from the leading monomials of a Gröbner basis); degree f: the
-    list of its degree (``{3}``: the largest degree of its terms, by the ring's degrees)."""
+    list of its degree (``{3}``: the largest degree of its terms, by the ring's degrees); degree R
+    of a quotient ring A/J: the degree of J."""
+    if isinstance(I, Ring):
+        return degree(ideal(None, I))  # ideal R needs no interpreter
+    if isinstance(I, Ideal) and _quotient_of(I.ring) is not None:
+        raise MechRuntimeError("degree on elements of a quotient ring R/I is not supported by mech")
     if isinstance(I, Poly):
         if I.is_zero():
             raise MechRuntimeError("degree of the zero polynomial: -infinity (not a value of mech)")
