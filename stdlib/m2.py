@@ -159,12 +159,38 @@ def matrix_of_element(ctx, f: int | Poly) -> Matrix:
 @command("matrix", dialect="m2")
 @in_quotients
 def matrix(ctx, rows: List) -> Matrix:
-    """matrix {{a, b}, {c, d}}: the matrix with these rows."""
+    """matrix {{a, b}, {c, d}}: the matrix with these rows (entries that are matrices: blocks,
+    with 0 for a zero block)."""
+    if any(isinstance(x, Matrix) for r in rows.items if isinstance(r, List) for x in r.items):
+        return _blocks(rows)
     ring = _first_ring(rows.items) or _integers_or_basering(ctx, rows.items)
     entries = [_polys(ctx, (r,), ring) for r in rows.items]
     if not entries or any(len(r) != len(entries[0]) for r in entries) or not isinstance(rows.items[0], List):
         raise MechRuntimeError("matrix takes a list of rows of equal length: matrix {{a, b}, {c, d}}")
     return with_default_degrees(Matrix(ring, len(entries), len(entries[0]), [p for r in entries for p in r]))
+
+
+def _blocks(rows: List) -> Matrix:
+    """matrix {{f, g}, {h, 0}} of matrices: the block matrix (a block 0: zeros of its row's height
+    and its column's width)."""
+    grid = [r.items if isinstance(r, List) else None for r in rows.items]
+    if any(r is None or len(r) != len(grid[0]) for r in grid):
+        raise MechRuntimeError("matrix takes a list of rows of equal length: matrix {{f, g}, {h, 0}}")
+    mats = [x for r in grid for x in r if isinstance(x, Matrix)]
+    ring = mats[0].ring
+    if any(not (isinstance(x, Matrix) and x.ring is ring) and x != 0 for r in grid for x in r):
+        raise MechRuntimeError("matrix {{f, g}, ...} of matrices takes matrices of one ring (or 0)")
+    heights = [next((x.nrows for x in r if isinstance(x, Matrix)), None) for r in grid]
+    widths = [next((r[j].ncols for r in grid if isinstance(r[j], Matrix)), None) for j in range(len(grid[0]))]
+    if None in heights or None in widths or any(isinstance(x, Matrix) and (x.nrows, x.ncols) != (heights[i], widths[j])
+                                                for i, r in enumerate(grid) for j, x in enumerate(r)):
+        raise MechRuntimeError("matrix {{f, g}, ...}: the blocks of a row (a column) need as many rows (columns)")
+    out = []
+    for i, r in enumerate(grid):
+        for k in range(heights[i]):
+            for j, x in enumerate(r):
+                out.extend(x.entries[k * x.ncols:(k + 1) * x.ncols] if isinstance(x, Matrix) else [ring.zero()] * widths[j])
+    return with_default_degrees(Matrix(ring, sum(heights), sum(widths), out))
 
 
 def _gb(I: Ideal) -> Ideal:
