@@ -76,4 +76,5 @@ def ring_presentation(R: M2Ring) -> Matrix:
 def annihilator_element(f: Poly) -> Ideal:
     """annihilator f: the ideal of the elements r with r f = 0 (0 : f; in R/Q: (Q : f) in R/Q)."""
     from .m2 import quotient
-    return quotient(Ideal(f.ring, []), f)
+    out = quotient(Ideal(f.ring, []), f)
+    return out if out.nonzero() else Ideal(f.ring, [], is_std=True)
