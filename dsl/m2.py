@@ -23,7 +23,7 @@ from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, Hash
 from .m2_control import M2Control
 from .m2_local import LocalFraction, local_ring, localized_at
 from .m2_maps import apply_map
-from .m2_modules import columns
+from .m2_modules import columns, with_default_degrees
 from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
@@ -249,7 +249,8 @@ class M2Interpreter(M2Control, Interpreter):
     def _eval_dot(self, node: Dot) -> Any:
         fields = getattr(self.eval(node.base), "m2_fields", None)  # C.dd of a resolution
         if fields is not None and node.field in fields:
-            return fields[node.field]
+            v = fields[node.field]  # a matrix gets Macaulay2's default degrees (F.matrix)
+            return with_default_degrees(v) if type(v) is Matrix else v
         raise MechRuntimeError(f"the operator . (fields such as .{node.field}) is not supported")
 
     def _eval_length(self, node: Length) -> int:

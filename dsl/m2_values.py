@@ -129,8 +129,7 @@ class RingMap:
     @property
     def m2_fields(self) -> dict[str, Any]:
         """``F.matrix``: the one-row matrix of the images."""
-        from .m2_modules import with_default_degrees
-        return {"matrix": with_default_degrees(Matrix(self.target.poly, 1, len(self.images), list(self.images)))}
+        return {"matrix": Matrix(self.target.poly, 1, len(self.images), list(self.images))}
 
 
 @dataclass(eq=False)

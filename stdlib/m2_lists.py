@@ -20,6 +20,7 @@ from ..dsl.m2_rings import in_quotients, is_integral
 from ..dsl.m2_values import FUNCTIONS, Array, Iterator, M2Set, Symbol, Tally
 from ..dsl.registry import command
 from ..dsl.values import NONE, ExprList, Ideal, List, Matrix, Number, typeof
+from .m2_regex import regex_select
 from ..kernel import Poly
 
 #: the packages whose functions the dialect has (needsPackage accepts them)
@@ -136,9 +137,8 @@ def scan(ctx, L: Seq | int, f: Any) -> None:
 def select(ctx, L: Seq | int, f: Any, g: Any = None) -> Any:
     """select(L, f): the entries x with f(x) true; select(n, L, f): the first n of them;
     select(n, f): the integers 0 <= i < n with f(i) true; select(re, s) and select(re, t, s) on
-    strings: the matches of a regular expression (:func:`mech.stdlib.m2_strings.regex_select`)."""
+    strings: the matches of a regular expression (:func:`mech.stdlib.m2_regex.regex_select`)."""
     if isinstance(L, str) and isinstance(f, str):
-        from .m2_strings import regex_select
         return regex_select(L, g, f) if g is not None else regex_select(L, f)
     if type(L) is int and g is None:
         _fn(f)
