@@ -28,7 +28,10 @@ output mode (``M2_MODE``) printing ``toString`` of the same statements, and judg
 when it differs from its own, Macaulay2 reads mech's text back in the value's ring and compares the
 values: ideals as ideals, lists of ideals as sets (or as primary decompositions: as many primary
 ideals with the same radicals and intersection), modules as subquotients of R^n (the degrees
-``toString`` does not show forgotten), other lists entry by entry, other values with ``==``.
+``toString`` does not show forgotten), other lists entry by entry, other values with ``==``; in a
+case listing a hash table (calling ``set``, ``keys`` or ``values``: ``HASH_ORDER``) a list also
+agrees with the same elements in another order (Macaulay2's order there is its hash order).  A
+function (or an iterator) agrees with a function: Macaulay2 prints where its code is in its files.
 ``print`` prints ``toString`` in both.  A case *agrees* when every value and printed line agrees
 and mech runs to the end without error (in a TEST: every ``assert`` holds).  Otherwise it
 *differs* (a value Macaulay2 judges different, a value printed by one system only, a failed
@@ -62,6 +65,10 @@ REPORT = HERE / "M2_EXAMPLES.md"
 OUT_CLASSES = {"ChainComplex", "ChainComplexMap", "GradedModule", "GradedModuleMap", "CoherentSheaf",
                "ProjectiveVariety", "AffineVariety", "RealField", "ComplexField", "RR", "CC", "MutableHashTable",
                "HashTable", "CacheTable", "MutableMatrix", "GaloisField", "Time"}
+#: a case calling one of these lists a hash table's elements in Macaulay2's hash order, which is not
+#: part of the value: its lists are compared as sets (``toList set {3,1,2}``, ``keys``, ``values``)
+HASH_ORDER = {"set", "keys", "values"}
+AGREE = ("same", "equal", "equivalent", "as a set", "a function")
 STATUSES = ("agree", "differ", "unsupported", "error", "crash", "timeout")
 
 
@@ -85,7 +92,9 @@ SEP, FS = "\x1d", "\x1f"  # a record of Macaulay2's output mode is SEP fields jo
 #: Macaulay2's output mode for the runner: for each top-level value its class, and for a printed
 #: one its toString and the verdict on mech's text for the same statement (mechOut): "same" text,
 #: "equal" values, "equivalent" primary decompositions (as many primary ideals, the same radicals
-#: and intersection: embedded components are not unique), "differ", "unreadable", "missing"
+#: and intersection: embedded components are not unique), "as a set" (the same elements in another
+#: order, in a case that lists a hash table: HASH_ORDER), "a function" (Macaulay2 shows a function's
+#: place in its own sources, -*Function[file:line]*-, mech -*Function*-), "differ", "unreadable", "missing"
 M2_MODE = r"""
 mechEmit = L -> (<< "\035" << demark("\037", L) << "\035" << endl;);
 mechRing = x -> (
@@ -133,10 +142,13 @@ mechVerdict = x -> (
     if not mechOut#?lineNumber then return "missing";
     t := mechOut#lineNumber;
     if t == toString x then return "same";
+    if match("^-\\*Function", toString x) and match("^-\\*Function\\*-$", t) then return "a function";
     y := try mechRead(x, t) else mechUnreadable;
     if y === mechUnreadable then "unreadable"
     else if (try mechSame(x, y) else false) then "equal"
-    else if (try mechDecomposition(x, y) else false) then "equivalent" else "differ");
+    else if (try mechDecomposition(x, y) else false) then "equivalent"
+    else if mechHashOrder and (try mechSet(x, y) else false) then "as a set" else "differ");
+mechSet = (x, y) -> instance(x, List) and instance(y, List) and #x == #y and set x === set y;
 Thing#{MechRunner,Print} = x -> mechEmit {"V", toString lineNumber, toString class x, toString x, mechVerdict x};
 Thing#{MechRunner,NoPrint} = x -> mechEmit {"K", toString lineNumber, toString class x};
 Nothing#{MechRunner,Print} = Nothing#{MechRunner,NoPrint} = identity;
@@ -213,7 +225,8 @@ def run_m2(case: Case, mech_values: dict[int, str], timeout: float, tmp: str) ->
     table = ", ".join(f"{n} => {m2_string(t)}" for n, t in sorted(mech_values.items()))
     pre = Path(tmp) / "mode.m2"
     load = f'needsPackage "{case.package}";\n' if case.package else ""
-    pre.write_text(f"{load}mechOut = new HashTable from {{{table}}};\n{M2_MODE}")
+    hashed = "true" if HASH_ORDER & {t for _, t in tokens(case.code)} else "false"
+    pre.write_text(f"{load}mechOut = new HashTable from {{{table}}};\nmechHashOrder = {hashed};\n{M2_MODE}")
     cmd = [M2, "-q", "--silent", "--no-prompts", "--stop", "--no-randomize", "-e", f'load "{pre}"']
     rc, out, err, secs, timed_out = run(cmd, case.code + "\n", timeout, tmp)
     values: dict[int, tuple[str, str]] = {}
@@ -347,8 +360,8 @@ def classify(case: Case, mech: dict, m2: dict, info: dict) -> Result:
         return res
     verdicts = {n: v for n, (_, v) in m2["values"].items()}
     res.values = len(mech["values"])
-    res.agreed = sum(v in ("same", "equal", "equivalent") for v in verdicts.values())
-    res.as_values = sum(v in ("equal", "equivalent") for v in verdicts.values())
+    res.agreed = sum(v in AGREE for v in verdicts.values())
+    res.as_values = sum(v in AGREE[1:] for v in verdicts.values())
     wrong = [(n, v) for n, v in sorted(verdicts.items()) if v in ("differ", "unreadable")]
     extra = sorted(set(mech["values"]) - set(verdicts))
     finished = mech["rc"] == 0 and not mech["timeout"]
@@ -445,7 +458,7 @@ def report(results: list[Result], meta: dict) -> str:
         "Produced by `python benchmarks/m2_examples.py --src SRC --write` (selection, running and comparison: "
         "the docstring of benchmarks/m2_examples.py).  A case is a doc node's examples or a TEST block.  "
         "*agree*: every value Macaulay2 prints, mech prints (as text, or as a value Macaulay2 judges equal: "
-        "ideals as ideals, lists of ideals as sets); *differ*: a value Macaulay2 judges different, a value "
+        "ideals as ideals, lists of ideals as sets, lists of a hash table's elements as sets); *differ*: a value Macaulay2 judges different, a value "
         "printed by one system only, a failed assertion; *unsupported*: mech stops on a construct it lacks "
         "(ranked below); *error*: another mech error; *crash*: an internal error.", "",
         f"- date: {meta['date']}; full run {meta['seconds']:.0f} s with {meta['jobs']} jobs, time-out {meta['timeout']:g} s",

@@ -23,15 +23,15 @@ from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, Hash
 from .m2_control import M2Control
 from .m2_local import LocalFraction, local_ring, localized_at
 from .m2_maps import apply_map
-from .m2_modules import columns
+from .m2_modules import columns, with_default_degrees
 from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
-from .m2_ringcons import build_ring
+from .m2_ringcons import build_ring, variable_names
 from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Factored, Iterator,
-                        M2Function, M2Set, Opt, Partial, RingMap, Symbol)
+                        M2Function, M2Set, Monoid, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
 from ..kernel import Poly
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -120,6 +120,8 @@ class M2Interpreter(M2Control, Interpreter):
                 value.name = name
             self.use(value)
         elif isinstance(value, (M2Function, Iterator)) and value.name == "-*Function*-":
+            value.name = name
+        elif isinstance(value, Monoid) and not value.name:
             value.name = name
         elif isinstance(value, CoeffRing) and value.characteristic and not value.name.isidentifier():
             value.name = name
@@ -247,7 +249,8 @@ class M2Interpreter(M2Control, Interpreter):
     def _eval_dot(self, node: Dot) -> Any:
         fields = getattr(self.eval(node.base), "m2_fields", None)  # C.dd of a resolution
         if fields is not None and node.field in fields:
-            return fields[node.field]
+            v = fields[node.field]  # a matrix gets Macaulay2's default degrees (F.matrix)
+            return with_default_degrees(v) if type(v) is Matrix else v
         raise MechRuntimeError(f"the operator . (fields such as .{node.field}) is not supported")
 
     def _eval_length(self, node: Length) -> int:
@@ -297,6 +300,8 @@ class M2Interpreter(M2Control, Interpreter):
             images = [lift_to(v, ring) if isinstance(v, (Poly, Number)) else normal(ring.poly.const(ring.poly.field(v)))
                       for v in values]
             return normal(map_value(base, images, ring.poly))
+        if getattr(base, "name", None) == "monoid" and isinstance(base, (Symbol, CommandRef)):  # monoid[x, y]
+            return Monoid(n for item in node.items for n in variable_names(item, self.eval, to_string))
         ring = build_ring(node, base, self.eval, to_string)
         self.use(ring)
         return ring
@@ -413,6 +418,8 @@ class M2Interpreter(M2Control, Interpreter):
             return self._truth(self.eval(node.left)) and self._truth(self.eval(node.right))
         if node.op == "or":
             return self._truth(self.eval(node.left)) or self._truth(self.eval(node.right))
+        if node.op == "||":  # Macaulay2's || joins matrices (and lists) one above the other
+            return self._binary("||", self.eval(node.left), self.eval(node.right))
         return super()._eval_binop(node)
 
     def _eval_unop(self, node: A.UnOp) -> Any:

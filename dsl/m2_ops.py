@@ -14,7 +14,7 @@ from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, Map, quotient_module, rows, scaled
 from .m2_submodules import Module
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
-from .m2_values import FUNCTIONS, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
+from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
 #: Macaulay2 symbols mech knows (option names and monomial orders)
@@ -48,6 +48,34 @@ def unknown(v: Any) -> None:
     if isinstance(v, Symbol) and v.name not in SYMBOLS:
         raise MechNameError(f"unknown identifier '{v.name}' (a symbol without a value: not a variable of "
                             f"the current ring)")
+
+
+def _tensor(a: Matrix, b: Matrix) -> Matrix:
+    """``a ** b``: the tensor (Kronecker) product, entry (i r + k, j s + l) = a_ij b_kl."""
+    if a.ring is not b.ring:
+        b = Matrix(a.ring, b.nrows, b.ncols, [lift_to(p, a.ring.owner) for p in b.entries]) \
+            if isinstance(getattr(a.ring, "owner", None), M2Ring) else b
+    if a.ring is not b.ring:
+        raise MechTypeError("a ** b: the matrices are over different rings")
+    r, s = b.nrows, b.ncols
+    return Matrix(a.ring, a.nrows * r, a.ncols * s, [a.entries[i * a.ncols + j] * b.entries[k * s + m]
+                                                     for i in range(a.nrows) for k in range(r)
+                                                     for j in range(a.ncols) for m in range(s)])
+
+
+def _frobenius(I: Ideal, e: Array) -> Ideal:
+    """``I^[e1, ..., en]``: the ideal of I's generators with each own variable x_i of the ring
+    replaced by x_i^e_i (``I^[e]``: the same e for all)."""
+    R = getattr(I.ring, "owner", None)
+    n = len(R.own) if R is not None and R.own else I.ring.nvars
+    exps = [to_int(k) for k in e.items]
+    if any(k < 0 for k in exps) or len(exps) not in (1, n):
+        raise MechRuntimeError(f"I^[...] takes one exponent >= 0 or one per variable ({n})")
+    exps = exps * n if len(exps) == 1 else exps
+    scale = exps + [1] * (I.ring.nvars - n)
+    gens = [normal(Poly(I.ring, {tuple(k * s for k, s in zip(t, scale)): c for t, c in g.terms.items()}))
+            for g in I.gens]
+    return Ideal(I.ring, [g for g in gens if not g.is_zero()])
 
 
 def strictly_equal(a: Any, b: Any) -> bool:
@@ -86,14 +114,14 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return strictly_equal(a, b)
     if op == "=!=":
         return not strictly_equal(a, b)
+    if op == ":" and type(a) is int:  # n copies of anything, a symbol too
+        if a < 0:
+            raise MechRuntimeError("n : x takes n >= 0")
+        return ExprList([b] * a)
     unknown(a)
     unknown(b)
     if op == "..<":
         return ExprList(list(range(to_int(a), to_int(b))))
-    if op == ":" and type(a) is int:
-        if a < 0:
-            raise MechRuntimeError("n : x takes n >= 0")
-        return ExprList([b] * a)
     if op == "|":
         return _bar(a, b)
     if op == "||":
@@ -118,14 +146,20 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return quotient_ring(a, _relations(a, b))
     if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):
         return free_module(a, b)
+    if op == "^" and isinstance(a, Ideal) and isinstance(b, Array):
+        return _frobenius(a, b)
     if op == "^" and isinstance(a, Matrix) and isinstance(b, List):  # M^{i, ...}: rows
         return rows(a, [to_int(i) for i in b.items])
     if op == "/" and isinstance(a, FreeModule):
         return quotient_module(a, b)
+    if op in ("==", "!=") and isinstance(a, M2Ring) and b == 0 and type(b) is int:  # R == 0: the zero ring
+        return normal(a.poly.one()).is_zero() == (op == "==")
     if op in ("==", "!=") and isinstance(a, FreeModule) and isinstance(b, FreeModule):
         return (a == b) == (op == "==")
     if op in ("==", "!=") and isinstance(a, Module) and isinstance(b, Module):
         return a.same(b) == (op == "==")
+    if op == "**" and isinstance(a, Matrix) and isinstance(b, Matrix):
+        return _tensor(a, b)
     if op == "**" and isinstance(b, M2Ring) and isinstance(a, (Poly, Ideal, Matrix)):
         return _base_change(a, b)
     if op in ("//", "%") and any(is_integral(getattr(v, "ring", None)) for v in (a, b)):

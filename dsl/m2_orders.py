@@ -45,8 +45,8 @@ def order_blocks(spec: Any, n: int, degrees: Sequence[int] = ()) -> list[OrderBl
             kind, size, weights = "GRevLex", item, None
         elif key in _KINDS:
             kind, weights = key, None
-            if isinstance(item.value, List):
-                weights = list(item.value.items)
+            if isinstance(item.value, List):  # {6:1} too: sequences spliced
+                weights = [w for x in item.value.items for w in (x.items if isinstance(x, ExprList) else [x])]
                 size = len(weights)
             else:
                 size = item.value

@@ -79,7 +79,7 @@ class _Build(Transformer_NonRecursive):
     @v_args(meta=True)
     def str_lit(self, meta, c):
         text = str(c[0])[1:-1]
-        return A.StrLit(re.sub(r"\\(.)", lambda m: {"n": "\n", "t": "\t"}.get(m.group(1), m.group(1)), text),
+        return A.StrLit(re.sub(r"\\(.)", lambda m: {"n": "\n", "t": "\t", "r": "\r"}.get(m.group(1), m.group(1)), text),
                         pos=_tpos(c[0]))
 
     def exprlist(self, c):
@@ -265,9 +265,16 @@ def _parser() -> Lark:
                 postlex=_Lines(), lexer="contextual")
 
 
+#: a line holding only ``end`` (the end of the input for Macaulay2's reader)
+_END = re.compile(r"^[ \t]*end[ \t]*(?:--.*)?$", re.M)
+
+
 def parse(text: str, source: Optional[Source] = None) -> A.Program:
     """The program tree of Macaulay2 code ``text``; raises :class:`MechSyntaxError` located in ``source``."""
     source = source or Source("<string>", text)
+    end = _END.search(text)
+    if end is not None:  # a line `end`: Macaulay2 reads no further
+        text = text[:end.start()]
     try:
         return build(_Build(), _parser().parse(text), source)
     except UnexpectedCharacters as e:

@@ -17,7 +17,7 @@ from .m2_local import LocalFraction
 from .m2_modules import CyclicModule, FreeModule
 from .m2_submodules import BettiTally, ChainComplex, Module, betti_to_string
 from .m2_rings import TEXT, tower_terms
-from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, Iterator, M2Function, M2Set,
+from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, Iterator, M2Function, M2Set, Monoid,
                         MonomialIdeal, Opt, Partial, RingMap, Symbol, Tally)
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring
 
@@ -100,6 +100,8 @@ def to_string(v: Any) -> str:
         return f"{to_string(v.key)} => {to_string(v.value)}"
     if isinstance(v, (Symbol, IndexedTable, Iterator)):
         return v.name
+    if isinstance(v, Monoid):
+        return v.name or f"monoid[{', '.join(v.names)}]"
     if isinstance(v, M2Set):  # in the order Macaulay2 shows small sets: numbers by value, others by text
         texts = sorted(((0, x, "") if type(x) is int else (1, 0, to_string(x)) for x in v.items))
         return "set {" + ", ".join(str(n) if k == 0 else t for k, n, t in texts) + "}"

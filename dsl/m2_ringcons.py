@@ -4,7 +4,7 @@
 ``ZZ/p`` or another ring: a tower)."""
 from __future__ import annotations
 
-from typing import Any, Callable
+from typing import Any, Callable, Optional
 
 from . import ast as A
 from .errors import MechRuntimeError, MechSyntaxError, MechTypeError
@@ -36,35 +36,58 @@ def build_ring(node: RingCons, base: Any, evaluate: Callable[[A.Expr], Any], sho
             names.extend(variable_names(item, evaluate, show))
     if not names or len(set(names)) != len(names):
         raise MechRuntimeError("a ring needs distinct variables: QQ[x,y,z]")
-    degrees = _degrees(options.get("Degrees"), len(names))
+    degrees, graded = _degrees(options.get("Degrees"), len(names))
     spec = options.get("MonomialOrder", Symbol("GRevLex"))
     if "Weights" in options:
         spec = List([Opt(Symbol("Weights"), options["Weights"])] + list(spec.items if isinstance(spec, List) else [spec]))
     blocks = order_blocks(spec, len(names), degrees)
     size = options.get("MonomialSize")
     ring = polynomial_ring(base, names, blocks, degrees, (2 ** (to_int(size) - 1)) if size is not None else None)
+    if graded is not None:  # several degree components, or degrees not positive: Macaulay2's own, kept
+        ring.info["multidegrees"] = graded
     want = options.get("Global", True)
     if want is not ring.poly.order.is_global:
         raise MechRuntimeError(f"the monomial order is not {'global' if want else 'local'} (Global => {show(want)})")
     return ring
 
 
-def _degrees(spec: Any, n: int) -> tuple[int, ...]:
+def _degrees(spec: Any, n: int) -> tuple[tuple[int, ...], Optional[list[tuple[int, ...]]]]:
+    """(the positive degrees the monomial order weighs variables by, Macaulay2's degree vectors
+    when they are not these: several components or a degree <= 0; None otherwise).  The weights
+    are the degrees' products with Macaulay2's heft vector (:func:`heft`), else all 1."""
     if spec is None:
-        return ()
-    items = spec.items if isinstance(spec, List) else None
-    out = []
+        return (), None
+    items = _spliced(spec.items) if isinstance(spec, List) else None
+    vecs = []
     for d in items or []:
-        if isinstance(d, List) and len(d.items) == 1:
-            d = d.items[0]
-        if isinstance(d, List):
-            raise MechRuntimeError("multigraded rings (Degrees => {{...}, ...}) are not supported by mech")
-        if type(d) is not int or d <= 0:
-            raise MechRuntimeError("Degrees => {...} takes positive integers (one degree per variable)")
-        out.append(d)
-    if items is None or len(out) != n:
-        raise MechRuntimeError(f"Degrees => {{...}} takes {n} positive integers, one per variable")
-    return tuple(out)
+        d = d.items if isinstance(d, List) else [d]
+        if not d or not all(type(k) is int for k in d):
+            raise MechRuntimeError("Degrees => {...} takes integers or lists of integers (one per variable)")
+        vecs.append(tuple(d))
+    if items is None or len(vecs) != n or len({len(v) for v in vecs}) > 1:
+        raise MechRuntimeError(f"Degrees => {{...}} takes {n} degrees, one per variable, of one length")
+    if all(len(v) == 1 and v[0] > 0 for v in vecs):
+        return tuple(v[0] for v in vecs), None
+    w = heft(vecs)
+    weights = tuple(sum(a * b for a, b in zip(w, v)) for v in vecs) if w is not None else (1,) * n
+    return weights, vecs
+
+
+def _spliced(items: list) -> list:
+    return [x for item in items for x in (_spliced(item.items) if isinstance(item, ExprList) else [item])]
+
+
+def heft(vecs: list[tuple[int, ...]]) -> Optional[tuple[int, ...]]:
+    """A heft vector of the degrees: w with w . d > 0 for every degree d, the first by increasing
+    sum of nonnegative entries, then decreasing lexicographically (as Macaulay2 chooses for small
+    gradings: {1, 0}, {1, 1}, {1, 2}); None when none has entries up to 8."""
+    from itertools import product
+    k = len(vecs[0])
+    for total in range(1, 9):
+        for w in sorted((w for w in product(range(total + 1), repeat=k) if sum(w) == total), reverse=True):
+            if all(sum(a * b for a, b in zip(w, v)) > 0 for v in vecs):
+                return w
+    return None
 
 
 def variable_names(node: A.Expr, evaluate: Callable[[A.Expr], Any], show: Callable[[Any], str]) -> list[str]:

@@ -253,6 +253,8 @@ def degree_vectors(ring: M2Ring) -> list[tuple[int, ...]]:
         width = 1 + (len(below[0]) if below else 1)
         own = [(d,) + (0,) * (width - 1) for d in ring.degrees[:len(ring.own)]]
         return own + [(0,) + v for v in below]
+    if "multidegrees" in ring.ambient().info:  # R/I: R's
+        return list(ring.ambient().info["multidegrees"])
     return [(d,) for d in (ring.degrees or (1,) * ring.poly.nvars)]
 
 
@@ -280,3 +282,17 @@ def tower_terms(p: Poly) -> Optional[list[tuple[tuple[int, ...], Poly]]]:
     for e, c in p.sorted_terms():
         groups.setdefault(e[:own], {})[e[own:]] = c
     return [(e, Poly(ring.base.poly, sub)) for e, sub in groups.items()]
+
+
+_INTEGERS: list[M2Ring] = []
+
+
+def integers() -> M2Ring:
+    """ZZ as a ring with no variables, for integers Macaulay2 puts in matrices and ideals with no
+    ring in use (``matrix {{1, 2}}``, ``ideal 7``): one ring, named ``ZZ``."""
+    if not _INTEGERS:
+        from .m2_values import ZZ_RING
+        ring = polynomial_ring(ZZ_RING, [], [OrderBlock("dp", 0, ())])
+        ring.name = "ZZ"
+        _INTEGERS.append(ring)
+    return _INTEGERS[0]

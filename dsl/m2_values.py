@@ -41,6 +41,18 @@ class Array(List):
         return f"Array({list(self.items)!r})"
 
 
+class Monoid:
+    """``monoid[x, y]`` or ``monoid R``: the monoid of monomials in named variables, printed by the
+    name it was first assigned to (``vars``, ``gens`` and ``numgens`` read it)."""
+
+    __slots__ = ("names", "name")
+    type_name = "Monoid"
+
+    def __init__(self, names: Iterable[str]) -> None:
+        self.names = tuple(names)
+        self.name = ""
+
+
 class M2Set:
     """``set {a, b}``: distinct elements (kept in the order first met) with their keys."""
 

@@ -10,6 +10,7 @@ a term is reducible by g when g's lead term divides it.  f lies in I exactly whe
 Elimination, intersections (``t I + (1 - t) J``), quotients and saturations follow as over a field."""
 from __future__ import annotations
 
+import heapq
 from math import gcd
 from typing import Sequence
 
@@ -42,20 +43,49 @@ def _ext_gcd(a: int, b: int) -> tuple[int, int, int]:
 
 
 def reduce(f: Poly, G: Sequence[Poly]) -> Poly:
-    """The remainder of f by G: every term reducible by an element of G is reduced away."""
-    rest, out = f, {}
-    while not rest.is_zero():
-        e = rest.lm()
-        c = _int(rest.terms[e])
-        for g in G:
-            a = _int(g.lc())
-            if divides(g.lm(), e) and c % a == 0:
-                rest = rest - _times(g, tuple(x - y for x, y in zip(e, g.lm())), c // a)
+    """The remainder of f by G: every term reducible by an element of G is reduced away (the
+    terms taken largest first from a heap, the coefficients as Python integers)."""
+    if not G or f.is_zero():
+        return f
+    return _reduce(f, [_divisor(g) for g in G])
+
+
+def _divisor(g: Poly) -> tuple:
+    """(lead monomial, lead coefficient, the other terms) of g, with Python integers."""
+    return g.lm(), _int(g.lc()), [(e, _int(c)) for e, c in g.terms.items() if e != g.lm()]
+
+
+def _reduce(f: Poly, divisors: Sequence[tuple]) -> Poly:
+    ring = f.ring
+    key = ring.order.key
+    rest = {e: _int(c) for e, c in f.terms.items()}
+    heap = [(tuple(-k for k in key(e)), e) for e in rest]
+    heapq.heapify(heap)
+    out = {}
+    while heap:
+        e = heapq.heappop(heap)[1]
+        c = rest.pop(e, 0)
+        if not c:
+            continue  # a term cancelled meanwhile
+        for lm, a, tail in divisors:
+            if c % a == 0 and divides(lm, e):
+                q = c // a
+                u = tuple(x - y for x, y in zip(e, lm))
+                for t, d in tail:
+                    m = tuple(x + y for x, y in zip(t, u))
+                    v = rest.get(m)
+                    if v is None:
+                        rest[m] = -q * d
+                        heapq.heappush(heap, (tuple(-k for k in key(m)), m))
+                    elif v == q * d:
+                        del rest[m]
+                    else:
+                        rest[m] = v - q * d
                 break
         else:
-            out[e] = rest.terms[e]
-            rest = Poly(rest.ring, {k: v for k, v in rest.terms.items() if k != e})
-    return Poly(f.ring, out)
+            out[e] = c
+    field = ring.field
+    return Poly(ring, {e: field(c) for e, c in out.items()})
 
 
 def _positive(p: Poly) -> Poly:
@@ -64,32 +94,63 @@ def _positive(p: Poly) -> Poly:
 
 def strong_basis(F: Sequence[Poly], ring: PolyRing) -> list[Poly]:
     """A minimal strong Gröbner basis of the ideal F generates (lead coefficients positive,
-    tails reduced), sorted by increasing lead monomial, then lead coefficient."""
+    tails reduced), sorted by increasing lead monomial, then lead coefficient.
+
+    Pairs are taken smallest lcm first (the normal strategy) and skipped by Buchberger's two
+    criteria in their form over ZZ (Lichtblau, *Effective Gröbner bases over Euclidean domains*,
+    2012): coprime lead monomials with coprime lead coefficients; a third element h whose lead
+    term divides the pair's lcm term (monomial and coefficient) with both pairs (f, h), (h, g) done."""
     G: list[Poly] = []
-    pairs: list[tuple[Poly, Poly]] = []
+    lts: list[tuple[tuple[int, ...], int]] = []  # (lead monomial, lead coefficient) of G's elements
+    pairs: list[tuple] = []                       # heap of (order key of the lcm, i, j)
+    waiting: set[tuple[int, int]] = set()
+    key = ring.order.key
+
+    divisors: list[tuple] = []
 
     def add(h: Poly) -> None:
-        h = reduce(h, G)
+        h = _reduce(h, divisors) if divisors and not h.is_zero() else h
         if h.is_zero():
             return
         h = _positive(h)
-        pairs.extend((g, h) for g in G)
+        k = len(G)
         G.append(h)
+        divisors.append(_divisor(h))
+        lts.append((h.lm(), _int(h.lc())))
+        for i in range(k):
+            heapq.heappush(pairs, (key(lcm_exp(lts[i][0], lts[k][0])), i, k))
+            waiting.add((i, k))
+
+    def useless(i: int, j: int) -> bool:
+        (ei, a), (ej, b) = lts[i], lts[j]
+        if gcd(a, b) == 1 and all(x == 0 or y == 0 for x, y in zip(ei, ej)):
+            return True
+        m, c = lcm_exp(ei, ej), a * b // gcd(a, b)
+        for h, (eh, d) in enumerate(lts):
+            if h in (i, j) or not divides(eh, m) or c % d:
+                continue
+            if (min(i, h), max(i, h)) not in waiting and (min(j, h), max(j, h)) not in waiting:
+                return True
+        return False
 
     for f in F:
         if not f.is_zero():
             add(Poly(ring, dict(f.terms)))
     while pairs:
-        f, g = pairs.pop()
-        a, b = _int(f.lc()), _int(g.lc())
-        m = lcm_exp(f.lm(), g.lm())
-        u = tuple(x - y for x, y in zip(m, f.lm()))
-        v = tuple(x - y for x, y in zip(m, g.lm()))
-        c = a * b // gcd(a, b)
-        add(_times(f, u, c // a) - _times(g, v, c // b))
-        if a % b and b % a:
+        _, i, j = heapq.heappop(pairs)
+        f, g = G[i], G[j]
+        a, b = lts[i][1], lts[j][1]
+        m = lcm_exp(lts[i][0], lts[j][0])
+        u = tuple(x - y for x, y in zip(m, lts[i][0]))
+        v = tuple(x - y for x, y in zip(m, lts[j][0]))
+        if a % b and b % a:  # the G-polynomial: lead term gcd(a, b) x^m
             _, s, t = _ext_gcd(a, b)
             add(_times(f, u, s) + _times(g, v, t))
+        skip = useless(i, j)
+        waiting.discard((i, j))
+        if not skip:
+            c = a * b // gcd(a, b)
+            add(_times(f, u, c // a) - _times(g, v, c // b))
     minimal: list[Poly] = []
     for g in sorted(G, key=lambda p: (ring.order.key(p.lm()), _int(p.lc()))):
         if not any(divides(h.lm(), g.lm()) and _int(g.lc()) % _int(h.lc()) == 0 for h in minimal):

@@ -16,12 +16,12 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_local import LocalFraction, local_ideal_is_unit, local_ideals_equal, localized_at
-from ..dsl.m2_modules import with_default_degrees
+from ..dsl.m2_modules import Map, with_default_degrees
 from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, is_integral, multidegree, normal, owner, promote, promotes
 from ..dsl.m2_submodules import Module
 from ..dsl.registry import command, operator
-from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
+from ..dsl.values import NONE, ExprList, Ideal, List, Matrix, Number, Ring, typeof
 from ..kernel import Poly
 from ..kernel import ideals as K
 from ..kernel import zz_groebner as Z
@@ -104,9 +104,21 @@ def ideal(ctx, *args: Any) -> Ideal:
         args = (args[0].matrix,)
     if len(args) == 1 and isinstance(args[0], str):  # ideal "x2,y": Macaulay's classic notation
         args = tuple(ctx.eval_text(_classic(part)) for part in args[0].split(","))
-    ring = _first_ring(args) or ctx.basering().poly
+    ring = _first_ring(args) or _integers_or_basering(ctx, args)
     polys = _polys(ctx, args, ring)
     return Ideal(ring, polys, is_std=not polys)
+
+
+def _integers_or_basering(ctx, items: Any) -> Any:
+    """The ring of values with none of their own: ZZ's for integers (as Macaulay2's ``matrix {{1, 2}}``,
+    ``ideal 7``) when no ring is in use or the ring in use has a positive characteristic (where
+    its arithmetic would differ), else the ring in use (whose elements they stand for)."""
+    def ints(v: Any) -> bool:
+        return all(ints(x) for x in v.items) if isinstance(v, (List, ExprList)) else type(v) is int
+    if (ctx.ring is None or ctx.ring.poly.field.characteristic) and all(ints(v) for v in items):
+        from ..dsl.m2_rings import integers
+        return integers().poly
+    return ctx.basering().poly
 
 
 _CLASSIC = re.compile(r"\s*(?:(\d+)|([A-Za-z])(\d*)|([-+*/^()]))")
@@ -139,13 +151,46 @@ def _classic(text: str) -> str:
 
 @command("matrix", dialect="m2")
 @in_quotients
+def matrix_of_element(ctx, f: int | Poly) -> Matrix:
+    """matrix f: the 1 x 1 matrix of a ring element (an integer: over ZZ when no ring is in use)."""
+    return matrix(ctx, List([List([f])]))
+
+
+@command("matrix", dialect="m2")
+@in_quotients
 def matrix(ctx, rows: List) -> Matrix:
-    """matrix {{a, b}, {c, d}}: the matrix with these rows."""
-    ring = _first_ring(rows.items) or ctx.basering().poly
+    """matrix {{a, b}, {c, d}}: the matrix with these rows (entries that are matrices: blocks,
+    with 0 for a zero block)."""
+    if any(isinstance(x, Matrix) for r in rows.items if isinstance(r, List) for x in r.items):
+        return _blocks(rows)
+    ring = _first_ring(rows.items) or _integers_or_basering(ctx, rows.items)
     entries = [_polys(ctx, (r,), ring) for r in rows.items]
     if not entries or any(len(r) != len(entries[0]) for r in entries) or not isinstance(rows.items[0], List):
         raise MechRuntimeError("matrix takes a list of rows of equal length: matrix {{a, b}, {c, d}}")
     return with_default_degrees(Matrix(ring, len(entries), len(entries[0]), [p for r in entries for p in r]))
+
+
+def _blocks(rows: List) -> Matrix:
+    """matrix {{f, g}, {h, 0}} of matrices: the block matrix (a block 0: zeros of its row's height
+    and its column's width)."""
+    grid = [r.items if isinstance(r, List) else None for r in rows.items]
+    if any(r is None or len(r) != len(grid[0]) for r in grid):
+        raise MechRuntimeError("matrix takes a list of rows of equal length: matrix {{f, g}, {h, 0}}")
+    mats = [x for r in grid for x in r if isinstance(x, Matrix)]
+    ring = mats[0].ring
+    if any(not (isinstance(x, Matrix) and x.ring is ring) and x != 0 for r in grid for x in r):
+        raise MechRuntimeError("matrix {{f, g}, ...} of matrices takes matrices of one ring (or 0)")
+    heights = [next((x.nrows for x in r if isinstance(x, Matrix)), None) for r in grid]
+    widths = [next((r[j].ncols for r in grid if isinstance(r[j], Matrix)), None) for j in range(len(grid[0]))]
+    if None in heights or None in widths or any(isinstance(x, Matrix) and (x.nrows, x.ncols) != (heights[i], widths[j])
+                                                for i, r in enumerate(grid) for j, x in enumerate(r)):
+        raise MechRuntimeError("matrix {{f, g}, ...}: the blocks of a row (a column) need as many rows (columns)")
+    out = []
+    for i, r in enumerate(grid):
+        for k in range(heights[i]):
+            for j, x in enumerate(r):
+                out.extend(x.entries[k * x.ncols:(k + 1) * x.ncols] if isinstance(x, Matrix) else [ring.zero()] * widths[j])
+    return with_default_degrees(Matrix(ring, sum(heights), sum(widths), out))
 
 
 def _gb(I: Ideal) -> Ideal:
@@ -243,14 +288,44 @@ def entries(M: Matrix) -> List:
     return List([List(r) for r in M.rows()])
 
 
+def _positions(L: Any, n: int, what: str, strict: bool = True) -> list[int] | None:
+    """The indices 0 <= i < n a list gives ({0..2, 4} too; ``strict`` off: any integers); None for
+    none given (an empty place)."""
+    if L is NONE:
+        return None
+    if not isinstance(L, (List, ExprList)):
+        raise MechTypeError(f"submatrix: the {what} are a list of numbers")
+    out = [j for c in L.items for j in (c.items if isinstance(c, ExprList) else [c])]
+    if not all(type(j) is int and (0 <= j < n or not strict) for j in out):
+        raise MechRuntimeError(f"submatrix: {what} are numbers from 0 to {n - 1}")
+    return out
+
+
+def _submatrix(M: Matrix, rows: list[int], cols: list[int]) -> Matrix:
+    return Matrix(M.ring, len(rows), len(cols), [M.get(i + 1, j + 1) for i in rows for j in cols])
+
+
 @command("submatrix", dialect="m2")
 @in_quotients
-def submatrix(M: Matrix, cols: List) -> Matrix:
-    """submatrix(M, {j1, j2, ...}): the columns j1, j2, ... (counted from 0)."""
-    js = [j for c in cols.items for j in (c.items if isinstance(c, ExprList) else [c])]  # {0..3} too
-    if not all(type(j) is int and 0 <= j < M.ncols for j in js):
-        raise MechRuntimeError(f"submatrix: columns are numbers from 0 to {M.ncols - 1}")
-    return Matrix(M.ring, M.nrows, len(js), [M.get(i, j + 1) for i in range(1, M.nrows + 1) for j in js])
+def submatrix(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
+    """submatrix(M, {j1, j2, ...}): the columns j1, j2, ... (counted from 0); submatrix(M, rows,
+    cols): those rows and columns (an empty place: all)."""
+    if cols is None:
+        rows, cols = NONE, rows
+    i, j = _positions(rows, M.nrows, "rows"), _positions(cols, M.ncols, "columns")
+    return _submatrix(M, range(M.nrows) if i is None else i, range(M.ncols) if j is None else j)
+
+
+@command("submatrix'", dialect="m2")
+@in_quotients
+def submatrix_without(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
+    """submatrix'(M, rows, cols): M without those rows and columns (an empty place: none);
+    submatrix'(M, cols): without those columns."""
+    if cols is None:
+        rows, cols = NONE, rows
+    i = set(_positions(rows, M.nrows, "rows", False) or ())
+    j = set(_positions(cols, M.ncols, "columns", False) or ())
+    return _submatrix(M, [k for k in range(M.nrows) if k not in i], [k for k in range(M.ncols) if k not in j])
 
 
 # ---------------------------------------------------------------- ideals
@@ -391,9 +466,15 @@ def codim(I: Ideal | Ring) -> int:
 
 
 @command("degree", dialect="m2")
-def degree(I: Ideal | Poly) -> Any:
+@in_quotients
+def degree(I: Ideal | Poly | Ring) -> Any:
     """degree I: the degree of R/I (from the leading monomials of a Gröbner basis); degree f: the
-    list of its degree (``{3}``: the largest degree of its terms, by the ring's degrees)."""
+    list of its degree (``{3}``: the largest degree of its terms, by the ring's degrees); degree R
+    of a quotient ring A/J: the degree of J."""
+    if isinstance(I, Ring):
+        return degree(ideal(None, I))  # ideal R needs no interpreter
+    if isinstance(I, Ideal) and _quotient_of(I.ring) is not None:
+        raise MechRuntimeError("degree on elements of a quotient ring R/I is not supported by mech")
     if isinstance(I, Poly):
         if I.is_zero():
             raise MechRuntimeError("degree of the zero polynomial: -infinity (not a value of mech)")
@@ -521,7 +602,9 @@ def equal(a: Any, b: Any) -> bool:
         return getattr(a.ring, "owner", b) is b and _is_unit(a)
     if isinstance(a, Ideal) and type(b) is int and b in (0, 1):
         return _is_unit(a) if b == 1 else not _gb(a).nonzero()
-    if isinstance(a, Matrix) and isinstance(b, Matrix):  # entry by entry (maps of any degrees)
+    if isinstance(a, Matrix) and isinstance(b, Matrix):  # entry by entry, maps between the same free modules
+        if isinstance(a, Map) and isinstance(b, Map) and (a.target != b.target or a.source != b.source):
+            return False
         return a.ring is b.ring and a.shape == b.shape and a.entries == b.entries
     if isinstance(a, Matrix) and type(b) is int and b == 0:
         return all(p.is_zero() for p in a.entries)

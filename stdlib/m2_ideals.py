@@ -120,9 +120,19 @@ def mingens(I: Ideal) -> Matrix:
 
 @command("generators", dialect="m2")
 @in_quotients
-def generators(I: Ideal | Ring) -> Any:
-    """generators I (gens I): the matrix of I's generators; generators R: R's variables."""
+def generators(ctx, I: Ideal | Ring) -> Any:
+    """generators I (gens I): the matrix of I's generators; generators R: R's variables
+    (CoefficientRing => QQ or ZZ/p: with those of the rings below, down to it)."""
+    base = ctx.m2_options.get("CoefficientRing")
+    if isinstance(I, Ring) and base is not None:
+        owner = getattr(I.poly, "owner", None)
+        if owner is None or getattr(base, "characteristic", -1) != getattr(owner.coeffs, "characteristic", -2):
+            raise MechRuntimeError("generators(R, CoefficientRing => K) takes the field at the bottom of R")
+        return List([normal(I.poly.gen(i)) for i in range(I.poly.nvars)])
     return gens(I)
+
+
+generators.m2_options = ("CoefficientRing",)
 
 
 @command("numgens", dialect="m2")
@@ -557,9 +567,11 @@ def coefficient_ring(R: Ring) -> Any:
 
 @command("baseName", dialect="m2")
 @in_quotients
-def base_name(x: Poly) -> Any:
-    """baseName x: the symbol of a variable."""
+def base_name(x: Any) -> Any:
+    """baseName x: the symbol of a variable (a symbol itself)."""
     from ..dsl.m2_values import Symbol
+    if isinstance(x, Symbol):
+        return x
     i = _indices(x.ring, x)[0]
     return Symbol(x.ring.names[i])
 

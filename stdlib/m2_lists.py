@@ -19,7 +19,8 @@ from ..dsl.m2_printing import to_string
 from ..dsl.m2_rings import in_quotients, is_integral
 from ..dsl.m2_values import FUNCTIONS, Array, Iterator, M2Set, Symbol, Tally
 from ..dsl.registry import command
-from ..dsl.values import NONE, ExprList, Ideal, List, Number, typeof
+from ..dsl.values import NONE, ExprList, Ideal, List, Matrix, Number, typeof
+from .m2_regex import regex_select
 from ..kernel import Poly
 
 #: the packages whose functions the dialect has (needsPackage accepts them)
@@ -135,7 +136,10 @@ def scan(ctx, L: Seq | int, f: Any) -> None:
 @in_quotients
 def select(ctx, L: Seq | int, f: Any, g: Any = None) -> Any:
     """select(L, f): the entries x with f(x) true; select(n, L, f): the first n of them;
-    select(n, f): the integers 0 <= i < n with f(i) true."""
+    select(n, f): the integers 0 <= i < n with f(i) true; select(re, s) and select(re, t, s) on
+    strings: the matches of a regular expression (:func:`mech.stdlib.m2_regex.regex_select`)."""
+    if isinstance(L, str) and isinstance(f, str):
+        return regex_select(L, g, f) if g is not None else regex_select(L, f)
     if type(L) is int and g is None:
         _fn(f)
         return List([i for i in range(L) if _truth(ctx.apply(f, [i]), "select")])
@@ -234,11 +238,25 @@ def sequence(*xs: Any) -> ExprList:
 
 @command("flatten", dialect="m2")
 @in_quotients
-def flatten(L: Seq) -> Any:
-    """flatten L: the entries of L's lists spliced into L (one level)."""
+def flatten(L: Seq | Matrix) -> Any:
+    """flatten L: the entries of L's lists spliced into L (one level); flatten M: the entries of a
+    matrix, column by column, as a one-row matrix."""
+    if isinstance(L, Matrix):
+        return Matrix(L.ring, 1, L.nrows * L.ncols, [L.get(i, j) for j in range(1, L.ncols + 1)
+                                                     for i in range(1, L.nrows + 1)])
     out = []
     for x in _items(L):
         out.extend(x.items if isinstance(x, List) else [x])
+    return _same_kind(L, out)
+
+
+@command("splice", dialect="m2")
+@in_quotients
+def splice(L: Seq) -> Any:
+    """splice L: the entries of L's sequences spliced into L (one level)."""
+    out = []
+    for x in _items(L):
+        out.extend(x.items if isinstance(x, ExprList) else [x])
     return _same_kind(L, out)
 
 
@@ -498,8 +516,8 @@ def append(L: List, x: Any) -> List:
 def join(*lists: List | ExprList | Iterator) -> List | ExprList:
     """join(L1, L2, ...): the concatenated lists (of the first one's kind; later iterators as
     their entries)."""
-    if lists and isinstance(lists[0], Iterator):
-        raise MechRuntimeError("join with an iterator first (an iterator of iterators) is not supported by mech")
+    if lists and isinstance(lists[0], Iterator):  # an iterator of the entries of all, in turn
+        return Iterator(x for L in lists for x in (L.source if isinstance(L, Iterator) else _items(L)))
     items = [x for L in lists for x in _items(L)]
     return type(lists[0])(items) if lists else List([])
 
@@ -553,9 +571,9 @@ def is_prime_number(n: int) -> bool:
 
 @command("identity", dialect="m2")
 @in_quotients
-def identity(x: Any) -> Any:
-    """identity x: x."""
-    return x
+def identity(*xs: Any) -> Any:
+    """identity x: x (identity(a, b): the sequence (a, b); identity(): the empty one)."""
+    return xs[0] if len(xs) == 1 else ExprList(list(xs))
 
 
 # ---------------------------------------------------------------- numbers

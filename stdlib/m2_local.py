@@ -8,7 +8,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_local import LocalFraction, in_local_rings, local_ring, localized_at, to_global, to_local
 from ..dsl.m2_modules import CyclicModule, FreeModule
-from ..dsl.m2_rings import M2Ring, in_quotients
+from ..dsl.m2_rings import M2Ring, in_quotients, integers, normal
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Matrix
 from ..kernel import Poly
@@ -39,11 +39,20 @@ def _move(v: Any, ring: Any, to: Any) -> Any:
 def promote(v: Any, S: M2Ring) -> Any:
     """promote(I, R_P): an element, ideal or matrix of R in its local ring R_P."""
     P = localized_at(S)
+    if P is None and isinstance(v, (Ideal, Matrix)) and getattr(v.ring, "owner", None) is integers():
+        return _from_integers(v, S)  # integers of ZZ as elements of S
     if P is None:
-        raise MechRuntimeError("promote(x, S) is supported for a local ring S = R_P")
+        raise MechRuntimeError("promote(x, S) is supported for a local ring S = R_P (or integers of ZZ)")
     if getattr(v, "ring", None) not in (S.info["over"].poly, S.poly) and not isinstance(v, List):
         raise MechTypeError("promote(x, R_P) takes an element, ideal or matrix of R")
     return _move(v, S, lambda p, ring: to_local(p, ring))
+
+
+def _from_integers(v: Any, S: M2Ring) -> Any:
+    one = S.poly.one()
+    out = [normal(one * int(p.lc().p)) if not p.is_zero() else S.poly.zero()
+           for p in (v.nonzero() if isinstance(v, Ideal) else v.entries)]
+    return Ideal(S.poly, out, is_std=not out) if isinstance(v, Ideal) else Matrix(S.poly, v.nrows, v.ncols, out)
 
 
 @command("liftUp", dialect="m2")

@@ -15,12 +15,28 @@ from ..kernel.matrix import apply_operator
 from .m2 import _indices, _polys
 
 @command("jacobian", dialect="m2")
+@in_quotients
 def jacobian(I: Ideal | Matrix) -> Matrix:
-    """jacobian I: the matrix of partial derivatives, one row per variable, one column per generator."""
+    """jacobian I: the matrix of partial derivatives, one row per variable, one column per generator
+    (not in a quotient ring: jacobian R of one is :func:`jacobian_ring`)."""
+    if getattr(getattr(I.ring, "owner", None), "quotient", None) is not None:
+        raise MechRuntimeError("jacobian on elements of a quotient ring R/I is not supported by mech")
     polys = I.gens if isinstance(I, Ideal) else I.entries
     R = getattr(I.ring, "owner", None)
     n = len(R.own) if R is not None and R.own else I.ring.nvars  # a tower: its own variables
     return Matrix(I.ring, n, len(polys), [f.diff(i) for i in range(n) for f in polys])
+
+
+@command("jacobian", dialect="m2")
+@in_quotients
+def jacobian_ring(R: Ring) -> Matrix:
+    """jacobian R of a quotient ring R = A/I: the jacobian of I's generators (by R's own variables), in R."""
+    owner = getattr(R.poly, "owner", None)
+    if owner is None or owner.parent is None:
+        raise MechRuntimeError("jacobian R takes a quotient ring R = A/I")
+    rels = [lift_to(g, owner) for g in owner.relations]
+    n = len(owner.own) if owner.own else R.poly.nvars
+    return Matrix(R.poly, n, len(rels), [normal(f.diff(i)) for i in range(n) for f in rels])
 
 
 @command("minors", dialect="m2")

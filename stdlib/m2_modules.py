@@ -9,7 +9,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_modules import (CyclicModule, FreeModule, Map, is_homogeneous_map, map_degree, source_degrees,
                               source_of, target_of)
-from ..dsl.m2_rings import in_quotients
+from ..dsl.m2_rings import M2Ring, in_quotients
 from ..dsl.m2_values import FUNCTIONS, Opt
 from ..dsl.registry import command
 from ..dsl.values import ExprList, List, Matrix, NoneValue, Number, to_int
@@ -109,6 +109,7 @@ def target(f: Matrix) -> FreeModule:
 @in_quotients
 def degrees(M: FreeModule | Matrix) -> List:
     """degrees F: the degrees of a free module's generators; degrees f: those of its target and source."""
+    _singly_graded(M, "degrees")
     if isinstance(M, Matrix):
         return List([degrees(target_of(M)), degrees(source_of(M))])
     return List([List([d]) for d in M.degrees])
@@ -132,6 +133,7 @@ def numgens(M: FreeModule) -> int:
 @in_quotients
 def is_homogeneous(f: Matrix) -> bool:
     """isHomogeneous f: whether each entry has the degree of its column minus its row's, plus f's degree."""
+    _singly_graded(f, "isHomogeneous")
     return is_homogeneous_map(f)
 
 
@@ -142,7 +144,16 @@ def degree(f: Matrix | CyclicModule) -> Any:
     if isinstance(f, CyclicModule):
         from .m2 import degree as ideal_degree
         return ideal_degree(f.ideal)
+    _singly_graded(f, "degree")
     return List([map_degree(f)])
+
+
+def _singly_graded(M: Any, what: str) -> None:
+    """Refuse the degrees of modules over a multigraded ring (mech's modules keep one component)."""
+    ring = getattr(M, "ring", None)
+    ring = ring if isinstance(ring, M2Ring) else getattr(ring, "owner", None)
+    if ring is not None and "multidegrees" in ring.ambient().info:
+        raise MechRuntimeError(f"{what} of maps and modules over a multigraded ring is not supported by mech")
 
 
 @command("transpose", dialect="m2")

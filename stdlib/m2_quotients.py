@@ -68,3 +68,13 @@ def ring_presentation(R: M2Ring) -> Matrix:
         rels.extend(Poly(A.poly, dict(g.terms)) for g in r.relations)
         r = r.parent
     return Matrix(A.poly, 1, len(rels), rels)
+
+
+@command("annihilator", dialect="m2")
+@command("ann", dialect="m2")
+@in_quotients
+def annihilator_element(f: Poly) -> Ideal:
+    """annihilator f: the ideal of the elements r with r f = 0 (0 : f; in R/Q: (Q : f) in R/Q)."""
+    from .m2 import quotient
+    out = quotient(Ideal(f.ring, []), f)
+    return out if out.nonzero() else Ideal(f.ring, [], is_std=True)

@@ -52,3 +52,4 @@ def to_upper(s: str) -> str:
 def to_lower(s: str) -> str:
     """toLower s: the string in lower case."""
     return s.lower()
+

@@ -142,7 +142,7 @@ def test_monomial_orders() -> None:
 @pytest.mark.parametrize("code, message", [
     ("R = QQ[x]; ideal(x) +", "1:22: error: unexpected end of input"),
     ("R = QQ[x]; y^2", "1:12: error: unknown identifier 'y'"),
-    ("ideal(1)", "no ring active"),
+    ("ideal(1/2)", "no ring active"),
     ("R = QQ[x,x]", "distinct variables"),
     ("R = QQ[x, MonomialOrder => RevLex]", "the monomial order is not global"),
     ("R = QQ[x, MonomialOrder => Foo]", "unknown monomial order Foo"),

@@ -145,7 +145,7 @@ def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> 
     ("R = QQ[x,y]; S = R/ideal(x^2); factor(x+y)", "factor on elements of a quotient ring R/I is not supported"),
     ("R = QQ[x]; saturate(ideal(x), DegreeLimit => 2)", "saturate: the option DegreeLimit is not supported"),
     ("R = QQ[x]; y^2", "unknown identifier 'y'"),
-    ("R = QQ[a,b, Degrees => {{1,0},{0,1}}]", "multigraded rings"),
+    ("R = QQ[a,b, Degrees => {{1,0},{0,1}}]; degrees source matrix {{a, b}}", "degrees of maps and modules over a multigraded ring"),
     ("C = QQ[a, MonomialSize => 8]; a^200", "monomial overflow"),
     ("needsPackage \"NoSuchPackage\"", "the package NoSuchPackage is not available"),
     ("R = QQ[x]; assert(1 == 2)", "assertion failed"),
