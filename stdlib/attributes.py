@@ -85,8 +85,8 @@ def _table(ctx, node: A.Expr, value: Any, create: bool) -> Optional[dict]:
 
 @command("killattrib", raw=True)
 def killattrib(ctx, node: A.Expr, *rest: A.Expr) -> None:
-    """killattrib(I, "isSB"): remove the standard-basis mark of the ideal variable I (killattrib(I):
-    all its attributes).
+    """killattrib(x, name): remove the attribute ``name`` of the variable x ("isSB": the
+    standard-basis mark of an ideal); killattrib(x): all its attributes.
 
     Example:
       ring r = 0,(x,y),dp;
@@ -103,3 +103,9 @@ def killattrib(ctx, node: A.Expr, *rest: A.Expr) -> None:
         if not isinstance(node, A.Name):
             raise MechRuntimeError("killattrib(x, ...): x must be a variable")
         ctx.assign(node, Ideal(value.ring, value.gens, is_std=False))
+    table = _table(ctx, node, value, create=False)
+    if table:
+        if names:
+            table.pop(names[0], None)
+        else:
+            table.clear()

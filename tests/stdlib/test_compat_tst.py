@@ -27,6 +27,9 @@ ring r= 32003,(x,y),lp;
 ideal i=maxideal(1);
 attrib(i,"isSB",1); attrib(i);
 killattrib(i,"isSB"); attrib(i);
+attrib(i,"isSB",1); attrib(i,"colour","red"); attrib(i,"size","big"); attrib(i);
+killattrib(i,"colour"); attrib(i);
+killattrib(i); attrib(i);
 """,
     "procedures_without_parameters": """
 proc pp
