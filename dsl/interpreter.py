@@ -9,13 +9,13 @@ user errors in :mod:`~mech.dsl.boundary`.
 """
 from __future__ import annotations
 
-import gc
 import sys
 import time
 import weakref
-from contextlib import contextmanager
-from typing import Any, Callable, Iterator, Optional, TextIO
+from contextlib import nullcontext
+from typing import Any, Callable, ContextManager, Optional, TextIO
 
+from ..kernel.collector import relaxed
 from ..kernel.engines import AUTO, default_engine, using_engine
 from . import ast as A
 from . import registry
@@ -44,21 +44,12 @@ LONG_SCRIPT = 1 << 16
 YOUNG_THRESHOLD = 10000  # allocations between two collections of the young generation (Python's default: 700)
 
 
-@contextmanager
-def _young_gc(size: int) -> Iterator[None]:
+def _young_gc(size: int) -> ContextManager[None]:
     """Python's cyclic garbage collector less often while a long script runs: each statement makes
     and drops a few dozen objects (its tree, its values), so the default threshold (700
     allocations) collects every few statements and, with the modules' objects, costs 15-25 % of a
     flat script's time (benchmarks/INTERPRETER.md).  Garbage is still collected, in larger batches."""
-    old = gc.get_threshold()
-    if size < LONG_SCRIPT or old[0] >= YOUNG_THRESHOLD:
-        yield
-        return
-    gc.set_threshold(YOUNG_THRESHOLD, *old[1:])
-    try:
-        yield
-    finally:
-        gc.set_threshold(*old)
+    return relaxed(YOUNG_THRESHOLD) if size >= LONG_SCRIPT else nullcontext()
 
 
 class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, Maps, Names, Expressions, Scopes):

@@ -30,7 +30,6 @@ for benchmarks).
 """
 from __future__ import annotations
 
-import gc
 from collections import OrderedDict
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -38,6 +37,7 @@ from dataclasses import dataclass
 from typing import Any, Callable, Iterator, Sequence
 
 from .buchberger import TooLong, buchberger, reduce_basis
+from .collector import paused
 from .coeffs import Field, PrimeField, RationalField
 from .errors import EngineError
 from .f4 import f4_modp
@@ -245,26 +245,11 @@ _CACHE: OrderedDict[tuple, list[Poly]] = OrderedDict()
 _CACHE_SIZE = 256
 
 
-@contextmanager
-def _without_gc():
-    """Python's cycle collector paused: the engines allocate many short-lived lists, tuples
-    and dicts (freed by reference counting; they make no cycles), and each collection of the
-    oldest generation walks every object of the session (parser tables, values), which
-    cost F4 on noon-5 about half its time.  Restored on exit, also on errors."""
-    was = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if was:
-            gc.enable()
-
-
 def _compute(gens: list[Poly], ring: PolyRing, name: str, named: bool = True) -> list[Poly]:
     """The basis by the engine ``name`` (with the cycle collector paused); a default engine
     (not ``named`` in the call) that needs a zero-dimensional ideal leaves the others to
     ``auto``."""
-    with _without_gc():
+    with paused():
         return _compute_basis(gens, ring, name, named)
 
 

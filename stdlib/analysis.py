@@ -25,16 +25,15 @@ The pipeline is here (the data, the steps, :func:`run_analysis`); the real-point
 """
 from __future__ import annotations
 
-import gc
 import itertools
-from contextlib import contextmanager
 from dataclasses import dataclass, field
-from typing import Any, Callable, Iterator, Sequence
+from typing import Any, Callable, ContextManager, Sequence
 
 from mech.dsl.errors import MechRuntimeError
 from mech.dsl.limits import MechLimitError, remaining, within
 from mech.kernel import Poly, PolyRing
 from mech.kernel.factor import factorize
+from mech.kernel.collector import relaxed
 from mech.kernel.groebner import normal_forms
 from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, intersect, is_subset, move, saturate_poly,
                                 std)
@@ -486,21 +485,12 @@ def analyze(m: Mechanism) -> Analysis:
 YOUNG_THRESHOLD = 20000
 
 
-@contextmanager
-def relaxed_gc() -> Iterator[None]:
+def relaxed_gc() -> ContextManager[None]:
     """Python's cyclic garbage collector less often while an analysis runs: its many small bases,
     polynomials and real roots are freed by reference counting, but every 700 allocations a
     collection walks the young objects and, through the older generations, the session's (a tenth
-    of the four-bar example's time).  Garbage is still collected, in larger batches."""
-    old = gc.get_threshold()
-    if old[0] >= YOUNG_THRESHOLD:
-        yield
-        return
-    gc.set_threshold(YOUNG_THRESHOLD, *old[1:])
-    try:
-        yield
-    finally:
-        gc.set_threshold(*old)
+    of the four-bar example's time)."""
+    return relaxed(YOUNG_THRESHOLD)
 
 
 _CACHE: dict[str, Analysis] = {}
