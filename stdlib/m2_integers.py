@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from . import m2, m2_ideals, m2_lists, m2_local, m2_matrices, m2_modules, m2_monoids
 
-_EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2.submatrix, m2_matrices.det, m2_matrices.minors, m2_matrices.jacobian,
+_EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2_matrices.submatrix, m2_matrices.det, m2_matrices.minors, m2_matrices.jacobian,
           m2_matrices.diff, m2_matrices.sub, m2.use, m2.degree, m2_ideals.generators, m2_ideals.numgens_ring, m2_ideals.vars_,
           m2_ideals.generic_matrix, m2_ideals.numcols, m2_ideals.numrows, m2_ideals.support, m2_ideals.terms,
           m2_ideals.terms_over, m2_ideals.lead_term, m2_ideals.lead_monomial, m2_ideals.lead_coefficient,
@@ -20,7 +20,7 @@ _EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2.submatrix, m2
           m2_modules.target, m2_modules.degrees, m2_modules.rank, m2_modules.numgens, m2_modules.is_homogeneous,
           m2_modules.transpose, m2_local.numerator, m2_local.denominator,
           m2_ideals.monomial_ideal, m2_ideals.degree_in, m2_modules.transpose_table, m2.eliminate, m2.eliminate_ideal_first, m2.quotient_cmd, m2.saturate,
-          m2.intersect, m2.matrix_of_element, m2.submatrix_without, m2_local.promote, m2_monoids.monoid)
+          m2.intersect, m2.matrix_of_element, m2_matrices.submatrix_without, m2_local.promote, m2_monoids.monoid)
 for _f in _EXACT:
     _f.zz_ok = True
 for _name in dir(m2_lists):  # the list library: no arithmetic of its own (isSubset checks its ideals)

@@ -9,7 +9,7 @@ from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, is_integral, normal
 from ..dsl.m2_values import Factored, Opt
 from ..dsl.registry import command
-from ..dsl.values import Ideal, List, Matrix, Ring
+from ..dsl.values import NONE, ExprList, Ideal, List, Matrix, Ring
 from ..kernel import Poly
 from ..kernel.matrix import apply_operator
 from .m2 import _indices, _polys
@@ -170,3 +170,43 @@ def symmetric_power(d: int, M: Matrix) -> Matrix:
             p = p * M.entries[i]
         out.append(p)
     return Matrix(M.ring, 1, len(out), out)
+
+
+def _positions(L: Any, n: int, what: str, strict: bool = True) -> list[int] | None:
+    """The indices 0 <= i < n a list gives ({0..2, 4} too; ``strict`` off: any integers); None for
+    none given (an empty place)."""
+    if L is NONE:
+        return None
+    if not isinstance(L, (List, ExprList)):
+        raise MechTypeError(f"submatrix: the {what} are a list of numbers")
+    out = [j for c in L.items for j in (c.items if isinstance(c, ExprList) else [c])]
+    if not all(type(j) is int and (0 <= j < n or not strict) for j in out):
+        raise MechRuntimeError(f"submatrix: {what} are numbers from 0 to {n - 1}")
+    return out
+
+
+def _submatrix(M: Matrix, rows: list[int], cols: list[int]) -> Matrix:
+    return Matrix(M.ring, len(rows), len(cols), [M.get(i + 1, j + 1) for i in rows for j in cols])
+
+
+@command("submatrix", dialect="m2")
+@in_quotients
+def submatrix(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
+    """submatrix(M, {j1, j2, ...}): the columns j1, j2, ... (counted from 0); submatrix(M, rows,
+    cols): those rows and columns (an empty place: all)."""
+    if cols is None:
+        rows, cols = NONE, rows
+    i, j = _positions(rows, M.nrows, "rows"), _positions(cols, M.ncols, "columns")
+    return _submatrix(M, range(M.nrows) if i is None else i, range(M.ncols) if j is None else j)
+
+
+@command("submatrix'", dialect="m2")
+@in_quotients
+def submatrix_without(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
+    """submatrix'(M, rows, cols): M without those rows and columns (an empty place: none);
+    submatrix'(M, cols): without those columns."""
+    if cols is None:
+        rows, cols = NONE, rows
+    i = set(_positions(rows, M.nrows, "rows", False) or ())
+    j = set(_positions(cols, M.ncols, "columns", False) or ())
+    return _submatrix(M, [k for k in range(M.nrows) if k not in i], [k for k in range(M.ncols) if k not in j])
