@@ -38,7 +38,7 @@ from .local import AlgebraicPoint, centre_at, tangent_cone_over
 from .matrix import Matrix, minors
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
-from .real_fibers import curve_part, linear_poly
+from .real_fibers import complete_intersection, curve_part, linear_poly
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, primitive, separate
 from .real_solve import (RUR, QuotientAlgebra, arb_bounds, ball_eval, from_fmpq_poly, rur, rur_of,
                          shape_representation, solution_boxes)
@@ -105,6 +105,8 @@ class _Setting:
         xs = self.ring.gens()[:n]
         self.t = self.ring.gens()[n]
         self.curve = [Poly(self.ring, {e + (0,): c for e, c in g.terms.items()}) for g in curve]
+        ci = complete_intersection(curve, ring)
+        self.ci = None if ci is None else [Poly(self.ring, {e + (0,): c for e, c in g.terms.items()}) for g in ci]
         self.e = from_fmpq_poly(fmpq_poly(fam.poly), self.ring, n)
         self.centre = [from_fmpq_poly(c, self.ring, n) for c in fam.coords]
         self.diffs = [x - c for x, c in zip(xs, self.centre)]
@@ -121,9 +123,12 @@ class _Setting:
 
     def combos(self, k: int, seed: int) -> list[Poly]:
         """``k`` random integer combinations of the curve's generators (the generators when
-        there are exactly ``k``)."""
+        there are exactly ``k``; for seed 0 ``k`` of them cutting out a curve when there are:
+        a low-degree Jacobian, :func:`.real_fibers.complete_intersection`)."""
         if len(self.curve) == k:
             return list(self.curve)
+        if seed == 0 and self.ci is not None and len(self.ci) == k:
+            return list(self.ci)
         rnd = random.Random(seed)
         return [sum((g * rnd.randint(-3, 3) for g in self.curve), self.ring.zero()) for _ in range(k)]
 
@@ -171,7 +176,7 @@ def _critical_bound(S: _Setting) -> fmpq:
     with random positive weights: the conic structure holds for it all the same."""
     rnd = random.Random(29)
     for attempt in range(8):
-        for seed in range(1 if len(S.curve) == S.n - 1 else 3):
+        for seed in range(1 if len(S.curve) == S.n - 1 else 4):
             lag = _lagrange(S, seed)
             if dimension(lag, S.ring) <= 0:
                 A = QuotientAlgebra(lag, S.ring)

@@ -38,7 +38,7 @@ from dataclasses import dataclass
 from typing import Sequence
 
 import flint
-from flint import fmpq, fmpq_poly, fmpz_poly
+from flint import fmpq, fmpq_poly, fmpz_poly, fmpz_mod_poly_ctx, fq_default_ctx
 
 from .coeffs import QQ
 from .groebner import groebner
@@ -49,7 +49,7 @@ from .poly import Poly, PolyRing
 from .real_branches import PointFamily, half_branch_counts
 from .real_events import Degenerate, Event, Special, clear, locate, point_box, roots_at, same_point, special
 from .real_field import RealAlgebraicField
-from .real_fibers import Fibres, curve_part, event_polynomial, irreducible_factors, is_finite, linear_poly
+from .real_fibers import Fibres, complete_intersection, curve_part, event_polynomial, irreducible_factors, is_finite, linear_poly
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, separate, sign_at
 from .real_solve import RUR, NotSeparatingError, QuotientAlgebra, arb_bounds, ball_eval, real_solutions, rur_of, \
     solution_boxes
@@ -151,11 +151,20 @@ def _forms(n: int, seed: int, count: int, start: int = 0) -> list[list[fmpq]]:
 def _critical_algebra(gens: list[Poly], ring: PolyRing, direction: list[fmpq]) -> QuotientAlgebra | None:
     """The algebra of the critical points of the linear form ``direction`` on the curve (the curve
     and the maximal minors of the Jacobian of ``n - 1`` generators or combinations of them, and the
-    form); None when they are not isolated (the form is constant on a component)."""
+    form); None when they are not isolated (the form is constant on a component).  ``n - 1``
+    generators of least degree cutting out a curve (a mechanism's constraints within its mode's
+    ideal) come first: their Jacobian has low degree, where random combinations of all the
+    generators give a determinant of high degree and many spurious points."""
     n = ring.nvars
-    for seed in ([None] if len(gens) == n - 1 else range(4)):
-        rnd = random.Random(seed)
-        h = gens if seed is None else [sum((g * rnd.randint(-3, 3) for g in gens), ring.zero()) for _ in range(n - 1)]
+    for seed in ([None] if len(gens) == n - 1 else ["ci"] + list(range(4))):
+        if seed == "ci":
+            h = complete_intersection(gens, ring)
+            if h is None:
+                continue
+        else:
+            rnd = random.Random(seed)
+            h = gens if seed is None else [sum((g * rnd.randint(-3, 3) for g in gens), ring.zero())
+                                          for _ in range(n - 1)]
         rows = [[f.diff(i) for i in range(n)] for f in h] + [[ring.const(c) for c in direction]]
         det = [d for d in minors(Matrix(ring, n, n, [p for r in rows for p in r]), n) if not d.is_zero()]
         K = gens + det
@@ -228,7 +237,7 @@ class _Sweep:
                 found += [(r, data) for r in rs]
         self.events = [Event(r, d) for r, d in _match(separate([r for r, _ in found]), found)]
         self.half: dict[int, list[int]] = {}
-        self.minors: list[Poly] | None = None
+        self.jacobian: list[list[list[Poly]]] | None = None  # of n - 1 generators, of all
         self.second: list[tuple[list[fmpq], fmpz_poly]] = []
 
     def topology(self) -> tuple[list[Circuit], list[Box]]:
@@ -298,11 +307,10 @@ class _Sweep:
         data = ev.data
         F = RealAlgebraicField(ev.root)
         n = self.ring.nvars
-        if self.minors is None:
-            rows = [[f.diff(i) for i in range(n)] for f in self.gens]
-            self.minors = [p for p in minors(Matrix(self.ring, len(rows), n, [p for r in rows for p in r]), n - 1)
-                           if not p.is_zero()]
-        if any(not F.is_zero(_eval_over(F, p, data.psi)) for p in self.minors):
+        if self.jacobian is None:
+            ci = complete_intersection(self.gens, self.ring) or []
+            self.jacobian = [[[f.diff(i) for i in range(n)] for f in part] for part in (ci, self.gens)]
+        if any(_rank_mod_p(rows, data.poly, data.psi) == n - 1 for rows in self.jacobian if rows):
             return 2
         key = id(data)
         if key not in self.half:
@@ -398,6 +406,74 @@ def _eval_over(F: RealAlgebraicField, p: Poly, coords: list[fmpq_poly]) -> fmpq_
                 t = F.mul(t, x ** k)
         out = out + t
     return F(out)
+
+
+def _rank_mod_p(rows: list[list[Poly]], poly: fmpz_poly, psi: list[fmpq_poly]) -> int:
+    """A lower bound for the rank of the polynomial matrix at the points ``x = psi(c)``,
+    ``poly(c) = 0``: its rank over ``F_q = F_p[T]/(h)`` for an irreducible factor ``h`` of
+    ``poly`` modulo a prime ``p`` (``Z_(p)[T]/(poly) -> F_q`` is a ring map, so the minors vanishing
+    at ``c`` vanish there; :mod:`.modular_rank`); 0 when every prime tried divides a denominator."""
+    for prime in _PRIMES:
+        if poly[poly.degree()] % prime == 0:
+            continue
+        _, facs = fmpz_mod_poly_ctx(prime)([int(c) for c in poly.coeffs()]).factor()
+        h = min((f for f, _ in facs), key=lambda f: f.degree())
+        F = fq_default_ctx(modulus=h, check_prime=False)
+        t = F.gen()
+        try:
+            point = [_horner_mod(F, x.coeffs(), t, prime) for x in psi]
+            table = [[_value_mod(F, p, point, prime) for p in row] for row in rows]
+        except ZeroDivisionError:  # a denominator divisible by the prime
+            continue
+        return _rank(table)
+    return 0
+
+
+def _coeff_mod(c: fmpq, prime: int) -> int:
+    q = int(c.q) % prime
+    if q == 0:
+        raise ZeroDivisionError
+    return int(c.p) * pow(q, -1, prime) % prime
+
+
+def _horner_mod(F, coeffs: list[fmpq], t, prime: int):
+    out = F(0)
+    for c in reversed(coeffs):
+        out = out * t + F(_coeff_mod(c, prime))
+    return out
+
+
+def _value_mod(F, p: Poly, point: list, prime: int):
+    out = F(0)
+    for e, c in p.terms.items():
+        v = F(_coeff_mod(c, prime))
+        for x, k in zip(point, e):
+            if k:
+                v = v * x ** k
+        out += v
+    return out
+
+
+def _rank(m: list[list]) -> int:
+    """The rank of a matrix over a finite field (Gaussian elimination)."""
+    m = [list(r) for r in m]
+    rank = 0
+    for col in range(len(m[0]) if m else 0):
+        pivot = next((i for i in range(rank, len(m)) if not m[i][col].is_zero()), None)
+        if pivot is None:
+            continue
+        m[rank], m[pivot] = m[pivot], m[rank]
+        inv = m[rank][col] ** -1
+        for i in range(rank + 1, len(m)):
+            if not m[i][col].is_zero():
+                q = m[i][col] * inv
+                m[i] = [a - q * b for a, b in zip(m[i], m[rank])]
+        rank += 1
+    return rank
+
+
+#: Primes for the modular ranks.
+_PRIMES = [2 ** 31 - 1, 2147483629, 2147483587, 2147483579, 2147483563, 2147483549, 2147483543, 2147483497]
 
 
 def _key(f: fmpz_poly) -> tuple:
