@@ -49,7 +49,8 @@ from .poly import Poly, PolyRing
 from .real_branches import PointFamily, half_branch_counts
 from .real_events import Degenerate, Event, Special, clear, locate, point_box, roots_at, same_point, special
 from .real_field import RealAlgebraicField
-from .real_fibers import Fibres, complete_intersection, curve_part, event_polynomial, irreducible_factors, is_finite, linear_poly
+from .real_fibers import (Biv, Fibres, at_x, complete_intersection, curve_part, event_polynomial, irreducible_factors,
+                          is_finite, linear_poly)
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, separate, sign_at
 from .real_solve import RUR, NotSeparatingError, QuotientAlgebra, arb_bounds, ball_eval, real_solutions, rur_of, \
     solution_boxes
@@ -332,16 +333,18 @@ class _Sweep:
             if attempt == len(self.second):
                 m2 = _forms(n, 700 + attempt, 1, 2 * attempt)[0]
                 try:
-                    self.second.append((m2, event_polynomial(self.fib.plane_curve(m2))))
+                    g2 = self.fib.plane_curve(m2)
+                    self.second.append((m2, event_polynomial(g2), g2,
+                                        self.fib.plane_curve([a + b for a, b in zip(self.m, m2)])))
                 except RealSolvingError:
-                    self.second.append((m2, fmpz_poly([0])))
-            m2, e2 = self.second[attempt]
+                    self.second.append((m2, fmpz_poly([0]), [], []))
+            m2, e2, g2, g3 = self.second[attempt]
             if e2.is_zero() or sign_at(e2, ev.root) == 0:
                 continue
             r = ev.root
             while not clear(fmpq_poly(e2), r.lo, r.hi):
                 r = r.refined((r.hi - r.lo) / 4)
-            left, right = self._m2_ranks(r.lo, m2), self._m2_ranks(r.hi, m2)
+            left, right = (_plane_ranks(self.g, g2, g3, a) or self._m2_ranks(a, m2) for a in (r.lo, r.hi))
             return [right.index(rank) for rank in left]
         raise Degenerate()
 
@@ -394,6 +397,33 @@ class _Sweep:
         circuits = [Circuit(boxes, _hull(boxes) if boxes else [], root not in ends, ends.get(root, 0))
                     for root, boxes in members.items()]
         return circuits, isolated
+
+
+def _plane_ranks(g: Biv, g2: Biv, g3: Biv, a: fmpq) -> list[int] | None:
+    """For the real fibre points over ``a`` in ``m``-order their ranks in ``m2``-order, from the
+    plane images of ``(l, m)``, ``(l, m2)`` and ``(l, m + m2)`` alone (``a`` no event of the first
+    two: their real roots over ``a`` are the values of the real points): the partner of the
+    ``m``-value ``y`` is the one ``m2``-value ``z`` with ``y + z`` a root of ``g3(a, Y)``, certified
+    when interval arithmetic excludes every other ``z``.  None when that stays ambiguous (a
+    coincidence of values: the caller solves the fibre)."""
+    ys, zs = isolate_real_roots(at_x(g, a)), isolate_real_roots(at_x(g2, a))
+    if len(ys) != len(zs):
+        return None
+    if len(ys) <= 1:
+        return list(range(len(ys)))
+    ws = isolate_real_roots(at_x(g3, a))
+    for bits in (16, 32, 64, 128, 256):
+        ys, zs, ws = ([r.refined(fmpq(1, 2 ** bits)) for r in rs] for rs in (ys, zs, ws))
+        ranks = []
+        for y in ys:
+            hits = [j for j, z in enumerate(zs) if any(y.lo + z.lo <= w.hi and w.lo <= y.hi + z.hi for w in ws)]
+            if len(hits) != 1:
+                break
+            ranks.append(hits[0])
+        else:
+            if len(set(ranks)) == len(ranks):
+                return ranks
+    return None
 
 
 def _eval_over(F: RealAlgebraicField, p: Poly, coords: list[fmpq_poly]) -> fmpq_poly:
