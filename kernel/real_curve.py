@@ -44,11 +44,10 @@ from .coeffs import QQ
 from .groebner import groebner
 from .ideals import dimension, dp_ring
 from .matrix import Matrix, minors
-from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 from .real_branches import PointFamily, half_branch_counts
+from .real_chart import Chart
 from .real_events import Degenerate, Event, Special, clear, locate, point_box, roots_at, same_point, special
-from .real_field import RealAlgebraicField
 from .real_fibers import (Biv, Fibres, at_x, complete_intersection, curve_part, event_polynomial, irreducible_factors,
                           is_finite, linear_poly)
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, separate, sign_at
@@ -85,50 +84,6 @@ class CurveTopology:
     @property
     def bounded(self) -> bool:
         return all(c.bounded for c in self.circuits)
-
-
-# --- the affine chart of the linear equations ----------------------------------------------
-
-class _Chart:
-    """The affine subspace of the linear elements ``x_j - a_j(free)`` of a reduced ``dp`` basis:
-    the curve is given in the free variables by the other generators restricted to it."""
-
-    def __init__(self, gens: list[Poly], basis: list[Poly], ring: PolyRing) -> None:
-        n = ring.nvars
-        linear = {g.lm().index(1): g.monic() for g in basis if g.total_degree() == 1}
-        self.free = [i for i in range(n) if i not in linear]
-        self.ring = PolyRing(QQ, [ring.names[i] for i in self.free], MonomialOrder([Block("dp", len(self.free))]))
-        xs = self.ring.gens()
-        self.maps: list[tuple[fmpq, list[fmpq]]] = []
-        images = []
-        for i in range(n):
-            if i in linear:
-                g = linear[i]
-                const = -g.coeff_of(ring.zero_exp)
-                lin = [-g.coeff_of(tuple(int(k == j) for k in range(n))) for j in self.free]
-            else:
-                const, lin = fmpq(0), [fmpq(int(j == i)) for j in self.free]
-            self.maps.append((const, lin))
-            images.append(sum((x * c for x, c in zip(xs, lin) if c != 0), self.ring.const(const)))
-        self.gens = [h for h in (g.compose(images, self.ring) for g in gens) if not h.is_zero()]
-
-    def directions(self) -> list[list[fmpq]]:
-        """The original coordinates as linear forms in the free variables (distinct, nonzero)."""
-        out: list[list[fmpq]] = []
-        for _, lin in self.maps:
-            if any(lin) and lin not in out:
-                out.append(lin)
-        return out
-
-    def lift(self, box: Box) -> Box:
-        """The box of a point of the chart in all coordinates (exact interval arithmetic)."""
-        out = []
-        for const, lin in self.maps:
-            lo = hi = const
-            for c, (a, b) in zip(lin, box):
-                lo, hi = (lo + c * a, hi + c * b) if c >= 0 else (lo + c * b, hi + c * a)
-            out.append((lo, hi))
-        return out
 
 
 # --- forms and critical points ----------------------------------------------------------------
@@ -306,7 +261,6 @@ class _Sweep:
     def _half_branches(self, ev: Event) -> int:
         """The real half-branches at the critical point over the event (2 when it is smooth)."""
         data = ev.data
-        F = RealAlgebraicField(ev.root)
         n = self.ring.nvars
         if self.jacobian is None:
             ci = complete_intersection(self.gens, self.ring) or []
@@ -424,18 +378,6 @@ def _plane_ranks(g: Biv, g2: Biv, g3: Biv, a: fmpq) -> list[int] | None:
             if len(set(ranks)) == len(ranks):
                 return ranks
     return None
-
-
-def _eval_over(F: RealAlgebraicField, p: Poly, coords: list[fmpq_poly]) -> fmpq_poly:
-    """``p(coords)`` in ``Q(c)``."""
-    out = F.zero
-    for e, c in p.terms.items():
-        t = fmpq_poly([c])
-        for x, k in zip(coords, e):
-            if k:
-                t = F.mul(t, x ** k)
-        out = out + t
-    return F(out)
 
 
 def _rank_mod_p(rows: list[list[Poly]], poly: fmpz_poly, psi: list[fmpq_poly]) -> int:
@@ -572,7 +514,7 @@ def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: i
         return CurveTopology([], [])
     if basis and dimension(basis, R) == 0:
         return CurveTopology([], [s.box for s in real_solutions(basis, R, digits or 6).real])
-    chart = _Chart(gens, basis, R)
+    chart = Chart(gens, basis, R)
     if len(chart.free) == 1:
         origin = chart.lift([(fmpq(0), fmpq(0))])
         return CurveTopology([Circuit([origin], origin, False, 2)], [])
