@@ -33,12 +33,13 @@ from flint import fmpq, fmpq_poly, fmpz_poly
 
 from . import offload_exact
 from .groebner import groebner
-from .ideals import dimension
+from .ideals import dimension, dp_ring
 from .local import AlgebraicPoint, centre_at, tangent_cone_over
 from .matrix import Matrix, minors
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
-from .real_fibers import curve_part, linear_poly
+from .real_chart import Chart
+from .real_fibers import complete_intersection, curve_part, linear_poly
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, primitive, separate
 from .real_solve import (RUR, QuotientAlgebra, arb_bounds, ball_eval, from_fmpq_poly, rur, rur_of,
                          shape_representation, solution_boxes)
@@ -95,8 +96,10 @@ class Branches:
 class _Setting:
     """The curve in ``Q[x, t]`` with ``e(t)`` and the squared distance to ``x = coords(t)``."""
 
-    def __init__(self, curve: Sequence[Poly], ring: PolyRing, fam: PointFamily) -> None:
+    def __init__(self, curve: Sequence[Poly], ring: PolyRing, fam: PointFamily,
+                 pull: list[list[fmpq]] | None = None) -> None:
         n = ring.nvars
+        self.pull = pull  # the original coordinates as linear forms in these (a chart's), if any
         name = "t"
         while name in ring.names:
             name = "_" + name
@@ -105,12 +108,23 @@ class _Setting:
         xs = self.ring.gens()[:n]
         self.t = self.ring.gens()[n]
         self.curve = [Poly(self.ring, {e + (0,): c for e, c in g.terms.items()}) for g in curve]
+        ci = complete_intersection(curve, ring)
+        self.ci = None if ci is None else [Poly(self.ring, {e + (0,): c for e, c in g.terms.items()}) for g in ci]
         self.e = from_fmpq_poly(fmpq_poly(fam.poly), self.ring, n)
         self.centre = [from_fmpq_poly(c, self.ring, n) for c in fam.coords]
         self.diffs = [x - c for x, c in zip(xs, self.centre)]
         self.reweigh([1] * n)
         self.fam = fam
         self.roots = fam.real_roots()
+
+    def forms(self, count: int) -> list[list[fmpq]]:
+        """The candidate linear forms (of the original coordinates, pulled back to the chart's:
+        the same tangent order and signs as without the chart)."""
+        if self.pull is None:
+            return _forms(self.n, count)
+        out = [[sum((w * row[k] for w, row in zip(W, self.pull)), fmpq(0)) for k in range(self.n)]
+               for W in _forms(len(self.pull), count)]
+        return [f for f in out if any(f)]
 
     def reweigh(self, weights: list[int]) -> None:
         """The squared distance ``d = sum w_i (x_i - p_i)^2`` with these positive weights."""
@@ -121,9 +135,12 @@ class _Setting:
 
     def combos(self, k: int, seed: int) -> list[Poly]:
         """``k`` random integer combinations of the curve's generators (the generators when
-        there are exactly ``k``)."""
+        there are exactly ``k``; for seed 0 ``k`` of them cutting out a curve when there are:
+        a low-degree Jacobian, :func:`.real_fibers.complete_intersection`)."""
         if len(self.curve) == k:
             return list(self.curve)
+        if seed == 0 and self.ci is not None and len(self.ci) == k:
+            return list(self.ci)
         rnd = random.Random(seed)
         return [sum((g * rnd.randint(-3, 3) for g in self.curve), self.ring.zero()) for _ in range(k)]
 
@@ -171,7 +188,7 @@ def _critical_bound(S: _Setting) -> fmpq:
     with random positive weights: the conic structure holds for it all the same."""
     rnd = random.Random(29)
     for attempt in range(8):
-        for seed in range(1 if len(S.curve) == S.n - 1 else 3):
+        for seed in range(1 if len(S.curve) == S.n - 1 else 4):
             lag = _lagrange(S, seed)
             if dimension(lag, S.ring) <= 0:
                 A = QuotientAlgebra(lag, S.ring)
@@ -208,11 +225,25 @@ def real_branches(gens: Sequence[Poly], ring: PolyRing, point: Sequence[fmpq] | 
         if len(point) != ring.nvars:
             raise RealSolvingError(f"the point has {len(point)} coordinates, the ring {ring.nvars} variables")
         fams = [PointFamily.rational([fmpq(c) for c in point])]
-    curve, _ = curve_part(gens, ring)
+    R = dp_ring(ring)
+    G = [Poly(R, g.terms) for g in gens if not g.is_zero()]
+    chart = Chart(G, groebner(G, R), R) if G else None
+    if chart is None or len(chart.free) < 2:
+        chart = None
+    curve, _ = curve_part(chart.gens, chart.ring) if chart else curve_part(gens, ring)
     out = []
     for fam in fams:
         _check_on(gens, ring, fam)
-        out += _family_branches(curve, ring, fam)
+        if chart is None:
+            out += _family_branches(curve, ring, fam)
+            continue
+        # in the chart of the linear equations (fewer variables): same branches, lifted back
+        sub = PointFamily(fam.poly, [fam.coords[i] for i in chart.free])
+        pull = [lin for _, lin in chart.maps]
+        for b, root in zip(_family_branches(curve, chart.ring, sub, pull), fam.real_roots()):
+            b.point = _point_box(fam, root)
+            b.tangents = [chart.lift_direction(t) for t in b.tangents]
+            out.append(b)
     return out
 
 
@@ -229,9 +260,10 @@ def _check_on(gens: Sequence[Poly], ring: PolyRing, fam: PointFamily) -> None:
             raise RealSolvingError("the point is not on the variety")
 
 
-def _family_branches(curve: list[Poly], ring: PolyRing, fam: PointFamily) -> list[Branches]:
+def _family_branches(curve: list[Poly], ring: PolyRing, fam: PointFamily,
+                     pull: list[list[fmpq]] | None = None) -> list[Branches]:
     roots = fam.real_roots()
-    S = _Setting(curve, ring, fam) if curve else None
+    S = _Setting(curve, ring, fam, pull) if curve else None
     if S is not None and not _passes(S):
         S = None
     smooth = S is not None and _smooth(S)
@@ -240,14 +272,14 @@ def _family_branches(curve: list[Poly], ring: PolyRing, fam: PointFamily) -> lis
         point = AlgebraicPoint(S.ring, S.t, S.e, S.centre)
         cone = tangent_cone_over(centre_at(S.curve, point), point)
         lines = _cone_lines(S, cone)
-    out = []
-    for j, root in enumerate(roots):
-        box = _point_box(fam, root)
-        if S is None:
-            out.append(Branches(box, 0, 0, False, "isolated", [], [], fmpq(0)))
-        else:
-            out.append(_branches_at(S, j, box, smooth, lines))
-    return out
+    if S is None:
+        return [Branches(_point_box(fam, root), 0, 0, False, "isolated", [], [], fmpq(0)) for root in roots]
+    at = [lines.at(j) for j in range(len(roots))]
+    eps2 = _critical_bound(S)  # one radius for all the conjugate points: one sphere
+    for form in {tuple(w) for _, forms in at for w in forms}:
+        eps2 = min(eps2, _hyperplane_bound(S, list(form)))
+    sphere = _sphere(S, eps2)
+    return [_branches_at(S, j, _point_box(fam, root), smooth, at[j], sphere, eps2) for j, root in enumerate(roots)]
 
 
 def _point_box(fam: PointFamily, root: RealRoot) -> Box:
@@ -260,13 +292,13 @@ def _passes(S: _Setting) -> bool:
     return not any(p.is_constant() for p in basis)
 
 
-def _branches_at(S: _Setting, j: int, box: Box, smooth: bool, lines: _Lines) -> Branches:
-    """The half-branches at the ``j``-th real point, each on the tangent ray its signs name."""
-    dirs, forms = lines.at(j)
-    eps2 = _critical_bound(S)
-    for w in forms:
-        eps2 = min(eps2, _hyperplane_bound(S, w))
-    rep, roots, owners = _sphere(S, eps2)
+def _branches_at(S: _Setting, j: int, box: Box, smooth: bool, lines: tuple[list[Box], list[list[fmpq]]],
+                 sphere: tuple[object, list[RealRoot], list[int]], eps2: fmpq) -> Branches:
+    """The half-branches at the ``j``-th real point (its tangent ``lines`` and sign forms, the
+    real points on a sphere of squared radius ``eps2`` small enough for each point), each on the
+    tangent ray its signs name."""
+    dirs, forms = lines
+    rep, roots, owners = sphere
     mine = [r for r, o in zip(roots, owners) if o == j]
     rays = [[0, 0] for _ in dirs]
     for r in mine:
@@ -329,7 +361,7 @@ class _Lines:
         mine = self.roots[j]
         if len(mine) < 2:
             return self._boxes(mine), [self.L]
-        for W in _forms(self.S.n, 40):
+        for W in self.S.forms(40):
             order = _sorted_values(self.rep, mine, linear_poly(self.S.ring, W))
             if order is None:
                 continue
@@ -375,7 +407,7 @@ def _transversal(S: _Setting, cone: list[Poly], form: list[fmpq]) -> bool:
 
 
 def _cone_lines(S: _Setting, cone: list[Poly]) -> _Lines:
-    for L in _forms(S.n, 40):
+    for L in S.forms(40):
         if _transversal(S, cone, L):
             return _Lines(S, cone, L)
     raise RealSolvingError("no form transversal to the tangent cone")

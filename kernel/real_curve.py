@@ -38,18 +38,18 @@ from dataclasses import dataclass
 from typing import Sequence
 
 import flint
-from flint import fmpq, fmpq_poly, fmpz_poly
+from flint import fmpq, fmpq_poly, fmpz_poly, fmpz_mod_poly_ctx, fq_default_ctx
 
 from .coeffs import QQ
 from .groebner import groebner
 from .ideals import dimension, dp_ring
 from .matrix import Matrix, minors
-from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 from .real_branches import PointFamily, half_branch_counts
+from .real_chart import Chart
 from .real_events import Degenerate, Event, Special, clear, locate, point_box, roots_at, same_point, special
-from .real_field import RealAlgebraicField
-from .real_fibers import Fibres, curve_part, event_polynomial, irreducible_factors, is_finite, linear_poly
+from .real_fibers import (Biv, Fibres, at_x, complete_intersection, curve_part, event_polynomial, irreducible_factors,
+                          is_finite, linear_poly)
 from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, separate, sign_at
 from .real_solve import RUR, NotSeparatingError, QuotientAlgebra, arb_bounds, ball_eval, real_solutions, rur_of, \
     solution_boxes
@@ -86,50 +86,6 @@ class CurveTopology:
         return all(c.bounded for c in self.circuits)
 
 
-# --- the affine chart of the linear equations ----------------------------------------------
-
-class _Chart:
-    """The affine subspace of the linear elements ``x_j - a_j(free)`` of a reduced ``dp`` basis:
-    the curve is given in the free variables by the other generators restricted to it."""
-
-    def __init__(self, gens: list[Poly], basis: list[Poly], ring: PolyRing) -> None:
-        n = ring.nvars
-        linear = {g.lm().index(1): g.monic() for g in basis if g.total_degree() == 1}
-        self.free = [i for i in range(n) if i not in linear]
-        self.ring = PolyRing(QQ, [ring.names[i] for i in self.free], MonomialOrder([Block("dp", len(self.free))]))
-        xs = self.ring.gens()
-        self.maps: list[tuple[fmpq, list[fmpq]]] = []
-        images = []
-        for i in range(n):
-            if i in linear:
-                g = linear[i]
-                const = -g.coeff_of(ring.zero_exp)
-                lin = [-g.coeff_of(tuple(int(k == j) for k in range(n))) for j in self.free]
-            else:
-                const, lin = fmpq(0), [fmpq(int(j == i)) for j in self.free]
-            self.maps.append((const, lin))
-            images.append(sum((x * c for x, c in zip(xs, lin) if c != 0), self.ring.const(const)))
-        self.gens = [h for h in (g.compose(images, self.ring) for g in gens) if not h.is_zero()]
-
-    def directions(self) -> list[list[fmpq]]:
-        """The original coordinates as linear forms in the free variables (distinct, nonzero)."""
-        out: list[list[fmpq]] = []
-        for _, lin in self.maps:
-            if any(lin) and lin not in out:
-                out.append(lin)
-        return out
-
-    def lift(self, box: Box) -> Box:
-        """The box of a point of the chart in all coordinates (exact interval arithmetic)."""
-        out = []
-        for const, lin in self.maps:
-            lo = hi = const
-            for c, (a, b) in zip(lin, box):
-                lo, hi = (lo + c * a, hi + c * b) if c >= 0 else (lo + c * b, hi + c * a)
-            out.append((lo, hi))
-        return out
-
-
 # --- forms and critical points ----------------------------------------------------------------
 
 def _forms(n: int, seed: int, count: int, start: int = 0) -> list[list[fmpq]]:
@@ -151,11 +107,20 @@ def _forms(n: int, seed: int, count: int, start: int = 0) -> list[list[fmpq]]:
 def _critical_algebra(gens: list[Poly], ring: PolyRing, direction: list[fmpq]) -> QuotientAlgebra | None:
     """The algebra of the critical points of the linear form ``direction`` on the curve (the curve
     and the maximal minors of the Jacobian of ``n - 1`` generators or combinations of them, and the
-    form); None when they are not isolated (the form is constant on a component)."""
+    form); None when they are not isolated (the form is constant on a component).  ``n - 1``
+    generators of least degree cutting out a curve (a mechanism's constraints within its mode's
+    ideal) come first: their Jacobian has low degree, where random combinations of all the
+    generators give a determinant of high degree and many spurious points."""
     n = ring.nvars
-    for seed in ([None] if len(gens) == n - 1 else range(4)):
-        rnd = random.Random(seed)
-        h = gens if seed is None else [sum((g * rnd.randint(-3, 3) for g in gens), ring.zero()) for _ in range(n - 1)]
+    for seed in ([None] if len(gens) == n - 1 else ["ci"] + list(range(4))):
+        if seed == "ci":
+            h = complete_intersection(gens, ring)
+            if h is None:
+                continue
+        else:
+            rnd = random.Random(seed)
+            h = gens if seed is None else [sum((g * rnd.randint(-3, 3) for g in gens), ring.zero())
+                                          for _ in range(n - 1)]
         rows = [[f.diff(i) for i in range(n)] for f in h] + [[ring.const(c) for c in direction]]
         det = [d for d in minors(Matrix(ring, n, n, [p for r in rows for p in r]), n) if not d.is_zero()]
         K = gens + det
@@ -228,7 +193,7 @@ class _Sweep:
                 found += [(r, data) for r in rs]
         self.events = [Event(r, d) for r, d in _match(separate([r for r, _ in found]), found)]
         self.half: dict[int, list[int]] = {}
-        self.minors: list[Poly] | None = None
+        self.jacobian: list[list[list[Poly]]] | None = None  # of n - 1 generators, of all
         self.second: list[tuple[list[fmpq], fmpz_poly]] = []
 
     def topology(self) -> tuple[list[Circuit], list[Box]]:
@@ -296,13 +261,11 @@ class _Sweep:
     def _half_branches(self, ev: Event) -> int:
         """The real half-branches at the critical point over the event (2 when it is smooth)."""
         data = ev.data
-        F = RealAlgebraicField(ev.root)
         n = self.ring.nvars
-        if self.minors is None:
-            rows = [[f.diff(i) for i in range(n)] for f in self.gens]
-            self.minors = [p for p in minors(Matrix(self.ring, len(rows), n, [p for r in rows for p in r]), n - 1)
-                           if not p.is_zero()]
-        if any(not F.is_zero(_eval_over(F, p, data.psi)) for p in self.minors):
+        if self.jacobian is None:
+            ci = complete_intersection(self.gens, self.ring) or []
+            self.jacobian = [[[f.diff(i) for i in range(n)] for f in part] for part in (ci, self.gens)]
+        if any(_rank_mod_p(rows, data.poly, data.psi) == n - 1 for rows in self.jacobian if rows):
             return 2
         key = id(data)
         if key not in self.half:
@@ -324,16 +287,18 @@ class _Sweep:
             if attempt == len(self.second):
                 m2 = _forms(n, 700 + attempt, 1, 2 * attempt)[0]
                 try:
-                    self.second.append((m2, event_polynomial(self.fib.plane_curve(m2))))
+                    g2 = self.fib.plane_curve(m2)
+                    self.second.append((m2, event_polynomial(g2), g2,
+                                        self.fib.plane_curve([a + b for a, b in zip(self.m, m2)])))
                 except RealSolvingError:
-                    self.second.append((m2, fmpz_poly([0])))
-            m2, e2 = self.second[attempt]
+                    self.second.append((m2, fmpz_poly([0]), [], []))
+            m2, e2, g2, g3 = self.second[attempt]
             if e2.is_zero() or sign_at(e2, ev.root) == 0:
                 continue
             r = ev.root
             while not clear(fmpq_poly(e2), r.lo, r.hi):
                 r = r.refined((r.hi - r.lo) / 4)
-            left, right = self._m2_ranks(r.lo, m2), self._m2_ranks(r.hi, m2)
+            left, right = (_plane_ranks(self.g, g2, g3, a) or self._m2_ranks(a, m2) for a in (r.lo, r.hi))
             return [right.index(rank) for rank in left]
         raise Degenerate()
 
@@ -388,16 +353,99 @@ class _Sweep:
         return circuits, isolated
 
 
-def _eval_over(F: RealAlgebraicField, p: Poly, coords: list[fmpq_poly]) -> fmpq_poly:
-    """``p(coords)`` in ``Q(c)``."""
-    out = F.zero
+def _plane_ranks(g: Biv, g2: Biv, g3: Biv, a: fmpq) -> list[int] | None:
+    """For the real fibre points over ``a`` in ``m``-order their ranks in ``m2``-order, from the
+    plane images of ``(l, m)``, ``(l, m2)`` and ``(l, m + m2)`` alone (``a`` no event of the first
+    two: their real roots over ``a`` are the values of the real points): the partner of the
+    ``m``-value ``y`` is the one ``m2``-value ``z`` with ``y + z`` a root of ``g3(a, Y)``, certified
+    when interval arithmetic excludes every other ``z``.  None when that stays ambiguous (a
+    coincidence of values: the caller solves the fibre)."""
+    ys, zs = isolate_real_roots(at_x(g, a)), isolate_real_roots(at_x(g2, a))
+    if len(ys) != len(zs):
+        return None
+    if len(ys) <= 1:
+        return list(range(len(ys)))
+    ws = isolate_real_roots(at_x(g3, a))
+    for bits in (16, 32, 64, 128, 256):
+        ys, zs, ws = ([r.refined(fmpq(1, 2 ** bits)) for r in rs] for rs in (ys, zs, ws))
+        ranks = []
+        for y in ys:
+            hits = [j for j, z in enumerate(zs) if any(y.lo + z.lo <= w.hi and w.lo <= y.hi + z.hi for w in ws)]
+            if len(hits) != 1:
+                break
+            ranks.append(hits[0])
+        else:
+            if len(set(ranks)) == len(ranks):
+                return ranks
+    return None
+
+
+def _rank_mod_p(rows: list[list[Poly]], poly: fmpz_poly, psi: list[fmpq_poly]) -> int:
+    """A lower bound for the rank of the polynomial matrix at the points ``x = psi(c)``,
+    ``poly(c) = 0``: its rank over ``F_q = F_p[T]/(h)`` for an irreducible factor ``h`` of
+    ``poly`` modulo a prime ``p`` (``Z_(p)[T]/(poly) -> F_q`` is a ring map, so the minors vanishing
+    at ``c`` vanish there; :mod:`.modular_rank`); 0 when every prime tried divides a denominator."""
+    for prime in _PRIMES:
+        if poly[poly.degree()] % prime == 0:
+            continue
+        _, facs = fmpz_mod_poly_ctx(prime)([int(c) for c in poly.coeffs()]).factor()
+        h = min((f for f, _ in facs), key=lambda f: f.degree())
+        F = fq_default_ctx(modulus=h, check_prime=False)
+        t = F.gen()
+        try:
+            point = [_horner_mod(F, x.coeffs(), t, prime) for x in psi]
+            table = [[_value_mod(F, p, point, prime) for p in row] for row in rows]
+        except ZeroDivisionError:  # a denominator divisible by the prime
+            continue
+        return _rank(table)
+    return 0
+
+
+def _coeff_mod(c: fmpq, prime: int) -> int:
+    q = int(c.q) % prime
+    if q == 0:
+        raise ZeroDivisionError
+    return int(c.p) * pow(q, -1, prime) % prime
+
+
+def _horner_mod(F, coeffs: list[fmpq], t, prime: int):
+    out = F(0)
+    for c in reversed(coeffs):
+        out = out * t + F(_coeff_mod(c, prime))
+    return out
+
+
+def _value_mod(F, p: Poly, point: list, prime: int):
+    out = F(0)
     for e, c in p.terms.items():
-        t = fmpq_poly([c])
-        for x, k in zip(coords, e):
+        v = F(_coeff_mod(c, prime))
+        for x, k in zip(point, e):
             if k:
-                t = F.mul(t, x ** k)
-        out = out + t
-    return F(out)
+                v = v * x ** k
+        out += v
+    return out
+
+
+def _rank(m: list[list]) -> int:
+    """The rank of a matrix over a finite field (Gaussian elimination)."""
+    m = [list(r) for r in m]
+    rank = 0
+    for col in range(len(m[0]) if m else 0):
+        pivot = next((i for i in range(rank, len(m)) if not m[i][col].is_zero()), None)
+        if pivot is None:
+            continue
+        m[rank], m[pivot] = m[pivot], m[rank]
+        inv = m[rank][col] ** -1
+        for i in range(rank + 1, len(m)):
+            if not m[i][col].is_zero():
+                q = m[i][col] * inv
+                m[i] = [a - q * b for a, b in zip(m[i], m[rank])]
+        rank += 1
+    return rank
+
+
+#: Primes for the modular ranks.
+_PRIMES = [2 ** 31 - 1, 2147483629, 2147483587, 2147483579, 2147483563, 2147483549, 2147483543, 2147483497]
 
 
 def _key(f: fmpz_poly) -> tuple:
@@ -466,7 +514,7 @@ def curve_topology(gens: Sequence[Poly], ring: PolyRing | None = None, digits: i
         return CurveTopology([], [])
     if basis and dimension(basis, R) == 0:
         return CurveTopology([], [s.box for s in real_solutions(basis, R, digits or 6).real])
-    chart = _Chart(gens, basis, R)
+    chart = Chart(gens, basis, R)
     if len(chart.free) == 1:
         origin = chart.lift([(fmpq(0), fmpq(0))])
         return CurveTopology([Circuit([origin], origin, False, 2)], [])

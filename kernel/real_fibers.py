@@ -20,7 +20,7 @@ from flint import fmpq, fmpq_poly, fmpz_poly
 from . import offload_exact
 from .dimension import krull_dim
 from .groebner import groebner
-from .ideals import dp_ring, move
+from .ideals import dimension, dp_ring, move
 from .poly import Poly, PolyRing
 from .real_roots import RealSolvingError, primitive, squarefree_part
 from .real_solve import QuotientAlgebra
@@ -142,6 +142,16 @@ def irreducible_factors(p: fmpz_poly) -> list[fmpz_poly]:
         return []
     _, facs = offload_exact.factor(p)
     return [primitive(f) for f, _ in facs]
+
+
+def complete_intersection(gens: Sequence[Poly], ring: PolyRing) -> list[Poly] | None:
+    """``n - 1`` of the generators, the least degrees first, whose variety is a curve (every
+    component of dimension one: a complete intersection containing ``V(gens)``), or None."""
+    n = ring.nvars
+    h = sorted((g for g in gens if not g.is_zero()), key=lambda g: (g.total_degree(), len(g.terms)))[:n - 1]
+    if len(h) < n - 1 or any(g.is_constant() for g in h):
+        return None
+    return h if dimension(h, ring) == 1 else None
 
 
 def curve_part(gens: Sequence[Poly], ring: PolyRing, prime: bool = False) -> tuple[list[Poly], list[list[Poly]]]:

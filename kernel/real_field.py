@@ -45,11 +45,8 @@ class RealAlgebraicField:
     def ball(self, a: Elt, prec: int = 128) -> arb:
         """A ball around the value of ``a`` at ``c`` (at ``prec`` bits)."""
         with flint.ctx.workprec(prec):
-            t = self.root.ball(prec)
-            out = arb(0)
-            for c in reversed((a % self.p).coeffs()):
-                out = out * t + arb(c)
-            return out
+            coeffs = (a % self.p).coeffs()
+            return flint.arb_poly([arb(c) for c in coeffs])(self.root.ball(prec)) if coeffs else arb(0)
 
     def refine(self, width: fmpq) -> None:
         """Narrow the interval of ``c`` (later balls are tighter)."""

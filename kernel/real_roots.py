@@ -347,6 +347,13 @@ def sign_at(g: Univariate, root: RealRoot) -> int:
     if h.degree() > 0 and sign(h(root.lo)) * sign(h(root.hi)) < 0:
         return 0
     r = root
+    orig = as_fmpq_poly(g)
+    for bits in (32, 64, 128):  # g does not vanish at the root: a ball of its value excluding 0 decides
+        r = r.refined(fmpq(1, 2 ** bits))
+        with flint.ctx.workprec(2 * bits + 64):
+            v = flint.arb_poly([arb(c) for c in orig.coeffs()])(r.ball(2 * bits + 64))
+        if v > 0 or v < 0:
+            return 1 if v > 0 else -1
     while True:
         if q(r.lo) != 0 and _unit_variations(_scaled(q, r.lo, r.hi - r.lo)) == 0:
             return sign(q(r.lo))

@@ -182,11 +182,35 @@ class QuotientAlgebra:
         return self._monomial_mats[e]
 
     def poly_matrix(self, p: Poly) -> fmpq_mat:
-        """The matrix of multiplication by ``p``: ``sum coords(p)_k M_{b_k}``."""
+        """The matrix of multiplication by ``p``: ``p(M_x1, ..., M_xn)`` for a polynomial of few
+        low-degree terms (the matrices commute), else ``sum coords(p)_k M_{b_k}``."""
+        if self._monomial_mats is None and sum(max(sum(e) - 1, 0) for e in p.terms) < self.dim // 2:
+            return self._evaluated(p)
         out = fmpq_mat(self.dim, self.dim)
         for k, c in enumerate(self.coords(p)):
             if c != 0:
                 out += self.monomial_matrix(self.monomials[k]) * c
+        return out
+
+
+    def _evaluated(self, p: Poly) -> fmpq_mat:
+        """``p`` at the variables' matrices, the power products shared."""
+        D = self.dim
+        known: dict[Exp, fmpq_mat] = {}
+
+        def power(e: Exp) -> fmpq_mat:
+            if e not in known:
+                v = next(v for v, k in enumerate(e) if k)
+                rest = _shift(e, v, -1)
+                known[e] = self.var_matrix(v) if sum(rest) == 0 else self.var_matrix(v) * power(rest)
+            return known[e]
+        out = fmpq_mat(D, D)
+        for e, c in p.terms.items():
+            if sum(e) == 0:
+                for i in range(D):
+                    out[i, i] += c
+            else:
+                out += power(tuple(e)) * fmpq(c)
         return out
 
 
