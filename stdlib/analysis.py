@@ -446,6 +446,17 @@ def _no_components(a: Analysis) -> str:
     return f"singular point (local components not computed: {why})"
 
 
+def mode_generators(a: Analysis, i: int) -> list[Poly]:
+    """Generators of mode ``i`` (1-based) for computations that only need its ideal: J's own
+    generators when J is radical with this one mode (then J is the mode's prime), fewer and of lower
+    degree than the prime's reduced basis (the geared five-bar: 8 of degree <= 2 against 17 of degree
+    <= 4; the algebra of its real circuits' critical points in 0.2 s against 20 s), else the prime's
+    basis."""
+    if a.radical and a.radical_decided and len(a.modes) == 1 and i == 1:
+        return list(a.ideal)
+    return a.modes[i - 1].prime
+
+
 def _minimal_modes(a: Analysis) -> list[list[Poly]]:
     """The minimal primes of J: the motion modes' primes without the embedded ones."""
     primes = [md.prime for md in a.modes]

@@ -29,7 +29,7 @@ from mech.dsl.limits import REPORT_KEEP, cut, remaining
 from mech.dsl.limits import within as limited
 from mech.kernel import Poly
 from mech.kernel.real_roots import RealSolvingError
-from mech.stdlib.analysis import Analysis, relaxed_gc
+from mech.stdlib.analysis import Analysis, mode_generators, relaxed_gc
 from mech.stdlib.grashof import four_bar
 
 #: Seconds the real steps of one report may take together (besides the statement's time limit).
@@ -193,7 +193,7 @@ def _compute(a: Analysis) -> RealSections:
 
 def _circuit_section(sec: RealSections, a: Analysis) -> None:
     if a.modes:
-        parts = [(i, md.prime) for i, md in enumerate(a.modes, 1) if md.dim == 1 and md.real]
+        parts = [(i, mode_generators(a, i)) for i, md in enumerate(a.modes, 1) if md.dim == 1 and md.real]
     else:  # a quick analysis: the configuration space as a whole
         parts = [(None, a.ideal)]
     out = []

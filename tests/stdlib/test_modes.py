@@ -174,3 +174,25 @@ def test_proved_mode_count_is_reported_when_the_ideals_run_out(monkeypatch):
     assert "motion modes: 2, curves of degrees 6, 10 (proved by a projection" in text
     assert "local components not computed: the motion modes were not found" in text
     assert report_data(a)["motion_mode_degrees"] == [6, 10]
+
+
+GEARED_FIVEBAR = "ground O Q 2; bar O A 1; bar Q B 1; bar A C 2; bar B C 2; gear O Q 2"
+
+
+def test_mode_generators_of_a_prime_J_are_Js_own():
+    """A radical J with one mode is that mode's prime: the real answers take J's 8 generators of
+    degree <= 2 (the prime's reduced basis has 17, up to degree 4: the algebra of the critical points
+    of its real circuits took 20 s, from J 0.2 s); a non-radical J's mode keeps its prime."""
+    from mech.kernel.ideals import dp_ring, move
+    from mech.kernel.real_curve import _critical_algebra
+    from mech.stdlib.analysis import mode_generators
+    from flint import fmpq
+    a = analyze(parse_mechanism(GEARED_FIVEBAR))
+    gens = mode_generators(a, 1)
+    assert gens == list(a.ideal) and len(a.modes[0].prime) == 17
+    assert ideals_equal(gens, a.modes[0].prime, a.ring)
+    R = dp_ring(a.ring)
+    algebra = _critical_algebra(move(gens, R), R, [fmpq(k) for k in (1, 2, -1, 3, 1, -2, 2, 1)])
+    assert algebra is not None and len(algebra.monomials) == 40
+    b = analyze(parse_mechanism(DOUBLE_PARALLELOGRAM))
+    assert mode_generators(b, 1) == b.modes[0].prime
