@@ -178,11 +178,12 @@ class Lifter:
 
 
 def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
-          small_work: int = 0) -> list[dict]:
+          small_work: int = 0, counter: Callable | None = None) -> list[dict]:
     """The reduced Gröbner basis over QQ by modular F4, as ``{exponent: fmpq}`` dicts
     (see the module docstring; ``verify`` is ``"fast"``, ``"exact"`` or ``"none"``).
     Raises :class:`SmallSystem` if the first run handles fewer than ``small_work`` matrix
-    entries."""
+    entries.  ``counter``: for homogeneous generators, makes a
+    :class:`.hilbert_driven.Counter` of the ideal's Hilbert series (Hilbert-driven F4)."""
     ints = [primitive(g.terms) for g in gens]
     maxdeg = initial_degree(gens)
     stream = primes()
@@ -191,7 +192,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
             P = Packing(ring.order, maxdeg)
             shapes, coefs = _pack(ints, P)
             try:
-                result = _modular(shapes, coefs, P, stream, max_primes, small_work)
+                result = _modular(shapes, coefs, P, stream, max_primes, small_work, counter)
                 break
             except PackingOverflow:
                 maxdeg = 2 * maxdeg + 1
@@ -215,7 +216,8 @@ def _pack(ints: list[dict], P: Packing):
     return shapes, coefs
 
 
-def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int = 0):
+def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int = 0,
+             counter: Callable | None = None):
     """(monomials, rational coefficients) of the lifted basis, or None to start again."""
     used = 0
     while used < max_primes:
@@ -224,7 +226,7 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
         if any(cs[0] % p0 == 0 for cs in coefs):
             continue
         rows = [(ms, [c % p0 for c in cs]) for ms, cs in zip(shapes, coefs)]
-        engine = F4(rows, P, p0, record=True)
+        engine = F4(rows, P, p0, record=True, counter=None if counter is None else counter())
         basis = engine.run()
         if engine.work < small_work:
             raise SmallSystem
