@@ -13,8 +13,10 @@ monomial, each leading exponent first in its dict), for a local one a standard b
 orderings (``is_graded``) over Z/p, and over QQ modular F4, except for systems too small for
 its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot verify a basis
 (then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
-(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations), then a ``dp`` basis
-(kept in the cache) and from it FGLM for zero-dimensional ideals; for the others, over Z/p and
+(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations; lex orderings compute the
+``dp`` basis first and skip it for zero-dimensional ideals), then a ``dp`` basis (kept in the
+cache) and from it FGLM for zero-dimensional ideals (over QQ in a block ordering with at least
+:data:`FGLM_STAIRS` standard monomials the Hilbert-driven F4 instead); for the others, over Z/p and
 a lex ordering F4 on that ordering within :data:`F4_BUDGET` (its matrices can grow far past
 the Hilbert-driven algorithm's work), then the Hilbert-driven algorithm; Buchberger over other
 fields.  Local orderings: Mora within a :class:`~.mora.Budget`, then
@@ -54,7 +56,8 @@ Run = Callable[[list[Poly], PolyRing], list[Terms]]
 
 AUTO = "auto"
 AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p; block and lex orderings: "
-                "Buchberger if small, else from a dp basis FGLM (zero-dimensional ideals), F4 (lex over Z/p) or Hilbert-driven; "
+                "Buchberger if small, else from a dp basis FGLM or Hilbert-driven F4 (zero-dimensional ideals), "
+                "F4 (lex over Z/p) or Hilbert-driven; "
                 "local orderings: Mora, then Lazard")
 
 SMALL_WORK = 600

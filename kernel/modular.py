@@ -33,6 +33,10 @@
    is lucky, ``LT(I mod p) = LT(I)``: then ``LT(J) = <LM(G)> = LT(I)`` with ``I ⊆ J``.  Only
    finitely many primes are unlucky, and the primes are drawn from ``(2^27, 2^28)`` by a fixed
    pseudo-random sequence (so runs are reproducible).
+   A Hilbert-driven run (``counter``: homogeneous generators, the ideal's Hilbert series known
+   over QQ) stops once its leading monomials have that series; the same checks hold: a replay
+   at ``q`` yields elements of ``I mod q`` whose leading monomials already have the series of
+   ``I``, at most that of ``LT(I mod q)``, so they form its Gröbner basis.
    If a check fails, the computation starts again from a new prime; after three failures
    :class:`ModularFailure` is raised (the ``auto`` policy of :mod:`.engines` then runs Buchberger).
 """
