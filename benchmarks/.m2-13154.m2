@@ -1,3 +1,0 @@
-t = 0; n = 0;
-for k from 1 to 1 do (R = QQ[x0, x1, x2, x3, x4, x5, x6, x7, x8, MonomialOrder => GRevLex]; use R; I = ideal(x0+2*x1+2*x2+2*x3+2*x4+2*x5+2*x6+2*x7+2*x8-1, x0^2-x0+2*x1^2+2*x2^2+2*x3^2+2*x4^2+2*x5^2+2*x6^2+2*x7^2+2*x8^2, 2*x0*x1+2*x1*x2-x1+2*x2*x3+2*x3*x4+2*x4*x5+2*x5*x6+2*x6*x7+2*x7*x8, 2*x0*x2+x1^2+2*x1*x3+2*x2*x4-x2+2*x3*x5+2*x4*x6+2*x5*x7+2*x6*x8, 2*x0*x3+2*x1*x2+2*x1*x4+2*x2*x5+2*x3*x6-x3+2*x4*x7+2*x5*x8, 2*x0*x4+2*x1*x3+2*x1*x5+x2^2+2*x2*x6+2*x3*x7+2*x4*x8-x4, 2*x0*x5+2*x1*x4+2*x1*x6+2*x2*x3+2*x2*x7+2*x3*x8-x5, 2*x0*x6+2*x1*x5+2*x1*x7+2*x2*x4+2*x2*x8+x3^2-x6, 2*x0*x7+2*x1*x6+2*x1*x8+2*x2*x5+2*x3*x4-x7); t0 = cpuTime(); G = gens gb I; t = t + cpuTime() - t0; n = numcols G);
-print "RESULT"; print(t / 1); print n;
