@@ -13,8 +13,10 @@ monomial, each leading exponent first in its dict), for a local one a standard b
 orderings (``is_graded``) over Z/p, and over QQ modular F4, except for systems too small for
 its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot verify a basis
 (then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
-(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations), then a ``dp`` basis
-(kept in the cache) and from it FGLM for zero-dimensional ideals; for the others, over Z/p and
+(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations; lex orderings compute the
+``dp`` basis first and skip it for zero-dimensional ideals), then a ``dp`` basis (kept in the
+cache) and from it FGLM for zero-dimensional ideals (over QQ in a block ordering with at least
+:data:`FGLM_STAIRS` standard monomials the Hilbert-driven F4 instead); for the others, over Z/p and
 a lex ordering F4 on that ordering within :data:`F4_BUDGET` (its matrices can grow far past
 the Hilbert-driven algorithm's work), then the Hilbert-driven algorithm; Buchberger over other
 fields.  Local orderings: Mora within a :class:`~.mora.Budget`, then
@@ -41,8 +43,8 @@ from .collector import paused
 from .coeffs import Field, PrimeField, RationalField
 from .errors import EngineError
 from .f4 import f4_modp
-from .fglm import NotZeroDimensional, fglm_qq, fglm_zp
-from .hilbert_driven import hilbert_driven
+from .fglm import NotZeroDimensional, fglm_qq, fglm_zp, staircase
+from .hilbert_driven import hilbert_driven, hilbert_f4
 from .lazard import lazard
 from .modular import ModularFailure, SmallSystem, f4_qq
 from .mora import Budget, BudgetExceeded, minimal, monic, mora
@@ -54,7 +56,8 @@ Run = Callable[[list[Poly], PolyRing], list[Terms]]
 
 AUTO = "auto"
 AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p; block and lex orderings: "
-                "Buchberger if small, else from a dp basis FGLM (zero-dimensional ideals), F4 (lex over Z/p) or Hilbert-driven; "
+                "Buchberger if small, else from a dp basis FGLM or Hilbert-driven F4 (zero-dimensional ideals), "
+                "F4 (lex over Z/p) or Hilbert-driven; "
                 "local orderings: Mora, then Lazard")
 
 SMALL_WORK = 600
@@ -80,6 +83,17 @@ Hilbert-driven algorithm.  F4 took Singular's rcyclic-13 in lp (13 variables, 20
 entries) in 0.1 s where the Hilbert-driven Buchberger took more than 30 s; on zero-dimensional
 ideals FGLM goes first (F4 in lp needed minutes for katsura-5).  Block orderings stay with the
 Hilbert-driven algorithm (faster on benchmarks/cases.py's elimination)."""
+
+
+FGLM_STAIRS = 100
+"""Over QQ, a zero-dimensional ideal with at least this many standard monomials gets its basis
+for a block ordering by the Hilbert-driven F4 (:func:`.hilbert_driven.hilbert_f4`) instead of
+FGLM, whose exact linear algebra grows with the cube of that number.  Measured on
+benchmarks/cases.py (session 10, alternating, load ~8): cyclic-6 in (dp(3),dp(3)), 156
+monomials, 200-240 ms against FGLM's 310-360; katsura-6 in (dp(3),dp(4)), 64 monomials,
+FGLM 193-199 ms against 201-225; katsura-5 (32) 42-48 against 48-52.  Lex orderings stay with
+FGLM (the Hilbert-driven F4 took 2 s on katsura-5 in lp, FGLM 50 ms), and over Z/p FGLM
+was as fast or faster on all three."""
 
 
 def field_kind(field: Field) -> str | None:
@@ -281,16 +295,21 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
                 pass
     elif kind is not None:
         dp = _dp_ring(ring)
+        lex = all(b.kind == "lp" for b in ring.order.blocks)
         basis = cached_standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
-        if basis is None:
+        if basis is None and lex:
+            basis = _degree_basis(gens, ring)
+        if basis is None or lex and not _zero_dimensional(basis):
             try:
                 return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
             except TooLong:
-                basis = _degree_basis(gens, ring)
+                basis = basis or _degree_basis(gens, ring)
         try:
+            if kind == "QQ" and not lex and len(staircase([b.lm() for b in basis], ring.nvars)) >= FGLM_STAIRS:
+                return _finish(hilbert_f4(gens, ring, _dp_auto), ring, False)
             return _finish(_convert(basis, ring), ring, True)
         except NotZeroDimensional:
-            if kind == "Z/p" and all(b.kind == "lp" for b in ring.order.blocks):
+            if kind == "Z/p" and lex:
                 try:
                     return _finish(f4_modp(gens, ring, F4_BUDGET), ring, True)
                 except TooLong:
@@ -299,6 +318,14 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
         except ModularFailure:
             pass
     return _finish(buchberger(gens, ring), ring, False)
+
+
+def _zero_dimensional(basis: list[Poly]) -> bool:
+    """Whether the ideal with this Gröbner basis is zero-dimensional (a pure power of every
+    variable among the leading monomials)."""
+    n = basis[0].ring.nvars if basis else 0
+    pure = {next(i for i, a in enumerate(e) if a) for e in (b.lm() for b in basis) if sum(1 for a in e if a) == 1}
+    return len(pure) == n
 
 
 def _dp_ring(ring: PolyRing) -> PolyRing:
@@ -370,6 +397,9 @@ register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ord
          fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
 register("hilbert", lambda gens, ring: hilbert_driven(gens, ring, _dp_auto),
          "Hilbert-driven Buchberger: homogenize, Hilbert series from a dp basis, drop pairs once it is reached")
+register("hilbert-f4", lambda gens, ring: hilbert_f4(gens, ring, _dp_auto),
+         "Hilbert-driven F4: homogenize, Hilbert series from a dp basis, F4 (modular over QQ) until it is reached",
+         fields=("QQ", "Z/p"))
 register("mora", mora, "Mora's normal form with ecart and sugar, the highest corner for ds (Singular's std for local orderings)",
          orderings=("global", "local"))
 register("lazard", _lazard, "Lazard's method: homogenize, Gröbner basis by auto, dehomogenize",

@@ -55,7 +55,7 @@ class F4:
     """
 
     def __init__(self, polys: Sequence[Row], packing: Packing, p: int, record: bool = False,
-                 budget: float = float("inf")) -> None:
+                 budget: float = float("inf"), counter=None) -> None:
         self.P = packing
         self.p = p
         self.vec = Vectors(p)
@@ -75,9 +75,12 @@ class F4:
         # (entries times non-pivot columns, summed over the matrices) past DENSE_PER_ENTRY times it
         self.budget = budget
         self.dense = 0
+        # homogeneous input only: the leading ideal's Hilbert function against the ideal's
+        # (:class:`.hilbert_driven.Counter`); pairs of a degree already complete are dropped
+        self.counter = counter
         for ms, cs in polys:
             k = self._add(ms, cs, is_basis=False)
-            key = packing.weighted_degree(ms[0]) if packing.graded else self.tdeg[k]
+            key = packing.weighted_degree(ms[0]) if packing.graded and counter is None else self.tdeg[k]
             self.pairs.append((key, ms[0], k, -1))
 
     # -- bookkeeping -------------------------------------------------------------------
@@ -141,7 +144,7 @@ class F4:
             dL = degree(L)
             if dL > P.maxdeg:
                 raise PackingOverflow
-            key = P.weighted_degree(L) if graded else max(sugar[i] + dL - degree(li), sh + dL - dH)
+            key = P.weighted_degree(L) if graded and self.counter is None else max(sugar[i] + dL - degree(li), sh + dL - dH)
             new.append((key, L, i, h))
         # criterion B on the old pairs
         old = []
@@ -399,12 +402,24 @@ class F4:
             if self.mons[k][0] == 0:
                 return False
             self._update(k)
+            if self.counter is not None:
+                self.counter.add(self.P.unpack(self.mons[k][0]))
         return True
 
     # -- the whole computation ---------------------------------------------------------------
     def run(self) -> list[Row]:
         """The reduced Gröbner basis, monic, by increasing leading monomial."""
+        counter = self.counter
         while self.pairs:
+            if counter is not None:  # Hilbert-driven (Traverso): skip what reduces to zero
+                d = min(pr[0] for pr in self.pairs)
+                need, done = counter.missing(d)
+                if done:
+                    self.pairs = []
+                    break
+                if need <= 0:
+                    self.pairs = [pr for pr in self.pairs if pr[0] != d]
+                    continue
             if not self._step():
                 if self.trace is not None:
                     self.trace.unit = True
@@ -476,16 +491,18 @@ def initial_degree(gens: Sequence) -> int:
     return bound
 
 
-def f4_modp(gens: Sequence, ring, budget: float = float("inf")) -> list[dict]:
+def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) -> list[dict]:
     """The reduced Gröbner basis over Z/p by F4, as ``{exponent: coefficient}`` dicts;
-    :class:`~.buchberger.TooLong` once its matrices have more than ``budget`` entries."""
+    :class:`~.buchberger.TooLong` once its matrices have more than ``budget`` entries.
+    ``counter``: for homogeneous generators, makes a :class:`.hilbert_driven.Counter`."""
     p = ring.field.characteristic
     maxdeg = initial_degree(gens)
     while True:
         P = Packing(ring.order, maxdeg)
         rows = pack_polys(gens, P, int)
         try:
-            basis = F4([r for r in rows if r[0]], P, p, budget=budget).run()
+            basis = F4([r for r in rows if r[0]], P, p, budget=budget,
+                       counter=None if counter is None else counter()).run()
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1

@@ -33,6 +33,10 @@
    is lucky, ``LT(I mod p) = LT(I)``: then ``LT(J) = <LM(G)> = LT(I)`` with ``I ⊆ J``.  Only
    finitely many primes are unlucky, and the primes are drawn from ``(2^27, 2^28)`` by a fixed
    pseudo-random sequence (so runs are reproducible).
+   A Hilbert-driven run (``counter``: homogeneous generators, the ideal's Hilbert series known
+   over QQ) stops once its leading monomials have that series; the same checks hold: a replay
+   at ``q`` yields elements of ``I mod q`` whose leading monomials already have the series of
+   ``I``, at most that of ``LT(I mod q)``, so they form its Gröbner basis.
    If a check fails, the computation starts again from a new prime; after three failures
    :class:`ModularFailure` is raised (the ``auto`` policy of :mod:`.engines` then runs Buchberger).
 """
@@ -178,11 +182,12 @@ class Lifter:
 
 
 def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
-          small_work: int = 0) -> list[dict]:
+          small_work: int = 0, counter: Callable | None = None) -> list[dict]:
     """The reduced Gröbner basis over QQ by modular F4, as ``{exponent: fmpq}`` dicts
     (see the module docstring; ``verify`` is ``"fast"``, ``"exact"`` or ``"none"``).
     Raises :class:`SmallSystem` if the first run handles fewer than ``small_work`` matrix
-    entries."""
+    entries.  ``counter``: for homogeneous generators, makes a
+    :class:`.hilbert_driven.Counter` of the ideal's Hilbert series (Hilbert-driven F4)."""
     ints = [primitive(g.terms) for g in gens]
     maxdeg = initial_degree(gens)
     stream = primes()
@@ -191,7 +196,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
             P = Packing(ring.order, maxdeg)
             shapes, coefs = _pack(ints, P)
             try:
-                result = _modular(shapes, coefs, P, stream, max_primes, small_work)
+                result = _modular(shapes, coefs, P, stream, max_primes, small_work, counter)
                 break
             except PackingOverflow:
                 maxdeg = 2 * maxdeg + 1
@@ -215,7 +220,8 @@ def _pack(ints: list[dict], P: Packing):
     return shapes, coefs
 
 
-def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int = 0):
+def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int = 0,
+             counter: Callable | None = None):
     """(monomials, rational coefficients) of the lifted basis, or None to start again."""
     used = 0
     while used < max_primes:
@@ -224,7 +230,7 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
         if any(cs[0] % p0 == 0 for cs in coefs):
             continue
         rows = [(ms, [c % p0 for c in cs]) for ms, cs in zip(shapes, coefs)]
-        engine = F4(rows, P, p0, record=True)
+        engine = F4(rows, P, p0, record=True, counter=None if counter is None else counter())
         basis = engine.run()
         if engine.work < small_work:
             raise SmallSystem
