@@ -24,7 +24,40 @@ def top_degree(gens: Sequence[Exp]) -> Top | None:
     gens = minimal_monomials(gens)
     if not gens:
         return None
-    return _top(tuple(gens), len(gens[0]), {})
+    n = len(gens[0])
+    if any(not any(g) for g in gens):
+        return UNIT
+    degree, witness = 0, [0] * n
+    for part in _components(gens, n):
+        t = _top(tuple(tuple(g[i] for i in part) for g in gens if any(g[i] for i in part)), len(part), {})
+        if t is None:
+            return None
+        degree += t[0]
+        for i, v in zip(part, t[1]):
+            witness[i] = v
+    return degree, tuple(witness)
+
+
+def _components(gens: Sequence[Exp], n: int) -> list[list[int]]:
+    """The variables grouped by the generators that join them (connected components): the
+    monomials outside the ideal are the products of one outside each group's ideal, so the
+    top degrees add up."""
+    parent = list(range(n))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for g in gens:
+        support = [i for i, v in enumerate(g) if v]
+        for i in support[1:]:
+            parent[find(i)] = find(support[0])
+    groups: dict[int, list[int]] = {}
+    for i in range(n):
+        groups.setdefault(find(i), []).append(i)
+    return list(groups.values())
 
 
 UNIT: Top = (-1, ())
