@@ -1,9 +1,9 @@
 """The ``auto`` policy for standard bases in local and mixed orderings (:mod:`.engines` calls
 :func:`auto_local`), chosen by measurement on benchmarks/local_bases.py.
 
-- Homogeneous generators: Lazard's method (:mod:`.lazard`) homogenizes nothing, and its global
-  basis comes from the compiled F4 (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora,
-  0.05 s by F4).
+- Homogeneous generators: Mora within :data:`MORA_HOMOGENEOUS` steps, then Lazard's method
+  (:mod:`.lazard`), which homogenizes nothing, its global basis from the compiled F4
+  (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora, 0.05 s by F4).
 - Otherwise over Z/p: Mora (:mod:`.mora`) within :data:`MORA_FIRST` reduction steps in all
   (small and medium local problems end there, and Lazard would pay for the components away
   from the origin), then Lazard with F4 within :data:`LAZARD_BUDGET` matrix entries (Singular's
@@ -30,6 +30,10 @@ MORA_FIRST = 2000
 32764, 2.2 / 2.1; mora_7 29765, 2.8 / 2.5; mora_9 and mora_10 past 10^5 steps and 30 s, Lazard
 2.6 / 0.07; the Puiseux parametrization in ``ls`` 0 steps, 0.3 ms / 2.9 s."""
 
+MORA_HOMOGENEOUS = 200
+"""Reduction steps Mora gets on homogeneous generators before Lazard's method (about 10 ms;
+Singular's mora2 "standard" case: 0.5 ms by Mora, 2 ms by Lazard)."""
+
 LAZARD_BUDGET = 16_000_000
 """Matrix entries of the F4 run inside Lazard's method (and 1250 times as many operations of
 its dense reduction, :data:`.f4.DENSE_PER_ENTRY`; a few seconds) before Mora takes over again:
@@ -40,7 +44,10 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
     """A standard basis of the ideal of ``gens`` (non-global ``ring``) by the policy above;
     ``global_basis(gens, ring)``: the ``auto`` Gröbner basis for a global ordering."""
     if all(_homogeneous(g) for g in gens):
-        return lazard(gens, ring, global_basis)
+        try:  # tiny problems end sooner in Mora than in setting up F4's ring
+            return mora(gens, ring, Budget(MORA_HOMOGENEOUS), shared=True)
+        except BudgetExceeded:
+            return lazard(gens, ring, global_basis)
     if not isinstance(ring.field, PrimeField):
         try:
             return mora(gens, ring, Budget())

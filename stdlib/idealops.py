@@ -237,11 +237,8 @@ def reduce_lazy(ctx, f: Poly | Ideal | Matrix, I: Ideal, how: int) -> Any:
     if how & 1:
         ctx.assume_std(I, 1)
         return _lazy(f, I)
-    if how & 2 and not I.ring.order.is_global:
-        raise MechRuntimeError("reduce(f, I, 2) (a normal form reducing with bad ecart) in a local ordering is "
-                               "not supported")
     from .standard import _reduce
-    return _reduce(ctx, f, I)
+    return _reduce(ctx, f, I, bad_ecart=bool(how & 2))
 
 
 @command("NF")

@@ -219,22 +219,24 @@ def modStd(I: Ideal) -> Ideal:
     return Ideal(I.ring, _by_engine("modStd", I, "modular"), is_std=True)
 
 
-def _nf(f: Poly, basis: list[Poly]) -> Poly:
+def _nf(f: Poly, basis: list[Poly], bad_ecart: bool = False) -> Poly:
     if f.ring.order.is_global:
         return normal_form(f, basis)
     from ..kernel.localnf import weak_normal_form
-    return weak_normal_form(f, basis)
+    return weak_normal_form(f, basis, bad_ecart)
 
 
-def _reduce(ctx: Any, f: Any, I: Ideal) -> Any:
+def _reduce(ctx: Any, f: Any, I: Ideal, bad_ecart: bool = False) -> Any:
+    """reduce(f, I); ``bad_ecart``: Singular's option 2 (local orderings: the tail is reduced also
+    by elements of bad ecart)."""
     ctx.assume_std(I, 1)
     key = I.ring.order.key
     basis = sorted(with_quotient(I.nonzero(), I.ring), key=lambda g: key(g.lm()))  # from the smallest
     if isinstance(f, Poly):
-        return _nf(f, basis)
+        return _nf(f, basis, bad_ecart)
     if isinstance(f, Ideal):
-        return Ideal(f.ring, [_nf(g, basis) for g in f.gens])
-    return Matrix(f.ring, f.nrows, f.ncols, [_nf(g, basis) for g in f.entries])
+        return Ideal(f.ring, [_nf(g, basis, bad_ecart) for g in f.gens])
+    return Matrix(f.ring, f.nrows, f.ncols, [_nf(g, basis, bad_ecart) for g in f.entries])
 
 
 @command("reduce")
