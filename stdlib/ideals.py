@@ -42,6 +42,9 @@ def _global(I: Ideal, cmd: str) -> None:
 
 
 def _eliminate(I: Ideal, variables: list[int]) -> Ideal:
+    if not I.ring.order.is_global and quotient_of(I.ring) is None:
+        from ..kernel.local_elim import eliminate_local
+        return _unmarked(I.ring, eliminate_local(I.nonzero(), variables, I.ring))
     _global(I, "eliminate")
     return _std_ideal(I.ring, K.eliminate(I.nonzero(), variables, ring=I.ring))
 
