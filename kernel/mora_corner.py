@@ -124,6 +124,7 @@ class Corner:
         self.cut = cut  # terms of higher degree are dropped
         self.found = False  # whether the cut comes from the leading ideal
         self.witness: Exp | None = None  # a monomial of degree ``cut`` outside the leading ideal
+        self.seen: int | None = None  # the last top degree of the leading monomials, even above the cut
 
     def update(self, lm: Exp, lms: Callable[[], list[Exp]]) -> bool:
         """Account for a new leading monomial (``lms()``: all current ones); whether the cut
@@ -142,7 +143,7 @@ class Corner:
         top = top_degree([tuple(m[i] for i in used) for m in lms()])
         if top is None:
             return False
-        self.witness = top[1]
+        self.witness, self.seen = top[1], top[0]
         if self.cut is not None and top[0] >= self.cut:
             return False
         self.cut, self.found = top[0], True
