@@ -11,6 +11,7 @@ from .echo import mark_echo
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .intmat import IntMat, to_intmat
 from .minpoly import set_minpoly
+from .noether import set_noether
 from .printing import set_short
 from .rings import indexed_names
 from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, ring_of, to_ideal, to_int, to_matrix,
@@ -18,8 +19,7 @@ from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, 
 
 
 #: Singular's bounds on standard basis computations: mech computes without them (only 0 is accepted).
-UNSUPPORTED_BOUNDS = {"degBound": "a degree bound for std", "multBound": "a multiplicity bound for std",
-                      "noether": "a highest corner for local standard bases"}
+UNSUPPORTED_BOUNDS = {"degBound": "a degree bound for std", "multBound": "a multiplicity bound for std"}
 
 
 class Assignment:
@@ -71,6 +71,9 @@ class Assignment:
                 return
             if name == "minpoly" and not chain:
                 set_minpoly(self, value)
+                return
+            if name == "noether" and not chain:
+                set_noether(self.ring, value)
                 return
             if name in UNSUPPORTED_BOUNDS and not chain:
                 if (not value.is_zero()) if isinstance(value, Poly) else to_int(value) != 0:

@@ -9,6 +9,7 @@ from typing import Any, Optional
 from . import ast as A
 from .errors import MechError, MechNameError, MechRuntimeError
 from .minpoly import get_minpoly
+from .noether import noether_poly
 from .printing import is_short
 from .rings import indexed_names
 from .values import ExprList, LibCommand, Number, Ring
@@ -61,7 +62,7 @@ class Names:
         if name in ("degBound", "multBound"):
             return 0
         if name == "noether" and self.ring is not None:
-            return self.ring.poly.zero()
+            return noether_poly(self.ring.poly) or self.ring.poly.zero()
         return self.sysvars.get(name)
 
     def _unknown(self, name: str) -> MechError:

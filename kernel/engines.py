@@ -19,8 +19,7 @@ cache) and from it FGLM for zero-dimensional ideals (over QQ in a block ordering
 :data:`FGLM_STAIRS` standard monomials the Hilbert-driven F4 instead); for the others, over Z/p and
 a lex ordering F4 on that ordering within :data:`F4_BUDGET` (its matrices can grow far past
 the Hilbert-driven algorithm's work), then the Hilbert-driven algorithm; Buchberger over other
-fields.  Local orderings: Mora within a :class:`~.mora.Budget`, then
-Lazard.
+fields.  Local orderings: :mod:`.local_policy` (Mora or Lazard's homogenization through F4).
 
 :func:`using_engine` sets the default for a dynamic extent (a context variable); it applies to
 the computations its engine accepts, the others use ``"auto"``.  An engine named in a call must
@@ -46,8 +45,9 @@ from .f4 import f4_modp
 from .fglm import NotZeroDimensional, fglm_qq, fglm_zp, staircase
 from .hilbert_driven import hilbert_driven, hilbert_f4
 from .lazard import lazard
+from .local_policy import auto_local
 from .modular import ModularFailure, SmallSystem, f4_qq
-from .mora import Budget, BudgetExceeded, minimal, monic, mora
+from .mora import minimal, monic, mora
 from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
@@ -357,11 +357,7 @@ def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
 
 
 def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
-    try:
-        basis = mora(gens, ring, Budget())
-    except BudgetExceeded:
-        basis = _lazard(gens, ring)
-    return _finish(basis, ring, False)
+    return _finish(auto_local(gens, ring, lambda hgens, hring: standard_basis(hgens, hring, AUTO)), ring, False)
 
 
 def _finish(basis: list[Terms], ring: PolyRing, reduced: bool) -> list[Poly]:

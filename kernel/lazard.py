@@ -10,7 +10,8 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Callable, Sequence
 
-from .mora import Terms, cancel_unit, minimal, monic
+from .hilbert import minimal_monomials
+from .mora import Terms, cancel_unit, monic
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 
@@ -73,5 +74,14 @@ def lazard(gens: Sequence[Poly], ring: PolyRing,
     key = ring.order.key
     hring = homogenized_ring(ring)
     hgens = [homogenize(Poly(ring, cancel_unit(g.terms, key)), hring) for g in gens if not g.is_zero()]
-    out = [monic(cancel_unit(p, key), key) for p in (dehomogenize(h) for h in groebner(hgens, hring)) if p]
-    return minimal(out, key)
+    hbasis = [h for h in groebner(hgens, hring) if not h.is_zero()]
+    # LM(h with t = 1) is the x-part of LM(h): only elements with minimal ones are dehomogenized
+    lms = [h.lm()[:-1] for h in hbasis]
+    keep = set(minimal_monomials(lms))
+    out = []
+    for h, m in zip(hbasis, lms):
+        if m in keep:
+            keep.discard(m)
+            p = dehomogenize(h)
+            out.append(monic(cancel_unit(p, key), key))
+    return out

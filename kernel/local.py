@@ -27,7 +27,7 @@ from .localnf import weak_normal_form
 from .modular_rank import jacobian_rank_mod
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing
-from .primdec import min_ass_gtz, primdec_gtz
+from .primdec import min_ass_gtz, primdec_gtz, radical
 
 
 def _ring_of(gens: Sequence[Poly], ring: PolyRing | None) -> PolyRing:
@@ -137,6 +137,14 @@ def min_ass_local(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[li
     ring = _ring_of(gens, ring)
     target = _global(ring)
     return [move(p, ring) for p in min_ass_gtz(move(gens, target), target) if vanishes_at_origin(p)]
+
+
+def radical_local(gens: Sequence[Poly], ring: PolyRing | None = None) -> list[Poly]:
+    """The radical of ``I K[x]_>`` as a standard basis: the global radical (localization commutes
+    with radicals; components away from the origin become the unit ideal there)."""
+    ring = _ring_of(gens, ring)
+    target = _global(ring)
+    return standard_basis(move(radical(move(gens, target), target), ring), ring)
 
 
 def primdec_local(gens: Sequence[Poly], ring: PolyRing | None = None

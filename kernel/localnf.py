@@ -6,6 +6,7 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import Sequence
 
+from .errors import DomainError
 from .groebner import groebner, normal_form
 from .hilbert import kbase
 from .lazard import dehomogenize, homogenize, homogenized_ring
@@ -14,7 +15,7 @@ from .order import Exp
 from .poly import Poly, PolyRing, divides
 
 
-def weak_normal_form(f: Poly, basis: Sequence[Poly]) -> Poly:
+def weak_normal_form(f: Poly, basis: Sequence[Poly], bad_ecart: bool = False) -> Poly:
     """Singular's ``reduce``/``NF`` for a local or mixed ordering: a weak normal form ``h`` of
     ``f`` (``u f - h`` in the ideal for a unit ``u``, and ``h = 0`` or ``LM(h)`` not in
     ``L(basis)``), so zero iff ``f`` lies in the ideal of ``K[x]_>`` when ``basis`` is a
@@ -22,9 +23,13 @@ def weak_normal_form(f: Poly, basis: Sequence[Poly]) -> Poly:
     cancelled: ``x^a u -> x^a``, then :func:`tail_reduce`), as Singular computes it; for a local degree
     ordering (``ds Ds ws Ws``) past its :class:`Budget` the exact normal form of
     :func:`homogenized_normal_form`.  The result is determined up to a unit and modulo the
-    ideal, not term by term."""
+    ideal, not term by term.  ``bad_ecart`` (Singular's ``reduce(f, I, 2)``): the division
+    algorithm of global orderings instead, every term from the largest down reduced by any element
+    whose leading monomial divides it (no unit cancelled; see :func:`tail_reduce`)."""
     if f.is_zero():
         return f
+    if bad_ecart:
+        return Poly(f.ring, tail_reduce(dict(f.terms), basis, True, True))
     key = f.ring.order.key
     degree_first = all(v < 0 for v in f.ring.order.first_row())
     try:
@@ -49,7 +54,12 @@ def highest_corner(basis: Sequence[Poly]) -> Exp | None:
     return min(std, key=ring.order.key) if std else None
 
 
-def tail_reduce(h: Terms, basis: Sequence[Poly]) -> Terms:
+BAD_ECART_STEPS = 10_000
+"""Tail reductions with bad ecart allowed before :func:`tail_reduce` gives up (they need not end
+for a local ordering: ``x`` by ``x - x^2``)."""
+
+
+def tail_reduce(h: Terms, basis: Sequence[Poly], bad_ecart: bool = False, whole: bool = False) -> Terms:
     """Reduce the terms after the leading one, from the largest down, as Singular's ``reduce``
     mostly does: drop those below the highest corner (:func:`highest_corner`: they lie in the
     ideal); reduce a term ``t`` by the first basis element (smallest leading monomial first)
@@ -57,15 +67,18 @@ def tail_reduce(h: Terms, basis: Sequence[Poly]) -> Terms:
     many monomials lie above it), else only an element whose ecart is at most that of the
     tail from ``t`` on (its degree minus ``deg t``: the degrees of the tail never exceed
     their first maximum, so this ends).  The leading term and the class modulo the ideal do
-    not change."""
+    not change.  With ``bad_ecart`` every divisible term is reduced (the division algorithm of
+    global orderings), with ``whole`` the leading term too; :class:`~.errors.DomainError` after
+    :data:`BAD_ECART_STEPS` reductions."""
     ring = basis[0].ring if basis else None
-    if ring is None or len(h) < 2:
+    if ring is None or len(h) < (1 if whole else 2):
         return h
     key = ring.order.key
     corner = highest_corner(basis)
     pool = [Elem(dict(b.terms), key) for b in sorted(basis, key=lambda b: key(b.lm())) if not b.is_zero()]
     h = dict(h)
-    done = {max(h, key=key)}
+    done = set() if whole else {max(h, key=key)}
+    steps = 0
     while True:
         if corner is not None:
             bound = key(corner)
@@ -76,10 +89,14 @@ def tail_reduce(h: Terms, basis: Sequence[Poly]) -> Terms:
         t = max(rest, key=key)
         kt = key(t)
         ecart = max(sum(e) for e in h if key(e) <= kt) - sum(t)
-        g = next((g for g in pool if divides(g.lm, t) and (corner is not None or g.ecart <= ecart)), None)
+        g = next((g for g in pool if divides(g.lm, t) and (bad_ecart or corner is not None or g.ecart <= ecart)),
+                 None)
         if g is None:
             done.add(t)
         else:
+            steps += 1
+            if steps > BAD_ECART_STEPS:
+                raise DomainError(f"the tail reduction with bad ecart did not end within {BAD_ECART_STEPS} steps")
             h = reduce_by(h, t, g)
 
 

@@ -299,7 +299,8 @@ TRIAL_CUTS = (2, 3, 4, 6)
 TRIAL_STEPS = 200_000
 
 
-def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> list[Terms]:
+def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
+         shared: bool = False) -> list[Terms]:
     """A minimal standard basis (as dicts, leading-term reduced, monic) by Buchberger's
     algorithm with Mora's normal form: the Gebauer–Möller criteria, a queue of generators,
     pairs and postponed polynomials ordered by sugar, and one growing set of reducers
@@ -311,19 +312,28 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None) -> 
     contains every monomial of degree ``k`` gives ``m^k`` in ``J = I + m m^k``, so ``m^k`` in
     ``I`` by Nakayama's lemma, ``J = I`` and ``G`` is a standard basis of ``I``.  Otherwise
     (the local ideal is not zero-dimensional, or its corner lies higher) the computation
-    runs without a cut.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
-    out."""
+    runs without a cut; a trial cut is skipped when an earlier trial left a monomial of that
+    degree outside its leading monomials.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
+    out; each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
+    trials and the final run all draw on ``budget``."""
     live = [g for g in gens if not g.is_zero()]
     if live and Corner(ring).enabled:
         top = max(g.total_degree() for g in live)
+        seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
         for factor in TRIAL_CUTS:
             k = factor * max(top, 1)
+            if k <= seen:
+                continue
             try:
-                basis, corner = _mora(live, ring, Budget(TRIAL_STEPS, budget.bits) if budget else None, k)
+                trial = budget if shared or budget is None else Budget(TRIAL_STEPS, budget.bits)
+                basis, corner = _mora(live, ring, trial, k)
             except BudgetExceeded:
+                if shared:
+                    raise
                 break
             if corner.found and corner.cut < k:
                 return basis
+            seen = max(seen, corner.seen if corner.seen is not None else -1)
     return _mora(live, ring, budget)[0]
 
 

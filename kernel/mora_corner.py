@@ -24,7 +24,40 @@ def top_degree(gens: Sequence[Exp]) -> Top | None:
     gens = minimal_monomials(gens)
     if not gens:
         return None
-    return _top(tuple(gens), len(gens[0]), {})
+    n = len(gens[0])
+    if any(not any(g) for g in gens):
+        return UNIT
+    degree, witness = 0, [0] * n
+    for part in _components(gens, n):
+        t = _top(tuple(tuple(g[i] for i in part) for g in gens if any(g[i] for i in part)), len(part), {})
+        if t is None:
+            return None
+        degree += t[0]
+        for i, v in zip(part, t[1]):
+            witness[i] = v
+    return degree, tuple(witness)
+
+
+def _components(gens: Sequence[Exp], n: int) -> list[list[int]]:
+    """The variables grouped by the generators that join them (connected components): the
+    monomials outside the ideal are the products of one outside each group's ideal, so the
+    top degrees add up."""
+    parent = list(range(n))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for g in gens:
+        support = [i for i, v in enumerate(g) if v]
+        for i in support[1:]:
+            parent[find(i)] = find(support[0])
+    groups: dict[int, list[int]] = {}
+    for i in range(n):
+        groups.setdefault(find(i), []).append(i)
+    return list(groups.values())
 
 
 UNIT: Top = (-1, ())
@@ -91,6 +124,7 @@ class Corner:
         self.cut = cut  # terms of higher degree are dropped
         self.found = False  # whether the cut comes from the leading ideal
         self.witness: Exp | None = None  # a monomial of degree ``cut`` outside the leading ideal
+        self.seen: int | None = None  # the last top degree of the leading monomials, even above the cut
 
     def update(self, lm: Exp, lms: Callable[[], list[Exp]]) -> bool:
         """Account for a new leading monomial (``lms()``: all current ones); whether the cut
@@ -109,7 +143,7 @@ class Corner:
         top = top_degree([tuple(m[i] for i in used) for m in lms()])
         if top is None:
             return False
-        self.witness = top[1]
+        self.witness, self.seen = top[1], top[0]
         if self.cut is not None and top[0] >= self.cut:
             return False
         self.cut, self.found = top[0], True

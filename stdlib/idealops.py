@@ -126,6 +126,19 @@ def simplify(f: Poly | Ideal, flag: int) -> Any:
     return Ideal(f.ring, out or [zero])
 
 
+@command("simplify")
+def simplify_matrix(m: Matrix, flag: int) -> Matrix:
+    """simplify(M, 2) of a matrix (its columns as the generators of a module): the zero columns
+    dropped (one zero column is left of a zero matrix)."""
+    if flag & ~2:
+        raise MechRuntimeError(f"simplify(matrix, {flag}): only the flag 2 (drop the zero columns) is supported")
+    if not flag & 2:
+        return m
+    cols = [[m.entries[i * m.ncols + j] for i in range(m.nrows)] for j in range(m.ncols)]
+    kept = [c for c in cols if not all(p.is_zero() for p in c)] or [[m.ring.zero()] * m.nrows]
+    return Matrix(m.ring, m.nrows, len(kept), [kept[j][i] for i in range(m.nrows) for j in range(len(kept))])
+
+
 # ---------------------------------------------------------------- minimal generators
 def _member(f: Poly, gens: list[Poly]) -> bool:
     if not gens:
@@ -237,11 +250,8 @@ def reduce_lazy(ctx, f: Poly | Ideal | Matrix, I: Ideal, how: int) -> Any:
     if how & 1:
         ctx.assume_std(I, 1)
         return _lazy(f, I)
-    if how & 2 and not I.ring.order.is_global:
-        raise MechRuntimeError("reduce(f, I, 2) (a normal form reducing with bad ecart) in a local ordering is "
-                               "not supported")
     from .standard import _reduce
-    return _reduce(ctx, f, I)
+    return _reduce(ctx, f, I, bad_ecart=bool(how & 2))
 
 
 @command("NF")

@@ -42,6 +42,9 @@ def _global(I: Ideal, cmd: str) -> None:
 
 
 def _eliminate(I: Ideal, variables: list[int]) -> Ideal:
+    if not I.ring.order.is_global and quotient_of(I.ring) is None:
+        from ..kernel.local_elim import eliminate_local
+        return _unmarked(I.ring, eliminate_local(I.nonzero(), variables, I.ring))
     _global(I, "eliminate")
     return _std_ideal(I.ring, K.eliminate(I.nonzero(), variables, ring=I.ring))
 
@@ -133,6 +136,10 @@ def radical(I: Ideal) -> Ideal:
       radical(ideal(x2, xy2));
       → _[1]=x
     """
+    if not I.ring.order.is_global and quotient_of(I.ring) is None:
+        from ..kernel.local import radical_local
+        with _available("radical", I.ring):
+            return _std_ideal(I.ring, radical_local(I.nonzero(), I.ring))
     _global(I, "radical")
     with _available("radical", I.ring):
         return _std_ideal(I.ring, _primdec.radical(I.nonzero(), ring=I.ring))

@@ -9,6 +9,7 @@ from math import gcd
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError
+from ..dsl.noether import active_noether
 from ..dsl.qrings import quotient_of, with_quotient
 from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
@@ -18,6 +19,7 @@ from ..kernel.engines import AUTO, ENGINES, check_engine, list_engines
 from ..kernel.errors import EngineError
 from ..kernel.engines import standard_basis as kernel_standard_basis
 from ..kernel.groebner import normal_form
+from ..kernel.local_noether import noether_basis, truncate
 
 
 def normalize(p: Poly) -> Poly:
@@ -68,6 +70,10 @@ def standard_basis(ideal: Ideal) -> list[Poly]:
     q = quotient_of(ideal.ring)
     if q is not None:
         return [normalize(p) for p in q.std(ideal.nonzero())]
+    corner = active_noether(ideal.ring)
+    if corner is not None:
+        return [normalize(p) for p in noether_basis(ideal.nonzero(), ideal.ring, corner,
+                                                    lambda gens: kernel_standard_basis(gens, ideal.ring))]
     return [normalize(p) for p in kernel_standard_basis(ideal.nonzero(), ideal.ring)]
 
 
@@ -219,22 +225,26 @@ def modStd(I: Ideal) -> Ideal:
     return Ideal(I.ring, _by_engine("modStd", I, "modular"), is_std=True)
 
 
-def _nf(f: Poly, basis: list[Poly]) -> Poly:
+def _nf(f: Poly, basis: list[Poly], bad_ecart: bool = False) -> Poly:
     if f.ring.order.is_global:
         return normal_form(f, basis)
     from ..kernel.localnf import weak_normal_form
-    return weak_normal_form(f, basis)
+    h = weak_normal_form(f, basis, bad_ecart)
+    corner = active_noether(f.ring)
+    return h if corner is None else truncate(h, corner)
 
 
-def _reduce(ctx: Any, f: Any, I: Ideal) -> Any:
+def _reduce(ctx: Any, f: Any, I: Ideal, bad_ecart: bool = False) -> Any:
+    """reduce(f, I); ``bad_ecart``: Singular's option 2 (local orderings: the tail is reduced also
+    by elements of bad ecart)."""
     ctx.assume_std(I, 1)
     key = I.ring.order.key
     basis = sorted(with_quotient(I.nonzero(), I.ring), key=lambda g: key(g.lm()))  # from the smallest
     if isinstance(f, Poly):
-        return _nf(f, basis)
+        return _nf(f, basis, bad_ecart)
     if isinstance(f, Ideal):
-        return Ideal(f.ring, [_nf(g, basis) for g in f.gens])
-    return Matrix(f.ring, f.nrows, f.ncols, [_nf(g, basis) for g in f.entries])
+        return Ideal(f.ring, [_nf(g, basis, bad_ecart) for g in f.gens])
+    return Matrix(f.ring, f.nrows, f.ncols, [_nf(g, basis, bad_ecart) for g in f.entries])
 
 
 @command("reduce")

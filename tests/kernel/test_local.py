@@ -386,3 +386,16 @@ def test_live_tangent_cones_and_local_invariants():
         gens = polys(R, I)
         assert same_ideal(tangent_cone(gens), polys(R, cone)), I
         assert [local_dim(gens), local_vdim(gens), local_mult(gens)] == [int(v) for v in nums], I
+
+
+def test_reduce_with_bad_ecart_is_the_division_algorithm():
+    # Singular's reduce(p, j, 2) in ds (Tst/Short/reduce_s), by hand: p - (1 + y + x^2) g gives
+    # -x^10y - x^12y - x^10y^2, whose last term -x^10y^2 + x^10 g = x^20y; the weak normal form
+    # cancels the unit 1 + x^2 + y of -x^10y(1 + x^2 + y) instead
+    R = PolyRing(GF(32003), ["x", "y"], MonomialOrder([Block("ds", 2)]))
+    j = [parse_poly(R, "y^2+x^10*y"), parse_poly(R, "x^22")]
+    p = parse_poly(R, "y^2+y^3+x^2*y^2")
+    assert weak_normal_form(p, j, bad_ecart=True) == parse_poly(R, "-x^10*y-x^12*y+x^20*y")
+    assert weak_normal_form(p, j) == parse_poly(R, "-x^10*y")
+    with pytest.raises(DomainError):  # x by x - x^2 never ends: x^2, x^3, ...
+        weak_normal_form(parse_poly(R, "x"), [parse_poly(R, "x-x^2")], bad_ecart=True)

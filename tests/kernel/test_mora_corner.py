@@ -81,3 +81,19 @@ def test_packed_front_reduces_as_the_plain_one(field):
     assert u.unit_cancelled(u.lm()) and u.terms() == {(1, 1, 0): field.one}
     v = PackedFront(dict(parse_poly(R, "x*y+x^2").terms), pk)
     assert not v.unit_cancelled(v.lm())
+
+
+def test_top_degree_adds_up_over_disjoint_variables():
+    # generators in the variable groups {0,1}, {2}, {3,4}: the top degrees add, checked
+    # against the Hilbert series of the whole ideal
+    rng = random.Random(11)
+    for _ in range(50):
+        gens = [(rng.randint(1, 4), 0, 0, 0, 0), (0, rng.randint(1, 4), 0, 0, 0),
+                (rng.randint(1, 3), rng.randint(1, 3), 0, 0, 0), (0, 0, rng.randint(1, 5), 0, 0),
+                (0, 0, 0, rng.randint(1, 4), 0), (0, 0, 0, 0, rng.randint(1, 4)),
+                (0, 0, 0, rng.randint(1, 3), rng.randint(1, 3))]
+        _, p, d = hilbert_numerators(gens, 5)
+        got = top_degree(gens)
+        assert d == 0 and got[0] == len(p) - 1
+        assert sum(got[1]) == got[0] and not any(divides(g, got[1]) for g in gens)
+    assert top_degree([(2, 0, 0), (0, 3, 0)]) is None  # the last variable is free

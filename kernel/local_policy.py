@@ -1,0 +1,83 @@
+"""The ``auto`` policy for standard bases in local and mixed orderings (:mod:`.engines` calls
+:func:`auto_local`), chosen by measurement on benchmarks/local_bases.py.
+
+- Homogeneous generators: Mora within :data:`MORA_HOMOGENEOUS` steps, then Lazard's method
+  (:mod:`.lazard`), which homogenizes nothing, its global basis from the compiled F4
+  (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora, 0.05 s by F4).
+- Otherwise over Z/p: Mora (:mod:`.mora`) within :data:`MORA_FIRST` reduction steps in all
+  (small and medium local problems end there, and Lazard would pay for the components away
+  from the origin), then Lazard with F4 within :data:`LAZARD_BUDGET` matrix entries (Singular's
+  ``mora_9`` and ``mora_10``: more than 60 s by Mora, 2.6 s and 0.07 s by Lazard), then Mora
+  with its trial cuts and Lazard without bounds.
+- Over other fields: Mora within its default budget, then Lazard (modular F4 over QQ).
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+from .buchberger import TooLong
+from .coeffs import PrimeField
+from .f4 import f4_modp
+from .lazard import lazard
+from .mora import Budget, BudgetExceeded, Terms, mora
+from .poly import Poly, PolyRing
+
+GlobalBasis = Callable[[list[Poly], PolyRing], list[Poly]]
+
+MORA_FIRST = 2000
+"""Reduction steps (about 0.1 s) Mora gets before Lazard's method is tried over Z/p.  Measured
+(steps, Mora / Lazard seconds): mora_6 1435, 0.06 / 0.02; mora1 6236, 0.28 / 0.10; mora_5
+32764, 2.2 / 2.1; mora_7 29765, 2.8 / 2.5; mora_9 and mora_10 past 10^5 steps and 30 s, Lazard
+2.6 / 0.07; the Puiseux parametrization in ``ls`` 0 steps, 0.3 ms / 2.9 s."""
+
+MORA_HOMOGENEOUS = 200
+"""Reduction steps Mora gets on homogeneous generators before Lazard's method (about 10 ms;
+Singular's mora2 "standard" case: 0.5 ms by Mora, 2 ms by Lazard)."""
+
+LAZARD_BUDGET = 16_000_000
+"""Matrix entries of the F4 run inside Lazard's method (and 1250 times as many operations of
+its dense reduction, :data:`.f4.DENSE_PER_ENTRY`; a few seconds) before Mora takes over again:
+mora_5 took 5.1 M entries and 5.5 G operations, mora_7 6.4 M and 13.8 G."""
+
+
+def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> list[Terms]:
+    """A standard basis of the ideal of ``gens`` (non-global ``ring``) by the policy above;
+    ``global_basis(gens, ring)``: the ``auto`` Gröbner basis for a global ordering."""
+    if all(_homogeneous(g) for g in gens):
+        try:  # tiny problems end sooner in Mora than in setting up F4's ring
+            return mora(gens, ring, Budget(MORA_HOMOGENEOUS), shared=True)
+        except BudgetExceeded:
+            return lazard(gens, ring, global_basis)
+    if not isinstance(ring.field, PrimeField):
+        try:
+            return mora(gens, ring, Budget())
+        except BudgetExceeded:
+            return lazard(gens, ring, global_basis)
+    try:
+        return mora(gens, ring, Budget(MORA_FIRST), shared=True)
+    except BudgetExceeded:
+        pass
+    try:
+        return lazard(gens, ring, _f4_within(LAZARD_BUDGET))
+    except TooLong:
+        pass
+    try:
+        return mora(gens, ring, Budget())
+    except BudgetExceeded:
+        return lazard(gens, ring, global_basis)
+
+
+def _f4_within(budget: int) -> GlobalBasis:
+    def run(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+        out = []
+        for b in f4_modp(gens, ring, budget):
+            p = Poly(ring, b)
+            p._lm = next(iter(b))  # F4's bases carry the leading exponent first
+            out.append(p)
+        return out
+    return run
+
+
+def _homogeneous(g: Poly) -> bool:
+    degrees = {sum(e) for e in g.terms}
+    return len(degrees) == 1

@@ -1,0 +1,56 @@
+"""The ``auto`` policy for local orderings (kernel/local_policy.py): every route (Mora first,
+Lazard's method through F4 within a budget, the homogeneous shortcut) gives a standard basis
+with the leading ideal Mora alone finds, and Lazard's dehomogenization keeps one element per
+minimal leading monomial."""
+import pytest
+from tests.util import parse_poly
+
+from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from mech.kernel import local_policy
+from mech.kernel.engines import standard_basis
+from mech.kernel.hilbert import minimal_monomials
+from mech.kernel.mora import mora
+
+SYSTEMS = [
+    ("x,y,z", "ds", ["x^2*y+z^3+x^5", "y^3+x*z^2+y^6", "z^4+x*y*z+x^7"]),
+    ("x,y,z", "ds", ["x^2+y^2+z^2", "x*y*z", "x^3+y^3"]),  # homogeneous
+    ("x,y", "ls", ["x^3+y^2+x^4*y", "x*y^3+y^5"]),
+    ("w,x,y,z", "Ds", ["w*x+y^2+z^5", "x^2+w^3+y*z^2", "y*z+w^4", "z^3+x^3*y"]),
+]
+
+
+def _ring(names, kind, field):
+    names = names.split(",")
+    return PolyRing(field, names, MonomialOrder([Block(kind, len(names))]))
+
+
+
+@pytest.mark.parametrize("field", [GF(32003), QQ])
+@pytest.mark.parametrize("names,kind,polys", SYSTEMS)
+@pytest.mark.parametrize("mora_first", [0, local_policy.MORA_FIRST])
+def test_every_route_gives_the_leading_ideal_of_mora(names, kind, polys, field, mora_first, monkeypatch):
+    monkeypatch.setattr(local_policy, "MORA_FIRST", mora_first)
+    R = _ring(names, kind, field)
+    gens = [parse_poly(R, p) for p in polys]
+    key = R.order.key
+    expected = sorted(minimal_monomials([max(b, key=key) for b in mora(gens, R)]))
+    got = standard_basis(gens, R)
+    assert sorted(minimal_monomials([g.lm() for g in got])) == expected
+    assert len(got) == len(expected)  # minimal
+
+
+def test_lazard_route_is_taken_and_agrees(monkeypatch):
+    calls = []
+    run = local_policy._f4_within
+
+    def spy(budget):
+        calls.append(budget)
+        return run(budget)
+    monkeypatch.setattr(local_policy, "MORA_FIRST", 0)
+    monkeypatch.setattr(local_policy, "_f4_within", spy)
+    R = _ring("x,y,z", "ds", GF(32003))
+    gens = [parse_poly(R, p) for p in SYSTEMS[0][2]]
+    got = standard_basis(gens, R)
+    assert calls == [local_policy.LAZARD_BUDGET]
+    key = R.order.key
+    assert sorted(g.lm() for g in got) == sorted(minimal_monomials([max(b, key=key) for b in mora(gens, R)]))
