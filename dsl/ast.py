@@ -188,6 +188,14 @@ class Moved(Stmt):
     dline: int
 
 
+class Relit(Stmt):
+    """A one-line statement of the same shape as an earlier one (the same text but for its number
+    literals, ``lits``, as written) run by that one's template (:mod:`~mech.dsl.templates`) ``dline``
+    lines further down; ``pos`` is its own.  Not a dataclass: one is made per line of long scripts."""
+    def __init__(self, template: object, lits: list[str], dline: int, pos: Pos) -> None:
+        self.template, self.lits, self.dline, self.pos = template, lits, dline, pos
+
+
 @dataclass(eq=False)
 class Break(Stmt):
     pass
