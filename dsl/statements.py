@@ -92,6 +92,10 @@ class Statements:
         except MechError as e:
             _move_error(e, tree.pos.line, s.dline, self.source, lambda p: template.move(p, s.dline, lits))
             raise
+        except (BreakSignal, ContinueSignal):  # reported at the top level where self.stmt is
+            if self.stmt is not None:
+                self.stmt = A.Empty(pos=template.move(self.stmt.pos, s.dline, lits))
+            raise
         finally:
             self.lits, self.line_shift = saved
 

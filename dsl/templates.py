@@ -3,8 +3,8 @@ and one closure (long scripts are mostly a few statement shapes with changing nu
 
 :func:`shape` splits a statement's text into its shape (the text with each number replaced) and
 its numbers as written; :func:`make` turns the tree of a statement into the :class:`Template` of
-its shape, or refuses it (kinds other than assignments, declarations, expression statements and
-``x++``; a number that is not a whole literal of the tree).  A :class:`~mech.dsl.ast.Relit` runs
+its shape, or refuses it (procedures, ``return`` and the other statements the fast parser leaves to
+Lark; a number that is not a whole literal of the tree).  A :class:`~mech.dsl.ast.Relit` runs
 the template's closure with its own numbers (the interpreter's ``lits``); the closure is
 :mod:`~mech.dsl.compiled`'s with each literal reading its number there, and the parts that go back
 to the evaluator get a copy of their subtree with the numbers put in (:meth:`Template.actual`).
@@ -23,7 +23,7 @@ from . import compiled
 #: not glued to a name or to more digits (longer ones stay in the shape: the builder checks them)
 _NUMBER = re.compile(r"(?<![A-Za-z0-9_@])[0-9]{1,18}(?![0-9])")
 _MARK = "\0"
-KINDS = (A.Assign, A.ExprStmt, A.Decl, A.IncDec)
+KINDS = (A.Assign, A.ExprStmt, A.Decl, A.IncDec, A.If, A.For, A.While, A.Block)
 
 
 def shape(piece: str) -> Optional[tuple[str, list[str]]]:
@@ -49,7 +49,8 @@ class Template:
         """The tree's closure with the literals read from ``it.lits`` (kept on the tree)."""
         fns = {i: _slot_fn(*slot) for i, slot in self.slots.items()}
         with compiled.templating(fns, self.holders, self.actual):
-            compiled.stmt_fn(self.tree)
+            for stmt in _statements(self.tree):  # the inner ones too: each runs its own closure
+                compiled.stmt_fn(stmt)
 
     def actual(self, node: Any, lits: list[str]) -> Any:
         """``node`` of the template with the numbers ``lits`` put in (a copy where it holds literals)."""
@@ -80,6 +81,17 @@ class Template:
                 break
             out += len(lit) - (end - start)
         return out
+
+
+def _statements(stmt: A.Stmt) -> list[A.Stmt]:
+    """``stmt`` and the statements inside it (of blocks, branches and loops), innermost first."""
+    out: list[A.Stmt] = []
+    for inner in (getattr(stmt, "init", None), getattr(stmt, "step", None), *getattr(stmt, "body", ()),
+                  *getattr(stmt, "then", ()), *(getattr(stmt, "orelse", None) or ())):
+        if inner is not None:
+            out.extend(_statements(inner))
+    out.append(stmt)
+    return out
 
 
 def make(tree: A.Stmt, piece: str, col: int, lits: list[str]) -> Optional[Template]:

@@ -1,4 +1,4 @@
-"""Singular's syntax and assignment corners (issue 21): ``return(x)`` closing a block without ``;``,
+"""Singular's syntax and assignment corners (issue 21): ``return(x)`` and a string closing a block without ``;``,
 an ``else`` without ``if`` (skipped), several values into a list entry or a def, ``LIB("x.lib")``."""
 from __future__ import annotations
 
@@ -7,6 +7,12 @@ from tests.util import error, run
 
 def test_return_without_semicolon() -> None:
     assert run("proc f(){ if(1) { return(1) } return(0) }\nf();\nproc g(){ return(2) }\ng();").split() == ["1", "2"]
+
+
+def test_string_without_semicolon_closes_a_block() -> None:
+    """As Singular (Manual/lusolve.tst): a string literal may close a block without its ``;``."""
+    assert run('if (1) { "x"; "y" }\nif (0) { 1; } else { "z" }\nproc p() { 2; "in p" }\np();') == "x\ny\nz\n2\nin p\n"
+    assert "unexpected '}'" in str(error("int i; if (1) { i }"))
 
 
 def test_dangling_else_is_skipped() -> None:

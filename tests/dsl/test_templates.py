@@ -22,6 +22,13 @@ SCRIPTS = [  # the error comes after numbers of other lengths than the template'
     "ring r = 0,(x,y),dp; matrix M[2][2];\nM[1,2] = x + 1;\nM[2,1] = x + 12;\nprint(M);\nM[3,1] = x;\n",
     "int i = 1;\nint j = 2147483647 + 1;\ni = 123456789012345678 * 10;\ni = 1 + 1234567890123456789012;\ni;\n"
     "i = 5..7;\ni = 5..8;\n",
+    "int k = 3; int j;\nif (k > 1) { j = 2; } else { j = j + 1; }\nif (k > 12) { j = 23; } else { j = j + 14; }\nj;\n"
+    "for (int i = 1; i <= 2; i++) { j = j + i; }\nfor (int i = 1; i <= 23; i++) { j = j + i; }\nj;\n"
+    "while (j > 100) { j = j - 7; }\nwhile (j > 10) { j = j - 17; }\nj;\n"
+    "if (k > 1) { j = 10 div 1; } else { j = 1; }\nif (k > 12) { j = 1; } else { j = 1 + 10 div 0; }\n",
+    "int k = 1;\nif (k > 5) { k = 2; break; }\nif (k > 55) { break; }\nif (k > 0) { k = 2; break; }\n",
+    "int k = 1;\nfor (k = 1; k < 3; k++) { if (k > 5) { continue; } }\nfor (k = 11; k < 13; k++) { k; }\n"
+    "{ k = 1; }\n{ k = 23; }\nk;\nif (k) { continue; }\n",
     "ring r = 0,(x(1..3)),dp;\npoly f = x(1) + x(2);\npoly g = x(2) + x(3);\nf; g;\ng = x(4);\n",
 ]
 
@@ -56,5 +63,5 @@ def test_shapes():
 def test_numbers_that_are_not_whole_literals_refuse_a_template():
     tree = parse("int k = 12;").body[0]
     assert make(tree, "int k = 12;", 1, ["12"]) is not None
-    tree = parse("if (1) { k = 2; }").body[0]
-    assert make(tree, "if (1) { k = 2; }", 1, ["1", "2"]) is None  # not a simple statement
+    assert make(tree, "int k = 123;", 1, ["123"]) is None  # the literal's span is not the number's
+    assert make(tree, "int k = 12 ;", 2, ["12"]) is None
