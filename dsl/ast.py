@@ -118,6 +118,12 @@ class TypeCall(Expr):
     args: list[Expr]
 
 
+@dataclass(eq=False)
+class Backquote(Expr):
+    """`` `s` ``: the variable whose name is the value of the string expression ``s``."""
+    expr: Expr
+
+
 # ---------------------------------------------------------------- statements
 class Stmt(Node):
     pass

@@ -142,6 +142,10 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
         return A.ExprStmt(c[0], pos=meta_pos(meta))
 
     @v_args(meta=True)
+    def backquote(self, meta, c):
+        return A.Backquote(c[0], pos=meta_pos(meta))
+
+    @v_args(meta=True)
     def last_string(self, meta, c):
         return A.ExprStmt([A.StrLit(A.string_value(str(c[0])), pos=token_pos(c[0]))], pos=meta_pos(meta))
 

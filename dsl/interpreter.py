@@ -99,6 +99,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
             A.MonomLit: self._eval_monom, A.StrLit: lambda n: n.value, A.Tuple: self._eval_tuple,
             A.BinOp: self._eval_binop, A.UnOp: self._eval_unop, A.Range: self._eval_range,
             A.Index: self._eval_index, A.Call: self._eval_call, A.TypeCall: self._eval_typecall,
+            A.Backquote: self._eval_backquote,
         }
         if sys.getrecursionlimit() < 20000:
             sys.setrecursionlimit(20000)

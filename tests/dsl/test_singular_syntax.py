@@ -1,4 +1,4 @@
-"""Singular's syntax and assignment corners (issue 21): ``return(x)`` and a string closing a block without ``;``,
+"""Singular's syntax and assignment corners (issue 21): ``return(x)`` and a string closing a block without ``;``, quotes in names, backquotes,
 an ``else`` without ``if`` (skipped), several values into a list entry or a def, ``LIB("x.lib")``."""
 from __future__ import annotations
 
@@ -13,6 +13,15 @@ def test_string_without_semicolon_closes_a_block() -> None:
     """As Singular (Manual/lusolve.tst): a string literal may close a block without its ``;``."""
     assert run('if (1) { "x"; "y" }\nif (0) { 1; } else { "z" }\nproc p() { 2; "in p" }\np();') == "x\ny\nz\n2\nin p\n"
     assert "unexpected '}'" in str(error("int i; if (1) { i }"))
+
+
+def test_names_with_quotes_and_backquoted_names() -> None:
+    """As Singular (Manual/Names_3.tst, ring.lib's changevar): quotes in names, `s` the variable named s."""
+    assert run("int a'b = 1; int c'' = 2; a'b + c'';") == "3\n"
+    script = 'int foo(1) = 42; string bar = "foo"; `bar+"(1)"` + 1;\nring r = 0,(x,y),dp; `"y"`;'
+    assert run(script) == "43\ny\n"
+    assert "`foo` is undefined" in str(error('string bar = "foo"; `bar`;'))
+    assert "needs a string" in str(error("`5`;"))
 
 
 def test_dangling_else_is_skipped() -> None:
