@@ -158,6 +158,7 @@ class Assign(Stmt):
 class IncDec(Stmt):
     target: Expr
     delta: int
+    ignored: bool = False  # `j = i++;`: as Singular, i changes and the assignment is ignored with a warning
 
 
 @dataclass(eq=False)

@@ -217,6 +217,16 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
         return A.IncDec(c[0], -1, pos=meta_pos(meta))
 
     @v_args(meta=True)
+    def assign_incr(self, meta, c):
+        _check_target(c[1])
+        return A.IncDec(c[1], 1, True, pos=meta_pos(meta))
+
+    @v_args(meta=True)
+    def assign_decr(self, meta, c):
+        _check_target(c[1])
+        return A.IncDec(c[1], -1, True, pos=meta_pos(meta))
+
+    @v_args(meta=True)
     def break_stmt(self, meta, c):
         return A.Break(pos=meta_pos(meta))
 

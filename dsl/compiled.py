@@ -295,7 +295,7 @@ def _stmt(s: A.Stmt) -> Fn:
     if (kind is A.Assign and len(s.targets) == 1 and len(s.values) == 1 and type(s.targets[0]) is A.Index
             and type(s.targets[0].base) is A.Name and 1 <= len(s.targets[0].indices) <= 2):
         return _assign_entry(s)
-    if kind is A.IncDec and type(s.target) is A.Name:
+    if kind is A.IncDec and type(s.target) is A.Name and not s.ignored:
         return _incdec(s)
     if kind is A.If:
         return _if(s)

@@ -24,6 +24,13 @@ def test_names_with_quotes_and_backquoted_names() -> None:
     assert "needs a string" in str(error("`5`;"))
 
 
+def test_assigning_an_increment_is_ignored() -> None:
+    """As Singular (Manual/int_operations.tst): ``j = i++;`` changes i, warns and leaves j."""
+    out = run("int i = 1; int j;\nj = i++;\nj; i;\nj = i--; i;")
+    assert out.splitlines() == ["// ** right side is not a datum, assignment ignored in line >>j = i++;<<", "0", "2",
+                                "// ** right side is not a datum, assignment ignored in line >>j = i--; i;<<", "1"]
+
+
 def test_dangling_else_is_skipped() -> None:
     assert run('if (0) {1;}\nint i;\nelse\n{ 5; }\n"done";').split() == ["done"]
 
