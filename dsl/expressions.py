@@ -174,8 +174,8 @@ class Expressions:
             seq, what = base.items, "list"
         elif isinstance(base, IntVec):
             seq, what = base.values, "intvec"
-        elif isinstance(base, str):
-            seq, what = base, "string"
+        elif isinstance(base, str):  # as Singular: a character out of range is the empty string
+            return base[i - 1] if 1 <= i <= len(base) else ""
         elif isinstance(base, Map):
             seq, what = base.images, "map"
         elif isinstance(base, Poly):

@@ -31,6 +31,12 @@ def test_assigning_an_increment_is_ignored() -> None:
                                 "// ** right side is not a datum, assignment ignored in line >>j = i--; i;<<", "1"]
 
 
+def test_a_character_out_of_range_is_empty() -> None:
+    """As Singular (Old/string.tst): s[0] and s[9] of an 8-character string read as ""; writing there is an error."""
+    assert run('string s = "abcdefgh"; s[0]; s[9]; s[-1]; s[2];') == "\n\n\nb\n"
+    assert "out of range" in str(error('string s = "ab"; s[0] = ".";'))
+
+
 def test_dangling_else_is_skipped() -> None:
     assert run('if (0) {1;}\nint i;\nelse\n{ 5; }\n"done";').split() == ["done"]
 
