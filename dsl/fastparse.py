@@ -456,8 +456,8 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
                                 span.extend([(here, col), (here, col + len(piece))])
                             line, prev, line_start = here - dline, end, starts
                             continue
-                    key = (piece, col)
-                    hit = cache.get(key)
+                    key = (piece, col) if shaped is None or template is _NONE else None  # a shape's first time
+                    hit = cache.get(key) if key is not None else None
                     if hit is not None:
                         if pending >= 0:
                             flush(prev)
