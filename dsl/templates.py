@@ -14,6 +14,7 @@ Errors are moved from the template's line and columns to the statement's own
 from __future__ import annotations
 
 import re
+import threading
 from typing import Any, Callable, Optional
 
 from . import ast as A
@@ -21,8 +22,9 @@ from . import compiled
 
 #: a number literal (or a rational's numerator or denominator, or a monomial's coefficient): digits
 #: not glued to a name or to more digits (longer ones stay in the shape: the builder checks them)
-_NUMBER = re.compile(r"(?<![A-Za-z0-9_@])[0-9]{1,18}(?![0-9])")
+_NUMBER = re.compile(r"(?<![A-Za-z0-9_@'])[0-9]{1,18}(?![0-9])")
 _MARK = "\0"
+_COMPILING = threading.Lock()  # compiled.templating's tables are the module's: one template at a time
 KINDS = (A.Assign, A.ExprStmt, A.Decl, A.IncDec, A.If, A.For, A.While, A.Block)
 
 
@@ -48,7 +50,7 @@ class Template:
     def compile(self) -> None:
         """The tree's closure with the literals read from ``it.lits`` (kept on the tree)."""
         fns = {i: _slot_fn(*slot) for i, slot in self.slots.items()}
-        with compiled.templating(fns, self.holders, self.actual):
+        with _COMPILING, compiled.templating(fns, self.holders, self.actual):
             for stmt in _statements(self.tree):  # the inner ones too: each runs its own closure
                 compiled.stmt_fn(stmt)
 
