@@ -10,17 +10,20 @@ Each script repeats a mix of assignments of ints, numbers and polynomials, arith
 matrix entries, strings printed into a variable (``s = string(f);``), printed values, an ``if`` and
 a ``for``, with changing numbers, and declares its ring again every 500 statements; it runs in one
 process (``mech FILE``), output to /dev/null; the table shows the process's CPU time (start-up
-included), seconds per MB, statements per second and the process's peak memory (resident).
+included), seconds per MB, statements per second and the process's peak memory (resident), and
+the same for Singular on the same script (``Singular -q FILE``, a ``quit;`` appended) when installed.
 """
 from __future__ import annotations
 
 import os
 import random
+import shutil
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import Optional
 
 RING = "ring r = 0,(x,y,z),dp; poly f, g; ideal I; matrix M[2][2]; number n = 1;\n"
 HEAD = "int k, i, j; string s;\n" + RING
@@ -50,14 +53,30 @@ def script(megabytes: float, path: Path) -> int:
     return count
 
 
-def run(path: Path) -> tuple[float, float]:
-    """CPU seconds and peak memory (MB) of ``mech FILE`` (output dropped)."""
-    proc = subprocess.Popen([sys.executable, "-m", "mech", "--no-warn", str(path)], stdout=subprocess.DEVNULL)
+def run(path: Path, cmd: Optional[list[str]] = None) -> tuple[float, float]:
+    """CPU seconds and peak memory (MB) of ``mech FILE`` or ``cmd FILE`` (output dropped)."""
+    cmd = cmd or [sys.executable, "-m", "mech", "--no-warn"]
+    proc = subprocess.Popen([*cmd, str(path)], stdout=subprocess.DEVNULL)
     _, status, usage = os.wait4(proc.pid, 0)
     proc.returncode = os.waitstatus_to_exitcode(status)
     if proc.returncode:
-        raise SystemExit(f"mech {path} failed ({proc.returncode})")
+        raise SystemExit(f"{cmd[0]} {path} failed ({proc.returncode})")
     return usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
+
+
+def run_singular(path: Path) -> Optional[tuple[float, float]]:
+    """``run`` for Singular on a copy of the script ending in ``quit;``; None without Singular."""
+    singular = shutil.which("Singular")
+    if singular is None:
+        return None
+    copy = path.with_suffix(".sing")
+    shutil.copyfile(path, copy)
+    with copy.open("a") as fh:
+        fh.write("quit;\n")
+    try:
+        return run(copy, [singular, "-q", "--no-warn"])
+    finally:
+        copy.unlink()
 
 
 def loop(count: int = 200000) -> None:
@@ -80,13 +99,18 @@ def main() -> None:
         loop()
         return
     sizes = [float(a) for a in args] or [1, 5, 10, 50]
-    print("| script | statements | CPU time | s/MB | statements/s | peak memory |\n|---|---|---|---|---|---|")
+    print("| script | statements | CPU time | s/MB | statements/s | peak memory | Singular: CPU time | "
+          "statements/s | peak memory | mech / Singular |\n|---|---|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for mb in sizes:
             path = Path(tmp) / f"big{mb:g}.mech"
             n = script(mb, path)
             cpu, peak = run(path)
-            print(f"| {mb:g} MB | {n} | {cpu:.1f} s | {cpu / mb:.2f} | {n / cpu:.0f} | {peak:.0f} MB |", flush=True)
+            sing = run_singular(path)
+            other = (f"{sing[0]:.1f} s | {n / sing[0]:.0f} | {sing[1]:.0f} MB | {cpu / sing[0]:.1f}" if sing
+                     else "— | — | — | —")
+            print(f"| {mb:g} MB | {n} | {cpu:.1f} s | {cpu / mb:.2f} | {n / cpu:.0f} | {peak:.0f} MB | {other} |",
+                  flush=True)
 
 
 if __name__ == "__main__":

@@ -173,6 +173,8 @@ class Assignment:
         raise MechTypeError(f"cannot assign into an entry of a {typeof(container)}")
 
     def _exec_incdec(self, s: A.IncDec) -> None:
+        if s.ignored:
+            self.warn_in_line("right side is not a datum, assignment ignored")
         if type(s.target) is A.Name:
             var = self.lookup(s.target.id)
             if var is not None and type(var.value) is int:

@@ -118,6 +118,12 @@ class TypeCall(Expr):
     args: list[Expr]
 
 
+@dataclass(eq=False)
+class Backquote(Expr):
+    """`` `s` ``: the variable whose name is the value of the string expression ``s``."""
+    expr: Expr
+
+
 # ---------------------------------------------------------------- statements
 class Stmt(Node):
     pass
@@ -152,6 +158,7 @@ class Assign(Stmt):
 class IncDec(Stmt):
     target: Expr
     delta: int
+    ignored: bool = False  # `j = i++;`: as Singular, i changes and the assignment is ignored with a warning
 
 
 @dataclass(eq=False)
@@ -186,6 +193,14 @@ class Moved(Stmt):
     shared (long scripts repeat statements; see :mod:`~mech.dsl.fastparse`); ``pos`` is its own."""
     stmt: Stmt
     dline: int
+
+
+class Relit(Stmt):
+    """A one-line statement of the same shape as an earlier one (the same text but for its number
+    literals, ``lits``, as written) run by that one's template (:mod:`~mech.dsl.templates`) ``dline``
+    lines further down; ``pos`` is its own.  Not a dataclass: one is made per line of long scripts."""
+    def __init__(self, template: object, lits: list[str], dline: int, pos: Pos) -> None:
+        self.template, self.lits, self.dline, self.pos = template, lits, dline, pos
 
 
 @dataclass(eq=False)

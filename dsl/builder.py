@@ -142,6 +142,14 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
         return A.ExprStmt(c[0], pos=meta_pos(meta))
 
     @v_args(meta=True)
+    def backquote(self, meta, c):
+        return A.Backquote(c[0], pos=meta_pos(meta))
+
+    @v_args(meta=True)
+    def last_string(self, meta, c):
+        return A.ExprStmt([A.StrLit(A.string_value(str(c[0])), pos=token_pos(c[0]))], pos=meta_pos(meta))
+
+    @v_args(meta=True)
     def empty_stmt(self, meta, c):
         return A.Empty(pos=meta_pos(meta))
 
@@ -207,6 +215,16 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
     def decr_stmt(self, meta, c):
         _check_target(c[0])
         return A.IncDec(c[0], -1, pos=meta_pos(meta))
+
+    @v_args(meta=True)
+    def assign_incr(self, meta, c):
+        _check_target(c[1])
+        return A.IncDec(c[1], 1, True, pos=meta_pos(meta))
+
+    @v_args(meta=True)
+    def assign_decr(self, meta, c):
+        _check_target(c[1])
+        return A.IncDec(c[1], -1, True, pos=meta_pos(meta))
 
     @v_args(meta=True)
     def break_stmt(self, meta, c):

@@ -10,7 +10,8 @@ sessions, see :mod:`~mech.dsl.fastparse`).
 """
 from __future__ import annotations
 
-from typing import Any, Callable
+from contextlib import contextmanager
+from typing import Any, Callable, Iterator
 
 from ..kernel import Poly
 from . import ast as A
@@ -23,6 +24,34 @@ from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, Proc
 Fn = Callable[[Any], Any]
 
 MAX_DEPTH = 40  # deeper subtrees are left to the interpreter's evaluator (it loops over long sums)
+
+#: while a template compiles (:mod:`~mech.dsl.templates`): the closures of its literal nodes (by id),
+#: the ids of the nodes holding literals, and the copy of a node with a statement's own numbers
+_SLOTS: dict[int, Fn] = {}
+_HOLDERS: set[int] = set()
+_ACTUAL: list[Callable[[Any, list], Any]] = []
+
+
+@contextmanager
+def templating(slots: dict[int, Fn], holders: set[int], actual: Callable[[Any, list], Any]) -> Iterator[None]:
+    """Compile a template's tree: its literals read the running statement's numbers (``it.lits``)."""
+    global _SLOTS, _HOLDERS
+    _SLOTS, _HOLDERS = slots, holders
+    _ACTUAL.append(actual)
+    try:
+        yield
+    finally:
+        _SLOTS, _HOLDERS = {}, set()
+        _ACTUAL.pop()
+
+
+def _actual(node: Any) -> Callable[[Any], Any]:
+    """The node a closure hands to the interpreter: ``node`` itself, or in a template the copy with
+    the running statement's numbers."""
+    if id(node) not in _HOLDERS:
+        return lambda it: node
+    copy = _ACTUAL[-1]
+    return lambda it: copy(node, it.lits)
 
 
 def expr_fn(node: A.Expr) -> Fn:
@@ -66,10 +95,17 @@ def _locate(e: Exception, node: A.Expr, it: Any) -> Exception:
 
 
 def _generic(node: A.Expr) -> Fn:
+    if id(node) in _HOLDERS:
+        real = _actual(node)
+        return lambda it: it._eval_node(real(it))
     return lambda it: it._eval_node(node)
 
 
 def _expr(node: A.Expr, depth: int) -> Fn:
+    if _SLOTS:
+        fn = _SLOTS.get(id(node))
+        if fn is not None:
+            return fn
     kind = type(node)
     if kind is A.IntLit or kind is A.StrLit:
         value = node.value
@@ -226,13 +262,14 @@ def _call(node: A.Call, depth: int) -> Fn:
     name = node.func.id
     values = _values(node.args, depth)
     names = arg_names(node.args)
+    real = _actual(node)
 
     def fn(it: Any) -> Any:
         var = it.lookup(name)
         if var is None:  # as the evaluator: a variable first, then a command
             cmd = it.registry.find(name, it.loaded_libs)
             if cmd is None or cmd.raw:
-                return it._eval_node(node)
+                return it._eval_node(real(it))
             try:
                 return it.invoke_command(cmd, values(it), names)
             except SIGNALS:
@@ -240,7 +277,7 @@ def _call(node: A.Call, depth: int) -> Fn:
             except Exception as e:
                 raise _locate(e, node, it) from None
         if type(var.value) is not Proc:
-            return it._eval_node(node)
+            return it._eval_node(real(it))
         try:
             return it.call_proc(var.value, values(it), node)
         except SIGNALS:
@@ -258,7 +295,7 @@ def _stmt(s: A.Stmt) -> Fn:
     if (kind is A.Assign and len(s.targets) == 1 and len(s.values) == 1 and type(s.targets[0]) is A.Index
             and type(s.targets[0].base) is A.Name and 1 <= len(s.targets[0].indices) <= 2):
         return _assign_entry(s)
-    if kind is A.IncDec and type(s.target) is A.Name:
+    if kind is A.IncDec and type(s.target) is A.Name and not s.ignored:
         return _incdec(s)
     if kind is A.If:
         return _if(s)
@@ -271,6 +308,9 @@ def _stmt(s: A.Stmt) -> Fn:
     if kind is A.Block:
         body = s.body
         return lambda it: _run(it, body)
+    if id(s) in _HOLDERS:
+        real = _actual(s)
+        return lambda it: it._exec[kind](real(it))
     return lambda it: it._exec[kind](s)
 
 
@@ -320,7 +360,7 @@ def _assign_entry(s: A.Assign) -> Fn:
     name = target.base.id
     vf = expr_fn(s.values[0])
     kfs = [expr_fn(i) for i in target.indices]
-    chain = [target]
+    real = _actual(target)
 
     def inner(it: Any) -> None:
         v = vf(it)
@@ -329,7 +369,7 @@ def _assign_entry(s: A.Assign) -> Fn:
             v = items[0] if len(items) == 1 else ExprList(items)
         var = it.lookup(name)
         if var is None:
-            it.assign(target, v)
+            it.assign(real(it), v)
             return
         c = var.value
         idx = [f(it) for f in kfs]
@@ -359,7 +399,7 @@ def _assign_entry(s: A.Assign) -> Fn:
                 ents[(i - 1) * c.ncols + j - 1] = v
                 var.value = Matrix(c.ring, c.nrows, c.ncols, ents)
                 return
-        it._rebind(var, it._set_in(c, chain, 0, v, idx))
+        it._rebind(var, it._set_in(c, [real(it)], 0, v, idx))
     return inner
 
 

@@ -65,6 +65,18 @@ class Expressions:
             return vals[0]
         return ExprList(vals)
 
+    def _eval_backquote(self, node: A.Backquote) -> Any:
+        """`` `s` ``: the variable (or ring variable) named by the string ``s``, as Singular."""
+        name = self.eval(node.expr)
+        if type(name) is not str:
+            raise MechTypeError(f"`...` needs a string expression, not {typeof(name)}")
+        var = self.lookup(name)
+        if var is not None:
+            return var.value
+        if self.ring is not None and self.ring.var_index(name) is not None:
+            return self.ring.poly.gen(self.ring.var_index(name))
+        raise MechRuntimeError(f"`{name}` is undefined")
+
     def _eval_tuple(self, node: A.Tuple) -> Any:
         return ExprList(self._values(node.items))
 
@@ -162,8 +174,8 @@ class Expressions:
             seq, what = base.items, "list"
         elif isinstance(base, IntVec):
             seq, what = base.values, "intvec"
-        elif isinstance(base, str):
-            seq, what = base, "string"
+        elif isinstance(base, str):  # as Singular: a character out of range is the empty string
+            return base[i - 1] if 1 <= i <= len(base) else ""
         elif isinstance(base, Map):
             seq, what = base.images, "map"
         elif isinstance(base, Poly):

@@ -15,6 +15,7 @@ from typing import Any, Callable, Optional
 
 from . import ast as A
 from .split import statement_ends
+from .templates import make, shape
 
 _TOKEN = re.compile(r"""[ \t]*+(?:   # spaces before a token are taken with it: one match a token
     (?P<ws>(?:[ \t\f\r\n]+|//[^\n]*|/\*.*?\*/)+|\Z)
@@ -359,7 +360,8 @@ _CONTROL = {"if": _Parser.if_stmt, "while": _Parser.while_stmt, "for": _Parser.f
             "continue": _Parser.jump}
 _EOF = ("$", "", 0, 0, 0, 0)
 _SKIP = re.compile(r"(?:[ \t\f\r\n]+|//[^\n]*|/\*.*?\*/)*+", re.S)  # blanks and comments before a statement
-MAX_SHARED = 4096  # statement trees kept for reuse (about 2 KB each)
+MAX_SHARED = 4096  # statement trees and templates kept for reuse (about 2 KB each)
+_ONCE, _NONE = "once", "none"  # a shape seen once (its template is made the second time), a shape without one
 _SHARED: dict[tuple, dict[tuple[str, int], A.Stmt]] = {}
 
 
@@ -434,8 +436,28 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
                     col = start - starts + 1
                     if here == 1:
                         col += dcol
-                    key = (piece, col)
-                    hit = cache.get(key)
+                    shaped = shape(piece)
+                    if shaped is not None:  # numbers: the template of its shape, from its second time
+                        skey = (shaped[0], col)
+                        template = cache.get(skey)
+                        if template is None or template is _ONCE:
+                            template = _template(text, prev, end, line, line_start, keywords, at, type_set,
+                                                 piece, col, shaped[1]) if template is _ONCE else _ONCE
+                            _remember(cache, skey, template)
+                        if template is not _ONCE and template is not _NONE:
+                            if pending >= 0:
+                                flush(prev)
+                            here += dline
+                            body.append(A.Relit(template, shaped[1], here - template.tree.pos.line,
+                                                _new_pos(A.Pos, (here, col, here, col + len(piece)))))
+                            if span:
+                                span[1] = (here, col + len(piece))
+                            else:
+                                span.extend([(here, col), (here, col + len(piece))])
+                            line, prev, line_start = here - dline, end, starts
+                            continue
+                    key = (piece, col) if shaped is None or template is _NONE else None  # a shape's first time
+                    hit = cache.get(key) if key is not None else None
                     if hit is not None:
                         if pending >= 0:
                             flush(prev)
@@ -456,10 +478,7 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
                 if parser.i != len(toks) - 1:
                     raise _Fail
                 if key is not None:
-                    if len(cache) >= MAX_SHARED:  # the older half goes (the frequent come back at once)
-                        for old in list(itertools.islice(cache, MAX_SHARED // 2)):
-                            del cache[old]
-                    cache[key] = stmt
+                    _remember(cache, key, stmt)
             except (_Fail, RecursionError):
                 stmt = None
                 if pending < 0:
@@ -486,6 +505,28 @@ def parse_fast(text: str, at: tuple[int, int], terminals: Any, types: tuple[str,
         return A.Program(body)
     (line0, col0), (line1, col1) = span
     return A.Program(body, pos=A.Pos(line0, col0, line1, col1))
+
+
+def _remember(cache: dict, key: tuple, value: Any) -> None:
+    if len(cache) >= MAX_SHARED:  # the older half goes (the frequent come back at once)
+        for old in list(itertools.islice(cache, MAX_SHARED // 2)):
+            del cache[old]
+    cache[key] = value
+
+
+def _template(text: str, start: int, end: int, line: int, line_start: int, keywords: frozenset,
+              at: tuple[int, int], types: frozenset, piece: str, col: int, lits: list[str]) -> Any:
+    """The template of the statement ``text[start:end]`` (its text ``piece`` at column ``col``,
+    its numbers ``lits``), or _NONE when it has none (not a statement of the fast path, or refused)."""
+    try:
+        toks = _tokens(text, start, end, line, line_start, keywords, at)
+        parser = _Parser(toks, types)
+        stmt, _ = parser.statement()
+        if parser.i != len(toks) - 1:
+            return _NONE
+    except (_Fail, RecursionError):
+        return _NONE
+    return make(stmt, piece, col, lits) or _NONE
 
 
 def _extend(span: list, pos: A.Pos) -> None:

@@ -77,6 +77,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.source = Source("<string>", "")
         self.stmt: Optional[A.Stmt] = None
         self.line_shift = 0  # lines from self.stmt's position to the running statement's (A.Moved)
+        self.lits: list[str] = []  # the numbers of the statement a template runs for (A.Relit)
         self.last: Any = NONE
         self.argnames: list[str] = []
         self.ticks_per_sec = 1
@@ -91,12 +92,14 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
             A.Kill: self._exec_kill, A.Export: self._exec_export, A.Keepring: self._exec_keepring,
             A.Setring: self._exec_setring, A.Lib: self._exec_lib, A.Quit: self._exec_quit,
             A.Help: self._exec_help, A.Empty: lambda s: None, A.Moved: self._exec_moved,
+            A.Relit: self._exec_relit,
         }
         self._eval: dict[type, Callable] = {
             A.Name: self._eval_name, A.IntLit: lambda n: n.value, A.RatLit: self._eval_rat,
             A.MonomLit: self._eval_monom, A.StrLit: lambda n: n.value, A.Tuple: self._eval_tuple,
             A.BinOp: self._eval_binop, A.UnOp: self._eval_unop, A.Range: self._eval_range,
             A.Index: self._eval_index, A.Call: self._eval_call, A.TypeCall: self._eval_typecall,
+            A.Backquote: self._eval_backquote,
         }
         if sys.getrecursionlimit() < 20000:
             sys.setrecursionlimit(20000)

@@ -3,7 +3,7 @@ definitions, kill, export, keepring, setring and quit; declarations, assignments
 have their own modules."""
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Callable, Optional
 
 from . import ast as A
 from . import ops
@@ -47,7 +47,7 @@ class Statements:
         compiled (:mod:`~mech.dsl.compiled`), a statement's first run goes by its type (most lines
         of a long script run once)."""
         kind = type(stmt)
-        if self.compiled and kind is not A.Moved:
+        if self.compiled and kind is not A.Moved and kind is not A.Relit:
             if kind is A.For or kind is A.While or stmt.__dict__.get("_seen"):
                 stmt_fn(stmt)(self)
                 return
@@ -74,6 +74,30 @@ class Statements:
             raise
         finally:
             self.line_shift = saved
+
+    def _exec_relit(self, s: A.Relit) -> None:
+        """A statement run by the template of its shape (:mod:`~mech.dsl.templates`) with its own
+        numbers; warnings name this line, errors are moved to it."""
+        template, lits = s.template, s.lits
+        tree = template.tree
+        saved = self.lits, self.line_shift
+        self.lits, self.line_shift = lits, s.dline
+        try:
+            if not self.compiled:
+                self.exec_stmt(template.actual(tree, lits))
+            else:
+                if "_fn" not in tree.__dict__:
+                    template.compile()
+                self.exec_stmt(tree)
+        except MechError as e:
+            _move_error(e, tree.pos.line, s.dline, self.source, lambda p: template.move(p, s.dline, lits))
+            raise
+        except (BreakSignal, ContinueSignal):  # reported at the top level where self.stmt is
+            if self.stmt is not None:
+                self.stmt = A.Empty(pos=template.move(self.stmt.pos, s.dline, lits))
+            raise
+        finally:
+            self.lits, self.line_shift = saved
 
     def _exec_expr(self, s: A.ExprStmt) -> None:
         parts, values = [], []
@@ -213,12 +237,14 @@ def _moved(pos: A.Pos, dline: int) -> A.Pos:
     return A.Pos(pos.line + dline, pos.col, pos.end_line + dline, pos.end_col)
 
 
-def _move_error(e: MechError, line: int, dline: int, source: object) -> None:
-    """Move the position of ``e`` raised in a shared tree (on ``line``) ``dline`` lines: its own
-    position, or when it comes from inside a procedure, that of the outermost call."""
+def _move_error(e: MechError, line: int, dline: int, source: object,
+                move: Optional[Callable[[A.Pos], A.Pos]] = None) -> None:
+    """Move the position of ``e`` raised in a shared tree (on ``line``) ``dline`` lines (or by
+    ``move``): its own position, or when it comes from inside a procedure, that of the outermost call."""
+    move = move or (lambda pos: _moved(pos, dline))
     if e.notes:
         note = e.notes[-1]
         if note.pos is not None and note.pos.line == line and note.source is source:
-            note.pos = _moved(note.pos, dline)
+            note.pos = move(note.pos)
     elif e.pos is not None and e.pos.line == line and e.source in (None, source):
-        e.pos = _moved(e.pos, dline)
+        e.pos = move(e.pos)

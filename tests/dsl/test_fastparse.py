@@ -149,7 +149,7 @@ def test_shared_trees_keep_positions(text, monkeypatch):
 
 def test_shared_trees_are_reused():
     """The table takes repeated one-line statements: the second copy is the first's tree, moved."""
-    program = parse("int k;\nk = k + 1;\nk = k + 1;\n", shared=True)
+    program = parse("int k;\nk = k + k;\nk = k + k;\n", shared=True)
     a, b = program.body[1], program.body[2]
     assert isinstance(b, A.Moved) and b.stmt is a and b.dline == 1 and b.pos.line == 3
 
