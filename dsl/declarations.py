@@ -9,10 +9,11 @@ from .errors import MechRuntimeError, MechTypeError
 from .rings import build_ring, default_ring, indexed_names
 from .scopes import RING_TYPES
 from .types import find_type
+from .values_modules import Module, Vector
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Ring, convert, to_int, to_matrix, typeof
 
 #: Singular's types mech does not provide.
-UNSUPPORTED_TYPES = {"vector", "module", "resolution", "link"}
+UNSUPPORTED_TYPES = {"resolution", "link"}
 
 
 #: The types whose redeclaration ``T x = ...x...;`` reads the new, default x, as Singular does.
@@ -121,6 +122,10 @@ class Declarations:
             return ring.zero()
         if typ == "ideal":
             return Ideal(ring, [], is_std=True)
+        if typ == "vector":
+            return Vector(ring, ())
+        if typ == "module":
+            return Module(ring, (), is_std=True)
         raise MechTypeError(f"type '{typ}' is not supported yet")
 
     def _converted(self, v: Any, typ: str, kring: Any) -> Any:

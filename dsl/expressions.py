@@ -13,6 +13,7 @@ from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
 from .intmat import IntMat
 from .values import NONE, ExprList, Ideal, IntVec, LibCommand, List, Map, Matrix, Proc, to_int, typeof
+from .values_modules import Module, Vector
 
 
 class Expressions:
@@ -172,6 +173,10 @@ class Expressions:
                 return seq[i - 1]
             if i > len(seq) or i < 1:
                 return base.ring.zero()
+        elif isinstance(base, Vector):
+            return base.get(i)
+        elif isinstance(base, Module):
+            seq, what = base.gens, "module"
         elif isinstance(base, Matrix):
             raise MechRuntimeError("a matrix entry is M[i,j]")
         else:

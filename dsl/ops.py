@@ -13,6 +13,7 @@ from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
 from .intmat import IntMat, euclid_div, intmat_op
 from .minpoly import compare_params
+from .values_modules import Module, Vector
 from .values import (BigInt, ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number,
                      to_poly, typeof)
 
@@ -224,6 +225,9 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
             return IntVec([a] * b)
     if op == "^":
         return power(a, b)
+    if isinstance(a, (Vector, Module)) or isinstance(b, (Vector, Module)):
+        from .ops_modules import module_binary
+        return module_binary(op, a, b, ring)
     if isinstance(a, IntMat) or isinstance(b, IntMat):
         return intmat_op(op, a, b)
     if isinstance(a, (IntVec,)) or isinstance(b, IntVec):
@@ -336,6 +340,9 @@ def negate(a: Any) -> Any:
         return Matrix(a.ring, a.nrows, a.ncols, [-x for x in a.entries])
     if isinstance(a, IntVec):
         return IntVec([-x for x in a.values])
+    if isinstance(a, (Vector, Module)):
+        from .ops_modules import module_negate
+        return module_negate(a)
     if isinstance(a, IntMat):
         return IntMat(a.nrows, a.ncols, [-x for x in a.values])
     raise MechTypeError(f"unary minus is not defined for {typeof(a)}")
@@ -383,7 +390,7 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
             x, y = _poly_cmp(p, q), 0
     elif op in ("==", "!=") and isinstance(a, IntMat) and isinstance(b, IntMat):
         return int((a == b) == (op == "=="))
-    elif op in ("==", "!=") and type(a) is type(b) and isinstance(a, (Ideal, Matrix, IntVec, List)):
+    elif op in ("==", "!=") and type(a) is type(b) and isinstance(a, (Ideal, Matrix, IntVec, List, Vector, Module)):
         return int(same_value(a, b) == (op == "=="))
     elif isinstance(a, IntVec) and isinstance(b, IntVec):
         x, y = a.values, b.values

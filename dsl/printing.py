@@ -12,6 +12,7 @@ from typing import Any, Optional
 from ..kernel import Poly, PolyRing
 from .qrings import quotient_ideal
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, NoneValue, Number, Proc, Ring
+from .values_modules import Module, Vector
 
 _short_cache: dict[int, tuple[PolyRing, bool]] = {}
 
@@ -114,6 +115,9 @@ def value_str(v: Any) -> str:
         return ",".join(poly_str(g) for g in v.entries)
     if isinstance(v, Map):
         return ",".join(poly_str(g) for g in v.images)
+    if isinstance(v, (Vector, Module)):
+        from .printing_modules import module_string, vector_str
+        return vector_str(v) if isinstance(v, Vector) else module_string(v)
     if isinstance(v, IntVec):
         return ",".join(str(x) for x in v.values)
     if isinstance(v, (List, ExprList)):
@@ -144,6 +148,9 @@ def render(v: Any, name: Optional[str] = None) -> str:
                          for i in range(1, v.nrows + 1) for j in range(1, v.ncols + 1))
     if isinstance(v, List):
         return _render_list(v, "")
+    if isinstance(v, Module):
+        from .printing_modules import module_render
+        return module_render(v, name)
     if isinstance(v, Ring):
         return ring_str(v)
     if isinstance(v, Proc):
@@ -195,6 +202,9 @@ def print_form(v: Any, name: str = "_") -> str:
         return ",\n".join(poly_str(g) for g in v.gens)
     if isinstance(v, IntVec):
         return ",\n".join(str(x) for x in v.values) + " "
+    if isinstance(v, (Vector, Module)):
+        from .printing_modules import bracket_str, module_print
+        return bracket_str(v) if isinstance(v, Vector) else module_print(v, name)
     if hasattr(v, "print_form"):  # intmat
         return v.print_form()
     if isinstance(v, Ring):

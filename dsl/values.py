@@ -18,6 +18,7 @@ from ..kernel import Poly, PolyRing
 from .convert import number_fraction, poly_to_sympy
 from .errors import MechRuntimeError, MechTypeError
 from .types import find_type
+from .values_modules import Module, Vector, module_matrix, to_module, to_vector
 
 
 class NoneValue:
@@ -390,7 +391,7 @@ class LibCommand:
 
 TYPE_NAMES = {int: "int", BigInt: "bigint", str: "string", Number: "number", Poly: "poly", Ideal: "ideal",
               Matrix: "matrix", IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", NoneValue: "none",
-              LibCommand: "proc"}
+              LibCommand: "proc", Vector: "vector", Module: "module"}
 
 
 def typeof(v: Any) -> str:
@@ -418,7 +419,7 @@ def same_value(a: Any, b: Any) -> bool:
 
 def ring_of(v: Any) -> Optional[PolyRing]:
     """The kernel ring a value depends on (None for ring-independent values)."""
-    if isinstance(v, (Poly, Number, Ideal, Matrix, Map)):
+    if isinstance(v, (Poly, Number, Ideal, Matrix, Map, Vector, Module)):
         return v.ring
     if type(v) is List:
         r = v._ring
@@ -538,6 +539,9 @@ def to_matrix(v: Any, ring: Optional[PolyRing], nrows: int = 0, ncols: int = 0) 
     ring = _need_ring(ring, "matrix")
     if getattr(type(v), "type_name", "") == "intmat":
         v = Matrix(ring, v.nrows, v.ncols, [ring.const(x) for x in v.values])
+    if isinstance(v, (Module, Vector)):
+        _check_ring(v, ring)
+        v = module_matrix(v)
     if isinstance(v, Matrix):
         _check_ring(v, ring)
         if not nrows or (nrows, ncols) == (v.nrows, v.ncols):
@@ -604,6 +608,10 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing], warn: Optional[Callable[
         return to_ideal(v, ring)
     if typ == "matrix":
         return to_matrix(v, ring)
+    if typ == "vector":
+        return to_vector(v, ring)
+    if typ == "module":
+        return to_module(v, ring)
     if typ == "intvec":
         return to_intvec(v)
     if typ == "list":

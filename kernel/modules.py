@@ -61,6 +61,18 @@ class ModuleOrder:
             self.neg_key = lambda t: (nkey(*t), -t[1])
 
 
+class _Descending:
+    """A sort key in reverse (the heap's order for a module order given by its key)."""
+
+    __slots__ = ("k",)
+
+    def __init__(self, k: tuple) -> None:
+        self.k = k
+
+    def __lt__(self, other: "_Descending") -> bool:
+        return other.k < self.k
+
+
 def _lead(v: Vector, key: Callable[[Term], tuple]) -> Term:
     return max(v, key=key)
 
@@ -84,15 +96,19 @@ class ModuleGB:
     """A Gröbner basis of a submodule of R^n, completed as generators are added (:meth:`add`)."""
 
     def __init__(self, ring: PolyRing, rank: int, elim: int = 0, shifts: Optional[Sequence[int]] = None,
-                 collect: bool = False) -> None:
+                 collect: bool = False, key: Optional[Callable[[Term], tuple]] = None) -> None:
         self.ring, self.rank, self.elim = ring, rank, elim
         self.collect = collect and elim > 0
         self.syzygies: list[Vector] = []  # with collect: the reduced vectors with no term below elim
         self._pairs: list[tuple[int, int, int]] = []  # (degree, i, j), a heap
         self._pending: set[tuple[int, int]] = set()
         self.shifts = tuple(shifts) if shifts is not None else (0,) * rank
-        order = ModuleOrder(ring, elim, shifts)
-        self.key, self.neg_key = order.key, order.neg_key
+        if key is None:
+            order = ModuleOrder(ring, elim, shifts)
+            self.key, self.neg_key = order.key, order.neg_key
+        else:  # another module order (a global one: Singular's position over term, c or C), below elim's
+            self.key = (lambda t: (t[1] < elim, key(t))) if elim else key
+            self.neg_key = lambda t: _Descending(self.key(t))
         self.basis: list[Vector] = []
         self.leads: list[Term] = []
         self._by_comp: dict[int, list[tuple[Exp, int, int]]] = {}  # component -> (lead exp, mask, index)
