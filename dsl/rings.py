@@ -168,7 +168,10 @@ def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
                 args = args[:nvars - covered]
                 if not args:
                     continue
-            blocks.append(OrderBlock(kind, len(args), tuple(args)))
+            if kind in ("wp", "Wp") and all(w == 1 for w in args):  # as Singular: wp(1,..,1) is dp
+                blocks.append(OrderBlock(kind.replace("w", "d").replace("W", "D"), len(args)))
+            else:
+                blocks.append(OrderBlock(kind, len(args), tuple(args)))
         elif kind == "M":
             n = math.isqrt(len(args or []))
             if not args or n * n != len(args):
