@@ -9,7 +9,7 @@ from typing import Any, Optional
 from ..kernel import Poly, PolyRing
 from .errors import MechTypeError
 from .values import Ideal, Matrix, Number, to_poly, typeof
-from .values_modules import Module, Vector, module_matrix, to_vector
+from .values_modules import Module, Vector, module_matrix, to_module, to_vector
 
 
 def _bad(op: str, a: Any, b: Any) -> MechTypeError:
@@ -28,11 +28,13 @@ def _add(v: Vector, w: Vector, sign: int) -> Vector:
 def module_binary(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
     """``a op b`` where a or b is a vector or a module."""
     ring = getattr(a, "ring", None) or getattr(b, "ring", None) or ring
+    if op == "*" and isinstance(a, Ideal) and isinstance(b, Vector):  # I*v: the module of the g*v
+        return Module(ring, [Vector(ring, [g * x for x in b.entries]) for g in a.gens])
+    if op == "*" and isinstance(a, Vector) and isinstance(b, Ideal):
+        return module_binary(op, b, a, ring)
     if isinstance(a, Module) or isinstance(b, Module):
-        if op == "+" and isinstance(a, Module) and isinstance(b, (Module, Vector, Ideal)):
-            other = b if isinstance(b, Module) else Module(ring, [to_vector(b, ring)] if isinstance(b, Vector)
-                                                         else [to_vector(g, ring) for g in b.gens])
-            return Module(ring, a.nonzero() + other.nonzero(), max(a.rank, other.rank))
+        if op == "+" and all(isinstance(x, (Module, Vector, Ideal)) for x in (a, b)):
+            return _sum(to_module(a, ring), to_module(b, ring))
         if op == "*" and isinstance(a, Module) and _is_scalar(b):
             p = to_poly(b, ring)
             return Module(ring, [Vector(ring, [x * p for x in g.entries]) for g in a.gens], a.rank)
@@ -57,6 +59,15 @@ def module_binary(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
         from .ops import binary
         return binary("*", a, module_matrix(Module(ring, [b], a.ncols)), ring, lambda _m: None)
     raise _bad(op, a, b)
+
+
+def _sum(a: Module, b: Module) -> Module:
+    """M + N: the generators of both, without zeros and repeated generators (as Singular)."""
+    gens: list[Vector] = []
+    for g in a.gens + b.gens:
+        if not g.is_zero() and g not in gens:
+            gens.append(g)
+    return Module(a.ring, gens, max(a.rank, b.rank))
 
 
 def module_negate(a: Vector | Module) -> Vector | Module:

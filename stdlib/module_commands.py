@@ -202,28 +202,33 @@ def syz(M: Ideal | Module) -> Module:
     return _module(ring, basis, len(m.gens), True)
 
 
-def _lift_std(ring: PolyRing, m: Module) -> tuple[list[dict], list[dict]]:
-    """A standard basis of m and, for each element, its coefficients in m's generators."""
+def _lift_std(ring: PolyRing, m: Module) -> tuple[list[dict], list[dict], list[dict]]:
+    """A standard basis of m, for each element its coefficients in m's generators, and the syzygies
+    of m's generators (a standard basis of them)."""
     key, r, k = kernel_key(ring), m.rank, len(m.gens)
     gb = km.ModuleGB(ring, r + k, elim=r, key=lambda t: key(t) if t[1] < r else (t[1], key((t[0], 0))))
     zero = km.ring_zero_exp(ring)
     gb.add([{**g, (zero, r + j): ring.field.one} for j, g in enumerate(_vecs(m))])
-    pairs = []
+    pairs, syz = [], []
     for g in gb.basis:
         part = {t: c for t, c in g.items() if t[1] < r}
+        rest = {(e, i - r): c for (e, i), c in g.items() if i >= r}
         if not part:
+            syz.append(rest)
             continue
         lead = max(part, key=key)
         scaled = _normalized(ring, part, lead)
-        s = next(iter(scaled.values())) / part[next(iter(scaled))]
-        pairs.append((lead, scaled, {(e, i - r): c * s for (e, i), c in g.items() if i >= r}))
+        s = scaled[lead] / part[lead]
+        pairs.append((lead, scaled, {t: c * s for t, c in rest.items()}))
     pairs.sort(key=lambda p: key(p[0]))
-    return [p[1] for p in pairs], [p[2] for p in pairs]
+    return [p[1] for p in pairs], [p[2] for p in pairs], _basis(ring, k, syz)
 
 
 @command("liftstd", raw=True)
-def liftstd(ctx, m_node: A.Expr, t_node: A.Expr) -> Ideal | Module:
-    """liftstd(M, T): a standard basis S of M, setting the matrix T with matrix(S) = matrix(M)*T.
+def liftstd(ctx, m_node: A.Expr, t_node: A.Expr, *rest: A.Expr) -> Ideal | Module:
+    """liftstd(M, T): a standard basis S of M, setting the matrix T with matrix(S) = matrix(M)*T;
+    liftstd(M, T, U) also sets the module U of the syzygies of M's generators (a last string argument,
+    the algorithm, is ignored).
 
     Example:
       ring r = 0,(x,y),dp;
@@ -240,10 +245,12 @@ def liftstd(ctx, m_node: A.Expr, t_node: A.Expr) -> Ideal | Module:
     ring = ctx.basering().poly
     m = to_module(v, ring)
     _global(ring, "liftstd")
-    basis, coeffs = _lift_std(ring, m)
+    basis, coeffs, syz = _lift_std(ring, m)
     k = len(m.gens)
     cols = [Vector.from_terms(ring, c).padded(k) for c in coeffs] or [[ring.zero()] * k]
     ctx.assign(t_node, Matrix(ring, k, len(cols), [cols[j][i] for i in range(k) for j in range(len(cols))]))
+    if rest and not isinstance(rest[0], A.StrLit):
+        ctx.assign(rest[0], _module(ring, syz, k, True))
     if isinstance(v, Module):
         return _module(ring, basis, m.rank, True)
     return Ideal(ring, [Vector.from_terms(ring, b).get(1) for b in basis], is_std=True)
