@@ -287,12 +287,12 @@ def ring_str(r: Ring) -> str:
             continue
         size = b.size
         lines.append("//                  : names    " + " ".join(r.names[start:start + size]))
-        if b.kind == "M":
+        width = len(r.names[start + size - 1])  # as Singular: weights right-aligned in the width of
+        if b.kind == "M":                         # the block's last name
             for i in range(size):
                 row = b.weights[i * size:(i + 1) * size]
-                lines.append("//                  : weights  " + " ".join(str(w) for w in row))
-        elif b.weights:  # as Singular: each weight right-aligned in the width of the block's last name
-            width = len(r.names[start + size - 1])
+                lines.append("//                  : weights " + "".join(f" {w:>{width}}" for w in row))
+        elif b.weights:
             lines.append("//                  : weights " + "".join(f" {w:>{width}}" for w in b.weights))
         if b.kind != "a":
             start += size
