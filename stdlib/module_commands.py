@@ -173,7 +173,7 @@ def reduce(ctx, f: Vector | Module | Poly | Ideal, m: Module) -> Vector | Module
     """reduce(v, M): the normal form of the vector v (each generator of a module) by the standard
     basis M (a warning when M is not marked as one)."""
     _global(m.ring, "reduce")
-    if not m.is_std:
+    if not m.is_std and len(m.nonzero()) > 1:  # as Singular: one generator is a standard basis
         ctx.warn(f"{ctx.argnames[1] if len(ctx.argnames) > 1 else '_'} is no standard basis")
     if isinstance(f, (Poly, Ideal)):
         f = to_vector(f, m.ring) if isinstance(f, Poly) else to_module(f, m.ring)
