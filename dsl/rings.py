@@ -197,7 +197,21 @@ def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
         raise MechRuntimeError(f"the ordering covers {covered} variables, the ring has {nvars}")
     if not any(b.kind in ("c", "C") for b in blocks):
         blocks.append(OrderBlock("C"))
-    return blocks
+    return _merge_lp(blocks)
+
+
+def _merge_lp(blocks: list[OrderBlock]) -> list[OrderBlock]:
+    """As Singular: a degree block of one variable before an lp block is lp, and adjacent lp blocks
+    are one ((dp(1),lp(2)) is lp(3)): the same ordering."""
+    out: list[OrderBlock] = []
+    for k, b in enumerate(blocks):
+        nxt = blocks[k + 1] if k + 1 < len(blocks) else None
+        if b.kind in ("dp", "Dp", "wp", "Wp") and b.size == 1 and nxt is not None and nxt.kind == "lp":
+            b = OrderBlock("lp", 1)
+        if b.kind == "lp" and out and out[-1].kind == "lp":
+            b = OrderBlock("lp", out.pop().size + b.size)
+        out.append(b)
+    return out
 
 
 def make_ring(char: int, params: tuple[str, ...] | list[str], names: list[str], blocks: list[OrderBlock]) -> Ring:

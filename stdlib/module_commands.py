@@ -24,6 +24,21 @@ def _global(ring: PolyRing, what: str) -> None:
         raise MechRuntimeError(f"{what} of a module in a local or mixed ordering is not supported")
 
 
+_TWINS: dict[int, tuple[PolyRing, PolyRing]] = {}
+
+
+def global_twin(ring: PolyRing) -> PolyRing:
+    """The ring with a global ordering (dp): syzygies of polynomials do not depend on the ordering,
+    and those over K[x] generate those over its localization."""
+    if ring.order.is_global:
+        return ring
+    hit = _TWINS.get(id(ring))
+    if hit is None or hit[0] is not ring:
+        from ..kernel.order import MonomialOrder
+        hit = _TWINS[id(ring)] = (ring, PolyRing(ring.field, ring.names, MonomialOrder.simple("dp", ring.nvars)))
+    return hit[1]
+
+
 def _normalized(ring: PolyRing, terms: dict, lead: Any) -> dict:
     """A vector scaled as Singular's std returns it: over QQ primitive with integer coefficients and
     a positive leading coefficient, over Z/p with leading coefficient 1."""
@@ -48,6 +63,9 @@ def _normalized(ring: PolyRing, terms: dict, lead: Any) -> dict:
 def _basis(ring: PolyRing, rank: int, vecs: list[dict]) -> list[dict]:
     """The reduced standard basis (normalized, by increasing lead term) of the submodule of R^rank."""
     key = kernel_key(ring)
+    if not ring.order.is_global:
+        basis = km.local_standard_basis(ring, rank, vecs, key)  # Singular lists it by decreasing lead
+        return [_normalized(ring, g, max(g, key=key)) for g in reversed(basis)]
     gb = km.ModuleGB(ring, rank, key=key)
     gb.add([v for v in vecs if v])
     out = [(_normalized(ring, g, lt), lt) for g, lt in zip(gb.basis, gb.leads)]
@@ -147,8 +165,8 @@ def size(m: Vector | Module) -> int:
 
 @command("std")
 def std(m: Module) -> Module:
-    """std(M): a standard basis of the module M for the ring's module ordering (a global one: the
-    reduced basis, sorted by increasing leading term).
+    """std(M): a standard basis of the module M for the ring's module ordering, sorted by increasing
+    leading term (for a global ordering the reduced basis; for a local one Lazard's method).
 
     Example:
       ring r = 0,(x,y),(c,dp);
@@ -158,7 +176,6 @@ def std(m: Module) -> Module:
       → _[2]=[y]
       → _[3]=[x,y]
     """
-    _global(m.ring, "std")
     return _module(m.ring, _basis(m.ring, m.rank, _vecs(m)), m.rank, True)
 
 
@@ -196,8 +213,7 @@ def syz(M: Ideal | Module) -> Module:
     """
     m = M if isinstance(M, Module) else to_module(M, M.ring)
     ring = m.ring
-    _global(ring, "syz")
-    rel = km.syzygies(ring, m.rank, _vecs(m))
+    rel = km.syzygies(global_twin(ring), m.rank, _vecs(m))
     basis = _basis(ring, len(m.gens), rel)
     return _module(ring, basis, len(m.gens), True)
 
@@ -285,11 +301,10 @@ def modulo(h1: Ideal | Module, h2: Ideal | Module) -> Module:
       → _[2]=x*gen(1)
     """
     ring = h1.ring
-    _global(ring, "modulo")
     a = h1 if isinstance(h1, Module) else to_module(h1, ring)
     b = h2 if isinstance(h2, Module) else to_module(h2, ring)
     rank, k = max(a.rank, b.rank), len(a.gens)
-    rel = km.syzygies(ring, rank, _vecs(a) + _vecs(b))
+    rel = km.syzygies(global_twin(ring), rank, _vecs(a) + _vecs(b))
     kept = [{t: c for t, c in s.items() if t[1] < k} for s in rel]
     return _module(ring, _basis(ring, k, kept), k, True)
 

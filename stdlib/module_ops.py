@@ -15,12 +15,12 @@ from ..dsl.values import Ideal
 from ..dsl.values_modules import Module, Vector, lead_term
 from ..kernel import Poly, PolyRing
 from ..kernel import modules as km
-from .module_commands import _basis, _global, _module, _vecs
+from .module_commands import _basis, _global, _module, _vecs, global_twin
 
 
 def _first_parts(ring: PolyRing, rank: int, gens: list[dict], k: int) -> list[dict]:
     """The first k entries of the syzygies of gens."""
-    return [{t: c for t, c in s.items() if t[1] < k} for s in km.syzygies(ring, rank, gens)]
+    return [{t: c for t, c in s.items() if t[1] < k} for s in km.syzygies(global_twin(ring), rank, gens)]
 
 
 @command("intersect")
@@ -33,7 +33,6 @@ def intersect(M: Module, N: Module, *more: Module) -> Module:
       → _[1]=x2*gen(1)+xy*gen(2)
     """
     ring = M.ring
-    _global(ring, "intersect")
     out = M
     for N2 in (N,) + more:
         rank, k = max(out.rank, N2.rank), len(out.gens)
@@ -58,7 +57,6 @@ def quotient(M: Module, N: Module | Poly) -> Module | Ideal:
       → _[1]=x3-y2
     """
     ring = M.ring
-    _global(ring, "quotient")
     rank = M.rank
     if isinstance(N, Poly):
         scaled = [{(e, i): c for e, c in N.terms.items()} for i in range(rank)]

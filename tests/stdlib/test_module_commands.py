@@ -147,6 +147,21 @@ def test_id2mod_and_mod2id_are_inverse() -> None:
                                 "_[4]=e(1)*y+e(2)*x"]
 
 
-def test_std_of_a_module_in_a_local_ordering_is_refused() -> None:
-    e = error("ring r=0,(x,y),ds; module M=[x,y]; std(M);")
-    assert "not supported" in str(e)
+LOCAL = """ring r=0,(x,y,z),ds; module M=[x+y2,y],[y+x3,z],[z2,x+z]; syz(M);
+ring r2=0,(x,y),(c,ds); module M=[1+x,y],[y,x2+y3]; std(M);
+"""
+
+
+@pytest.mark.parametrize("with_singular", [False, pytest.param(True, marks=pytest.mark.singular)])
+def test_local_orderings(with_singular: bool) -> None:
+    expected = ("_[1]=x2*gen(2)-xy*gen(1)+y2*gen(3)-xz*gen(3)+xz*gen(2)-yz*gen(1)+xy2*gen(2)-y2z*gen(3)"
+                "+y2z*gen(2)-yz2*gen(2)+z3*gen(1)-x4*gen(1)+x3y*gen(3)-x3z*gen(1)\n"
+                "_[1]=[1+x,y]\n_[2]=[0,x2-y2+x3+y3+xy3]")
+    assert run(LOCAL).split() == (run_singular(LOCAL) if with_singular else expected).split()
+
+
+def test_a_local_standard_basis_has_the_lead_terms_singular_gives() -> None:
+    src = """ring r=0,(x,y,z),ds; module M=[x+y2,y],[y+x3,z],[z2,x+z]; module S = std(M);
+    S;"""
+    out = run(src).split()
+    assert [line.split("=")[1].split("+")[0] for line in out[:4]] == ["x*gen(2)", "x*gen(1)", "y*gen(1)", "y2*gen(2)"]
