@@ -1,5 +1,5 @@
 """Ideal-style operations on modules (Singular dialect): ``intersect``, ``quotient``, ``interred``,
-``dim``, ``deg``, ``homog``, ``kbase``/``vdim`` of a module's standard basis (global orderings).
+``dim``, ``homog``.
 
 Intersections and quotients come from syzygies (Greuel–Pfister, *A Singular Introduction to Commutative
 Algebra*, 2.8): M ∩ N is the image under M of the first parts of the syzygies of [M | N]; M : N (an
@@ -129,14 +129,6 @@ def dim(ctx, M: Module) -> int:
         else:
             dims.append(krull_dim(es, ring.nvars))
     return max(dims) if dims else -1
-
-
-@command("deg")
-def deg(v: Vector | Module) -> int:
-    """deg(v): the largest total degree of a term of v (-1 for 0)."""
-    vs = [v] if isinstance(v, Vector) else v.nonzero()
-    degs = [sum(e) for w in vs for (e, _) in w.terms()]
-    return max(degs) if degs else -1
 
 
 @command("homog")
