@@ -83,7 +83,7 @@ class Declarations:
                 v = Matrix(ring, *(dims or (1, 1)))
             else:
                 # as Singular: a matrix value keeps its size, other values fill [rows][cols] (default 1 x 1)
-                keeps = isinstance(v, Matrix) or (typeof(v) == "intmat" and not dims)
+                keeps = isinstance(v, (Matrix, Module, Vector)) or (typeof(v) == "intmat" and not dims)
                 v = to_matrix(v, ring) if keeps else to_matrix(v, ring, *(dims or (1, 1)))
         elif typ == "intmat":
             from .intmat import to_intmat
