@@ -32,8 +32,12 @@ def module_binary(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
         return Module(ring, [Vector(ring, [g * x for x in b.entries]) for g in a.gens])
     if op == "*" and isinstance(a, Vector) and isinstance(b, Ideal):
         return module_binary(op, b, a, ring)
+    if op in ("+", "-") and isinstance(a, Matrix):  # as matrices (Singular; M + A is a module sum)
+        from .ops import binary
+        a2, b2 = (module_matrix(x) if isinstance(x, (Module, Vector)) else x for x in (a, b))
+        return binary(op, a2, b2, ring, lambda _m: None)
     if isinstance(a, Module) or isinstance(b, Module):
-        if op == "+" and all(isinstance(x, (Module, Vector, Ideal)) for x in (a, b)):
+        if op == "+" and all(isinstance(x, (Module, Vector, Ideal, Matrix)) for x in (a, b)):
             return _sum(to_module(a, ring), to_module(b, ring))
         if op == "*" and isinstance(a, Module) and _is_scalar(b):
             p = to_poly(b, ring)
