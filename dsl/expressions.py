@@ -177,8 +177,10 @@ class Expressions:
             return base.get(i)
         elif isinstance(base, Module):
             seq, what = base.gens, "module"
-        elif isinstance(base, Matrix):
-            raise MechRuntimeError("a matrix entry is M[i,j]")
+        elif isinstance(base, Matrix):  # as Singular: M[i] is the i-th column, a vector
+            if not 1 <= i <= base.ncols:
+                raise MechRuntimeError(f"index {i} out of range (the matrix has {base.ncols} columns)")
+            return Vector(base.ring, [base.get(r, i) for r in range(1, base.nrows + 1)])
         else:
             raise MechTypeError(f"a {typeof(base)} cannot be indexed")
         if not 1 <= i <= len(seq):

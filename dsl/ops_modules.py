@@ -36,6 +36,10 @@ def module_binary(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
         from .ops import binary
         a2, b2 = (module_matrix(x) if isinstance(x, (Module, Vector)) else x for x in (a, b))
         return binary(op, a2, b2, ring, lambda _m: None)
+    if op == "*" and isinstance(a, Ideal) and isinstance(b, Module):  # I*M: f*m for f in I, m in M
+        return Module(ring, [Vector(ring, [f * x for x in m.entries]) for f in a.gens for m in b.gens], b.rank)
+    if op == "*" and isinstance(a, Module) and isinstance(b, Ideal):  # M*I: m*f for m in M, f in I
+        return Module(ring, [Vector(ring, [x * f for x in m.entries]) for m in a.gens for f in b.gens], a.rank)
     if isinstance(a, Module) or isinstance(b, Module):
         if op == "+" and all(isinstance(x, (Module, Vector, Ideal, Matrix)) for x in (a, b)):
             return _sum(to_module(a, ring), to_module(b, ring))

@@ -100,8 +100,19 @@ class Module:
 _COMPONENT: dict[int, tuple[PolyRing, Callable[[Term], tuple], bool]] = {}
 
 
+_BLOCKS: dict[int, tuple[PolyRing, tuple]] = {}
+
+
+def note_blocks(ring: PolyRing, blocks: tuple) -> None:
+    """Record the ordering blocks of a ring made outside :func:`mech.dsl.rings.make_ring` (a qring)."""
+    _BLOCKS[id(ring)] = (ring, tuple(blocks))
+
+
 def _blocks_of(ring: PolyRing) -> tuple:
     """The ordering blocks as written (with c/C) of a ring the language made (() if unknown)."""
+    hit = _BLOCKS.get(id(ring))
+    if hit is not None and hit[0] is ring:
+        return hit[1]
     from .rings import _ring_cache
     for key, poly in _ring_cache.items():
         if poly is ring:

@@ -135,21 +135,34 @@ def dim(ctx, M: Module) -> int:
 def homog(M: Module | Vector) -> int:
     """homog(M): 1 if M is homogeneous for some degrees of the components (each generator's terms of
     one degree, counting its component's degree), else 0."""
-    vecs = [M.terms()] if isinstance(M, Vector) else [g.terms() for g in M.nonzero()]
+    from .polynomials import _ring_weights
+    ws = _ring_weights(M.ring) or [1] * M.ring.nvars
+
+    def wdeg(e: tuple) -> int:
+        return sum(a * w for a, w in zip(e, ws))
+    vecs = [{(wdeg(e), i): c for (e, i), c in v.items()} for v in
+            ([M.terms()] if isinstance(M, Vector) else [g.terms() for g in M.nonzero()])]
     shift: dict[int, int] = {}
     todo = [v for v in vecs if v]
     while todo:
         v = next((w for w in todo if any(i in shift for _, i in w)), todo[0])
         todo.remove(v)
-        known: Optional[int] = next((sum(e) + shift[i] for e, i in v if i in shift), None)
+        known: Optional[int] = next((e + shift[i] for e, i in v if i in shift), None)
         if known is None:
             e, i = next(iter(v))
             shift[i] = 0
-            known = sum(e)
+            known = e
         for e, i in v:
             if i not in shift:
-                shift[i] = known - sum(e)
-            elif sum(e) + shift[i] != known:
+                shift[i] = known - e
+            elif e + shift[i] != known:
                 return 0
     return 1
 
+
+
+@command("transpose")
+def transpose(M: Module) -> Module:
+    """transpose(M): the module of the columns of the transposed matrix of M."""
+    cols = [g.padded(M.rank) for g in M.gens]
+    return Module(M.ring, [Vector(M.ring, [c[i] for c in cols]) for i in range(M.rank)], len(cols))
