@@ -138,6 +138,8 @@ class Declarations:
             std = v.is_std or len(v.gens) <= 1  # Singular marks one-generator ideals as standard bases
             if std != v.is_std:
                 v = Ideal(v.ring, v.gens, std)
+        elif isinstance(v, Module) and not v.is_std and len(v.gens) <= 1:  # as an ideal's
+            v = Module(v.ring, v.gens, v.rank, True)
         return v
 
     def _declare_ring(self, s: A.Decl) -> None:

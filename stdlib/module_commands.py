@@ -19,7 +19,15 @@ from ..kernel import Poly, PolyRing
 from ..kernel import modules as km
 
 
+def _plain(ring: PolyRing, what: str) -> None:
+    """Modules over a quotient ring (qring) are not supported: refuse rather than ignore the quotient."""
+    from ..dsl.qrings import quotient_ideal
+    if quotient_ideal(ring) is not None:
+        raise MechRuntimeError(f"{what} of a module over a qring is not supported")
+
+
 def _global(ring: PolyRing, what: str) -> None:
+    _plain(ring, what)
     if not ring.order.is_global:
         raise MechRuntimeError(f"{what} of a module in a local or mixed ordering is not supported")
 
@@ -62,6 +70,7 @@ def _normalized(ring: PolyRing, terms: dict, lead: Any) -> dict:
 
 def _basis(ring: PolyRing, rank: int, vecs: list[dict]) -> list[dict]:
     """The reduced standard basis (normalized, by increasing lead term) of the submodule of R^rank."""
+    _plain(ring, "a standard basis")
     key = kernel_key(ring)
     if not ring.order.is_global:
         basis = km.local_standard_basis(ring, rank, vecs, key)  # Singular lists it by decreasing lead
@@ -107,7 +116,7 @@ def freemodule(ctx, n: int) -> Module:
       → _[2]=gen(2)
     """
     ring = ctx.basering().poly
-    return Module(ring, [make_gen(ring, i) for i in range(1, n + 1)], n, is_std=True)
+    return Module(ring, [make_gen(ring, i) for i in range(1, n + 1)], n)
 
 
 @command("vector")
@@ -213,6 +222,7 @@ def syz(M: Ideal | Module) -> Module:
     """
     m = M if isinstance(M, Module) else to_module(M, M.ring)
     ring = m.ring
+    _plain(ring, "syz")
     rel = km.syzygies(global_twin(ring), m.rank, _vecs(m))
     basis = _basis(ring, len(m.gens), rel)
     return _module(ring, basis, len(m.gens), True)
@@ -304,6 +314,7 @@ def modulo(h1: Ideal | Module, h2: Ideal | Module) -> Module:
     a = h1 if isinstance(h1, Module) else to_module(h1, ring)
     b = h2 if isinstance(h2, Module) else to_module(h2, ring)
     rank, k = max(a.rank, b.rank), len(a.gens)
+    _plain(ring, "modulo")
     rel = km.syzygies(global_twin(ring), rank, _vecs(a) + _vecs(b))
     kept = [{t: c for t, c in s.items() if t[1] < k} for s in rel]
     return _module(ring, _basis(ring, k, kept), k, True)

@@ -15,11 +15,12 @@ from ..dsl.values import Ideal
 from ..dsl.values_modules import Module, Vector, lead_term
 from ..kernel import Poly, PolyRing
 from ..kernel import modules as km
-from .module_commands import _basis, _global, _module, _vecs, global_twin
+from .module_commands import _basis, _global, _module, _plain, _vecs, global_twin
 
 
 def _first_parts(ring: PolyRing, rank: int, gens: list[dict], k: int) -> list[dict]:
     """The first k entries of the syzygies of gens."""
+    _plain(ring, "syzygies")
     return [{t: c for t, c in s.items() if t[1] < k} for s in km.syzygies(global_twin(ring), rank, gens)]
 
 
@@ -48,7 +49,7 @@ def intersect(M: Module, N: Module, *more: Module) -> Module:
 
 
 @command("quotient")
-def quotient(M: Module, N: Module | Poly) -> Module | Ideal:
+def quotient(M: Module, N: Module | Poly | Ideal) -> Module | Ideal:
     """quotient(M, N): the ideal {f : f*N inside M}; quotient(M, p): the module {v : p*v inside M}.
 
     Example:
@@ -58,6 +59,9 @@ def quotient(M: Module, N: Module | Poly) -> Module | Ideal:
     """
     ring = M.ring
     rank = M.rank
+    if isinstance(N, Ideal):  # {v : I*v inside M}: the intersection over I's generators
+        parts = [quotient(M, f) for f in N.gens if not f.is_zero()]
+        return intersect(*parts) if len(parts) > 1 else parts[0] if parts else Module(ring, [], rank)
     if isinstance(N, Poly):
         scaled = [{(e, i): c for e, c in N.terms.items()} for i in range(rank)]
         parts = _first_parts(ring, rank, scaled + _vecs(M), rank)  # coefficient j of p*e_j: entry j
