@@ -267,6 +267,9 @@ def liftstd(ctx, m_node: A.Expr, t_node: A.Expr, *rest: A.Expr) -> Ideal | Modul
       print(matrix(S) - matrix(ideal(x2-y, xy))*T);
       → 0,0,0
     """
+    kinds = tuple(isinstance(r, A.StrLit) for r in rest)
+    if kinds not in ((), (False,), (True,), (False, True)):
+        raise MechRuntimeError("liftstd with a module to work relative to (liftstd(M, T, alg, N)) is not supported")
     v = ctx.eval(m_node)
     ring = ctx.basering().poly
     m = to_module(v, ring)
