@@ -187,7 +187,7 @@ class Assignment:
 def _set_module_entry(container: Vector | Module, i: int, value: Any, last: bool, deeper: Any) -> Vector | Module:
     """``v[i] = p`` (the i-th entry of a vector) and ``M[i] = v`` (the i-th generator of a module;
     ``M[i][j] = p`` sets an entry of it)."""
-    from .values_modules import to_vector
+    from .convert_modules import to_vector
     ring = container.ring
     if isinstance(container, Vector):
         if not last:

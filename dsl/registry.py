@@ -38,7 +38,8 @@ from .errors import MechNameError, MechTypeError
 from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring,
                           to_ideal, to_intvec, to_matrix, to_number, to_poly, typeof)
 from ..kernel import Poly, PolyRing
-from .values_modules import Module, Vector, to_module, to_vector
+from .convert_modules import to_module, to_vector
+from .values_modules import Module, Vector
 
 #: Library names ``LIB "...";`` accepts; a command's ``lib=`` adds its library.
 LIBRARIES: set[str] = {"primdec.lib", "sing.lib", "elim.lib", "poly.lib", "polylib.lib", "general.lib",

@@ -15,6 +15,7 @@ from ..kernel import GF, QQ, Block, MonomialOrder, PolyRing
 from . import ast as A
 from .boundary import convert_exception
 from .errors import MechRuntimeError
+from .values_modules import note_blocks
 from .values import IntVec, OrderBlock, Ring
 
 Evaluate = Callable[[A.Expr], Any]
@@ -224,6 +225,7 @@ def make_ring(char: int, params: tuple[str, ...] | list[str], names: list[str], 
         kblocks = [k for b in blocks if b.kind not in ("c", "C") for k in _kernel_blocks(b)]
         order = MonomialOrder(kblocks, len(names))
         poly = _ring_cache[key] = PolyRing(field, names, order)
+        note_blocks(poly, tuple(blocks))
     return Ring(poly, params, tuple(blocks))
 
 

@@ -104,20 +104,14 @@ _BLOCKS: dict[int, tuple[PolyRing, tuple]] = {}
 
 
 def note_blocks(ring: PolyRing, blocks: tuple) -> None:
-    """Record the ordering blocks of a ring made outside :func:`mech.dsl.rings.make_ring` (a qring)."""
+    """Record the ordering blocks as written of a kernel ring (mech.dsl.rings and qrings do)."""
     _BLOCKS[id(ring)] = (ring, tuple(blocks))
 
 
 def _blocks_of(ring: PolyRing) -> tuple:
     """The ordering blocks as written (with c/C) of a ring the language made (() if unknown)."""
     hit = _BLOCKS.get(id(ring))
-    if hit is not None and hit[0] is ring:
-        return hit[1]
-    from .rings import _ring_cache
-    for key, poly in _ring_cache.items():
-        if poly is ring:
-            return key[3]
-    return ()
+    return hit[1] if hit is not None and hit[0] is ring else ()
 
 
 def module_order(ring: PolyRing) -> tuple[Callable[[Term], tuple], bool]:
@@ -136,8 +130,8 @@ def module_order(ring: PolyRing) -> tuple[Callable[[Term], tuple], bool]:
     elif pos == 0:
         key = lambda t: (sign * t[1], mono(t[0]))  # noqa: E731
     else:  # between blocks: the blocks before it decide first
-        from .rings import _kernel_blocks
-        before = [k for b in blocks[:pos] for k in _kernel_blocks(b)]
+        from ..kernel.order import Block
+        before = [Block(b.kind, b.size, b.weights) for b in blocks[:pos]]
         n = sum(b.size for b in before if b.kind != "a")
         pre = MonomialOrder(before, n).key
         key = lambda t: (pre(t[0][:n]), sign * t[1], mono(t[0]))  # noqa: E731
@@ -166,8 +160,7 @@ def lead_term(v: Vector) -> Optional[Term]:
 def gen(ring: PolyRing, i: int) -> Vector:
     """The i-th canonical generator of the free module."""
     if i < 0:
-        from .errors import MechRuntimeError
-        raise MechRuntimeError(f"gen({i}): the index must be positive")
+        raise ValueError(f"gen({i}): the index must be positive")
     return Vector(ring, [ring.zero()] * (i - 1) + [ring.one()] if i > 0 else [])
 
 
@@ -185,64 +178,10 @@ def module_columns(m: Module, nrows: Optional[int] = None) -> list[list[Poly]]:
     return [g.padded(n) for g in m.gens]
 
 
-def to_vector(v: Any, ring: Optional[PolyRing]) -> Vector:
-    """Singular's conversions to vector: a vector, or a poly/number/int p as p*gen(1)."""
-    from .values import ExprList, _cannot, _check_ring, _need_ring, to_poly
-    ring = _need_ring(ring, "vector")
-    if isinstance(v, ExprList) and len(v.items) == 1:
-        v = v.items[0]
-    if isinstance(v, Vector):
-        _check_ring(v, ring)
-        return v
-    if isinstance(v, ExprList):  # vector v = p, q;: Singular sums the values (vector(p) + vector(q))
-        out: list[Poly] = []
-        for x in v.items:
-            w = to_vector(x, ring)
-            out = [a + b for a, b in zip(w.padded(max(len(out), w.nrows)),
-                                        out + [ring.zero()] * (w.nrows - len(out)))]
-        return Vector(ring, out)
-    try:
-        return from_poly(to_poly(v, ring))
-    except Exception:
-        raise _cannot(v, "vector") from None
 
-
-def to_module(v: Any, ring: Optional[PolyRing]) -> Module:
-    """Singular's conversions to module: vectors and polys (p as p*gen(1)) one generator each, an
-    ideal's generators, a matrix's columns (rank: its rows), a module."""
-    from .values import ExprList, Ideal, List, Matrix, _cannot, _check_ring, _need_ring
-    ring = _need_ring(ring, "module")
-    if isinstance(v, Module):
-        _check_ring(v, ring)
-        return v
-    if isinstance(v, Matrix):
-        _check_ring(v, ring)
-        return Module(ring, [Vector(ring, [v.get(i, j) for i in range(1, v.nrows + 1)])
-                             for j in range(1, v.ncols + 1)], v.nrows)
-    if isinstance(v, Ideal):
-        _check_ring(v, ring)
-        return Module(ring, [from_poly(g) for g in v.gens])
-    if isinstance(v, (ExprList, List)):
-        gens: list[Vector] = []
-        rank = 0
-        for x in v.items:
-            if isinstance(x, (Module, Ideal, Matrix)):
-                m = to_module(x, ring)
-                gens.extend(m.gens)
-                rank = max(rank, m.rank)
-            else:
-                gens.append(to_vector(x, ring))
-        return Module(ring, gens, rank)
-    try:
-        return Module(ring, [to_vector(v, ring)])
-    except Exception:
-        raise _cannot(v, "module") from None
-
-
-def module_matrix(m: Module | Vector) -> Any:
-    """matrix(m): the generators as columns (a vector: one column)."""
-    from .values import Matrix
+def matrix_entries(m: "Module | Vector") -> tuple[int, int, list[Poly]]:
+    """(rows, columns, entries row by row) of matrix(m): the generators as columns."""
     if isinstance(m, Vector):
         m = Module(m.ring, [m])
     cols = module_columns(m)
-    return Matrix(m.ring, m.rank, len(cols), [cols[j][i] for i in range(m.rank) for j in range(len(cols))])
+    return m.rank, len(cols), [cols[j][i] for i in range(m.rank) for j in range(len(cols))]

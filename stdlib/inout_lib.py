@@ -293,7 +293,7 @@ def _show_lines(ctx, x: Any) -> list[str]:
     if isinstance(x, Matrix):
         return [f"// matrix, {x.nrows}x{x.ncols}", print_form(x)]
     from ..dsl.values_modules import Module, Vector
-    from ..dsl.printing_modules import bracket_str
+    from ..dsl.printing import bracket_str
     if isinstance(x, Vector):
         return ["// vector", bracket_str(x)]
     if isinstance(x, Module):

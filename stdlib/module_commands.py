@@ -13,8 +13,8 @@ from ..dsl import ast as A
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
 from ..dsl.values import Ideal, IntVec, Matrix, to_matrix, to_poly
-from ..dsl.values_modules import (Module, Vector, gen as make_gen, kernel_key, lead_term, to_module,
-                                  to_vector)
+from ..dsl.convert_modules import to_module, to_vector
+from ..dsl.values_modules import Module, Vector, gen as make_gen, kernel_key, lead_term
 from ..kernel import Poly, PolyRing
 from ..kernel import modules as km
 

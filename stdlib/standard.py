@@ -12,7 +12,8 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.qrings import quotient_of, with_quotient
 from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
-from ..dsl.values_modules import Module, to_module
+from ..dsl.convert_modules import to_module
+from ..dsl.values_modules import Module
 from ..kernel import Poly
 from ..kernel.dimension import krull_dim
 from ..kernel.engines import AUTO, ENGINES, check_engine, list_engines
