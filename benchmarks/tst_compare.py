@@ -2,7 +2,7 @@
 
 Both outputs are parsed into items: text lines, ideals (``name[i]=...`` lines), matrices
 (``name[i,j]=...``) and lists (``[i]:`` headers with their elements indented by three).  Items are
-compared in order; ideals whose text differs are compared as ideals, lists of ideal-valued elements as
+compared in order; ideals whose text differs are compared as ideals (modules as modules), lists of ideal-valued elements as
 sets, primary decompositions (lists of [Q, P] pairs) up to the choice of embedded components, and
 factorizations (an ideal of factors with their multiplicities) up to order and constant factors.  The
 algebraic questions this raises are answered by an :class:`Oracle` (Singular, in the runner).
@@ -368,8 +368,9 @@ def check_script(questions: list[Question]) -> str:
                 a_def = " ".join(f"A@{k} = intersect(A@{k}, ideal({', '.join(g)}));" for g in a[1:])
                 b_def = " ".join(f"B@{k} = intersect(B@{k}, ideal({', '.join(g)}));" for g in b[1:])
                 out.append(f"ideal A@{k} = {', '.join(a[0])}; {a_def} ideal B@{k} = {', '.join(b[0])}; {b_def}")
-            else:
-                out.append(f"ideal A@{k} = {', '.join(a)}; ideal B@{k} = {', '.join(b)};")
+            else:  # generators of submodules (vectors) are compared as modules
+                typ = "module" if any("gen(" in g or g.startswith("[") for g in a + b) else "ideal"
+                out.append(f"{typ} A@{k} = {', '.join(a)}; {typ} B@{k} = {', '.join(b)};")
             test = f"size(reduce(A@{k}, std(B@{k}))) == 0"
             if kind != "sub":
                 test = f"({test}) && (size(reduce(B@{k}, std(A@{k}))) == 0)"

@@ -124,8 +124,8 @@ _WORDS = {
     "noncommutative ring": "nc_algebra ncalgebra plural opposite oppose envelope twostd bracket Weyl makeWeyl "
                            "freeAlgebra makeLetterplaceRing letplaceGBasis superCommutative exteriorAlgebra "
                            "rightstd isCommutative ncdetection",
-    "modules, vectors, resolutions": "module vector resolution smatrix res mres sres lres nres hres fres minres "
-                                     "syz betti freemodule gen modulo prune mpresmat kres Ext Ext_R Tor",
+    "resolutions and homological algebra": "resolution smatrix res mres sres lres nres hres fres minres betti "
+                                           "prune mpresmat kres Ext Ext_R Tor",
     "links and files": "link open close read write dump getdump status fprintf waitall waitfirst monitor",
     "newstruct, bigintmat, polyhedra and other special types": "newstruct bigintmat cone fan polytope polymake "
                                                                "pyobject reference shared cring blackbox package",
@@ -137,7 +137,6 @@ _PREFIX_REASON = {"tst_": "tst.lib helper", "nc_": "noncommutative ring",
                   "gfan": "newstruct, bigintmat, polyhedra and other special types"}
 _PREFIXES = tuple(_PREFIX_REASON)
 _PATTERNS = [("protocol output (option(prot))", re.compile(r"\boption\s*\(\s*prot\b")),
-             ("vector literal [..]", re.compile(r"(?:\A|[=,(+\-*;{}])[ \t\n]*\[")),
              ("packages (::)", re.compile(r"\w::")),
              ("links and files: <", re.compile(r"(?:\A|[;{}])\s*<\s*\""))]
 _IDENT = re.compile(r"(?<![\w@])[A-Za-z_]\w*")

@@ -14,6 +14,7 @@ from .minpoly import set_minpoly
 from .noether import set_noether
 from .printing import set_short
 from .rings import indexed_names
+from .values_modules import Module, Vector
 from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, convert, ring_of, to_ideal, to_int, to_matrix,
                      to_poly, typeof)
 
@@ -144,6 +145,8 @@ class Assignment:
             gens += [container.ring.zero()] * (i - len(gens))
             gens[i - 1] = to_poly(value, container.ring if ring is None else ring)
             return Ideal(container.ring, gens)
+        if isinstance(container, (Vector, Module)):
+            return _set_module_entry(container, i, value, last, lambda v: self._set_in(v, chain, k + 1, value))
         if isinstance(container, List):
             items = list(container.items)
             items += [NONE] * (i - len(items))
@@ -184,3 +187,19 @@ class Assignment:
         if type(cur) is not int:
             raise MechTypeError(f"++ and -- need an int, not {typeof(cur)}")
         self.assign(s.target, cur + s.delta)
+
+
+def _set_module_entry(container: Vector | Module, i: int, value: Any, last: bool, deeper: Any) -> Vector | Module:
+    """``v[i] = p`` (the i-th entry of a vector) and ``M[i] = v`` (the i-th generator of a module;
+    ``M[i][j] = p`` sets an entry of it)."""
+    from .convert_modules import to_vector
+    ring = container.ring
+    if isinstance(container, Vector):
+        if not last:
+            raise MechRuntimeError("cannot index into a vector's entry")
+        ents = container.padded(max(i, container.nrows))
+        ents[i - 1] = to_poly(value, ring)
+        return Vector(ring, ents)
+    gens = list(container.gens) + [Vector(ring, ())] * (i - len(container.gens))
+    gens[i - 1] = to_vector(value, ring) if last else deeper(gens[i - 1])
+    return Module(ring, gens, container.rank)

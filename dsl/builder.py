@@ -91,6 +91,10 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
     def type_call(self, meta, c):
         return A.TypeCall(c[0], _list(c[1]), pos=meta_pos(meta))
 
+    @v_args(meta=True)
+    def vector_lit(self, meta, c):  # [p1, p2, ...]: the vector with these entries
+        return A.TypeCall("vector", _list(c[0]), pos=meta_pos(meta))
+
     def proc_cast(self, c):  # proc(L[1]): the procedure the value holds, called by a following (...)
         return c[0]
 

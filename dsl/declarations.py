@@ -9,10 +9,11 @@ from .errors import MechRuntimeError, MechTypeError
 from .rings import build_ring, default_ring, indexed_names
 from .scopes import RING_TYPES
 from .types import find_type
+from .values_modules import Module, Vector
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Ring, convert, to_int, to_matrix, typeof
 
 #: Singular's types mech does not provide.
-UNSUPPORTED_TYPES = {"vector", "module", "resolution", "link"}
+UNSUPPORTED_TYPES = {"resolution", "link"}
 
 
 #: The types whose redeclaration ``T x = ...x...;`` reads the new, default x, as Singular does.
@@ -82,7 +83,7 @@ class Declarations:
                 v = Matrix(ring, *(dims or (1, 1)))
             else:
                 # as Singular: a matrix value keeps its size, other values fill [rows][cols] (default 1 x 1)
-                keeps = isinstance(v, Matrix) or (typeof(v) == "intmat" and not dims)
+                keeps = isinstance(v, (Matrix, Module, Vector)) or (typeof(v) == "intmat" and not dims)
                 v = to_matrix(v, ring) if keeps else to_matrix(v, ring, *(dims or (1, 1)))
         elif typ == "intmat":
             from .intmat import to_intmat
@@ -121,6 +122,10 @@ class Declarations:
             return ring.zero()
         if typ == "ideal":
             return Ideal(ring, [], is_std=True)
+        if typ == "vector":
+            return Vector(ring, ())
+        if typ == "module":
+            return Module(ring, (), is_std=True)
         raise MechTypeError(f"type '{typ}' is not supported yet")
 
     def _converted(self, v: Any, typ: str, kring: Any) -> Any:
@@ -133,6 +138,8 @@ class Declarations:
             std = v.is_std or len(v.gens) <= 1  # Singular marks one-generator ideals as standard bases
             if std != v.is_std:
                 v = Ideal(v.ring, v.gens, std)
+        elif isinstance(v, Module) and not v.is_std and len(v.gens) <= 1:  # as an ideal's
+            v = Module(v.ring, v.gens, v.rank, True)
         return v
 
     def _declare_ring(self, s: A.Decl) -> None:

@@ -13,6 +13,7 @@ from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
 from .intmat import IntMat
 from .values import NONE, ExprList, Ideal, IntVec, LibCommand, List, Map, Matrix, Proc, to_int, typeof
+from .values_modules import Module, Vector
 
 
 class Expressions:
@@ -184,8 +185,14 @@ class Expressions:
                 return seq[i - 1]
             if i > len(seq) or i < 1:
                 return base.ring.zero()
-        elif isinstance(base, Matrix):
-            raise MechRuntimeError("a matrix entry is M[i,j]")
+        elif isinstance(base, Vector):
+            return base.get(i)
+        elif isinstance(base, Module):
+            seq, what = base.gens, "module"
+        elif isinstance(base, Matrix):  # as Singular: M[i] is the i-th column, a vector
+            if not 1 <= i <= base.ncols:
+                raise MechRuntimeError(f"index {i} out of range (the matrix has {base.ncols} columns)")
+            return Vector(base.ring, [base.get(r, i) for r in range(1, base.nrows + 1)])
         else:
             raise MechTypeError(f"a {typeof(base)} cannot be indexed")
         if not 1 <= i <= len(seq):

@@ -7,6 +7,7 @@ from typing import Any, Callable, Optional
 from ..kernel import Poly
 from . import ast as A
 from .errors import MechRuntimeError, MechTypeError
+from .values_modules import Module, Vector
 from .values import ExprList, Ideal, List, Map, Matrix, Number
 
 
@@ -71,6 +72,10 @@ def map_value(v: Any, images: tuple | list, target: Any, how: Optional[Callable]
         return Matrix(target, v.nrows, v.ncols, each(v.entries))
     if isinstance(v, Map):
         return Map(v.source, target, tuple(each(v.images)))
+    if isinstance(v, Vector):
+        return Vector(target, each(v.entries))
+    if isinstance(v, Module):
+        return Module(target, [Vector(target, each(g.entries)) for g in v.gens], v.rank)
     if isinstance(v, List):
         return List([map_value(x, images, target, how) for x in v.items])
     if isinstance(v, ExprList):

@@ -13,6 +13,8 @@ from ..kernel import Poly, PolyRing
 from .errors import MechRuntimeError, MechTypeError
 from .intmat import IntMat, euclid_div, intmat_op
 from .minpoly import compare_params
+from .convert_modules import to_module, to_vector
+from .values_modules import Module, Vector, matrix_entries
 from .values import (BigInt, ExprList, Ideal, IntVec, List, Matrix, Number, Ring, same_value, to_ideal, to_number,
                      to_poly, typeof)
 
@@ -224,6 +226,8 @@ def binary(op: str, a: Any, b: Any, ring: Optional[PolyRing], warn: Warn) -> Any
             return IntVec([a] * b)
     if op == "^":
         return power(a, b)
+    if isinstance(a, (Vector, Module)) or isinstance(b, (Vector, Module)):
+        return module_binary(op, a, b, ring)
     if isinstance(a, IntMat) or isinstance(b, IntMat):
         return intmat_op(op, a, b)
     if isinstance(a, (IntVec,)) or isinstance(b, IntVec):
@@ -336,6 +340,8 @@ def negate(a: Any) -> Any:
         return Matrix(a.ring, a.nrows, a.ncols, [-x for x in a.entries])
     if isinstance(a, IntVec):
         return IntVec([-x for x in a.values])
+    if isinstance(a, (Vector, Module)):
+        return module_negate(a)
     if isinstance(a, IntMat):
         return IntMat(a.nrows, a.ncols, [-x for x in a.values])
     raise MechTypeError(f"unary minus is not defined for {typeof(a)}")
@@ -383,7 +389,7 @@ def compare(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> int:
             x, y = _poly_cmp(p, q), 0
     elif op in ("==", "!=") and isinstance(a, IntMat) and isinstance(b, IntMat):
         return int((a == b) == (op == "=="))
-    elif op in ("==", "!=") and type(a) is type(b) and isinstance(a, (Ideal, Matrix, IntVec, List)):
+    elif op in ("==", "!=") and type(a) is type(b) and isinstance(a, (Ideal, Matrix, IntVec, List, Vector, Module)):
         return int(same_value(a, b) == (op == "=="))
     elif isinstance(a, IntVec) and isinstance(b, IntVec):
         x, y = a.values, b.values
@@ -428,3 +434,67 @@ def _poly_cmp(p: Poly, q: Poly) -> int:
         return 1 if field.symmetric(d) > 0 else -1
     return 1 if d > 0 else -1
 
+
+# ---------------------------------------------------------------- vectors and modules
+def _is_scalar(v: Any) -> bool:
+    return isinstance(v, (int, Number, Poly)) and not isinstance(v, bool)
+
+
+def _add(v: Vector, w: Vector, sign: int) -> Vector:
+    n = max(v.nrows, w.nrows)
+    return Vector(v.ring, [a + b if sign > 0 else a - b for a, b in zip(v.padded(n), w.padded(n))])
+
+
+def module_binary(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
+    """``a op b`` where a or b is a vector or a module."""
+    ring = getattr(a, "ring", None) or getattr(b, "ring", None) or ring
+    if op == "*" and isinstance(a, Ideal) and isinstance(b, Vector):  # I*v: the module of the g*v
+        return Module(ring, [Vector(ring, [g * x for x in b.entries]) for g in a.gens])
+    if op == "*" and isinstance(a, Vector) and isinstance(b, Ideal):
+        return module_binary(op, b, a, ring)
+    if op in ("+", "-") and isinstance(a, Matrix):  # as matrices (Singular; M + A is a module sum)
+        a2, b2 = (Matrix(ring, *matrix_entries(x)) if isinstance(x, (Module, Vector)) else x for x in (a, b))
+        return binary(op, a2, b2, ring, lambda _m: None)
+    if op == "*" and isinstance(a, Ideal) and isinstance(b, Module):  # I*M: f*m for f in I, m in M
+        return Module(ring, [Vector(ring, [f * x for x in m.entries]) for f in a.gens for m in b.gens], b.rank)
+    if op == "*" and isinstance(a, Module) and isinstance(b, Ideal):  # M*I: m*f for m in M, f in I
+        return Module(ring, [Vector(ring, [x * f for x in m.entries]) for m in a.gens for f in b.gens], a.rank)
+    if isinstance(a, Module) or isinstance(b, Module):
+        if op == "+" and all(isinstance(x, (Module, Vector, Ideal, Matrix)) for x in (a, b)):
+            return _sum(to_module(a, ring), to_module(b, ring))
+        if op == "*" and isinstance(a, Module) and _is_scalar(b):
+            p = to_poly(b, ring)
+            return Module(ring, [Vector(ring, [x * p for x in g.entries]) for g in a.gens], a.rank)
+        if op == "*" and isinstance(b, Module) and _is_scalar(a):
+            return module_binary("*", b, a, ring)
+        if op == "*" and isinstance(a, Matrix) and isinstance(b, Module):
+                return binary("*", a, Matrix(ring, *matrix_entries(b)), ring, lambda _m: None)
+        raise _bad(op, a, b)
+    if op in ("+", "-") and (isinstance(a, Vector) or _is_scalar(a)) and (isinstance(b, Vector) or _is_scalar(b)):
+        return _add(to_vector(a, ring), to_vector(b, ring), 1 if op == "+" else -1)
+    if op == "*" and _is_scalar(a) and isinstance(b, Vector):
+        p = to_poly(a, ring)
+        return Vector(ring, [p * x for x in b.entries])
+    if op == "*" and isinstance(a, Vector) and _is_scalar(b):
+        return module_binary("*", b, a, ring)
+    if op in ("/", "div") and isinstance(a, Vector) and _is_scalar(b):
+        p = to_poly(b, ring)
+        return Vector(ring, [poly_quotient(x, p) for x in a.entries])
+    if op == "*" and isinstance(a, Matrix) and isinstance(b, Vector):
+        return binary("*", a, Matrix(ring, *matrix_entries(Module(ring, [b], a.ncols))), ring, lambda _m: None)
+    raise _bad(op, a, b)
+
+
+def _sum(a: Module, b: Module) -> Module:
+    """M + N: the generators of both, without zeros and repeated generators (as Singular)."""
+    gens: list[Vector] = []
+    for g in a.gens + b.gens:
+        if not g.is_zero() and g not in gens:
+            gens.append(g)
+    return Module(a.ring, gens, max(a.rank, b.rank))
+
+
+def module_negate(a: Vector | Module) -> Vector | Module:
+    if isinstance(a, Vector):
+        return Vector(a.ring, [-x for x in a.entries])
+    return Module(a.ring, [Vector(a.ring, [-x for x in g.entries]) for g in a.gens], a.rank)

@@ -12,6 +12,7 @@ from typing import Any, Optional
 from ..kernel import Poly, PolyRing
 from .qrings import quotient_ideal
 from .values import NONE, ExprList, Ideal, IntVec, List, Map, Matrix, NoneValue, Number, Proc, Ring
+from .values_modules import Module, Vector, module_columns, module_order, sorted_terms
 
 _short_cache: dict[int, tuple[PolyRing, bool]] = {}
 
@@ -114,6 +115,8 @@ def value_str(v: Any) -> str:
         return ",".join(poly_str(g) for g in v.entries)
     if isinstance(v, Map):
         return ",".join(poly_str(g) for g in v.images)
+    if isinstance(v, (Vector, Module)):
+        return vector_str(v) if isinstance(v, Vector) else module_string(v)
     if isinstance(v, IntVec):
         return ",".join(str(x) for x in v.values)
     if isinstance(v, (List, ExprList)):
@@ -144,6 +147,8 @@ def render(v: Any, name: Optional[str] = None) -> str:
                          for i in range(1, v.nrows + 1) for j in range(1, v.ncols + 1))
     if isinstance(v, List):
         return _render_list(v, "")
+    if isinstance(v, Module):
+        return module_render(v, name)
     if isinstance(v, Ring):
         return ring_str(v)
     if isinstance(v, Proc):
@@ -195,6 +200,8 @@ def print_form(v: Any, name: str = "_") -> str:
         return ",\n".join(poly_str(g) for g in v.gens)
     if isinstance(v, IntVec):
         return ",\n".join(str(x) for x in v.values) + " "
+    if isinstance(v, (Vector, Module)):
+        return bracket_str(v) if isinstance(v, Vector) else module_print(v, name)
     if hasattr(v, "print_form"):  # intmat
         return v.print_form()
     if isinstance(v, Ring):
@@ -277,12 +284,12 @@ def ring_str(r: Ring) -> str:
             continue
         size = b.size
         lines.append("//                  : names    " + " ".join(r.names[start:start + size]))
-        if b.kind == "M":
+        width = len(r.names[start + size - 1])  # as Singular: weights right-aligned in the width of
+        if b.kind == "M":                         # the block's last name
             for i in range(size):
                 row = b.weights[i * size:(i + 1) * size]
-                lines.append("//                  : weights  " + " ".join(str(w) for w in row))
-        elif b.weights:  # as Singular: each weight right-aligned in the width of the block's last name
-            width = len(r.names[start + size - 1])
+                lines.append("//                  : weights " + "".join(f" {w:>{width}}" for w in row))
+        elif b.weights:
             lines.append("//                  : weights " + "".join(f" {w:>{width}}" for w in b.weights))
         if b.kind != "a":
             start += size
@@ -294,3 +301,50 @@ def ring_str(r: Ring) -> str:
 
 def proc_str(p: Proc) -> str:
     return f"// libname  : {p.lib}\n// procname : {p.name}\n// type     : singular"
+
+
+# ---------------------------------------------------------------- vectors and modules
+def _term_str(v: Vector, e: tuple, c: object, comp: int) -> str:
+    s = poly_str(v.ring.monomial(e, c))
+    if not any(e) and s in ("1", "-1"):
+        return s[:-1] + f"gen({comp + 1})"
+    return s + f"*gen({comp + 1})"
+
+
+def gen_str(v: Vector) -> str:
+    """``x*gen(1)+y2*gen(3)``: the terms by decreasing module ordering."""
+    if v.is_zero():
+        return "0"
+    out: list[str] = []
+    for (e, i), c in sorted_terms(v):
+        s = _term_str(v, e, c, i)
+        if out and not s.startswith("-"):
+            out.append("+")
+        out.append(s)
+    return "".join(out)
+
+
+def bracket_str(v: Vector) -> str:
+    """``[f1,f2,...]`` up to the last nonzero entry."""
+    return "[" + ",".join(poly_str(p) for p in v.entries) + "]" if not v.is_zero() else "0"
+
+
+def vector_str(v: Vector) -> str:
+    """A vector as Singular prints it in its ring."""
+    return bracket_str(v) if module_order(v.ring)[1] else gen_str(v)
+
+
+def module_render(m: Module, name: Optional[str] = None) -> str:
+    n = name or "_"
+    return "\n".join(f"{n}[{i}]={vector_str(g)}" for i, g in enumerate(m.gens, 1))
+
+
+def module_string(m: Module) -> str:
+    return ",".join(vector_str(g) for g in m.gens)
+
+
+def module_print(m: Module, name: str = "_") -> str:
+    """``print(m)``: the matrix whose columns are the generators."""
+    cols = module_columns(m)
+    rows = [[poly_str(cols[j][i]) for j in range(len(cols))] for i in range(m.rank)]
+    return _matrix_rows(rows, name)

@@ -47,6 +47,8 @@ def make_qring(base: Ring, ideal: Any) -> Ring:
     if q.is_zero_ring:
         raise MechRuntimeError("qring: the ideal is the whole ring (the quotient is the zero ring)")
     _QUOTIENTS[id(ring)] = (ring, q, [Poly(ring, g.terms) for g in gens])
+    from .values_modules import note_blocks
+    note_blocks(ring, base.blocks)
     return Ring(ring, base.params, base.blocks)
 
 

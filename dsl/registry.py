@@ -38,6 +38,8 @@ from .errors import MechNameError, MechTypeError
 from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring,
                           to_ideal, to_intvec, to_matrix, to_number, to_poly, typeof)
 from ..kernel import Poly, PolyRing
+from .convert_modules import to_module, to_vector
+from .values_modules import Module, Vector
 
 #: Library names ``LIB "...";`` accepts; a command's ``lib=`` adds its library.
 LIBRARIES: set[str] = {"primdec.lib", "sing.lib", "elim.lib", "poly.lib", "polylib.lib", "general.lib",
@@ -152,7 +154,8 @@ def operator(symbol: str, dialect: str) -> Callable[[Callable], Callable]:
 
 # ---------------------------------------------------------------- argument types
 _SPEC_NAMES = {int: "int", str: "string", Number: "number", Poly: "poly", Ideal: "ideal", Matrix: "matrix",
-               IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc"}
+               IntVec: "intvec", List: "list", Ring: "ring", Map: "map", Proc: "proc", Vector: "vector",
+               Module: "module"}
 
 
 def _spec_name(spec: Optional[tuple]) -> str:
@@ -203,6 +206,8 @@ _COERCE: dict[type, tuple[tuple, Callable[[Any, Optional[PolyRing]], Any]]] = {
     Ideal: ((int, Number, Poly), to_ideal),
     Matrix: ((Ideal,), to_matrix),
     IntVec: ((int,), lambda v, r: to_intvec(v)),
+    Module: ((Ideal, Matrix, Vector), to_module),
+    Vector: ((int, Number, Poly), to_vector),
 }
 
 

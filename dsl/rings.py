@@ -15,6 +15,7 @@ from ..kernel import GF, QQ, Block, MonomialOrder, PolyRing
 from . import ast as A
 from .boundary import convert_exception
 from .errors import MechRuntimeError
+from .values_modules import note_blocks
 from .values import IntVec, OrderBlock, Ring
 
 Evaluate = Callable[[A.Expr], Any]
@@ -168,7 +169,10 @@ def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
                 args = args[:nvars - covered]
                 if not args:
                     continue
-            blocks.append(OrderBlock(kind, len(args), tuple(args)))
+            if kind in ("wp", "Wp") and all(w == 1 for w in args):  # as Singular: wp(1,..,1) is dp
+                blocks.append(OrderBlock(kind.replace("w", "d").replace("W", "D"), len(args)))
+            else:
+                blocks.append(OrderBlock(kind, len(args), tuple(args)))
         elif kind == "M":
             n = math.isqrt(len(args or []))
             if not args or n * n != len(args):
@@ -194,7 +198,21 @@ def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
         raise MechRuntimeError(f"the ordering covers {covered} variables, the ring has {nvars}")
     if not any(b.kind in ("c", "C") for b in blocks):
         blocks.append(OrderBlock("C"))
-    return blocks
+    return _merge_lp(blocks)
+
+
+def _merge_lp(blocks: list[OrderBlock]) -> list[OrderBlock]:
+    """As Singular: a degree block of one variable before an lp block is lp, and adjacent lp blocks
+    are one ((dp(1),lp(2)) is lp(3)): the same ordering."""
+    out: list[OrderBlock] = []
+    for k, b in enumerate(blocks):
+        nxt = blocks[k + 1] if k + 1 < len(blocks) else None
+        if b.kind in ("dp", "Dp", "wp", "Wp") and b.size == 1 and nxt is not None and nxt.kind == "lp":
+            b = OrderBlock("lp", 1)
+        if b.kind == "lp" and out and out[-1].kind == "lp":
+            b = OrderBlock("lp", out.pop().size + b.size)
+        out.append(b)
+    return out
 
 
 def make_ring(char: int, params: tuple[str, ...] | list[str], names: list[str], blocks: list[OrderBlock]) -> Ring:
@@ -207,6 +225,7 @@ def make_ring(char: int, params: tuple[str, ...] | list[str], names: list[str], 
         kblocks = [k for b in blocks if b.kind not in ("c", "C") for k in _kernel_blocks(b)]
         order = MonomialOrder(kblocks, len(names))
         poly = _ring_cache[key] = PolyRing(field, names, order)
+        note_blocks(poly, tuple(blocks))
     return Ring(poly, params, tuple(blocks))
 
 

@@ -16,7 +16,7 @@ from .errors import MechNameError, Source
 from .values import Proc, Ring, is_ring_dependent, typeof
 
 #: The types whose variables belong to a ring.
-RING_TYPES = {"number", "poly", "ideal", "matrix", "map"}
+RING_TYPES = {"number", "poly", "ideal", "matrix", "map", "vector", "module"}
 
 
 class Var:

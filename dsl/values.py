@@ -418,7 +418,7 @@ def same_value(a: Any, b: Any) -> bool:
 
 def ring_of(v: Any) -> Optional[PolyRing]:
     """The kernel ring a value depends on (None for ring-independent values)."""
-    if isinstance(v, (Poly, Number, Ideal, Matrix, Map)):
+    if isinstance(v, (Poly, Number, Ideal, Matrix, Map)) or getattr(type(v), "type_name", "") in _MODULE_TYPES:
         return v.ring
     if type(v) is List:
         r = v._ring
@@ -538,6 +538,10 @@ def to_matrix(v: Any, ring: Optional[PolyRing], nrows: int = 0, ncols: int = 0) 
     ring = _need_ring(ring, "matrix")
     if getattr(type(v), "type_name", "") == "intmat":
         v = Matrix(ring, v.nrows, v.ncols, [ring.const(x) for x in v.values])
+    if getattr(type(v), "type_name", "") in _MODULE_TYPES:  # matrix(m): the generators as columns
+        _check_ring(v, ring)
+        from .values_modules import matrix_entries
+        v = Matrix(ring, *matrix_entries(v))
     if isinstance(v, Matrix):
         _check_ring(v, ring)
         if not nrows or (nrows, ncols) == (v.nrows, v.ncols):
@@ -604,6 +608,8 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing], warn: Optional[Callable[
         return to_ideal(v, ring)
     if typ == "matrix":
         return to_matrix(v, ring)
+    if typ in _CONVERTERS:
+        return _CONVERTERS[typ](v, ring)
     if typ == "intvec":
         return to_intvec(v)
     if typ == "list":
@@ -626,6 +632,16 @@ def convert(v: Any, typ: str, ring: Optional[PolyRing], warn: Optional[Callable[
     if plugin is not None:
         return plugin.apply(_single(v, typ), warn)
     raise MechTypeError(f"type '{typ}' is not supported yet")
+
+
+_MODULE_TYPES = ("vector", "module")
+_CONVERTERS: dict[str, Callable[[Any, Optional[PolyRing]], Any]] = {}
+
+
+def register_converter(typ: str, convert: Callable[[Any, Optional[PolyRing]], Any]) -> None:
+    """The conversion of values to a built-in ring-dependent type defined in its own module
+    (vector, module: mech.dsl.convert_modules)."""
+    _CONVERTERS[typ] = convert
 
 
 def _single(v: Any, typ: str) -> Any:

@@ -191,6 +191,8 @@ def _entries(x: Any) -> list[Any]:
         return list(x.values)
     if isinstance(x, List):
         return list(x.items)
+    if getattr(type(x), "type_name", "") == "vector":  # a vector's entries
+        return list(x.entries)
     return [x]
 
 

@@ -292,6 +292,12 @@ def _show_lines(ctx, x: Any) -> list[str]:
         return [f"// ideal, {len(x.gens)} generator(s)", print_form(x)]
     if isinstance(x, Matrix):
         return [f"// matrix, {x.nrows}x{x.ncols}", print_form(x)]
+    from ..dsl.values_modules import Module, Vector
+    from ..dsl.printing import bracket_str
+    if isinstance(x, Vector):
+        return ["// vector", bracket_str(x)]
+    if isinstance(x, Module):
+        return [f"// module, {len(x.gens)} generator(s)"] + [bracket_str(g) for g in x.gens]
     if isinstance(x, List):
         out = [f"// list, {len(x.items)} element(s):"]
         for i, item in enumerate(x.items, 1):

@@ -123,6 +123,8 @@ def execute(ctx, code: str) -> None:
       execute("a = a + 41; a;");
       → 42
     """
+    if code.strip() and not code.rstrip().endswith((";", "}")):
+        code = code.rstrip() + ";"  # as Singular: the last statement's ';' may be left out
     ctx.execute_here(code)
 
 

@@ -7,6 +7,7 @@ from typing import Any, Optional
 from ..dsl import ast as A
 from ..dsl.errors import MechTypeError
 from ..dsl.registry import command
+from ..dsl.values_modules import Module
 from ..dsl.values import Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring, typeof
 from ..kernel import Poly
 
@@ -30,6 +31,8 @@ def describe(value: Any, basering: Optional[Ring]) -> str:
         return "number"
     if isinstance(value, Ideal):
         return f"ideal{' (SB)' if value.is_std else ''}, {len(value.gens)} generator(s)"
+    if isinstance(value, Module):
+        return f"module{' (SB)' if value.is_std else ''}, rk {value.rank}, {len(value.gens)} generator(s)"
     if isinstance(value, Matrix):
         return f"matrix {value.nrows} x {value.ncols}"
     if isinstance(value, Map):

@@ -40,6 +40,8 @@ def gcd_int(a: int, b: int) -> int:
 
 @command("gcd")
 def gcd_poly(f: Poly, g: Poly) -> Poly:
+    if (f.is_zero() and g.is_constant()) or (g.is_zero() and f.is_constant()):  # as Singular: gcd(0, c)
+        return g if f.is_zero() else f                                            # is c itself
     h = factor.gcd(f, g)
     if getattr(h.ring.field, "params", ()):  # with parameters Singular clears denominators, as std does
         from .standard import normalize

@@ -13,6 +13,8 @@ from ..dsl.noether import active_noether
 from ..dsl.qrings import quotient_of, with_quotient
 from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
+from ..dsl.convert_modules import to_module
+from ..dsl.values_modules import Module
 from ..kernel import Poly
 from ..kernel.dimension import krull_dim
 from ..kernel.engines import AUTO, ENGINES, check_engine, list_engines
@@ -292,9 +294,10 @@ def dim(ctx, I: Ideal) -> int:
 
 
 @command("std")
-def std_row(m: Matrix) -> Matrix:
+def std_row(m: Matrix) -> Matrix | Module:
     """std(m) of a one-row matrix (a module of rank 1: the ideal of its entries), as a one-row matrix."""
-    if m.nrows != 1:
-        raise MechRuntimeError("std of a matrix with several rows (a module) is not supported")
+    if m.nrows != 1:  # a module: Singular's std(matrix) is the module's standard basis
+        from .module_commands import std as std_module
+        return std_module(to_module(m, m.ring))
     basis = std(Ideal(m.ring, m.entries))
     return Matrix(m.ring, 1, len(basis.gens), list(basis.gens))

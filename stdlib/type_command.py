@@ -7,6 +7,7 @@ from typing import Any
 from ..dsl.printing import render
 from ..dsl.registry import command
 from ..dsl.values import NONE, Ideal, List, Map, Matrix, Ring, typeof
+from ..dsl.values_modules import Module
 
 
 @command("type")
@@ -31,6 +32,8 @@ def type_(ctx, x: Any) -> Any:
         header = f"// {name} {t}  {x.nrows} x {x.ncols}"
     elif isinstance(x, List):
         header = f"// {name} list , size {len(x.items)}"
+    elif isinstance(x, Module):
+        header = f"// {name} module , rk {x.rank}"
     elif isinstance(x, Map):
         header = f"// {name} map  from {x.source.name}"
     elif isinstance(x, (Ideal, Ring)) or "\n" in text:

@@ -28,7 +28,7 @@ def outcome(code: str, timeout: float = 60, max_memory: float | None = None) -> 
     ("-" * N + "1;", "error: recursion too deep"),
     ("size(" * N + "1" + ")" * N + ";", "error: recursion too deep"),
     ("list L = " + "list(" * N + "1" + ")" * N + ";", "error: recursion too deep"),
-    ("int i = " + "[" * N + "1" + "]" * N + ";", "error: unexpected '['"),
+    ("int i = " + "[" * N + "1" + "]" * N + ";", "error: recursion too deep"),  # nested vector literals
     ("if (0) { 0; } " + "else if (0) { 0; } " * N + "else { 7; }", "error: recursion too deep"),
     ("proc f(int n) { if (n == 0) { return(0); } return(f(n - 1)); } f(" + str(N) + ");",
      "error: procedure calls nested deeper than 1000"),

@@ -183,7 +183,7 @@ def test_syntax_error_runs_complete_statements_before_it():
 def test_error_format_with_caret_and_underline():
     e = error('ring r = 0,(x,y),dp;\nideal I = std("a");', MechTypeError)
     assert e.format() == ("<string>:2:11: error: wrong arguments for std: got (string), expected std(ideal) or "
-                          "std(matrix) or std(ideal, poly|ideal)\nideal I = std(\"a\");\n          ^~~~~~~~\n")
+                          "std(matrix) or std(ideal, poly|ideal) or std(module)\nideal I = std(\"a\");\n          ^~~~~~~~\n")
     e = error("ring r = 0,(x,y),dp; minAssGTZ(ideal(x));", MechNameError)
     assert "unknown command 'minAssGTZ'" in e.message
     assert e.format().splitlines()[2] == " " * 21 + "^" + "~" * 18
@@ -208,7 +208,7 @@ def test_error_in_procedure_reports_call_chain():
     ("proc f(int n) { return(n); } f(\"a\");", MechTypeError, "argument 1 of f"),
     ("break;", MechRuntimeError, "break outside a loop"),
     ("int std = 1;", MechNameError, "is a command"),
-    ("vector v;", MechTypeError, "not supported yet"),
+    ("link l;", MechTypeError, "not supported yet"),
     ("undefinedvar;", MechNameError, "unknown identifier 'undefinedvar'"),
     ("nosuchcommand(1);", MechNameError, "unknown command 'nosuchcommand'"),
     ("int i; i = x;", MechNameError, "unknown identifier 'x'"),

@@ -204,7 +204,7 @@ def test_help(capsys):
     shell.run("help;")
     shell.run("? radical;")
     out = capsys.readouterr().out
-    assert out.startswith("std(ideal) or std(matrix) or std(ideal, poly|ideal)\nstd(I): a standard basis")
+    assert out.startswith("std(ideal) or std(matrix) or std(ideal, poly|ideal) or std(module)\nstd(I): a standard basis")
     assert "\nbuilt in:\n  " in out and '\nprimdec.lib (LIB "primdec.lib";):\n  ' in out
     assert "radical(ideal) or radical(ideal, any...)    [primdec.lib]\n" in out
 

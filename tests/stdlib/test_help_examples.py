@@ -114,7 +114,7 @@ def list_entries(text: str) -> list[str]:
 
 def test_help_prints_the_example():
     out = Session().execute("help std;")
-    assert out.startswith("std(ideal) or std(matrix) or std(ideal, poly|ideal)\nstd(I): a standard basis")
+    assert out.startswith("std(ideal) or std(matrix) or std(ideal, poly|ideal) or std(module)\nstd(I): a standard basis")
     assert "\n\nExample:\n  ring r = 0,(x,y,z),dp;\n" in out and f"\n{OUT}_[3]=x2-y\n" in out
 
 

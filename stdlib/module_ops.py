@@ -1,0 +1,172 @@
+"""Ideal-style operations on modules (Singular dialect): ``intersect``, ``quotient``, ``interred``,
+``dim``, ``homog``.
+
+Intersections and quotients come from syzygies (Greuel–Pfister, *A Singular Introduction to Commutative
+Algebra*, 2.8): M ∩ N is the image under M of the first parts of the syzygies of [M | N]; M : N (an
+ideal) intersects over N's generators n the first entries of the syzygies of [n | M]; M : p (a module)
+is the first part of the syzygies of [p*e_1, ..., p*e_r | M].
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from ..dsl.registry import command
+from ..dsl.values import Ideal
+from ..dsl.values_modules import Module, Vector, lead_term
+from ..kernel import Poly, PolyRing
+from ..kernel import modules as km
+from .module_commands import _basis, _global, _module, _plain, _vecs, global_twin
+
+
+def _first_parts(ring: PolyRing, rank: int, gens: list[dict], k: int) -> list[dict]:
+    """The first k entries of the syzygies of gens."""
+    _plain(ring, "syzygies")
+    return [{t: c for t, c in s.items() if t[1] < k} for s in km.syzygies(global_twin(ring), rank, gens)]
+
+
+@command("intersect")
+def intersect(M: Module, N: Module, *more: Module) -> Module:
+    """intersect(M, N, ...): the intersection of submodules of a free module (a standard basis).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      intersect(module([x,y]), module([x2,0],[0,y]));
+      → _[1]=x2*gen(1)+xy*gen(2)
+    """
+    ring = M.ring
+    out = M
+    for N2 in (N,) + more:
+        rank, k = max(out.rank, N2.rank), len(out.gens)
+        parts = _first_parts(ring, rank, _vecs(out) + _vecs(N2), k)
+        images = []
+        for a in parts:
+            img: dict = {}
+            for (e, j), c in a.items():
+                km._add_multiple(img, out.gens[j].terms(), e, c)
+            images.append({t: c for t, c in img.items() if c != 0})
+        out = _module(ring, _basis(ring, rank, images), rank, True)
+    return out
+
+
+@command("quotient")
+def quotient(M: Module, N: Module | Poly | Ideal) -> Module | Ideal:
+    """quotient(M, N): the ideal {f : f*N inside M}; quotient(M, p): the module {v : p*v inside M}.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      quotient(module([x,y],[y,x2]), module([x2,0],[0,y]));
+      → _[1]=x3-y2
+    """
+    ring = M.ring
+    rank = M.rank
+    if isinstance(N, Ideal):  # {v : I*v inside M}: the intersection over I's generators
+        parts = [quotient(M, f) for f in N.gens if not f.is_zero()]
+        return intersect(*parts) if len(parts) > 1 else parts[0] if parts else Module(ring, [], rank)
+    if isinstance(N, Poly):
+        scaled = [{(e, i): c for e, c in N.terms.items()} for i in range(rank)]
+        parts = _first_parts(ring, rank, scaled + _vecs(M), rank)  # coefficient j of p*e_j: entry j
+        return _module(ring, _basis(ring, rank, parts), rank, True)
+    from ..kernel.ideals import intersect as intersect_ideals
+    from .standard import normalize, standard_basis
+    pieces = []
+    for n in N.nonzero():
+        parts = _first_parts(ring, max(rank, n.nrows), [n.terms()] + _vecs(M), 1)
+        pieces.append([Poly(ring, {e: c for (e, _), c in a.items()}) for a in parts] or [ring.zero()])
+    if not pieces:
+        return Ideal(ring, [ring.one()], is_std=True)
+    gens = intersect_ideals(*pieces, ring=ring) if len(pieces) > 1 else pieces[0]
+    return Ideal(ring, standard_basis(Ideal(ring, [normalize(g) for g in gens])), is_std=True)
+
+
+@command("interred")
+def interred(M: Module) -> Module:
+    """interred(M): generators of M with no leading term dividing another's and reduced tails."""
+    ring = M.ring
+    _global(ring, "interred")
+    gens = [g for g in _vecs(M) if g]
+    changed = True
+    while changed:
+        changed = False
+        for i in range(len(gens)):
+            others = [g for j, g in enumerate(gens) if j != i and g]
+            gb = km.ModuleGB(ring, M.rank, key=_key(ring))
+            gb._set_basis(others, [lead_term(Vector.from_terms(ring, g)) for g in others])
+            red = gb.reduce(gens[i])
+            if red != gens[i]:
+                gens[i], changed = red, True
+        gens = [g for g in gens if g]
+    from .module_commands import _normalized
+    key = _key(ring)
+    out = [_normalized(ring, g, max(g, key=key)) for g in gens]
+    out.sort(key=lambda g: key(max(g, key=key)))
+    return _module(ring, out, M.rank)
+
+
+def _key(ring: PolyRing):
+    from ..dsl.values_modules import kernel_key
+    return kernel_key(ring)
+
+
+def _component_leads(M: Module) -> dict[int, list[tuple]]:
+    leads: dict[int, list[tuple]] = {}
+    for g in M.nonzero():
+        e, i = lead_term(g)
+        leads.setdefault(i, []).append(e)
+    return leads
+
+
+@command("dim")
+def dim(ctx, M: Module) -> int:
+    """dim(M): the Krull dimension of R^r/M for a standard basis M (-1 when M is the free module)."""
+    from ..kernel.dimension import krull_dim
+    ring = M.ring
+    if not M.is_std:
+        ctx.assume_std(M, 0)  # type: ignore[arg-type]
+    leads = _component_leads(M)
+    dims = []
+    for i in range(M.rank):
+        es = leads.get(i)
+        if not es:
+            dims.append(ring.nvars)
+        elif any(not any(e) for e in es):
+            continue
+        else:
+            dims.append(krull_dim(es, ring.nvars))
+    return max(dims) if dims else -1
+
+
+@command("homog")
+def homog(M: Module | Vector) -> int:
+    """homog(M): 1 if M is homogeneous for some degrees of the components (each generator's terms of
+    one degree, counting its component's degree), else 0."""
+    from .polynomials import _ring_weights
+    ws = _ring_weights(M.ring) or [1] * M.ring.nvars
+
+    def wdeg(e: tuple) -> int:
+        return sum(a * w for a, w in zip(e, ws))
+    vecs = [{(wdeg(e), i): c for (e, i), c in v.items()} for v in
+            ([M.terms()] if isinstance(M, Vector) else [g.terms() for g in M.nonzero()])]
+    shift: dict[int, int] = {}
+    todo = [v for v in vecs if v]
+    while todo:
+        v = next((w for w in todo if any(i in shift for _, i in w)), todo[0])
+        todo.remove(v)
+        known: Optional[int] = next((e + shift[i] for e, i in v if i in shift), None)
+        if known is None:
+            e, i = next(iter(v))
+            shift[i] = 0
+            known = e
+        for e, i in v:
+            if i not in shift:
+                shift[i] = known - e
+            elif e + shift[i] != known:
+                return 0
+    return 1
+
+
+
+@command("transpose")
+def transpose(M: Module) -> Module:
+    """transpose(M): the module of the columns of the transposed matrix of M."""
+    cols = [g.padded(M.rank) for g in M.gens]
+    return Module(M.ring, [Vector(M.ring, [c[i] for c in cols]) for i in range(M.rank)], len(cols))
