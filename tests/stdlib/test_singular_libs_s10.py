@@ -1,0 +1,32 @@
+"""Commands of Singular's kernel and libraries added in session 10: weight (the bounded integer search of
+Singular's ecart-weight heuristic).  Each snippet's output is compared with the installed Singular's line by
+line."""
+from __future__ import annotations
+
+import pytest
+
+from tests.util import run, run_singular
+
+pytestmark = pytest.mark.singular
+
+SNIPPETS = {
+    "weight": """
+ring r = 32003,(x,y,z),dp;
+weight(ideal(x5+y3, z2+xy));
+weight(ideal(x3+xyz+z3, y4+y2z2+z4, x5+x2y2z+y5));
+weight(ideal(x33+x11y12z13+z39, y48+y24z26+z52));
+weight(ideal(0)); weight(ideal(x, y2));
+ring s = 0,(t,x,y,z,u),ds;
+weight(ideal(9x8+y7t3z4+5x4y2t2+2xy2z3t2, 9y8+7xy6t+2x5y4t2, 9z8+3x2y3z2t4, u3-xyz));
+""",
+}
+
+
+def _lines(text: str) -> list[str]:
+    return [ln.rstrip() for ln in text.splitlines() if ln.strip() and not ln.startswith("// **")]
+
+
+@pytest.mark.parametrize("name", sorted(SNIPPETS))
+def test_as_singular(name: str) -> None:
+    src = SNIPPETS[name]
+    assert _lines(run(src)) == _lines(run_singular(src))
