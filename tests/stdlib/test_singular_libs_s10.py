@@ -1,4 +1,4 @@
-"""Commands of Singular's kernel and libraries added in session 10: weight (the bounded integer search of
+"""Commands of Singular's kernel and libraries added in session 10: char_series (Wang's irreducible characteristic series, factory's ordering rules), weight (the bounded integer search of
 Singular's ecart-weight heuristic).  Each snippet's output is compared with the installed Singular's line by
 line."""
 from __future__ import annotations
@@ -10,6 +10,17 @@ from tests.util import run, run_singular
 pytestmark = pytest.mark.singular
 
 SNIPPETS = {
+    "char_series": """
+ring r = 32003,(x,y,z),dp;
+print(char_series(ideal(xyz, xz, y)));
+print(char_series(ideal(x2-y, xy-z)));
+ring s = 0,(x,y,z,u),dp;
+ideal i = -3zu+y2-2x+2, -3x2u-4yz-6xz+2y2+3xy, -3z2u-xu+y2z+y;
+char_series(i);
+print(char_series(ideal(x2-1, (y-x)*(y+2), z*y-1)));
+print(char_series(ideal(0)));
+print(char_series(ideal(1)));
+""",
     "weight": """
 ring r = 32003,(x,y,z),dp;
 weight(ideal(x5+y3, z2+xy));
