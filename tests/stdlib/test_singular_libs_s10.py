@@ -1,5 +1,7 @@
-"""Commands of Singular's kernel and libraries added in session 10: char_series (Wang's irreducible characteristic series, factory's ordering rules), weight (the bounded integer search of
-Singular's ecart-weight heuristic).  Each snippet's output is compared with the installed Singular's line by
+"""Commands of Singular's kernel and libraries added in session 10: char_series (Wang's irreducible
+characteristic series, factory's ordering rules), weight (the bounded integer search of Singular's
+ecart-weight heuristic), elim.lib's select/select1/nselect, general.lib's timeStd/factorH/timeFactorize,
+monomial.  Each snippet's output is compared with the installed Singular's line by
 line."""
 from __future__ import annotations
 
@@ -21,6 +23,27 @@ print(char_series(ideal(x2-1, (y-x)*(y+2), z*y-1)));
 print(char_series(ideal(0)));
 print(char_series(ideal(1)));
 """,
+    "elim_select": """
+LIB "elim.lib";
+ring r = 0,(x,y,z),dp;
+ideal i = x2, xy, z, y3+1, 0, xz;
+select(i, 1); select(i, 1..2); select1(i, 1..2); nselect(i, 1); nselect(i, 1..3);
+matrix m[2][3] = x,y,z,1,x2,y;
+print(nselect(m, 3)); print(select(m, 1)); print(select1(m, 2..3));
+""",
+    "general_time": """
+LIB "general.lib";
+ring r = 32003,(x,y,z),dp;
+timeStd(ideal(x2-y, xy-z), 60);
+timeStd(ideal(x2-y, xy-z));
+factorH(x2z-z3+y*(x-z));
+factorH((x2y-z3)*(y2-xz));
+timeFactorize(x2-y2);
+""",
+    "monomial": """
+ring r = 0,(x,y,z),dp;
+monomial(intvec(2,3)); monomial(intvec(1,2,3,4,5)); monomial(intvec(0,0,0,0)); leadexp(monomial(intvec(0,4)));
+""",
     "weight": """
 ring r = 32003,(x,y,z),dp;
 weight(ideal(x5+y3, z2+xy));
@@ -41,3 +64,10 @@ def _lines(text: str) -> list[str]:
 def test_as_singular(name: str) -> None:
     src = SNIPPETS[name]
     assert _lines(run(src)) == _lines(run_singular(src))
+
+
+def test_time_factorize_with_a_limit() -> None:
+    """With a limit the factorization that finishes is returned (the installed Singular's fork link never
+    reports it ready and answers "irreducible"; general.lib documents the factorization)."""
+    out = run('LIB "general.lib"; ring r = 0,(x,y),dp; timeFactorize(x2-y2, 60);')
+    assert _lines(out) == ["[1]:", "   _[1]=-1", "   _[2]=-x+y", "   _[3]=x+y", "[2]:", "   1,1,1"]
