@@ -79,7 +79,7 @@ def time_factorize(p: Poly, *args: Any) -> List:
     Example:
       LIB "general.lib";
       ring r = 0,(x,y),dp;
-      timeFactorize(x2-y2, 10);
+      timeFactorize(x2-y2);
       → [1]:
       →    _[1]=-1
       →    _[2]=-x+y
