@@ -1,7 +1,7 @@
 """Commands of Singular's kernel and libraries added in session 10: char_series (Wang's irreducible
 characteristic series, factory's ordering rules), weight (the bounded integer search of Singular's
 ecart-weight heuristic), elim.lib's select/select1/nselect, general.lib's timeStd/factorH/timeFactorize,
-monomial.  Each snippet's output is compared with the installed Singular's line by
+monomial, print(x, format), sprintf, printf, sba; the basering after a procedure that exports a ring.  Each snippet's output is compared with the installed Singular's line by
 line."""
 from __future__ import annotations
 
@@ -43,6 +43,28 @@ timeFactorize(x2-y2);
     "monomial": """
 ring r = 0,(x,y,z),dp;
 monomial(intvec(2,3)); monomial(intvec(1,2,3,4,5)); monomial(intvec(0,0,0,0)); leadexp(monomial(intvec(0,4)));
+""",
+    "sprintf_sba": """
+ring r = 0,(x,y,z),dp;
+ideal i = x2,y;
+print(i, "%s"); print(3, "%2s"); print("", "%2s"); print(i, "%p");
+sprintf("s:%s,%n p:%p", 1, ideal(x, y));
+sprintf("abc"); sprintf("%"); sprintf("a%sb%n", 1); sprintf("a%sb%sc", 1);
+printf("%s and %s", 1, 2);
+list l = 1, x2;
+sprintf("%s|%s", l);
+sba(ideal(x2-y, xy-z, z3-x)); size(sba(ideal(x2-y, xy-z), 1, 0));
+""",
+    "proc_ring": """
+proc mk(int n) { ring R = 32003,(x(0..n)),dp; ideal i = x(0)^2, x(1)-x(0); export(R); export(i); return("a"); }
+string s = mk(2);
+nameof(basering); std(i);
+ring A = 0,(a),dp;
+ring B = 0,(b),dp;
+proc sw() { setring A; return(1); }
+int k = sw(); nameof(basering);
+proc mk3() { ring D = 0,(d),dp; export(D); return(3); }
+k = mk3(); nameof(basering);
 """,
     "weight": """
 ring r = 32003,(x,y,z),dp;
