@@ -28,6 +28,9 @@ from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
 from ..kernel import Poly
 from ..kernel.coeffs import PrimeField, RationalField
+from ..kernel.errors import NotSupported
+from ..kernel.ideals import saturate_poly
+from ..kernel.primdec import is_prime
 from .charset_ops import (LC, degree, difference, divides, factor_set, factors, factors_of_initials,
                           is_const, is_subset, level, lowest_rank, normalize, premb, prem_list, size,
                           sqrfree_part, uni_gcd, union, content)
@@ -185,9 +188,26 @@ def _irred_as(AS: Set) -> tuple[int, Poly | None, Set]:
         if len(qs) >= 2 or qs[0][1] > 1:
             return nr, f, [normalize(g) for g, _ in qs]
     if not _quasilinear(AS):
-        raise MechRuntimeError("char_series: testing an ascending set with two non-linear polynomials for "
-                               "irreducibility (factoring over algebraic function fields) is not supported")
+        for nr in range(1, len(AS)):
+            if degree(AS[nr]) > 1 and any(degree(g) > 1 for g in AS[:nr]) and not _irreducible_set(AS[:nr + 1]):
+                raise MechRuntimeError("char_series: splitting an ascending set whose polynomial is reducible over "
+                                       "the algebraic extension given by the ones below (factoring over algebraic "
+                                       "function fields) is not supported")
     return 0, None, [normalize(g) for g, _ in qs]
+
+
+def _irreducible_set(AS: Set) -> bool:
+    """Whether the ascending set is irreducible: its saturation by the initials is a prime ideal (the
+    last polynomial, irreducible over the rationals, stays irreducible over the extension below it)."""
+    ring = AS[0].ring
+    h = ring.one()
+    for g in AS:
+        h = h * LC(g)
+    try:
+        return is_prime(saturate_poly(AS, h, ring), ring)
+    except NotSupported as e:
+        raise MechRuntimeError(f"char_series: testing an ascending set for irreducibility over this field is not "
+                               f"supported ({e})") from None
 
 
 def _adjoin(is_: Set, qs: Set, qh: list[Set], cs: Set | None = None) -> list[Set]:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.util import run, run_singular
+from tests.util import error, run, run_singular
 
 pytestmark = pytest.mark.singular
 
@@ -22,6 +22,8 @@ char_series(i);
 print(char_series(ideal(x2-1, (y-x)*(y+2), z*y-1)));
 print(char_series(ideal(0)));
 print(char_series(ideal(1)));
+ring t = 2,(x,y,z),dp;
+print(char_series(ideal(x*z^2+y^2+y, x*y+y^2*z^2)));
 """,
     "elim_select": """
 LIB "elim.lib";
@@ -93,3 +95,9 @@ def test_time_factorize_with_a_limit() -> None:
     reports it ready and answers "irreducible"; general.lib documents the factorization)."""
     out = run('LIB "general.lib"; ring r = 0,(x,y),dp; timeFactorize(x2-y2, 60);')
     assert _lines(out) == ["[1]:", "   _[1]=-1", "   _[2]=-x+y", "   _[3]=x+y", "[2]:", "   1,1,1"]
+
+
+def test_char_series_reducible_over_the_extension_is_refused() -> None:
+    """y2-2 splits over Q(x) with x2 = 2: the series would need factoring over the extension (not built)."""
+    e = error("ring r = 0,(x,y),dp; char_series(ideal(x2-2, y2-2));")
+    assert "not supported" in str(e)
