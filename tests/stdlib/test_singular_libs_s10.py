@@ -1,7 +1,8 @@
 """Commands of Singular's kernel and libraries added in session 10: char_series (Wang's irreducible
 characteristic series, factory's ordering rules), weight (the bounded integer search of Singular's
 ecart-weight heuristic), elim.lib's select/select1/nselect, general.lib's timeStd/factorH/timeFactorize,
-monomial, print(x, format), sprintf, printf, sba; the basering after a procedure that exports a ring.  Each snippet's output is compared with the installed Singular's line by
+monomial, print(x, format), sprintf, printf, sba; the basering after a procedure that exports a ring; keepring's ring seen by the
+caller; QQ as the characteristic of a ring.  Each snippet's output is compared with the installed Singular's line by
 line."""
 from __future__ import annotations
 
@@ -67,6 +68,15 @@ proc sw() { setring A; return(1); }
 int k = sw(); nameof(basering);
 proc mk3() { ring D = 0,(d),dp; export(D); return(3); }
 k = mk3(); nameof(basering);
+""",
+    "qq_keepring": """
+ring r = QQ,(x,y),dp; r;
+ring s = (QQ,a),(x),dp; charstr(s);
+proc mk(ideal J) { def R = basering; string ri = "ring Rhelp=(" + charstr(R) + "),(" + varstr(R) + ",Y),dp;";
+  execute(ri); ideal I = imap(R, J), Y-var(1); keepring(Rhelp); return(std(I)); }
+setring r;
+mk(ideal(x2-y));
+nameof(basering); setring r; kill Rhelp;
 """,
     "weight": """
 ring r = 32003,(x,y,z),dp;
