@@ -2,7 +2,7 @@
 characteristic series, factory's ordering rules), weight (the bounded integer search of Singular's
 ecart-weight heuristic), elim.lib's select/select1/nselect, general.lib's timeStd/factorH/timeFactorize,
 monomial, print(x, format), sprintf, printf, sba; the basering after a procedure that exports a ring; keepring's ring seen by the
-caller; QQ as the characteristic of a ring.  Each snippet's output is compared with the installed Singular's line by
+caller; QQ as the characteristic of a ring; factorize over Z/p[a]/(m) (univariate or homogeneous).  Each snippet's output is compared with the installed Singular's line by
 line."""
 from __future__ import annotations
 
@@ -77,6 +77,17 @@ proc mk(ideal J) { def R = basering; string ri = "ring Rhelp=(" + charstr(R) + "
 setring r;
 mk(ideal(x2-y));
 nameof(basering); setring r; kill Rhelp;
+""",
+    "factorize_fq": """
+ring C = (32003,i),x,dp;
+minpoly = i2+1;
+factorize(x2+1); factorize(x2+1, 1); factorize(x2+1, 2); factorize((x3-2)*(x+i)^2);
+ring R3 = (2,a),(x,y),lp;
+minpoly = a2+a+1;
+factorize(x2+xy+y2);
+ring R5 = (5,b),(x,y,z),dp;
+minpoly = b2+2;
+factorize(x4+y4); factorize(x2-2z2);
 """,
     "weight": """
 ring r = 32003,(x,y,z),dp;
