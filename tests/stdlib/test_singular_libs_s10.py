@@ -2,7 +2,8 @@
 characteristic series, factory's ordering rules), weight (the bounded integer search of Singular's
 ecart-weight heuristic), elim.lib's select/select1/nselect, general.lib's timeStd/factorH/timeFactorize,
 monomial, print(x, format), sprintf, printf, sba; the basering after a procedure that exports a ring; keepring's ring seen by the
-caller; QQ as the characteristic of a ring; factorize over Z/p[a]/(m) (univariate or homogeneous).  Each snippet's output is compared with the installed Singular's line by
+caller; QQ as the characteristic of a ring; factorize over Z/p[a]/(m) (univariate or homogeneous);
+rootofUnity in characteristic p.  Each snippet's output is compared with the installed Singular's line by
 line."""
 from __future__ import annotations
 
@@ -89,6 +90,14 @@ ring R5 = (5,b),(x,y,z),dp;
 minpoly = b2+2;
 factorize(x4+y4); factorize(x2-2z2);
 """,
+    "root_of_unity_p": """
+LIB "ring.lib";
+ring r = (5,a),x,dp;
+minpoly = a2-2;
+rootofUnity(6);
+ring s = (7,b),x,dp;
+rootofUnity(6); rootofUnity(8); rootofUnity(1); rootofUnity(2); rootofUnity(12); rootofUnity(16);
+""",
     "weight": """
 ring r = 32003,(x,y,z),dp;
 weight(ideal(x5+y3, z2+xy));
@@ -122,3 +131,9 @@ def test_char_series_reducible_over_the_extension_is_refused() -> None:
     """y2-2 splits over Q(x) with x2 = 2: the series would need factoring over the extension (not built)."""
     e = error("ring r = 0,(x,y),dp; char_series(ideal(x2-2, y2-2));")
     assert "not supported" in str(e)
+
+
+def test_root_of_unity_odd_with_several_candidates_is_an_error() -> None:
+    """Over Z/7 t^9-1 has several factors of the largest degree: ring.lib assumes an even n there (an error)."""
+    e = error('LIB "ring.lib"; ring s = (7,b),x,dp; rootofUnity(9);')
+    assert "ASSUME failed" in str(e)
