@@ -64,7 +64,8 @@ EXPLAINED: dict[str, str] = {
 _CHARSET = ("char_series: the series splits an ascending set whose polynomial is reducible over the algebraic "
             "extension given by the polynomials below it; Singular's factory factors it by Trager's method over a "
             "primitive element (its own choice of representation and order of the factors): not built, mech "
-            "refuses such inputs (the series of sets that need no such splitting agree)")
+            "refuses such inputs (the series of sets that need no such splitting, or only over a finite field "
+            "Z/p[v]/(A), agree)")
 _ABSPRIMDEC = ("absPrimdecGTZ: the absolute components come as ideals over a number field in a new variable, "
                "chosen by primdec.lib's decomp_i (primitive elements, partly random linear forms) and printed as "
                "a standard basis that is not fully reduced: not built")
@@ -75,7 +76,7 @@ _FERMAT = ("the polynomials are 0.1-0.7 MB of text: mech parses and sums them in
 
 #: Why a case stops (unsupported, error or timeout), where it was looked at and left for a named reason.
 NOT_RUN: dict[str, str] = {
-    **{f"Short/{n}.tst": _CHARSET for n in ("bug_charseries2", "bug_tr657", "charseries_p", "primdec_s")},
+    **{f"Short/{n}.tst": _CHARSET for n in ("bug_charseries2", "bug_tr657", "charseries_p")},
     "Buch/Example_4_6_26.tst": _CHARSET,
     "Manual/absPrimdecGTZ.tst": _ABSPRIMDEC, "LIB/primdec.lib:absPrimdecGTZ": _ABSPRIMDEC,
     "LIB/primdec.lib:absPrimdecGTZE": _ABSPRIMDEC,

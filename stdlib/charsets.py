@@ -31,6 +31,7 @@ from ..kernel.coeffs import PrimeField, RationalField
 from ..kernel.errors import NotSupported
 from ..kernel.ideals import saturate_poly
 from ..kernel.primdec import is_prime
+from .charset_ext import finite_field_factors
 from .charset_ops import (LC, degree, difference, divides, factor_set, factors, factors_of_initials,
                           is_const, is_subset, level, lowest_rank, normalize, premb, prem_list, size,
                           sqrfree_part, uni_gcd, union, content)
@@ -189,10 +190,19 @@ def _irred_as(AS: Set) -> tuple[int, Poly | None, Set]:
             return nr, f, [normalize(g) for g, _ in qs]
     if not _quasilinear(AS):
         for nr in range(1, len(AS)):
-            if degree(AS[nr]) > 1 and any(degree(g) > 1 for g in AS[:nr]) and not _irreducible_set(AS[:nr + 1]):
-                raise MechRuntimeError("char_series: splitting an ascending set whose polynomial is reducible over "
-                                       "the algebraic extension given by the ones below (factoring over algebraic "
-                                       "function fields) is not supported")
+            f = AS[nr]
+            if degree(f) <= 1 or not any(degree(g) > 1 for g in AS[:nr]):
+                continue
+            split = finite_field_factors(f, AS[:nr])
+            if split is None:
+                if not _irreducible_set(AS[:nr + 1]):
+                    raise MechRuntimeError("char_series: splitting an ascending set whose polynomial is reducible "
+                                           "over the algebraic extension given by the ones below (factoring over "
+                                           "algebraic function fields) is not supported")
+                split = [(f, 1)]
+            qs = split
+            if len(qs) > 1 or qs[0][1] > 1:
+                return nr + 1, f, [normalize(g) for g, _ in qs]
     return 0, None, [normalize(g) for g, _ in qs]
 
 

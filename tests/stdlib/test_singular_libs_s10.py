@@ -27,6 +27,15 @@ print(char_series(ideal(1)));
 ring t = 2,(x,y,z),dp;
 print(char_series(ideal(x*z^2+y^2+y, x*y+y^2*z^2)));
 """,
+    "char_series_split": """
+ring R = 3,(x,y),lp;
+print(char_series(ideal(y4-x3-x, x9-x, y9-y)));
+ring R2 = 5,(x,y),dp;
+print(char_series(ideal(x2-2, y2-2)));
+print(char_series(ideal(x2-2, (y2-3)*(y-x))));
+ring R7 = 7,(x,y,z),dp;
+print(char_series(ideal(x3-2, y3-x, z-y)));
+""",
     "elim_select": """
 LIB "elim.lib";
 ring r = 0,(x,y,z),dp;
