@@ -9,9 +9,11 @@ The method (Wang's version of Wu's algorithm, as described in Greuel-Pfister's b
   of lowest rank among those reduced with respect to the ones taken; a *characteristic set* (medial
   form) adds the non-zero pseudo-remainders to the set until none remains, dropping factors that were
   seen as initials before and variables dividing the remainders (they become branches of their own);
-* each characteristic set found is tested for irreducibility (a set whose polynomials factor over the
-  rationals, or a set with two non-linear polynomials, would be split; the latter needs factoring over
-  algebraic function fields and is not built here);
+* each characteristic set found is tested for irreducibility: a polynomial that factors over the ground
+  field splits the set; a polynomial above a non-linear one is factored over the extension they define
+  when that is a finite field Z/p[v]/(A) (:mod:`.charset_ext`), else tested by whether the set's
+  saturation is prime; splitting over other extensions (Singular's factory uses Trager's method with its
+  own representation of the factors) is refused as not supported;
 * every factor of an initial and every dropped factor starts a new branch ``qs + [factor]``; branches are
   processed longest first, and sets implied by other sets are removed at the end.
 
