@@ -57,8 +57,9 @@ class Procedures:
             self.frames.pop()
             self.source = caller_source
             self.stmt, self.line_shift = saved_stmt, saved_shift
-            if not frame.keep_ring:
-                self.ring = frame.ring_at_entry
+            if not frame.keep_ring and not (frame.ring_at_entry is None and self.ring is not None and any(
+                    v.value is self.ring for v in self.globals.values())):
+                self.ring = frame.ring_at_entry  # as Singular: a global ring made without a basering stays
 
     def _bind_params(self, proc: Proc, args: list[Any], nodes: Optional[list[A.Expr]] = None) -> None:
         params = proc.params or []

@@ -93,6 +93,8 @@ def _characteristic(node: A.Expr, evaluate: Evaluate) -> tuple[int, tuple[str, .
         node = node.items[0]
     if isinstance(node, A.Name) and node.id in ("real", "complex"):
         raise MechRuntimeError(f"{node.id} coefficients are not supported (use 0 for the rationals)")
+    if isinstance(node, A.Name) and node.id == "QQ":  # Singular's name of the rationals (charstr gives it)
+        return 0, tuple(params)
     v = evaluate(node)
     if isinstance(v, bool) or not isinstance(v, int):
         raise MechRuntimeError("the characteristic must be 0 or a prime number")

@@ -218,6 +218,9 @@ class Statements:
             raise MechTypeError(f"keepring needs a ring, not {typeof(ring)}")
         if isinstance(s.ring, A.Name):
             ring.name = s.ring.id
+            var = self.lookup(s.ring.id)
+            if var is not None and var.level > 0:  # the caller sees the kept ring (made global here)
+                self.export(s.ring.id)
         self.ring = ring
         self.frames[-1].keep_ring = True
 

@@ -24,6 +24,7 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.values import Ideal, IntVec, List
 from ..kernel import Poly
 from ..dsl.registry import command
+from .factorize_fq import fq_factors
 from .factorize_params import param_factorization
 from .standard import normalize
 
@@ -38,8 +39,8 @@ def _revlex_lead(p: Poly) -> Any:
 def _scale(g: Poly) -> Poly:
     """A factor as factory returns it: integer primitive (QQ) with positive, or monic (Z/p),
     leading coefficient with respect to :func:`_revlex_lead`."""
-    if hasattr(g.ring.field, "modulus"):  # QQ[a]/(m): monic in the ring's ordering
-        return g.monic()
+    if hasattr(g.ring.field, "modulus"):  # QQ[a]/(m): monic in the ring's ordering; Z/p[a]/(m): as Z/p
+        return g * (g.ring.field.one / _revlex_lead(g)) if g.ring.field.characteristic else g.monic()
     g = normalize(g)
     if g.ring.field.characteristic:
         return g * (g.ring.field.one / _revlex_lead(g))
@@ -70,6 +71,8 @@ def _factory(F: Poly) -> Factors:
         out = []
         for g, m in _factory(dehomogenized):
             h = _homogenize(g, xn)
+            if hasattr(ring.field, "modulus") and ring.field.characteristic:
+                h = _scale(h)  # Z/p[a]/(m): Singular prints the homogenized factor with revlex lead 1
             left -= h.degree_in(xn) * m
             out.append((h, m))
         if left:
@@ -79,6 +82,8 @@ def _factory(F: Poly) -> Factors:
             and not getattr(ring.field, "params", ()):
         g = normalize(F)
         return [(g if F.lc() > 0 else -g, 1)]
+    if hasattr(ring.field, "modulus") and ring.field.characteristic:
+        return [(_scale(g), m) for g, m in fq_factors(F)]
     return [(_scale(g), m) for g, m in kernel_factorize(F)[1]]
 
 

@@ -6,6 +6,8 @@ minimal polynomial of a parameter (``rootofUnity``) and tensor products of rings
 from __future__ import annotations
 
 import re
+
+import flint
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError
@@ -229,23 +231,61 @@ def root_of_unity(ctx, n: int) -> Number:
       rootofUnity(6);
       → (q2-q+1)
     """
-    import flint
     ring = ctx.basering()
     field = ring.poly.field
     if len(ring.params) != 1:
         raise MechRuntimeError("rootofUnity: the procedure works only with one ring parameter variable")
     if n < 0:
         raise MechRuntimeError(f"rootofUnity: cannot compute ({n})-th primitive root of unity")
-    if ring.characteristic:
-        raise MechRuntimeError("rootofUnity in positive characteristic is not supported")
     if n == 0:
         return Number(ring.poly, field(0))
     q = field.gen(0)
+    if ring.characteristic and n > 2:
+        return Number(ring.poly, _root_of_unity_p(ctx, ring, n, q))
     value = field(0)
     for k, c in enumerate(flint.fmpz_poly.cyclotomic(n).coeffs()):
         if c:
             value = value + q ** k * int(c)
     return Number(ring.poly, value)
+
+
+def _root_of_unity_p(ctx, ring: Ring, n: int, q: Any) -> Any:
+    """ring.lib's choice in characteristic p: the first factor of t^n - 1 of the largest degree (in
+    factorize's order) whose root a has a^(n div 2) != 1 (when the parameter already has a minimal
+    polynomial, ring.lib cannot set another one: it warns and tests the parameter itself)."""
+    from ..kernel import PolyRing
+    from ..kernel.coeffs import PrimeField
+    from ..kernel.order import MonomialOrder
+    from .factorize import factory_factors
+    p = ring.characteristic
+    R = PolyRing(PrimeField(p), ["t"], MonomialOrder.simple("dp", 1))
+    t = R.gen(0)
+    factors = [g for g, _ in factory_factors(t ** n - R.one())]
+    d = max(g.total_degree() for g in factors)
+    top = [g for g in factors if g.total_degree() == d]
+
+    def value(g: Poly) -> Any:
+        out = ring.poly.field(0)
+        for e, c in g.terms.items():
+            out = out + q ** e[0] * int(c)
+        return out
+    if len(top) == 1:
+        return value(top[0])
+    if n % 2:
+        raise MechRuntimeError("rootofUnity: ASSUME failed: n%2 == 0 (several factors of t^n-1 of the largest "
+                               "degree for an odd n)")
+    algebraic = hasattr(ring.poly.field, "modulus")
+    x = flint.nmod_poly([0, 1], p)
+    for g in top:
+        if algebraic:
+            ctx.warn("Trying to set minpoly over non-transcendental ground field...")
+            root_power_is_one = q ** (n // 2) == ring.poly.field.one
+        else:
+            m = flint.nmod_poly([int(g.coeff_of((k,))) for k in range(d + 1)], p)
+            root_power_is_one = (x ** (n // 2)) % m == 1
+        if not root_power_is_one:
+            return value(g)
+    raise MechRuntimeError(f"rootofUnity: no primitive {n}-th root of unity found")
 
 
 @command("hasCommutativeVars", lib=LIB)
