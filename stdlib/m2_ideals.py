@@ -319,10 +319,25 @@ def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> An
         if where.nrows != 1 or where.ncols != f.ring.nvars:
             raise MechRuntimeError(f"substitute(f, M): M is one row of {f.ring.nvars} entries")
         if f.ring.field.characteristic and all(p.is_constant() for p in where.entries):
-            raise MechRuntimeError("substitute(f, matrix of integers): the value is an integer of ZZ in Macaulay2, "
-                                   "which mech has no ring for")
+            if not isinstance(f, Poly):
+                raise MechRuntimeError("substitute(I, matrix of integers) over ZZ/p is not supported by mech")
+            return _at_integers(f, [int(p.terms.get((), 0)) for p in where.entries])
         return map_value(f, list(where.entries), where.ring)
     return sub(ctx, f, where)
+
+
+def _at_integers(f: Poly, values: list[int]) -> int:
+    """f (over ZZ/p) at integers, as Macaulay2 substitutes into ZZ: each coefficient lifted to the
+    integer of least absolute value (p/2 for -p/2), the value an integer."""
+    p = f.ring.field.characteristic
+    total = 0
+    for e, c in f.terms.items():
+        c = int(c) % p
+        term = c - p if c > p // 2 else c
+        for v, k in zip(values, e):
+            term *= v ** k
+        total += term
+    return total
 
 
 @command("ring", dialect="m2")

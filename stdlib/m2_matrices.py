@@ -66,6 +66,29 @@ def minors(ctx, k: int, M: Matrix) -> Ideal:
 minors.m2_options = ("Limit",)
 
 
+@command("permanents", dialect="m2")
+def permanents(k: int, M: Matrix) -> Ideal:
+    """permanents(k, M): the ideal of the permanents of the k x k submatrices of M (the sums over
+    permutations without signs; zero ones left out)."""
+    from itertools import combinations, permutations
+    if k <= 0:
+        return Ideal(M.ring, [M.ring.one()])
+    if k > min(M.nrows, M.ncols):
+        raise MechRuntimeError(f"permanents: k must be between 1 and {min(M.nrows, M.ncols)}")
+    found = []
+    for rows in combinations(range(1, M.nrows + 1), k):
+        for cols in combinations(range(1, M.ncols + 1), k):
+            perm = M.ring.zero()
+            for sigma in permutations(cols):
+                term = M.ring.one()
+                for i, j in zip(rows, sigma):
+                    term = term * M.get(i, j)
+                perm = perm + term
+            if not perm.is_zero():
+                found.append(perm)
+    return Ideal(M.ring, found, is_std=not found)
+
+
 @command("det", dialect="m2")
 def det(M: Matrix) -> Poly:
     """det M: the determinant of a square matrix."""
