@@ -146,6 +146,9 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return quotient_ring(a, _relations(a, b))
     if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):
         return free_module(a, b)
+    if op == "^" and isinstance(a, CoeffRing) and a.name == "ZZ" and type(b) is int:  # ZZ^n
+        from .m2_rings import integers
+        return free_module(integers(), b)
     if op == "^" and isinstance(a, Ideal) and isinstance(b, Array):
         return _frobenius(a, b)
     if op == "^" and isinstance(a, Matrix) and isinstance(b, List):  # M^{i, ...}: rows

@@ -80,6 +80,13 @@ def map_modules(ctx, M: FreeModule, N: FreeModule | int | NoneValue, v: Any) -> 
 map_modules.m2_options = ("Degree",)
 
 
+@command("map", dialect="m2")
+@in_quotients
+def map_identity(M: FreeModule) -> Map:
+    """map M of a free module: its identity map."""
+    return identity(M)
+
+
 @command("id", dialect="m2")
 @in_quotients
 def identity(M: FreeModule) -> Map:
