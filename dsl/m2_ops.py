@@ -13,6 +13,7 @@ from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, Map, quotient_module, rows, scaled
 from .m2_submodules import Module
+from .m2_vectors import Vector, vector_arith
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -114,6 +115,10 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return strictly_equal(a, b)
     if op == "=!=":
         return not strictly_equal(a, b)
+    if isinstance(a, Vector) or isinstance(b, Vector):
+        v = vector_arith(op, a, b)
+        if v is not NotImplemented:
+            return v
     if op == ":" and type(a) is int:  # n copies of anything, a symbol too
         if a < 0:
             raise MechRuntimeError("n : x takes n >= 0")

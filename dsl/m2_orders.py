@@ -81,7 +81,7 @@ def _block(kind: str, weights: list[int]) -> OrderBlock:
 def _prefix(key: str, value: Any, n: int, covered: int) -> OrderBlock:
     """``Weights => w`` or ``Eliminate k``: a weight row on the variables from ``covered`` on."""
     if key == "Weights":
-        w = list(value.items) if isinstance(value, List) else None
+        w = list(value.items) if isinstance(value, (List, ExprList)) else None  # 4:1 too
         if w is None or not all(type(x) is int for x in w) or len(w) > n - covered:
             raise MechRuntimeError(f"Weights => {{...}} takes at most {n - covered} integers")
         if any(abs(x) > MAX_WEIGHT for x in w):

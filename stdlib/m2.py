@@ -163,6 +163,9 @@ def matrix(ctx, rows: List) -> Matrix:
     with 0 for a zero block)."""
     if any(isinstance(x, Matrix) for r in rows.items if isinstance(r, List) for x in r.items):
         return _blocks(rows)
+    if rows.items and all(type(x).__name__ == "Vector" for x in rows.items):  # matrix {v1, v2}: columns
+        from .m2_vectors import columns_matrix
+        return columns_matrix(list(rows.items))
     ring = _first_ring(rows.items) or _integers_or_basering(ctx, rows.items)
     entries = [_polys(ctx, (r,), ring) for r in rows.items]
     if not entries or any(len(r) != len(entries[0]) for r in entries) or not isinstance(rows.items[0], List):
