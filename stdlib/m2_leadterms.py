@@ -1,5 +1,5 @@
 """Lead terms by the first parts of a monomial order in the Macaulay2 dialect (``dialect="m2"``):
-``leadTerm(n, f)`` and ``leadTerm(n, I)``."""
+``leadTerm(n, f)`` and ``leadTerm(n, I)``; lead terms of vectors (``leadTerm v``, ``Position =>``)."""
 from __future__ import annotations
 
 from typing import Callable
@@ -7,8 +7,9 @@ from typing import Callable
 from ..dsl.errors import MechRuntimeError
 from ..dsl.m2_rings import in_quotients, tower_terms
 from ..dsl.registry import command
+from ..dsl.m2_vectors import Vector
 from ..dsl.values import Ideal, Matrix
-from ..kernel import Poly, PolyRing
+from ..kernel import MonomialOrder, Poly, PolyRing
 from .m2 import _gb, _no_zz
 
 
@@ -30,12 +31,12 @@ def order_parts(ring: PolyRing, n: int) -> list[Part]:
             weights = True
             continue
         lo, hi = pos, pos + block.size
-        pos = hi
         if block.kind in ("Dp", "Wp"):
             parts.append(_weigh(dict(block.sparse_rows(lo)[0])))
         elif block.kind not in ("dp", "wp", "ds", "ws") and not (block.kind == "lp" and not weights):
             break
         parts.append(lambda e, lo=lo, hi=hi: e[lo:hi])
+        pos = hi
         if weights:  # after weights, Macaulay2 1.21 counts the parts of a second block otherwise
             break
     if len(parts) < n and pos < ring.nvars:
@@ -73,3 +74,29 @@ def lead_term_part(n: int, f: Poly | Ideal) -> Poly | Matrix:
     parts = order_parts(ring, n)
     lead = [lead_part(g, parts) for g in gens]
     return Matrix(ring, 1, len(lead), lead) if isinstance(f, Ideal) else lead[0]
+
+
+@command("leadTerm", dialect="m2")
+@in_quotients
+def lead_term_vector(v: Vector) -> Vector:
+    """leadTerm v of a vector: its largest term by the order of the free module (the ring's monomial
+    order with the basis index where ``Position => Up|Down`` puts it: by default last, Up)."""
+    ring = v.ring
+    blocks = ring.order.blocks
+    count, way = v.module.ring.info.get("position", (len(blocks), "Up"))
+    if 0 < count < len(blocks) and any(b.kind == "a" for b in blocks):
+        raise MechRuntimeError("leadTerm of a vector: Position between blocks with Weights is not supported by mech")
+    m = sum(b.size for b in blocks[:count] if b.kind != "a")
+    first = MonomialOrder(blocks[:count], m).key if count else None
+    second = MonomialOrder(blocks[count:], ring.nvars - m).key if count < len(blocks) else None
+
+    def key(e: tuple[int, ...], i: int) -> tuple:
+        return (first(e[:m]) if first else (), i if way == "Up" else -i, second(e[m:]) if second else ())
+    terms = [(key(e, i), i, e, c) for i, p in enumerate(v.entries) for e, c in p.terms.items()]
+    if not terms:
+        return v
+    _, i, e, c = max(terms, key=lambda t: t[0])
+    return Vector(v.module, [Poly(ring, {e: c}) if j == i else ring.zero() for j in range(len(v.entries))])
+
+
+lead_term_vector.zz_ok = True
