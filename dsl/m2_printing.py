@@ -121,7 +121,8 @@ def to_string(v: Any) -> str:
     if isinstance(v, Vector):
         return "vector {" + ", ".join(poly_str(p) for p in v.entries) + "}"
     if isinstance(v, FreeModule):
-        return f"{to_string(v.ring)}^{v.rank}"
+        base = to_string(v.ring)
+        return f"{base if base.isidentifier() else f'({base})'}^{v.rank}"
     if isinstance(v, Module):
         return f"{v.kind} {to_string(v.matrix)}"
     if isinstance(v, BettiTally):

@@ -5,6 +5,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
+from ..dsl.m2_modules import with_default_degrees
 from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, is_integral, normal
 from ..dsl.m2_values import Factored, Opt
@@ -40,6 +41,7 @@ def jacobian_ring(R: Ring) -> Matrix:
 
 
 @command("minors", dialect="m2")
+@in_quotients
 def minors(ctx, k: int, M: Matrix) -> Ideal:
     """minors(k, M): the ideal of the k x k minors of M (column subsets outermost, as Macaulay2
     lists them; zero minors left out; Limit => n: the first n; k <= 0: the unit ideal)."""
@@ -54,7 +56,7 @@ def minors(ctx, k: int, M: Matrix) -> Ideal:
     for cols in combinations(range(1, M.ncols + 1), k):
         for rows in combinations(range(1, M.nrows + 1), k):
             sub = KM.Matrix(M.ring, k, k, [M.get(i, j) for i in rows for j in cols])
-            d = KM.det(sub)
+            d = normal(KM.det(sub))  # in a quotient ring: the normal form
             if not d.is_zero():
                 found.append(d)
     limit = ctx.m2_options.get("Limit")
@@ -87,6 +89,24 @@ def permanents(k: int, M: Matrix) -> Ideal:
             if not perm.is_zero():
                 found.append(perm)
     return Ideal(M.ring, found, is_std=not found)
+
+
+@command("exteriorPower", dialect="m2")
+def exterior_power(k: int, M: Matrix) -> Matrix:
+    """exteriorPower(k, M): the matrix of M's k x k minors, rows and columns indexed by the k-subsets
+    of M's rows and columns in Macaulay2's order (by their largest element, then the next...)."""
+    from itertools import combinations
+
+    from ..kernel import matrix as KM
+    if k < 0:
+        raise MechRuntimeError("exteriorPower(k, M) takes k >= 0")
+
+    def subsets(n: int) -> list[tuple[int, ...]]:
+        return sorted(combinations(range(1, n + 1), k), key=lambda s: s[::-1])
+    rows, cols = subsets(M.nrows), subsets(M.ncols)
+    entries = [KM.det(KM.Matrix(M.ring, k, k, [M.get(i, j) for i in r for j in c])) if k else M.ring.one()
+               for r in rows for c in cols]
+    return with_default_degrees(Matrix(M.ring, len(rows), len(cols), entries))
 
 
 @command("det", dialect="m2")

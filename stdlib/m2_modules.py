@@ -175,6 +175,13 @@ def transpose(M: Matrix) -> Matrix:
                entries, -map_degree(M))
 
 
+@command("dual", dialect="m2")
+@in_quotients
+def dual(M: Matrix) -> Matrix:
+    """dual f of a map between free modules: its transpose."""
+    return transpose(M)
+
+
 @command("transpose", dialect="m2")
 @in_quotients
 def transpose_table(T: List) -> List:

@@ -72,6 +72,17 @@ I = ideal(x*z-y^2, z*(y*w-z^2)-w*(x*w-y*z));
 print length(RP^1/promote(I, RP))
 """,
      '3\n6\n2\n'),
+    ("exterior_dual", """R = QQ[a..f];
+print toString exteriorPower(2, matrix {{a, b, c}, {d, e, f}})
+print toString exteriorPower(0, matrix {{a, b}, {c, d}})
+QQ[x,y];
+f = matrix {{x^2, x*y}, {0, y^2}};
+print toString dual f
+print toString target dual f
+S = QQ[u,v]/(u^2-v^2);
+print toString minors(2, matrix {{u, v}, {v, u}})
+""",
+     'matrix {{-b*d+a*e, -c*d+a*f, -c*e+b*f}}\nmatrix {{1}}\nmatrix {{x^2, 0}, {x*y, y^2}}\n(QQ[x..y])^2\nideal()\n'),
 ]
 
 
