@@ -232,15 +232,38 @@ def _bar(a: Any, b: Any) -> Any:
     if isinstance(a, Matrix) and isinstance(b, Matrix):
         if a.nrows != b.nrows:
             raise MechRuntimeError("A | B: the matrices need as many rows")
+        a, b = _one_ring(a, b)
         rows = [list(r) + list(s) for r, s in zip(a.rows(), b.rows())]
         return Matrix(a.ring, a.nrows, a.ncols + b.ncols, [p for r in rows for p in r])
     raise MechTypeError(f"no operator | for a {typeof(a)} and a {typeof(b)}")
+
+
+def _one_ring(a: Matrix, b: Matrix) -> tuple[Matrix, Matrix]:
+    """Two matrices over one ring: the entries of one promoted to the other's ring (a matrix of
+    integers over ZZ: its numbers), as Macaulay2 joins them."""
+    if a.ring is b.ring:
+        return a, b
+    from .m2_rings import integers
+    ra, rb = getattr(a.ring, "owner", None), getattr(b.ring, "owner", None)
+    for x, rx, ry in ((b, rb, ra), (a, ra, rb)):
+        if ry is None:
+            continue
+        if rx is not None and promotes(rx, ry):
+            moved = [promote(p, ry) for p in x.entries]
+        elif rx is not None and rx is integers():
+            moved = [ry.poly.const(ry.poly.field(int(p.terms.get((), 0)))) for p in x.entries]
+        else:
+            continue
+        y = Matrix(ry.poly, x.nrows, x.ncols, moved)
+        return (a, y) if x is b else (y, b)
+    raise MechTypeError("the matrices are over different rings")
 
 
 def _vbar(a: Any, b: Any) -> Any:
     if isinstance(a, Matrix) and isinstance(b, Matrix):
         if a.ncols != b.ncols:
             raise MechRuntimeError("A || B: the matrices need as many columns")
+        a, b = _one_ring(a, b)
         return Matrix(a.ring, a.nrows + b.nrows, a.ncols, list(a.entries) + list(b.entries))
     raise MechTypeError(f"no operator || for a {typeof(a)} and a {typeof(b)}")
 
