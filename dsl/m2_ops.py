@@ -158,6 +158,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return _frobenius(a, b)
     if op == "^" and isinstance(a, Matrix) and isinstance(b, List):  # M^{i, ...}: rows
         return rows(a, [to_int(i) for i in b.items])
+    if op == "/" and isinstance(a, FreeModule) and isinstance(b, Module) and b.kind == "image" and b.ambient == a:
+        return Module("cokernel", b.matrix)  # F / (a submodule of F)
     if op == "/" and isinstance(a, FreeModule):
         return quotient_module(a, b)
     if op in ("==", "!=") and isinstance(a, M2Ring) and b == 0 and type(b) is int:  # R == 0: the zero ring

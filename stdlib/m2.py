@@ -341,7 +341,10 @@ def eliminate_ideal_first(I: Ideal, variables: List | Poly) -> Ideal:
 
 @operator(":", dialect="m2")
 def quotient(a: Any, b: Any) -> Ideal:
-    """``I : J`` (``I : f``), the ideal quotient."""
+    """``I : J`` (``I : f``), the ideal quotient; ``M : N`` of submodules: an ideal (:mod:`.m2_modquot`)."""
+    if type(a).__name__ == "Module":
+        from .m2_modquot import module_quotient
+        return module_quotient(a, b)
     if isinstance(a, Ideal) and isinstance(b, (Ideal, Poly)):
         _global(a, "the ideal quotient")
         other = b.nonzero() if isinstance(b, Ideal) else [b]

@@ -83,6 +83,20 @@ S = QQ[u,v]/(u^2-v^2);
 print toString minors(2, matrix {{u, v}, {v, u}})
 """,
      'matrix {{-b*d+a*e, -c*d+a*f, -c*e+b*f}}\nmatrix {{1}}\nmatrix {{x^2, 0}, {x*y, y^2}}\n(QQ[x..y])^2\nideal()\n'),
+    ("module_quotients", """R = QQ[a..d];
+M = image matrix {{a, b}, {c, d}};
+print toString quotient(M, R^2)
+print toString (M : image matrix {{a}, {0}})
+print toString quotient(image matrix {{a*b, 0}, {0, b}}, image matrix {{a}, {b}})
+print toString ann(R^2/M)
+""",
+     'ideal(b*c-a*d)\nideal(b*c-a*d)\nideal b\nideal(b*c-a*d)\n'),
+    ("eliminate_over_ZZ", """R = ZZ[x,a,b];
+print toString eliminate(ideal(x^3+a*x+b, 6*x^2+4*a), x)
+print toString eliminate(ideal(-x^2+3, 2*x-2), x)
+print toString eliminate(ideal(x^2-a*x+1, b*x^2+2), x)
+""",
+     'ideal(4*a^3+54*b^2)\nideal 4\nideal(2*a^2*b+b^2-4*b+4)\n'),
 ]
 
 
