@@ -43,7 +43,9 @@ def build_ring(node: RingCons, base: Any, evaluate: Callable[[A.Expr], Any], sho
     blocks = order_blocks(spec, len(names), degrees)
     size = options.get("MonomialSize")
     ring = polynomial_ring(base, names, blocks, degrees, (2 ** (to_int(size) - 1)) if size is not None else None)
-    ring.info["position"] = position(spec, len(names), degrees)
+    where = position(spec, len(names), degrees)
+    if where != (len(blocks), "Up"):  # Position => ... not at its default place
+        ring.info["position"] = where
     if graded is not None:  # several degree components, or degrees not positive: Macaulay2's own, kept
         ring.info["multidegrees"] = graded
     want = options.get("Global", True)
