@@ -17,7 +17,7 @@ from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
 from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, _trim, gens
-from .m2_matrices import sub
+from .m2_matrices import at_integers, sub
 from .standard import normalize
 
 
@@ -321,23 +321,9 @@ def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> An
         if f.ring.field.characteristic and all(p.is_constant() for p in where.entries):
             if not isinstance(f, Poly):
                 raise MechRuntimeError("substitute(I, matrix of integers) over ZZ/p is not supported by mech")
-            return _at_integers(f, [int(p.terms.get((), 0)) for p in where.entries])
+            return at_integers(f, [int(p.terms.get((), 0)) for p in where.entries])
         return map_value(f, list(where.entries), where.ring)
     return sub(ctx, f, where)
-
-
-def _at_integers(f: Poly, values: list[int]) -> int:
-    """f (over ZZ/p) at integers, as Macaulay2 substitutes into ZZ: each coefficient lifted to the
-    integer of least absolute value (p/2 for -p/2), the value an integer."""
-    p = f.ring.field.characteristic
-    total = 0
-    for e, c in f.terms.items():
-        c = int(c) % p
-        term = c - p if c > p // 2 else c
-        for v, k in zip(values, e):
-            term *= v ** k
-        total += term
-    return total
 
 
 @command("ring", dialect="m2")

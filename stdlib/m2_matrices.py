@@ -253,3 +253,17 @@ def submatrix_without(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
     i = set(_positions(rows, M.nrows, "rows", False) or ())
     j = set(_positions(cols, M.ncols, "columns", False) or ())
     return _submatrix(M, [k for k in range(M.nrows) if k not in i], [k for k in range(M.ncols) if k not in j])
+
+
+def at_integers(f: Poly, values: list[int]) -> int:
+    """f (over ZZ/p) at integers, as Macaulay2 substitutes into ZZ: each coefficient lifted to the
+    integer of least absolute value (p/2 for -p/2), the value an integer."""
+    p = f.ring.field.characteristic
+    total = 0
+    for e, c in f.terms.items():
+        c = int(c) % p
+        term = c - p if c > p // 2 else c
+        for v, k in zip(values, e):
+            term *= v ** k
+        total += term
+    return total
