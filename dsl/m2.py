@@ -30,6 +30,7 @@ from .m2_printing import to_string
 from .m2_ringcons import build_ring, variable_names
 from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
+from .m2_vectors import Vector
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Factored, Iterator,
                         M2Function, M2Set, Monoid, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
@@ -428,7 +429,7 @@ class M2Interpreter(M2Control, Interpreter):
         v = self.eval(node.operand)
         if node.op == "-" and isinstance(v, Symbol) and v.name not in SYMBOLS:
             raise MechNameError(f"unknown identifier '{v.name}'")
-        return v if node.op == "+" else ops.negate(v)
+        return v if node.op == "+" else -v if isinstance(v, Vector) else ops.negate(v)
 
 
 #: options of Macaulay2's functions that do not change the value (how it is computed, what is printed)

@@ -13,6 +13,7 @@ from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, Map, quotient_module, rows, scaled
 from .m2_submodules import Module
+from .m2_vectors import Vector, vector_arith
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
@@ -114,6 +115,10 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return strictly_equal(a, b)
     if op == "=!=":
         return not strictly_equal(a, b)
+    if isinstance(a, Vector) or isinstance(b, Vector):
+        v = vector_arith(op, a, b)
+        if v is not NotImplemented:
+            return v
     if op == ":" and type(a) is int:  # n copies of anything, a symbol too
         if a < 0:
             raise MechRuntimeError("n : x takes n >= 0")
@@ -146,10 +151,15 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return quotient_ring(a, _relations(a, b))
     if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):
         return free_module(a, b)
+    if op == "^" and isinstance(a, CoeffRing) and a.name == "ZZ" and type(b) is int:  # ZZ^n
+        from .m2_rings import integers
+        return free_module(integers(), b)
     if op == "^" and isinstance(a, Ideal) and isinstance(b, Array):
         return _frobenius(a, b)
     if op == "^" and isinstance(a, Matrix) and isinstance(b, List):  # M^{i, ...}: rows
         return rows(a, [to_int(i) for i in b.items])
+    if op == "/" and isinstance(a, FreeModule) and isinstance(b, Module) and b.kind == "image" and b.ambient == a:
+        return Module("cokernel", b.matrix)  # F / (a submodule of F)
     if op == "/" and isinstance(a, FreeModule):
         return quotient_module(a, b)
     if op in ("==", "!=") and isinstance(a, M2Ring) and b == 0 and type(b) is int:  # R == 0: the zero ring
@@ -224,15 +234,38 @@ def _bar(a: Any, b: Any) -> Any:
     if isinstance(a, Matrix) and isinstance(b, Matrix):
         if a.nrows != b.nrows:
             raise MechRuntimeError("A | B: the matrices need as many rows")
+        a, b = _one_ring(a, b)
         rows = [list(r) + list(s) for r, s in zip(a.rows(), b.rows())]
         return Matrix(a.ring, a.nrows, a.ncols + b.ncols, [p for r in rows for p in r])
     raise MechTypeError(f"no operator | for a {typeof(a)} and a {typeof(b)}")
+
+
+def _one_ring(a: Matrix, b: Matrix) -> tuple[Matrix, Matrix]:
+    """Two matrices over one ring: the entries of one promoted to the other's ring (a matrix of
+    integers over ZZ: its numbers), as Macaulay2 joins them."""
+    if a.ring is b.ring:
+        return a, b
+    from .m2_rings import integers
+    ra, rb = getattr(a.ring, "owner", None), getattr(b.ring, "owner", None)
+    for x, rx, ry in ((b, rb, ra), (a, ra, rb)):
+        if ry is None:
+            continue
+        if rx is not None and promotes(rx, ry):
+            moved = [promote(p, ry) for p in x.entries]
+        elif rx is not None and rx is integers():
+            moved = [ry.poly.const(ry.poly.field(int(p.terms.get((), 0)))) for p in x.entries]
+        else:
+            continue
+        y = Matrix(ry.poly, x.nrows, x.ncols, moved)
+        return (a, y) if x is b else (y, b)
+    raise MechTypeError("the matrices are over different rings")
 
 
 def _vbar(a: Any, b: Any) -> Any:
     if isinstance(a, Matrix) and isinstance(b, Matrix):
         if a.ncols != b.ncols:
             raise MechRuntimeError("A || B: the matrices need as many columns")
+        a, b = _one_ring(a, b)
         return Matrix(a.ring, a.nrows + b.nrows, a.ncols, list(a.entries) + list(b.entries))
     raise MechTypeError(f"no operator || for a {typeof(a)} and a {typeof(b)}")
 

@@ -22,12 +22,13 @@ def _items(spec: Any) -> list[Any]:
     return out
 
 
-def order_blocks(spec: Any, n: int, degrees: Sequence[int] = ()) -> list[OrderBlock]:
+def order_blocks(spec: Any, n: int, degrees: Sequence[int] = (), fill: bool = True) -> list[OrderBlock]:
     """Singular's blocks for Macaulay2's ``MonomialOrder => spec`` on ``n`` variables of these
     ``degrees``: GRevLex (dp, or wp by the degrees), Lex (lp), GLex (Dp or Wp), RevLex (the
     negative reversed unit matrix), ``Weights => w`` (a weight row), ``Eliminate k`` (the weight
     row 1,..,1,0,..,0), a number k (GRevLex on k variables), ``Kind => k`` or ``Kind => {weights}``
-    and lists of these (``{GRevLex => 2, Lex => 3}``: blocks); variables left over get GRevLex."""
+    and lists of these (``{GRevLex => 2, Lex => 3}``: blocks); variables left over get GRevLex
+    (``fill``: unless False)."""
     degrees = list(degrees) or [1] * n
     items = _items(spec)
     blocks: list[OrderBlock] = []
@@ -62,9 +63,22 @@ def order_blocks(spec: Any, n: int, degrees: Sequence[int] = ()) -> list[OrderBl
             raise MechRuntimeError(f"the monomial order covers more than the {n} variables")
         blocks.append(_block(kind, weights or degrees[covered:covered + size]))
         covered += size
-    if covered < n:
+    if covered < n and fill:
         blocks.append(_block("GRevLex", degrees[covered:]))
     return blocks
+
+
+def position(spec: Any, n: int, degrees: Sequence[int] = ()) -> tuple[int, str]:
+    """Where ``Position => Up|Down`` puts the free modules' basis index among the order's blocks:
+    (the number of blocks before it, "Up" or "Down"); without it: after all blocks, Up."""
+    items = _items(spec)
+    for k, item in enumerate(items):
+        if isinstance(item, Opt) and isinstance(item.key, Symbol) and item.key.name == "Position":
+            way = item.value.name if isinstance(item.value, Symbol) else ""
+            if way not in ("Up", "Down"):
+                raise MechRuntimeError("Position => Up or Position => Down")
+            return len(order_blocks(List(items[:k]), n, degrees, fill=False)), way
+    return len(order_blocks(spec, n, degrees)), "Up"
 
 
 def _block(kind: str, weights: list[int]) -> OrderBlock:
@@ -81,7 +95,7 @@ def _block(kind: str, weights: list[int]) -> OrderBlock:
 def _prefix(key: str, value: Any, n: int, covered: int) -> OrderBlock:
     """``Weights => w`` or ``Eliminate k``: a weight row on the variables from ``covered`` on."""
     if key == "Weights":
-        w = list(value.items) if isinstance(value, List) else None
+        w = list(value.items) if isinstance(value, (List, ExprList)) else None  # 4:1 too
         if w is None or not all(type(x) is int for x in w) or len(w) > n - covered:
             raise MechRuntimeError(f"Weights => {{...}} takes at most {n - covered} integers")
         if any(abs(x) > MAX_WEIGHT for x in w):

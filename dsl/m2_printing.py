@@ -15,6 +15,7 @@ from typing import Any
 from ..kernel import Poly
 from .m2_local import LocalFraction
 from .m2_modules import CyclicModule, FreeModule
+from .m2_vectors import Vector
 from .m2_submodules import BettiTally, ChainComplex, Module, betti_to_string
 from .m2_rings import TEXT, tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, Iterator, M2Function, M2Set, Monoid,
@@ -117,8 +118,11 @@ def to_string(v: Any) -> str:
     if isinstance(v, LocalFraction):
         num, den = poly_str(v.num), poly_str(v.den)
         return (f"({num})" if len(v.num.terms) > 1 else num) + "/" + (f"({den})" if len(v.den.terms) > 1 else den)
+    if isinstance(v, Vector):
+        return "vector {" + ", ".join(poly_str(p) for p in v.entries) + "}"
     if isinstance(v, FreeModule):
-        return f"{to_string(v.ring)}^{v.rank}"
+        base = to_string(v.ring)
+        return f"{base if base.isidentifier() else f'({base})'}^{v.rank}"
     if isinstance(v, Module):
         return f"{v.kind} {to_string(v.matrix)}"
     if isinstance(v, BettiTally):

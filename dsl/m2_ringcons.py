@@ -9,7 +9,7 @@ from typing import Any, Callable, Optional
 from . import ast as A
 from .errors import MechRuntimeError, MechSyntaxError, MechTypeError
 from .m2_ast import ListLit, Option, RingCons, Subscript, SymbolLit
-from .m2_orders import order_blocks
+from .m2_orders import order_blocks, position
 from .m2_rings import M2Ring, polynomial_ring
 from .m2_values import CoeffRing, Opt, Symbol
 from ..kernel import Poly
@@ -43,6 +43,9 @@ def build_ring(node: RingCons, base: Any, evaluate: Callable[[A.Expr], Any], sho
     blocks = order_blocks(spec, len(names), degrees)
     size = options.get("MonomialSize")
     ring = polynomial_ring(base, names, blocks, degrees, (2 ** (to_int(size) - 1)) if size is not None else None)
+    where = position(spec, len(names), degrees)
+    if where != (len(blocks), "Up"):  # Position => ... not at its default place
+        ring.info["position"] = where
     if graded is not None:  # several degree components, or degrees not positive: Macaulay2's own, kept
         ring.info["multidegrees"] = graded
     want = options.get("Global", True)

@@ -5,18 +5,18 @@ For an ideal I of R, ``I R_P ∩ R`` is the intersection of the primary componen
 primes lie in P (Atiyah–Macdonald, Prop. 4.9), so two ideals are equal in ``R_P`` exactly when
 their contractions are, and ``I R_P`` is the unit ideal when no associated prime of I lies in P.
 Sums, products, intersections, quotients and saturations commute with localization, so they are
-computed in R.  When P is maximal, the length of ``R_P / I R_P`` is ``dim_K R/Q / dim_K R/P`` for
-the P-primary component Q of I (0 when P is not associated to I)."""
+computed in R.  The length of ``R_P / I R_P`` comes from the P-primary component Q of I (0 when P is not
+associated to I): ``dim_K R/Q / dim_K R/P`` for a maximal P, ``deg Q / deg P`` otherwise."""
 from __future__ import annotations
 
 from typing import Sequence
 
 from .errors import NotSupported
 from .groebner import groebner, normal_form
-from .hilbert import vdim
-from .ideals import intersect
+from .hilbert import mult, vdim
+from .ideals import dimension, dp_ring, intersect, move
 from .poly import Poly, PolyRing
-from .primdec import primdec_gtz
+from .primdec import is_prime, primdec_gtz
 
 
 def _inside(polys: Sequence[Poly], basis: Sequence[Poly]) -> bool:
@@ -50,16 +50,25 @@ def is_local_unit(f: Poly, prime: Sequence[Poly], ring: PolyRing) -> bool:
     return not normal_form(f, groebner(list(prime), ring)).is_zero()
 
 
-def local_length(ideal: Sequence[Poly], maximal: Sequence[Poly], ring: PolyRing) -> int:
-    """The length of ``R_P / I R_P`` for a maximal ideal P."""
-    P = groebner(list(maximal), ring)
-    residue = vdim([p.lm() for p in P], ring.nvars)
-    if residue <= 0:
-        raise NotSupported("the length of R_P/I is computed for a maximal ideal P only")
+def local_length(ideal: Sequence[Poly], prime: Sequence[Poly], ring: PolyRing) -> int:
+    """The length of ``R_P / I R_P`` for a prime P: for the P-primary contraction Q of I (P minimal
+    over it; otherwise the length is infinite), ``dim_K R/Q / dim_K R/P`` when P is maximal, else
+    ``deg Q / deg P`` (degrees of the projective closures, by the associativity formula for
+    multiplicities: Q's closure is primary to P's, with the same length at its generic point)."""
+    P = groebner(list(prime), ring)
+    if not is_prime(P, ring):
+        raise NotSupported("the length of R_P/I needs a prime ideal P")
     local = contraction(ideal, P, ring)
     if any(p.is_constant() and not p.is_zero() for p in local):
         return 0
-    n = vdim([p.lm() for p in local], ring.nvars)
-    if n < 0:
-        raise NotSupported("R_P/I has infinite length")
-    return n // residue
+    residue = vdim([p.lm() for p in P], ring.nvars)
+    if residue > 0:
+        n = vdim([p.lm() for p in local], ring.nvars)
+        if n < 0:
+            raise NotSupported("R_P/I has infinite length")
+        return n // residue
+    if dimension(local, ring) != dimension(P, ring):
+        raise NotSupported("R_P/I has infinite length (P is not a minimal prime of I)")
+    dp = dp_ring(ring)
+    e_local, e_prime = (mult([p.lm() for p in groebner(move(G, dp), dp)], ring.nvars) for G in (local, P))
+    return e_local // e_prime

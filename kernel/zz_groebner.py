@@ -165,7 +165,14 @@ def contains(basis: Sequence[Poly], f: Poly) -> bool:
 
 
 def eliminate(F: Sequence[Poly], indices: Sequence[int], ring: PolyRing) -> list[Poly]:
-    """A strong Gröbner basis of the ideal of F intersected with ZZ[the other variables]."""
+    """A strong Gröbner basis of the ideal of F intersected with ZZ[the other variables] (of two
+    polynomials, one monic in the one variable eliminated: its generator, :mod:`.zz_elimination`)."""
+    F = [f for f in F if not f.is_zero()]
+    if len(F) == 2 and len(set(indices)) == 1:
+        from .zz_elimination import eliminate_pair
+        pair = eliminate_pair(F[0], F[1], list(indices)[0], ring)
+        if pair is not None:
+            return pair
     n = ring.nvars
     gone = sorted(set(indices))
     keep = [i for i in range(n) if i not in gone]

@@ -163,6 +163,9 @@ def matrix(ctx, rows: List) -> Matrix:
     with 0 for a zero block)."""
     if any(isinstance(x, Matrix) for r in rows.items if isinstance(r, List) for x in r.items):
         return _blocks(rows)
+    if rows.items and all(type(x).__name__ == "Vector" for x in rows.items):  # matrix {v1, v2}: columns
+        from .m2_vectors import columns_matrix
+        return columns_matrix(list(rows.items))
     ring = _first_ring(rows.items) or _integers_or_basering(ctx, rows.items)
     entries = [_polys(ctx, (r,), ring) for r in rows.items]
     if not entries or any(len(r) != len(entries[0]) for r in entries) or not isinstance(rows.items[0], List):
@@ -338,7 +341,10 @@ def eliminate_ideal_first(I: Ideal, variables: List | Poly) -> Ideal:
 
 @operator(":", dialect="m2")
 def quotient(a: Any, b: Any) -> Ideal:
-    """``I : J`` (``I : f``), the ideal quotient."""
+    """``I : J`` (``I : f``), the ideal quotient; ``M : N`` of submodules: an ideal (:mod:`.m2_modquot`)."""
+    if type(a).__name__ == "Module":
+        from .m2_modquot import module_quotient
+        return module_quotient(a, b)
     if isinstance(a, Ideal) and isinstance(b, (Ideal, Poly)):
         _global(a, "the ideal quotient")
         other = b.nonzero() if isinstance(b, Ideal) else [b]

@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
-from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, normal, quotient_ring, term_degree,
+from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, is_integral, normal, quotient_ring, term_degree,
                              tower_terms)
 from ..dsl.m2_values import MonomialIdeal, Opt, RingMap
 from ..dsl.registry import command, operator
@@ -17,7 +17,7 @@ from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring
 from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
 from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, _trim, gens
-from .m2_matrices import sub
+from .m2_matrices import at_integers, sub
 from .standard import normalize
 
 
@@ -33,13 +33,17 @@ def _owner(ring: PolyRing) -> M2Ring:
 @in_quotients
 def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
     """monomialIdeal(m1, m2, ...) (a list or matrix too): the monomial ideal of their lead
-    monomials; monomialIdeal I: of the lead monomials of a Gröbner basis of I; on its minimal
-    generators."""
+    monomials; monomialIdeal I: of the lead monomials of a Gröbner basis of I (over ZZ: a strong
+    one); on its minimal generators."""
     ring = _first_ring(args) or ctx.basering().poly
     items = args
     if len(args) == 1 and isinstance(args[0], Ideal) and not isinstance(args[0], MonomialIdeal):
-        _no_zz(args[0], "monomialIdeal")
-        items = _gb(args[0]).gens
+        I = args[0]
+        if is_integral(I.ring):  # the lead monomials of a strong Gröbner basis over ZZ
+            from ..kernel.zz_groebner import strong_basis
+            items = tuple(strong_basis(list(I.nonzero()), I.ring))
+        else:
+            items = _gb(I).gens
     monos = {p.lm() for p in _polys(ctx, tuple(items), ring) if not p.is_zero()}
     minimal = [m for m in monos if not any(o != m and all(a <= b for a, b in zip(o, m)) for o in monos)]
     return MonomialIdeal(ring, [ring.monomial(m) for m in sorted(minimal, reverse=True)])
@@ -315,8 +319,9 @@ def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> An
         if where.nrows != 1 or where.ncols != f.ring.nvars:
             raise MechRuntimeError(f"substitute(f, M): M is one row of {f.ring.nvars} entries")
         if f.ring.field.characteristic and all(p.is_constant() for p in where.entries):
-            raise MechRuntimeError("substitute(f, matrix of integers): the value is an integer of ZZ in Macaulay2, "
-                                   "which mech has no ring for")
+            if not isinstance(f, Poly):
+                raise MechRuntimeError("substitute(I, matrix of integers) over ZZ/p is not supported by mech")
+            return at_integers(f, [int(p.terms.get((), 0)) for p in where.entries])
         return map_value(f, list(where.entries), where.ring)
     return sub(ctx, f, where)
 

@@ -109,7 +109,7 @@ def is_well_defined(S: M2Ring) -> bool:
 @command("length", dialect="m2")
 @in_local_rings
 def length(M: CyclicModule) -> int:
-    """length(R_P^1/I): the length of R_P/I for a maximal ideal P."""
+    """length(R_P^1/I): the length of R_P/I (finite when P is a minimal prime of I)."""
     S = M.ring.owner
     P = localized_at(S)
     if P is None:

@@ -5,6 +5,7 @@ from fractions import Fraction
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError, MechTypeError
+from ..dsl.m2_modules import with_default_degrees
 from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, is_integral, normal
 from ..dsl.m2_values import Factored, Opt
@@ -40,6 +41,7 @@ def jacobian_ring(R: Ring) -> Matrix:
 
 
 @command("minors", dialect="m2")
+@in_quotients
 def minors(ctx, k: int, M: Matrix) -> Ideal:
     """minors(k, M): the ideal of the k x k minors of M (column subsets outermost, as Macaulay2
     lists them; zero minors left out; Limit => n: the first n; k <= 0: the unit ideal)."""
@@ -54,7 +56,7 @@ def minors(ctx, k: int, M: Matrix) -> Ideal:
     for cols in combinations(range(1, M.ncols + 1), k):
         for rows in combinations(range(1, M.nrows + 1), k):
             sub = KM.Matrix(M.ring, k, k, [M.get(i, j) for i in rows for j in cols])
-            d = KM.det(sub)
+            d = normal(KM.det(sub))  # in a quotient ring: the normal form
             if not d.is_zero():
                 found.append(d)
     limit = ctx.m2_options.get("Limit")
@@ -64,6 +66,47 @@ def minors(ctx, k: int, M: Matrix) -> Ideal:
 
 
 minors.m2_options = ("Limit",)
+
+
+@command("permanents", dialect="m2")
+def permanents(k: int, M: Matrix) -> Ideal:
+    """permanents(k, M): the ideal of the permanents of the k x k submatrices of M (the sums over
+    permutations without signs; zero ones left out)."""
+    from itertools import combinations, permutations
+    if k <= 0:
+        return Ideal(M.ring, [M.ring.one()])
+    if k > min(M.nrows, M.ncols):
+        raise MechRuntimeError(f"permanents: k must be between 1 and {min(M.nrows, M.ncols)}")
+    found = []
+    for rows in combinations(range(1, M.nrows + 1), k):
+        for cols in combinations(range(1, M.ncols + 1), k):
+            perm = M.ring.zero()
+            for sigma in permutations(cols):
+                term = M.ring.one()
+                for i, j in zip(rows, sigma):
+                    term = term * M.get(i, j)
+                perm = perm + term
+            if not perm.is_zero():
+                found.append(perm)
+    return Ideal(M.ring, found, is_std=not found)
+
+
+@command("exteriorPower", dialect="m2")
+def exterior_power(k: int, M: Matrix) -> Matrix:
+    """exteriorPower(k, M): the matrix of M's k x k minors, rows and columns indexed by the k-subsets
+    of M's rows and columns in Macaulay2's order (by their largest element, then the next...)."""
+    from itertools import combinations
+
+    from ..kernel import matrix as KM
+    if k < 0:
+        raise MechRuntimeError("exteriorPower(k, M) takes k >= 0")
+
+    def subsets(n: int) -> list[tuple[int, ...]]:
+        return sorted(combinations(range(1, n + 1), k), key=lambda s: s[::-1])
+    rows, cols = subsets(M.nrows), subsets(M.ncols)
+    entries = [KM.det(KM.Matrix(M.ring, k, k, [M.get(i, j) for i in r for j in c])) if k else M.ring.one()
+               for r in rows for c in cols]
+    return with_default_degrees(Matrix(M.ring, len(rows), len(cols), entries))
 
 
 @command("det", dialect="m2")
@@ -210,3 +253,17 @@ def submatrix_without(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
     i = set(_positions(rows, M.nrows, "rows", False) or ())
     j = set(_positions(cols, M.ncols, "columns", False) or ())
     return _submatrix(M, [k for k in range(M.nrows) if k not in i], [k for k in range(M.ncols) if k not in j])
+
+
+def at_integers(f: Poly, values: list[int]) -> int:
+    """f (over ZZ/p) at integers, as Macaulay2 substitutes into ZZ: each coefficient lifted to the
+    integer of least absolute value (p/2 for -p/2), the value an integer."""
+    p = f.ring.field.characteristic
+    total = 0
+    for e, c in f.terms.items():
+        c = int(c) % p
+        term = c - p if c > p // 2 else c
+        for v, k in zip(values, e):
+            term *= v ** k
+        total += term
+    return total

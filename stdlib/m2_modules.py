@@ -80,6 +80,13 @@ def map_modules(ctx, M: FreeModule, N: FreeModule | int | NoneValue, v: Any) -> 
 map_modules.m2_options = ("Degree",)
 
 
+@command("map", dialect="m2")
+@in_quotients
+def map_identity(M: FreeModule) -> Map:
+    """map M of a free module: its identity map."""
+    return identity(M)
+
+
 @command("id", dialect="m2")
 @in_quotients
 def identity(M: FreeModule) -> Map:
@@ -166,6 +173,13 @@ def transpose(M: Matrix) -> Matrix:
     tgt, src = M.target, M.source
     return Map(FreeModule(src.ring, tuple(-d for d in src.degrees)), FreeModule(tgt.ring, tuple(-d for d in tgt.degrees)),
                entries, -map_degree(M))
+
+
+@command("dual", dialect="m2")
+@in_quotients
+def dual(M: Matrix) -> Matrix:
+    """dual f of a map between free modules: its transpose."""
+    return transpose(M)
 
 
 @command("transpose", dialect="m2")

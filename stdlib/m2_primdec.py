@@ -59,6 +59,15 @@ def top_components(I: Ideal) -> Ideal:
     return _intersection(I, [q for q, _, d in comps if d == top])
 
 
+@command("isPrimary", dialect="m2")
+@in_quotients
+def is_primary_over(Q: Ideal, P: Ideal) -> bool:
+    """isPrimary(Q, P), P the radical of Q: as Macaulay2 defines it, whether P is prime and Q has no
+    components of lower dimension (Q == topComponents Q)."""
+    from .m2 import _gb, is_prime
+    return is_prime(P) and _gb(Q).gens == _gb(top_components(Q)).gens
+
+
 @command("removeLowestDimension", dialect="m2")
 @in_quotients
 def remove_lowest_dimension(I: Ideal) -> Ideal:
