@@ -10,7 +10,7 @@ from mech.kernel import QQ, MonomialOrder, PolyRing
 from mech.kernel.real_curve import _plane_ranks, _rank_mod_p
 from mech.kernel.real_fibers import Fibres, complete_intersection
 from mech.kernel.real_roots import isolate_real_roots, sign_at
-from mech.kernel.real_solve import QuotientAlgebra, rur
+from mech.kernel.real_solve import QuotientAlgebra
 from mech.kernel.real_chart import Chart
 from mech.kernel.groebner import groebner
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.util import error, run, run_singular
+from tests.util import run, run_singular
 
 BASICS = """ring r=0,(x,y,z),dp;
 vector v=[x,y2,0,1];
