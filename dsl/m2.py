@@ -23,14 +23,14 @@ from .m2_ast import (BreakExpr, Coeffs, Dot, ForLoop, Function, Generators, Hash
 from .m2_control import M2Control
 from .m2_local import LocalFraction, local_ring, localized_at
 from .m2_maps import apply_map
-from .m2_modules import columns, with_default_degrees
+from .m2_modules import FreeModule, columns, with_default_degrees
 from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
 from .m2_ringcons import build_ring, variable_names
 from .m2_rings import M2Ring, is_integral, normal, owner
 from .maps import map_value
-from .m2_vectors import Vector
+from .m2_vectors import Vector, basis_vector
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Factored, Iterator,
                         M2Function, M2Set, Monoid, Opt, Partial, RingMap, Symbol)
 from .scopes import Var
@@ -204,6 +204,8 @@ class M2Interpreter(M2Control, Interpreter):
             return base
         if isinstance(base, FUNCTIONS):
             return Partial(base, k)
+        if isinstance(base, FreeModule):  # F_i: the i-th basis vector
+            return basis_vector(base, to_int(k))
         if hasattr(base, "m2_entry"):  # C_i, C.dd_i of a resolution
             return base.m2_entry(to_int(k))
         if isinstance(k, List) and isinstance(base, Matrix):  # M_{j, ...}: columns

@@ -34,11 +34,6 @@ class FreeModule:
     def __hash__(self) -> int:
         return hash((id(self.ring), self.degrees))
 
-    def m2_entry(self, i: int) -> Any:
-        """``F_i``: the i-th basis vector."""
-        from .m2_vectors import basis_vector
-        return basis_vector(self, i)
-
 
 @dataclass(frozen=True, eq=False)
 class CyclicModule:

@@ -8,8 +8,8 @@ from typing import Any, Sequence
 
 from ..kernel import Poly
 from .errors import MechRuntimeError
-from .m2_modules import FreeModule
-from .values import Number
+from .m2_modules import FreeModule, Map, source_degrees
+from .values import Matrix, Number
 
 
 class Vector:
@@ -75,3 +75,13 @@ def vector_arith(op: str, a: Any, b: Any) -> Any:
     if op in ("==", "!=") and isinstance(a, Vector) and type(b) is int and b == 0:
         return all(p.is_zero() for p in a.entries) == (op == "==")
     return NotImplemented
+
+
+def columns_matrix(vectors: list[Vector]) -> Map:
+    """The matrix whose columns are these vectors (of one free module)."""
+    F = vectors[0].module
+    if any(v.module != F for v in vectors):
+        raise MechRuntimeError("matrix {v1, v2, ...} takes vectors of one free module")
+    entries = [v.entries[i] for i in range(F.rank) for v in vectors]
+    plain = Matrix(F.ring.poly, F.rank, len(vectors), entries)
+    return Map(F, FreeModule(F.ring, source_degrees(plain, F.degrees)), entries)

@@ -25,6 +25,7 @@ from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
 from ..kernel import Poly
 from ..kernel import ideals as K
 from ..kernel import zz_groebner as Z
+from .m2_trim import minimal as _minimal
 from .standard import normalize, standard_basis
 
 
@@ -164,7 +165,7 @@ def matrix(ctx, rows: List) -> Matrix:
     if any(isinstance(x, Matrix) for r in rows.items if isinstance(r, List) for x in r.items):
         return _blocks(rows)
     if rows.items and all(type(x).__name__ == "Vector" for x in rows.items):  # matrix {v1, v2}: columns
-        from .m2_vectors import columns_matrix
+        from ..dsl.m2_vectors import columns_matrix
         return columns_matrix(list(rows.items))
     ring = _first_ring(rows.items) or _integers_or_basering(ctx, rows.items)
     entries = [_polys(ctx, (r,), ring) for r in rows.items]
@@ -209,17 +210,6 @@ def _quotient_of(ring: Any) -> Any:
     """The :class:`~mech.kernel.quotient.Quotient` of a quotient ring's kernel ring (None otherwise)."""
     owner = getattr(ring, "owner", None)
     return owner.quotient if owner is not None else None
-
-
-def _minimal(I: Ideal, polys: list[Poly]) -> Ideal:
-    """The ideal of the Gröbner basis ``polys`` (increasing) on fewer generators, as Macaulay2
-    trims: from the largest down, an element in the ideal of the others is dropped."""
-    keep = [normalize(p) for p in polys]
-    for k in range(len(keep) - 1, -1, -1):
-        others = keep[:k] + keep[k + 1:]
-        if others and K.is_subset([keep[k]], others, ring=I.ring):
-            keep = others
-    return Ideal(I.ring, keep, is_std=len(keep) == len(polys))
 
 
 def _sorted(I: Ideal, polys: list[Poly]) -> list[Poly]:
@@ -343,7 +333,7 @@ def eliminate_ideal_first(I: Ideal, variables: List | Poly) -> Ideal:
 def quotient(a: Any, b: Any) -> Ideal:
     """``I : J`` (``I : f``), the ideal quotient; ``M : N`` of submodules: an ideal (:mod:`.m2_modquot`)."""
     if type(a).__name__ == "Module":
-        from .m2_modquot import module_quotient
+        from .m2_modquot import module_quotient  # registers quotient(M, N) after this module's own
         return module_quotient(a, b)
     if isinstance(a, Ideal) and isinstance(b, (Ideal, Poly)):
         _global(a, "the ideal quotient")

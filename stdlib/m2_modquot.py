@@ -13,6 +13,7 @@ from ..dsl.values import Ideal
 from ..kernel import Poly
 from ..kernel import ideals as K
 from ..kernel import modules as km
+from .m2_trim import minimal as _minimal
 
 
 def module_quotient(M: Module, N: Module | FreeModule) -> Ideal:
@@ -33,7 +34,6 @@ def module_quotient(M: Module, N: Module | FreeModule) -> Ideal:
         syz = km.syzygies(ring, rank, [n, *gens])
         parts.append([Poly(ring, {e: c for (e, k), c in s.items() if k == 0}) for s in syz] or [ring.zero()])
     polys = K.intersect(*parts, ring=ring) if len(parts) > 1 else parts[0] if parts else [ring.one()]
-    from .m2 import _minimal
     I = Ideal(ring, polys)
     return _minimal(I, sorted((p for p in K.std(polys, ring=ring) if not p.is_zero()),
                               key=lambda p: ring.order.key(p.lm())))

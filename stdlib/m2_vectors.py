@@ -3,12 +3,11 @@
 these columns); the values are :class:`mech.dsl.m2_vectors.Vector`."""
 from __future__ import annotations
 
-from ..dsl.errors import MechRuntimeError
-from ..dsl.m2_modules import FreeModule, Map, source_degrees
+from ..dsl.m2_modules import FreeModule, Map
 from ..dsl.m2_rings import in_quotients
-from ..dsl.m2_vectors import Vector
+from ..dsl.m2_vectors import Vector, columns_matrix
 from ..dsl.registry import command
-from ..dsl.values import List, Matrix
+from ..dsl.values import List
 from .m2 import matrix
 
 
@@ -26,16 +25,6 @@ def vector(ctx, entries: List) -> Vector:
 def entries_vector(v: Vector) -> List:
     """entries v: the entries of a vector."""
     return List(list(v.entries))
-
-
-def columns_matrix(vectors: list[Vector]) -> Map:
-    """The matrix whose columns are these vectors (of one free module)."""
-    F = vectors[0].module
-    if any(v.module != F for v in vectors):
-        raise MechRuntimeError("matrix {v1, v2, ...} takes vectors of one free module")
-    entries = [v.entries[i] for i in range(F.rank) for v in vectors]
-    plain = Matrix(F.ring.poly, F.rank, len(vectors), entries)
-    return Map(F, FreeModule(F.ring, source_degrees(plain, F.degrees)), entries)
 
 
 @command("matrix", dialect="m2")
