@@ -67,11 +67,54 @@ def interred(ctx, I: Ideal) -> Ideal:
 
 
 # ---------------------------------------------------------------- simplify
-def _scalar_multiple(a: Poly, b: Poly) -> bool:
-    if a.terms.keys() != b.terms.keys():
+def _scalar_multiple(a: Any, b: Any) -> bool:
+    """b = c*a for a constant c (polynomials or vectors, by their terms)."""
+    ta, tb = (a.terms if isinstance(a, Poly) else a.terms()), (b.terms if isinstance(b, Poly) else b.terms())
+    if ta.keys() != tb.keys():
         return False
-    c = b.lc() / a.lc()
-    return all(b.terms[e] == c * a.terms[e] for e in a.terms)
+    first = next(iter(ta))
+    c = tb[first] / ta[first]
+    return all(tb[t] == c * ta[t] for t in ta)
+
+
+def simplify_generators(gens: list[Any], flag: int, lead: Any, lead_divides: Any, monic: Any) -> list[Any]:
+    """Singular's clean-ups of a generating set (polynomials or vectors), by the bits of ``flag``: 32
+    deletes generators whose leading term is divisible by another's, 16 those with the leading term of
+    an earlier one, 8 scalar multiples of earlier ones, 4 copies of earlier ones (deleted generators
+    become 0), 2 drops the zeros, 1 makes the leading coefficients 1; ``zero`` stands for 0."""
+    g: list[Any] = list(gens)
+    n = len(g)
+    live = lambda k: g[k] is not None and not g[k].is_zero()  # noqa: E731
+    if flag & 32:
+        for i in range(n):
+            if not live(i):
+                continue
+            for j in range(i + 1, n):
+                if not live(j):
+                    continue
+                if lead_divides(lead(g[i]), lead(g[j])):
+                    g[j] = None
+                elif lead_divides(lead(g[j]), lead(g[i])):
+                    g[i] = None
+                    break
+
+    def drop_later(same: Any) -> None:
+        for i in range(n):
+            if not live(i):
+                continue
+            for j in range(i + 1, n):
+                if live(j) and same(g[i], g[j]):
+                    g[j] = None
+    if flag & 16:
+        drop_later(lambda a, b: lead(a) == lead(b))
+    if flag & 8:
+        drop_later(_scalar_multiple)
+    elif flag & 4:
+        drop_later(lambda a, b: a == b)
+    kept = [(k, g[k]) for k in range(n)]
+    if flag & 2:
+        kept = [(k, p) for k, p in kept if p is not None and not p.is_zero()]
+    return [None if p is None else monic(p) if flag & 1 and not p.is_zero() else p for _, p in kept]
 
 
 @command("simplify")
@@ -89,54 +132,9 @@ def simplify(f: Poly | Ideal, flag: int) -> Any:
     """
     if isinstance(f, Poly):
         return f.monic() if flag & 1 and not f.is_zero() else f
-    g: list[Any] = list(f.gens)
-    n = len(g)
-    if flag & 32:
-        for i in range(n):
-            if g[i] is None or g[i].is_zero():
-                continue
-            for j in range(i + 1, n):
-                if g[j] is None or g[j].is_zero():
-                    continue
-                if divides(g[i].lm(), g[j].lm()):
-                    g[j] = None
-                elif divides(g[j].lm(), g[i].lm()):
-                    g[i] = None
-                    break
-
-    def drop_later(same: Any) -> None:
-        for i in range(n):
-            if g[i] is None or g[i].is_zero():
-                continue
-            for j in range(i + 1, n):
-                if g[j] is not None and not g[j].is_zero() and same(g[i], g[j]):
-                    g[j] = None
-    if flag & 16:
-        drop_later(lambda a, b: a.lm() == b.lm())
-    if flag & 8:
-        drop_later(_scalar_multiple)
-    elif flag & 4:
-        drop_later(lambda a, b: a == b)
     zero = f.ring.zero()
-    out = [zero if p is None else p for p in g]
-    if flag & 2:
-        out = [p for p in out if not p.is_zero()]
-    if flag & 1:
-        out = [p if p.is_zero() else p.monic() for p in out]
-    return Ideal(f.ring, out or [zero])
-
-
-@command("simplify")
-def simplify_matrix(m: Matrix, flag: int) -> Matrix:
-    """simplify(M, 2) of a matrix (its columns as the generators of a module): the zero columns
-    dropped (one zero column is left of a zero matrix)."""
-    if flag & ~2:
-        raise MechRuntimeError(f"simplify(matrix, {flag}): only the flag 2 (drop the zero columns) is supported")
-    if not flag & 2:
-        return m
-    cols = [[m.entries[i * m.ncols + j] for i in range(m.nrows)] for j in range(m.ncols)]
-    kept = [c for c in cols if not all(p.is_zero() for p in c)] or [[m.ring.zero()] * m.nrows]
-    return Matrix(m.ring, m.nrows, len(kept), [kept[j][i] for i in range(m.nrows) for j in range(len(kept))])
+    out = simplify_generators(list(f.gens), flag, lambda p: p.lm(), divides, lambda p: p.monic())
+    return Ideal(f.ring, [zero if p is None else p for p in out] or [zero])
 
 
 # ---------------------------------------------------------------- minimal generators

@@ -7,11 +7,14 @@ from __future__ import annotations
 
 from typing import Any, Callable
 
+from ..dsl.convert_modules import to_module
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec, Number
+from ..dsl.values import Ideal, IntVec, Matrix, Number
 from ..dsl.values_modules import Module, Vector, lead_term
 from ..kernel import Poly
+from ..kernel.poly import divides
 from . import monomials, polynomials, polyops
+from .idealops import simplify_generators
 from .hilbert import kbase as kbase_ideal, vdim as vdim_ideal
 from .module_commands import _normalized
 
@@ -107,6 +110,23 @@ def simplify(v: Vector, flag: int) -> Vector:
         return v
     c = v.terms()[t]
     return Vector.from_terms(v.ring, {s: a / c for s, a in v.terms().items()})
+
+
+@command("simplify")
+def simplify_module(M: Module, flag: int) -> Module:
+    """simplify(M, n) of a module: the clean-ups of simplify(I, n) on its generators, leading terms
+    (monomial and component) in the module ordering."""
+    ring = M.ring
+    out = simplify_generators(list(M.gens), flag, lead_term,
+                              lambda a, b: a[1] == b[1] and divides(a[0], b[0]), lambda v: simplify(v, 1))
+    zero = Vector(ring, [])
+    return Module(ring, [zero if v is None else v for v in out] or [zero], M.rank)
+
+
+@command("simplify")
+def simplify_matrix(m: Matrix, flag: int) -> Module:
+    """simplify(M, n) of a matrix: as Singular, M converted to the module of its columns, then simplified."""
+    return simplify_module(to_module(m, m.ring), flag)
 
 
 def _component_ideals(M: Module) -> list[Ideal]:

@@ -165,3 +165,36 @@ def test_a_local_standard_basis_has_the_lead_terms_singular_gives() -> None:
     S;"""
     out = run(src).split()
     assert [line.split("=")[1].split("+")[0] for line in out[:4]] == ["x*gen(2)", "x*gen(1)", "y*gen(1)", "y2*gen(2)"]
+
+
+SIMPLIFY = """ring r=0,(x,y,z),(c,dp);
+matrix A[2][3]=x,0,2x,y,0,2y;
+simplify(A,2+8);
+simplify(A,2);
+module n=[x,y],[2x,2y],[0,y2],[x2],[0,3y2];
+simplify(n,32);
+simplify(n,16+2+1);
+simplify(n,4);
+"""
+
+
+@pytest.mark.parametrize("with_singular", [False, pytest.param(True, marks=pytest.mark.singular)])
+def test_simplify_of_a_module_and_of_a_matrix(with_singular: bool) -> None:
+    """simplify(matrix, n) converts to a module as Singular does; the flags act on vectors' leading terms."""
+    expected = """_[1]=[x,y]
+_[1]=[x,y]
+_[2]=[2x,2y]
+_[1]=[x,y]
+_[2]=0
+_[3]=[0,y2]
+_[4]=0
+_[5]=0
+_[1]=[x,y]
+_[2]=[0,y2]
+_[3]=[x2]
+_[1]=[x,y]
+_[2]=[2x,2y]
+_[3]=[0,y2]
+_[4]=[x2]
+_[5]=[0,3y2]"""
+    assert run(SIMPLIFY).split() == (run_singular(SIMPLIFY) if with_singular else expected).split()
