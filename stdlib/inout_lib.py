@@ -298,6 +298,9 @@ def _show_lines(ctx, x: Any) -> list[str]:
         return ["// vector", bracket_str(x)]
     if isinstance(x, Module):
         return [f"// module, {len(x.gens)} generator(s)"] + [bracket_str(g) for g in x.gens]
+    if isinstance(x, Map):  # as Singular: the images under the name @map
+        return ["// i-th variable of preimage ring is mapped to @map[i]", f"// @map map  from {x.source.name}"] + [
+            f"@map[{i}]={poly_str(p)}" for i, p in enumerate(x.images, 1)]
     if isinstance(x, List):
         out = [f"// list, {len(x.items)} element(s):"]
         for i, item in enumerate(x.items, 1):
@@ -350,4 +353,7 @@ def show(ctx, x: Any, *rest: Any) -> None:
       →    // string, size 1
       → a
     """
-    ctx.write("\n".join(_show_lines(ctx, x)) + "\n")
+    lines = _show_lines(ctx, x)
+    if rest and isinstance(rest[0], int) and lines:  # show(x, n): n spaces before the information line
+        lines[0] = " " * rest[0] + lines[0]
+    ctx.write("\n".join(lines) + "\n")

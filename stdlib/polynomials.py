@@ -42,7 +42,7 @@ def size(x: Any) -> int:
     if isinstance(x, Map):
         return len(x.images)
     if isinstance(x, Ring):
-        return len(x.names)
+        return _field_size(x.poly.field)
     raise MechTypeError(f"size is not defined for {_typeof(x)}")
 
 
@@ -298,3 +298,12 @@ def maxideal(ctx, k: int) -> Ideal:
     rec(0, k, [])
     # Singular lists them in increasing lex order and marks them as a standard basis
     return Ideal(ring, [ring.monomial(e) for e in sorted(exps)], is_std=True)
+
+
+def _field_size(field: Any) -> int:
+    """size(R) of a ring: the number of elements of its coefficient field, -1 when it is infinite."""
+    p = field.characteristic
+    if not p or getattr(field, "params", None) and getattr(field, "modulus", None) is None:
+        return -1
+    modulus = getattr(field, "modulus", None)
+    return p ** modulus.degree() if modulus is not None else p

@@ -198,3 +198,4 @@ _[3]=[0,y2]
 _[4]=[x2]
 _[5]=[0,3y2]"""
     assert run(SIMPLIFY).split() == (run_singular(SIMPLIFY) if with_singular else expected).split()
+
