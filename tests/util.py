@@ -70,6 +70,11 @@ def run_singular(script: str, timeout: float = 120) -> str:
     return res.stdout
 
 
+
+def output_lines(text: str) -> list[str]:
+    """The lines of an output that carry values: blank lines and Singular's `// **` notes dropped."""
+    return [ln.rstrip() for ln in text.splitlines() if ln.strip() and not ln.startswith("// **")]
+
 # ---------------------------------------------------------------- benchmark systems
 def ring(names, blocks, field=QQ):
     """A polynomial ring with a block ordering."""

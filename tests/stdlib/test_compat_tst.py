@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.util import run, run_singular
+from tests.util import output_lines, run, run_singular
 
 pytestmark = pytest.mark.singular
 
@@ -137,11 +137,7 @@ cleardenom((a/(1/2*b+1))/((b+5)/(2*(a+b)))*x+1/2*y);
 }
 
 
-def _drop_notes(text: str) -> list[str]:
-    return [ln.rstrip() for ln in text.splitlines() if ln.strip() and not ln.startswith("// **")]
-
-
 @pytest.mark.parametrize("name", sorted(SNIPPETS))
 def test_as_singular(name: str) -> None:
     src = SNIPPETS[name]
-    assert _drop_notes(run(src)) == _drop_notes(run_singular(src))
+    assert output_lines(run(src)) == output_lines(run_singular(src))

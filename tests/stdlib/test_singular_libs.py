@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.util import run, run_singular
+from tests.util import output_lines, run, run_singular
 
 pytestmark = pytest.mark.singular
 
@@ -294,11 +294,7 @@ primdecGTZE(ideal(1)); primdecSYE(ideal(xy));
 }
 
 
-def _lines(text: str) -> list[str]:
-    return [ln.rstrip() for ln in text.splitlines() if ln.strip() and not ln.startswith("// **")]
-
-
 @pytest.mark.parametrize("name", sorted(SNIPPETS))
 def test_as_singular(name: str) -> None:
     src = SNIPPETS[name]
-    assert _lines(run(src)) == _lines(run_singular(src))
+    assert output_lines(run(src)) == output_lines(run_singular(src))

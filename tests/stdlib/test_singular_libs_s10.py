@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.util import error, run, run_singular
+from tests.util import error, output_lines, run, run_singular
 
 pytestmark = pytest.mark.singular
 
@@ -119,21 +119,17 @@ weight(ideal(9x8+y7t3z4+5x4y2t2+2xy2z3t2, 9y8+7xy6t+2x5y4t2, 9z8+3x2y3z2t4, u3-x
 }
 
 
-def _lines(text: str) -> list[str]:
-    return [ln.rstrip() for ln in text.splitlines() if ln.strip() and not ln.startswith("// **")]
-
-
 @pytest.mark.parametrize("name", sorted(SNIPPETS))
 def test_as_singular(name: str) -> None:
     src = SNIPPETS[name]
-    assert _lines(run(src)) == _lines(run_singular(src))
+    assert output_lines(run(src)) == output_lines(run_singular(src))
 
 
 def test_time_factorize_with_a_limit() -> None:
     """With a limit the factorization that finishes is returned (the installed Singular's fork link never
     reports it ready and answers "irreducible"; general.lib documents the factorization)."""
     out = run('LIB "general.lib"; ring r = 0,(x,y),dp; timeFactorize(x2-y2, 60);')
-    assert _lines(out) == ["[1]:", "   _[1]=-1", "   _[2]=-x+y", "   _[3]=x+y", "[2]:", "   1,1,1"]
+    assert output_lines(out) == ["[1]:", "   _[1]=-1", "   _[2]=-x+y", "   _[3]=x+y", "[2]:", "   1,1,1"]
 
 
 def test_char_series_reducible_over_the_extension_is_refused() -> None:
