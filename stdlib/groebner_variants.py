@@ -1,6 +1,5 @@
 """Singular's built-in variants of standard bases: ``facstd`` (the factorizing Groebner algorithm: a
-list of ideals whose zero sets cover V(I)), ``mstd`` (a standard basis and minimal generators taken
-from it) and ``janet`` (the Janet basis: the reduced Groebner basis completed so that its leading
+list of ideals whose zero sets cover V(I)) and ``janet`` (the Janet basis: the reduced Groebner basis completed so that its leading
 monomials form the Janet-involutive basis of the leading ideal; Gerdt and Blinkov, *Involutive bases
 of polynomial ideals*, 1998)."""
 from __future__ import annotations
@@ -71,37 +70,6 @@ def facstd(I: Ideal, *nonzero: Poly | Ideal) -> List:
             if not any(j != i and _contains(b, c) and not (_contains(c, b) and j > i) for j, c in enumerate(found))]
     kept.reverse()  # Singular lists the branches of the last factor first
     return List([Ideal(ring, b, is_std=True) for b in kept]) if kept else List([Ideal(ring, [ring.one()], is_std=True)])
-
-
-# ---------------------------------------------------------------- mstd
-@command("mstd")
-def mstd(I: Ideal) -> List:
-    """mstd(I): the list of a standard basis of I and of generators of I chosen among its elements,
-    by increasing degree, each not in the ideal of those before (minimal generators for a homogeneous I).
-
-    Example:
-      ring r = 0,(x,y),dp;
-      mstd(ideal(x2, xy, x2+xy, y3));
-      → [1]:
-      →    _[1]=xy
-      →    _[2]=x2
-      →    _[3]=y3
-      → [2]:
-      →    _[1]=xy
-      →    _[2]=x2
-      →    _[3]=y3
-    """
-    ring = I.ring
-    if not ring.order.is_global:
-        raise MechRuntimeError("mstd needs a global ordering (dp, lp, ...), not a local one")
-    basis = standard_basis(I)
-    kept: list[Poly] = []
-    for g in sorted(basis, key=lambda p: (p.total_degree(), ring.order.key(p.lm()))):
-        if not kept or not normal_form(g, standard_basis(Ideal(ring, kept))).is_zero():
-            kept.append(g)
-    kept.sort(key=lambda p: ring.order.key(p.lm()))
-    zero = [ring.zero()]
-    return List([Ideal(ring, basis or zero, is_std=True), Ideal(ring, kept or zero)])
 
 
 # ---------------------------------------------------------------- janet
