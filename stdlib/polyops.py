@@ -371,12 +371,6 @@ def cleardenom(f: Poly) -> Poly:
 def _cleardenom_params_mod_p(f: Poly) -> Poly:
     """Over Z/p(a,...) as Singular: times the lcm of the (monic) denominators, divided by the monic gcd
     of the numerators; constant factors stay."""
+    from .standard import primitive_numerators
     field = f.ring.field
-    lcm = None
-    for c in f.terms.values():
-        lcm = c.den if lcm is None else lcm * c.den // lcm.gcd(c.den)
-    nums = {e: c.num * (lcm // c.den) for e, c in f.terms.items()}
-    g = None
-    for n in nums.values():
-        g = n if g is None else g.gcd(n)
-    return Poly(f.ring, {e: field.from_polys(n // g) for e, n in nums.items()})
+    return Poly(f.ring, {e: field.from_polys(n) for e, n in primitive_numerators(f).items()})

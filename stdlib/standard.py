@@ -47,8 +47,9 @@ def normalize(p: Poly) -> Poly:
     return p * (-scale if p.lc() < 0 else scale)
 
 
-def _normalize_params(p: Poly) -> Poly:
-    field = p.ring.field
+def primitive_numerators(p: Poly) -> dict:
+    """Over a field of rational functions in parameters: p's coefficients times the lcm of their
+    denominators, divided by the gcd of the numerators (polynomials in the parameters), by monomial."""
     lcm = None
     for c in p.terms.values():
         lcm = c.den if lcm is None else lcm * c.den // lcm.gcd(c.den)
@@ -56,7 +57,12 @@ def _normalize_params(p: Poly) -> Poly:
     content = None
     for n in nums.values():
         content = n if content is None else content.gcd(n)
-    nums = {e: n // content for e, n in nums.items()}
+    return {e: n // content for e, n in nums.items()}
+
+
+def _normalize_params(p: Poly) -> Poly:
+    field = p.ring.field
+    nums = primitive_numerators(p)
     lead = int(nums[p.lm()].leading_coefficient())
     if field.characteristic:
         inv = pow(lead, -1, field.characteristic)
