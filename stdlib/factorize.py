@@ -24,7 +24,7 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.values import Ideal, IntVec, List
 from ..kernel import Poly
 from ..dsl.registry import command
-from .factorize_fq import fq_factors
+from ..kernel.algext_fq import fq_factors
 from .factorize_params import param_factorization
 from .standard import normalize
 
