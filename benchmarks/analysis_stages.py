@@ -7,7 +7,10 @@ mech: ``analyze`` in a fresh Session of this process, the CPU time of each stage
 progress events (``Session(progress=...)``).  Singular: ``timer`` (1 ms ticks) around each step
 of the paper's pipeline, start-up and ``LIB`` loading excluded: ``std`` and ``dim`` of J (mech's
 dimension stage), ``minAssGTZ(J)`` (the motion modes: mech's decomposition stage, whatever
-strategy certifies them), ``minAssGTZ(J + I_r(dJ))`` (the singular configurations), and for
+strategy certifies them), ``minAssGTZ(J + I_r(dJ))`` (the singular configurations), the tangent cones at the singular
+configurations that are points (sing.lib's ``tangentcone`` of J moved to the point, over ``Q(t)``
+modulo the minimal polynomial of a primitive element for conjugate points: mech's local analysis,
+which also classifies the points), and for
 symbolic lengths the eliminations of the lengths (the length conditions).  A Singular step that
 does not finish within ``--singular-timeout`` seconds is reported as such; ratios only where
 Singular takes at least 10 ms (below, the timer's resolution decides).  ``--repeat N`` runs
@@ -43,8 +46,12 @@ CASES = [
     Case("stephenson (quick)", "ground O A 1; fix G 2 0; bar O B 1; body B C 1 0 E 0 1; bar C A 1; bar E F 1; "
          "bar F G 1", "quick"),
     Case("four-bar, symbolic lengths", "ground O A 1; bar O B l1; bar B C l2; bar C A l3", "quick"),
+    Case("watt I-B", "ground O A 4; body O B 3 0 E 1 2; body B C 4 0 F 1 2; bar C A 3; bar E H 2; bar H F 3",
+         "full"),
+    Case("stephenson", "ground O A 1; fix G 2 0; bar O B 1; body B C 1 0 E 0 1; bar C A 1; bar E F 1; bar F G 1",
+         "full"),
 ]
-STAGES = ["dimension", "decomposition", "singular configurations", "length conditions"]
+STAGES = ["dimension", "decomposition", "singular configurations", "local analysis", "length conditions"]
 
 
 def mech_stages(case: Case) -> tuple[dict[str, float], float, object]:
@@ -95,9 +102,36 @@ def singular_script(a, depth: str) -> str:
         return "\n".join(lines)
     lines += [f"t = timer; list SV = minAssGTZ(J + minor(D, {r}));",
               'print("STAGE singular configurations " + string(timer - t));']
+    lines += local_script(a)
     if depth == "full":  # last: Singular may not finish it
         lines += ["t = timer; list M = minAssGTZ(J);", 'print("STAGE decomposition " + string(timer - t));']
     return "\n".join(lines)
+
+
+def local_script(a) -> list[str]:
+    """The tangent cone of J (radical here) at each singular configuration that is a point: J moved
+    to the point (over ``Q(t)`` with the minimal polynomial of a primitive element for a Galois orbit
+    of algebraic points), ``tangentcone`` (sing.lib: a standard basis for ``ds``, its lowest forms)."""
+    from mech.dsl.printing import poly_str
+    from mech.stdlib.standard import normalize
+    points = [s for s in a.singular if s.point is not None or s.algebraic is not None]
+    if not points or not a.radical:
+        return []
+    names = ",".join(a.ring.names)
+    lines = ['LIB "sing.lib"; t = timer;']
+    for k, s in enumerate(points):
+        if s.point is not None:
+            lines.append(f"ring L{k} = 0, ({names}), dp;")
+            shift = [f"{x}+({c})" for x, c in zip(a.ring.names, s.point)]
+        else:
+            pt = s.algebraic
+            t = pt.ring.names[-1]
+            lines.append(f"ring L{k} = (0,{t}), ({names}), dp; minpoly = {poly_str(normalize(pt.minpoly))};")
+            shift = [f"{x}+({poly_str(c)})" for x, c in zip(a.ring.names, pt.coords)]
+        lines.append(f"ideal J{k} = fetch(R, J); map sh{k} = L{k}, {', '.join(shift)}; "
+                     f"ideal C{k} = tangentcone(sh{k}(J{k})); setring R;")
+    lines.append('print("STAGE local analysis " + string(timer - t));')
+    return lines
 
 
 def singular_stages(script: str, timeout: float) -> dict[str, float | None]:

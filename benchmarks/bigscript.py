@@ -3,8 +3,9 @@ several sizes (the time must grow linearly with the size; issue 23's 50 MB scrip
 
     python benchmarks/bigscript.py                     # 1, 5, 10 and 50 MB
     python benchmarks/bigscript.py 1 5                 # these sizes (MB)
-    python benchmarks/bigscript.py --write FILE 50     # only write a 50 MB script to FILE
+    python benchmarks/bigscript.py --write [--names] FILE 50   # only write a 50 MB script to FILE
     python benchmarks/bigscript.py --loop              # statements/s of a loop (running only)
+    python benchmarks/bigscript.py --names 1 10        # every statement with new names (new shapes)
 
 Each script repeats a mix of assignments of ints, numbers and polynomials, arithmetic, ideals,
 matrix entries, strings printed into a variable (``s = string(f);``), printed values, an ``if`` and
@@ -32,21 +33,29 @@ LINES = ["k = k + {a};", "j = k * {b} - {a};", "f = {a}x2y-{b}/{c}z+y^{d};", "g 
          "s = string(k, \",\", n);", "if (k > {a}) {{ j = {b}; }} else {{ j = j + 1; }}",
          "for (i = 1; i <= 2; i++) {{ j = j + i; }}", "f;", "k;"]
 RING_EVERY = 500  # statements between two ring declarations
+#: ``--names``: each line declares a new variable (``{n}``) from an earlier one (``{m}``): every
+#: statement a new shape, parsed cold (no template applies)
+NAMED_LINES = ["int k{n} = k{m} mod 1000 * {b} + {a};", "poly f{n} = {a}x2y-{b}/{c}z+y^{d};",
+               "int j{n} = k{m} - {a};", "k{m};", "string s{n} = string(k{m}) + \"{a}\";"]
 
 
-def script(megabytes: float, path: Path) -> int:
-    """Write a script of about ``megabytes`` MB; its number of statements."""
+def script(megabytes: float, path: Path, names: bool = False) -> int:
+    """Write a script of about ``megabytes`` MB (``names``: of :data:`NAMED_LINES`); its number of
+    statements."""
     rng = random.Random(megabytes)
-    size, count = len(HEAD), 9
+    size, count, ints = len(HEAD), 9, [0]  # ints: the k{n} declared (--names)
     with path.open("w") as fh:
-        fh.write(HEAD)
+        fh.write(HEAD + ("int k0 = 1;\n" if names else ""))
         while size < megabytes * 2**20:
-            if count % RING_EVERY == 0:
+            if count % RING_EVERY == 0 and not names:
                 line = RING
                 count += 6
             else:
-                line = rng.choice(LINES).format(a=rng.randint(1, 99), b=rng.randint(1, 9),
-                                                c=rng.randint(2, 9), d=rng.randint(1, 5)) + "\n"
+                form = rng.choice(NAMED_LINES if names else LINES)
+                line = form.format(a=rng.randint(1, 99), b=rng.randint(1, 9), c=rng.randint(2, 9),
+                                   d=rng.randint(1, 5), n=count, m=rng.choice(ints[-8:])) + "\n"
+                if form.startswith("int k"):
+                    ints.append(count)
                 count += 1
             fh.write(line)
             size += len(line)
@@ -93,18 +102,20 @@ def loop(count: int = 200000) -> None:
 def main() -> None:
     args = sys.argv[1:]
     if args[:1] == ["--write"]:
-        print(script(float(args[2]), Path(args[1])), "statements")
+        names = args[1:2] == ["--names"]
+        print(script(float(args[2 + names]), Path(args[1 + names]), names), "statements")
         return
     if args[:1] == ["--loop"]:
         loop()
         return
-    sizes = [float(a) for a in args] or [1, 5, 10, 50]
+    names = args[:1] == ["--names"]
+    sizes = [float(a) for a in args[names:]] or [1, 5, 10, 50]
     print("| script | statements | CPU time | s/MB | statements/s | peak memory | Singular: CPU time | "
           "statements/s | peak memory | mech / Singular |\n|---|---|---|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for mb in sizes:
             path = Path(tmp) / f"big{mb:g}.mech"
-            n = script(mb, path)
+            n = script(mb, path, names)
             cpu, peak = run(path)
             sing = run_singular(path)
             other = (f"{sing[0]:.1f} s | {n / sing[0]:.0f} | {sing[1]:.0f} MB | {cpu / sing[0]:.1f}" if sing

@@ -123,6 +123,8 @@ class Assignment:
         if isinstance(container, Matrix):
             if len(idx) != 2 or not last:
                 raise MechRuntimeError("a matrix entry is set as M[i,j] = ...")
+            if isinstance(idx[0], IntVec) or isinstance(idx[1], IntVec):
+                return _set_matrix_block(container, idx[0], idx[1], value)
             i, j = to_int(idx[0]), to_int(idx[1])
             if not (1 <= i <= container.nrows and 1 <= j <= container.ncols):
                 raise MechRuntimeError(f"index [{i},{j}] out of range for a {container.nrows} x {container.ncols} matrix")
@@ -187,6 +189,25 @@ class Assignment:
         if type(cur) is not int:
             raise MechTypeError(f"++ and -- need an int, not {typeof(cur)}")
         self.assign(s.target, cur + s.delta)
+
+
+def _set_matrix_block(m: Matrix, rows: Any, cols: Any, value: Any) -> Matrix:
+    """``M[rows, cols] = values`` with intvec indices, as Singular: the entries of the block, row by row,
+    take the values in turn (a matrix's entries row by row)."""
+    rs = list(rows.values) if isinstance(rows, IntVec) else [to_int(rows)]
+    cs = list(cols.values) if isinstance(cols, IntVec) else [to_int(cols)]
+    items = list(value.items) if isinstance(value, ExprList) else [value]
+    flat: list[Any] = []
+    for v in items:
+        flat.extend(v.entries if isinstance(v, Matrix) else [v])
+    if len(flat) != len(rs) * len(cs):
+        raise MechRuntimeError(f"{len(rs) * len(cs)} matrix entries but {len(flat)} values")
+    ents = list(m.entries)
+    for k, (i, j) in enumerate((i, j) for i in rs for j in cs):
+        if not (1 <= i <= m.nrows and 1 <= j <= m.ncols):
+            raise MechRuntimeError(f"index [{i},{j}] out of range for a {m.nrows} x {m.ncols} matrix")
+        ents[(i - 1) * m.ncols + j - 1] = to_poly(flat[k], m.ring)
+    return Matrix(m.ring, m.nrows, m.ncols, ents)
 
 
 def _set_module_entry(container: Vector | Module, i: int, value: Any, last: bool, deeper: Any) -> Vector | Module:

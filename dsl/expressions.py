@@ -164,6 +164,9 @@ class Expressions:
         k = idx[0]
         if isinstance(k, IntVec) and isinstance(base, Poly):  # Singular: the sum of those terms
             return sum((self._item(base, i) for i in k.values), base.ring.zero())
+        if isinstance(k, IntVec) and isinstance(base, Vector):  # Singular: the vector of those components
+            keep = set(k.values)
+            return Vector(base.ring, [p if i in keep else base.ring.zero() for i, p in enumerate(base.entries, 1)])
         if isinstance(k, IntVec):
             return ExprList([self._item(base, i) for i in k.values])
         return self._item(base, to_int(k))

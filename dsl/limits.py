@@ -30,7 +30,7 @@ import threading
 import time
 from typing import Any, Callable, Iterator, Optional
 
-from ..kernel import offload
+from ..kernel import lazy_modules, offload
 from .errors import MechRuntimeError
 from .registry import command
 
@@ -237,6 +237,8 @@ class _Watch:
         self.hard = self.deadline + overrun(timeout) if timeout and not self.budget else self.deadline
         self.reserve: Optional[float] = None  # a budget's: seconds the statement keeps after it
         self.grow = int(max_memory * 2**20) if max_memory else 0   # bytes the statement may add
+        if max_memory:  # python-flint loads on first use (~9 MB): not the statement's memory
+            lazy_modules.load("flint")
         self.max_rss = (_rss() or 0) + self.grow if max_memory else None
         self.fired = 0.0            # when LimitExceeded was last raised (0: never)
         self.saved_rlimit: Optional[tuple[int, int]] = None

@@ -318,7 +318,8 @@ class M2Interpreter(M2Control, Interpreter):
         return self.apply_value(v, node.args, node)
 
     def apply_value(self, v: Any, arg_nodes: list[A.Expr], node: Optional[A.Expr] = None) -> Any:
-        """``v args`` for a value ``v``: a command, a function, a ring (``R x``: x in R), ``Eliminate n``."""
+        """``v args`` for a value ``v``: a command, a function, a ring (``R x``: x in R), ``Eliminate n``,
+        ``ProductOrder {n1, n2}``."""
         if isinstance(v, CommandRef):
             return self.call_command(v.command, arg_nodes)
         if isinstance(v, M2Function):
@@ -327,7 +328,7 @@ class M2Interpreter(M2Control, Interpreter):
             return self.apply(v, self._values(arg_nodes))
         if isinstance(v, RingMap):
             return apply_map(v, self._one_value(arg_nodes))
-        if v == Symbol("Eliminate") and len(arg_nodes) == 1:
+        if v in (Symbol("Eliminate"), Symbol("ProductOrder")) and len(arg_nodes) == 1:
             return Opt(v, self.eval(arg_nodes[0]))
         if isinstance(v, Symbol) and v.name not in SYMBOLS:
             raise MechNameError(f"unknown identifier '{v.name}'")
@@ -378,6 +379,8 @@ class M2Interpreter(M2Control, Interpreter):
             raise MechRuntimeError(f"{cmd.name} on elements of a quotient ring R/I is not supported by mech")
         if not any(getattr(ov.func, "zz_ok", False) for ov in cmd.overloads) and any(_over_zz(a) for a in args):
             raise MechRuntimeError(f"{cmd.name} on elements of a polynomial ring over ZZ is not supported by mech")
+        if not any(getattr(ov.func, "group_ok", False) for ov in cmd.overloads) and any(_in_group(a) for a in args):
+            raise MechRuntimeError(f"{cmd.name} on elements of a ring with invertible variables (GroupLex) is not supported by mech")
         if not any(getattr(ov.func, "local_ok", False) for ov in cmd.overloads) and any(_in_local(a) for a in args):
             raise MechRuntimeError(f"{cmd.name} on elements of a local ring R_P is not supported by mech")
         try:
@@ -470,6 +473,13 @@ def _over_zz(v: Any) -> bool:
     if isinstance(v, (List, ExprList)):
         return any(_over_zz(x) for x in v.items)
     return is_integral(v if isinstance(v, M2Ring) else getattr(v, "ring", None))
+
+
+def _in_group(v: Any) -> bool:
+    if isinstance(v, (List, ExprList)):
+        return any(_in_group(x) for x in v.items)
+    ring = v if isinstance(v, M2Ring) else getattr(getattr(v, "ring", None), "owner", None)
+    return isinstance(ring, M2Ring) and bool(ring.ambient().info.get("group"))
 
 
 def _in_local(v: Any) -> bool:

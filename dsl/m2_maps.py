@@ -6,18 +6,21 @@ from typing import Any
 
 from ..kernel import Poly
 from .errors import MechTypeError
+from .m2_modules import FreeModule
 from .m2_rings import normal
 from .m2_values import RingMap
 from .values import ExprList, Ideal, List, Matrix, Number, typeof
 
 
 def apply_map(f: RingMap, v: Any) -> Any:
-    """The image of a polynomial, ideal, matrix or list under the ring map ``f``."""
+    """The image of a polynomial, ideal, matrix, free module or list under the ring map ``f``."""
     from .maps import map_value
     if isinstance(v, (List, ExprList)):
         return type(v)([apply_map(f, x) for x in v.items])
     if type(v) is int:
         return normal(f.target.poly.const(f.target.poly.field(v)))
+    if isinstance(v, FreeModule) and v.ring is f.source:  # f M, f ** M: the free module over the target
+        return FreeModule(f.target, tuple(f.degree_map((d,))[0] if f.degree_map else d for d in v.degrees))
     if not isinstance(v, (Poly, Ideal, Matrix, Number)) or getattr(v.ring, "owner", None) is not f.source:
         raise MechTypeError(f"the map applies to elements of its source ring, not to a {typeof(v)}")
     out = map_value(v, f.images, f.target.poly)

@@ -11,7 +11,7 @@ from typing import Any, Callable, Optional
 from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
-from .m2_modules import FreeModule, Map, quotient_module, rows, scaled
+from .m2_modules import FreeModule, Map, quotient_module, rows, scaled, source_degrees
 from .m2_submodules import Module
 from .m2_vectors import Vector, vector_arith
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
@@ -19,7 +19,7 @@ from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, RingMa
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
 #: Macaulay2 symbols mech knows (option names and monomial orders)
-SYMBOLS = {"MonomialOrder", "Lex", "GRevLex", "GLex", "RevLex", "Weights", "Eliminate", "Global", "Degrees",
+SYMBOLS = {"MonomialOrder", "Lex", "GRevLex", "GLex", "RevLex", "Weights", "Eliminate", "ProductOrder", "GroupLex", "GroupRevLex", "Global", "Degrees",
            "Variables", "Position", "Up", "Down", "MonomialSize", "Strategy", "Verbose", "Limit", "DegreeLimit",
            "Inhomogeneous", "SubringLimit", "BasisElementLimit", "PairLimit", "Reverse"}
 
@@ -59,9 +59,26 @@ def _tensor(a: Matrix, b: Matrix) -> Matrix:
     if a.ring is not b.ring:
         raise MechTypeError("a ** b: the matrices are over different rings")
     r, s = b.nrows, b.ncols
-    return Matrix(a.ring, a.nrows * r, a.ncols * s, [a.entries[i * a.ncols + j] * b.entries[k * s + m]
-                                                     for i in range(a.nrows) for k in range(r)
-                                                     for j in range(a.ncols) for m in range(s)])
+    entries = [a.entries[i * a.ncols + j] * b.entries[k * s + m]
+               for i in range(a.nrows) for k in range(r) for j in range(a.ncols) for m in range(s)]
+    if isinstance(a, Map) and isinstance(b, Map):  # degrees: sums (target, source and the maps')
+        return Map(_tensor_free(a.target, b.target), _tensor_free(a.source, b.source), entries, a.degree + b.degree)
+    return Matrix(a.ring, a.nrows * r, a.ncols * s, entries)
+
+
+def _one_by_one(p: Poly) -> Map:
+    """A ring element as a 1 x 1 matrix of degree 0 (its source of p's degree), for ``p ** f``."""
+    ring = owner(p)
+    if ring is None:
+        raise MechTypeError("p ** f takes an element of a ring")
+    return Map(FreeModule(ring, (0,)), FreeModule(ring, source_degrees(Matrix(p.ring, 1, 1, [p]), (0,))), [p], 0)
+
+
+def _tensor_free(F: FreeModule, G: FreeModule) -> FreeModule:
+    """``F ** G`` of free modules: the degrees' sums, F's index outer."""
+    if F.ring is not G.ring:
+        raise MechTypeError("F ** G: the free modules are over different rings")
+    return FreeModule(F.ring, tuple(d + e for d in F.degrees for e in G.degrees))
 
 
 def _frobenius(I: Ideal, e: Array) -> Ideal:
@@ -168,8 +185,16 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return (a == b) == (op == "==")
     if op in ("==", "!=") and isinstance(a, Module) and isinstance(b, Module):
         return a.same(b) == (op == "==")
+    if op == "*" and isinstance(b, List) and type(a) is int and all(type(x) is int for x in b.items):
+        return List([a * x for x in b.items])  # 2 * {1, 2}: each entry (a degree)
+    if op == "**" and isinstance(a, RingMap) and isinstance(b, FreeModule):  # f ** M: M over f's target
+        return apply(a, [b])
     if op == "**" and isinstance(a, Matrix) and isinstance(b, Matrix):
         return _tensor(a, b)
+    if op == "**" and isinstance(a, FreeModule) and isinstance(b, FreeModule):
+        return _tensor_free(a, b)
+    if op == "**" and (isinstance(a, Poly) and isinstance(b, Map) or isinstance(a, Map) and isinstance(b, Poly)):
+        return _tensor(*(_one_by_one(x) if isinstance(x, Poly) else x for x in (a, b)))
     if op == "**" and isinstance(b, M2Ring) and isinstance(a, (Poly, Ideal, Matrix)):
         return _base_change(a, b)
     if op in ("//", "%") and any(is_integral(getattr(v, "ring", None)) for v in (a, b)):
@@ -303,11 +328,32 @@ def _quotient(f: Poly, g: Poly) -> Poly:
     return q
 
 
+def _group_power(op: str, a: Any, b: Any, ring: M2Ring) -> Optional[Poly]:
+    """In a ring whose first variables are invertible (``GroupLex => n``): a negative power of a
+    unit (a coefficient unit times a monomial in those variables: Laurent monomials); None for sums,
+    products, equality and other powers, the only other operations allowed there."""
+    if op not in ("+", "-", "*", "^", "==", "!=") or not isinstance(a, (Poly, Number, int)) \
+            or not isinstance(b, (Poly, Number, int)) or ring_of(a) not in (ring, None) or ring_of(b) not in (ring, None):
+        raise MechRuntimeError(f"operator {op} in a ring with invertible variables (GroupLex) is not supported by mech")
+    if op == "^" and type(b) is int and b < 0:
+        f = lift_to(a, ring) if not isinstance(a, Poly) else a
+        n = ring.info["group"]
+        if len(f.terms) != 1:
+            raise MechRuntimeError("negative power of an element that is not a unit")
+        (e, c), = f.terms.items()
+        if any(e[n:]) or (is_integral(ring) and abs(c) != 1):
+            raise MechRuntimeError("negative power of an element that is not a unit")
+        return Poly(f.ring, {tuple(-k * -b for k in e): (f.ring.field.one / c) ** -b})
+    return None
+
+
 def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable) -> Any:
     """Arithmetic after promoting both operands to their common ring; quotient rings reduce;
     local rings have fractions."""
     ra, rb = ring_of(a), ring_of(b)
     ring = ra or rb
+    if ring is not None and ring.info.get("group") and _group_power(op, a, b, ring) is not None:
+        return _group_power(op, a, b, ring)
     if ring is not None and localized_at(ring) is not None and op in ("+", "-", "*", "/", "^", "==", "!=") \
             and isinstance(a, (Poly, Number, LocalFraction, int)) and isinstance(b, (Poly, Number, LocalFraction, int)):
         return local_arith(op, a, b, ring)

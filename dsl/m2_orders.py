@@ -8,8 +8,9 @@ from .m2_values import Opt, Symbol
 from .rings import MAX_WEIGHT
 from .values import ExprList, List, OrderBlock
 
-#: Macaulay2's orders of a block: (Singular's kind, with degrees other than 1: the weighted kind)
-_KINDS = {"GRevLex": ("dp", "wp"), "Lex": ("lp", "lp"), "GLex": ("Dp", "Wp"), "RevLex": ("rs", "rs")}
+#: Macaulay2's orders of a block: (Singular's kind, with degrees other than 1: the weighted kind);
+#: GLex weighs every variable by 1 whatever its degree (Macaulay2: ``Weights => {1, ..., 1}, Lex``)
+_KINDS = {"GRevLex": ("dp", "wp"), "Lex": ("lp", "lp"), "GLex": ("Dp", "Dp"), "RevLex": ("rs", "rs")}
 #: options of an order list that do not change the order
 _IGNORED = {"Position", "MonomialSize"}
 
@@ -24,9 +25,12 @@ def _items(spec: Any) -> list[Any]:
 
 def order_blocks(spec: Any, n: int, degrees: Sequence[int] = (), fill: bool = True) -> list[OrderBlock]:
     """Singular's blocks for Macaulay2's ``MonomialOrder => spec`` on ``n`` variables of these
-    ``degrees``: GRevLex (dp, or wp by the degrees), Lex (lp), GLex (Dp or Wp), RevLex (the
-    negative reversed unit matrix), ``Weights => w`` (a weight row), ``Eliminate k`` (the weight
-    row 1,..,1,0,..,0), a number k (GRevLex on k variables), ``Kind => k`` or ``Kind => {weights}``
+    ``degrees``: GRevLex (dp, or wp by the degrees), Lex (lp), GLex (Dp), RevLex (the
+    negative unit matrix: x^a > x^b when the first nonzero entry of a - b is negative),
+    ``Weights => w`` (a weight row), ``Eliminate k`` (the weight
+    row 1,..,1,0,..,0), a number k (GRevLex on k variables), ``ProductOrder {k1, k2}`` (GRevLex
+    blocks), ``GroupLex => k`` / ``GroupRevLex => k`` (the first k variables invertible: lex or revlex
+    on their integer exponents), ``Kind => k`` or ``Kind => {weights}``
     and lists of these (``{GRevLex => 2, Lex => 3}``: blocks); variables left over get GRevLex
     (``fill``: unless False)."""
     degrees = list(degrees) or [1] * n
@@ -46,6 +50,8 @@ def order_blocks(spec: Any, n: int, degrees: Sequence[int] = (), fill: bool = Tr
             kind, size, weights = "GRevLex", item, None
         elif key in _KINDS:
             kind, weights = key, None
+            if key == "GLex":
+                raise MechRuntimeError("GLex => ...: Macaulay2 takes GLex only without a size (the remaining variables)")
             if isinstance(item.value, List):  # {6:1} too: sequences spliced
                 weights = [w for x in item.value.items for w in (x.items if isinstance(x, ExprList) else [x])]
                 size = len(weights)
@@ -53,12 +59,26 @@ def order_blocks(spec: Any, n: int, degrees: Sequence[int] = (), fill: bool = Tr
                 size = item.value
             if type(size) is not int or not 0 < size <= MAX_WEIGHT or (weights and not all(type(w) is int and w > 0 for w in weights)):
                 raise MechRuntimeError(f"{key} => n takes a positive number of variables or a list of positive weights")
+        elif key in ("GroupLex", "GroupRevLex"):  # invertible variables (the ring's first): lex or revlex
+            if k != 0 or type(item.value) is not int or not 0 < item.value <= n:
+                raise MechRuntimeError(f"{key} => k takes the first 0 < k <= {n} variables, as the order's first block")
+            blocks.append(_block("Lex" if key == "GroupLex" else "RevLex", [1] * item.value))
+            covered += item.value
+            continue
+        elif key == "ProductOrder":  # blocks of GRevLex, as many variables as its numbers say
+            sizes = _items(item.value)
+            if not all(type(k) is int and k > 0 for k in sizes) or covered + sum(sizes) > n:
+                raise MechRuntimeError(f"ProductOrder {{n1, n2, ...}} takes positive sizes covering at most {n} variables")
+            for size in sizes:
+                blocks.append(_block("GRevLex", degrees[covered:covered + size]))
+                covered += size
+            continue
         elif key in ("Weights", "Eliminate"):
             blocks.append(_prefix(key, item.value, n, covered))
             continue
         else:
             raise MechRuntimeError(f"unknown monomial order {_show(item)} (known: GRevLex, Lex, GLex, RevLex, "
-                                   f"Weights => {{...}}, Eliminate k, numbers, and lists of these)")
+                                   f"Weights => {{...}}, Eliminate k, ProductOrder, numbers, and lists of these)")
         if covered + size > n:
             raise MechRuntimeError(f"the monomial order covers more than the {n} variables")
         blocks.append(_block(kind, weights or degrees[covered:covered + size]))
@@ -85,7 +105,7 @@ def _block(kind: str, weights: list[int]) -> OrderBlock:
     plain, weighted = _KINDS[kind]
     if kind == "RevLex":
         size = len(weights)
-        rows = [[-1 if j == size - 1 - i else 0 for j in range(size)] for i in range(size)]
+        rows = [[-1 if j == i else 0 for j in range(size)] for i in range(size)]  # the first exponent, smaller first
         return OrderBlock("M", size, tuple(v for r in rows for v in r))
     if all(w == 1 for w in weights) or plain == weighted:
         return OrderBlock(plain, len(weights))

@@ -19,7 +19,8 @@ from .m2_vectors import Vector
 from .m2_submodules import BettiTally, ChainComplex, Module, betti_to_string
 from .m2_rings import TEXT, tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, Iterator, M2Function, M2Set, Monoid,
-                        MonomialIdeal, Opt, Partial, RingMap, Symbol, Tally)
+                        MonomialIdeal, Opt, OptionTable, Partial, RingMap, Symbol, Tally,
+                        VerticalList)
 from .values import NONE, ExprList, Ideal, List, Matrix, Number, Ring
 
 __all__ = ["Opt", "Symbol", "Factored", "to_string", "poly_str", "coeff_str"]
@@ -32,7 +33,7 @@ def coeff_str(field: Any, c: Any) -> str:
 
 
 def _monomial(names: tuple[str, ...], e: tuple[int, ...]) -> str:
-    return "*".join(n if k == 1 else f"{n}^{k}" for n, k in zip(names, e) if k)
+    return "*".join(n if k == 1 else f"{n}^{k}" if k > 0 else f"{n}^({k})" for n, k in zip(names, e) if k)
 
 
 def _terms(p: Poly, names: tuple[str, ...], coeffs: list[tuple[tuple[int, ...], str, bool]]) -> str:
@@ -89,6 +90,10 @@ def to_string(v: Any) -> str:
     if isinstance(v, Matrix):
         rows = ", ".join("{" + ", ".join(poly_str(p) for p in row) + "}" for row in v.rows())
         return f"matrix {{{rows}}}"
+    if isinstance(v, VerticalList):
+        return "VerticalList{" + ", ".join(to_string(x) for x in v.items) + "}"
+    if isinstance(v, OptionTable):
+        return "new OptionTable from {" + ", ".join(f"{k} => {to_string(x)}" for k, x in v.entries) + "}"
     if isinstance(v, Array):
         return "[" + ", ".join(to_string(x) for x in v.items) + "]"
     if isinstance(v, List):

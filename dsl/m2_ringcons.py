@@ -34,6 +34,11 @@ def build_ring(node: RingCons, base: Any, evaluate: Callable[[A.Expr], Any], sho
             options[key] = evaluate(item.value)
         else:
             names.extend(variable_names(item, evaluate, show))
+    return make_ring(base, names, options, show)
+
+
+def make_ring(base: Any, names: list[str], options: dict[str, Any], show: Callable[[Any], str]) -> M2Ring:
+    """The polynomial ring over ``base`` in ``names`` with these options (values, by name)."""
     if not names or len(set(names)) != len(names):
         raise MechRuntimeError("a ring needs distinct variables: QQ[x,y,z]")
     degrees, graded = _degrees(options.get("Degrees"), len(names))
@@ -43,6 +48,11 @@ def build_ring(node: RingCons, base: Any, evaluate: Callable[[A.Expr], Any], sho
     blocks = order_blocks(spec, len(names), degrees)
     size = options.get("MonomialSize")
     ring = polynomial_ring(base, names, blocks, degrees, (2 ** (to_int(size) - 1)) if size is not None else None)
+    ring.info["m2_options"] = dict(options)
+    ring.info["m2_order"] = (spec, size)  # as given, for options R
+    first = (spec.items[0] if isinstance(spec, List) and spec.items else spec)
+    if isinstance(first, Opt) and first.key in (Symbol("GroupLex"), Symbol("GroupRevLex")):
+        ring.info["group"] = first.value  # its first variables are invertible
     where = position(spec, len(names), degrees)
     if where != (len(blocks), "Up"):  # Position => ... not at its default place
         ring.info["position"] = where

@@ -41,6 +41,26 @@ class Array(List):
         return f"Array({list(self.items)!r})"
 
 
+class VerticalList(List):
+    """A list Macaulay2 shows one entry a line (a ring's monomial order): ``VerticalList{...}``."""
+
+    __slots__ = ()
+
+
+class OptionTable:
+    """Option names with their values, in Macaulay2's order; ``(options R).MonomialOrder`` reads one."""
+
+    __slots__ = ("entries",)
+    type_name = "OptionTable"
+
+    def __init__(self, entries: list[tuple[str, Any]]) -> None:
+        self.entries = entries
+
+    @property
+    def m2_fields(self) -> dict[str, Any]:
+        return dict(self.entries)
+
+
 class Monoid:
     """``monoid[x, y]`` or ``monoid R``: the monoid of monomials in named variables, printed by the
     name it was first assigned to (``vars``, ``gens`` and ``numgens`` read it)."""
@@ -125,6 +145,7 @@ class RingMap:
     target: Any
     source: Any
     images: tuple[Poly, ...]
+    degree_map: Any = None  #: DegreeMap => d -> ...: degree -> degree (a Python function), None: identity
 
     @property
     def m2_fields(self) -> dict[str, Any]:

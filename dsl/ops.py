@@ -165,6 +165,18 @@ def _matrix_op(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Matrix:
                     out.append(s)
             return Matrix(ring, a.nrows, b.ncols, out)
         raise _bad(op, a, b)
+    if op in ("+", "-") and isinstance(a, Matrix) and isinstance(b, Ideal):  # the ideal as a 1 x n matrix
+        return _matrix_op(op, a, Matrix(ring, 1, len(b.gens), list(b.gens)), ring)
+    if op in ("+", "-") and isinstance(a, Matrix) and _rank(b) >= 0:  # Singular: b times the unit matrix
+        p = to_poly(b, ring)
+        ents = list(a.entries)
+        for i in range(min(a.nrows, a.ncols)):
+            ents[i * a.ncols + i] = ents[i * a.ncols + i] + p if op == "+" else ents[i * a.ncols + i] - p
+        return Matrix(ring, a.nrows, a.ncols, ents)
+    if op == "+" and isinstance(b, Matrix) and _rank(a) >= 0:
+        return _matrix_op(op, b, a, ring)
+    if op == "-" and isinstance(b, Matrix) and _rank(a) >= 0:  # as Singular: a as a 1 x 1 matrix
+        return _matrix_op(op, Matrix(ring, 1, 1, [to_poly(a, ring)]), b, ring)
     if op == "*" and _rank(b) >= 0 and isinstance(a, Matrix):
         p = to_poly(b, ring)
         return Matrix(ring, a.nrows, a.ncols, [x * p for x in a.entries])
@@ -448,6 +460,8 @@ def _add(v: Vector, w: Vector, sign: int) -> Vector:
 def module_binary(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
     """``a op b`` where a or b is a vector or a module."""
     ring = getattr(a, "ring", None) or getattr(b, "ring", None) or ring
+    if op == "+" and (isinstance(a, Ideal) and isinstance(b, Vector) or isinstance(a, Vector) and isinstance(b, Ideal)):
+        return _sum(to_module(a, ring), to_module(b, ring))  # as modules (Singular)
     if op == "*" and isinstance(a, Ideal) and isinstance(b, Vector):  # I*v: the module of the g*v
         return Module(ring, [Vector(ring, [g * x for x in b.entries]) for g in a.gens])
     if op == "*" and isinstance(a, Vector) and isinstance(b, Ideal):
@@ -459,6 +473,11 @@ def module_binary(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
         return Module(ring, [Vector(ring, [f * x for x in m.entries]) for f in a.gens for m in b.gens], b.rank)
     if op == "*" and isinstance(a, Module) and isinstance(b, Ideal):  # M*I: m*f for m in M, f in I
         return Module(ring, [Vector(ring, [x * f for x in m.entries]) for m in a.gens for f in b.gens], a.rank)
+    if op == "*" and isinstance(a, Module) and isinstance(b, Module):
+        raise MechTypeError("module * module: Singular has no product of two submodules of a free module")
+    if op == "*" and isinstance(a, (Module, Vector)) and isinstance(b, (Module, Vector)):  # as matrices
+        mats = [Matrix(ring, *matrix_entries(x if isinstance(x, Module) else Module(ring, [x]))) for x in (a, b)]
+        return binary("*", mats[0], mats[1], ring, lambda _m: None)
     if isinstance(a, Module) or isinstance(b, Module):
         if op == "+" and all(isinstance(x, (Module, Vector, Ideal, Matrix)) for x in (a, b)):
             return _sum(to_module(a, ring), to_module(b, ring))

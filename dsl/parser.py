@@ -12,19 +12,17 @@ import itertools
 import re
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Iterator, Optional
-
-from lark import Lark, Token
-from lark.exceptions import UnexpectedInput
+from typing import TYPE_CHECKING, Any, Iterator, Optional
 
 from . import ast as A
 from . import registry
-from .builder import TreeBuilder, build
 from .fastparse import parse_fast
 from .errors import MechSyntaxError, Source
 from .split import statement_ends
-from .syntax_errors import syntax_error
 from .types import type_names
+
+if TYPE_CHECKING:
+    from lark import Lark
 
 GRAMMAR = Path(__file__).with_name("singular.lark")
 
@@ -37,6 +35,7 @@ def _parser() -> Lark:
 
 @lru_cache(maxsize=4)
 def _parser_for(plugin_types: tuple[str, ...]) -> Lark:
+    from lark import Lark  # on the first statement the fast path leaves to Lark (start-up time)
     grammar = GRAMMAR.read_text()
     if plugin_types:
         grammar += "\n%extend type_name: " + " | ".join(f'"{t}"' for t in plugin_types) + "\n"
@@ -50,20 +49,29 @@ def parse(text: str, source: Optional[Source] = None, at: tuple[int, int] = (1, 
     path (:mod:`~mech.dsl.fastparse`; ``shared``: statements parsed before may share their trees,
     for running; ``ends``: where its statements end, when known), the others and errors Lark's parser."""
     source = source or Source("<string>", text)
-    parser = _parser()
-    program = parse_fast(text, at, parser.terminals, _type_words(parser) + type_names(),
+    registry.load_plugins()
+    words, builtin_types = grammar_words()
+    program = parse_fast(text, at, words, builtin_types + type_names(),
                          lambda piece, where: _parse_lark(piece, source, where), shared, ends)
     return program if program is not None else _parse_lark(text, source, at)
 
 
-@lru_cache(maxsize=4)
-def _type_words(parser: Lark) -> tuple[str, ...]:
-    """The grammar's built-in type names (its rule ``type_name``)."""
-    words = {t.name: t.pattern.value for t in parser.terminals}
-    return tuple(words[r.expansion[0].name] for r in parser.rules if r.origin.name == "type_name")
+@lru_cache(maxsize=1)
+def grammar_words() -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """The grammar's words: its keywords (the string terminals that are identifiers) and its
+    built-in type names (the rule ``type_name``), read from ``singular.lark`` without building
+    Lark's parser (``tests/dsl/test_fastparse.py`` compares them with the parser's terminals)."""
+    text = re.sub(r"(?m)^\s*//[^\n]*|\s//\s[^\n]*", "", GRAMMAR.read_text())  # comments
+    words = tuple(sorted(set(re.findall(r'"([A-Za-z_@][A-Za-z0-9_@]*)"', text))))
+    rule = re.search(r"(?ms)^!?type_name\s*:(.*?)(?=^\S|\Z)", text)
+    return words, tuple(re.findall(r'"([^"]+)"', rule.group(1))) if rule else ()
 
 
 def _parse_lark(text: str, source: Source, at: tuple[int, int]) -> A.Program:
+    from lark.exceptions import UnexpectedInput
+
+    from .builder import TreeBuilder, build
+    from .syntax_errors import syntax_error
     try:
         tree = _parser().parse(text)
         if at != (1, 1):
@@ -155,6 +163,7 @@ def _moved(pos: Optional[A.Pos], at: tuple[int, int]) -> Optional[A.Pos]:
 
 def _shift(tree: Any, at: tuple[int, int]) -> None:
     """Move the positions of a piece's parse tree to where the piece starts (``at``)."""
+    from lark import Token
     dline, dcol = at[0] - 1, at[1] - 1
     for t in tree.iter_subtrees():
         items = [t.meta] if not t.meta.empty else []

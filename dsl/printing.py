@@ -201,7 +201,7 @@ def print_form(v: Any, name: str = "_") -> str:
     if isinstance(v, IntVec):
         return ",\n".join(str(x) for x in v.values) + " "
     if isinstance(v, (Vector, Module)):
-        return bracket_str(v) if isinstance(v, Vector) else module_print(v, name)
+        return bracket_str(v, "[0]") if isinstance(v, Vector) else module_print(v, name)
     if hasattr(v, "print_form"):  # intmat
         return v.print_form()
     if isinstance(v, Ring):
@@ -324,9 +324,10 @@ def gen_str(v: Vector) -> str:
     return "".join(out)
 
 
-def bracket_str(v: Vector) -> str:
-    """``[f1,f2,...]`` up to the last nonzero entry."""
-    return "[" + ",".join(poly_str(p) for p in v.entries) + "]" if not v.is_zero() else "0"
+def bracket_str(v: Vector, zero: str = "0") -> str:
+    """``[f1,f2,...]`` up to the last nonzero entry (``zero`` for the zero vector: ``print`` and
+    ``show`` say ``[0]``)."""
+    return "[" + ",".join(poly_str(p) for p in v.entries) + "]" if not v.is_zero() else zero
 
 
 def vector_str(v: Vector) -> str:

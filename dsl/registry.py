@@ -22,12 +22,17 @@ The language runtime knows no library: a library package registers a loader with
 :func:`add_loader` (mech's facade registers ``mech.stdlib.load``), which the interpreter runs once,
 before its first program (:func:`load_plugins`); the loader imports the library's modules, whose
 decorators register their commands (and :func:`mech.dsl.types.register_type` their types) and
-:func:`add_library_dir` the folder of their ``*.lib`` sources.  Loading happens at start-up, so
-command modules import heavy packages (sympy) lazily.
+:func:`add_library_dir` the folder of their ``*.lib`` sources.  mech's loader registers the commands
+from a record of an earlier start without importing their modules (:mod:`mech.dsl.plugins`): a
+command's module is imported on its first call or help, so command modules import nothing at
+start-up and heavy packages (sympy) on use.
 """
 from __future__ import annotations
 
+import importlib
 import inspect
+import sys
+import threading
 import types
 import typing
 from dataclasses import dataclass, field
@@ -83,15 +88,64 @@ class Overload:
     varargs: Optional[tuple] = None
     has_varargs: bool = False
     resolved: bool = False
+    doc: str = ""
 
 
-@dataclass
+def overload_key(ov: Overload) -> str:
+    """What names an overload across processes (its function's module and qualified name)."""
+    return f"{ov.func.__module__}:{ov.func.__qualname__}"
+
+
 class Command:
-    name: str
-    lib: Optional[str]
-    raw: bool
-    doc: str
-    overloads: list[Overload]
+    """A command: its name, library, whether it takes argument trees (``raw``), its help text and
+    its overloads (tried in order).  A deferred command (:func:`defer`) knows the modules that
+    register its overloads and imports them when its overloads or its help are first read."""
+
+    def __init__(self, name: str, lib: Optional[str], raw: bool, doc: str, overloads: list[Overload]) -> None:
+        self.name, self.lib, self.raw = name, lib, raw
+        self._doc = doc
+        self._overloads = overloads
+        #: modules still to import for the overloads (a deferred command)
+        self.pending: tuple[str, ...] = ()
+        #: the overloads' places by :func:`overload_key` (a deferred command's order of registration)
+        self.rank: dict[str, int] = {}
+
+    @property
+    def overloads(self) -> list[Overload]:
+        if self.pending:
+            self._load()
+        return self._overloads
+
+    @property
+    def doc(self) -> str:
+        """The help text: the first one given, in the overloads' order."""
+        if self.pending:
+            self._load()
+        return self._doc or next((ov.doc for ov in self._overloads if ov.doc), "")
+
+    def _load(self) -> None:
+        with _LOADING:  # another thread waits for the overloads; this one, re-entering, takes them as they are
+            if self.pending and self not in _LOADING_NOW:
+                _LOADING_NOW.add(self)
+                try:
+                    for module in self.pending:
+                        importlib.import_module(module)
+                    self.pending = ()
+                finally:
+                    _LOADING_NOW.discard(self)
+
+    def add(self, ov: Overload) -> None:
+        """One more overload, after the others or, for a deferred command, at its recorded place."""
+        rank = self.rank
+        if rank:
+            last = len(rank)
+            mine = rank.get(overload_key(ov), last)
+            i = len(self._overloads)
+            while i and rank.get(overload_key(self._overloads[i - 1]), last) > mine:
+                i -= 1
+            self._overloads.insert(i, ov)
+        else:
+            self._overloads.append(ov)
 
     def usage(self) -> str:
         outs = []
@@ -105,10 +159,37 @@ class Command:
             outs.append(f"{self.name}({', '.join(parts)})")
         return " or ".join(outs)
 
+    def __repr__(self) -> str:
+        return f"Command({self.name!r}, lib={self.lib!r})"
+
+
+_LOADING = threading.RLock()
+_LOADING_NOW: set[Command] = set()  # deferred commands whose modules are being imported
 
 COMMANDS: dict[str, Command] = {}
 #: Commands of the other surface dialects (``dialect="m2"``), by dialect: invisible to Singular code.
 DIALECTS: dict[str, dict[str, Command]] = {}
+
+
+def table_of(dialect: Optional[str]) -> dict[str, Command]:
+    """The commands of ``dialect`` (None: the Singular dialect's)."""
+    return COMMANDS if dialect is None else DIALECTS.setdefault(dialect, {})
+
+
+def defer(dialect: Optional[str], name: str, lib: Optional[str], raw: bool, modules: tuple[str, ...],
+          order: list[str]) -> None:
+    """Register the command ``name`` without importing the ``modules`` that define it (imported
+    when it is first used); ``order``: its overloads' keys (:func:`overload_key`) as registered."""
+    table = table_of(dialect)
+    cmd = table.get(name)
+    if cmd is None:
+        cmd = table[name] = Command(name, lib, raw, "", [])
+    cmd.pending = tuple(m for m in modules if m not in sys.modules) + cmd.pending
+    cmd.rank = {key: i for i, key in enumerate(order)}
+    last = len(order)
+    cmd._overloads.sort(key=lambda ov: cmd.rank.get(overload_key(ov), last))
+    if lib:
+        LIBRARIES.add(lib)
 
 
 def command(name: str, lib: Optional[str] = None, raw: bool = False,
@@ -121,18 +202,16 @@ def command(name: str, lib: Optional[str] = None, raw: bool = False,
         wants_ctx = bool(params) and params[0].name == "ctx"
         if wants_ctx:
             params = params[1:]
-        ov = Overload(func, wants_ctx, [p.name for p in params if p.kind != p.VAR_POSITIONAL])
+        ov = Overload(func, wants_ctx, [p.name for p in params if p.kind != p.VAR_POSITIONAL],
+                      doc=inspect.getdoc(func) or "")
         ov.required = sum(1 for p in params if p.default is p.empty and p.kind == p.POSITIONAL_OR_KEYWORD)
         ov.has_varargs = any(p.kind == p.VAR_POSITIONAL for p in params)
-        table = COMMANDS if dialect is None else DIALECTS.setdefault(dialect, {})
+        table = table_of(dialect)
         cmd = table.get(name)
-        doc = inspect.getdoc(func) or ""
         if cmd is None:
-            table[name] = Command(name, lib, raw, doc, [ov])
+            table[name] = Command(name, lib, raw, "", [ov])
         else:
-            cmd.overloads.append(ov)
-            if doc and not cmd.doc:
-                cmd.doc = doc
+            cmd.add(ov)
         if lib:
             LIBRARIES.add(lib)
         return func
@@ -150,6 +229,25 @@ def operator(symbol: str, dialect: str) -> Callable[[Callable], Callable]:
         OPERATORS.setdefault(dialect, {})[symbol] = func
         return func
     return deco
+
+
+class _DeferredOperator:
+    """An operator whose module is imported on its first use (:func:`defer_operator`)."""
+
+    def __init__(self, dialect: str, symbol: str, module: str) -> None:
+        self.dialect, self.symbol, self.module = dialect, symbol, module
+
+    def __call__(self, a: Any, b: Any) -> Any:
+        importlib.import_module(self.module)
+        func = OPERATORS[self.dialect][self.symbol]
+        if func is self:
+            raise RuntimeError(f"{self.module} did not define the operator {self.symbol}")
+        return func(a, b)
+
+
+def defer_operator(dialect: str, symbol: str, module: str) -> None:
+    """Register the operator ``symbol`` of ``dialect`` defined in ``module``, imported on first use."""
+    OPERATORS.setdefault(dialect, {}).setdefault(symbol, _DeferredOperator(dialect, symbol, module))
 
 
 # ---------------------------------------------------------------- argument types

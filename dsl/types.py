@@ -74,9 +74,29 @@ def unregister_type(name: str) -> None:
     _TYPES.pop(name, None)
 
 
+class _Deferred:
+    """A type whose module is imported when the type is first used (:func:`defer_type`)."""
+
+    def __init__(self, name: str, load: Callable[[], None], statements: bool) -> None:
+        self.name, self.load = name, load
+        self.statements = True if statements else None  # what block_types reads
+
+
+def defer_type(name: str, load: Callable[[], None], statements: bool) -> None:
+    """Name the type ``name`` (for the parser) before ``load`` registers it; ``statements``:
+    whether it has a block form."""
+    _TYPES.setdefault(name, _Deferred(name, load, statements))  # type: ignore[arg-type]
+
+
 def find_type(name: str) -> Optional[LanguageType]:
     """The registered type ``name`` (None for built-in and unknown types)."""
-    return _TYPES.get(name)
+    t = _TYPES.get(name)
+    if type(t) is _Deferred:
+        t.load()
+        t = _TYPES.get(name)
+        if type(t) is _Deferred:
+            raise RuntimeError(f"the type {name} was not registered by its module")
+    return t
 
 
 def type_names() -> tuple[str, ...]:

@@ -371,11 +371,13 @@ done:
 }
 
 PyObject *f4_layout(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
+PyObject *fglm_step(PyObject *self, PyObject *args);  /* kernel/_fglm.c */
 
 static PyMethodDef methods[] = {
     {"reduce", f4_reduce, METH_VARARGS, "Reduce one F4 matrix modulo p (see the module source)."},
     {"gather", f4_gather, METH_VARARGS, "The coefficients of recorded rows for another prime (see the source)."},
     {"layout", f4_layout, METH_VARARGS, "F4's symbolic preprocessing and matrix layout (see kernel/_f4sym.c)."},
+    {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p (see kernel/_fglm.c)."},
     {NULL, NULL, 0, NULL}
 };
 

@@ -37,9 +37,12 @@ class RationalField(Field):
 
     characteristic = 0
 
-    def __init__(self) -> None:
-        self.zero = flint.fmpq(0)
-        self.one = flint.fmpq(1)
+    def __getattr__(self, name: str) -> Any:
+        """``zero`` and ``one``, made on first use (QQ exists before python-flint is imported)."""
+        if name not in ("zero", "one"):
+            raise AttributeError(name)
+        self.zero, self.one = flint.fmpq(0), flint.fmpq(1)
+        return getattr(self, name)
 
     def __call__(self, x: Any) -> flint.fmpq:
         if isinstance(x, flint.fmpq):

@@ -13,8 +13,9 @@ monomial, each leading exponent first in its dict), for a local one a standard b
 orderings (``is_graded``) over Z/p, and over QQ modular F4, except for systems too small for
 its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot verify a basis
 (then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
-(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations; lex orderings compute the
-``dp`` basis first and skip it for zero-dimensional ideals), then a ``dp`` basis (kept in the
+(:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations; lex orderings, every ordering
+over Z/p, and ideals with at least as many generators as variables compute the ``dp`` basis first
+and skip it for zero-dimensional ideals), then a ``dp`` basis (kept in the
 cache) and from it FGLM for zero-dimensional ideals (over QQ in a block ordering with at least
 :data:`FGLM_STAIRS` standard monomials the Hilbert-driven F4 instead); for the others, over Z/p and
 a lex ordering F4 on that ordering within :data:`F4_BUDGET` (its matrices can grow far past
@@ -41,7 +42,7 @@ from .buchberger import TooLong, buchberger, reduce_basis
 from .collector import paused
 from .coeffs import Field, PrimeField, RationalField
 from .errors import EngineError
-from .f4 import f4_modp
+from .f4 import f4_modp, reduce_modp
 from .fglm import NotZeroDimensional, fglm_qq, fglm_zp, staircase
 from .hilbert_driven import hilbert_driven, hilbert_f4
 from .lazard import lazard
@@ -297,9 +298,12 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
         dp = _dp_ring(ring)
         lex = all(b.kind == "lp" for b in ring.order.blocks)
         basis = cached_standard_basis([Poly(dp, g.terms) for g in gens], dp, AUTO)
-        if basis is None and lex:
+        # the dp basis first (FGLM without Buchberger's attempt) where it is cheap or likely to be
+        # needed: fewer generators than variables make the ideal positive-dimensional (Krull)
+        first = lex or kind == "Z/p" or len(gens) >= ring.nvars
+        if basis is None and first:
             basis = _degree_basis(gens, ring)
-        if basis is None or lex and not _zero_dimensional(basis):
+        if basis is None or first and not _zero_dimensional(basis):
             try:
                 return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
             except TooLong:
@@ -364,7 +368,8 @@ def _finish(basis: list[Terms], ring: PolyRing, reduced: bool) -> list[Poly]:
     """An engine's basis as the entry point returns it (see :func:`standard_basis`)."""
     if ring.order.is_global:
         if not reduced:
-            return [Poly(ring, b) for b in reduce_basis(basis, ring)]
+            reduce = reduce_modp if isinstance(ring.field, PrimeField) else reduce_basis
+            return [Poly(ring, b) for b in reduce(basis, ring)]
         out = []
         for b in basis:
             p = Poly(ring, b)

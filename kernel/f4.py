@@ -509,3 +509,35 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
     exps = {m: P.unpack(m) for m in {m for ms, _ in basis for m in ms}}  # a monomial once
     nmod = flint.nmod
     return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in basis]
+
+
+def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
+    """The reduced Gröbner basis over Z/p (sorted by increasing leading monomial) of a Gröbner
+    basis given as ``{exponent: nmod}`` dicts: the minimal elements' tails fully reduced in one
+    F4 back substitution (:meth:`F4._reduce`), as :func:`.buchberger.reduce_basis` over QQ."""
+    p = ring.field.characteristic
+    key = ring.order.key
+    polys = [b for b in basis if b]
+    maxdeg = 63
+    while maxdeg < 4 * max(sum(e) for b in polys for e in b) + 2:
+        maxdeg = 2 * maxdeg + 1
+    while True:
+        P = Packing(ring.order, maxdeg)
+        eng = F4([], P, p)
+        seen: set[int] = set()
+        try:
+            for b in polys:
+                lc = b[max(b, key=key)]
+                inv = int(lc) if lc == 1 else int(1 / lc)
+                items = sorted(((P.pack(e), int(c) * inv % p) for e, c in b.items()), reverse=True)
+                if items[0][0] in seen:  # an equal leading monomial: the earlier element serves
+                    continue
+                seen.add(items[0][0])
+                eng._add([m for m, _ in items], [c for _, c in items], True)
+            out = eng._reduce()
+            break
+        except PackingOverflow:
+            maxdeg = 2 * maxdeg + 1
+    exps = {m: P.unpack(m) for m in {m for ms, _ in out for m in ms}}
+    nmod = flint.nmod
+    return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in out]

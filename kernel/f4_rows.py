@@ -13,9 +13,9 @@ from typing import Sequence
 from .f4_vectors import RowSpec
 
 try:
-    from ._f4rows import gather as GATHER, layout as LAYOUT, reduce as KERNEL
-except ImportError:  # no compiler at install: the pure-Python path
-    KERNEL = LAYOUT = GATHER = None
+    from ._f4rows import fglm_step as FGLM_STEP, gather as GATHER, layout as LAYOUT, reduce as KERNEL
+except ImportError:  # no compiler at install (or an extension built before FGLM's step): pure Python
+    KERNEL = LAYOUT = GATHER = FGLM_STEP = None
 
 LIMIT = 1 << 31  # primes the kernel handles (products of two entries fit 62 bits)
 

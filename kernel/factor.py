@@ -19,6 +19,7 @@ import flint
 
 from . import algext_factor, flint_bridge, offload
 from .algext import AlgebraicField
+from .coeffs import PrimeField, RationalField
 from .errors import DivisionError
 from .poly import Poly
 
@@ -91,14 +92,17 @@ def factorize(f: Poly) -> tuple[Any, list[tuple[Poly, int]]]:
         return (f.lc() if not f.is_zero() else ring.field.zero), []
     if isinstance(ring.field, AlgebraicField):
         return algext_factor.factorize(f)
+    if f.total_degree() == 1 and isinstance(ring.field, (RationalField, PrimeField)):  # irreducible: no flint call
+        g = normalize(f)
+        return f.lc() / g.lc(), [(g, 1)]
     _, facs = _flint(f, lambda g: g.factor())
     out = []
     for t, m in facs:
         out.append((normalize(Poly(ring, t)), int(m)))
-    prod = ring.one()
+    lead = ring.field.one  # the product's leading coefficient: leading terms multiply in a monomial ordering
     for q, m in out:
-        prod = prod * q ** m
-    unit = f.lc() / prod.lc()
+        lead = lead * q.lc() ** m
+    unit = f.lc() / lead
     key = ring.order.key
     out.sort(key=lambda t: (t[1], key(t[0].lm()), len(t[0])))
     return unit, out

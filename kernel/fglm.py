@@ -13,7 +13,10 @@ monomials only, so the basis comes out reduced); an independent one is a new sta
 
 Vectors are packed modulo ``p`` as in :mod:`.f4_vectors`: slot ``j < D`` holds the coefficient
 of ``B[j]``; slot ``D + k`` records how a row combines the normal forms of the new standard
-monomials (the ``k``-th one), so a dependency is read off when the low slots vanish.
+monomials (the ``k``-th one), so a dependency is read off when the low slots vanish.  With
+the compiled extension the same steps run in C on dense arrays (``kernel/_fglm.c``,
+:class:`_Compiled`).  Whether a visited monomial lies in the new leading ideal is read off its
+quotients by the variables (visited before it), not tested against every leading monomial.
 
 Over QQ the conversion runs modulo primes and is lifted by Chinese remaindering and rational
 reconstruction (:mod:`.modular`), then verified: the generators reduce to 0 by the lifted basis
@@ -24,6 +27,7 @@ i.e. ``I`` itself.
 from __future__ import annotations
 
 import heapq
+from array import array
 from dataclasses import dataclass
 from typing import Any, Sequence
 
@@ -31,9 +35,9 @@ import flint
 
 from .errors import NotSupported
 from .f4 import F4, PackingOverflow
-from .f4_vectors import Vectors
+from .f4_rows import FGLM_STEP, compiled
+from .f4_vectors import Vectors, support
 from .fglm_solve import solve_qq
-from .hilbert import kbase
 from .monomials import Packing
 from .order import Exp, MonomialOrder
 
@@ -62,10 +66,27 @@ class Unlucky(Exception):
 
 def staircase(lms: Sequence[Exp], nvars: int) -> list[Exp]:
     """The standard monomials of a zero-dimensional leading ideal (:class:`NotZeroDimensional`
-    otherwise)."""
-    out = kbase(lms, nvars)
-    if not out and not any(not any(e) for e in lms):
+    otherwise; ``[]`` for the unit ideal), in no particular order.  Grown from 1 by the
+    variables: a monomial is in the leading ideal ``L`` iff it is a leading monomial or one of
+    its quotients by a variable is in ``L``, so ``t`` is standard iff it is no leading
+    monomial and all its quotients ``t / x_j`` are standard (already found)."""
+    lmset = set(lms)
+    if (0,) * nvars in lmset:
+        return []
+    pure = {next(i for i, a in enumerate(e) if a) for e in lmset if sum(1 for a in e if a) == 1}
+    if len(pure) < nvars:
         raise NotZeroDimensional("FGLM needs a zero-dimensional ideal")
+    one = (0,) * nvars
+    out = [one]
+    std = {one}
+    for b in out:  # grows while it is read
+        for i in range(nvars):
+            t = b[:i] + (b[i] + 1,) + b[i + 1:]
+            if t in std or t in lmset:
+                continue
+            if all(t[:j] + (t[j] - 1,) + t[j + 1:] in std for j in range(nvars) if t[j] and j != i):
+                std.add(t)
+                out.append(t)
     return out
 
 
@@ -117,95 +138,67 @@ def _border(basis, lms, P: Packing, border, B, p) -> dict[Exp, list[int]]:
         eng._add([m for m, _ in items], [c for _, c in items], True)
         packed_lms.append(items[0][0])
     pivots = _border_pivots(P, packed_lms, border)
-    T, pivcols, nonpivot, *_ = eng._matrix([], pivots)
-    m = len(nonpivot)
+    border = list(border)
+    want = [P.pack(t) for t in border]
+    if compiled(p):
+        _, nonpivot, (_, _, tails), _ = eng._matrix_compiled([], pivots, want)
+    else:
+        T, pivcols, nonpivot, *_ = eng._matrix([], pivots)
+        where = {c: j for j, c in enumerate(pivcols)}
+        tails = [support(eng.vec, T[where[x]], len(nonpivot)) for x in want]
     index = {P.pack(b): j for j, b in enumerate(B)}
     slot_to_b = [index[x] for x in nonpivot]  # non-pivot monomials are standard
-    where = {c: j for j, c in enumerate(pivcols)}
-    vec = eng.vec
     D = len(B)
     out = {}
-    for t in border:
-        vals = vec.values(T[where[P.pack(t)]], m) if m else []
+    for t, (slots, vals) in zip(border, tails):
         nf = [0] * D
-        for s, v in enumerate(vals):
-            if v:
-                nf[slot_to_b[s]] = p - v
+        for s, v in zip(slots, vals):
+            nf[slot_to_b[s]] = p - v
         out[t] = nf
     return out
 
 
 def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: MonomialOrder, p: int,
-              border: dict[Exp, list[int]] | None = None) -> Conversion:
+              border: dict[Exp, list[int]] | None = None, B: list[Exp] | None = None) -> Conversion:
     """The reduced basis for ``target`` of the ideal with the monic Gröbner basis ``basis``
-    (for ``source``, coefficients as ints mod ``p``; ``border``: its :func:`border_forms` if
-    known already)."""
+    (for ``source``, coefficients as ints mod ``p``; ``border``: its :func:`border_forms` and
+    ``B`` its standard monomials in increasing ``source`` order, if known already)."""
     n = source.nvars
     key = source.key
-    B = sorted(staircase([max(g, key=key) for g in basis], n), key=key)
+    if B is None:
+        B = sorted(staircase([max(g, key=key) for g in basis], n), key=key)
     D = len(B)
     if not D:
         return Conversion([(0,) * n], [[]], [], [], [])
     if border is None:
         border = border_forms(basis, source, B, p)
-    vec = Vectors(p)
-    w = vec.slot
-    mask = (1 << w) - 1
-    low = (1 << (w * D)) - 1
-    norm = vec.normalizer(2 * D + 1)
-    hmax = vec.hmax
     index = {b: j for j, b in enumerate(B)}
-    packed_border = {t: _pack(vec, nf) for t, nf in border.items()}
-
-    def column(t: Exp) -> int:
-        j = index.get(t)
-        return 1 << (w * j) if j is not None else packed_border[t]
-
+    algebra = _Compiled if compiled(p) and (n + 3) * D * D <= COMPILED_ENTRIES else _Packed
+    lin = algebra(p, B, index, border, n)
     tkey = target.key
     one = (0,) * n
     out = Conversion([], [], [], [], [])
-    nfs: list[int] = []     # NF of each new standard monomial (low slots)
-    piv: list[tuple[int, int]] = []  # (pivot slot, row) semi-echelon rows with their combinations
     heap = [(tkey(one), one, -1, -1)]
     seen = {one}
+    # monomials visited and found in the new leading ideal; each visited t = x_i s (s standard)
+    # has its other quotients t / x_j = x_i (s / x_j) visited before it (smaller, pushed when
+    # the standard s / x_j was found), so t is in the ideal iff one of them is
+    inside: set[Exp] = set()
     while heap:
         _, t, i, k = heapq.heappop(heap)
-        if any(all(a <= b for a, b in zip(lm, t)) for lm in out.lms):
+        if any(t[j] and t[:j] + (t[j] - 1,) + t[j + 1:] in inside for j in range(n) if j != i):
+            inside.add(t)
             continue
-        if k < 0 or t in index or t in packed_border:
-            v = column(t)
-        else:
-            src = nfs[k]
-            terms = []
-            for j in range(D):
-                c = (src >> (w * j)) & mask
-                if c:
-                    terms.append((c, column(_times(B[j], i))))
-            v = vec.add_multiples(0, terms, D)
         K = len(out.stairs)
-        x = v | (1 << (w * (D + K)))
-        count = 0
-        for s, y in piv:
-            c = ((x >> (w * s)) & mask) % p
-            if c:
-                x += (p - c) * y
-                count += 1
-                if count == hmax:
-                    x, count = norm(x), 0
-        x = norm(x)
-        if not x & low:
+        tail = lin.visit(t, i, k, K)
+        if tail is not None:
+            inside.add(t)
             out.lms.append(t)
             out.lm_from.append((i, k))
-            out.tails.append([(x >> (w * (D + j))) & mask for j in range(K)] + [0] * (D - K))
+            out.tails.append(tail + [0] * (D - K))
             continue
-        s0 = ((x & low).bit_length() - 1) // w
-        c = (x >> (w * s0)) & mask
-        if c != 1:
-            x = norm(x * pow(c, -1, p))
-        piv.append((s0, x))
         out.stairs.append(t)
         out.stair_from.append((i, k))
-        nfs.append(v)
         for j in range(n):
             u = _times(t, j)
             if u not in seen:
@@ -214,6 +207,105 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
     if len(out.stairs) != D:
         raise Unlucky("the new staircase has the wrong size")
     return out
+
+
+COMPILED_ENTRIES = 1 << 23
+"""FGLM modulo ``p`` runs its linear algebra in the compiled kernel (kernel/_fglm.c) when its
+dense arrays (the ``n`` multiplication matrices and the rows, ``(n + 3) D^2`` entries of 4
+bytes) stay within this many entries; otherwise on packed Python integers."""
+
+
+class _Packed:
+    """FGLM's linear algebra on vectors packed into Python integers (:mod:`.f4_vectors`):
+    :meth:`visit` forms the normal form of a monomial and reduces it by the rows so far."""
+
+    def __init__(self, p: int, B: list[Exp], index: dict[Exp, int], border: dict[Exp, list[int]], n: int) -> None:
+        self.p, self.B, self.index, self.D = p, B, index, len(B)
+        self.vec = vec = Vectors(p)
+        self.w = vec.slot
+        self.mask = (1 << self.w) - 1
+        self.low = (1 << (self.w * self.D)) - 1
+        self.norm = vec.normalizer(2 * self.D + 1)
+        self.border = {t: _pack(vec, nf) for t, nf in border.items()}
+        self.nfs: list[int] = []  # NF of each new standard monomial (low slots)
+        self.piv: list[tuple[int, int]] = []  # (pivot slot, row) semi-echelon rows with their combinations
+
+    def column(self, t: Exp) -> int:
+        j = self.index.get(t)
+        return 1 << (self.w * j) if j is not None else self.border[t]
+
+    def visit(self, t: Exp, i: int, k: int, K: int) -> list[int] | None:
+        """``t = x_i * stairs[k]`` (``k < 0``: ``t = 1``), ``K`` new standard monomials so far:
+        the tail over them if ``t`` is a new leading monomial, else None (``t`` is standard)."""
+        p, w, mask, D, norm = self.p, self.w, self.mask, self.D, self.norm
+        if k < 0 or t in self.index or t in self.border:
+            v = self.column(t)
+        else:
+            src = self.nfs[k]
+            terms = []
+            for j in range(D):
+                c = (src >> (w * j)) & mask
+                if c:
+                    terms.append((c, self.column(_times(self.B[j], i))))
+            v = self.vec.add_multiples(0, terms, D)
+        x = v | (1 << (w * (D + K)))
+        count, hmax = 0, self.vec.hmax
+        for s, y in self.piv:
+            c = ((x >> (w * s)) & mask) % p
+            if c:
+                x += (p - c) * y
+                count += 1
+                if count == hmax:
+                    x, count = norm(x), 0
+        x = norm(x)
+        if not x & self.low:
+            return [(x >> (w * (D + j))) & mask for j in range(K)]
+        s0 = ((x & self.low).bit_length() - 1) // w
+        c = (x >> (w * s0)) & mask
+        if c != 1:
+            x = norm(x * pow(c, -1, p))
+        self.piv.append((s0, x))
+        self.nfs.append(v)
+        return None
+
+
+class _Compiled:
+    """:class:`_Packed`'s operations in the compiled kernel (``fglm_step`` of kernel/_fglm.c) on
+    dense arrays: the multiplication matrices, the new standard monomials' normal forms, the
+    rows and their pivots."""
+
+    def __init__(self, p: int, B: list[Exp], index: dict[Exp, int], border: dict[Exp, list[int]], n: int) -> None:
+        D = self.D = len(B)
+        self.p, self.index = p, index
+        M = array("I")
+        unit = [0] * D
+        self.where: dict[Exp, tuple[int, int]] = {}  # a border monomial as x_a * B[j]
+        for a in range(n):
+            for j, b in enumerate(B):
+                u = _times(b, a)
+                r = index.get(u)
+                if r is None:
+                    M.extend(border[u])
+                    self.where.setdefault(u, (a, j))
+                else:
+                    unit[r] = 1
+                    M.extend(unit)
+                    unit[r] = 0
+        self.M = M
+        self.nfs = array("I", bytes(4 * D * (D + 1)))
+        self.piv = array("I", bytes(4 * (2 * D + 1) * (D + 1)))
+        self.slot = array("i", bytes(4 * (D + 1)))
+
+    def visit(self, t: Exp, i: int, k: int, K: int) -> list[int] | None:
+        """As :meth:`_Packed.visit`."""
+        j = self.index.get(t)
+        if j is not None:
+            mode, a, b = 0, j, 0
+        elif t in self.where:
+            mode, (a, b) = 1, self.where[t]
+        else:
+            mode, a, b = 2, i, k
+        return FGLM_STEP(self.p, self.D, K, self.M, self.nfs, self.piv, self.slot, mode, a, b)
 
 
 def _times(e: Exp, i: int) -> Exp:
@@ -282,7 +374,7 @@ def fglm_qq(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: Mono
         if tried > 5:
             break
         try:
-            conv = fglm_modp(mod, source, target, p)
+            conv = fglm_modp(mod, source, target, p, B=B)
         except Unlucky:
             continue
         out = _exact(conv, border, B, target)
@@ -360,44 +452,69 @@ def _exact(conv: Conversion, border: dict[Exp, list[Any]], B: list[Exp], target:
     D = len(B)
     index = {b: j for j, b in enumerate(B)}
     one = flint.fmpq(1)
-    zero = flint.fmpq(0)
+    Vec = tuple[flint.fmpz_mat, flint.fmpz]  # a vector over QQ: integer numerators, one denominator
+    known: dict[Exp, Vec] = {}
 
-    def column(t: Exp) -> flint.fmpq_mat:
-        j = index.get(t)
-        if j is not None:
-            return flint.fmpq_mat(D, 1, [one if r == j else zero for r in range(D)])
-        return flint.fmpq_mat(D, 1, border[t])
+    def column(t: Exp) -> Vec:
+        v = known.get(t)
+        if v is None:
+            j = index.get(t)
+            if j is not None:
+                u = flint.fmpz_mat(D, 1)
+                u[j, 0] = 1
+                v = u, flint.fmpz(1)
+            else:
+                v = flint.fmpq_mat(D, 1, border[t]).numer_denom()
+            known[t] = v
+        return v
 
-    mats: dict[int, flint.fmpq_mat] = {}
+    mats: dict[int, Vec] = {}
 
-    def mult(i: int) -> flint.fmpq_mat:
+    def mult(i: int) -> Vec:
         m = mats.get(i)
-        if m is None:
-            cols = [column(_times(b, i)).entries() for b in B]
-            m = mats[i] = flint.fmpq_mat(D, D, [cols[c][r] for r in range(D) for c in range(D)])
+        if m is None:  # the columns over their common denominator, as rows, transposed
+            cols = [column(_times(b, i)) for b in B]
+            d = flint.fmpz(1)
+            for _, dc in cols:
+                if dc != 1:
+                    d = d.lcm(dc)
+            flat: list = []
+            for v, dc in cols:
+                flat.extend((v if dc == d else v * (d // dc)).entries())
+            m = mats[i] = flint.fmpz_mat(D, D, flat).transpose(), d
         return m
 
-    def vector(t: Exp, i: int, k: int) -> flint.fmpq_mat:
+    def vector(t: Exp, i: int, k: int) -> Vec:
         if k < 0 or t in index or t in border:
             return column(t)
-        return mult(i) * stairs[k]
+        (M, dm), (v, dv) = mult(i), stairs[k]
+        w, d = M * v, dm * dv
+        g = d
+        for x in w.entries():
+            if g == 1:
+                break
+            g = g.gcd(x)
+        return (w, d) if g == 1 else (w / g, d // g)
 
-    stairs: list[flint.fmpq_mat] = []
+    stairs: list[Vec] = []
     for t, (i, k) in zip(conv.stairs, conv.stair_from):
         stairs.append(vector(t, i, k))
-    rhs = [vector(t, i, k).entries() for t, (i, k) in zip(conv.lms, conv.lm_from)]
-    cols = [v.entries() for v in stairs]
+    rhs = [vector(t, i, k) for t, (i, k) in zip(conv.lms, conv.lm_from)]
+    cols = [v.entries() for v, _ in stairs]
+    rcols = [v.entries() for v, _ in rhs]
     L = len(rhs)
-    V = flint.fmpq_mat(D, D, [cols[c][r] for r in range(D) for c in range(D)])
-    N = flint.fmpq_mat(D, L, [rhs[c][r] for r in range(D) for c in range(L)])
+    # V diag(1/dv) X = N diag(1/dn):  X = diag(dv) Z diag(1/dn) with Vn Z = Nn (integer matrices)
+    V = flint.fmpq_mat(flint.fmpz_mat(D, D, [cols[c][r] for r in range(D) for c in range(D)]))
+    N = flint.fmpq_mat(flint.fmpz_mat(D, L, [rcols[c][r] for r in range(D) for c in range(L)]))
     try:
-        A = solve_qq(V, N)  # multimodular, in the process
+        Z = solve_qq(V, N)  # multimodular, in the process
     except ZeroDivisionError:
         return None
+    A = [[Z[k, c] * stairs[k][1] / rhs[c][1] for k in range(D)] for c in range(L)]
     tkey = target.key
     conv.tails = []
     for c, lm in enumerate(conv.lms):
-        tail = [-A[k, c] for k in range(D)]
+        tail = [-a for a in A[c]]
         top = tkey(lm)
         if any(a and tkey(s) > top for a, s in zip(tail, conv.stairs)):
             return None

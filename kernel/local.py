@@ -405,7 +405,11 @@ def _tangent_dim(gens: Sequence[Poly], at: Sequence[Poly], ring: PolyRing, m: Po
     return dimension(linear + [m], ring)
 
 
-def stays_prime(prime: Sequence[Poly], point: AlgebraicPoint, tries: int = 6) -> bool:
+MinAss = Callable[[Sequence[Poly], PolyRing], list[list[Poly]]]  # min_ass_gtz or an equivalent
+
+
+def stays_prime(prime: Sequence[Poly], point: AlgebraicPoint, tries: int = 6,
+                min_ass: MinAss = min_ass_gtz) -> bool:
     """A sufficient test that a prime of ``Q[x]`` of positive dimension stays prime over
     ``K = Q[t]/m(t)``: a zero-dimensional slice has a prime ``Z`` of smooth points of
     ``V(prime)`` with ``Z`` prime over K.  Then ``Gal(Qbar/K)`` moves the points of ``Z``
@@ -428,7 +432,7 @@ def stays_prime(prime: Sequence[Poly], point: AlgebraicPoint, tries: int = 6) ->
                           for i in free]
         if dimension(sliced, ring) != 0:
             continue
-        for Z in min_ass_gtz(sliced, ring):
+        for Z in min_ass(sliced, ring):
             z = primitive_element(Z, ring)
             if (_tangent_dim(lift(basis, z.ring), z.coords, z.ring, z.minpoly, d) == d
                     and _irreducible_over(point.minpoly, z.minpoly)):
@@ -456,7 +460,8 @@ def _irreducible_over(m: Poly, mu: Poly) -> bool:
 
 
 def local_components_over(centred: Sequence[Poly], point: AlgebraicPoint,
-                          primes: Sequence[Sequence[Poly]] | None = None) -> list[list[Poly]]:
+                          primes: Sequence[Sequence[Poly]] | None = None,
+                          min_ass: MinAss = min_ass_gtz) -> list[list[Poly]]:
     """The minimal primes of ``centred`` (an ideal of ``point.ring`` containing ``m(t)``)
     through the origin over K (contained in ``(x, m(t))``): the local components at the
     point.  With ``primes``, the minimal primes over Q of the uncentred ideal: each one
@@ -466,34 +471,37 @@ def local_components_over(centred: Sequence[Poly], point: AlgebraicPoint,
     n = ring.nvars - 1
     origin = ring.gens()[:n] + [point.minpoly]
     if primes is None:
-        return [p for p in min_ass_gtz(centred, ring) if is_subset(p, origin, ring)]
+        return [p for p in min_ass(centred, ring) if is_subset(p, origin, ring)]
     comps = []
     for P in primes:
         moved = _moved(P, point)
         if not is_subset(moved, origin, ring):
             continue
-        if stays_prime(P, point):
+        if stays_prime(P, point, min_ass=min_ass):
             comps.append(groebner(moved, ring))
         else:
-            comps += [p for p in min_ass_gtz(moved, ring) if is_subset(p, origin, ring)]
+            comps += [p for p in min_ass(moved, ring) if is_subset(p, origin, ring)]
     return comps
 
 
 def classify_algebraic_point(gens: Sequence[Poly], point: AlgebraicPoint,
-                             primes: Sequence[Sequence[Poly]] | None = None) -> PointInfo:
+                             primes: Sequence[Sequence[Poly]] | None = None, min_ass: MinAss = min_ass_gtz,
+                             cone_over: Callable[[Sequence[Poly], AlgebraicPoint], list[Poly]] | None = None
+                             ) -> PointInfo:
     """:func:`classify_point` at the conjugate points (all alike: Galois conjugate), over K:
     components, cone and tangent space in coordinates centred at the point, in ``point.ring``;
     ``point`` of the result is ``coords``.  ``primes``: the minimal primes of ``gens`` over Q,
-    if known (see :func:`local_components_over`)."""
+    if known (see :func:`local_components_over`); ``min_ass`` and ``cone_over``: functions computing
+    what :func:`~.primdec.min_ass_gtz` and :func:`tangent_cone_over` do (the caller's faster ones)."""
     ring = point.ring
     n = ring.nvars - 1
     centred = centre_at(gens, point)
-    comps = local_components_over(centred, point, primes)
+    comps = local_components_over(centred, point, primes, min_ass)
     if not comps:
         raise DomainError("no component through the points: primes must be the ideal's minimal primes")
     radical = intersect(*comps, ring=ring) if len(comps) > 1 else comps[0]
     d = max(dimension(c, ring) for c in comps)
     t = _tangent_dim(radical, [ring.zero()] * n, ring, point.minpoly, d)
-    cone = tangent_cone_over(centred, point)
+    cone = (cone_over or tangent_cone_over)(centred, point)
     lms = [g.lm()[:n] for g in cone if not _in_t(g, n)]
     return PointInfo(_kind(len(comps), t, d), tuple(point.coords), d, t, mult(lms, n), cone, comps)

@@ -5,6 +5,8 @@
   (:mod:`.lazard`), which homogenizes nothing, its global basis from the compiled F4
   (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora, 0.05 s by F4).
 - Otherwise over Z/p: Mora (:mod:`.mora`) within :data:`MORA_FIRST` reduction steps in all
+  (:data:`MORA_COMPILED` when its loop runs compiled, :mod:`.mora_compiled`, and then Lazard
+  within :data:`LAZARD_SMALL` entries and Mora without trial cuts within :data:`MORA_UNCUT`)
   (small and medium local problems end there, and Lazard would pay for the components away
   from the origin), then Lazard with F4 within :data:`LAZARD_BUDGET` matrix entries (Singular's
   ``mora_9`` and ``mora_10``: more than 60 s by Mora, 2.6 s and 0.07 s by Lazard), then Mora
@@ -20,6 +22,7 @@ from .coeffs import PrimeField
 from .f4 import f4_modp
 from .lazard import lazard
 from .mora import Budget, BudgetExceeded, Terms, mora
+from .mora_compiled import CompiledMora
 from .poly import Poly, PolyRing
 
 GlobalBasis = Callable[[list[Poly], PolyRing], list[Poly]]
@@ -29,6 +32,18 @@ MORA_FIRST = 2000
 (steps, Mora / Lazard seconds): mora_6 1435, 0.06 / 0.02; mora1 6236, 0.28 / 0.10; mora_5
 32764, 2.2 / 2.1; mora_7 29765, 2.8 / 2.5; mora_9 and mora_10 past 10^5 steps and 30 s, Lazard
 2.6 / 0.07; the Puiseux parametrization in ``ls`` 0 steps, 0.3 ms / 2.9 s."""
+
+MORA_COMPILED = 40_000
+"""Reduction steps (about 0.1-0.4 s) of compiled Mora before Lazard's method.  Measured (steps,
+compiled Mora / Lazard seconds): mora1 6236, 0.02 / 0.10; mora_5 32764, 0.14 / 2.1; mora_7
+29765, 0.37 / 2.5; mora_10 past 166,000, 1.3 / 0.07; mora_9 205,000, 3.7 / 3.7."""
+
+LAZARD_SMALL = 250_000
+"""After :data:`MORA_COMPILED`: Lazard's method within this many matrix entries (mora_10: 0.08 s;
+mora_9 needs 1-4 M, and runs out of these in 0.3 s), then compiled Mora without trial cuts
+within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 1.2 s; Lazard 2.9 s)."""
+
+MORA_UNCUT = 1_000_000
 
 MORA_HOMOGENEOUS = 200
 """Reduction steps Mora gets on homogeneous generators before Lazard's method (about 10 ms;
@@ -53,10 +68,20 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
             return mora(gens, ring, Budget())
         except BudgetExceeded:
             return lazard(gens, ring, global_basis)
+    compiled = CompiledMora.usable(ring)
     try:
-        return mora(gens, ring, Budget(MORA_FIRST), shared=True)
+        return mora(gens, ring, Budget(MORA_COMPILED if compiled else MORA_FIRST), shared=True)
     except BudgetExceeded:
         pass
+    if compiled:
+        try:
+            return lazard(gens, ring, _f4_within(LAZARD_SMALL))
+        except TooLong:
+            pass
+        try:
+            return mora(gens, ring, Budget(MORA_UNCUT), shared=True, trials=False)
+        except BudgetExceeded:
+            pass
     try:
         return lazard(gens, ring, _f4_within(LAZARD_BUDGET))
     except TooLong:

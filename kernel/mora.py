@@ -16,8 +16,10 @@ usually the ones Singular prints.  Mora's normal form terminates, but on some id
 reductions into degree 50 with coefficients of thousands of digits (Singular's own ``reduce``
 hangs on some of them): a :class:`Budget` bounds it, and the engine driver (:mod:`.engines`)
 then falls back to Lazard's method (:mod:`.lazard`).  For ``ds`` the polynomial under
-reduction lives on packed monomials (:mod:`.mora_packed`); the highest corner that cuts the
-tails of zero-dimensional ideals is :mod:`.mora_corner`.
+reduction lives on packed monomials (:mod:`.mora_packed`), over Z/p in compiled code when the
+C extension is built (:mod:`.mora_compiled`: the same steps); the highest corner that cuts the
+tails of zero-dimensional ideals is :mod:`.mora_corner`.  Generators in disjoint sets of
+variables are computed group by group (:func:`_separate`).
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
 terms, valid for every ordering, GP 2.5.9) and the product criterion only when it really
@@ -30,7 +32,8 @@ import heapq
 from operator import neg
 from typing import Any, Callable, Sequence
 
-from .mora_corner import Corner
+from .mora_compiled import CompiledMora
+from .mora_corner import Corner, components
 from .mora_packed import MAX_DEGREE, PackedFront, Packing
 from .order import Exp
 from .poly import Poly, PolyRing, add_exp, divides, lcm_exp, support_mask
@@ -300,7 +303,7 @@ TRIAL_STEPS = 200_000
 
 
 def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
-         shared: bool = False) -> list[Terms]:
+         shared: bool = False, trials: bool = True) -> list[Terms]:
     """A minimal standard basis (as dicts, leading-term reduced, monic) by Buchberger's
     algorithm with Mora's normal form: the Gebauer–Möller criteria, a queue of generators,
     pairs and postponed polynomials ordered by sugar, and one growing set of reducers
@@ -315,9 +318,18 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     runs without a cut; a trial cut is skipped when an earlier trial left a monomial of that
     degree outside its leading monomials.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
     out; each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
-    trials and the final run all draw on ``budget``."""
+    trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts."""
     live = [g for g in gens if not g.is_zero()]
-    if live and Corner(ring).enabled:
+    parts = _separate(live, ring.nvars)
+    if len(parts) > 1:
+        out = []
+        for part in parts:
+            basis = mora(part, ring, budget, shared, trials)
+            if any(b.get(ring.zero_exp) for b in basis):
+                return basis  # the unit ideal
+            out.extend(basis)
+        return out
+    if live and trials and Corner(ring).enabled:
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
         for factor in TRIAL_CUTS:
@@ -335,6 +347,23 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 return basis
             seen = max(seen, corner.seen if corner.seen is not None else -1)
     return _mora(live, ring, budget)[0]
+
+
+def _separate(gens: list[Poly], n: int) -> list[list[Poly]]:
+    """The generators grouped by the variables they share (one group when they cannot be split
+    or one of them is a constant).  Standard bases of the groups together are one of the whole
+    ideal, for every ordering: an S-polynomial of ``f`` and ``g`` in disjoint variables is
+    ``tail(f) g - tail(g) f``, whose two products have different leading monomials (one is
+    ``LM(tail f) LM(g)``, the other ``LM(tail g) LM(f)``): a standard representation."""
+    if len(gens) < 2 or any(not any(e) for g in gens for e in g.terms):
+        return [gens]
+    groups = components([tuple(map(sum, zip(*g.terms))) for g in gens], n)  # each one's support
+    index = {i: k for k, part in enumerate(groups) for i in part}
+    parts: dict[int, list[Poly]] = {}
+    for g in gens:
+        e = next(iter(g.terms))
+        parts.setdefault(index[next(i for i, v in enumerate(e) if v)], []).append(g)
+    return list(parts.values())
 
 
 def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
@@ -357,8 +386,16 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     lead = _leading_rank(ring)
     blocks = ring.order.blocks
     packing = Packing(ring.nvars) if len(blocks) == 1 and blocks[0].kind == "ds" else None
+    compiled = CompiledMora(ring) if CompiledMora.usable(ring) else None
+    if packing is not None:
+        rank = lead  # the same order as ``rank`` above, sooner computed
 
-    def front(terms: Terms) -> Front | PackedFront:
+    def front(terms: Terms) -> Front | PackedFront | bytes:
+        if compiled is not None:
+            b = compiled.pack(terms)
+            if b is None:
+                raise BudgetExceeded
+            return b
         if packing is not None:
             if max((sum(e) for e in terms), default=0) > MAX_DEGREE:
                 raise BudgetExceeded
@@ -368,7 +405,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     def push(sugar: int, lm: Exp, item: Any) -> None:
         nonlocal counter
         counter += 1
-        heapq.heappush(queue, (sugar, rank(lm), counter, item))
+        heapq.heappush(queue, (sugar, rank(lm), counter, item, lm))
 
     def first_in_queue(sugar: int, lm: Exp) -> bool:
         """Whether work of this sugar and leading monomial would be taken before the rest."""
@@ -384,7 +421,12 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         for i in range(k):
             if active[i]:
                 new.append(_Pair(i, k, lcm_exp(basis[i].lm, h.lm)))
-        kept = [a for a in new if not any(b.lcm != a.lcm and divides(b.lcm, a.lcm) for b in new)]
+        # the pairs whose lcm no other lcm divides properly (masks and degrees first)
+        masks = [basis[a.i].mask | h.mask for a in new]
+        degrees = [sum(a.lcm) for a in new]
+        span = range(len(new))
+        kept = [a for a, m, d in zip(new, masks, degrees)
+                if not any(degrees[y] < d and not masks[y] & ~m and divides(new[y].lcm, a.lcm) for y in span)]
         by_lcm: dict[Exp, tuple[_Pair, bool]] = {}
         for a in kept:
             lifts = _lifts(basis[a.i], h)
@@ -404,9 +446,26 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             if active[i] and divides(h.lm, basis[i].lm):
                 active[i] = False
 
+    def reduce_compiled(w: bytes, sugar: int) -> tuple[Terms, int] | None:
+        """:func:`reduce` in compiled code."""
+        first_in_queue(0, ring.zero_exp)  # drops the dead pairs at the head
+        head = (queue[0][0], queue[0][4]) if queue else None
+        status, h, sugar, left, lm = compiled.reduce(w, sugar, head, corner.cut,
+                                                     None if budget is None else budget.steps)
+        if budget is not None:
+            budget.steps = left
+        if status == 2:
+            raise BudgetExceeded
+        if status == 1:
+            push(sugar, lm, (h, sugar))
+            return None
+        return h, sugar
+
     def reduce(w: Front, sugar: int) -> tuple[Terms, int] | None:
         """Reduce until irreducible (returned with its sugar; {} for zero) or postponed
         (None)."""
+        if compiled is not None:
+            return reduce_compiled(w, sugar)
         limit, passes = sugar + LAZY_DEGREE, 0
         w.trim(corner.cut)
         while w.p:
@@ -443,7 +502,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         if not g.is_zero():
             push(g.total_degree(), g.lm(), (front(dict(g.terms)), g.total_degree()))
     while queue:
-        sugar, _, _, item = heapq.heappop(queue)
+        sugar, _, _, item, _ = heapq.heappop(queue)
         if isinstance(item, _Pair):
             if not item.alive:
                 continue
@@ -451,21 +510,34 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             pairs.remove(item)
             if corner.cut is not None and sum(item.lcm) > corner.cut:
                 continue  # every term of the S-polynomial is above the cut
-            w = front(_spoly(basis[item.i], basis[item.j], item.lcm))
+            if compiled is not None:
+                w = compiled.spoly(basis[item.i].b, basis[item.j].b, corner.cut)
+                if w is None:
+                    raise BudgetExceeded
+            else:
+                w = front(_spoly(basis[item.i], basis[item.j], item.lcm))
         else:
             w, sugar = item
         done = reduce(w, sugar)
         if done is None or not done[0]:
             continue
         h, sugar = done
-        h = monic(cancel_unit(h, key), key)
-        lm = max(h, key=key)
-        if lm == ring.zero_exp:
-            return [{ring.zero_exp: ring.field.one}], corner
-        elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)))
-        _insert(pool, elem)
+        if compiled is not None:
+            elem = compiled.element(h, sugar)
+            if elem is None:
+                return [{ring.zero_exp: ring.field.one}], corner
+            compiled.insert(elem.b, elem.ecart)
+        else:
+            h = monic(cancel_unit(h, key), key)
+            lm = max(h, key=key)
+            if lm == ring.zero_exp:
+                return [{ring.zero_exp: ring.field.one}], corner
+            elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)))
+            _insert(pool, elem)
         update(elem)
-        if corner.update(lm, lambda: [b.lm for b, a in zip(basis, active) if a]):
+        if corner.update(elem.lm, lambda: [b.lm for b, a in zip(basis, active) if a]):
+            if compiled is not None:
+                compiled.cut_tails(basis, corner.cut)
             for g in pool:
                 g.truncate(corner.cut)
     return [b.p for b, a in zip(basis, active) if a], corner

@@ -28,7 +28,7 @@ def top_degree(gens: Sequence[Exp]) -> Top | None:
     if any(not any(g) for g in gens):
         return UNIT
     degree, witness = 0, [0] * n
-    for part in _components(gens, n):
+    for part in components(gens, n):
         t = _top(tuple(tuple(g[i] for i in part) for g in gens if any(g[i] for i in part)), len(part), {})
         if t is None:
             return None
@@ -38,7 +38,7 @@ def top_degree(gens: Sequence[Exp]) -> Top | None:
     return degree, tuple(witness)
 
 
-def _components(gens: Sequence[Exp], n: int) -> list[list[int]]:
+def components(gens: Sequence[Exp], n: int) -> list[list[int]]:
     """The variables grouped by the generators that join them (connected components): the
     monomials outside the ideal are the products of one outside each group's ideal, so the
     top degrees add up."""

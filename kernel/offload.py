@@ -18,6 +18,8 @@ import os
 import threading
 from typing import Any, Callable, Optional
 
+from . import lazy_modules
+
 #: Estimated seconds from which a call goes to a child (the fork, the pickling of the result and
 #: its reading back cost about two conversions of the result; see docs/reliability.md "Limits").
 THRESHOLD = 1.0
@@ -278,4 +280,4 @@ def _register_pickling() -> None:
     copyreg.pickle(flint.fmpz_mat, lambda m: (flint.fmpz_mat, (m.nrows(), m.ncols(), [int(x) for x in m.entries()])))
 
 
-_register_pickling()
+lazy_modules.when_loaded("flint", _register_pickling)

@@ -40,7 +40,7 @@ from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing
 from .real_chart import Chart
 from .real_fibers import complete_intersection, curve_part, linear_poly
-from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, primitive, separate
+from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, primitive, separate, sign_at
 from .real_solve import (RUR, QuotientAlgebra, arb_bounds, ball_eval, from_fmpq_poly, rur, rur_of,
                          shape_representation, solution_boxes)
 
@@ -90,7 +90,7 @@ class Branches:
     kind: str
     tangents: list[Box]
     rays: list[tuple[int, int]]
-    radius2: fmpq
+    radius2: fmpq | None  # None: decided from the tangent cone (an ordinary point), no sphere
 
 
 class _Setting:
@@ -211,9 +211,75 @@ def half_branch_counts(curve: Sequence[Poly], ring: PolyRing, fam: PointFamily) 
     """The number of real half-branches of the curve (radical, every component of dimension
     one, generators of ``ring``) at each real point of the family (in the order of the real roots
     of ``fam.poly``)."""
+    counts = _double_point_counts(curve, ring, fam)
+    if counts is not None:
+        return counts
     S = _Setting(curve, ring, fam)
+    lines = _cone_lines(S, _cone(S))
+    if lines.ordinary():  # one smooth branch per tangent line, real when its line is
+        return [2 * len(lines.roots[j]) for j in range(len(S.roots))]
     _, _, owners = _sphere(S, _critical_bound(S))
     return [owners.count(j) for j in range(len(S.roots))]
+
+
+def _double_point_counts(curve: Sequence[Poly], ring: PolyRing, fam: PointFamily) -> list[int] | None:
+    """The half-branch counts when the curve is ``n - 1`` equations ``g`` whose Jacobian has rank
+    ``n - 2`` at the points and the Hessian of ``h = lambda . g`` (``lambda`` spanning the left kernel
+    of the Jacobian) is non-degenerate on its kernel ``T``: near ``p`` the curve is ``h = 0`` on a
+    smooth surface tangent to ``T``, where ``h`` has a Morse critical point (its differential vanishes,
+    so its Hessian on the surface is that of ``h`` on ``T``) - an ordinary double point, with two real
+    branches (4 half-branches) where the binary form is indefinite and none where it is definite.
+    None when this does not apply (then the tangent cone decides)."""
+    from .real_field import RealAlgebraicField
+    n = ring.nvars
+    if len(curve) != n - 1:
+        return None
+    roots = fam.real_roots()
+    if not roots:
+        return []
+    F = RealAlgebraicField(roots[0])  # exact arithmetic in Q[T]/(poly): every conjugate at once
+    point = [F(c) for c in fam.coords]
+
+    def at(q: Poly) -> fmpq_poly:
+        return F.evaluate(q.terms, point)
+    jac = [[at(g.diff(i)) for i in range(n)] for g in curve]
+    right = F.kernel(jac)
+    left = F.kernel([list(col) for col in zip(*jac)])
+    if len(right) != 2 or len(left) != 1:
+        return None
+    lam = left[0]
+    hess = [[F.zero] * n for _ in range(n)]
+    for c, g in zip(lam, curve):
+        if F.is_zero(c):
+            continue
+        for i in range(n):
+            gi = g.diff(i)
+            for j in range(i, n):
+                v = F.mul(c, at(gi.diff(j)))
+                hess[i][j] = F(hess[i][j] + v)
+                if j != i:
+                    hess[j][i] = F(hess[j][i] + v)
+
+    def form(u: list[fmpq_poly], w: list[fmpq_poly]) -> fmpq_poly:
+        out = F.zero
+        for i in range(n):
+            hu = F.zero
+            for j in range(n):
+                hu = F(hu + F.mul(hess[i][j], u[j]))
+            out = F(out + F.mul(hu, w[i]))
+        return out
+    u, w = right
+    a, b, c = form(u, u), form(u, w), form(w, w)
+    disc = F(F.mul(b, b) - F.mul(a, c))
+    if F.is_zero(disc):
+        return None
+    return [4 if sign_at(disc, r) > 0 else 0 for r in roots]
+
+
+def _cone(S: _Setting) -> list[Poly]:
+    """The tangent cone at the points (over ``Q[t]/e(t)``)."""
+    point = AlgebraicPoint(S.ring, S.t, S.e, S.centre)
+    return tangent_cone_over(centre_at(S.curve, point), point)
 
 
 def real_branches(gens: Sequence[Poly], ring: PolyRing, point: Sequence[fmpq] | Sequence[Poly]) -> list[Branches]:
@@ -225,12 +291,7 @@ def real_branches(gens: Sequence[Poly], ring: PolyRing, point: Sequence[fmpq] | 
         if len(point) != ring.nvars:
             raise RealSolvingError(f"the point has {len(point)} coordinates, the ring {ring.nvars} variables")
         fams = [PointFamily.rational([fmpq(c) for c in point])]
-    R = dp_ring(ring)
-    G = [Poly(R, g.terms) for g in gens if not g.is_zero()]
-    chart = Chart(G, groebner(G, R), R) if G else None
-    if chart is None or len(chart.free) < 2:
-        chart = None
-    curve, _ = curve_part(chart.gens, chart.ring) if chart else curve_part(gens, ring)
+    chart, curve = _curve_in_chart(list(gens), ring)
     out = []
     for fam in fams:
         _check_on(gens, ring, fam)
@@ -245,6 +306,28 @@ def real_branches(gens: Sequence[Poly], ring: PolyRing, point: Sequence[fmpq] | 
             b.tangents = [chart.lift_direction(t) for t in b.tangents]
             out.append(b)
     return out
+
+
+#: The charts and curves of the last few curves (a report asks for the branches of one curve at
+#: each of its singular points).
+_CURVES: dict[tuple, tuple[Chart | None, list[Poly]]] = {}
+
+
+def _curve_in_chart(gens: list[Poly], ring: PolyRing) -> tuple[Chart | None, list[Poly]]:
+    """The chart of the linear equations of ``V(gens)`` (None when it leaves fewer than two
+    variables) and the curve's part of dimension one in it (:func:`.real_fibers.curve_part`)."""
+    key = (ring, tuple(gens))
+    if key not in _CURVES:
+        R = dp_ring(ring)
+        G = [Poly(R, g.terms) for g in gens if not g.is_zero()]
+        chart = Chart(G, groebner(G, R), R) if G else None
+        if chart is None or len(chart.free) < 2:
+            chart = None
+        curve, _ = curve_part(chart.gens, chart.ring) if chart else curve_part(gens, ring)
+        if len(_CURVES) >= 8:
+            _CURVES.pop(next(iter(_CURVES)))
+        _CURVES[key] = (chart, curve)
+    return _CURVES[key]
 
 
 def _check_on(gens: Sequence[Poly], ring: PolyRing, fam: PointFamily) -> None:
@@ -269,12 +352,12 @@ def _family_branches(curve: list[Poly], ring: PolyRing, fam: PointFamily,
     smooth = S is not None and _smooth(S)
     lines = None
     if S is not None:
-        point = AlgebraicPoint(S.ring, S.t, S.e, S.centre)
-        cone = tangent_cone_over(centre_at(S.curve, point), point)
-        lines = _cone_lines(S, cone)
+        lines = _cone_lines(S, _cone(S))
     if S is None:
         return [Branches(_point_box(fam, root), 0, 0, False, "isolated", [], [], fmpq(0)) for root in roots]
     at = [lines.at(j) for j in range(len(roots))]
+    if lines.ordinary():  # every branch smooth, one per tangent line: the cone alone decides
+        return [_ordinary_at(_point_box(fam, root), smooth, at[j][0]) for j, root in enumerate(roots)]
     eps2 = _critical_bound(S)  # one radius for all the conjugate points: one sphere
     for form in {tuple(w) for _, forms in at for w in forms}:
         eps2 = min(eps2, _hyperplane_bound(S, list(form)))
@@ -309,6 +392,16 @@ def _branches_at(S: _Setting, j: int, box: Box, smooth: bool, lines: tuple[list[
     return Branches(box, half, half // 2, smooth, _kind(half, smooth, rays), dirs, [(a, b) for a, b in rays], eps2)
 
 
+def _ordinary_at(box: Box, smooth: bool, dirs: list[Box]) -> Branches:
+    """An ordinary point (``k`` distinct tangent lines, multiplicity ``k``: ``k`` smooth branches,
+    one tangent to each line): the branch of a real line is real (complex conjugation fixes the
+    line, so the branch) with one half-branch on each ray; the other branches have no real point
+    but ``p`` (two on one real line would make it a double line)."""
+    half = 2 * len(dirs)
+    rays = [[1, 1] for _ in dirs]
+    return Branches(box, half, len(dirs), smooth, _kind(half, smooth, rays), dirs, [(1, 1) for _ in dirs], None)
+
+
 def _shifted(S: _Setting, form: list[fmpq]) -> Poly:
     """``form(x - p)`` in ``Q[x, t]``."""
     return sum((d * c for d, c in zip(S.diffs, form) if c != 0), S.ring.zero())
@@ -327,19 +420,7 @@ def _smooth(S: _Setting) -> bool:
     from .real_field import RealAlgebraicField
     F = RealAlgebraicField(S.roots[0])
     coords = S.fam.coords
-    rows = []
-    for g in S.curve:
-        row = []
-        for i in range(S.n):
-            d = g.diff(i)
-            val = fmpq_poly([])
-            for e, c in d.terms.items():
-                t = fmpq_poly([c])
-                for x, k in zip(coords, e[:S.n]):
-                    t = F.mul(t, x ** k) if k else t
-                val += t
-            row.append(F(val))
-        rows.append(row)
+    rows = [[F.evaluate(g.diff(i).terms, coords) for i in range(S.n)] for g in S.curve]  # t: exponent 0
     return F.rank(rows) == S.n - 1
 
 
@@ -353,6 +434,11 @@ class _Lines:
         roots = self.rep.real_roots()
         owners = [S.root_index(self.rep, r) for r in roots]
         self.roots = [[r for r, o in zip(roots, owners) if o == j] for j in range(len(S.roots))]
+
+    def ordinary(self) -> bool:
+        """Whether every tangent line is simple (the cone's degree, the point's multiplicity, is
+        the number of lines): an ordinary point, smooth when there is one line."""
+        return 0 < self.rep.poly.degree() == self.rep.charpoly.degree()
 
     def at(self, j: int) -> tuple[list[Box], list[list[fmpq]]]:
         """The tangent directions at the ``j``-th real point, ordered by a form ``W`` separating

@@ -50,7 +50,7 @@ from .real_chart import Chart
 from .real_events import Degenerate, Event, Special, clear, locate, point_box, roots_at, same_point, special
 from .real_fibers import (Biv, Fibres, at_x, complete_intersection, curve_part, event_polynomial, irreducible_factors,
                           is_finite, linear_poly)
-from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, separate, sign_at
+from .real_roots import RealRoot, RealSolvingError, isolate_real_roots, separate, vanishes_at
 from .real_solve import RUR, NotSeparatingError, QuotientAlgebra, arb_bounds, ball_eval, real_solutions, rur_of, \
     solution_boxes
 
@@ -293,7 +293,7 @@ class _Sweep:
                 except RealSolvingError:
                     self.second.append((m2, fmpz_poly([0]), [], []))
             m2, e2, g2, g3 = self.second[attempt]
-            if e2.is_zero() or sign_at(e2, ev.root) == 0:
+            if e2.is_zero() or vanishes_at(e2, ev.root):
                 continue
             r = ev.root
             while not clear(fmpq_poly(e2), r.lo, r.hi):
@@ -360,17 +360,16 @@ def _plane_ranks(g: Biv, g2: Biv, g3: Biv, a: fmpq) -> list[int] | None:
     ``m``-value ``y`` is the one ``m2``-value ``z`` with ``y + z`` a root of ``g3(a, Y)``, certified
     when interval arithmetic excludes every other ``z``.  None when that stays ambiguous (a
     coincidence of values: the caller solves the fibre)."""
-    ys, zs = isolate_real_roots(at_x(g, a)), isolate_real_roots(at_x(g2, a))
-    if len(ys) != len(zs):
-        return None
-    if len(ys) <= 1:
-        return list(range(len(ys)))
-    ws = isolate_real_roots(at_x(g3, a))
-    for bits in (16, 32, 64, 128, 256):
-        ys, zs, ws = ([r.refined(fmpq(1, 2 ** bits)) for r in rs] for rs in (ys, zs, ws))
+    polys = [at_x(h, a).numer() for h in (g, g2, g3)]
+    for bits in (32, 64, 128, 256, 512):
+        ys, zs, ws = (_real_root_balls(p, bits) for p in polys)
+        if len(ys) != len(zs):
+            return None
+        if len(ys) <= 1:
+            return list(range(len(ys)))
         ranks = []
         for y in ys:
-            hits = [j for j, z in enumerate(zs) if any(y.lo + z.lo <= w.hi and w.lo <= y.hi + z.hi for w in ws)]
+            hits = [j for j, z in enumerate(zs) if any(y[0] + z[0] <= w[1] and w[0] <= y[1] + z[1] for w in ws)]
             if len(hits) != 1:
                 break
             ranks.append(hits[0])
@@ -378,6 +377,15 @@ def _plane_ranks(g: Biv, g2: Biv, g3: Biv, a: fmpq) -> list[int] | None:
             if len(set(ranks)) == len(ranks):
                 return ranks
     return None
+
+
+def _real_root_balls(p: fmpz_poly, prec: int) -> list[tuple[fmpq, fmpq]]:
+    """Certified enclosures ``(lo, hi)`` of the distinct real roots of ``p``, increasing: flint's
+    complex root isolation (``arb_fmpz_poly_complex_roots``: isolating balls, the real roots
+    with imaginary part exactly zero) at ``prec`` bits."""
+    with flint.ctx.workprec(prec):
+        found = [c.real for c, _ in p.complex_roots() if c.imag.is_zero()]
+    return sorted(arb_bounds(r) for r in found)
 
 
 def _rank_mod_p(rows: list[list[Poly]], poly: fmpz_poly, psi: list[fmpq_poly]) -> int:

@@ -13,6 +13,7 @@ image's reduced equation (otherwise every fibre point would repeat).
 """
 from __future__ import annotations
 
+import math
 from typing import Sequence
 
 from flint import fmpq, fmpq_poly, fmpz_poly
@@ -61,6 +62,25 @@ def _interpolate(xs: Sequence[fmpq], ys: Sequence[fmpq]) -> fmpq_poly:
     for i in range(n - 2, -1, -1):
         out = out * fmpq_poly([-xs[i], 1]) + coef[i]
     return out
+
+
+def _interpolate_range(ys: Sequence[fmpq]) -> fmpq_poly:
+    """The polynomial of degree < len(ys) taking the values ``ys`` at ``0, 1, 2, ...``: Newton's
+    forward differences ``D^j y_0`` (in integers, after clearing the denominators) give it as
+    ``sum_j D^j y_0 X(X-1)...(X-j+1)/j!``."""
+    den = math.lcm(*(int(y.q) for y in ys))
+    diffs = [int(y.p) * (den // int(y.q)) for y in ys]
+    tops = []
+    while diffs:
+        tops.append(diffs[0])
+        diffs = [b - a for a, b in zip(diffs, diffs[1:])]
+    fact = [1]
+    for j in range(1, len(tops)):
+        fact.append(fact[-1] * j)
+    out = fmpq_poly([fmpq(tops[-1], fact[-1])])
+    for i in range(len(tops) - 2, -1, -1):
+        out = out * fmpq_poly([-i, 1]) + fmpq(tops[i], fact[i])
+    return out / den
 
 
 class Fibres:
@@ -121,7 +141,7 @@ def discriminant(g: Biv) -> fmpq_poly:
     bound = r * (r - 1)
     xs = [fmpq(k) for k in range(bound + 2)]
     vals = [at_x(g, a).discriminant() if r > 0 else fmpq(1) for a in xs]
-    disc = _interpolate(xs[:-1], vals[:-1])
+    disc = _interpolate_range(vals[:-1])
     if disc(xs[-1]) != vals[-1]:
         raise RuntimeError("internal: the discriminant does not interpolate")
     return disc

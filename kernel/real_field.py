@@ -1,8 +1,9 @@
 """Exact arithmetic in a real number field ``Q(c) = Q[T]/(p)`` with a chosen real root ``c`` of the
 irreducible ``p``: elements are polynomials in ``T`` reduced modulo ``p`` (``fmpq_poly``); zero
 tests are exact, values at ``c`` enclosed in balls.  Polynomials over the field (lists of
-elements, constant first) can be divided by ``Y - y``, matrices have ranks (Gaussian
-elimination) - what the curve sweep and the branch analysis need at an algebraic point."""
+elements, constant first) can be divided by ``Y - y``, matrices have ranks and kernels (Gaussian
+elimination), polynomials are evaluated at points - what the curve sweep and the branch analysis
+need at an algebraic point."""
 from __future__ import annotations
 
 from typing import Sequence
@@ -71,6 +72,44 @@ class RealAlgebraicField:
         if not self.is_zero(f[0] + self.mul(out[0] if out else self.zero, y)):
             raise ValueError("not a root")
         return out
+
+    def evaluate(self, terms: dict[tuple[int, ...], fmpq], point: Sequence[Elt]) -> Elt:
+        """The polynomial with these terms (exponent: coefficient) at the point."""
+        out = self.zero
+        for e, c in terms.items():
+            t = fmpq_poly([c])
+            for x, k in zip(point, e):
+                if k:
+                    t = self.mul(t, x ** k)
+            out += t
+        return self(out)
+
+    def kernel(self, rows: Sequence[Sequence[Elt]]) -> list[list[Elt]]:
+        """A basis of the right kernel of a matrix over the field (reduced row echelon form)."""
+        m = [[self(a) for a in row] for row in rows]
+        ncols = len(m[0]) if m else 0
+        pivots: list[int] = []
+        for col in range(ncols):
+            piv = next((i for i in range(len(pivots), len(m)) if not self.is_zero(m[i][col])), None)
+            if piv is None:
+                continue
+            r = len(pivots)
+            m[r], m[piv] = m[piv], m[r]
+            inv = self.inv(m[r][col])
+            m[r] = [self.mul(a, inv) for a in m[r]]
+            for i in range(len(m)):
+                if i != r and not self.is_zero(m[i][col]):
+                    q = m[i][col]
+                    m[i] = [self(a - self.mul(q, b)) for a, b in zip(m[i], m[r])]
+            pivots.append(col)
+        basis = []
+        for free in (c for c in range(ncols) if c not in pivots):
+            v = [self.zero] * ncols
+            v[free] = self.one
+            for i, col in enumerate(pivots):
+                v[col] = self(-m[i][free])
+            basis.append(v)
+        return basis
 
     def rank(self, rows: Sequence[Sequence[Elt]]) -> int:
         """The rank of a matrix over the field (Gaussian elimination, exact)."""

@@ -331,21 +331,30 @@ def sturm_count(f: Univariate, lo: fmpq | None = None, hi: fmpq | None = None) -
 
 # --- signs at roots ---------------------------------------------------------------------------
 
+def vanishes_at(g: Univariate, root: RealRoot) -> bool:
+    """Whether ``g`` vanishes at ``root``: exactly when ``gcd(g, poly)`` has a root in its
+    interval (exact, no refinement)."""
+    q = as_fmpq_poly(g)
+    if q.is_zero():
+        return True
+    if root.exact is not None:
+        return q(root.exact) == 0
+    h = q.numer().gcd(root.poly)  # over Z: no reduction modulo poly in rationals (large, slow)
+    return h.degree() > 0 and sign(h(root.lo)) * sign(h(root.hi)) < 0
+
+
 def sign_at(g: Univariate, root: RealRoot) -> int:
-    """The sign of ``g`` at ``root``: 0 exactly when ``gcd(g, poly)`` vanishes there,
-    otherwise found by refining the root until ``g`` has no root in its interval."""
+    """The sign of ``g`` at ``root``: 0 exactly when ``gcd(g, poly)`` vanishes there
+    (:func:`vanishes_at`), otherwise found by refining the root until ``g`` has no root in its
+    interval."""
     q = as_fmpq_poly(g)
     if q.is_zero():
         return 0
     if root.exact is not None:
         return sign(q(root.exact))
-    f = root.poly
-    q = q % fmpq_poly(f)
-    if q.is_zero():
+    if vanishes_at(q, root):
         return 0
-    h = primitive(q).gcd(f)
-    if h.degree() > 0 and sign(h(root.lo)) * sign(h(root.hi)) < 0:
-        return 0
+    q = q % fmpq_poly(root.poly)
     r = root
     orig = as_fmpq_poly(g)
     for bits in (32, 64, 128):  # g does not vanish at the root: a ball of its value excluding 0 decides

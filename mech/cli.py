@@ -12,9 +12,24 @@ from typing import Any, Optional
 from . import __version__
 
 
+class _Formats:
+    """The report formats (:data:`mech.stdlib.reports.FORMATS`), read only when argparse checks a
+    ``--format`` or prints the help: the analysis modules stay unimported at start-up."""
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._names()
+
+    def __iter__(self) -> Any:
+        return iter(self._names())
+
+    @staticmethod
+    def _names() -> list[str]:
+        from .stdlib.reports import FORMATS
+        return list(FORMATS)
+
+
 def _parser() -> argparse.ArgumentParser:
     from .kernel.engines import list_engines
-    from .stdlib.reports import FORMATS
     p = argparse.ArgumentParser(prog="mech", description="mech: a Singular-compatible computer-algebra language "
                                 "for the configuration spaces of rigid mechanisms.")
     p.add_argument("file", nargs="?", help="script to run (.mech or .sing); '-' reads standard input")
@@ -26,8 +41,8 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--timeout", type=_limit, metavar="SECONDS", help="time limit of each statement (0: none)")
     p.add_argument("--max-memory", type=_memory, metavar="MB", help="memory each statement may add to the process, "
                    "in MB (0: none)")
-    p.add_argument("--format", choices=list(FORMATS), default="text", help="the format of mechanism reports "
-                   "(analyze's default)")
+    p.add_argument("--format", choices=_Formats(), default="text", metavar="FORMAT",
+                   help="the format of mechanism reports: %(choices)s (analyze's default; default %(default)s)")
     p.add_argument("--json", dest="format", action="store_const", const="json", help="the same as --format json")
     p.add_argument("--engine", choices=[name for name, _ in list_engines()], default="auto",
                    help="the Groebner engine of every standard basis (default auto; see 'help engine;')")

@@ -1,13 +1,12 @@
 """Command libraries the language loads (algebra commands, mechanisms, plots).
 
 Importing this package registers nothing; :func:`load` (which mech's facade hands to
-:func:`mech.dsl.registry.add_loader`) imports every public module here once, and their
-decorators register the commands and types; the ``*.lib`` sources here become loadable by
-``LIB "name.lib";``."""
+:func:`mech.dsl.registry.add_loader`) registers the commands and types of every public module
+here, whose decorators define them (:func:`mech.dsl.plugins.load_package`: from the record of an
+earlier start, each module imported when one of its commands is first used); the ``*.lib``
+sources here become loadable by ``LIB "name.lib";``."""
 from __future__ import annotations
 
-import importlib
-import pkgutil
 from pathlib import Path
 
 #: The folder of the libraries' mech sources (``primdec.lib``...).
@@ -22,8 +21,7 @@ def load() -> None:
     if _loaded:
         return
     _loaded = True
+    from ..dsl.plugins import load_package
     from ..dsl.registry import add_library_dir
     add_library_dir(LIB_DIR)
-    for info in pkgutil.iter_modules(__path__):
-        if not info.name.startswith("_"):
-            importlib.import_module(f"{__name__}.{info.name}")
+    load_package(__name__, LIB_DIR)

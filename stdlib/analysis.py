@@ -37,13 +37,15 @@ from mech.kernel.collector import relaxed
 from mech.kernel.groebner import normal_forms
 from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, intersect, is_subset, move, saturate_poly,
                                 std)
-from mech.kernel.local import (AlgebraicPoint, centre_at, classify_algebraic_point, classify_point,
-                               primitive_element, tangent_cone, tangent_cone_at, tangent_cone_over)
+from mech.kernel.local import (AlgebraicPoint, classify_algebraic_point, jacobian_rank, primitive_element,
+                               shift_to_origin, tangent_cone)
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
 from mech.stdlib.analysis_finite import finite_analysis
+from mech.stdlib.analysis_linear import (LinearReduction, cone_at_point, cone_over_point, linear_reduction, min_ass_reduced,
+                                         tangent_cone_over_reduced, tangent_cone_reduced)
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.modes import embedded_components, motion_modes
 from mech.stdlib.realpoints import has_real_points, linear_point
@@ -324,18 +326,27 @@ def singular_primes(a: Analysis) -> list[list[Poly]]:
     """The minimal primes of the singular variety (numeric lengths): Theorem 1's
     ``J + I_r(dJ)`` for a radical equidimensional J, otherwise the singular loci of the modes
     and their pairwise intersections (a singular point of the configuration space, not a point
-    where only the constraints drop rank: those are J's embedded components)."""
+    where only the constraints drop rank: those are J's embedded components).  For a radical J
+    a mode ``P`` of codimension ``c`` is the only component through a point off the other modes,
+    where J's generators generate ``P`` locally: the Jacobian criterion with ``I_c(dJ)`` (Peaucellier's
+    modes have 16-20 generators: their own minors of size 12-13 would be millions)."""
     R, n = a.ring, a.nvars
     primes = [md.prime for md in a.modes]
     if a.radical and (a.complete_intersection or a.equidimensional):
         return min_ass_gtz(list(a.ideal) + _reduced(a.fitting, a.ideal, R), R)
     parts: list[list[Poly]] = []
+    fitting = {n - a.mobility: a.fitting}
     for i, P in enumerate(primes):
         codim = n - dimension(P, R)
         basis = std(P, R)
-        parts += min_ass_gtz(list(P) + _reduced(fitting_ideal(basis, n, codim), basis, R), R)
+        if a.radical:  # where P is the only mode, J = P locally: J's Jacobian decides (fewer, smaller minors)
+            if codim not in fitting:
+                fitting[codim] = fitting_ideal(a.ideal, n, codim)
+            parts += min_ass_reduced(list(P) + _reduced(fitting[codim], basis, R), R)
+        else:
+            parts += min_ass_gtz(list(P) + _reduced(fitting_ideal(basis, n, codim), basis, R), R)
         for Q in primes[i + 1:]:
-            parts += min_ass_gtz(list(P) + list(Q), R)
+            parts += (min_ass_reduced if a.radical else min_ass_gtz)(list(P) + list(Q), R)
     out: list[list[Poly]] = []
     for p in parts:
         if _unit(p) or any(ideals_equal(p, q, R) for q in out):
@@ -377,6 +388,7 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
         a.singular_done = True
         return []
     variety = _variety(a)
+    lr = linear_reduction(variety, R)  # shared by the points: their cones in the ring without linear variables
     out = a.singular = []
     with stage("local analysis", total=len(primes)) as st:
         for k, P in enumerate(primes):
@@ -388,7 +400,7 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
             out.append(sp)
             if point is None and d != 0:
                 continue
-            ok, _ = _timed(a, f"local analysis at q{k + 1}", POINT_BUDGET, _local_at, a, sp, variety)
+            ok, _ = _timed(a, f"local analysis at q{k + 1}", POINT_BUDGET, _local_at, a, sp, variety, lr)
             if not ok:
                 sp.kind = "not classified (its local analysis ran out of its budget)"
     for e in a.embedded or []:
@@ -397,19 +409,19 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
     return out
 
 
-def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
+def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly], lr: LinearReduction | None) -> None:
     """Step 4 at one singular configuration that is a point (rational or algebraic)."""
     if sp.point is None:
-        _algebraic_local(a, sp, variety)
+        _algebraic_local(a, sp, variety, lr)
     elif not a.decomposed:
         sp.kind = _no_components(a)
-        sp.tangent_cone = tangent_cone_at(variety, sp.point)
+        sp.tangent_cone = cone_at_point(variety, lr, sp.point)
     else:  # the kind, components and transition first (cheap), then the cone of J (a local standard basis)
-        info = classify_point(variety, sp.point, _minimal_modes(a), cone=False)
-        sp.kind, sp.local_components = info.kind, info.components
-        sp.transition = _transition(info.components, a.ring)
-        ok, cone = within(CONE_BUDGET, tangent_cone_at, variety, sp.point, cpu=True)
-        sp.tangent_cone = cone if ok else _union_cone(info.components)
+        sp.local_components = _components_at(a, sp.point)
+        sp.kind = _kind_at(sp.local_components, a.ring)
+        sp.transition = _transition(sp.local_components, a.ring, lambda c: tangent_cone_reduced(c, a.ring))
+        ok, cone = within(CONE_BUDGET, cone_at_point, variety, lr, sp.point, cpu=True)
+        sp.tangent_cone = cone if ok else _union_cone(sp.local_components)
         sp.cone_note = "" if ok else (f"as a set: the union of the local components' cones (the ideal of lowest "
                                       f"forms ran out of its {CONE_BUDGET:g} s budget)")
 
@@ -419,25 +431,41 @@ def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
 CONE_BUDGET = 20.0
 
 
+def _components_at(a: Analysis, point: tuple) -> list[list[Poly]]:
+    """The local components at a rational point: the minimal modes through it, centred there."""
+    R, p = a.ring, [a.ring.field(v) for v in point]
+    return [std(shift_to_origin(list(P), point), R) for P in _minimal_modes(a) if all(g.evaluate(p) == 0 for g in P)]
+
+
+def _kind_at(components: list[list[Poly]], R: PolyRing) -> str:
+    """Theorem 3 and Definition 3 (``kernel.local.classify_point``'s kind): several components meet, or
+    the one component's tangent space (the kernel of its Jacobian at the origin) has its dimension."""
+    if len(components) > 1:
+        return "components meet"
+    (c,) = components
+    return "regular" if R.nvars - jacobian_rank(c, [0] * R.nvars) == dimension(c, R) else "singular"
+
+
 def _union_cone(components: list[list[Poly]]) -> list[Poly]:
     """The tangent cone as a set, the union of the components' cones (their intersection, in dp)."""
-    cones = [tangent_cone(c, c[0].ring) for c in components]
+    cones = [tangent_cone_reduced(c, c[0].ring) for c in components]
     glob = dp_ring(cones[0][0].ring)
     return move(intersect(*(move(c, glob) for c in cones), ring=glob), cones[0][0].ring)
 
 
-def _algebraic_local(a: Analysis, sp: SingularPoint, variety: list[Poly]) -> None:
+def _algebraic_local(a: Analysis, sp: SingularPoint, variety: list[Poly], lr: LinearReduction | None) -> None:
     """Step 4 at the conjugate points of a zero-dimensional prime that is not a rational point:
     over ``K = Q[t]/m(t)`` for a primitive element ``t``, with the motion modes (the minimal
     primes of J over Q) as the starting point of the local components over K."""
     pt = sp.algebraic = primitive_element(sp.prime, a.ring)
     if not a.decomposed:
         sp.kind = _no_components(a)
-        sp.tangent_cone = tangent_cone_over(centre_at(variety, pt), pt)
+        sp.tangent_cone = cone_over_point(variety, lr, pt)
         return
-    info = classify_algebraic_point(variety, pt, _minimal_modes(a))
+    info = classify_algebraic_point(variety, pt, _minimal_modes(a), min_ass_reduced,
+                                    lambda _, point: cone_over_point(variety, lr, point))
     sp.kind, sp.tangent_cone, sp.local_components = info.kind, info.tangent_cone, info.components
-    sp.transition = _transition(info.components, pt.ring, lambda c: tangent_cone_over(c, pt))
+    sp.transition = _transition(info.components, pt.ring, lambda c: tangent_cone_over_reduced(c, pt))
 
 
 def _no_components(a: Analysis) -> str:

@@ -3,7 +3,7 @@ real answers (:mod:`~mech.stdlib.mechanism_real`) and the exported configuration
 (:mod:`~mech.stdlib.configurations`) ask for the same modes of the same (cached) analysis.
 
 Kept per (ring, generators): the count, or the refusal of the exact methods (re-raised), or how long
-a computation ran before a budget stopped it (a caller with no more time need not start again)."""
+a computation ran (CPU time) before a budget stopped it (a caller with no more time need not start again)."""
 from __future__ import annotations
 
 import time
@@ -40,7 +40,7 @@ def circuit_count(prime: Sequence[Any], ring: Any, is_prime: bool = False) -> in
     if known is not None:
         return known
     from mech.kernel.real_curve import curve_topology
-    start = time.monotonic()
+    start = time.thread_time()
     try:
         n = curve_topology(list(prime), ring, None, is_prime).count
     except RealSolvingError as e:
@@ -49,12 +49,12 @@ def circuit_count(prime: Sequence[Any], ring: Any, is_prime: bool = False) -> in
     except (Exception, KeyboardInterrupt, LimitExceeded):  # nothing learnt about the mode
         raise
     except BaseException:  # a budget's watchdog stopped it
-        _keep(_TRIED, key, max(_TRIED.get(key, 0.0), time.monotonic() - start))
+        _keep(_TRIED, key, max(_TRIED.get(key, 0.0), time.thread_time() - start))
         raise
     _keep(_COUNTS, key, n)
     return n
 
 
 def time_tried(prime: Sequence[Any], ring: Any) -> float:
-    """Seconds a computation of this count ran before a budget stopped it (0 if none did)."""
+    """Seconds of CPU time a computation of this count ran before a budget stopped it (0 if none did)."""
     return _TRIED.get(_key(prime, ring), 0.0)

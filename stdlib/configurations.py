@@ -35,7 +35,7 @@ TOLERANCE = 1e-9
 GAP = 4.0
 #: Starting points per mode for the circuit split (at least).
 DENSE = 2000
-#: Seconds the exact circuit count of one mode may take.
+#: Seconds of CPU time the exact circuit count of one mode may take.
 CIRCUIT_BUDGET = 20.0
 MAX_ROWS = 100_000
 
@@ -110,7 +110,7 @@ def _circuit_count(prime: list, ring: Any) -> Optional[int]:
     if time_tried(prime, ring) >= CIRCUIT_BUDGET:  # the report already ran out of this much time on it
         return None
     try:
-        ok, n = within(CIRCUIT_BUDGET, circuit_count, prime, ring, True)
+        ok, n = within(CIRCUIT_BUDGET, circuit_count, prime, ring, True, cpu=True)
     except RealSolvingError:
         return None
     return n if ok else None

@@ -56,7 +56,8 @@ def poly(ctx, x: int | Number | Poly) -> Poly:
 
 @command("number")
 def number(ctx, x: int | Number | Poly) -> Number:
-    """number(x): x as a number (a constant polynomial's coefficient).
+    """number(x): x as a number (a constant polynomial's coefficient; as in Singular, 0 for a
+    polynomial that is not constant).
 
     Example:
       ring r = 0,(x,y),dp;
@@ -64,8 +65,13 @@ def number(ctx, x: int | Number | Poly) -> Number:
       → 3/4
       number(poly(5));
       → 5
+      number(3x+2);
+      → 0
     """
-    return to_number(x, ctx.basering().poly)
+    ring = ctx.basering().poly
+    if isinstance(x, Poly) and not x.is_constant() and (x.ring is ring or x.ring == ring):
+        return Number(ring, ring.field.zero)
+    return to_number(x, ring)
 
 
 @command("int")

@@ -78,8 +78,10 @@ def chinrem(values: IntVec | List, moduli: IntVec | List) -> Any:
       chinrem(list(ideal(x2+4), ideal(3x)), list(5,7));
       → _[1]=-14x2+10x+14
     """
-    vs, ms = list(values), list(moduli)
-    if len(vs) != len(ms) or not vs or not all(type(n) is int and n > 0 for n in ms):
+    if isinstance(values, IntVec) and not isinstance(moduli, IntVec):
+        raise MechRuntimeError("chinrem(intvec, list) is not defined (Singular: chinrem(intvec, intvec), chinrem(list, intvec|list))")
+    vs, ms = list(values), [int(n) if isinstance(n, int) else n for n in moduli]
+    if len(vs) != len(ms) or not vs or not all(isinstance(n, int) and not isinstance(n, bool) and n > 0 for n in ms):
         raise MechRuntimeError("chinrem(v, m): v and m of the same length, m of positive ints")
     if isinstance(values, IntVec):
         return _crt(vs, ms)[0]

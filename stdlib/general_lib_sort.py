@@ -1,5 +1,5 @@
-"""general.lib's ``sort``: the generators of an ideal, or the entries of an intvec or list, sorted, with
-the permutation that sorts them."""
+"""general.lib's ``sort``: the generators of an ideal or module, or the entries of an intvec or list,
+sorted, with the permutation that sorts them."""
 from __future__ import annotations
 
 from typing import Any
@@ -19,15 +19,20 @@ def sortvec(I: Ideal) -> IntVec:
     return IntVec([i + 1 for i in nonzero] + [0] * (len(I.gens) - len(nonzero)))
 
 
-def _permute(items: list, v: list[int]) -> tuple[list, list[int]]:
-    """general.lib's reordering: the jj-th item becomes items[v[jj]] (v[jj] <= 0: jj itself)."""
-    v = list(v)
-    out = list(items)
-    for jj in range(min(len(v), len(items))):
-        if v[jj] <= 0:
-            v[jj] = jj + 1
-        out[jj] = items[v[jj] - 1]
-    return out, v
+def _bubble(ctx, items: list) -> list[int]:
+    """general.lib's bubble sort of an intvec's or list's entries by Singular's ``>`` (stable; for
+    intvecs Singular's comparison, which general.lib warns is no order with negative entries)."""
+    from ..dsl.ops import compare
+    ring = ctx.basering().poly if ctx.ring is not None else None
+    pivot = list(range(len(items)))
+    done = False
+    while not done:
+        done = True
+        for n in range(len(items) - 1):
+            if compare(">", items[pivot[n]], items[pivot[n + 1]], ring):
+                pivot[n], pivot[n + 1] = pivot[n + 1], pivot[n]
+                done = False
+    return pivot
 
 
 @command("sort", lib=LIB)
@@ -50,30 +55,61 @@ def sort(ctx, x: Any, *opts: Any) -> List:
     """
     if isinstance(x, (IntVec, List)):
         items = list(x.values if isinstance(x, IntVec) else x.items)
-        pivot = sorted(range(len(items)), key=lambda k: items[k])
+        pivot = _bubble(ctx, items)
         ordered = [items[k] for k in pivot]
         return List([IntVec(ordered) if isinstance(x, IntVec) else List(ordered), IntVec([k + 1 for k in pivot])])
-    if not isinstance(x, Ideal):
+    from ..dsl.values_modules import Module
+    if not isinstance(x, (Ideal, Module)):
         return List([x, 0])
-    ring = x.ring
-    gens = x.nonzero() or [ring.zero()]
-    I = Ideal(ring, gens)
-    reverse = False
-    if opts and isinstance(opts[0], str):
-        from ..dsl.rings import make_ring
-        from .ring_lib import parse_ordering
-        base = ctx.basering()
-        other = make_ring(base.characteristic, base.params, list(ring.names), parse_ordering(opts[0], ring.nvars)).poly
-        v = list(sortvec(Ideal(other, [Poly(other, g.terms) for g in gens])).values)
-        reverse = len(opts) > 1 and opts[1] != 0
-    elif opts and isinstance(opts[0], IntVec):
-        v = list(opts[0].values)
-        reverse = len(opts) > 1 and opts[1] != 0
-    elif all(g == gens[0] for g in gens):
-        v = list(range(len(gens), 0, -1))
+    return _sort_generators(ctx, x, opts)
+
+
+def _leads_order(ring: Any, gens: list) -> list[int]:
+    """sortvec: the positions (from 1) of the generators by increasing leading term, zeros last as 0."""
+    from functools import cmp_to_key
+    from ..dsl.values_modules import Vector, kernel_key, lead_term
+    if all(isinstance(g, Poly) for g in gens):
+        return list(sortvec(Ideal(ring, [Poly(ring, g.terms) for g in gens])).values)
+    key = kernel_key(ring)
+    leads = [lead_term(Vector(ring, [Poly(ring, p.terms) for p in g.entries])) for g in gens]
+    idx = [k for k in range(len(gens)) if leads[k] is not None]
+    idx.sort(key=cmp_to_key(lambda a, b: -1 if key(leads[a]) < key(leads[b]) else int(key(leads[a]) > key(leads[b]))))
+    return [k + 1 for k in idx] + [0] * (len(gens) - len(idx))
+
+
+def _sort_generators(ctx, M: Any, opts: tuple) -> List:
+    """sort of an ideal or module as general.lib does it: without options the nonzero generators by
+    increasing leading term (reversed when all are equal); with an ordering (a string such as "c,dp")
+    or an intvec all generators in that order (only the first size(M) places are filled), reversed
+    when a second argument is nonzero."""
+    from ..dsl.values_modules import Module
+    ring = M.ring
+    nonzero = M.nonzero()
+    if not opts:
+        gens = nonzero or [M.gens[0]]
+        if len(gens) > 1 and all(g == gens[0] for g in gens):
+            v = list(range(len(gens), 0, -1))
+        else:
+            v = _leads_order(ring, gens)
     else:
-        v = list(sortvec(I).values)
-    if reverse:
-        v = v[::-1]
-    out, v = _permute(gens, v)
-    return List([Ideal(ring, out), IntVec(v)])
+        gens = list(M.gens)
+        if isinstance(opts[0], str):
+            from ..dsl.rings import make_ring
+            from .ring_lib import parse_ordering
+            base = ctx.basering()
+            other = make_ring(base.characteristic, base.params, list(ring.names),
+                              parse_ordering(opts[0], ring.nvars)).poly
+            v = _leads_order(other, gens)
+        else:
+            v = list(opts[0].values) if isinstance(opts[0], IntVec) else [int(opts[0])]
+        if len(opts) == 2 and opts[1] != 0:
+            v = v[::-1]
+    out = list(gens)
+    for jj in range(min(len(v), len(nonzero))):
+        if v[jj] <= 0:
+            v[jj] = jj + 1
+        out[jj] = gens[v[jj] - 1]
+    if not any(v):
+        v = [1]
+    result = Ideal(ring, out) if isinstance(M, Ideal) else Module(ring, out, M.rank)
+    return List([result, IntVec(v)])

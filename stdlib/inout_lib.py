@@ -9,7 +9,8 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError
 from ..dsl.printing import poly_str
 from ..dsl.registry import command
-from ..dsl.values import Ideal, Matrix, NONE
+from ..dsl.values import Ideal, Matrix, NONE, to_matrix
+from ..dsl.values_modules import Module
 from ..kernel import Poly
 
 LIB = "inout.lib"
@@ -35,9 +36,9 @@ def _cut(s: str, n: int) -> str:
 
 
 @command("pmat", lib=LIB)
-def pmat(M: Matrix, n: int | None = None) -> str:
-    """pmat(M[, n]): the matrix M as a string in columns; with n > 1 each entry shown in at most n
-    places (a cut entry ends in ``..``).
+def pmat(M: Matrix | Module, n: int | None = None) -> str:
+    """pmat(M[, n]): the matrix M (a module: its matrix) as a string in columns; with n > 1 each entry
+    shown in at most n places (a cut entry ends in ``..``).
 
     Example:
       LIB "inout.lib";
@@ -50,6 +51,8 @@ def pmat(M: Matrix, n: int | None = None) -> str:
       → .., 1,
       → x,  y3
     """
+    if isinstance(M, Module):
+        M = to_matrix(M, M.ring)
     cells = [[poly_str(p) for p in row] for row in M.rows()]
     last_r, last_c = M.nrows - 1, M.ncols - 1
     if n is None:
@@ -104,8 +107,8 @@ def _lead_line(s: str, first: bool) -> str:
 
 
 @command("lprint", lib=LIB)
-def lprint(x: Poly | Ideal | Matrix, n: int = PAGEWIDTH) -> str:
-    """lprint(f[, n]): the polynomial, ideal or matrix f as a string of lines of at most n - 3
+def lprint(x: Poly | Ideal | Matrix | Module, n: int = PAGEWIDTH) -> str:
+    """lprint(f[, n]): the polynomial, ideal, module (its matrix) or matrix f as a string of lines of at most n - 3
     characters broken between terms, the entries column by column, separated by commas, the columns
     by a blank line (in the format matrix input reads).
 
@@ -120,6 +123,8 @@ def lprint(x: Poly | Ideal | Matrix, n: int = PAGEWIDTH) -> str:
         x = Matrix(x.ring, 1, 1, [x])
     elif isinstance(x, Ideal):
         x = Matrix(x.ring, 1, len(x.gens), x.gens)
+    elif isinstance(x, Module):
+        x = to_matrix(x, x.ring)
     width = n - 3
     blocks = []
     for c in range(1, x.ncols + 1):
@@ -295,9 +300,9 @@ def _show_lines(ctx, x: Any) -> list[str]:
     from ..dsl.values_modules import Module, Vector
     from ..dsl.printing import bracket_str
     if isinstance(x, Vector):
-        return ["// vector", bracket_str(x)]
+        return ["// vector", bracket_str(x, "[0]")]
     if isinstance(x, Module):
-        return [f"// module, {len(x.gens)} generator(s)"] + [bracket_str(g) for g in x.gens]
+        return [f"// module, {len(x.gens)} generator(s)"] + [bracket_str(g, "[0]") for g in x.gens]
     if isinstance(x, Map):  # as Singular: the images under the name @map
         return ["// i-th variable of preimage ring is mapped to @map[i]", f"// @map map  from {x.source.name}"] + [
             f"@map[{i}]={poly_str(p)}" for i, p in enumerate(x.images, 1)]

@@ -227,6 +227,8 @@ def _reduced(I: Ideal, polys: list[Poly]) -> Ideal:
 def _trim(I: Ideal) -> Ideal:
     """I on fewer generators, as Macaulay2 trims: the generators (normalized) by increasing lead
     monomial, each kept unless it lies in the ideal of those kept before it (and of R/Q's relations)."""
+    if is_integral(I.ring):
+        return _trim_zz(I)
     q = _quotient_of(I.ring)
     cands = sorted({normalize(g): None for g in I.nonzero()}, key=lambda p: I.ring.order.key(p.lm()))
     keep: list[Poly] = []
@@ -234,6 +236,17 @@ def _trim(I: Ideal) -> Ideal:
         basis = keep + (list(q.basis) if q is not None else [])
         if not basis or not K.is_subset([g], basis, ring=I.ring):
             keep.append(g)
+    return Ideal(I.ring, keep)
+
+
+def _trim_zz(I: Ideal) -> Ideal:
+    """An ideal over ZZ on fewer generators, as Macaulay2 trims there: its strong Gröbner basis (by
+    increasing lead term), from the largest down each element in the ideal of the others dropped."""
+    keep = Z.strong_basis(I.nonzero(), I.ring)
+    for k in range(len(keep) - 1, -1, -1):
+        others = keep[:k] + keep[k + 1:]
+        if others and Z.contains(Z.strong_basis(others, I.ring), keep[k]):
+            keep = others
     return Ideal(I.ring, keep)
 
 
@@ -277,7 +290,9 @@ def numgens(I: Ideal) -> int:
 @command("entries", dialect="m2")
 @in_quotients
 def entries(M: Matrix) -> List:
-    """entries M: the rows of M as a list of lists."""
+    """entries M: the rows of M as a list of lists (integers for a matrix over ZZ)."""
+    if M.ring.nvars == 0 and is_integral(M.ring):
+        return List([List([int(p.lc().p) if not p.is_zero() else 0 for p in r]) for r in M.rows()])
     return List([List(r) for r in M.rows()])
 
 

@@ -18,6 +18,7 @@ from ..kernel import Block, MonomialOrder, Poly, PolyRing
 from ..kernel import ideals as K
 from .m2 import _first_ring, _gb, _indices, _minimal, _no_zz, _polys, _quotient_of, _trim, gens
 from .m2_matrices import at_integers, sub
+from .m2_ringmaps import change_of_coordinates, degree_map
 from .standard import normalize
 
 
@@ -337,8 +338,10 @@ def ring(x: Poly | Ideal | Matrix | Number) -> Ring:
 @command("map", dialect="m2")
 @in_quotients
 def map_(ctx, target: Ring, source: Ring, images: List | Matrix | None = None) -> RingMap:
-    """map(S, R, {a, b, ...}): the ring map R -> S sending R's variables to a, b, ...;
-    map(S, R): variables to the variables of the same names (others to 0)."""
+    """map(S, R, {a, b, ...}): the ring map R -> S sending R's variables to a, b, ... (a tower R
+    given images of its own variables only: its coefficient variables to themselves); map(S, R):
+    variables to the variables of the same names (others to 0); map(S, R, m) for a matrix of
+    numbers: the linear change of coordinates (vars S) * m."""
     n = source.poly.nvars
     opts = isinstance(images, List) and images.items and all(isinstance(x, Opt) for x in images.items)
     if images is None or opts:  # variables to those of the same names (others to 0); {x => f, ...}: x to f
@@ -350,11 +353,20 @@ def map_(ctx, target: Ring, source: Ring, images: List | Matrix | None = None) -
                     and key.ring.names == source.poly.names):
                 raise MechRuntimeError("map(S, R, {x => f, ...}) takes variables x of R")
             ims[key.lm().index(1)] = _polys(ctx, (o.value,), target.poly)[0]
+    elif isinstance(images, Matrix) and images.nrows > 1 and all(p.is_zero() or not any(p.lm()) for p in images.entries):
+        ims = change_of_coordinates(target, images, n)
     else:
         ims = _polys(ctx, (images,), target.poly)
+        own = getattr(getattr(source.poly, "owner", None), "own", ())
+        if len(ims) == len(own) < n and source.poly.names[len(own):] == target.poly.names[len(target.poly.names) - n + len(own):]:
+            ims += [target.poly.gen(target.poly.names.index(x)) for x in source.poly.names[len(own):]]  # a tower's
+            # coefficient variables: to themselves
         if len(ims) != n:
             raise MechRuntimeError(f"map(S, R, {{...}}) takes {n} images (one per variable of R)")
-    return RingMap(target, source, tuple(normal(p) for p in ims))
+    return RingMap(target, source, tuple(normal(p) for p in ims), degree_map(ctx))
+
+
+map_.m2_options = ("DegreeMap",)
 
 
 @command("map", dialect="m2")

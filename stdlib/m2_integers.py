@@ -3,7 +3,7 @@ there.  Elements are integral polynomials under QQ's arithmetic (a fractional co
 refused: :mod:`mech.dsl.m2_ops`); the commands marked here never divide nor compute a Gröbner
 basis (the list library, printing, matrices, derivatives, determinants, resultants,
 substitutions and ring maps) or compute with strong Gröbner bases (:mod:`mech.kernel.zz_groebner`:
-``eliminate``, ``intersect``, ``quotient``, ``saturate``, ``==`` and ``isSubset`` on ideals); the
+``trim``, ``mingens``, ``eliminate``, ``intersect``, ``quotient``, ``saturate``, ``==`` and ``isSubset`` on ideals); the
 others refuse elements of rings over ZZ."""
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ _EXACT = (m2.ideal, m2.matrix, m2.gens, m2.numgens, m2.entries, m2_matrices.subm
           m2_modules.transpose, m2_local.numerator, m2_local.denominator,
           m2_ideals.monomial_ideal, m2_ideals.degree_in, m2_modules.transpose_table, m2.eliminate, m2.eliminate_ideal_first, m2.quotient_cmd, m2.saturate,
           m2.intersect, m2.matrix_of_element, m2_matrices.submatrix_without, m2_local.promote, m2_monoids.monoid,
-          m2_matrices.exterior_power, m2_matrices.permanents, m2_modules.dual, m2_modules.map_identity)
+          m2_matrices.exterior_power, m2_ideals.trim, m2_ideals.mingens, m2_matrices.permanents, m2_modules.dual, m2_modules.map_identity)
 for _f in _EXACT:
     _f.zz_ok = True
 for _name in dir(m2_lists):  # the list library: no arithmetic of its own (isSubset checks its ideals)

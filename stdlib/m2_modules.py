@@ -82,6 +82,19 @@ map_modules.m2_options = ("Degree",)
 
 @command("map", dialect="m2")
 @in_quotients
+def map_degree_changed(ctx, f: Matrix) -> Map:
+    """map(f, Degree => d): f as a map of degree d, its source's degrees shifted to keep the
+    entries' degrees (the same target and entries); map f: f."""
+    src, e = source_of(f), map_degree(f)
+    d = _degree_option(ctx) if "Degree" in ctx.m2_options else e
+    return Map(target_of(f), FreeModule(src.ring, tuple(k + e - d for k in src.degrees)), list(f.entries), d)
+
+
+map_degree_changed.m2_options = ("Degree",)
+
+
+@command("map", dialect="m2")
+@in_quotients
 def map_identity(M: FreeModule) -> Map:
     """map M of a free module: its identity map."""
     return identity(M)

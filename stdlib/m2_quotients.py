@@ -28,7 +28,8 @@ def describe(R: M2Ring) -> str:
         return R.describe()
     own = len(R.own)
     default = R.blocks[:1] == (OrderBlock("dp", own),) and len(R.blocks) == 2 and R.blocks[1].kind == "C"
-    if R.info or not default or any(d != 1 for d in R.degrees[:own]) or R.max_exponent is not None:
+    if set(R.info) - {"m2_options", "m2_order"} or not default or any(d != 1 for d in R.degrees[:own]) \
+            or R.max_exponent is not None:
         raise MechRuntimeError("describe is supported for quotients and for polynomial rings with the default "
                                "order and degrees")
     degrees = f"{own}:1" if own > 1 else "1"

@@ -304,7 +304,8 @@ def frwalk(ctx, ring_node: Any, ideal_node: Any) -> Ideal:
 def koszul(ctx, d: int, f: int | Ideal) -> Matrix:
     """koszul(d, n) or koszul(d, I): the d-th matrix of the Koszul complex of the first n variables (of
     the generators of I): rows the (d-1)-subsets, columns the d-subsets in lexicographic order, the
-    entry for T and T without its j-th element (-1)^(j+1) times the j-th element's generator.
+    entry for T and T without its j-th element (-1)^(j+1) times the j-th element's generator (the 1 x 1
+    zero matrix for d outside 1..n).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -316,8 +317,8 @@ def koszul(ctx, d: int, f: int | Ideal) -> Matrix:
     ring = ctx.basering().poly
     gens = list(ring.gens()[:f]) if isinstance(f, int) else list(f.gens)
     n = len(gens)
-    if not 1 <= d <= n:
-        raise MechRuntimeError(f"koszul({d}, ...): d must be between 1 and {n}")
+    if not 1 <= d <= n:  # as Singular: the 1 x 1 zero matrix
+        return Matrix(ring, 1, 1, [ring.zero()])
     rows = list(combinations(range(n), d - 1))
     cols = list(combinations(range(n), d))
     where = {S: i for i, S in enumerate(rows)}

@@ -2,7 +2,8 @@
 ``submat``, ``headStand``, ``power``), elementary row and column operations (``addcol``, ``addrow``,
 ``multcol``, ``multrow``, ``permcol``, ``permrow``), Gaussian elimination by constant pivots
 (``rowred``, ``colred``), removing unit rows and columns (``rm_unitcol``, ``rm_unitrow``) and the
-basis of a symmetric power (``symmetricBasis``), and the entries of a matrix as an ideal (``flatten``).
+basis of a symmetric power (``symmetricBasis``), the entries of a matrix as an ideal (``flatten``) and
+deleting zero columns (``compress``).
 (``unitmat`` is in :mod:`mech.stdlib.idealops`.)"""
 from __future__ import annotations
 
@@ -33,9 +34,10 @@ def _check_index(k: int, n: int, what: str, cmd: str) -> None:
 
 
 @command("concat", lib=LIB)
-def concat(*mats: Matrix) -> Matrix:
+def concat(*mats: Matrix | Ideal | Any) -> Matrix:
     """concat(A1, A2, ...): the matrices side by side (the columns of A1, then of A2...); the result
-    has as many rows as the tallest, shorter columns filled with zeros.
+    has as many rows as the tallest, shorter columns filled with zeros (a module, vector or ideal as
+    its matrix).
 
     Example:
       LIB "matrix.lib";
@@ -48,6 +50,12 @@ def concat(*mats: Matrix) -> Matrix:
     """
     if not mats:
         raise MechRuntimeError("concat needs at least one matrix")
+    from ..dsl.values import to_matrix
+    from ..dsl.values_modules import Module, Vector
+    mats = tuple(to_matrix(Module(m.ring, [m]) if isinstance(m, Vector) else m, m.ring)
+                 if isinstance(m, (Ideal, Module, Vector)) else m for m in mats)
+    if not all(isinstance(m, Matrix) for m in mats):
+        raise MechRuntimeError("concat: matrices, modules, vectors or ideals expected")
     ring = mats[0].ring
     n = max(m.nrows for m in mats)
     cols = [[m.get(i, j) if i <= m.nrows else ring.zero() for i in range(1, n + 1)]
@@ -461,3 +469,83 @@ def flatten(A: Matrix) -> Ideal:
       → _[4]=0
     """
     return Ideal(A.ring, list(A.entries) or [A.ring.zero()])
+
+
+@command("compress", lib=LIB)
+def compress(A: Matrix | Ideal | IntMat | IntVec | Any) -> Any:
+    """compress(A): A without its zero columns (matrix, intmat), generators (ideal, module) or entries
+    (intvec); a 1 x 1 zero intmat when nothing is left.
+
+    Example:
+      LIB "matrix.lib";
+      ring r = 0,(x,y),dp;
+      matrix A[2][3] = x,0,1,y,0,2;
+      print(compress(A));
+      → x,1,
+      → y,2
+    """
+    from ..dsl.values import to_matrix
+    from ..dsl.values_modules import Module
+    from .idealops import simplify
+    from .vector_commands import simplify_module, simplify_matrix
+    if isinstance(A, Matrix):
+        return to_matrix(simplify_matrix(A, 2), A.ring)
+    if isinstance(A, Ideal):
+        return simplify(A, 2)
+    if isinstance(A, Module):
+        return simplify_module(A, 2)
+    if isinstance(A, IntVec):
+        return IntVec([v for v in A.values if v] or [0])
+    if isinstance(A, IntMat):
+        cols = [j for j in range(1, A.ncols + 1) if any(A.get(i, j) for i in range(1, A.nrows + 1))]
+        if not cols:
+            return IntMat(1, 1)
+        return IntMat(A.nrows, len(cols), [A.get(i, j) for i in range(1, A.nrows + 1) for j in cols])
+    raise MechRuntimeError(f"compress: a matrix, ideal, module, intmat or intvec expected, not {type(A).__name__}")
+
+
+@command("linear_relations", lib=LIB)
+def linear_relations(M: Any) -> Any:
+    """linear_relations(M): the module of the linear relations with constant coefficients among the
+    generators of the module M: a basis of the kernel of K^n -> R^r, e_j -> M[j], each relation with
+    1 at one generator not determined by the ones before (as a null space read from the reduced row
+    echelon form of the coefficients).  (Singular's matrix.lib reads relations off a basis with new
+    variables and misses or invents some when generators have constant entries.)
+
+    Example:
+      LIB "matrix.lib";
+      ring r = 0,(x,y),dp;
+      print(linear_relations(module([x,y],[2x,2y],[y,x])));
+      → -2,
+      → 1
+    """
+    from ..dsl.values_modules import Module, Vector
+    if not isinstance(M, Module):
+        raise MechRuntimeError("linear_relations: a module expected")
+    ring, field = M.ring, M.ring.field
+    n = len(M.gens)
+    terms = sorted({t for g in M.gens for t in g.terms()})
+    rows = [[g.terms().get(t, field.zero) for g in M.gens] for t in terms]
+    pivots: list[int] = []
+    r = 0
+    for c in range(n):
+        p = next((i for i in range(r, len(rows)) if rows[i][c] != field.zero), None)
+        if p is None:
+            continue
+        rows[r], rows[p] = rows[p], rows[r]
+        inv = field.one / rows[r][c]
+        rows[r] = [a * inv for a in rows[r]]
+        for i in range(len(rows)):
+            if i != r and rows[i][c] != field.zero:
+                f = rows[i][c]
+                rows[i] = [a - f * b for a, b in zip(rows[i], rows[r])]
+        pivots.append(c)
+        r += 1
+    rels = []
+    for free in (c for c in range(n) if c not in pivots):
+        vec = [field.zero] * n
+        vec[free] = field.one
+        for i, c in enumerate(pivots):
+            vec[c] = -rows[i][free]
+        rels.append(Vector(ring, [ring.const(a) for a in vec]))
+    return Module(ring, rels or [Vector(ring, [])])

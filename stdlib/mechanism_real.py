@@ -14,9 +14,9 @@ kinematician reads, computed exactly with :mod:`mech.kernel.real_solve`, ``real_
   rocker's range and limit positions, the crank's dead centres, the transmission angle, a link
   frozen on a mode said so (:mod:`mech.stdlib.input_output`).
 
-The steps share a time budget (:data:`BUDGET` seconds for all of them, and never beyond the
-statement's own time limit); a step over budget is reported as such instead of holding up the
-report. The report
+The steps share a time budget (:data:`BUDGET` seconds of CPU time for all of them, so that a busy
+machine does not change the report, and never beyond the statement's own time limit); a step over
+budget is reported as such instead of holding up the report. The report
 formats (:mod:`mech.stdlib.reports`) call :func:`real_sections` once per analysis.
 """
 from __future__ import annotations
@@ -32,7 +32,8 @@ from mech.kernel.real_roots import RealSolvingError
 from mech.stdlib.analysis import Analysis, mode_generators, relaxed_gc
 from mech.stdlib.grashof import four_bar
 
-#: Seconds the real steps of one report may take together (besides the statement's time limit).
+#: Seconds of CPU time the real steps of one report may take together (besides the statement's time
+#: limit, which is wall-clock time).
 BUDGET = 30.0
 #: Digits after the point of the decimals in the report.
 DIGITS = 4
@@ -54,32 +55,33 @@ class RealSections:
 
     data: dict[str, Any] = field(default_factory=dict)
     lines: list[str] = field(default_factory=list)
-    deadline: float = field(default_factory=lambda: time.monotonic() + BUDGET, repr=False)
+    deadline: float = field(default_factory=lambda: time.thread_time() + BUDGET, repr=False)  # CPU clock
     cut: bool = field(default=False, repr=False)  # a step stopped by the statement's time limit
 
 
 def within(seconds: float, fn: Callable[..., Any], *args: Any) -> tuple[bool, Any]:
-    """``(True, fn(*args))``, or ``(False, None)`` when it runs longer than ``seconds`` or than
-    the statement's time limit allows (keeping ``REPORT_KEEP`` seconds for the rest of the report,
+    """``(True, fn(*args))``, or ``(False, None)`` when it takes more than ``seconds`` of CPU time
+    (this thread's: :func:`mech.dsl.limits.within` with ``cpu``) or longer than the statement's
+    time limit allows (keeping ``REPORT_KEEP`` seconds for the rest of the report,
     also when one long call outlasts both: :func:`mech.dsl.limits.within`)."""
     seconds = cut(seconds, REPORT_KEEP)
     if seconds <= 0:
         return False, None
-    return limited(seconds, fn, *args, reserve=REPORT_KEEP)
+    return limited(seconds, fn, *args, cpu=True, reserve=REPORT_KEEP)
 
 
 def _step(sec: RealSections, what: str, fn: Callable[..., Any], *args: Any) -> Any:
     """Run one step under the budget; None (and a note in the report) when it is over budget or
     the exact methods refuse the input."""
     try:
-        ok, value = within(sec.deadline - time.monotonic(), fn, *args)
+        ok, value = within(sec.deadline - time.thread_time(), fn, *args)
     except RealSolvingError as e:
         sec.lines.append(f"  {what}: not computed ({e})")
         sec.data.setdefault("real_notes", []).append(f"{what}: {e}")
         return None
     if not ok:
         sec.cut = remaining() is not None
-        budget = "the statement's time limit" if sec.cut else f"the real answers' budget of {BUDGET:g} s"
+        budget = "the statement's time limit" if sec.cut else f"the real answers' budget of {BUDGET:g} s of CPU time"
         sec.lines.append(f"  {what}: too expensive, not computed (over {budget})")
         sec.data.setdefault("real_notes", []).append(f"{what}: over budget")
         return None
@@ -196,6 +198,8 @@ def _circuit_section(sec: RealSections, a: Analysis) -> None:
         parts = [(i, mode_generators(a, i)) for i, md in enumerate(a.modes, 1) if md.dim == 1 and md.real]
     else:  # a quick analysis: the configuration space as a whole
         parts = [(None, a.ideal)]
+    if len(parts) > 1:  # modes meet at real points: the configuration space's circuits are not the modes'
+        parts.insert(0, (None, a.ideal))
     out = []
     for i, prime in parts:
         what = f"real circuits of mode {i}" if i else "real circuits"
@@ -205,8 +209,9 @@ def _circuit_section(sec: RealSections, a: Analysis) -> None:
         out.append({"mode": i, "circuits": n})
         where = f"mode {i}" if i else "the configuration space"
         piece = "circuit" if n == 1 else "circuits"
-        sec.lines.append(f"  real circuits: {where} has {n} {piece}" +
-                         (" (the linkage cannot pass from one to another without disassembly)" if n > 1 else ""))
+        apart = (" (the linkage cannot pass from one to another without disassembly)"
+                 if n > 1 and (i is None or len(parts) == 1) else "")
+        sec.lines.append(f"  real circuits: {where} has {n} {piece}{apart}")
     sec.data["real_circuits"] = out
 
 

@@ -218,7 +218,7 @@ def _words(n: ModeName, nangles: int) -> str:
 
 
 _CACHE: dict[int, tuple[Any, list]] = {}
-#: Seconds the names of one analysis may take together.
+#: Seconds of CPU time the names of one analysis may take together (a busy machine does not change them).
 BUDGET = 10.0
 
 
@@ -232,10 +232,10 @@ def mode_names(a: Any) -> list[Optional[ModeName]]:
     from mech.dsl.limits import REPORT_KEEP, cut, remaining, within
     names: list[Optional[ModeName]] = []
     if not a.params:
-        deadline = time.monotonic() + BUDGET
+        deadline = time.thread_time() + BUDGET
         for md in a.modes:
-            seconds = cut(deadline - time.monotonic(), REPORT_KEEP)  # never beyond the statement's limit
-            ok, n = within(seconds, name_mode, a.mechanism, md.prime, md.dim, reserve=REPORT_KEEP) \
+            seconds = cut(deadline - time.thread_time(), REPORT_KEEP)  # never beyond the statement's limit
+            ok, n = within(seconds, name_mode, a.mechanism, md.prime, md.dim, cpu=True, reserve=REPORT_KEEP) \
                 if seconds > 0 else (False, None)
             names.append(n if ok else None)
     if remaining() is None or all(names):  # names cut short by the statement's time limit: again next time

@@ -11,11 +11,15 @@ The strategies (their proofs are in the kernel modules named):
 * ``minimal primes``: ``minAssGTZ`` (``mech.kernel.primdec``), first with a short budget (it
   finishes at once on small mechanisms).
 * ``interpolated projection`` (radical complete intersections of dimension 1): the eliminant of
-  a projection to the plane interpolated from slices, its factors certify the primes.  It runs
+  a projection to the plane interpolated from slices, its factors certify the primes; their
+  ideals are interpolated from points modulo primes and proved over QQ
+  (``mech.kernel.curve_ideals``), else found by saturations.  It runs
   before a longer ``minAssGTZ`` try, which it makes unnecessary once it has proved the number of
   modes and their degrees.
 * ``sparse projection`` (radical complete intersections): the eliminant of a projection by
   sparse forms ``c_j + s_j`` (``mech.kernel.projection``).
+* ``loops`` (planar linkages with several loops): the minimal primes of each loop's equations
+  combined (``mech.stdlib.analysis_parts``: Peaucellier's inversor).
 * ``minimal primes`` again with a long budget, unless the interpolated projection has proved
   the number of modes and their degrees (``a.mode_degrees``) but ran out while computing their
   ideals: then the report gives that count without the ideals.
@@ -27,11 +31,13 @@ from typing import Any, Callable, Optional
 
 from mech.dsl.limits import within
 from mech.kernel import Poly
+from mech.kernel.curve_ideals import ideal_of_components
 from mech.kernel.ideals import is_subset
 from mech.kernel.primdec import min_ass_gtz, primdec_gtz
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes, split_by_factors
 from mech.kernel.slices import curve_image, slice_orbits
+from mech.stdlib.analysis_parts import loop_groups, modes_by_parts
 
 Found = list[list[Poly]]  # the minimal primes
 
@@ -72,6 +78,9 @@ def _by_curve(a: Any) -> Optional[Found]:
     a.mode_degrees = sorted(g.total_degree() for g in image.factors)  # proved, even if the split runs out
     if len(image.factors) == 1:
         return [list(a.ideal)]  # one factor: J is prime
+    ok, primes = within(IDEALS_BUDGET, ideal_of_components, a.ideal, a.ring, image.forms, image.factors, cpu=True)
+    if ok and primes is not None:
+        return primes
     ok, found = within(SPLIT_BUDGET, split_by_factors, a.ideal, a.ring, image.forms, image.degree,
                        image.image_ring, image.factors, cpu=True)
     if not ok:
@@ -80,7 +89,10 @@ def _by_curve(a: Any) -> Optional[Found]:
     return found.primes if ok else None
 
 
-#: CPU seconds for the ideals of the modes once a projection has proved their number.
+#: CPU seconds for the ideals of the modes once a projection has proved their number: first
+#: interpolated from points modulo primes and proved (``mech.kernel.curve_ideals``), then by
+#: saturations.
+IDEALS_BUDGET = 20.0
 SPLIT_BUDGET = 5.0
 
 
@@ -98,6 +110,8 @@ STRATEGIES: list[Strategy] = [
              "minimal primes of J, certified by a projection interpolated from slices"),
     Strategy("sparse projection", 30, lambda a: _radical_ci(a) and a.dim > 1, _by_projection,
              "minimal primes of J, certified by a birational projection"),
+    Strategy("loops", 30, lambda a: a.mode_degrees is None and loop_groups(a.ideal) is not None,
+             lambda a: modes_by_parts(a.ideal, a.ring), "minimal primes of J, from the minimal primes of its loops"),
     Strategy("minimal primes", 300, lambda a: a.mode_degrees is None, _by_min_ass, "minimal primes of J"),
 ]
 

@@ -2,7 +2,9 @@
 ``nrows``/``ncols``/``size``, ``std``, ``reduce``/``NF``, ``syz``, ``lift``, ``liftstd``, ``modulo``,
 and polylib.lib's ``id2mod``/``mod2id``.  Standard bases of submodules are Buchberger's algorithm for
 modules (:mod:`mech.kernel.modules`) in the ring's module ordering (``(dp,C)``, ``(c,dp)``, ...), for
-global orderings.
+global orderings.  Over a qring R/Q a submodule M of (R/Q)^r is M + Q*R^r in R^r (:func:`q_columns`):
+its standard basis is that of M + Q*R^r without the elements whose lead lies in lead(Q)*R^r, and
+syzygies over R/Q are those over R of M's generators together with the q*e_i, cut to M's part.
 """
 from __future__ import annotations
 
@@ -24,6 +26,26 @@ def _plain(ring: PolyRing, what: str) -> None:
     from ..dsl.qrings import quotient_ideal
     if quotient_ideal(ring) is not None:
         raise MechRuntimeError(f"{what} of a module over a qring is not supported")
+
+
+def q_columns(ring: PolyRing, rank: int) -> list[dict]:
+    """In a qring R/Q the vectors q*e_i (q in Q's standard basis, i < rank), else none."""
+    from ..dsl.qrings import quotient_of
+    q = quotient_of(ring)
+    if q is None:
+        return []
+    return [{(e, i): c for e, c in g.terms.items()} for g in q.basis for i in range(rank)]
+
+
+def _outside_quotient(ring: PolyRing, basis: list[dict], key: Any) -> list[dict]:
+    """The basis elements whose lead is not in lead(Q)*R^r (all of them over a polynomial ring)."""
+    from ..dsl.qrings import quotient_of
+    from ..kernel.poly import divides
+    q = quotient_of(ring)
+    if q is None:
+        return basis
+    qleads = [g.lm() for g in q.basis]
+    return [g for g in basis if not any(divides(le, max(g, key=key)[0]) for le in qleads)]
 
 
 def _global(ring: PolyRing, what: str) -> None:
@@ -69,17 +91,18 @@ def _normalized(ring: PolyRing, terms: dict, lead: Any) -> dict:
 
 
 def _basis(ring: PolyRing, rank: int, vecs: list[dict]) -> list[dict]:
-    """The reduced standard basis (normalized, by increasing lead term) of the submodule of R^rank."""
-    _plain(ring, "a standard basis")
+    """The reduced standard basis (normalized, by increasing lead term) of the submodule of R^rank
+    (over a qring: of (R/Q)^rank)."""
     key = kernel_key(ring)
+    vecs = [v for v in vecs if v] + q_columns(ring, rank)
     if not ring.order.is_global:
         basis = km.local_standard_basis(ring, rank, vecs, key)  # Singular lists it by decreasing lead
-        return [_normalized(ring, g, max(g, key=key)) for g in reversed(basis)]
+        return [_normalized(ring, g, max(g, key=key)) for g in reversed(_outside_quotient(ring, basis, key))]
     gb = km.ModuleGB(ring, rank, key=key)
-    gb.add([v for v in vecs if v])
+    gb.add(vecs)
     out = [(_normalized(ring, g, lt), lt) for g, lt in zip(gb.basis, gb.leads)]
     out.sort(key=lambda gl: key(gl[1]))
-    return [g for g, _ in out]
+    return _outside_quotient(ring, [g for g, _ in out], key)
 
 
 def _module(ring: PolyRing, vecs: list[dict], rank: int, is_std: bool = False) -> Module:
@@ -158,7 +181,13 @@ def module(ctx, *xs: Any) -> Module:
 
 @command("nrows")
 def nrows(m: Vector | Module) -> int:
-    """nrows(m): the rank of the free module m lies in (a vector: its highest component)."""
+    """nrows(m): the rank of the free module m lies in (a vector: its highest component).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      nrows([x,0,y]);
+      → 3
+    """
     return m.nrows if isinstance(m, Vector) else m.rank
 
 
@@ -189,16 +218,20 @@ def std(m: Module) -> Module:
 
 
 def _reduce_vec(ctx: Any, v: Vector, m: Module) -> Vector:
-    gb = km.ModuleGB(m.ring, m.rank, key=kernel_key(m.ring))
-    gb._set_basis([g for g in _vecs(m) if g], [lead_term(g) for g in m.nonzero()])
+    key = kernel_key(m.ring)
+    gb = km.ModuleGB(m.ring, m.rank, key=key)
+    extra = q_columns(m.ring, max(m.rank, v.nrows))
+    gb._set_basis([g for g in _vecs(m) if g] + extra, [lead_term(g) for g in m.nonzero()]
+                  + [max(g, key=key) for g in extra])
     return Vector.from_terms(m.ring, gb.reduce(v.terms()))
 
 
 @command("reduce")
 def reduce(ctx, f: Vector | Module | Poly | Ideal, m: Module) -> Vector | Module:
     """reduce(v, M): the normal form of the vector v (each generator of a module) by the standard
-    basis M (a warning when M is not marked as one)."""
-    _global(m.ring, "reduce")
+    basis M (a warning when M is not marked as one); over a qring by M and the quotient's ideal."""
+    if not m.ring.order.is_global:
+        raise MechRuntimeError("reduce of a module in a local or mixed ordering is not supported")
     if not m.is_std and len(m.nonzero()) > 1:  # as Singular: one generator is a standard basis
         ctx.warn(f"{ctx.argnames[1] if len(ctx.argnames) > 1 else '_'} is no standard basis")
     if isinstance(f, (Poly, Ideal)):
@@ -222,9 +255,10 @@ def syz(M: Ideal | Module) -> Module:
     """
     m = M if isinstance(M, Module) else to_module(M, M.ring)
     ring = m.ring
-    _plain(ring, "syz")
-    rel = km.syzygies(global_twin(ring), m.rank, _vecs(m))
-    basis = _basis(ring, len(m.gens), rel)
+    n = len(m.gens)
+    rel = km.syzygies(global_twin(ring), m.rank, _vecs(m) + q_columns(ring, m.rank))
+    rel = [{t: c for t, c in r.items() if t[1] < n} for r in rel]
+    basis = _basis(ring, n, rel)
     return _module(ring, basis, len(m.gens), True)
 
 
@@ -287,7 +321,14 @@ def liftstd(ctx, m_node: A.Expr, t_node: A.Expr, *rest: A.Expr) -> Ideal | Modul
 
 @command("lift")
 def lift(ctx, M: Module, N: Module | Vector) -> Matrix:
-    """lift(M, N): the matrix T with matrix(N) = matrix(M)*T (N inside M)."""
+    """lift(M, N): the matrix T with matrix(N) = matrix(M)*T (N inside M).
+
+    Example:
+      ring r = 0,(x,y),dp;
+      print(lift(module([x,0],[0,y]), module([x2,xy])));
+      → x,
+      → x
+    """
     ring = M.ring
     _global(ring, "lift")
     targets = [N] if isinstance(N, Vector) else list(N.gens)
@@ -305,7 +346,7 @@ def lift(ctx, M: Module, N: Module | Vector) -> Matrix:
 @command("modulo")
 def modulo(h1: Ideal | Module, h2: Ideal | Module) -> Module:
     """modulo(h1, h2): generators of the kernel of R^k -> R^n/<h2> sending e_i to the i-th generator
-    of h1 (the c with h1*c in h2), a standard basis of it.
+    of h1 (the c with h1*c in h2; over a qring R/Q in h2 + Q*R^n), a standard basis of it.
 
     Example:
       ring r = 0,(x,y),dp;
@@ -317,8 +358,7 @@ def modulo(h1: Ideal | Module, h2: Ideal | Module) -> Module:
     a = h1 if isinstance(h1, Module) else to_module(h1, ring)
     b = h2 if isinstance(h2, Module) else to_module(h2, ring)
     rank, k = max(a.rank, b.rank), len(a.gens)
-    _plain(ring, "modulo")
-    rel = km.syzygies(global_twin(ring), rank, _vecs(a) + _vecs(b))
+    rel = km.syzygies(global_twin(ring), rank, _vecs(a) + _vecs(b) + q_columns(ring, rank))
     kept = [{t: c for t, c in s.items() if t[1] < k} for s in rel]
     return _module(ring, _basis(ring, k, kept), k, True)
 

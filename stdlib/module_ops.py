@@ -1,5 +1,5 @@
 """Ideal-style operations on modules (Singular dialect): ``intersect``, ``quotient``, ``interred``,
-``dim``, ``homog``.
+``dim``, ``homog``, ``eliminate``.
 
 Intersections and quotients come from syzygies (Greuel–Pfister, *A Singular Introduction to Commutative
 Algebra*, 2.8): M ∩ N is the image under M of the first parts of the syzygies of [M | N]; M : N (an
@@ -15,13 +15,19 @@ from ..dsl.values import Ideal
 from ..dsl.values_modules import Module, Vector, lead_term
 from ..kernel import Poly, PolyRing
 from ..kernel import modules as km
-from .module_commands import _basis, _global, _module, _plain, _vecs, global_twin
+from .module_commands import _basis, _global, _module, _vecs, global_twin, q_columns
 
 
 def _first_parts(ring: PolyRing, rank: int, gens: list[dict], k: int) -> list[dict]:
-    """The first k entries of the syzygies of gens."""
-    _plain(ring, "syzygies")
-    return [{t: c for t, c in s.items() if t[1] < k} for s in km.syzygies(global_twin(ring), rank, gens)]
+    """The first k entries of the syzygies of gens (over a qring R/Q: of gens and the q*e_i)."""
+    return [{t: c for t, c in s.items() if t[1] < k}
+            for s in km.syzygies(global_twin(ring), rank, gens + q_columns(ring, rank))]
+
+
+@command("intersect")
+def intersect_one(M: Module) -> Module:
+    """intersect(M) of one module: M as a standard basis."""
+    return _module(M.ring, _basis(M.ring, M.rank, _vecs(M)), M.rank, True)
 
 
 @command("intersect")
@@ -102,6 +108,30 @@ def interred(M: Module) -> Module:
     return _module(ring, out, M.rank)
 
 
+@command("eliminate")
+def eliminate(M: Module, m: Poly) -> Module:
+    """eliminate(M, m): the submodule of the vectors of M free of the variables of the monomial m (M
+    intersected with the free module over the other variables), a standard basis: the vectors free
+    of them in a basis for the ordering a(1 on them), then the ring's (term over position).
+
+    Example:
+      ring r = 0,(t,x,y),dp;
+      eliminate(module([x-t2, 0], [y-t3, 0], [0, x-t]), t);
+      → _[1]=x3*gen(1)-y2*gen(1)
+    """
+    from ..kernel.ideals import with_order
+    from ..kernel.order import Block, MonomialOrder
+    ring = M.ring
+    _global(ring, "eliminate")
+    elim = {i for i, k in enumerate(m.lm()) if k} if not m.is_constant() else set()
+    weights = tuple(1 if i in elim else 0 for i in range(ring.nvars))
+    aux = with_order(ring, MonomialOrder([Block("a", ring.nvars, weights)] + list(ring.order.blocks), ring.nvars))
+    gb = km.ModuleGB(aux, M.rank)
+    gb.add([v for v in _vecs(M) if v])
+    kept = [v for v in gb.basis if not any(e[i] for (e, _), c in v.items() if c != 0 for i in elim)]
+    return _module(ring, _basis(ring, M.rank, kept), M.rank, True)
+
+
 def _key(ring: PolyRing):
     from ..dsl.values_modules import kernel_key
     return kernel_key(ring)
@@ -117,15 +147,19 @@ def _component_leads(M: Module) -> dict[int, list[tuple]]:
 
 @command("dim")
 def dim(ctx, M: Module) -> int:
-    """dim(M): the Krull dimension of R^r/M for a standard basis M (-1 when M is the free module)."""
+    """dim(M): the Krull dimension of R^r/M for a standard basis M (-1 when M is the free module; over
+    a qring R/Q of (R/Q)^r/M)."""
     from ..kernel.dimension import krull_dim
     ring = M.ring
     if not M.is_std:
         ctx.assume_std(M, 0)  # type: ignore[arg-type]
+    from ..dsl.qrings import quotient_of
     leads = _component_leads(M)
+    q = quotient_of(ring)
+    qleads = [g.lm() for g in q.basis] if q is not None else []
     dims = []
     for i in range(M.rank):
-        es = leads.get(i)
+        es = leads.get(i, []) + qleads
         if not es:
             dims.append(ring.nvars)
         elif any(not any(e) for e in es):
@@ -133,6 +167,45 @@ def dim(ctx, M: Module) -> int:
         else:
             dims.append(krull_dim(es, ring.nvars))
     return max(dims) if dims else -1
+
+
+@command("mult")
+def mult(ctx, M: Module) -> int:
+    """mult(M): the degree (multiplicity for a local ordering) of R^r/M for a standard basis M: the sum
+    of those of the R/L_i of the components' leading ideals L_i of the largest dimension.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      mult(std(module([x2,0],[0,y3])));
+      → 5
+    """
+    from ..dsl.qrings import quotient_of
+    from ..kernel import hilbert as H
+    from ..kernel.dimension import krull_dim
+    ring = M.ring
+    if not M.is_std:
+        ctx.assume_std(M, 0)  # type: ignore[arg-type]
+    leads = _component_leads(M)
+    q = quotient_of(ring)
+    qleads = [g.lm() for g in q.basis] if q is not None else []
+    parts = []
+    for i in range(M.rank):
+        es = leads.get(i, []) + qleads
+        if any(not any(e) for e in es):
+            continue
+        parts.append((krull_dim(es, ring.nvars) if es else ring.nvars, H.mult(es, ring.nvars)))
+    top = max((d for d, _ in parts), default=-1)
+    return sum(m for d, m in parts if d == top)
+
+
+def _register_multiplicity() -> None:
+    """Singular's ``multiplicity``: another name of ``mult`` (ideals first, as the registry tries them in turn)."""
+    from .hilbert import mult as mult_ideal
+    command("multiplicity")(mult_ideal)
+    command("multiplicity")(mult)
+
+
+_register_multiplicity()
 
 
 @command("homog")
@@ -167,6 +240,39 @@ def homog(M: Module | Vector) -> int:
 
 @command("transpose")
 def transpose(M: Module) -> Module:
-    """transpose(M): the module of the columns of the transposed matrix of M."""
+    """transpose(M): the module of the columns of the transposed matrix of M.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      print(transpose(module([x,y],[1,0])));
+      → x,y,
+      → 1,0
+    """
     cols = [g.padded(M.rank) for g in M.gens]
     return Module(M.ring, [Vector(M.ring, [c[i] for c in cols]) for i in range(M.rank)], len(cols))
+
+
+@command("highcorner")
+def highcorner(M: Module) -> Vector:
+    """highcorner(M): for a standard basis M, the smallest of the highest corners of the components whose
+    leading ideal is zero-dimensional, in the ring's monomial ordering, in the largest component (in the
+    module ordering) where it is one (as Singular; 0 if there is none).
+
+    Example:
+      ring r = 32003,(x,y),(c,ds);
+      module m = maxideal(3)*gen(1), maxideal(2)*gen(2);
+      highcorner(std(m));
+      → [y2]
+    """
+    from ..kernel import hilbert as H
+    ring = M.ring
+    corners = []
+    for i, es in _component_leads(M).items():
+        if H.vdim(es, ring.nvars) <= 0:
+            continue
+        corners.append((min(H.kbase(es, ring.nvars), key=ring.order.key), i))
+    if not corners:
+        return Vector(ring, [])
+    low = min(ring.order.key(e) for e, _ in corners)
+    e, i = max((c for c in corners if ring.order.key(c[0]) == low), key=_key(ring))
+    return Vector(ring, [ring.zero()] * i + [ring.monomial(e)])

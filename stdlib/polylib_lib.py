@@ -1,7 +1,8 @@
 """Commands of Singular's polylib.lib (and general.lib's ``lcm`` of ideals and intvecs): elementary
 symmetric polynomials (``elemSymmPoly``, ``elemSymmId``), ``substitute``, the Newton diagram
 (``newtonDiag``), the smallest and largest (weighted) degrees of the monomials whatever the ordering
-(``mindeg``, ``mindeg1``, ``maxdeg``, ``maxdeg1``), the longest coefficient (``maxcoef``), the Hilbert
+(``mindeg``, ``mindeg1``, ``maxdeg``, ``maxdeg1``), the longest coefficient (``maxcoef``), the content
+(``content``), generators divided by their leading coefficients (``normalize``), the Hilbert
 polynomial (``hilbPoly``), radical membership (``rad_con``) and the Katsura ideals (``katsura``)."""
 from __future__ import annotations
 
@@ -12,7 +13,8 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.intmat import IntMat
 from ..dsl.printing import coeff_str, is_short
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec, Matrix
+from ..dsl.values import Ideal, IntVec, Matrix, Number
+from ..dsl.values_modules import Vector
 from ..kernel import Poly
 from .polyops import lcm_int, lcm_poly
 from .standard import standard_basis
@@ -214,6 +216,77 @@ def maxdeg1(x: Poly | Ideal | Matrix, w: IntVec | None = None) -> int:
       → 6
     """
     return _overall(x, w, max)
+
+
+@command("content", lib=LIB)
+def content(f: Poly | Vector) -> Number:
+    """content(f): the content of the polynomial or vector f, the constant c with f = c*cleardenom(f)
+    (over Z/p 1; 1 for 0).
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y),dp;
+      content(-3x2+6y);
+      → -3
+      content(1/2x+1/3y);
+      → 1/6
+    """
+    from . import polyops, vector_commands
+    field = f.ring.field
+    if f.is_zero():
+        return Number(f.ring, field.one)
+    if isinstance(f, Poly):
+        return Number(f.ring, f.lc() / polyops.cleardenom(f).lc())
+    if getattr(field, "params", ()):
+        raise MechRuntimeError("content of a vector over a parameter field is not supported")
+    return Number(f.ring, vector_commands.leadcoef(f).c / vector_commands.leadcoef(vector_commands.cleardenom(f)).c)
+
+
+@command("normalize", lib=LIB)
+def normalize_lead(f: Poly | Ideal | Vector | Any) -> Any:
+    """normalize(f): the polynomial, vector, ideal or module f with each generator divided by its
+    leading coefficient (for the ring's ordering; a vector's leading term in the module ordering).
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y,z),ls;
+      normalize(2x5+3y2+4z3);
+      → z3+3/4y2+1/2x5
+    """
+    from ..dsl.values_modules import Module
+    from .vector_commands import simplify
+    if isinstance(f, Poly):
+        return f if f.is_zero() else Poly(f.ring, {e: c / f.lc() for e, c in f.terms.items()})
+    if isinstance(f, Ideal):
+        return Ideal(f.ring, [normalize_lead(g) for g in f.gens])
+    if isinstance(f, Vector):
+        return simplify(f, 1)
+    if isinstance(f, Module):
+        return Module(f.ring, [simplify(g, 1) for g in f.gens], f.rank)
+    raise MechRuntimeError("normalize: a poly, vector, ideal or module expected")
+
+
+@command("is_zero", lib=LIB)
+def is_zero(x: Any, *more: Any) -> Any:
+    """is_zero(M[, any]): 1 if the module M (an ideal: R/I) is zero, else 0 (its dimension is -1); with
+    a second argument the list of that and the dimension.
+
+    Example:
+      LIB "polylib.lib";
+      ring r = 0,(x,y,z),dp;
+      is_zero(module([x],[y],[1,z]), 1);
+      → [1]:
+      →    0
+      → [2]:
+      →    2
+    """
+    from ..dsl.values import List
+    from ..dsl.values_modules import Module
+    from .sing_regular import std_dimension
+    if not isinstance(x, (Ideal, Module)):
+        raise MechRuntimeError("is_zero: an ideal or module expected")
+    d = std_dimension(x)
+    return List([int(d == -1), d]) if more else int(d == -1)
 
 
 @command("maxcoef", lib=LIB)

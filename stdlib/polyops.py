@@ -172,8 +172,9 @@ def _coeffs_in(f: Poly, i: int) -> list[Poly]:
 @command("coeffs", raw=True)
 def coeffs(ctx, f_node: A.Expr, v_node: A.Expr, *t_node: A.Expr) -> Matrix:
     """coeffs(f, x): the coefficients of f as a polynomial in the variable x, a column from x^0 up;
-    for an ideal one column per generator; coeffs(f, x, T) also sets the matrix T to the row of powers
-    1, x, x2, ... (T*coeffs(f, x, T) == f).
+    for an ideal one column per generator, for a vector the entries' columns (as long as the longest)
+    one under another; coeffs(f, x, T) also sets the matrix T to the row of powers 1, x, x2, ...
+    (T*coeffs(f, x, T) == f).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -182,7 +183,12 @@ def coeffs(ctx, f_node: A.Expr, v_node: A.Expr, *t_node: A.Expr) -> Matrix:
       → 2z,
       → 3y
     """
+    from ..dsl.values_modules import Vector
     f, v = ctx.eval(f_node), ctx.eval(v_node)
+    if isinstance(f, Vector) and isinstance(v, Poly) and not t_node:  # each entry's column, one under another
+        cols = _coeffs(Ideal(f.ring, list(f.entries) or [f.ring.zero()]), v)
+        return Matrix(v.ring, cols.nrows * cols.ncols, 1,
+                      [cols.get(r, c) for c in range(1, cols.ncols + 1) for r in range(1, cols.nrows + 1)])
     if len(t_node) > 1 or not isinstance(f, (Poly, Ideal)) or not isinstance(v, Poly):
         got = ", ".join(typeof(a) for a in (f, v)) + ", matrix" * len(t_node)
         raise MechTypeError(f"wrong arguments for coeffs: got ({got}), expected coeffs(poly|ideal, poly[, matrix])")
@@ -207,10 +213,12 @@ def _coeffs(f: Poly | Ideal, v: Poly) -> Matrix:
     return Matrix(ring, nrows, len(cols), entries)
 
 
-@command("coef")
-def coef(f: Poly, vs: Poly) -> Matrix:
+@command("coef", raw=True)
+def coef(ctx, f_node: A.Expr, m_node: A.Expr, *out: A.Expr) -> Any:
     """coef(f, m): a 2-row matrix: the monomials in the variables of the product m occurring in f (in
-    decreasing order) over their coefficients (polynomials in the other variables).
+    decreasing order) over their coefficients (polynomials in the other variables); coef(v, m, C, M)
+    for a vector v sets C and M to one row per entry: its coefficients and its monomials as coef(f, m)
+    gives them (rows padded with zeros).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -218,20 +226,58 @@ def coef(f: Poly, vs: Poly) -> Matrix:
       → x2,x, 1,
       → 3y,2z,-z
     """
-    ring = f.ring
+    from ..dsl.values import NONE
+    from ..dsl.values_modules import Vector
+    f, vs = ctx.eval(f_node), ctx.eval(m_node)
+    if isinstance(f, Poly) and isinstance(vs, Poly) and not out:
+        return _coef(f, vs)
+    if isinstance(f, Vector) and isinstance(vs, Poly) and len(out) == 2:
+        ring = f.ring
+        idx = _coef_vars(vs)
+        groups = [_coef_groups(p, idx) for p in f.entries] or [{}]
+        keys = [_coef_order(ring, g) for g in groups]
+        n, k = len(groups), max([len(ks) for ks in keys] + [1])
+        coeffs, monos = [], []
+        for g, ks in zip(groups, keys):
+            coeffs += [Poly(ring, g[key]) for key in ks] + [ring.zero()] * (k - len(ks))
+            monos += [ring.monomial(key) for key in ks] + [ring.zero()] * (k - len(ks))
+        ctx.assign(out[0], Matrix(ring, n, k, coeffs))
+        ctx.assign(out[1], Matrix(ring, n, k, monos))
+        return NONE
+    got = ", ".join(typeof(a) for a in (f, vs)) + ", matrix" * len(out)
+    raise MechTypeError(f"wrong arguments for coef: got ({got}), expected coef(poly, poly) or "
+                        "coef(vector, poly, matrix, matrix)")
+
+
+def _coef_vars(vs: Poly) -> list[int]:
     if len(vs.terms) != 1:
         raise MechRuntimeError("coef takes a product of ring variables as its second argument")
     (mask, _), = vs.terms.items()
-    idx = [i for i, k in enumerate(mask) if k]
-    if f.is_zero():
-        return Matrix(ring, 2, 1, [ring.zero(), ring.zero()])
+    return [i for i, k in enumerate(mask) if k]
+
+
+def _coef_groups(f: Poly, idx: list[int]) -> dict[tuple, dict]:
+    """f's terms grouped by their monomial in the variables idx: {that monomial: the coefficient's terms}."""
     groups: dict[tuple, dict] = {}
     for e, c in f.terms.items():
         key = tuple(e[i] if i in idx else 0 for i in range(len(e)))
         rest = tuple(0 if i in idx else e[i] for i in range(len(e)))
         groups.setdefault(key, {})[rest] = c
-    # as Singular: largest first in a global ordering, smallest first in a local or mixed one
-    keys = sorted(groups, key=ring.order.key, reverse=ring.order.is_global)
+    return groups
+
+
+def _coef_order(ring: Any, keys: Any) -> list[tuple]:
+    """As Singular: largest first in a global ordering, smallest first in a local or mixed one."""
+    return sorted(keys, key=ring.order.key, reverse=ring.order.is_global)
+
+
+def _coef(f: Poly, vs: Poly) -> Matrix:
+    ring = f.ring
+    idx = _coef_vars(vs)
+    if f.is_zero():
+        return Matrix(ring, 2, 1, [ring.zero(), ring.zero()])
+    groups = _coef_groups(f, idx)
+    keys = _coef_order(ring, groups)
     top = [ring.monomial(k) for k in keys]
     return Matrix(ring, 2, len(keys), top + [Poly(ring, groups[k]) for k in keys])
 
@@ -348,6 +394,50 @@ def jet(f: Poly | Ideal, d: int) -> Any:
     if isinstance(f, Poly):
         return cut(f)
     return Ideal(f.ring, [cut(p) for p in f.gens])
+
+
+@command("jet")
+def jet_weighted(f: Poly | Ideal, d: int, w: IntVec) -> Any:
+    """jet(f, d, w): the terms of f of weighted degree at most d for the variables' weights w.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      jet(x3+xy+y2+x+1, 2, intvec(2,1));
+      → xy+y2+x+1
+    """
+    ws = list(w.values) + [0] * (f.ring.nvars - len(w.values))
+
+    def cut(p: Poly) -> Poly:
+        return Poly(p.ring, {e: c for e, c in p.terms.items() if sum(a * b for a, b in zip(e, ws)) <= d})
+    if isinstance(f, Poly):
+        return cut(f)
+    return Ideal(f.ring, [cut(p) for p in f.gens])
+
+
+@command("jet")
+def jet_unit(f: Poly | Ideal, u: Poly, d: int) -> Any:
+    """jet(f, u, d): the d-jet of f/u for a unit u of the local ring (nonzero constant term): f times
+    the power series of 1/u, cut at total degree d.  (The installed Singular 4.3.1 leaves terms above
+    degree d in the product when f or u has several terms of positive degree; mech cuts as documented.)
+
+    Example:
+      ring r = 0,x,ds;
+      jet(1, 1+x, 3);
+      → 1-x+x2-x3
+    """
+    ring = u.ring
+    c = u.terms.get(ring.zero_exp)
+    if c is None or c == ring.field.zero:
+        raise MechRuntimeError("jet(f, u, d): u must be a unit (a nonzero constant term)")
+    h = jet(Poly(ring, {e: -v / c for e, v in u.terms.items() if e != ring.zero_exp}), d)
+    inv, power = ring.one(), ring.one()
+    for _ in range(d):
+        power = jet(power * h, d)
+        inv = inv + power
+    inv = Poly(ring, {e: v / c for e, v in inv.terms.items()})
+    if isinstance(f, Poly):
+        return jet(f * inv, d)
+    return Ideal(ring, [jet(g * inv, d) for g in f.gens])
 
 
 @command("cleardenom")

@@ -255,3 +255,24 @@ def new_max_independ_set_lp(ctx, j: Ideal, *opts: Any) -> List:
       →       1
     """
     return _max_independent(ctx, j, lambda a, b: "lp", not opts or opts[0] == "allIndep")
+
+
+@command("Ann", lib="primdec.lib")
+def ann(M: Any) -> Ideal:
+    """Ann(M): the annihilator of coker(M) = R^n/M for a module M of rank n (over a qring of
+    (R/Q)^n/M): the ideal quotient M : R^n, a standard basis.
+
+    Example:
+      LIB "primdec.lib";
+      ring r = 0,(x,y,z),lp;
+      Ann(module([1,x2],[y,x]));
+      → _[1]=x2y-x
+    """
+    from ..dsl.values_modules import Module, Vector
+    from .module_ops import quotient
+    if not isinstance(M, Module):
+        raise MechRuntimeError("Ann: a module expected")
+    ring = M.ring
+    free = Module(ring, [Vector(ring, [ring.zero()] * i + [ring.one()]) for i in range(M.rank)], M.rank)
+    found = quotient(M, free)
+    return Ideal(ring, found.gens)

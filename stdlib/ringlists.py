@@ -83,7 +83,8 @@ def _blocks(L: Any, nvars: int) -> list[OrderBlock]:
         if not isinstance(item, List) or len(item) < 2 or not isinstance(item.items[0], str):
             raise MechRuntimeError("ring(L): L[3] must be a list of orderings [name, intvec]")
         kind, v = item.items[0], item.items[1]
-        vals = list(v.values) if isinstance(v, IntVec) else [v] if isinstance(v, int) else []
+        # as Singular: an int n for a block of n variables (weights 1)
+        vals = list(v.values) if isinstance(v, IntVec) else [1] * v if isinstance(v, int) and v > 0 else []
         if kind in ("c", "C"):
             blocks.append(OrderBlock(kind))
         elif kind in _SIZED:

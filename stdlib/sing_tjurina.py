@@ -76,10 +76,9 @@ def Tjurina(ctx, f: Poly | Ideal, *rest: Any) -> Any:
     return st1
 
 
-@command("hilb")
-def hilb_module(ctx, M: Module, which: int = 0) -> IntVec | None:
-    """hilb(M): the Hilbert series numerators and degree lines of R^r/M for a standard basis M (the
-    components of degree 0)."""
+def module_hilbert(M: Module) -> tuple[list[int], list[int], int]:
+    """(Q, P, d): the first and second Hilbert series numerators of R^r/M for a standard basis M (the
+    components of degree 0: Q the sum of the components' numerators) and its dimension."""
     ring = M.ring
     n = ring.nvars
     leads: list[list[tuple]] = [[] for _ in range(M.rank)]
@@ -101,11 +100,40 @@ def hilb_module(ctx, M: Module, which: int = 0) -> IntVec | None:
             acc += c
             out.append(acc)
         p, d = out or [0], d - 1
+    return q, p, d
+
+
+def _degree_info(M: Module, p: list[int], d: int) -> Any:
+    if not M.ring.order.is_global:
+        return H.DegreeInfo("local", d, sum(p))
+    return H.DegreeInfo("affine", 0, sum(p)) if d <= 0 else H.DegreeInfo("proj.", d - 1, sum(p))
+
+
+@command("degree")
+def degree_module(ctx, M: Module) -> None:
+    """degree(M): prints the dimension and the degree (multiplicity for a local ordering) of R^r/M for a
+    standard basis M, as Singular's // dimension ... lines.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      degree(std(module([x2,0],[0,y3])));
+      → // dimension (proj.)  = 0
+      → // degree (proj.)   = 5
+    """
+    if not M.is_std:
+        ctx.assume_std(M, 0)  # type: ignore[arg-type]
+    _, p, d = module_hilbert(M)
+    ctx.write("\n".join(_degree_info(M, p, d).lines()) + "\n")
+
+
+@command("hilb")
+def hilb_module(ctx, M: Module, which: int = 0) -> IntVec | None:
+    """hilb(M): the Hilbert series numerators and degree lines of R^r/M for a standard basis M (the
+    components of degree 0)."""
+    q, p, d = module_hilbert(M)
     if which in (1, 2):
         return IntVec((q if which == 1 else p) + [0])
-    local = not ring.order.is_global
-    info = H.DegreeInfo("local", d, sum(p)) if local else (
-        H.DegreeInfo("affine", 0, sum(p)) if d <= 0 else H.DegreeInfo("proj.", d - 1, sum(p)))
+    info = _degree_info(M, p, d)
     lines = [f"//{c:10d} t^{k}" for k, c in enumerate(q) if c] + [""] + \
             [f"//{c:10d} t^{k}" for k, c in enumerate(p) if c] + info.lines()
     ctx.write("\n".join(lines) + "\n")

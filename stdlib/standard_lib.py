@@ -11,6 +11,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
 from ..dsl.values import Ideal, IntVec, List
+from ..dsl.values_modules import Module
 from ..kernel import Poly
 from .ring_lib import parse_ordering
 
@@ -128,3 +129,141 @@ def stdfglm_from(I: Ideal, how: str) -> Ideal:
     if how not in ("std", "slimgb"):
         parse_ordering(how, I.ring.nvars)  # the ordering must be one
     return stdfglm(I)
+
+
+@command("qslimgb")
+def qslimgb(I: Ideal | Module) -> Ideal | Module:
+    """qslimgb(I): over a qring R/Q a standard basis of I + Q (of M + Q*R^r for a module M) computed in R
+    and brought back unreduced (Q's elements stay), marked as a standard basis; over a polynomial ring
+    slimgb(I).
+
+    Example:
+      ring R = 0,(x,y),dp;
+      qring S = std(x2-y3);
+      qslimgb(ideal(x+y2));
+      → _[1]=y2+x
+      → _[2]=x2+xy
+    """
+    from ..dsl.qrings import quotient_of
+    from ..dsl.values_modules import Vector, _blocks_of, note_blocks
+    from ..kernel import PolyRing
+    from .module_commands import std as module_std
+    from .standard import slimgb
+    ring = I.ring
+    q = quotient_of(ring)
+    if q is None:
+        return slimgb(I) if isinstance(I, Ideal) else module_std(I)
+    plain = PolyRing(ring.field, ring.names, ring.order)
+    note_blocks(plain, _blocks_of(ring))
+    qs = [Poly(plain, g.terms) for g in q.basis]
+    if isinstance(I, Ideal):
+        found = slimgb(Ideal(plain, [Poly(plain, p.terms) for p in I.gens] + qs))
+        return Ideal(ring, [Poly(ring, p.terms) for p in found.gens], is_std=True)
+    gens = [Vector(plain, [Poly(plain, p.terms) for p in g.entries]) for g in I.gens]
+    gens += [Vector(plain, [plain.zero()] * i + [g]) for g in qs for i in range(I.rank)]
+    found = module_std(Module(plain, gens, I.rank))
+    return Module(ring, [Vector(ring, [Poly(ring, p.terms) for p in g.entries]) for g in found.gens], I.rank, True)
+
+
+def _param_poly(c: Any, field: Any, ring: Any, first: int) -> Any:
+    """A coefficient of a parameter field as a polynomial of ``ring`` whose variables ``first``,
+    ``first+1``... stand for the parameters (an error for a coefficient with a denominator)."""
+    from ..kernel.algext import AlgebraicField
+    n = ring.nvars
+    if isinstance(field, AlgebraicField):
+        return sum((ring.monomial(tuple(k if i == first else 0 for i in range(n)), ring.field(v))
+                    for k, v in enumerate(c.u.coeffs()) if v), ring.zero())
+    if c.den != 1:
+        raise MechRuntimeError("par2varRing: a coefficient with a denominator in the parameters")
+    out = ring.zero()
+    for m, v in zip(c.num.monoms(), c.num.coeffs()):
+        exp = tuple(m[i - first] if first <= i < first + len(m) else 0 for i in range(n))
+        out = out + ring.monomial(exp, ring.field(int(v)))
+    return out
+
+
+@command("par2varRing")
+def par2varRing(ctx, *args: Any) -> List:
+    """par2varRing([l]): the list of a ring with the basering's parameters as new last variables (a block
+    dp after the basering's blocks, before a last c/C block), exporting Id: the list of the ideals and
+    modules l mapped there (with the minimal polynomial added, times each generator of the free module
+    for a module); without parameters the basering itself.
+
+    Example:
+      ring R = (0,a),(x,y),dp;
+      def P = par2varRing(ideal(a*x+1, y-a2))[1];
+      setring P;
+      Id[1];
+      → _[1]=xa+1
+      → _[2]=y-a2
+    """
+    from ..dsl.rings import make_ring
+    from ..dsl.values import OrderBlock
+    from ..dsl.values_modules import Module, Vector
+    from ..kernel.algext import AlgebraicField
+    from .ring_lib import export
+    base = ctx.basering()
+    ring = base.poly
+    field = ring.field
+    params = list(base.params)
+    if not params:
+        if ctx.sysvars.get("printlevel", 0) - len(ctx.frames) + 2 > 0:
+            ctx.write("// ** no parameters, ring was not changed\n")
+        export(base, "Id", "list", List(list(args)))
+        return List([base])
+    blocks = list(base.blocks)
+    dp = OrderBlock("dp", len(params))
+    if blocks and blocks[-1].kind in ("c", "C"):
+        blocks = blocks[:-1] + [dp, blocks[-1]]
+    else:
+        blocks = blocks + [dp]
+    new = make_ring(field.characteristic, (), list(ring.names) + params, blocks)
+    P = new.poly
+    first = ring.nvars
+
+    def move(p: Any) -> Any:
+        out = P.zero()
+        for e, c in p.terms.items():
+            out = out + P.monomial(tuple(e) + (0,) * len(params)) * _param_poly(c, field, P, first)
+        return out
+    mp = None
+    if isinstance(field, AlgebraicField):
+        coeffs = field.modulus.numer().coeffs() if field.characteristic == 0 else field.modulus.coeffs()
+        mp = sum((P.monomial(tuple(k if i == first else 0 for i in range(P.nvars)), P.field(int(v)))
+                  for k, v in enumerate(coeffs) if int(v)), P.zero())
+    ids = []
+    for x in args:
+        if isinstance(x, Module):
+            gens = [Vector(P, [move(p) for p in g.entries]) for g in x.gens]
+            if mp is not None:
+                gens += [Vector(P, [P.zero()] * i + [mp]) for i in range(x.rank)]
+            ids.append(Module(P, gens, x.rank))
+        elif isinstance(x, Ideal):
+            ids.append(Ideal(P, [move(p) for p in x.gens] + ([mp] if mp is not None else [])))
+        else:
+            raise MechRuntimeError("par2varRing: ideals and modules expected")
+    export(new, "Id", "list", List(ids))
+    return List([new])
+
+
+@command("quot")
+def quot(a: Ideal | Module, b: Ideal | Module, *method: int) -> Ideal | Module:
+    """quot(M, N[, n]): the quotient M : N as quotient gives it (an ideal for two modules or two ideals,
+    a module for a module and an ideal); n (1..5) picks one of standard.lib's methods, which all give
+    this quotient.
+
+    Example:
+      ring r = 0,(x,y),dp;
+      quot(ideal(x2, xy), ideal(x), 2);
+      → _[1]=y
+      → _[2]=x
+    """
+    from ..dsl.values_modules import Vector
+    from . import ideals, module_ops
+    if method and not 1 <= method[0] <= 5:
+        raise MechRuntimeError("quot: the method must be 1..5")
+    if isinstance(a, Ideal) and isinstance(b, Ideal):
+        return ideals.quotient(a, b)
+    if isinstance(a, Ideal):
+        a = Module(a.ring, [Vector(a.ring, [g]) for g in a.gens], 1)
+    return module_ops.quotient(a, b)

@@ -9,7 +9,7 @@ import pytest
 from mech.dsl import ast as A
 from mech.dsl.errors import MechSyntaxError, Source
 from mech.dsl.fastparse import parse_fast
-from mech.dsl.parser import _parse_lark, _parser, _type_words, parse
+from mech.dsl.parser import _parse_lark, _parser, grammar_words, parse
 from mech.dsl.types import type_names
 
 from tests.util import ROOT
@@ -28,9 +28,20 @@ def same(a, b) -> bool:
 
 def fast(text: str, at=(1, 1)):
     source = Source("<t>", text)
+    words, types = grammar_words()
+    return parse_fast(text, at, words, types + type_names(), lambda piece, where: _parse_lark(piece, source, where))
+
+
+def test_grammar_words_are_the_parsers():
+    """The keywords and type names read from the grammar's text (no Lark at start-up) are the
+    parser's: its string terminals that are names, its rule type_name."""
     parser = _parser()
-    return parse_fast(text, at, parser.terminals, _type_words(parser) + type_names(),
-                      lambda piece, where: _parse_lark(piece, source, where))
+    keywords = {t.pattern.value for t in parser.terminals
+                if t.pattern.type == "str" and t.pattern.value.replace("_", "a").isalnum()}
+    values = {t.name: t.pattern.value for t in parser.terminals}
+    types = [values[r.expansion[0].name] for r in parser.rules if r.origin.name == "type_name"]
+    words, builtin = grammar_words()
+    assert set(words) | set(type_names()) == keywords and set(builtin) | set(type_names()) == set(types)
 
 
 def check(text: str, at=(1, 1)) -> bool:

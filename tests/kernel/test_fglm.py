@@ -133,3 +133,28 @@ def test_the_fivebar_elimination_matches_singular():
                        f"ideal i = {', '.join(FIVEBAR)}; groebner(i);", timeout=300)
     theirs = sorted((parse_poly(R, t).monic() for t in ideal_blocks(out)[0]), key=lambda p: R.order.key(p.lm()))
     assert standard_basis(gens, R) == theirs
+
+
+@pytest.mark.parametrize("p", [32003, 268435399], ids=["small p", "p near 2^28"])
+def test_compiled_and_packed_linear_algebra_give_the_same_conversion(monkeypatch, p):
+    """kernel/_fglm.c's steps against the packed Python integers, on a lex and a block target
+    (both paths also see a staircase of one monomial)."""
+    from mech.kernel import f4_rows
+    from mech.kernel import fglm as F
+    if f4_rows.KERNEL is None:
+        pytest.skip("the compiled kernel is not built")
+    runs = []
+    for path in ("compiled", "packed"):
+        if path == "packed":
+            monkeypatch.setattr(F, "COMPILED_ENTRIES", 0)
+        out = []
+        for names, gens, target in [("abcde", cyclic, LEX), ("abcdef", lambda R: katsura(R, 5), BLOCKS + [Block("dp", 1)]),
+                                    ("xy", lambda R: [R.gens()[0] - 3, R.gens()[1] ** 2 - R.gens()[0]], [Block("lp", 2)])]:
+            R = ring(names, [Block("dp", len(names))], GF(p))
+            dp = standard_basis(gens(R), R)
+            conv = fglm_modp([{e: int(c) for e, c in g.terms.items()} for g in dp], R.order,
+                             MonomialOrder(target), p)
+            out.append((conv.lms, conv.tails, conv.stairs, conv.stair_from, conv.lm_from))
+        runs.append(out)
+    assert runs[0] == runs[1]
+    assert len(runs[0][0][2]) == 70 and len(runs[0][1][2]) == 32

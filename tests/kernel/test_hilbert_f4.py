@@ -90,3 +90,27 @@ def test_auto_skips_buchbergers_attempt_on_zero_dimensional_lex_ideals(monkeypat
     G = standard_basis(katsura(R, 4), R)
     assert G == standard_basis(katsura(R, 4), R, "fglm") and (E.SMALL_BUCHBERGER,) not in seen
     clear_cache()
+
+
+def test_auto_tries_buchberger_first_only_with_fewer_generators_than_variables(monkeypatch):
+    """Block orderings over QQ: katsura-3 (4 generators, 4 variables) goes to FGLM from its dp basis
+    without Buchberger's budgeted attempt; the block system above (4 generators, 5 variables: a
+    positive-dimensional ideal by Krull's theorem) gets the attempt first; over Z/p the dp basis
+    always comes first."""
+    seen = []
+    bb = E.buchberger
+    monkeypatch.setattr(E, "buchberger", lambda *a: seen.append(a[2:]) or bb(*a))
+    clear_cache()
+    R = ring("abcd", [Block("dp", 2), Block("dp", 2)], QQ)
+    assert standard_basis(katsura(R, 3), R) == standard_basis(katsura(R, 3), R, "fglm")
+    assert (E.SMALL_BUCHBERGER,) not in seen
+    clear_cache()
+    R, gens = _elim(QQ)
+    assert standard_basis(gens, R) == standard_basis(gens, R, "hilbert")
+    assert (E.SMALL_BUCHBERGER,) in seen
+    seen.clear()
+    clear_cache()
+    R = ring("abcd", [Block("dp", 2), Block("dp", 2)], GF(32003))
+    standard_basis(katsura(R, 3), R)
+    assert (E.SMALL_BUCHBERGER,) not in seen
+    clear_cache()

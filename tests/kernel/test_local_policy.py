@@ -7,7 +7,7 @@ from tests.util import parse_poly
 
 from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
 from mech.kernel import local_policy
-from mech.kernel.engines import standard_basis
+from mech.kernel.engines import clear_cache, standard_basis
 from mech.kernel.hilbert import minimal_monomials
 from mech.kernel.mora import mora
 
@@ -30,6 +30,7 @@ def _ring(names, kind, field):
 @pytest.mark.parametrize("mora_first", [0, local_policy.MORA_FIRST])
 def test_every_route_gives_the_leading_ideal_of_mora(names, kind, polys, field, mora_first, monkeypatch):
     monkeypatch.setattr(local_policy, "MORA_FIRST", mora_first)
+    monkeypatch.setattr(local_policy, "MORA_COMPILED", mora_first or local_policy.MORA_COMPILED)
     R = _ring(names, kind, field)
     gens = [parse_poly(R, p) for p in polys]
     key = R.order.key
@@ -47,10 +48,31 @@ def test_lazard_route_is_taken_and_agrees(monkeypatch):
         calls.append(budget)
         return run(budget)
     monkeypatch.setattr(local_policy, "MORA_FIRST", 0)
+    monkeypatch.setattr(local_policy, "MORA_COMPILED", 0)
     monkeypatch.setattr(local_policy, "_f4_within", spy)
     R = _ring("x,y,z", "ds", GF(32003))
     gens = [parse_poly(R, p) for p in SYSTEMS[0][2]]
     got = standard_basis(gens, R)
-    assert calls == [local_policy.LAZARD_BUDGET]
+    compiled = local_policy.CompiledMora.usable(R)
+    assert calls == [local_policy.LAZARD_SMALL if compiled else local_policy.LAZARD_BUDGET]
     key = R.order.key
     assert sorted(g.lm() for g in got) == sorted(minimal_monomials([max(b, key=key) for b in mora(gens, R)]))
+
+
+def test_compiled_routes_after_the_first_mora_agree(monkeypatch):
+    """Over Z/p with the compiled loop: Lazard within the small budget, then Mora without trial
+    cuts, then the large Lazard; each gives the leading ideal of Mora alone."""
+    R = _ring("x,y,z", "ds", GF(32003))
+    if not local_policy.CompiledMora.usable(R):
+        pytest.skip("the C extension _mora is not built")
+    gens = [parse_poly(R, p) for p in SYSTEMS[0][2]]
+    key = R.order.key
+    expected = sorted(minimal_monomials([max(b, key=key) for b in mora(gens, R)]))
+    monkeypatch.setattr(local_policy, "MORA_COMPILED", 0)
+    for small, uncut in [(0, local_policy.MORA_UNCUT), (0, 0)]:
+        monkeypatch.setattr(local_policy, "LAZARD_SMALL", small)
+        monkeypatch.setattr(local_policy, "MORA_UNCUT", uncut)
+        clear_cache()
+        got = standard_basis(gens, R)
+        assert sorted(minimal_monomials([g.lm() for g in got])) == expected
+        assert len(got) == len(expected)

@@ -9,8 +9,8 @@ from tests.util import SINGULAR, parse_poly
 
 from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
 from mech.kernel.engines import standard_basis
-from mech.kernel.hilbert import hilbert_numerators, vdim
-from mech.kernel.mora import Corner, _mora, mora
+from mech.kernel.hilbert import hilbert_numerators, minimal_monomials, vdim
+from mech.kernel.mora import Corner, _mora, _separate, mora
 
 
 def ds_ring(names, field=GF(32003), kind="ds"):
@@ -85,3 +85,18 @@ def test_cut_bases_match_singular(a):
               "print(size(reduce(lead(sm),lead(j)))); print(vdim(j)); quit;")
     out = subprocess.run([SINGULAR, "-q"], input=script, text=True, capture_output=True, timeout=120).stdout.split()
     assert out[:5] == ["0"] * 5 and int(out[5]) > 0, out
+
+
+@pytest.mark.parametrize("kind", ["ds", "ls", "Ds"])
+def test_generators_in_disjoint_variables_are_split(kind):
+    """Bases of the groups of generators sharing no variable, together, have the leading ideal of
+    the whole computation (kernel/mora.py's _separate)."""
+    R = PolyRing(GF(32003), ["x", "y", "z", "w"], MonomialOrder([Block(kind, 4)]))
+    gens = [parse_poly(R, p) for p in ["x^3+y^2+x^4*y", "x*y^3+y^5", "z^2*w+w^4+z^5", "z^3-w^3+z*w^4"]]
+    assert [len(p) for p in _separate(gens, 4)] == [2, 2]
+    key = R.order.key
+    split = mora(gens, R)
+    whole = _mora(gens, R)[0]
+    assert sorted(minimal_monomials([max(b, key=key) for b in split])) == \
+        sorted(minimal_monomials([max(b, key=key) for b in whole]))
+    assert len(split) == len(minimal_monomials([max(b, key=key) for b in split]))

@@ -35,7 +35,11 @@ def test_branches_at_rational_points(f, point, half, kind, rays):
     (b,) = real_branches([f], R2, point)
     assert (b.half_branches, b.branches, b.kind) == (half, half // 2, kind)
     assert sorted(b.rays) == sorted(rays)
-    assert len(b.tangents) == len(rays) and b.radius2 > 0
+    assert len(b.tangents) == len(rays)
+    # the nodes, the smooth point and the isolated points here are ordinary (distinct simple tangent lines,
+    # over C): decided from the tangent cone alone; the others by the points on a certified sphere
+    assert (b.radius2 is None) == (kind in ("node", "regular", "isolated"))
+    assert b.radius2 is None or b.radius2 > 0
 
 
 def test_branches_at_algebraic_points():
@@ -64,3 +68,27 @@ def test_fourbar_change_point():
 def test_point_not_on_the_curve():
     with pytest.raises(RealSolvingError):
         real_branches([x ** 2 + y ** 2 - 1], R2, ORIGIN)
+
+
+def test_double_point_counts():
+    """Half-branch counts of the sweep at ordinary double points from the Hessian on the Jacobian's
+    kernel (Morse), against the certified sphere; other points are left to the tangent cone."""
+    from mech.kernel.real_branches import PointFamily, _critical_bound, _double_point_counts, _Setting, _sphere, \
+        point_families
+    rational = PointFamily.rational
+
+    def on_sphere(curve, ring, fam):
+        S = _Setting(curve, ring, fam)
+        _, _, owners = _sphere(S, _critical_bound(S))
+        return [owners.count(j) for j in range(len(S.roots))]
+    assert _double_point_counts([x ** 2 - y ** 2], R2, rational(ORIGIN)) == [4]
+    assert _double_point_counts([x ** 2 + y ** 2 - x ** 3], R2, rational(ORIGIN)) == [0]
+    for f in (x ** 3 - y ** 2, y ** 2 - x ** 4, x ** 2 + y ** 2 - 1):
+        assert _double_point_counts([f], R2, rational(ORIGIN if f != x ** 2 + y ** 2 - 1 else [1, 0])) is None
+    (fam,) = point_families([x, y ** 2 - 2], R2)
+    for f, counts in (((y ** 2 - 2) ** 2 - x ** 2 * (1 + x), [4, 4]), ((y ** 2 - 2) ** 2 + x ** 2 * (1 - x), [0, 0])):
+        assert _double_point_counts([f], R2, fam) == counts == on_sphere([f], R2, fam)
+    I = [2 * c1 + 4 * c2 + 3 * c3 - 5, 2 * s1 + 4 * s2 + 3 * s3, c1 ** 2 + s1 ** 2 - 1, c2 ** 2 + s2 ** 2 - 1,
+         c3 ** 2 + s3 ** 2 - 1]   # the four-bar's change point (test_fourbar_change_point)
+    p = rational([fmpq(v) for v in (-1, 0, 1, 0, 1, 0)])
+    assert _double_point_counts(I, R6, p) == [4] == on_sphere(I, R6, p)

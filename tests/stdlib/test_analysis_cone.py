@@ -26,7 +26,7 @@ def test_cone_out_of_budget_keeps_the_classification(monkeypatch):
     assert "components meet" in [s.kind for s in full.singular]
     assert full.singular and all(not s.cone_note for s in full.singular)
     monkeypatch.setattr(analysis, "CONE_BUDGET", 0.3)
-    monkeypatch.setattr(analysis, "tangent_cone_at", _spin)
+    monkeypatch.setattr(analysis, "cone_at_point", _spin)
     part = analyze(parse_mechanism(PARALLELOGRAM))
     assert [(s.kind, s.transition, s.modes) for s in part.singular] == \
         [(s.kind, s.transition, s.modes) for s in full.singular]

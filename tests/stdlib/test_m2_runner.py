@@ -241,6 +241,23 @@ def test_classify(mech: dict, m2: dict, status: str, reason: str) -> None:
     assert (r.status, r.reason) == (status, reason)
 
 
+@pytest.mark.parametrize("unique, status, reason", [
+    ("true", "agree", "compared by a unique value: an embedded component"),
+    ("false", "differ", "o2: Macaulay2 '{1, 82}', mech '{1, 123}'"),
+])
+def test_classify_values_that_are_not_unique(monkeypatch, unique: str, status: str, reason: str) -> None:
+    """A case of NOT_UNIQUE: its listed statements and first printed lines are judged by the check
+    Macaulay2 runs on mech's own choice (its verdict in m2["unique"]); the other lines as usual."""
+    monkeypatch.setitem(R.NOT_UNIQUE, "f:1", ("an embedded component", {2}, 1, "check"))
+    mech = _mech({1: "R", 2: "{1, 123}"}, prints=["ideal(x^2,y)", "ideal x"])
+    m2 = _m2({1: ("R", "same"), 2: ("{1, 82}", "differ")}, prints=["ideal(x^3,y)", "ideal x"])
+    m2["unique"] = unique
+    r = R.classify(CASE, mech, m2, INFO)
+    assert (r.status, r.reason) == (status, reason)
+    m2["prints"] = ["ideal(x^3,y)", "ideal y"]  # a line after the checked ones differs: it counts
+    assert R.classify(CASE, mech, m2, INFO).status == "differ"
+
+
 def test_functions_mech_lacks() -> None:
     info = {"globals": {"setMaxIdeal": "function", "ideal": "function", "f": "function", "R": "Symbol"}}
     code = "R = QQ[x]; setMaxIdeal x; ideal x; f = y -> y; f x"

@@ -8,6 +8,7 @@ import math
 import re
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -99,9 +100,11 @@ def test_other_grashof_types(text, kind, circuits):
 
 
 def test_parallelogram_nodes():
-    """The rhombus 1,1,1: three modes (circles) meeting at three nodes."""
-    d = report_data(analyze(parse_mechanism("ground O A 1; bar O B 1; bar B C 1; bar C A 1")))
-    assert [c["circuits"] for c in d["real_circuits"]] == [1, 1, 1]
+    """The rhombus 1,1,1: three modes (circles) meeting at three nodes: one circuit in all."""
+    a = analyze(parse_mechanism("ground O A 1; bar O B 1; bar B C 1; bar C A 1"))
+    d = report_data(a)
+    assert [(c["mode"], c["circuits"]) for c in d["real_circuits"]] == [(None, 1), (1, 1), (2, 1), (3, 1)]
+    assert "the configuration space has 1 circuit\n" in report_text(a)
     assert [(b["count"], b["type"]) for b in d["real_branches"]] == [(2, "node")] * 3
 
 
@@ -111,6 +114,13 @@ def test_over_budget(monkeypatch):
     text = report_text(a)
     assert "real circuits of mode 1: too expensive, not computed" in text
     assert report_data(a)["real_circuits"] == []
+
+
+def test_budget_is_cpu_time(monkeypatch):
+    """The real answers' budget counts CPU time: a step that waits (a busy machine) is not cut."""
+    monkeypatch.setattr(mechanism_real, "BUDGET", 0.2)
+    sec = mechanism_real.RealSections()
+    assert mechanism_real._step(sec, "waiting", lambda: time.sleep(0.5) or 1) == 1 and not sec.lines
 
 
 def test_json_command():

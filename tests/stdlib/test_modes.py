@@ -2,6 +2,7 @@
 non-radical J reported apart, the strategy chain on a six-bar, partial reports on a time limit."""
 from __future__ import annotations
 
+import functools
 import subprocess
 import sys
 import time
@@ -87,7 +88,7 @@ def test_timeout_gives_a_partial_report_and_a_nonzero_status(tmp_path):
     script.write_text('LIB "mechanism.lib";\nmechanism m = "ground O A 4; body O B 3 0 E 1 2; '
                       'body B C 4 0 F 1 2; bar C A 3; bar E H 2; bar H F 3";\nanalyze(m);\n')
     start = time.monotonic()
-    r = subprocess.run([sys.executable, "-m", "mech", "--timeout", "3", str(script)], cwd=tmp_path,
+    r = subprocess.run([sys.executable, "-m", "mech", "--timeout", "2.5", str(script)], cwd=tmp_path,
                        text=True, capture_output=True, timeout=300)
     assert r.returncode != 0 and time.monotonic() - start < 120
     assert "mobility 1; J is radical\n" in r.stdout and "motion modes: not determined" in r.stdout
@@ -109,7 +110,7 @@ def test_stage_benchmark_measures_the_stages():
     assert "minAssGTZ(J);" in script and "minor(D, 5)" in script
     if SINGULAR:
         got = bench.singular_stages(script, 120)
-        assert set(got) == {"dimension", "decomposition", "singular configurations"}
+        assert set(got) == {"dimension", "decomposition", "singular configurations", "local analysis"}
         assert all(v is not None for v in got.values())
 
 
@@ -166,6 +167,7 @@ def test_proved_mode_count_is_reported_when_the_ideals_run_out(monkeypatch):
     import dataclasses
     from mech.stdlib import modes
     monkeypatch.setattr(modes, "SPLIT_BUDGET", 0.2)
+    monkeypatch.setattr(modes, "IDEALS_BUDGET", 0.2)
     monkeypatch.setattr(modes, "STRATEGIES", [dataclasses.replace(s, budget=0.2) if s.name == "minimal primes" else s
                                               for s in modes.STRATEGIES])
     a = analyze(parse_mechanism(WATT_I_B))
@@ -174,6 +176,52 @@ def test_proved_mode_count_is_reported_when_the_ideals_run_out(monkeypatch):
     assert "motion modes: 2, curves of degrees 6, 10 (proved by a projection" in text
     assert "local components not computed: the motion modes were not found" in text
     assert report_data(a)["motion_mode_degrees"] == [6, 10]
+
+
+@pytest.mark.parametrize("mechanism", [WATT_I_B, STEPHENSON])
+def test_six_bars_get_their_mode_ideals(mechanism):
+    """The projection's modes get their prime ideals (mech.kernel.curve_ideals), and with them the
+    local components at every singular configuration."""
+    a = _analysis(mechanism)
+    assert a.modes_found and a.mode_degrees == DEGREES[mechanism]
+    assert sorted(len(m.prime) and _curve_degree(m.prime, a.ring) for m in a.modes) == DEGREES[mechanism]
+    assert all(m.dim == 1 for m in a.modes) and a.singular
+    assert all(sp.local_components for sp in a.singular)
+    text = report_text(a)
+    assert "certified by a projection interpolated from slices" in text and "not computed" not in text.split("real answers")[0]
+
+
+@functools.lru_cache(maxsize=None)
+def _analysis(mechanism: str):
+    return analyze(parse_mechanism(mechanism))
+
+
+def _curve_degree(prime, R):
+    from mech.kernel.ideals import std
+    from mech.kernel.projection import variety_degree
+    return variety_degree(std(prime, R), R)
+
+
+@pytest.mark.singular
+@pytest.mark.skipif(not SINGULAR, reason="Singular not installed")
+@pytest.mark.parametrize("mechanism", [WATT_I_B, STEPHENSON])
+def test_six_bar_mode_ideals_against_singular(mechanism):
+    """In Singular, on the hand-written J: each mode's ideal contains J, has dimension 1 and the
+    proved degree, and the modes intersect in J (minAssGTZ of J itself does not finish in 300 s)."""
+    from mech.dsl.printing import poly_str
+    a = _analysis(mechanism)
+    script = ('LIB "primdec.lib";\nring r = 0, (c1,s1,c2,s2,c3,s3,c4,s4,c5,s5), dp;\nideal J = std(ideal('
+              + HAND_J[mechanism] + CIRCLES + "));\n")
+    for k, m in enumerate(a.modes):
+        script += f"ideal P{k} = std(ideal(" + ", ".join(poly_str(g) for g in m.prime) + "));\n"
+        script += f"size(reduce(J, P{k}, 1)); dim(P{k}); mult(P{k});\n"
+    script += "ideal I = intersect(" + ", ".join(f"P{k}" for k in range(len(a.modes))) + ");\n"
+    script += "size(reduce(I, J, 1)) + size(reduce(J, std(I), 1));\n"
+    nums = [int(x) for x in run_singular(script, timeout=300).split()]
+    per = [nums[3 * k:3 * k + 3] for k in range(len(a.modes))]
+    assert all(z == 0 and d == 1 for z, d, _ in per)
+    assert sorted(deg for _, _, deg in per) == DEGREES[mechanism]
+    assert nums[-1] == 0 and len(nums) == 3 * len(a.modes) + 1
 
 
 GEARED_FIVEBAR = "ground O Q 2; bar O A 1; bar Q B 1; bar A C 2; bar B C 2; gear O Q 2"

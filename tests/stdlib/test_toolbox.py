@@ -175,7 +175,7 @@ def test_errors_underline_the_call():
                           "poly d = det(M) + 1;\n         ^~~~~~\n")
     e = error("ring r = 0, (x,y), dp; ideal I = eliminate(x);", MechTypeError)
     assert e.message == "wrong arguments for eliminate: got (poly), expected eliminate(ideal, poly) or " \
-                        "eliminate(ideal, intvec)"
+                        "eliminate(ideal, intvec) or eliminate(module, poly)"
     assert e.format().splitlines()[2] == " " * 33 + "^" + "~" * 11
     assert "expected minor(matrix, int)" in error('ring r = 0, x, dp; minor(x, "a");', MechTypeError).message
     assert "expected factorize(poly, [int])" in error("ring r = 0, x, dp; factorize(ideal(x));").message
