@@ -59,21 +59,36 @@ def _monomial(names: tuple[str, ...], e: tuple[int, ...], short: bool) -> str:
     return "*".join(n if k == 1 else f"{n}^{k}" for n, k in zip(names, e) if k)
 
 
+_texts: dict[int, tuple[Poly, bool, str]] = {}
+"""The last polynomials printed (``id`` → the polynomial, short form, text): a script prints
+the same value again and again (``f;``, ``s = string(f);``); polynomials never change."""
+_monomials: dict[tuple[tuple[str, ...], bool], dict[tuple[int, ...], str]] = {}
+
+
 def poly_str(p: Poly) -> str:
     """A polynomial in Singular's format, terms from the largest down."""
     if not p.terms:
         return "0"
     ring = p.ring
     short = is_short(ring)
+    hit = _texts.get(id(p))
+    if hit is not None and hit[0] is p and hit[1] is short:
+        return hit[2]
     params = bool(field_params(ring.field))
     field, names = ring.field, ring.names
+    plain = not params and not field.characteristic  # QQ: the coefficient's own str
+    monos = _monomials.get((names, short))
+    if monos is None or len(monos) > 4096:
+        monos = _monomials[(names, short)] = {}
     out = []
     for e, c in p.sorted_terms():
-        cs = coeff_str(field, c, short)
+        cs = str(c) if plain else coeff_str(field, c, short)
         if not any(e):
             s = cs
         else:
-            mono = _monomial(names, e, short)
+            mono = monos.get(e)
+            if mono is None:
+                mono = monos[e] = _monomial(names, e, short)
             if cs == "1":
                 s = mono
             elif cs == "-1":
@@ -82,10 +97,14 @@ def poly_str(p: Poly) -> str:
                 s = cs + mono
             else:
                 s = f"{cs}*{mono}"
-        if out and not s.startswith("-"):
+        if out and s[0] != "-":
             out.append("+")
         out.append(s)
-    return "".join(out)
+    text = "".join(out)
+    if len(_texts) > 64:
+        _texts.clear()
+    _texts[id(p)] = (p, short, text)
+    return text
 
 
 def int_str(v: int) -> str:

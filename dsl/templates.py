@@ -173,4 +173,29 @@ def _slot_fn(kind: type, idx: tuple, node: Any) -> Callable[[Any], Any]:
         k = idx[0]
         return lambda it: int(it.lits[k])
     slot = (kind, idx, node)
+    if kind is A.MonomLit:
+        return _monomial_fn(slot)
     return lambda it: it._eval_node(_literal(slot, it.lits))
+
+
+def _monomial_fn(slot: tuple) -> Callable[[Any], Any]:
+    """A monomial literal's closure: its monomial found once per ring (the evaluator's
+    ``_eval_monom`` otherwise, and for every error)."""
+    _, idx, node = slot
+    k, d = idx[0], (idx[1] if len(idx) > 1 else None)
+    last: list = [None, None]  # the ring's polynomial ring and the monomial in it
+
+    def fn(it: Any) -> Any:
+        ring = it.ring
+        lits = it.lits
+        den = 1 if d is None else int(lits[d])
+        if ring is None or den == 0:
+            return it._eval_node(_literal(slot, lits))
+        if last[0] is not ring.poly:
+            m = it._monomial(node.monomial)
+            if m is None:
+                return it._eval_node(_literal(slot, lits))
+            last[0], last[1] = ring.poly, m
+        f = ring.poly.field
+        return last[1] * (f(int(lits[k])) / f(den))
+    return fn

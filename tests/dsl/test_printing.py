@@ -86,3 +86,11 @@ def test_poly_str_directly():
     R = PolyRing(QQ, ["x", "y"], MonomialOrder.simple("dp", 2))
     x, y = R.gens()
     assert poly_str(x**2 * y - y / 3) == "x2y-1/3y"
+
+
+def test_a_polynomial_printed_again_follows_the_short_setting():
+    # poly_str keeps the last texts: `short` and the ring's ordering still decide each time
+    out = run("ring r=0,(x,y),dp; poly f = 3x2y-1/2; f; short = 0; f; string(f); short = 1; f;\n"
+              "ring s = 0,(x,y),ds; poly f = imap(r, f); f; ring t = 0,(x,yy),dp; poly f = 3x2*yy; f; f;")
+    assert out.split() == ["3x2y-1/2", "3*x^2*y-1/2", "3*x^2*y-1/2", "3x2y-1/2", "-1/2+3x2y",
+                           "3*x^2*yy", "3*x^2*yy"]

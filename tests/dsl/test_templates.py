@@ -30,6 +30,12 @@ SCRIPTS = [  # the error comes after numbers of other lengths than the template'
     "int k = 1;\nfor (k = 1; k < 3; k++) { if (k > 5) { continue; } }\nfor (k = 11; k < 13; k++) { k; }\n"
     "{ k = 1; }\n{ k = 23; }\nk;\nif (k) { continue; }\n",
     "ring r = 0,(x(1..3)),dp;\npoly f = x(1) + x(2);\npoly g = x(2) + x(3);\nf; g;\ng = x(4);\n",
+    # monomial literals: their monomial found once per ring, the others' and the errors' as alone
+    "ring r = 0,(x,y),dp; poly f;\nf = 3x2y - 1/2y;\nf = 17x2y - 5/3y;\nf;\nring s = 7,(y,x),ds; poly f;\n"
+    "f = 3x2y - 1/2y;\nf = 17x2y - 5/3y;\nf;\nring t = (0,a),(x,y),dp; poly f;\nf = 3x2y - 1/2y;\n"
+    "f = 3ax2 - 1/2y;\nf = 17ax2 - 5/3y;\nf;\nf = 2ax2 - 1/0y;\n",
+    "ring r = 0,(x,y),dp; poly f;\nf = 3x2 - 1/2y;\nf = 17x2 - 5/3y;\nring s = 0,(z,y),dp; poly f;\n"
+    "f = 3x2 - 1/2y;\n",
 ]
 
 
