@@ -127,6 +127,7 @@ def _expr(node: A.Expr, depth: int) -> Fn:
 
 def _name(node: A.Name) -> Fn:
     name = node.id
+    last: list = [None, None]  # a ring's polynomial ring and its variable of this name
 
     def fn(it: Any) -> Any:
         var = it.lookup(name)
@@ -134,9 +135,12 @@ def _name(node: A.Name) -> Fn:
             return var.value
         ring = it.ring
         if ring is not None:
+            if last[0] is ring.poly:
+                return last[1]
             i = ring.var_index(name)
             if i is not None:
-                return ring.poly.gen(i)
+                last[0], last[1] = ring.poly, ring.poly.gen(i)
+                return last[1]
         return it._eval_node(node)  # parameters, system variables, monomials, errors
     return fn
 

@@ -30,6 +30,8 @@ class Statements:
             fn = getattr(stmt, "_fn", None) if self.compiled else None
             if fn is not None:
                 fn(self)
+            elif type(stmt) is A.Relit:  # most lines of a long script
+                self._exec_relit(stmt)
             else:
                 self._run_cold(stmt)
         except SIGNALS:
