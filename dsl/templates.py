@@ -17,6 +17,7 @@ import re
 import threading
 from typing import Any, Callable, Optional
 
+from ..kernel import Poly
 from . import ast as A
 from . import compiled
 
@@ -49,6 +50,7 @@ class Template:
         self.spans = spans          # (start, end) column of each number in the template's line
         self.slots = slots          # id of a literal node -> (kind, its numbers' indices, node)
         self.holders = holders      # ids of the nodes with a literal node below them (or being one)
+        self.fields: dict[int, list[str]] = {}  # id of a holder -> its attributes holding literals
 
     def compile(self) -> None:
         """The tree's closure with the literals read from ``it.lits`` (kept on the tree)."""
@@ -66,13 +68,25 @@ class Template:
             slot = self.slots.get(key)
             if slot is not None:
                 return _literal(slot, lits)
+            fields = self.fields.get(key)
+            if fields is None:  # the attributes with literals below them, found once
+                fields = self.fields[key] = [k for k, v in node.__dict__.items()
+                                             if k != "_fn" and k != "_seen" and self._holds(v)]
+            state = {k: v for k, v in node.__dict__.items() if k != "_fn" and k != "_seen"}
+            for k in fields:
+                state[k] = self.actual(state[k], lits)
             new = object.__new__(type(node))
-            new.__dict__.update({k: self.actual(v, lits) for k, v in node.__dict__.items()
-                                 if k != "_fn" and k != "_seen"})
+            new.__dict__.update(state)
             return new
         if isinstance(node, list):
             return [self.actual(v, lits) for v in node]
         return node
+
+    def _holds(self, value: Any) -> bool:
+        """Whether a node's attribute value has a literal in it (is or holds a holder)."""
+        if isinstance(value, A.Node):
+            return id(value) in self.holders
+        return isinstance(value, list) and any(self._holds(v) for v in value)
 
     def move(self, pos: A.Pos, dline: int, lits: list[str]) -> A.Pos:
         """A position on the template's line as a position on the line ``dline`` further of the
@@ -199,6 +213,9 @@ def _monomial_fn(slot: tuple) -> Callable[[Any], Any]:
             if m is None:
                 return it._eval_node(_literal(slot, lits))
             last[0], last[1] = ring.poly, m
-        f = ring.poly.field
-        return last[1] * (f(int(lits[k])) / f(den))
+        field = ring.poly.field
+        c = field(int(lits[k])) / field(den)
+        if c == 0:
+            return ring.poly.zero()
+        return Poly(ring.poly, {e: v * c for e, v in last[1].terms.items()})  # the monomial times c
     return fn
