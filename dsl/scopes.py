@@ -75,7 +75,7 @@ class Scopes:
 
     def _redefining(self, name: str) -> None:
         """Singular's warning ``// ** redefining NAME (LINE) WHERE``."""
-        if "redefine" not in self.options or self.stmt is None:
+        if "redefine" not in self.options or self.stmt is None or not self.warnings:
             return
         pos = self.stmt.pos
         if self.line_shift:
