@@ -24,6 +24,8 @@ NOPOS = Pos(0, 0, 0, 0)
 @dataclass(eq=False)
 class Node:
     pos: Pos = field(default=NOPOS, kw_only=True)
+    _fn = None  # not a field: the closure the interpreter keeps on the instance (a class default, so
+    #            that looking for one on a node without it costs no AttributeError)
 
     def __getstate__(self) -> dict:
         """Without the closure the interpreter keeps on the node (:mod:`~mech.dsl.compiled`)."""
