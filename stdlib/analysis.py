@@ -126,6 +126,7 @@ class Analysis:
     modes_by: str = "minimal primes of J"  # how the modes were found, for the report
     modes_found: bool = True  # False: every strategy of mech.stdlib.modes ran out
     mode_bound: int | None = None  # at most this many modes (Galois orbits of a slice)
+    slice_orbits: list[int] | None = None  # the sizes of those orbits (each on one mode)
     mode_degrees: list[int] | None = None  # the modes' degrees, proved by a projection (mech.stdlib.modes)
     equidimensional: bool = True
     embedded: list[Embedded] | None = field(default_factory=list)  # None: not computed
