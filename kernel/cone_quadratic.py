@@ -26,16 +26,12 @@ def quadratic_cone(centred: Sequence[Poly], ring: PolyRing) -> list[Poly] | None
     """Generators of the ideal of lowest forms at the origin of ``centred`` (polynomials of
     ``ring`` over a field, vanishing at the origin) when the origin is smooth or of corank one
     with a quadratic lowest form (see the module); None otherwise."""
-    n = ring.nvars
     if not ring.field.one + ring.field.one:
         return None  # characteristic 2: quadratic forms have no polar form
     pivots: list[tuple[int, list[Any], dict[int, Any]]] = []  # (pivot column, row, combination of generators)
     left: list[Poly] = []
     for j, g in enumerate(centred):
-        row = [ring.field.zero] * n
-        for e, c in g.terms.items():
-            if sum(e) == 1:
-                row[e.index(1)] = c
+        row = _row(g, ring)
         combo = {j: ring.field.one}
         for col, prow, pcombo in pivots:
             if row[col]:
@@ -102,3 +98,29 @@ def _nonzero_on(q: Poly, basis: list[list[Any]], ring: PolyRing) -> bool:
             if value:
                 return True
     return False
+
+
+def linear_rank(polys: Sequence[Poly], ring: PolyRing) -> int:
+    """The rank of the linear parts of ``polys`` (the Jacobian's rank at the origin)."""
+    rank = 0
+    pivots: list[tuple[int, list[Any]]] = []
+    for row in (_row(g, ring) for g in polys):
+        for col, prow in pivots:
+            if row[col]:
+                f = row[col]
+                row = [a - f * b for a, b in zip(row, prow)]
+        col = next((k for k, a in enumerate(row) if a), None)
+        if col is not None:
+            inv = ring.field.one / row[col]
+            pivots.append((col, [a * inv for a in row]))
+            rank += 1
+    return rank
+
+
+def _row(g: Poly, ring: PolyRing) -> list[Any]:
+    """The coefficients of the linear part of ``g``."""
+    row = [ring.field.zero] * ring.nvars
+    for e, c in g.terms.items():
+        if sum(e) == 1:
+            row[e.index(1)] = c
+    return row

@@ -34,18 +34,18 @@ from mech.dsl.limits import MechLimitError, remaining, within
 from mech.kernel import Poly, PolyRing
 from mech.kernel.factor import factorize
 from mech.kernel.collector import relaxed
+from mech.kernel.cone_quadratic import linear_rank
 from mech.kernel.groebner import normal_forms
 from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, intersect, is_subset, move, saturate_poly,
                                 std)
-from mech.kernel.local import (AlgebraicPoint, classify_algebraic_point, jacobian_rank, primitive_element,
-                               shift_to_origin)
+from mech.kernel.local import (AlgebraicPoint, classify_algebraic_point, primitive_element)
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
 from mech.stdlib.analysis_finite import finite_analysis
 from mech.stdlib.analysis_linear import (LinearReduction, component_cone, cone_at_point, cone_over_point, linear_reduction,
-                                         min_ass_reduced, tangent_cone_over_reduced)
+                                         min_ass_reduced, tangent_cone_over_reduced, translate)
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.modes import embedded_components, motion_modes
 from mech.stdlib.realpoints import count_real_roots, has_real_points, linear_point
@@ -395,14 +395,15 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
         for k, P in enumerate(primes):
             st.step(k, f"singular configuration {k + 1} of {len(primes)}")
             d = dimension(P, R)
-            point = linear_point(P)
+            point = _rational_point(P) or linear_point(P)
             sp = SingularPoint(P, tuple(point) if point else None, d, True if point else None)
             if point is None and d == 0:  # a Galois orbit of algebraic points: real iff m(t) has a real root
                 ok, sp.algebraic = _timed(a, "real points", REAL_BUDGET, primitive_element, P, R)
                 sp.real = bool(count_real_roots(sp.algebraic.minpoly) > 0) if ok else None
             elif point is None:
                 sp.real = _real(a, P)
-            sp.modes = [i for i, md in enumerate(a.modes, 1) if is_subset(md.prime, P, R)]
+            sp.modes = [i for i, md in enumerate(a.modes, 1) if _on(md.prime, point)] if point else \
+                [i for i, md in enumerate(a.modes, 1) if is_subset(md.prime, P, R)]
             out.append(sp)
             if point is None and (d != 0 or sp.algebraic is None):
                 continue
@@ -413,6 +414,28 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
         e.singular = any(is_subset(sp.prime, e.prime, R) for sp in out)
     a.singular_done = True
     return out
+
+
+def _rational_point(prime: list[Poly]) -> list | None:
+    """The point of a prime whose reduced basis is ``x_i - c_i`` for every variable (as minAssGTZ
+    gives a rational point), read off; None otherwise (:func:`linear_point` decides then)."""
+    ring = prime[0].ring if prime else None
+    if ring is None or len(prime) != ring.nvars:
+        return None
+    point: list = [None] * ring.nvars
+    for g in prime:
+        lm = g.lm()
+        if sum(lm) != 1 or len(g.terms) > 2 or any(sum(e) > 0 and e != lm for e in g.terms):
+            return None
+        i = lm.index(1)
+        point[i] = -g.terms.get(ring.zero_exp, ring.field.zero) / g.terms[lm]
+    return None if any(v is None for v in point) else point
+
+
+def _on(prime: list[Poly], point: Sequence) -> bool:
+    """Whether the rational point lies on ``V(prime)``."""
+    p = [prime[0].ring.field(v) for v in point] if prime else []
+    return all(g.evaluate(p) == 0 for g in prime)
 
 
 @dataclass
@@ -435,7 +458,7 @@ def _local_at(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
         sp.tangent_cone = cone_at_point(variety, lr, sp.point)
     else:  # the kind, components and transition first (cheap), then the cone of J (a local standard basis)
         through = _modes_through(shared.minimal, sp.point)
-        sp.local_components = [shift_to_origin(md.prime, sp.point) for md in through]
+        sp.local_components = [translate(md.prime, sp.point) for md in through]
         sp.kind = _kind_at(sp.local_components, [md.dim for md in through], a.ring)
 
         def cones() -> list[list[Poly]]:
@@ -455,8 +478,7 @@ CONE_BUDGET = 20.0
 def _modes_through(modes: list[Mode], point: tuple) -> list[Mode]:
     """The modes whose variety contains the rational point: their primes centred there are the local
     components (translation keeps a dp basis a dp basis; the reports print reduced bases)."""
-    p = [modes[0].prime[0].ring.field(v) for v in point] if modes else []
-    return [md for md in modes if all(g.evaluate(p) == 0 for g in md.prime)]
+    return [md for md in modes if _on(md.prime, point)]
 
 
 def _kind_at(components: list[list[Poly]], dims: list[int], R: PolyRing) -> str:
@@ -464,7 +486,7 @@ def _kind_at(components: list[list[Poly]], dims: list[int], R: PolyRing) -> str:
     the one component's tangent space (the kernel of its Jacobian at the origin) has its dimension."""
     if len(components) > 1:
         return "components meet"
-    return "regular" if R.nvars - jacobian_rank(components[0], [0] * R.nvars) == dims[0] else "singular"
+    return "regular" if R.nvars - linear_rank(components[0], R) == dims[0] else "singular"
 
 
 def _union_cone(cones: list[list[Poly]]) -> list[Poly]:
@@ -508,8 +530,8 @@ def mode_generators(a: Analysis, i: int) -> list[Poly]:
 
 def _minimal_modes(a: Analysis) -> list[Mode]:
     """The motion modes without the embedded ones (their primes are the minimal primes of J)."""
-    primes = [md.prime for md in a.modes]
-    return [md for md in a.modes if not any(_contains(Q, md.prime, a.ring) for Q in primes if Q is not md.prime)]
+    # a prime contains another prime only if it has a smaller dimension (distinct primes)
+    return [md for md in a.modes if not any(_contains(Q.prime, md.prime, a.ring) for Q in a.modes if Q.dim > md.dim)]
 
 
 def _transition(cones: list[list[Poly]]) -> str:
@@ -534,7 +556,7 @@ def _meet_outside_zero(cones: list[Poly], ring: PolyRing) -> bool:
     """Whether the cones' union of generators (homogeneous) vanishes on a line: for linear forms
     (tangent spaces) whether their rank is below the number of variables, else a positive dimension."""
     if all(g.total_degree() == 1 for g in cones):
-        return jacobian_rank(cones, [0] * ring.nvars) < ring.nvars
+        return linear_rank(cones, ring) < ring.nvars
     return dimension(cones, ring) > 0
 
 
