@@ -45,7 +45,7 @@ from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
 from mech.stdlib.analysis_finite import finite_analysis
 from mech.stdlib.analysis_linear import (LinearReduction, component_cone, cone_at_point, cone_over_point, linear_reduction,
-                                         min_ass_reduced, tangent_cone_over_reduced, translate)
+                                         min_ass_reduced, component_cone_over, translate)
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.modes import embedded_components, motion_modes
 from mech.stdlib.realpoints import count_real_roots, has_real_points, linear_point
@@ -508,7 +508,7 @@ def _algebraic_local(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
                                     lambda _, point: cone_over_point(variety, lr, point))
     sp.kind, sp.tangent_cone, sp.local_components = info.kind, info.tangent_cone, info.components
     comps = info.components
-    sp.transition = _transition([tangent_cone_over_reduced(c, pt) for c in comps] if len(comps) > 1 else [])
+    sp.transition = _transition([component_cone_over(c, pt) for c in comps] if len(comps) > 1 else [])
 
 
 def _no_components(a: Analysis) -> str:

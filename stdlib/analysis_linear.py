@@ -255,22 +255,50 @@ def quadratic_cone_over(centred: Sequence[Poly], point: AlgebraicPoint) -> list[
     """:func:`~mech.kernel.cone_quadratic.quadratic_cone` over ``K = Q[t]/m(t)``: ``centred`` (polynomials
     of ``point.ring``, the points moved to the origin) as polynomials of ``K[x]``, the cone's generators
     back in ``point.ring`` (without ``m(t)``); None where a local standard basis is needed."""
-    ring, n = point.ring, point.ring.nvars - 1
-    K = AlgebraicField(0, ring.names[n], _fmpq_poly(_coeffs(point.minpoly, n)))
-    kring = PolyRing(K, list(ring.names[:n]), MonomialOrder.simple("dp", n))
+    over = _OverK(point)
+    cone = quadratic_cone(over.down(centred), over.kring)
+    return None if cone is None else over.up(cone)
 
-    def down(p: Poly) -> Poly:
-        grouped: dict[tuple, list] = {}
-        for e, c in p.terms.items():
-            coeffs = grouped.setdefault(e[:n], [0] * (e[n] + 1))
-            coeffs.extend([0] * (e[n] + 1 - len(coeffs)))
-            coeffs[e[n]] = c
-        return Poly(kring, {e: v for e, cs in grouped.items() if (v := K.element(_fmpq_poly(cs)))})
-    cone = quadratic_cone([down(g) for g in centred if not _free_of_x(g, n)], kring)
-    if cone is None:
-        return None
-    return [Poly(ring, {e + (k,): ring.field(a)
-                        for e, c in g.terms.items() for k, a in enumerate(c.u.coeffs()) if a}) for g in cone]
+
+def component_cone_over(centred: Sequence[Poly], point: AlgebraicPoint) -> list[Poly]:
+    """:func:`tangent_cone_over_reduced` of a local component over ``K`` (a prime of ``point.ring``
+    containing ``m(t)``, through the origin): at a smooth point (the linear parts over K of rank
+    ``n - dim``) the linear parts, as :func:`component_cone` over Q; the same reduced basis."""
+    over = _OverK(point)
+    polys = over.down(centred)
+    if over.kring.nvars - linear_rank(polys, over.kring) == dimension(list(centred), point.ring):
+        linear = [Poly(over.kring, {e: c for e, c in g.terms.items() if sum(e) == 1}) for g in polys]
+        return groebner(over.up([g for g in linear if not g.is_zero()]) + [point.minpoly], point.ring)
+    return tangent_cone_over_reduced(centred, point)
+
+
+class _OverK:
+    """Polynomials of ``point.ring = Q[x, t]`` as polynomials of ``K[x]``, ``K = Q[t]/m(t)``, and back."""
+
+    def __init__(self, point: AlgebraicPoint) -> None:
+        ring = self.ring = point.ring
+        self.n = n = ring.nvars - 1
+        self.K = AlgebraicField(0, ring.names[n], _fmpq_poly(_coeffs(point.minpoly, n)))
+        self.kring = PolyRing(self.K, list(ring.names[:n]), MonomialOrder.simple("dp", n))
+
+    def down(self, polys: Sequence[Poly]) -> list[Poly]:
+        """The polynomials that involve ``x`` (``m(t)`` and its multiples become 0)."""
+        n, out = self.n, []
+        for p in polys:
+            if _free_of_x(p, n):
+                continue
+            grouped: dict[tuple, list] = {}
+            for e, c in p.terms.items():
+                coeffs = grouped.setdefault(e[:n], [0] * (e[n] + 1))
+                coeffs.extend([0] * (e[n] + 1 - len(coeffs)))
+                coeffs[e[n]] = c
+            out.append(Poly(self.kring, {e: v for e, cs in grouped.items() if (v := self.K.element(_fmpq_poly(cs)))}))
+        return out
+
+    def up(self, polys: Sequence[Poly]) -> list[Poly]:
+        field = self.ring.field
+        return [Poly(self.ring, {e + (k,): field(a) for e, c in g.terms.items() for k, a in enumerate(c.u.coeffs()) if a})
+                for g in polys]
 
 
 def _fmpq_poly(coeffs: list) -> Any:

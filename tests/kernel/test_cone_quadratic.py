@@ -8,7 +8,7 @@ from fractions import Fraction
 import pytest
 
 from mech.kernel.coeffs import QQ
-from mech.kernel.cone_quadratic import quadratic_cone
+from mech.kernel.cone_quadratic import linear_rank, quadratic_cone
 from mech.kernel.ideals import ideals_equal
 from mech.kernel.local import tangent_cone
 from mech.kernel.order import Block, MonomialOrder
@@ -63,3 +63,9 @@ def test_random_corank_one_points_agree_with_the_standard_basis():
         done += 1
         assert ideals_equal(cone, tangent_cone(gens, S), S)
     assert done >= 10
+
+
+def test_linear_rank_is_the_jacobian_rank_at_the_origin():
+    from mech.kernel.local import jacobian_rank
+    for gens in (["x+y^2", "2*x+z^3", "y-z+x*y"], ["x^2", "y*z"], ["x-y", "2*x-2*y+z^2"]):
+        assert linear_rank(polys(*gens), R) == jacobian_rank(polys(*gens), [0, 0, 0])

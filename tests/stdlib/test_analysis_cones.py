@@ -12,7 +12,7 @@ from mech.kernel.local import centre_at, primitive_element, shift_to_origin, tan
 from mech.kernel.order import Block, MonomialOrder
 from mech.kernel.poly import PolyRing
 from mech.stdlib.analysis import analyze
-from mech.stdlib.analysis_linear import quadratic_cone_over
+from mech.stdlib.analysis_linear import component_cone_over, quadratic_cone_over, tangent_cone_over_reduced, translate
 from mech.stdlib.mechanism import parse_mechanism
 from tests.util import SINGULAR, ideal_blocks, parse_poly, run_singular
 
@@ -28,6 +28,25 @@ def test_conjugate_points_over_their_field():
     cone = quadratic_cone_over(centred, pt)
     assert cone is not None
     assert ideals_equal(cone + [pt.minpoly], tangent_cone_over(centred, pt), pt.ring)
+
+
+def test_translation_by_the_binomial_theorem():
+    S = PolyRing(QQ, ["x", "y", "z"], MonomialOrder([Block("dp", 3)]))
+    gens = [parse_poly(S, t) for t in ["x^3*y-2*z^2+x*y*z-1", "y^4+1/2*x", "z"]]
+    point = [QQ(2), QQ(0), QQ(-1) / QQ(3)]
+    assert translate(gens, point) == shift_to_origin(gens, point)
+
+
+def test_smooth_components_over_their_field():
+    """Primes over K = Q(sqrt 2) through the origin: at a smooth point the cone is the tangent line (linear
+    algebra), at the cusp y^2 = t x^3 a local standard basis; the same ideals as tangent_cone_over."""
+    S = PolyRing(QQ, ["x", "y"], MonomialOrder([Block("dp", 2)]))
+    x, y = S.gens()
+    pt = primitive_element([x ** 2 - S.const(2), y], S)
+    X, Y, t = pt.ring.gens()
+    m = pt.minpoly
+    for comp in ([Y - X * t, m], [Y - X ** 2 - X * t, m], [X * Y + Y ** 2 - X, m], [Y ** 2 - t * X ** 3, m]):
+        assert ideals_equal(component_cone_over(comp, pt), tangent_cone_over_reduced(comp, pt), pt.ring)
 
 
 WATT = "ground O A 1; fix G 2 0; bar O B 1; bar B C 1; body A C 1 0 E 0 1; bar E F 1; bar F G 1"
