@@ -270,3 +270,11 @@ def test_slice_orbits_order_the_strategies(monkeypatch, mechanism, orbits, short
     assert (budgets == [2]) if short_try else (budgets == [])
     assert a.modes_by == ("minimal primes of J" if short_try
                           else "minimal primes of J, certified by a projection interpolated from slices")
+
+
+def test_small_rings_try_min_ass_first():
+    """A kite (6 variables): the short minAssGTZ try runs before the slice, and finds its two modes."""
+    from mech.stdlib import modes
+    a = analyze(parse_mechanism("ground O A 1; bar O B 1; bar B C 2; bar C A 2"))
+    assert a.ring.nvars <= modes.SMALL and a.slice_orbits is None and len(a.modes) == 2
+    assert a.modes_by == "minimal primes of J"
