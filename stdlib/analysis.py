@@ -34,21 +34,22 @@ from mech.dsl.limits import MechLimitError, remaining, within
 from mech.kernel import Poly, PolyRing
 from mech.kernel.factor import factorize
 from mech.kernel.collector import relaxed
+from mech.kernel.cone_quadratic import linear_rank
 from mech.kernel.groebner import normal_forms
 from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, intersect, is_subset, move, saturate_poly,
                                 std)
-from mech.kernel.local import (AlgebraicPoint, classify_algebraic_point, jacobian_rank, primitive_element,
-                               shift_to_origin, tangent_cone)
+from mech.kernel.errors import DomainError
+from mech.kernel.local import AlgebraicPoint, centre_at, local_components_over, primitive_element
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
 from mech.stdlib.analysis_finite import finite_analysis
-from mech.stdlib.analysis_linear import (LinearReduction, cone_at_point, cone_over_point, linear_reduction, min_ass_reduced,
-                                         tangent_cone_over_reduced, tangent_cone_reduced)
+from mech.stdlib.analysis_linear import (LinearReduction, component_cone, cone_at_point, cone_over_point, linear_reduction,
+                                         min_ass_reduced, component_cone_over, tangent_dim_over, translate)
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.modes import embedded_components, motion_modes
-from mech.stdlib.realpoints import has_real_points, linear_point
+from mech.stdlib.realpoints import count_real_roots, has_real_points, linear_point
 
 
 # ---------------------------------------------------------------- results
@@ -126,6 +127,7 @@ class Analysis:
     modes_by: str = "minimal primes of J"  # how the modes were found, for the report
     modes_found: bool = True  # False: every strategy of mech.stdlib.modes ran out
     mode_bound: int | None = None  # at most this many modes (Galois orbits of a slice)
+    slice_orbits: list[int] | None = None  # the sizes of those orbits (each on one mode)
     mode_degrees: list[int] | None = None  # the modes' degrees, proved by a projection (mech.stdlib.modes)
     equidimensional: bool = True
     embedded: list[Embedded] | None = field(default_factory=list)  # None: not computed
@@ -387,20 +389,26 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
     if not ok:
         a.singular_done = True
         return []
-    variety = _variety(a)
-    lr = linear_reduction(variety, R)  # shared by the points: their cones in the ring without linear variables
+    shared = _Shared(_variety(a), None, _minimal_modes(a) if a.decomposed else [])
+    shared.lr = linear_reduction(shared.variety, R)  # the points' cones in the ring without linear variables
     out = a.singular = []
     with stage("local analysis", total=len(primes)) as st:
         for k, P in enumerate(primes):
             st.step(k, f"singular configuration {k + 1} of {len(primes)}")
             d = dimension(P, R)
-            point = linear_point(P)
-            sp = SingularPoint(P, tuple(point) if point else None, d, True if point else _real(a, P))
-            sp.modes = [i for i, md in enumerate(a.modes, 1) if is_subset(md.prime, P, R)]
+            point = _rational_point(P) or linear_point(P)
+            sp = SingularPoint(P, tuple(point) if point else None, d, True if point else None)
+            if point is None and d == 0:  # a Galois orbit of algebraic points: real iff m(t) has a real root
+                ok, sp.algebraic = _timed(a, "real points", REAL_BUDGET, primitive_element, P, R)
+                sp.real = bool(count_real_roots(sp.algebraic.minpoly) > 0) if ok else None
+            elif point is None:
+                sp.real = _real(a, P)
+            sp.modes = [i for i, md in enumerate(a.modes, 1) if _on(md.prime, point)] if point else \
+                [i for i, md in enumerate(a.modes, 1) if is_subset(md.prime, P, R)]
             out.append(sp)
-            if point is None and d != 0:
+            if point is None and (d != 0 or sp.algebraic is None):
                 continue
-            ok, _ = _timed(a, f"local analysis at q{k + 1}", POINT_BUDGET, _local_at, a, sp, variety, lr)
+            ok, _ = _timed(a, f"local analysis at q{k + 1}", POINT_BUDGET, _local_at, a, sp, shared)
             if not ok:
                 sp.kind = "not classified (its local analysis ran out of its budget)"
     for e in a.embedded or []:
@@ -409,19 +417,56 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
     return out
 
 
-def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly], lr: LinearReduction | None) -> None:
+def _rational_point(prime: list[Poly]) -> list | None:
+    """The point of a prime whose reduced basis is ``x_i - c_i`` for every variable (as minAssGTZ
+    gives a rational point), read off; None otherwise (:func:`linear_point` decides then)."""
+    ring = prime[0].ring if prime else None
+    if ring is None or len(prime) != ring.nvars:
+        return None
+    point: list = [None] * ring.nvars
+    for g in prime:
+        lm = g.lm()
+        if sum(lm) != 1 or len(g.terms) > 2 or any(sum(e) > 0 and e != lm for e in g.terms):
+            return None
+        i = lm.index(1)
+        point[i] = -g.terms.get(ring.zero_exp, ring.field.zero) / g.terms[lm]
+    return None if any(v is None for v in point) else point
+
+
+def _on(prime: list[Poly], point: Sequence) -> bool:
+    """Whether the rational point lies on ``V(prime)``."""
+    p = [prime[0].ring.field(v) for v in point] if prime else []
+    return all(g.evaluate(p) == 0 for g in prime)
+
+
+@dataclass
+class _Shared:
+    """What the local analyses of all the singular points share: the variety's generators, their
+    :func:`linear_reduction`, the minimal motion modes (empty without the modes)."""
+
+    variety: list[Poly]
+    lr: LinearReduction | None
+    minimal: list[Mode]
+
+
+def _local_at(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
     """Step 4 at one singular configuration that is a point (rational or algebraic)."""
+    variety, lr = shared.variety, shared.lr
     if sp.point is None:
-        _algebraic_local(a, sp, variety, lr)
+        _algebraic_local(a, sp, shared)
     elif not a.decomposed:
         sp.kind = _no_components(a)
         sp.tangent_cone = cone_at_point(variety, lr, sp.point)
     else:  # the kind, components and transition first (cheap), then the cone of J (a local standard basis)
-        sp.local_components = _components_at(a, sp.point)
-        sp.kind = _kind_at(sp.local_components, a.ring)
-        sp.transition = _transition(sp.local_components, a.ring, lambda c: tangent_cone_reduced(c, a.ring))
+        through = _modes_through(shared.minimal, sp.point)
+        sp.local_components = [translate(md.prime, sp.point) for md in through]
+        sp.kind = _kind_at(sp.local_components, [md.dim for md in through], a.ring)
+
+        def cones() -> list[list[Poly]]:
+            return [component_cone(c, md.dim, a.ring) for c, md in zip(sp.local_components, through)]
+        sp.transition = _transition(cones() if len(through) > 1 else [])
         ok, cone = within(CONE_BUDGET, cone_at_point, variety, lr, sp.point, cpu=True)
-        sp.tangent_cone = cone if ok else _union_cone(sp.local_components)
+        sp.tangent_cone = cone if ok else _union_cone(cones())
         sp.cone_note = "" if ok else (f"as a set: the union of the local components' cones (the ideal of lowest "
                                       f"forms ran out of its {CONE_BUDGET:g} s budget)")
 
@@ -431,41 +476,45 @@ def _local_at(a: Analysis, sp: SingularPoint, variety: list[Poly], lr: LinearRed
 CONE_BUDGET = 20.0
 
 
-def _components_at(a: Analysis, point: tuple) -> list[list[Poly]]:
-    """The local components at a rational point: the minimal modes through it, centred there."""
-    R, p = a.ring, [a.ring.field(v) for v in point]
-    return [std(shift_to_origin(list(P), point), R) for P in _minimal_modes(a) if all(g.evaluate(p) == 0 for g in P)]
+def _modes_through(modes: list[Mode], point: tuple) -> list[Mode]:
+    """The modes whose variety contains the rational point: their primes centred there are the local
+    components (translation keeps a dp basis a dp basis; the reports print reduced bases)."""
+    return [md for md in modes if _on(md.prime, point)]
 
 
-def _kind_at(components: list[list[Poly]], R: PolyRing) -> str:
+def _kind_at(components: list[list[Poly]], dims: list[int], R: PolyRing) -> str:
     """Theorem 3 and Definition 3 (``kernel.local.classify_point``'s kind): several components meet, or
     the one component's tangent space (the kernel of its Jacobian at the origin) has its dimension."""
     if len(components) > 1:
         return "components meet"
-    (c,) = components
-    return "regular" if R.nvars - jacobian_rank(c, [0] * R.nvars) == dimension(c, R) else "singular"
+    return "regular" if R.nvars - linear_rank(components[0], R) == dims[0] else "singular"
 
 
-def _union_cone(components: list[list[Poly]]) -> list[Poly]:
+def _union_cone(cones: list[list[Poly]]) -> list[Poly]:
     """The tangent cone as a set, the union of the components' cones (their intersection, in dp)."""
-    cones = [tangent_cone_reduced(c, c[0].ring) for c in components]
     glob = dp_ring(cones[0][0].ring)
     return move(intersect(*(move(c, glob) for c in cones), ring=glob), cones[0][0].ring)
 
 
-def _algebraic_local(a: Analysis, sp: SingularPoint, variety: list[Poly], lr: LinearReduction | None) -> None:
-    """Step 4 at the conjugate points of a zero-dimensional prime that is not a rational point:
-    over ``K = Q[t]/m(t)`` for a primitive element ``t``, with the motion modes (the minimal
-    primes of J over Q) as the starting point of the local components over K."""
-    pt = sp.algebraic = primitive_element(sp.prime, a.ring)
+def _algebraic_local(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
+    """Step 4 at the conjugate points of a zero-dimensional prime that is not a rational point
+    (``sp.algebraic``: a primitive element ``t``): over ``K = Q[t]/m(t)``, with the motion modes
+    (the minimal primes of J over Q) as the starting point of the local components over K."""
+    pt, variety, lr = sp.algebraic, shared.variety, shared.lr
     if not a.decomposed:
         sp.kind = _no_components(a)
         sp.tangent_cone = cone_over_point(variety, lr, pt)
         return
-    info = classify_algebraic_point(variety, pt, _minimal_modes(a), min_ass_reduced,
-                                    lambda _, point: cone_over_point(variety, lr, point))
-    sp.kind, sp.tangent_cone, sp.local_components = info.kind, info.tangent_cone, info.components
-    sp.transition = _transition(info.components, pt.ring, lambda c: tangent_cone_over_reduced(c, pt))
+    # kernel.local.classify_algebraic_point's kind, without the tangent space of the components' union
+    # (their intersection over K: 0.4 s on Watt I-B), which only matters for one component
+    comps = local_components_over(centre_at(variety, pt), pt, [md.prime for md in shared.minimal], min_ass_reduced)
+    if not comps:
+        raise DomainError("no component through the points: primes must be the ideal's minimal primes")
+    sp.local_components = comps
+    sp.kind = "components meet" if len(comps) > 1 else \
+        "regular" if tangent_dim_over(comps[0], pt) == dimension(comps[0], pt.ring) else "singular"
+    sp.tangent_cone = cone_over_point(variety, lr, pt)
+    sp.transition = _transition([component_cone_over(c, pt) for c in comps] if len(comps) > 1 else [])
 
 
 def _no_components(a: Analysis) -> str:
@@ -485,30 +534,36 @@ def mode_generators(a: Analysis, i: int) -> list[Poly]:
     return a.modes[i - 1].prime
 
 
-def _minimal_modes(a: Analysis) -> list[list[Poly]]:
-    """The minimal primes of J: the motion modes' primes without the embedded ones."""
-    primes = [md.prime for md in a.modes]
-    return [P for P in primes if not any(_contains(Q, P, a.ring) for Q in primes if Q is not P)]
+def _minimal_modes(a: Analysis) -> list[Mode]:
+    """The motion modes without the embedded ones (their primes are the minimal primes of J)."""
+    # a prime contains another prime only if it has a smaller dimension (distinct primes)
+    return [md for md in a.modes if not any(_contains(Q.prime, md.prime, a.ring) for Q in a.modes if Q.dim > md.dim)]
 
 
-def _transition(components: list[list[Poly]], R: PolyRing,
-                cone: Callable[[list[Poly]], list[Poly]] | None = None) -> str:
+def _transition(cones: list[list[Poly]]) -> str:
     """Remarks 2 and 3: a regular motion (non-zero velocity) from one local component to
-    another needs a common tangent direction: their tangent cones must meet outside 0
-    (``cone``: the tangent cone function, by default over Q)."""
-    if len(components) < 2:
+    another needs a common tangent direction: their tangent ``cones`` (one per local component;
+    none given when there is one component) must meet outside 0."""
+    if len(cones) < 2:
         return "one local component: no change of motion mode here"
-    cones = [cone(c) if cone else tangent_cone(c, c[0].ring) for c in components]
     shared = []
     glob = dp_ring(cones[0][0].ring)
     for (i, a), (j, b) in itertools.combinations(enumerate(cones, 1), 2):
-        if dimension(move(list(a) + list(b), glob), glob) > 0:
+        if _meet_outside_zero(move(list(a) + list(b), glob), glob):
             shared.append(f"{i} and {j}")
     if not shared:
         return ("the local components meet transversally (their tangent cones share no line): "
                 "a regular motion cannot pass from one motion mode to another here")
     return ("local components " + ", ".join(shared) + " share a tangent direction: a regular "
             "motion may pass between them")
+
+
+def _meet_outside_zero(cones: list[Poly], ring: PolyRing) -> bool:
+    """Whether the cones' union of generators (homogeneous) vanishes on a line: for linear forms
+    (tangent spaces) whether their rank is below the number of variables, else a positive dimension."""
+    if all(g.total_degree() == 1 for g in cones):
+        return linear_rank(cones, ring) < ring.nvars
+    return dimension(cones, ring) > 0
 
 
 def analyze(m: Mechanism) -> Analysis:

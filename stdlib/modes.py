@@ -9,7 +9,9 @@ The strategies (their proofs are in the kernel modules named):
   ``deg V`` points are one Galois orbit proves ``J`` prime (``mech.kernel.slices``); several
   orbits bound the number of modes.
 * ``minimal primes``: ``minAssGTZ`` (``mech.kernel.primdec``), first with a short budget (it
-  finishes at once on small mechanisms).
+  finishes at once on small mechanisms), skipped when the slice found a Galois orbit of
+  :data:`HIGH_DEGREE` points or more on a curve (a mode of high degree: the interpolated
+  projection is the faster route there).
 * ``interpolated projection`` (radical complete intersections of dimension 1): the eliminant of
   a projection to the plane interpolated from slices, its factors certify the primes; their
   ideals are interpolated from points modulo primes and proved over QQ
@@ -63,8 +65,22 @@ def _by_slice(a: Any) -> Optional[Found]:
     orbits = slice_orbits(a.ideal, a.ring)
     if orbits is None:
         return None
-    a.mode_bound = len(orbits)
+    a.mode_bound, a.slice_orbits = len(orbits), orbits
     return [list(a.ideal)] if len(orbits) == 1 else None
+
+
+#: A Galois orbit of this many points on a slice lies on one mode of at least that degree: then the
+#: interpolated projection runs before the short ``minAssGTZ`` try, which does not finish in its 2 s
+#: on such six-bars (Stephenson's orbits 2, 2, 2, 6, 6; Watt I-B's 6, 10: the projection proves their
+#: modes in 1-2 s), while modes of low degree (Watt's eight orbits of 2 points) decompose at once.
+HIGH_DEGREE = 6
+
+
+def _short_min_ass_first(a: Any) -> bool:
+    """Whether the short ``minAssGTZ`` try runs before the projections: unless a slice has shown a
+    mode of high degree on a curve that the interpolated projection takes."""
+    high = a.slice_orbits is not None and max(a.slice_orbits) >= HIGH_DEGREE
+    return not (high and _radical_ci(a) and a.dim == 1)
 
 
 def _by_min_ass(a: Any) -> Optional[Found]:
@@ -105,7 +121,7 @@ def _by_projection(a: Any) -> Optional[Found]:
 #: also stops at the statement's time limit (mech --timeout), with a partial report.
 STRATEGIES: list[Strategy] = [
     Strategy("slice", 10, _radical_ci, _by_slice, "J is prime, certified by a linear slice"),
-    Strategy("minimal primes", 2, lambda a: True, _by_min_ass, "minimal primes of J"),
+    Strategy("minimal primes", 2, _short_min_ass_first, _by_min_ass, "minimal primes of J"),
     Strategy("interpolated projection", 60, lambda a: _radical_ci(a) and a.dim == 1, _by_curve,
              "minimal primes of J, certified by a projection interpolated from slices"),
     Strategy("sparse projection", 30, lambda a: _radical_ci(a) and a.dim > 1, _by_projection,
@@ -116,10 +132,28 @@ STRATEGIES: list[Strategy] = [
 ]
 
 
+#: Up to this many variables (one loop: four-bars, kites) ``minAssGTZ`` finishes in a few tens of
+#: milliseconds, less than the slice takes when it finds several orbits (the kite: 13 ms): its short
+#: try runs first.
+SMALL = 6
+
+
+def _chain(a: Any) -> list[Strategy]:
+    """The strategies that apply, in :data:`STRATEGIES`' order but for small rings (:data:`SMALL`),
+    where the short ``minAssGTZ`` try comes first."""
+    chain = [s for s in STRATEGIES if s.applies(a)]
+    if a.ring.nvars <= SMALL and chain and chain[0].name == "slice":
+        short = next((s for s in chain if s.name == "minimal primes"), None)
+        if short is not None:
+            chain.remove(short)
+            chain.insert(0, short)
+    return chain
+
+
 def motion_modes(a: Any) -> Optional[Found]:
     """The minimal primes of ``a.ideal`` by the first strategy that finds them (``a.modes_by``
     says which, ``a.notes`` what ran out), None when none does."""
-    chain = [s for s in STRATEGIES if s.applies(a)]
+    chain = _chain(a)
     with stage("decomposition", total=len(chain)) as st:
         for k, s in enumerate(chain):
             if not s.applies(a):  # an earlier strategy settled what this one would find
