@@ -24,6 +24,7 @@ from .m2_control import M2Control
 from .m2_local import LocalFraction, local_ring, localized_at
 from .m2_maps import apply_map
 from .m2_modules import FreeModule, columns, with_default_degrees
+from .m2_subquotients import ANY_MODULE, zero_element
 from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
@@ -204,6 +205,8 @@ class M2Interpreter(M2Control, Interpreter):
             return base
         if isinstance(base, FUNCTIONS):
             return Partial(base, k)
+        if base == 0 and type(base) is int and isinstance(k, ANY_MODULE):  # 0_M
+            return zero_element(k)
         if isinstance(base, FreeModule):  # F_i: the i-th basis vector
             return basis_vector(base, to_int(k))
         if hasattr(base, "m2_entry"):  # C_i, C.dd_i of a resolution

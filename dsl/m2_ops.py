@@ -13,6 +13,7 @@ from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, Map, quotient_module, rows, scaled, source_degrees
 from .m2_submodules import Module
+from .m2_subquotients import ANY_MODULE, module_arith
 from .m2_vectors import Vector, vector_arith
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
@@ -134,6 +135,10 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         return not strictly_equal(a, b)
     if isinstance(a, Vector) or isinstance(b, Vector):
         v = vector_arith(op, a, b)
+        if v is not NotImplemented:
+            return v
+    if isinstance(b, ANY_MODULE) and isinstance(a, ANY_MODULE) or op == "*" and isinstance(b, (*ANY_MODULE, FreeModule)):
+        v = module_arith(op, a, b)
         if v is not NotImplemented:
             return v
     if op == ":" and type(a) is int:  # n copies of anything, a symbol too

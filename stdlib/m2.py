@@ -517,7 +517,23 @@ def is_prime(I: Ideal) -> bool:
     """isPrime I: whether I is a prime ideal."""
     _global(I, "isPrime")
     from ..kernel.primdec import is_prime as kernel_is_prime
-    return kernel_is_prime(_lift(I), I.ring)
+    gens = _lift(I)
+    if _zero_divisor_variable(gens, I.ring):
+        return False
+    return kernel_is_prime(gens, I.ring)
+
+
+def _zero_divisor_variable(gens: list[Poly], ring: Any) -> bool:
+    """Whether some variable outside the ideal is a zero divisor modulo it (``I : x != I``), which
+    proves I not prime without decomposing it (a prime ideal is its own quotient by any element
+    outside it)."""
+    from ..kernel.groebner import contains_all, groebner, normal_form
+    from ..kernel.ideals import quotient
+    basis = groebner(gens, ring)
+    for x in ring.gens():
+        if not normal_form(x, basis).is_zero() and not contains_all(basis, quotient(basis, [x], ring)):
+            return True
+    return False
 
 
 @command("isPrimary", dialect="m2")

@@ -86,6 +86,25 @@ def generic_matrix(R: Ring, first: Poly | int, m: int, n: int | None = None) -> 
     return Matrix(R.poly, m, n, [cols[j][i] for i in range(m) for j in range(n)])
 
 
+@command("genericSymmetricMatrix", dialect="m2")
+@in_quotients
+def generic_symmetric_matrix(R: Ring, first: Poly | int, n: int | None = None) -> Matrix:
+    """genericSymmetricMatrix(R, x, n): the symmetric n x n matrix whose upper triangle, row by row,
+    holds R's variables from x on (genericSymmetricMatrix(R, n): from the first variable)."""
+    if n is None:
+        first, n = R.poly.gen(0), first
+    start = _indices(R.poly, first)[0]
+    if start + n * (n + 1) // 2 > R.poly.nvars:
+        raise MechRuntimeError(f"genericSymmetricMatrix: the ring has too few variables for a {n} x {n} matrix")
+    upper = {}
+    k = start
+    for i in range(n):
+        for j in range(i, n):
+            upper[i, j] = upper[j, i] = R.poly.gen(k)
+            k += 1
+    return Matrix(R.poly, n, n, [upper[i, j] for i in range(n) for j in range(n)])
+
+
 @command("monomialCurveIdeal", dialect="m2")
 def monomial_curve_ideal(R: Ring, exps: List) -> Ideal:
     """monomialCurveIdeal(R, {a1, ..., ak}): the ideal of the curve s^d, s^(d-a1)t^a1, ..., t^d

@@ -1,0 +1,95 @@
+"""Submodules of quotients of free modules in the Macaulay2 dialect (``dialect="m2"``): the
+saturation ``saturate(N, J)`` of a submodule (of an image, a subquotient or the submodule an element
+``v`` generates, ``saturate 0_M``), the annihilator of a subquotient, ``ring`` and ``ambient``; the
+values are :mod:`mech.dsl.m2_subquotients`'s."""
+from __future__ import annotations
+
+from typing import Any
+
+from ..dsl.m2_modules import FreeModule
+from ..dsl.m2_submodules import Module, graded_ring
+from ..dsl.m2_subquotients import ModuleElement, Subquotient, make, parts, spans_equal
+from ..dsl.registry import command
+from ..dsl.values import Ideal
+from ..kernel import Poly
+from ..kernel import modules as km
+
+
+def colon(ring: Any, rank: int, N: list[km.Vector], J: list[Poly]) -> list[km.Vector]:
+    """``N : J = {f in R^rank : g f in N for every g in J}``: the first ``rank`` coordinates of the
+    syzygies of ``(g_1 e_j, ..., g_k e_j)`` (j < rank) and N placed in each of the k blocks of R^(rank k)."""
+    k = len(J)
+    cols = [km.vector([J[i] if b == j else ring.zero() for i in range(k) for b in range(rank)])
+            for j in range(rank)]
+    for i in range(k):
+        cols += [{(e, c + i * rank): v for (e, c), v in n.items()} for n in N]
+    syz = km.syzygies(ring, rank * k, cols)
+    return [f for f in ({(e, c): v for (e, c), v in s.items() if c < rank} for s in syz) if f]
+
+
+def _saturated(ring: Any, rank: int, N: list[km.Vector], J: list[Poly]) -> list[km.Vector]:
+    """``N : J^infinity``: quotients by J until they stop growing; minimal generators when homogeneous."""
+    if rank == 1:  # an ideal
+        from .m2 import saturate as saturate_ideal
+        I = Ideal(ring, [km.entries(n, ring, 1)[0] for n in N])
+        return [km.vector([g]) for g in saturate_ideal(I, Ideal(ring, J)).nonzero()]
+    while True:
+        bigger = colon(ring, rank, N, J)
+        if spans_equal(ring, rank, N, bigger):
+            break
+        N = bigger
+    if all(km.is_homogeneous(v, [0] * rank) for v in N):
+        return km.minimal_generators(ring, rank, N, [0] * rank)
+    return N
+
+
+@command("saturate", dialect="m2")
+def saturate_module(N: Module | Subquotient | ModuleElement, J: Ideal | Poly | None = None) -> Any:
+    """saturate(N, J): the saturation N : J^infinity of a submodule N of a module F/R (an image,
+    a subquotient, or the submodule an element generates); without J the ideal of the variables."""
+    if isinstance(N, ModuleElement):
+        F, _, rels = parts(N.module)
+        gens = [km.vector(list(N.entries))]
+    else:
+        F, gens, rels = parts(N)
+        if isinstance(N, Module) and N.kind != "image":
+            return N  # a cokernel is all of F/R
+    ring = graded_ring(F.ring).poly
+    if J is None:
+        J = Ideal(ring, [ring.gen(i) for i in range(ring.nvars)])
+    polys = J.nonzero() if isinstance(J, Ideal) else [J]
+    sat = _saturated(ring, F.rank, [g for g in gens + rels if g], list(polys))
+    if rels:  # drop the generators that are relations
+        spanned = km.ModuleGB(ring, F.rank)
+        spanned.add(rels)
+        sat = [g for g in sat if not spanned.contains(g)]
+    return make(F, sat, rels)
+
+
+@command("annihilator", dialect="m2")
+@command("ann", dialect="m2")
+def annihilator_subquotient(M: Subquotient) -> Ideal:
+    """ann M: the ring elements r with r M = 0 (r g in the relations for every generator g)."""
+    F, gens, rels = parts(M)
+    ring = graded_ring(F.ring).poly
+    from ..kernel.ideals import intersect
+    zero_parts = []
+    for g in gens:
+        syz = km.syzygies(ring, F.rank, [g, *rels])
+        zero_parts.append([Poly(ring, {e: c for (e, k), c in s.items() if k == 0}) for s in syz] or [ring.zero()])
+    polys = intersect(*zero_parts, ring=ring) if zero_parts else [ring.one()]
+    gens_ = [p for p in polys if not p.is_zero()]
+    return Ideal(ring, gens_, is_std=not gens_)
+
+
+@command("ring", dialect="m2")
+def ring_of_subquotient(M: Subquotient | ModuleElement) -> Any:
+    """ring M: the ring of a subquotient module or of a module's element."""
+    return M.ring.owner
+
+
+@command("ambient", dialect="m2")
+def ambient_subquotient(M: Subquotient) -> FreeModule:
+    """ambient M: the free module of which M is a subquotient."""
+    return M.ambient
+
