@@ -12,7 +12,7 @@ from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, Map, quotient_module, rows, scaled, source_degrees
-from .m2_submodules import Module
+from .m2_submodules import Module, divide
 from .m2_subquotients import ANY_MODULE, module_arith
 from .m2_vectors import Vector, vector_arith
 from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
@@ -137,7 +137,7 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         v = vector_arith(op, a, b)
         if v is not NotImplemented:
             return v
-    if isinstance(b, ANY_MODULE) and isinstance(a, ANY_MODULE) or op == "*" and isinstance(b, (*ANY_MODULE, FreeModule)):
+    if isinstance(b, ANY_MODULE) and isinstance(a, ANY_MODULE) or op in ("*", "++") and isinstance(b, (*ANY_MODULE, FreeModule)):
         v = module_arith(op, a, b)
         if v is not NotImplemented:
             return v
@@ -315,6 +315,8 @@ def _floor_div(a: Any, b: Any) -> Any:
         if g.is_zero():
             raise MechRuntimeError("division by 0")
         return _quotient(a, g)
+    if isinstance(a, Matrix) and isinstance(b, Matrix):
+        return divide(a, b)
     raise MechTypeError(f"no operator // for a {typeof(a)} and a {typeof(b)}")
 
 

@@ -165,6 +165,13 @@ def quotient_ring(R: M2Ring, gens: Sequence[Poly]) -> M2Ring:
     return S
 
 
+def exact_over_zz(fn: Any) -> Any:
+    """Mark a command of the dialect as exact on elements of rings over ZZ (it neither divides nor
+    computes a Gröbner basis over QQ; the interpreter refuses the others there)."""
+    fn.zz_ok = True
+    return fn
+
+
 def in_quotients(fn: Any) -> Any:
     """Mark a command of the dialect as correct on elements of quotient rings (the interpreter
     refuses the others there)."""

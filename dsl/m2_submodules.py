@@ -85,6 +85,23 @@ def module(M: "Module | CyclicModule") -> "Module":
     return Module("cokernel", from_columns(F, [km.vector([g]) for g in M.ideal.gens if not g.is_zero()]))
 
 
+def divide(f: Matrix, g: Matrix) -> Map:
+    """``f // g`` for matrices with one target whose columns lie in the image of g: a matrix h with
+    ``g * h == f`` (the coefficients of each column of f in g's columns)."""
+    f, g = as_map(f), as_map(g)
+    if f.nrows != g.nrows or f.ring is not g.ring:
+        raise MechRuntimeError("f // g takes matrices with the same target")
+    graded_ring(f.ring)
+    cols = []
+    for v in columns_of(f):
+        coeffs = km.lift(f.ring, f.nrows, columns_of(g), v) if v else [f.ring.zero()] * g.ncols
+        if coeffs is None:
+            raise MechRuntimeError("f // g: a column of f is not in the image of g (the division with a "
+                                   "remainder is not supported by mech)")
+        cols.append(km.vector(coeffs))
+    return from_columns(g.source, cols, f.source.degrees)
+
+
 @dataclass(frozen=True, eq=False)
 class ChainComplex:
     """A free resolution: ``modules[i]`` is ``C_i``, ``maps[i]`` the differential ``C_(i+1) -> C_i``."""

@@ -5,7 +5,7 @@ quotient of their free module ``F`` by the columns of ``r`` — and the elements
 Every module is taken apart as (F, generators, relations), vectors of F (an image: no relations; a
 cokernel: the basis of F as generators); a result is made back as the simplest of image, cokernel or
 subquotient.  ``r * M``, ``M / N`` (N a submodule of M's ambient: generators of N joined to M's
-relations) and ``==`` (Macaulay2's: the same ambient module, relations and generators modulo them)."""
+relations), ``M ++ N`` and ``==`` (Macaulay2's: the same ambient module, relations and generators modulo them)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -103,7 +103,7 @@ def _scale(v: km.Vector, r: Poly, rank: int) -> km.Vector:
 
 
 def module_arith(op: str, a: Any, b: Any) -> Any:
-    """``r * M`` (M free too), ``M / N`` and ``M == N`` for modules that are not free (NotImplemented
+    """``r * M`` (M free too), ``M / N``, ``M ++ N`` and ``M == N`` for modules that are not free (NotImplemented
     otherwise)."""
     if op == "*" and isinstance(b, (*ANY_MODULE, FreeModule)) and isinstance(a, (Poly, Number, int)):
         F, gens, rels = parts(b)
@@ -111,14 +111,34 @@ def module_arith(op: str, a: Any, b: Any) -> Any:
         r = F.ring.poly.one() * r if type(r) is int or r.ring is not F.ring.poly else r
         return make(F, [_scale(g, r, F.rank) for g in gens], rels)
     if op == "/" and isinstance(a, ANY_MODULE) and isinstance(b, ANY_MODULE):
-        (F, gens, rels), (G, sub, subrels) = parts(a), parts(b)
+        (F, gens, rels), (G, sub, _) = parts(a), parts(b)
         if F != G:
             raise MechRuntimeError("M / N takes a submodule N of M's ambient free module")
         return make(F, gens, sub + rels)
+    if op == "++" and isinstance(a, (*ANY_MODULE, FreeModule)) and isinstance(b, (*ANY_MODULE, FreeModule)):
+        return direct_sum(a, b)
     if op in ("==", "!=") and isinstance(a, ANY_MODULE) and isinstance(b, ANY_MODULE) \
             and not (isinstance(a, Module) and isinstance(b, Module)):
         return same_module(a, b) == (op == "==")
     return NotImplemented
+
+
+def _shifted(v: km.Vector, k: int) -> km.Vector:
+    return {(e, i + k): c for (e, i), c in v.items()}
+
+
+def direct_sum(a: Any, b: Any) -> Any:
+    """``M ++ N``: free modules, or modules with the generators and relations of each in its own
+    summand of the ambient free modules' direct sum."""
+    if isinstance(a, FreeModule) and isinstance(b, FreeModule):
+        if a.ring is not b.ring:
+            raise MechRuntimeError("M ++ N takes modules over one ring")
+        return FreeModule(a.ring, a.degrees + b.degrees)
+    (F, ga, ra), (G, gb, rb) = parts(a), parts(b)
+    if F.ring is not G.ring:
+        raise MechRuntimeError("M ++ N takes modules over one ring")
+    FG = FreeModule(F.ring, F.degrees + G.degrees)
+    return make(FG, ga + [_shifted(g, F.rank) for g in gb], ra + [_shifted(r, F.rank) for r in rb])
 
 
 def zero_element(M: Any) -> ModuleElement:

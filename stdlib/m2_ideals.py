@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..dsl.m2_local import in_local_rings
+from ..dsl.m2_rings import exact_over_zz
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, is_integral, normal, quotient_ring, term_degree,
                              tower_terms)
@@ -32,6 +34,7 @@ def _owner(ring: PolyRing) -> M2Ring:
 # ---------------------------------------------------------------- constructors
 @command("monomialIdeal", dialect="m2")
 @in_quotients
+@exact_over_zz
 def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
     """monomialIdeal(m1, m2, ...) (a list or matrix too): the monomial ideal of their lead
     monomials; monomialIdeal I: of the lead monomials of a Gröbner basis of I (over ZZ: a strong
@@ -52,6 +55,7 @@ def monomial_ideal(ctx, *args: Any) -> MonomialIdeal:
 
 @command("vars", dialect="m2")
 @in_quotients
+@exact_over_zz
 def vars_(R: Ring | int | List | ExprList) -> Any:
     """vars R: the one-row matrix of R's variables; vars n, vars(0..3), vars(0..2, 7): Macaulay2's
     symbols number n (a..z, A..Z, then x0, x1, ...; X1, X2, ... for -1, -2, ...), values of the
@@ -74,6 +78,7 @@ def vars_(R: Ring | int | List | ExprList) -> Any:
 
 @command("genericMatrix", dialect="m2")
 @in_quotients
+@exact_over_zz
 def generic_matrix(R: Ring, first: Poly | int, m: int, n: int | None = None) -> Matrix:
     """genericMatrix(R, x, m, n): the m x n matrix of R's variables from x on, filled by columns
     (genericMatrix(R, m, n): from the first variable)."""
@@ -128,6 +133,7 @@ def monomial_curve_ideal(R: Ring, exps: List) -> Ideal:
 # ---------------------------------------------------------------- generators
 @command("trim", dialect="m2")
 @in_quotients
+@exact_over_zz
 def trim(I: Ideal) -> Ideal:
     """trim I: I on fewer generators, as Macaulay2 trims: the generators (normalized) by increasing
     lead monomial, each kept unless it lies in the ideal of those kept before it."""
@@ -136,6 +142,7 @@ def trim(I: Ideal) -> Ideal:
 
 @command("mingens", dialect="m2")
 @in_quotients
+@exact_over_zz
 def mingens(I: Ideal) -> Matrix:
     """mingens I: the matrix of trim I's generators."""
     J = trim(I)
@@ -144,6 +151,7 @@ def mingens(I: Ideal) -> Matrix:
 
 @command("generators", dialect="m2")
 @in_quotients
+@exact_over_zz
 def generators(ctx, I: Ideal | Ring) -> Any:
     """generators I (gens I): the matrix of I's generators; generators R: R's variables
     (CoefficientRing => QQ or ZZ/p: with those of the rings below, down to it)."""
@@ -161,6 +169,7 @@ generators.m2_options = ("CoefficientRing",)
 
 @command("numgens", dialect="m2")
 @in_quotients
+@exact_over_zz
 def numgens_ring(R: Ring) -> int:
     """numgens R: the number of R's variables."""
     return len(gens(R).items)
@@ -168,6 +177,7 @@ def numgens_ring(R: Ring) -> int:
 
 @command("numcols", dialect="m2")
 @in_quotients
+@exact_over_zz
 def numcols(M: Matrix) -> int:
     """numcols M: the number of columns."""
     return M.ncols
@@ -175,6 +185,7 @@ def numcols(M: Matrix) -> int:
 
 @command("numrows", dialect="m2")
 @in_quotients
+@exact_over_zz
 def numrows(M: Matrix) -> int:
     """numrows M: the number of rows."""
     return M.nrows
@@ -183,6 +194,7 @@ def numrows(M: Matrix) -> int:
 # ---------------------------------------------------------------- polynomials
 @command("support", dialect="m2")
 @in_quotients
+@exact_over_zz
 def support(f: Poly | Ideal) -> List:
     """support f: the variables f involves, in the ring's order of variables."""
     polys = f.gens if isinstance(f, Ideal) else [f]
@@ -193,6 +205,7 @@ def support(f: Poly | Ideal) -> List:
 
 @command("terms", dialect="m2")
 @in_quotients
+@exact_over_zz
 def terms(f: Poly) -> List:
     """terms f: f's terms, from the largest down (in a tower A[x]: monomials in x times elements of A)."""
     split = tower_terms(f)
@@ -203,6 +216,7 @@ def terms(f: Poly) -> List:
 
 @command("terms", dialect="m2")
 @in_quotients
+@exact_over_zz
 def terms_over(k: Any, f: Poly) -> List:
     """terms(k, f): f's terms with k (a ring f's ring is built on) as the coefficient ring."""
     below = k.poly.nvars if isinstance(k, M2Ring) else 0
@@ -222,6 +236,7 @@ def _tower_term(ring: PolyRing, e: tuple[int, ...], c: Poly) -> Poly:
 
 @command("leadTerm", dialect="m2")
 @in_quotients
+@exact_over_zz
 def lead_term(f: Poly | Ideal | Matrix) -> Any:
     """leadTerm f: the largest term (in a tower A[x]: with its whole coefficient in A); leadTerm I:
     the matrix of the lead terms of a Gröbner basis; leadTerm M (one row): the lead term of each entry."""
@@ -241,6 +256,7 @@ def lead_term(f: Poly | Ideal | Matrix) -> Any:
 
 @command("leadMonomial", dialect="m2")
 @in_quotients
+@exact_over_zz
 def lead_monomial(f: Poly) -> Poly:
     """leadMonomial f: the largest monomial (without its coefficient; in a tower A[x]: a monomial in x)."""
     if f.is_zero():
@@ -253,6 +269,7 @@ def lead_monomial(f: Poly) -> Poly:
 
 @command("leadCoefficient", dialect="m2")
 @in_quotients
+@exact_over_zz
 def lead_coefficient(f: Poly) -> Any:
     """leadCoefficient f: the coefficient of the largest term (in a tower A[x]: an element of A)."""
     if f.is_zero():
@@ -265,6 +282,7 @@ def lead_coefficient(f: Poly) -> Any:
 
 @command("degree", dialect="m2")
 @in_quotients
+@exact_over_zz
 def degree_in(x: Poly, f: Poly) -> int:
     """degree(x, f): the largest power of the variable x in f."""
     i = _indices(f.ring, x)[0]
@@ -275,6 +293,7 @@ def degree_in(x: Poly, f: Poly) -> int:
 
 @command("degrees", dialect="m2")
 @in_quotients
+@exact_over_zz
 def degrees(R: Ring) -> List:
     """degrees R: the degree (a list) of each of R's own variables."""
     vecs = degree_vectors(_owner(R.poly))[:len(R.own) or None]
@@ -283,6 +302,7 @@ def degrees(R: Ring) -> List:
 
 @command("isHomogeneous", dialect="m2")
 @in_quotients
+@exact_over_zz
 def is_homogeneous(f: Poly | Ideal) -> bool:
     """isHomogeneous f: whether f (every generator of I) is homogeneous for the ring's degrees."""
     vecs = degree_vectors(_owner(f.ring))
@@ -307,6 +327,7 @@ def _homogenize(p: Poly, i: int, degs: tuple) -> Poly:
 
 @command("homogenize", dialect="m2")
 @in_quotients
+@exact_over_zz
 def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
     """homogenize(f, v): f made homogeneous with the variable v (in R/Q: its normal form, the result
     reduced); homogenize(I, v): the ideal of the homogenized Gröbner basis (a degree order: I's
@@ -329,6 +350,7 @@ def homogenize(f: Poly | Ideal | Matrix, v: Poly) -> Any:
 
 @command("substitute", dialect="m2")
 @in_quotients
+@exact_over_zz
 def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> Any:
     """substitute(f, {x => a, ...}), substitute(f, S): as sub; substitute(f, matrix {{a, b, ...}}):
     the variables replaced by a, b, ..."""
@@ -348,6 +370,8 @@ def substitute(ctx, f: Poly | Ideal | Matrix, where: List | Ring | Matrix) -> An
 
 @command("ring", dialect="m2")
 @in_quotients
+@exact_over_zz
+@in_local_rings
 def ring(x: Poly | Ideal | Matrix | Number) -> Ring:
     """ring x: the ring of x."""
     return _owner(x.ring)
@@ -356,6 +380,7 @@ def ring(x: Poly | Ideal | Matrix | Number) -> Ring:
 # ---------------------------------------------------------------- ring maps
 @command("map", dialect="m2")
 @in_quotients
+@exact_over_zz
 def map_(ctx, target: Ring, source: Ring, images: List | Matrix | None = None) -> RingMap:
     """map(S, R, {a, b, ...}): the ring map R -> S sending R's variables to a, b, ... (a tower R
     given images of its own variables only: its coefficient variables to themselves); map(S, R):
@@ -491,6 +516,7 @@ def _sylvester(f: Poly, g: Poly, i: int) -> list[list[Poly]]:
 
 
 @command("sylvesterMatrix", dialect="m2")
+@exact_over_zz
 def sylvester_matrix(f: Poly, g: Poly, x: Poly) -> Matrix:
     """sylvesterMatrix(f, g, x): the Sylvester matrix of f and g in the variable x."""
     rows = _sylvester(f, g, _indices(f.ring, x)[0])
@@ -500,6 +526,7 @@ def sylvester_matrix(f: Poly, g: Poly, x: Poly) -> Matrix:
 
 
 @command("resultant", dialect="m2")
+@exact_over_zz
 def resultant(f: Poly, g: Poly, x: Poly) -> Poly:
     """resultant(f, g, x): the resultant of f and g in the variable x."""
     from ..kernel import matrix as KM
@@ -510,6 +537,7 @@ def resultant(f: Poly, g: Poly, x: Poly) -> Poly:
 
 
 @command("discriminant", dialect="m2")
+@exact_over_zz
 def discriminant(f: Poly, x: Poly) -> Poly:
     """discriminant(f, x): resultant(f, f', x) divided by f's lead coefficient in x (Macaulay2's sign)."""
     i = _indices(f.ring, x)[0]
@@ -583,12 +611,14 @@ def select_in_subring(i: int, M: Matrix) -> Matrix:
 
 # ---------------------------------------------------------------- rings and maps as values
 @command("target", dialect="m2")
+@exact_over_zz
 def target(f: RingMap) -> Ring:
     """target f: the ring a map goes to."""
     return f.target
 
 
 @command("source", dialect="m2")
+@exact_over_zz
 def source(f: RingMap) -> Ring:
     """source f: the ring a map comes from."""
     return f.source
@@ -596,6 +626,7 @@ def source(f: RingMap) -> Ring:
 
 @command("coefficientRing", dialect="m2")
 @in_quotients
+@exact_over_zz
 def coefficient_ring(R: Ring) -> Any:
     """coefficientRing R: the ring R's variables are over (QQ, ZZ/p, or the ring below in a tower)."""
     return _owner(R.poly).ambient().base
@@ -603,6 +634,7 @@ def coefficient_ring(R: Ring) -> Any:
 
 @command("baseName", dialect="m2")
 @in_quotients
+@exact_over_zz
 def base_name(x: Any) -> Any:
     """baseName x: the symbol of a variable (a symbol itself)."""
     from ..dsl.m2_values import Symbol
@@ -614,6 +646,7 @@ def base_name(x: Any) -> Any:
 
 @command("matrix", dialect="m2")
 @in_quotients
+@exact_over_zz
 def matrix_of_map(f: RingMap) -> Matrix:
     """matrix f: the one-row matrix of the images of the source's variables."""
     return Matrix(f.target.poly, 1, len(f.images), list(f.images))

@@ -1,6 +1,7 @@
 """The LocalRings package in the Macaulay2 dialect: ``localRing(R, P)`` (also ``R_P``),
 ``promote``, ``liftUp``, ``isWellDefined``, ``length(R_P^1/I)``, and which commands are right on
-ideals of a local ring (values and arithmetic: :mod:`mech.dsl.m2_local`)."""
+ideals of a local ring (marked by :func:`~mech.dsl.m2_local.in_local_rings` where they are defined;
+values and arithmetic: :mod:`mech.dsl.m2_local`)."""
 from __future__ import annotations
 
 from typing import Any
@@ -8,11 +9,10 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_local import LocalFraction, in_local_rings, local_ring, localized_at, to_global, to_local
 from ..dsl.m2_modules import CyclicModule, FreeModule
-from ..dsl.m2_rings import M2Ring, in_quotients, integers, normal
+from ..dsl.m2_rings import M2Ring, in_quotients, integers, normal, exact_over_zz
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Matrix
 from ..kernel import Poly
-from . import m2, m2_ideals, m2_lists
 
 
 @command("localRing", dialect="m2")
@@ -36,6 +36,7 @@ def _move(v: Any, ring: Any, to: Any) -> Any:
 
 @command("promote", dialect="m2")
 @in_local_rings
+@exact_over_zz
 def promote(v: Any, S: M2Ring) -> Any:
     """promote(I, R_P): an element, ideal or matrix of R in its local ring R_P."""
     P = localized_at(S)
@@ -83,6 +84,7 @@ def ring_of_module(M: CyclicModule | FreeModule) -> M2Ring:
 
 @command("numerator", dialect="m2")
 @in_local_rings
+@exact_over_zz
 def numerator(f: LocalFraction | Poly) -> Poly:
     """numerator f: the numerator of an element of a local ring (in lowest terms)."""
     return f.num if isinstance(f, LocalFraction) else f
@@ -90,6 +92,7 @@ def numerator(f: LocalFraction | Poly) -> Poly:
 
 @command("denominator", dialect="m2")
 @in_local_rings
+@exact_over_zz
 def denominator(f: LocalFraction | Poly) -> Poly:
     """denominator f: the denominator of an element of a local ring (in lowest terms)."""
     return f.den if isinstance(f, LocalFraction) else f.ring.one()
@@ -120,15 +123,6 @@ def length(M: CyclicModule) -> int:
         return local_length([to_global(g, S) for g in M.ideal.nonzero()], list(P.nonzero()), S.info["over"].poly)
     except NotSupported as e:
         raise MechRuntimeError(str(e)) from None
-
-
-#: commands right on ideals of a local ring as computed in R (localization commutes with them), or
-#: that do not compute in the ring
-for _f in (m2.ideal, m2.matrix, m2_ideals.ring, m2.quotient_cmd, m2.saturate, m2.intersect, m2.use, m2_lists.is_subset, m2_lists.print_,
-           m2_lists.to_string_cmd, m2_lists.assert_, m2_lists.apply, m2_lists.scan, m2_lists.select,
-           m2_lists.any_, m2_lists.all_, m2_lists.first, m2_lists.last, m2_lists.length, m2_lists.to_list,
-           m2_lists.error):
-    _f.local_ok = True
 
 
 @command("hilbertSamuelFunction", dialect="m2")

@@ -1,16 +1,17 @@
 """Submodules of quotients of free modules in the Macaulay2 dialect (``dialect="m2"``): the
 saturation ``saturate(N, J)`` of a submodule (of an image, a subquotient or the submodule an element
-``v`` generates, ``saturate 0_M``), the annihilator of a subquotient, ``ring`` and ``ambient``; the
-values are :mod:`mech.dsl.m2_subquotients`'s."""
+``v`` generates, ``saturate 0_M``), the quotient ``N : J`` (``quotient(N, J)``) by an ideal or element J, ``quotient(f, g)`` of matrices (``f // g``), the annihilator of a
+subquotient, ``ring`` and ``ambient``; the values are :mod:`mech.dsl.m2_subquotients`'s."""
 from __future__ import annotations
 
 from typing import Any
 
 from ..dsl.m2_modules import FreeModule
-from ..dsl.m2_submodules import Module, graded_ring
+from ..dsl.m2_modules import Map
+from ..dsl.m2_submodules import Module, divide, graded_ring
 from ..dsl.m2_subquotients import ModuleElement, Subquotient, make, parts, spans_equal
 from ..dsl.registry import command
-from ..dsl.values import Ideal
+from ..dsl.values import Ideal, Matrix
 from ..kernel import Poly
 from ..kernel import modules as km
 
@@ -59,11 +60,47 @@ def saturate_module(N: Module | Subquotient | ModuleElement, J: Ideal | Poly | N
         J = Ideal(ring, [ring.gen(i) for i in range(ring.nvars)])
     polys = J.nonzero() if isinstance(J, Ideal) else [J]
     sat = _saturated(ring, F.rank, [g for g in gens + rels if g], list(polys))
-    if rels:  # drop the generators that are relations
-        spanned = km.ModuleGB(ring, F.rank)
-        spanned.add(rels)
-        sat = [g for g in sat if not spanned.contains(g)]
-    return make(F, sat, rels)
+    return make(F, _without_relations(ring, F.rank, sat, rels), rels)
+
+
+def _without_relations(ring: Any, rank: int, gens: list[km.Vector], rels: list[km.Vector]) -> list[km.Vector]:
+    if not rels:
+        return gens
+    spanned = km.ModuleGB(ring, rank)
+    spanned.add(rels)
+    return [g for g in gens if not spanned.contains(g)]
+
+
+def module_colon(N: Module | Subquotient, J: Ideal | Poly) -> Any:
+    """``N : J`` for a submodule N of F/R (an image or a subquotient): the elements f of F/R with
+    J f in N, a submodule of F/R."""
+    F, gens, rels = parts(N)
+    ring = graded_ring(F.ring).poly
+    polys = [p for p in (J.nonzero() if isinstance(J, Ideal) else [J]) if not p.is_zero()]
+    if not polys:
+        return make(F, parts(F)[1], rels)
+    span = [g for g in gens + rels if g]
+    if F.rank == 1:
+        from .m2 import quotient as ideal_quotient
+        I = ideal_quotient(Ideal(ring, [km.entries(n, ring, 1)[0] for n in span]), Ideal(ring, polys))
+        found = [km.vector([g]) for g in I.nonzero()]
+    else:
+        found = colon(ring, F.rank, span, polys)
+        if all(km.is_homogeneous(v, [0] * F.rank) for v in found):
+            found = km.minimal_generators(ring, F.rank, found, [0] * F.rank)
+    return make(F, _without_relations(ring, F.rank, found, rels), rels)
+
+
+@command("quotient", dialect="m2")
+def quotient_module_ideal(N: Module | Subquotient, J: Ideal | Poly) -> Any:
+    """quotient(N, J): the submodule N : J of elements f with J f in N."""
+    return module_colon(N, J)
+
+
+@command("quotient", dialect="m2")
+def quotient_matrices(f: Matrix, g: Matrix) -> Map:
+    """quotient(f, g): f // g, a matrix h with g * h == f (f's columns in the image of g)."""
+    return divide(f, g)
 
 
 @command("annihilator", dialect="m2")
