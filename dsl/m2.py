@@ -205,6 +205,8 @@ class M2Interpreter(M2Control, Interpreter):
             return base
         if isinstance(base, FUNCTIONS):
             return Partial(base, k)
+        if isinstance(base, Poly) and isinstance(k, M2Ring) and _variable_name(base) in k.poly.names:  # x_R
+            return normal(k.poly.gen(k.poly.names.index(_variable_name(base))))
         if base == 0 and type(base) is int and isinstance(k, ANY_MODULE):  # 0_M
             return zero_element(k)
         if isinstance(base, FreeModule):  # F_i: the i-th basis vector
@@ -443,6 +445,17 @@ class M2Interpreter(M2Control, Interpreter):
 #: options of Macaulay2's functions that do not change the value (how it is computed, what is printed)
 NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check", "Unmixed",
                    "CompleteIntersection"}
+
+
+
+def _variable_name(p: Poly) -> str | None:
+    """The name of the variable p is (None when p is not a variable)."""
+    if len(p.terms) != 1:
+        return None
+    (e, c), = p.terms.items()
+    if c != 1 or sum(e) != 1:
+        return None
+    return p.ring.names[e.index(1)]
 
 
 def _options(cmd: Any, args: list[Any]) -> tuple[list[Any], dict[str, Any]]:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..dsl.m2_local import in_local_rings
+from ..dsl.m2_local import in_local_rings, localized_at
 from ..dsl.m2_rings import exact_over_zz
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_rings import (M2Ring, degree_vectors, in_quotients, is_integral, normal, quotient_ring, term_degree,
@@ -134,15 +134,21 @@ def monomial_curve_ideal(R: Ring, exps: List) -> Ideal:
 @command("trim", dialect="m2")
 @in_quotients
 @exact_over_zz
+@in_local_rings
 def trim(I: Ideal) -> Ideal:
     """trim I: I on fewer generators, as Macaulay2 trims: the generators (normalized) by increasing
-    lead monomial, each kept unless it lies in the ideal of those kept before it."""
+    lead monomial, each kept unless it lies in the ideal of those kept before it (in a local ring
+    R_P: a minimal generating set of I R_P among I's generators)."""
+    if localized_at(I.ring) is not None:
+        from .m2_local import local_mingens
+        return Ideal(I.ring, local_mingens(I))
     return _trim(I)
 
 
 @command("mingens", dialect="m2")
 @in_quotients
 @exact_over_zz
+@in_local_rings
 def mingens(I: Ideal) -> Matrix:
     """mingens I: the matrix of trim I's generators."""
     J = trim(I)
