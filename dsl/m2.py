@@ -29,7 +29,7 @@ from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
 from .m2_ringcons import build_ring, variable_names
-from .m2_rings import M2Ring, is_integral, normal, owner
+from .m2_rings import FractionField, M2Ring, is_integral, normal, owner
 from .maps import map_value
 from .m2_vectors import Vector, basis_vector
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Factored, Iterator,
@@ -123,7 +123,7 @@ class M2Interpreter(M2Control, Interpreter):
             self.use(value)
         elif isinstance(value, (M2Function, Iterator)) and value.name == "-*Function*-":
             value.name = name
-        elif isinstance(value, Monoid) and not value.name:
+        elif isinstance(value, (Monoid, FractionField)) and not value.name:
             value.name = name
         elif isinstance(value, CoeffRing) and value.characteristic and not value.name.isidentifier():
             value.name = name

@@ -15,7 +15,7 @@ from .m2_modules import FreeModule, Map, quotient_module, rows, scaled, source_d
 from .m2_submodules import Module, divide
 from .m2_subquotients import ANY_MODULE, module_arith
 from .m2_vectors import Vector, vector_arith
-from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
+from .m2_rings import M2Ring, cached_quotient, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
@@ -169,6 +169,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         if b < 2 or any(b % d == 0 for d in range(2, int(b ** 0.5) + 1)):
             raise MechRuntimeError(f"ZZ/{b}: mech's coefficient rings ZZ/p need a prime p")
         return CoeffRing(b, f"ZZ/{b}")
+    if op == "/" and isinstance(a, M2Ring) and isinstance(b, Ideal) and b.ring is a.poly:
+        return cached_quotient(a, b)
     if op == "/" and isinstance(a, M2Ring):
         return quotient_ring(a, _relations(a, b))
     if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):

@@ -1,5 +1,5 @@
 """The LocalRings package in the Macaulay2 dialect: ``localRing(R, P)`` (also ``R_P``),
-``promote``, ``liftUp``, ``isWellDefined``, ``length(R_P^1/I)``, and which commands are right on
+``promote``, ``liftUp``, ``isWellDefined``, ``frac`` (the residue field of ``R.residueMap``), ``length(R_P^1/I)``, and which commands are right on
 ideals of a local ring (marked by :func:`~mech.dsl.m2_local.in_local_rings` where they are defined;
 values and arithmetic: :mod:`mech.dsl.m2_local`)."""
 from __future__ import annotations
@@ -9,7 +9,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_local import LocalFraction, in_local_rings, local_ring, localized_at, to_global, to_local
 from ..dsl.m2_modules import CyclicModule, FreeModule
-from ..dsl.m2_rings import M2Ring, in_quotients, integers, normal, exact_over_zz
+from ..dsl.m2_rings import FractionField, M2Ring, exact_over_zz, fraction_field, in_quotients, integers, normal
 from ..dsl.registry import command
 from ..dsl.values import Ideal, List, Matrix
 from ..kernel import Poly
@@ -32,6 +32,23 @@ def _move(v: Any, ring: Any, to: Any) -> Any:
     if isinstance(v, List):
         return List([_move(x, ring, to) for x in v.items])
     raise MechTypeError("expected a polynomial, ideal, matrix or list")
+
+
+@command("frac", dialect="m2")
+@in_local_rings
+@in_quotients
+def frac(R: M2Ring) -> FractionField:
+    """frac R: the fraction field of a domain R (of R/P for a prime P, of R for a local ring R_P),
+    as a name and a ring map's target: mech does not compute in it."""
+    if localized_at(R) is not None:
+        R = R.info["over"]
+    if R.coeffs.characteristic is None:
+        raise MechRuntimeError("frac of a ring over ZZ is not supported by mech")
+    if R.quotient is not None:
+        from ..kernel.primdec import is_prime
+        if not is_prime(list(R.quotient.basis), R.ambient().poly):
+            raise MechRuntimeError("frac R: R is not a domain")
+    return fraction_field(R)
 
 
 @command("promote", dialect="m2")
