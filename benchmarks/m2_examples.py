@@ -101,6 +101,28 @@ NOT_UNIQUE = {
         "mechM = if mechOut#?7 then mechRead(IP, mechOut#7); "
         "mechEmit {\"U\", toString(instance(mechM, Matrix) and numcols mechM == numcols mingens IP "
         "and ideal mechM == IP)};"),
+    "LocalRings/legacy.m2:199": (
+        "generators of a module that is not graded are not unique (Macaulay2's mingens are not even minimal "
+        "there): mech's are checked to generate the same module",
+        {3}, 0,
+        "mechM = if mechOut#?3 then mechRead(R, mechOut#3); "
+        "mechEmit {\"U\", toString(instance(mechM, Matrix) "
+        "and image mechM == image matrix entries matrix {{a-1,a,b},{a-1,a,b}})};"),
+    "LocalRings/legacy.m2:220": (
+        "generators of a kernel (modulo, localModulo) are not unique: mech's are checked to generate the same "
+        "module as Macaulay2's (localModulo: with as many columns)",
+        {5, 6}, 0,
+        "mechM = if mechOut#?5 then mechRead(R, mechOut#5); mechL = if mechOut#?6 then mechRead(R, mechOut#6); "
+        "mechEmit {\"U\", toString(instance(mechM, Matrix) and image mechM == image matrix entries modulo(m, n) "
+        "and instance(mechL, Matrix) and numcols mechL == numcols localModulo(m, n) "
+        "and image mechL == image matrix entries localModulo(m, n))};"),
+    "LocalRings/legacy.m2:323": (
+        "localMingens is a solution of a division, one among many (here the same generator times another "
+        "constant): mech's is checked to have as many columns as Macaulay2's and the same image",
+        {4}, 0,
+        "mechM = if mechOut#?4 then mechRead(R, mechOut#4); "
+        "mechEmit {\"U\", toString(instance(mechM, Matrix) and numcols mechM == numcols G "
+        "and image mechM == image matrix entries G)};"),
 }
 #: assertions of a TEST that compare a value of ``NOT_UNIQUE`` with Macaulay2's own choice: case ->
 #: (assertion, the statement both systems run instead, printing the value the case's check judges)

@@ -71,6 +71,9 @@ class M2Ring(Ring):
         """A local ring R_P's ``maxIdeal`` (P) and ``residueMap`` (R_P -> frac(R/P), the variables to
         their normal forms modulo P); no fields for other rings."""
         P = self.info.get("localized_at")
+        if P is None and "legacy_max" in self.info:  # setMaxIdeal m (the LocalRings package's legacy)
+            m, residue = self.info["legacy_max"]
+            return {"maxIdeal": m, "residueMap": residue}
         if P is None:
             return {}
         from .m2_values import RingMap

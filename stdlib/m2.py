@@ -156,6 +156,14 @@ def _classic(text: str) -> str:
 
 @command("matrix", dialect="m2")
 @in_quotients
+def matrix_of_string(ctx, text: str) -> Matrix:
+    """matrix "x,y2;z3,x4": a matrix in Macaulay's classic notation (rows split by ``;``, entries by ``,``)."""
+    rows = [[ctx.eval_text(_classic(e)) for e in row.split(",")] for row in text.split(";")]
+    return matrix(ctx, List([List(r) for r in rows]))
+
+
+@command("matrix", dialect="m2")
+@in_quotients
 @exact_over_zz
 def matrix_of_element(ctx, f: int | Poly) -> Matrix:
     """matrix f: the 1 x 1 matrix of a ring element (an integer: over ZZ when no ring is in use)."""
@@ -291,6 +299,7 @@ def groebner_basis(I: Ideal) -> Matrix:
 @command("numgens", dialect="m2")
 @in_quotients
 @exact_over_zz
+@in_local_rings
 def numgens(I: Ideal) -> int:
     """numgens I: the number of generators."""
     return len(I.gens)

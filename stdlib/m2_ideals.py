@@ -195,6 +195,7 @@ def numgens_ring(R: Ring) -> int:
 @command("numcols", dialect="m2")
 @in_quotients
 @exact_over_zz
+@in_local_rings
 def numcols(M: Matrix) -> int:
     """numcols M: the number of columns."""
     return M.ncols
@@ -203,6 +204,7 @@ def numcols(M: Matrix) -> int:
 @command("numrows", dialect="m2")
 @in_quotients
 @exact_over_zz
+@in_local_rings
 def numrows(M: Matrix) -> int:
     """numrows M: the number of rows."""
     return M.nrows

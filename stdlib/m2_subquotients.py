@@ -162,3 +162,4 @@ def ambient_subquotient(M: Subquotient) -> FreeModule:
     """ambient M: the free module of which M is a subquotient."""
     return M.ambient
 
+
