@@ -1,7 +1,8 @@
 """Macaulay2 functions of the dialect added in session 12 for issue 22 (subquotient modules: r*M, M/N,
 M ++ N, 0_M, saturate and N : J of submodules, annihilators; quotient(f, g) of matrices, generator,
-genericSymmetricMatrix; mingens and trim in local rings, frac, R.residueMap, R.maxIdeal, x_R): scripts
-with what Macaulay2 1.21 prints for them (``M2 --script``; the ``macaulay2`` tests check it against the
+genericSymmetricMatrix; mingens and trim in local rings, frac, R.residueMap, R.maxIdeal, x_R; the
+LocalRings legacy functions setMaxIdeal, localComplement, localMingens, localsyz, localModulo;
+isSupportedInZeroLocus): scripts with what Macaulay2 1.21 prints for them (``M2 --script``; the ``macaulay2`` tests check it against the
 installed Macaulay2).  Values Macaulay2 chooses (generators of a quotient module, minimal generators
 in a local ring, f // g) are checked by what defines them, not as text."""
 from __future__ import annotations
@@ -65,6 +66,31 @@ print toString ring(q_V)
 print toString(q_V + p_V)
 """,
      '(2,true)\n1\nmap(K,T,{x, y, z, w})\nideal(-y^2+x*z,-z^2+y*w,-y*z+x*w)\nfrac S\nV\np+q\n'),
+    ("local_legacy", """R = ZZ/32003[x,y];
+m = matrix {{x, y-1}, {0, x}};
+print toString setMaxIdeal(ideal(x, y))
+print toString localComplement m
+print toString R.residueMap
+S = QQ[a,b,c,d];
+setMaxIdeal(ideal(a-1, b-2, c-3, d-4));
+G = localMingens gens ideal(1+a, 1+b);
+print toString numcols G
+print(image G == image matrix {{1+a}})
+T = ZZ/101[t,u,v,w];
+setMaxIdeal ideal vars T;
+print(T.residueMap === map(T, T, {0, 0, 0, 0}))
+print(localsyz matrix "u,v2;w3,u4" == 0)
+U = QQ[p,q,r];
+setMaxIdeal ideal vars U;
+L = localModulo(matrix {{p-1, q}}, matrix {{q, r}});
+print toString numcols L
+print(image matrix entries L == image matrix {{r, q, 0}, {0, -p+1, -1}})
+V = ZZ/32003[e_0..e_4, Degrees => {2:{1,0}, 3:{0,1}}];
+irr = intersect(ideal(e_0, e_1), ideal(e_2, e_3, e_4));
+print toString isSupportedInZeroLocus_irr (V^1/irr^2)
+print toString isSupportedInZeroLocus(irr, V^1/ideal(V_0))
+""",
+     'ideal(x,y)\nmatrix {{0}, {1}}\nmap(R,R,{0, 0})\n1\ntrue\ntrue\ntrue\n3\ntrue\ntrue\nfalse\n'),
 ]
 
 
