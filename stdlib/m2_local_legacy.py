@@ -4,15 +4,17 @@ polynomial ring R with a maximal ideal set by ``setMaxIdeal m``: ``R.maxIdeal``,
 image of f modulo m: ``id // n`` for ``n`` the transposed syzygies of the transposed residue of f),
 ``localMingens f`` (``f * localComplement syz f``: generators minimal at m) and ``localsyz f``
 (``localMingens syz f``), ``localModulo(f, g)`` (``localMingens`` of the first rows of
-``syz(f | g)``) -- the package's definitions; their matrices are solutions Macaulay2 and
+``syz(f | g)``), ``localPrune M`` -- the package's definitions; their matrices are solutions Macaulay2 and
 mech may choose differently when there are several."""
 from __future__ import annotations
 
+from typing import Any
+
 from ..dsl.errors import MechRuntimeError
 from ..dsl.m2_maps import apply_map
-from ..dsl.m2_modules import FreeModule, Map
+from ..dsl.m2_modules import CyclicModule, FreeModule, Map
 from ..dsl.m2_rings import M2Ring, normal
-from ..dsl.m2_submodules import as_map, divide
+from ..dsl.m2_submodules import Module, as_map, divide, module
 from ..dsl.m2_values import RingMap
 from ..dsl.registry import command
 from ..dsl.values import Ideal, Matrix
@@ -70,13 +72,25 @@ def local_modulo(f: Matrix, g: Matrix) -> Matrix:
     """localModulo(f, g): generators, minimal at the maximal ideal, of the elements whose image under
     f lies in the image of g (localMingens of the first rows of syz(f | g))."""
     f, g = as_map(f), as_map(g)
-    if f.target != g.target:
+    if f.nrows != g.nrows:
         raise MechRuntimeError("localModulo(f, g) takes maps with the same target")
     s = syz(Map(f.target, FreeModule(f.target.ring, f.source.degrees + g.source.degrees),
                 [row for i in range(f.nrows) for row in (*f.entries[i * f.ncols:(i + 1) * f.ncols],
                                                          *g.entries[i * g.ncols:(i + 1) * g.ncols])]))
     top = Map(f.source, s.source, list(s.entries[:f.ncols * s.ncols]))
     return local_mingens(top) if top.ncols else top
+
+
+@command("localPrune", dialect="m2")
+def local_prune(M: Module | CyclicModule) -> Any:
+    """localPrune M: M presented minimally at the maximal ideal, the cokernel of
+    ``localModulo(p1, p)`` for the presentation p of M (a cokernel's relations, the syzygies of an
+    image's generators) and ``p1 = localComplement p`` (a free module when it has no relations)."""
+    M = module(M)
+    p = syz(M.matrix) if M.kind == "image" else M.matrix  # the syzygies of an image's generators
+    p1 = local_complement(p)
+    p2 = local_modulo(p1, p)
+    return p2.target if p2.ncols == 0 else Module("cokernel", p2)
 
 
 @command("localsyz", dialect="m2")

@@ -167,6 +167,15 @@ def prune(M: Module | CyclicModule) -> Any:
     return Module("cokernel", P)
 
 
+@command("prune", dialect="m2")
+@command("minimalPresentation", dialect="m2")
+@in_quotients
+def prune_matrix(f: Matrix) -> Map:
+    """prune f of a matrix: the map between the pruned source and target, f itself (mech's matrices
+    are maps between free modules, which prune leaves)."""
+    return as_map(f)
+
+
 @command("presentation", dialect="m2")
 @in_quotients
 def presentation(M: Module | CyclicModule) -> Map:

@@ -1,7 +1,7 @@
 """Macaulay2 functions of the dialect added in session 12 for issue 22 (subquotient modules: r*M, M/N,
 M ++ N, 0_M, saturate and N : J of submodules, annihilators; quotient(f, g) of matrices, generator,
 genericSymmetricMatrix; mingens and trim in local rings, frac, R.residueMap, R.maxIdeal, x_R; the
-LocalRings legacy functions setMaxIdeal, localComplement, localMingens, localsyz, localModulo;
+LocalRings legacy functions setMaxIdeal, localComplement, localMingens, localsyz, localModulo, localPrune, prune of a matrix;
 isSupportedInZeroLocus): scripts with what Macaulay2 1.21 prints for them (``M2 --script``; the ``macaulay2`` tests check it against the
 installed Macaulay2).  Values Macaulay2 chooses (generators of a quotient module, minimal generators
 in a local ring, f // g) are checked by what defines them, not as text."""
@@ -89,8 +89,14 @@ V = ZZ/32003[e_0..e_4, Degrees => {2:{1,0}, 3:{0,1}}];
 irr = intersect(ideal(e_0, e_1), ideal(e_2, e_3, e_4));
 print toString isSupportedInZeroLocus_irr (V^1/irr^2)
 print toString isSupportedInZeroLocus(irr, V^1/ideal(V_0))
+W = QQ[a,b];
+setMaxIdeal ideal gens W;
+m = matrix {{a-1, a, b}, {a-1, a, b}};
+print toString prune m
+print toString localPrune image m
+print toString localPrune coker matrix {{a-1, b}, {a, a^2}}
 """,
-     'ideal(x,y)\nmatrix {{0}, {1}}\nmap(R,R,{0, 0})\n1\ntrue\ntrue\ntrue\n3\ntrue\ntrue\nfalse\n'),
+     'ideal(x,y)\nmatrix {{0}, {1}}\nmap(R,R,{0, 0})\n1\ntrue\ntrue\ntrue\n3\ntrue\ntrue\nfalse\nmatrix {{a-1, a, b}, {a-1, a, b}}\nW^1\ncokernel matrix {{-a^3+a^2+a*b}}\n'),
 ]
 
 
