@@ -16,7 +16,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_local import LocalFraction, local_ideal_is_unit, local_ideals_equal, localized_at, in_local_rings
-from ..dsl.m2_modules import Map, with_default_degrees
+from ..dsl.m2_modules import FreeModule, Map, with_default_degrees
 from ..dsl.m2_ops import lift_to
 from ..dsl.m2_rings import in_quotients, is_integral, multidegree, normal, owner, promote, promotes, exact_over_zz
 from ..dsl.m2_submodules import Module
@@ -209,7 +209,15 @@ def _blocks(rows: List) -> Matrix:
         for k in range(heights[i]):
             for j, x in enumerate(r):
                 out.extend(x.entries[k * x.ncols:(k + 1) * x.ncols] if isinstance(x, Matrix) else [ring.zero()] * widths[j])
-    return with_default_degrees(Matrix(ring, sum(heights), sum(widths), out))
+    plain = Matrix(ring, sum(heights), sum(widths), out)
+    if not all(isinstance(x, Map) for x in mats) or len({x.degree for x in mats}) != 1:
+        return with_default_degrees(plain)
+    # maps with their degrees: the target of each block row and the source of each block column kept
+    targets = [next(x.target for x in r if isinstance(x, Map)) for r in grid]
+    sources = [next(r[j].source for r in grid if isinstance(r[j], Map)) for j in range(len(grid[0]))]
+    R = ring.owner
+    return Map(FreeModule(R, tuple(d for t in targets for d in t.degrees)),
+               FreeModule(R, tuple(d for t in sources for d in t.degrees)), out, mats[0].degree)
 
 
 def _gb(I: Ideal) -> Ideal:
@@ -586,7 +594,11 @@ def tangent_cone(I: Ideal) -> Ideal:
 # ---------------------------------------------------------------- lists and output
 @operator("%", dialect="m2")
 def remainder(f: Any, I: Any) -> Any:
-    """``f % I``: the normal form of f modulo a Gröbner basis of I (other operands: Singular's %)."""
+    """``f % I``: the normal form of f modulo a Gröbner basis of I; ``f % g`` of matrices whose columns
+    lie in g's image: 0 (other operands: Singular's %)."""
+    if isinstance(f, Matrix) and isinstance(I, Matrix):
+        from ..dsl.m2_submodules import remainder as matrix_remainder
+        return matrix_remainder(f, I)
     if not (isinstance(f, (Poly, Number, int)) and isinstance(I, Ideal)):
         return NotImplemented
     if localized_at(I.ring) is not None or is_integral(I.ring):
