@@ -1,5 +1,5 @@
 """Macaulay2 functions of the dialect added in session 12 for issue 22 (subquotient modules: r*M, M/N,
-M ++ N, 0_M, saturate and N : J of submodules, annihilators; quotient(f, g) of matrices, generator,
+M ++ N, 0_M, saturate and N : J of submodules, annihilators; quotient(f, g), f // g and f % g of matrices, block matrices of maps, generator,
 genericSymmetricMatrix; mingens and trim in local rings, frac, R.residueMap, R.maxIdeal, x_R; the
 LocalRings legacy functions setMaxIdeal, localComplement, localMingens, localsyz, localModulo, localPrune, prune of a matrix;
 isSupportedInZeroLocus): scripts with what Macaulay2 1.21 prints for them (``M2 --script``; the ``macaulay2`` tests check it against the
@@ -97,6 +97,19 @@ print toString localPrune image m
 print toString localPrune coker matrix {{a-1, b}, {a, a^2}}
 """,
      'ideal(x,y)\nmatrix {{0}, {1}}\nmap(R,R,{0, 0})\n1\ntrue\ntrue\ntrue\n3\ntrue\ntrue\nfalse\nmatrix {{a-1, a, b}, {a-1, a, b}}\nW^1\ncokernel matrix {{-a^3+a^2+a*b}}\n'),
+    ("matrix_division", """RP = localRing(QQ[a,b,c,u,v,w], ideal(a,b,c,u,v,w));
+f = matrix {{0, -9*u, u, 9*a}, {-b^2*w-w, b^2*w+w, 0, 0}, {-9*w, 0, w, 0}, {0, 0, 0, b^2*v+v}};
+g = matrix {{u, -9*a, -9*u}, {0, 0, b^2*w+w}, {w, 0, 0}, {0, -b^2*v-v, 0}};
+print(f % g == 0)
+print(f % g == matrix {for i from 0 to numcols f - 1 list f_{i} % g})
+print(g * (f // g) == f)
+R = QQ[x,y];
+h = matrix {{x, y}};
+k = matrix {{x^2}};
+print toString degrees source matrix {{h, k}}
+print(matrix {{h, k}} == h | k)
+""",
+     'true\ntrue\ntrue\n{{1}, {1}, {2}}\ntrue\n'),
 ]
 
 
