@@ -1,10 +1,12 @@
-"""Macaulay2 functions of the dialect added in session 12 for issue 22 (subquotient modules: r*M, M/N,
-M ++ N, 0_M, saturate and N : J of submodules, annihilators; quotient(f, g), f // g and f % g of matrices, block matrices of maps, generator,
-genericSymmetricMatrix; mingens and trim in local rings, frac, R.residueMap, R.maxIdeal, x_R; the
-LocalRings legacy functions setMaxIdeal, localComplement, localMingens, localsyz, localModulo, localPrune, prune of a matrix;
-isSupportedInZeroLocus): scripts with what Macaulay2 1.21 prints for them (``M2 --script``; the ``macaulay2`` tests check it against the
-installed Macaulay2).  Values Macaulay2 chooses (generators of a quotient module, minimal generators
-in a local ring, f // g) are checked by what defines them, not as text."""
+"""Macaulay2 functions of the dialect added in session 12 for issue 22 (subquotient modules: r*M,
+M/N, M ++ N, 0_M, saturate and N : J of submodules, annihilators; quotient(f, g), f // g and f % g
+of matrices, block matrices of maps, generator, genericSymmetricMatrix; mingens and trim in local
+rings, frac, R.residueMap, R.maxIdeal, x_R; the LocalRings legacy functions setMaxIdeal,
+localComplement, localMingens, localsyz, localModulo, localPrune, prune of a matrix;
+isSupportedInZeroLocus): scripts with what Macaulay2 1.21 prints for them (``M2 --script``; the
+``macaulay2`` tests check it against the installed Macaulay2).  Values Macaulay2 chooses (generators
+of a quotient module, minimal generators in a local ring, f // g) are checked by what defines them,
+not as text."""
 from __future__ import annotations
 
 import shutil
