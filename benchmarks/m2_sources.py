@@ -41,7 +41,7 @@ OUT_OF_SCOPE = {
     "hash tables and internals": {"new", "peek", "hashTable", "HashTable", "MutableHashTable",
                                   "MutableList", "mutableMatrix", "mutableIdentity", "keys", "values",
                                   "pairs", "cache", "frames", "gbTrace", "gbSnapshot", "engineDebugLevel",
-                                  "debugLevel", "locate", "globalAssign", "installMethod", "method", "hooks"},
+                                  "debugLevel", "locate", "globalAssign", "installMethod", "method", "hooks", "peek'"},
     "system, files and help": {"help", "viewHelp", "examples", "methods", "code", "edit", "installPackage",
                                "check", "run", "get", "openOut", "openIn", "currentFileDirectory", "printWidth",
                                "showTex", "tex", "html", "net", "toExternalString", "schedule",
@@ -321,13 +321,12 @@ def extract(src: Path) -> list[Case]:
 def out_of_scope(code: str) -> str:
     """Why the code is outside mech's scope ("" when it is inside): the first construct of
     ``OUT_OF_SCOPE`` it names, another package it loads, a float."""
-    toks = [t for _, t in tokens(code)]
-    for k, tok in enumerate(toks):
+    for pos, tok in tokens(code):
         for reason, names in OUT_OF_SCOPE.items():
             if tok in names:
                 return f"{reason}: {tok}"
         if tok in ("needsPackage", "loadPackage", "needs", "load"):
-            m = re.search(rf'\b{tok}\s*\(?\s*"([^"]+)"', code)
+            m = re.compile(r'\s*\(?\s*"([^"]+)"').match(code, pos + len(tok))
             if m is None or m.group(1) not in IN_SCOPE_PACKAGES:
                 return f"other packages: {tok} {m.group(1) if m else ''}".rstrip()
         if "." in tok and tok[0].isdigit():

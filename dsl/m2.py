@@ -24,11 +24,12 @@ from .m2_control import M2Control
 from .m2_local import LocalFraction, local_ring, localized_at
 from .m2_maps import apply_map
 from .m2_modules import FreeModule, columns, with_default_degrees
+from .m2_subquotients import ANY_MODULE, zero_element
 from .m2_ops import SYMBOLS, lift_to, m2_binary
 from .m2_parser import is_complete, parse
 from .m2_printing import to_string
 from .m2_ringcons import build_ring, variable_names
-from .m2_rings import M2Ring, is_integral, normal, owner
+from .m2_rings import FractionField, M2Ring, is_integral, normal, owner
 from .maps import map_value
 from .m2_vectors import Vector, basis_vector
 from .m2_values import (FUNCTIONS, QQ_RING, ZZ_RING, Array, CoeffRing, CommandRef, Composed, Factored, Iterator,
@@ -122,7 +123,7 @@ class M2Interpreter(M2Control, Interpreter):
             self.use(value)
         elif isinstance(value, (M2Function, Iterator)) and value.name == "-*Function*-":
             value.name = name
-        elif isinstance(value, Monoid) and not value.name:
+        elif isinstance(value, (Monoid, FractionField)) and not value.name:
             value.name = name
         elif isinstance(value, CoeffRing) and value.characteristic and not value.name.isidentifier():
             value.name = name
@@ -204,6 +205,10 @@ class M2Interpreter(M2Control, Interpreter):
             return base
         if isinstance(base, FUNCTIONS):
             return Partial(base, k)
+        if isinstance(base, Poly) and isinstance(k, M2Ring) and _variable_name(base) in k.poly.names:  # x_R
+            return normal(k.poly.gen(k.poly.names.index(_variable_name(base))))
+        if base == 0 and type(base) is int and isinstance(k, ANY_MODULE):  # 0_M
+            return zero_element(k)
         if isinstance(base, FreeModule):  # F_i: the i-th basis vector
             return basis_vector(base, to_int(k))
         if hasattr(base, "m2_entry"):  # C_i, C.dd_i of a resolution
@@ -440,6 +445,17 @@ class M2Interpreter(M2Control, Interpreter):
 #: options of Macaulay2's functions that do not change the value (how it is computed, what is printed)
 NEUTRAL_OPTIONS = {"Verbosity", "Verbose", "Strategy", "MinimalGenerators", "SeparateExponents", "Check", "Unmixed",
                    "CompleteIntersection"}
+
+
+
+def _variable_name(p: Poly) -> str | None:
+    """The name of the variable p is (None when p is not a variable)."""
+    if len(p.terms) != 1:
+        return None
+    (e, c), = p.terms.items()
+    if c != 1 or sum(e) != 1:
+        return None
+    return p.ring.names[e.index(1)]
 
 
 def _options(cmd: Any, args: list[Any]) -> tuple[list[Any], dict[str, Any]]:

@@ -5,9 +5,9 @@ from __future__ import annotations
 from typing import Any
 
 from ..kernel import Poly
-from .errors import MechTypeError
+from .errors import MechRuntimeError, MechTypeError
 from .m2_modules import FreeModule
-from .m2_rings import normal
+from .m2_rings import TEXT, M2Ring, normal
 from .m2_values import RingMap
 from .values import ExprList, Ideal, List, Matrix, Number, typeof
 
@@ -15,6 +15,8 @@ from .values import ExprList, Ideal, List, Matrix, Number, typeof
 def apply_map(f: RingMap, v: Any) -> Any:
     """The image of a polynomial, ideal, matrix, free module or list under the ring map ``f``."""
     from .maps import map_value
+    if not isinstance(f.target, M2Ring):
+        raise MechRuntimeError(f"mech does not compute in {TEXT['value'](f.target)} (a fraction field)")
     if isinstance(v, (List, ExprList)):
         return type(v)([apply_map(f, x) for x in v.items])
     if type(v) is int:

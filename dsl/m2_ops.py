@@ -12,9 +12,10 @@ from ..kernel import Poly
 from .errors import MechNameError, MechRuntimeError, MechTypeError
 from .m2_local import LocalFraction, local_arith, localized_at, to_local
 from .m2_modules import FreeModule, Map, quotient_module, rows, scaled, source_degrees
-from .m2_submodules import Module
+from .m2_submodules import Module, divide
+from .m2_subquotients import ANY_MODULE, module_arith
 from .m2_vectors import Vector, vector_arith
-from .m2_rings import M2Ring, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
+from .m2_rings import M2Ring, cached_quotient, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
 from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
@@ -136,6 +137,10 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         v = vector_arith(op, a, b)
         if v is not NotImplemented:
             return v
+    if isinstance(b, ANY_MODULE) and isinstance(a, ANY_MODULE) or op in ("*", "++") and isinstance(b, (*ANY_MODULE, FreeModule)):
+        v = module_arith(op, a, b)
+        if v is not NotImplemented:
+            return v
     if op == ":" and type(a) is int:  # n copies of anything, a symbol too
         if a < 0:
             raise MechRuntimeError("n : x takes n >= 0")
@@ -164,6 +169,8 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
         if b < 2 or any(b % d == 0 for d in range(2, int(b ** 0.5) + 1)):
             raise MechRuntimeError(f"ZZ/{b}: mech's coefficient rings ZZ/p need a prime p")
         return CoeffRing(b, f"ZZ/{b}")
+    if op == "/" and isinstance(a, M2Ring) and isinstance(b, Ideal) and b.ring is a.poly:
+        return cached_quotient(a, b)
     if op == "/" and isinstance(a, M2Ring):
         return quotient_ring(a, _relations(a, b))
     if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):
@@ -310,6 +317,8 @@ def _floor_div(a: Any, b: Any) -> Any:
         if g.is_zero():
             raise MechRuntimeError("division by 0")
         return _quotient(a, g)
+    if isinstance(a, Matrix) and isinstance(b, Matrix):
+        return divide(a, b)
     raise MechTypeError(f"no operator // for a {typeof(a)} and a {typeof(b)}")
 
 

@@ -170,6 +170,7 @@ class _Build(Transformer_NonRecursive):
         return build
 
     add, sub, mul, mod, pow = _bin("+"), _bin("-"), _bin("*"), _bin("%"), _bin("^")
+    dsum = _bin("++")
 
     @v_args(meta=True)
     def div(self, meta, c):

@@ -17,7 +17,8 @@ from .m2_local import LocalFraction
 from .m2_modules import CyclicModule, FreeModule
 from .m2_vectors import Vector
 from .m2_submodules import BettiTally, ChainComplex, Module, betti_to_string
-from .m2_rings import TEXT, tower_terms
+from .m2_subquotients import ModuleElement, Subquotient
+from .m2_rings import TEXT, FractionField, tower_terms
 from .m2_values import (Array, CoeffRing, CommandRef, Composed, Factored, IndexedTable, Iterator, M2Function, M2Set, Monoid,
                         MonomialIdeal, Opt, OptionTable, Partial, RingMap, Symbol, Tally,
                         VerticalList)
@@ -118,7 +119,7 @@ def to_string(v: Any) -> str:
         if v.unit != 1 or not parts:
             parts.append(f"({to_string(v.unit)})")
         return "*".join(parts)
-    if isinstance(v, (Ring, CoeffRing)):
+    if isinstance(v, (Ring, CoeffRing, FractionField)):
         return v.name or v.describe() if hasattr(v, "describe") else v.name
     if isinstance(v, LocalFraction):
         num, den = poly_str(v.num), poly_str(v.den)
@@ -128,6 +129,10 @@ def to_string(v: Any) -> str:
     if isinstance(v, FreeModule):
         base = to_string(v.ring)
         return f"{base if base.isidentifier() else f'({base})'}^{v.rank}"
+    if isinstance(v, Subquotient):
+        return f"subquotient({to_string(v.generators)},{to_string(v.relations)})"
+    if isinstance(v, ModuleElement):
+        return "vector {" + ", ".join(poly_str(p) for p in v.entries) + "}"
     if isinstance(v, Module):
         return f"{v.kind} {to_string(v.matrix)}"
     if isinstance(v, BettiTally):

@@ -66,6 +66,22 @@ class M2Ring(Ring):
     def is_quotient(self) -> bool:
         return self.quotient is not None
 
+    @property
+    def m2_fields(self) -> dict[str, Any]:
+        """A local ring R_P's ``maxIdeal`` (P) and ``residueMap`` (R_P -> frac(R/P), the variables to
+        their normal forms modulo P); no fields for other rings."""
+        P = self.info.get("localized_at")
+        if P is None and "legacy_max" in self.info:  # setMaxIdeal m (the LocalRings package's legacy)
+            m, residue = self.info["legacy_max"]
+            return {"maxIdeal": m, "residueMap": residue}
+        if P is None:
+            return {}
+        from .m2_values import RingMap
+        R = self.info["over"]
+        field_ = fraction_field(cached_quotient(R, P))
+        images = tuple(normal(Poly(field_.ring.poly, dict(R.poly.gen(i).terms))) for i in range(R.poly.nvars))
+        return {"maxIdeal": P, "residueMap": RingMap(field_, self, images)}
+
     def ambient(self) -> "M2Ring":
         """The polynomial ring of a quotient (the ring itself when it is none)."""
         r = self
@@ -163,6 +179,40 @@ def quotient_ring(R: M2Ring, gens: Sequence[Poly]) -> M2Ring:
     below = list(R.quotient.basis) if R.quotient is not None else []
     S.quotient = Quotient.of([Poly(flat, dict(g.terms)) for g in below + list(gens) if not g.is_zero()], flat)
     return S
+
+
+def cached_quotient(R: M2Ring, I: Any) -> M2Ring:
+    """``R/I`` for an ideal I of R: the same ring again for the same ideal (as Macaulay2 keeps it)."""
+    cache = R.info.setdefault("quotients_by", {})
+    if id(I) not in cache:
+        cache[id(I)] = (I, quotient_ring(R, list(I.gens)))
+    return cache[id(I)][1]
+
+
+@dataclass(eq=False)
+class FractionField:
+    """``frac R`` of a domain R (a name and the target of a local ring's residue map: mech does not
+    compute in it)."""
+    ring: M2Ring
+    name: str = ""
+
+    def describe(self) -> str:
+        name = ring_name(self.ring, paren=False)
+        return f"frac {name}" if name.isidentifier() else f"frac({name})"
+
+
+def fraction_field(R: M2Ring) -> FractionField:
+    """``frac R``, the same value again for the same ring."""
+    if "frac" not in R.info:
+        R.info["frac"] = FractionField(R)
+    return R.info["frac"]
+
+
+def exact_over_zz(fn: Any) -> Any:
+    """Mark a command of the dialect as exact on elements of rings over ZZ (it neither divides nor
+    computes a Gröbner basis over QQ; the interpreter refuses the others there)."""
+    fn.zz_ok = True
+    return fn
 
 
 def in_quotients(fn: Any) -> Any:

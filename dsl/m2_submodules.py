@@ -85,6 +85,41 @@ def module(M: "Module | CyclicModule") -> "Module":
     return Module("cokernel", from_columns(F, [km.vector([g]) for g in M.ideal.gens if not g.is_zero()]))
 
 
+def divide(f: Matrix, g: Matrix) -> Map:
+    """``f // g`` for matrices with one target whose columns lie in the image of g: a matrix h with
+    ``g * h == f`` (the coefficients of each column of f in g's columns)."""
+    f, g = as_map(f), as_map(g)
+    cols = [km.vector(c) for c in _coefficients(f, g, "f // g")]
+    return from_columns(g.source, cols, f.source.degrees)
+
+
+def remainder(f: Matrix, g: Matrix) -> Map:
+    """``f % g`` for matrices with one target whose columns lie in the image of g: the zero matrix."""
+    f = as_map(f)
+    _coefficients(f, as_map(g), "f % g")
+    return Map(f.target, f.source, [f.ring.zero()] * (f.nrows * f.ncols), f.degree)
+
+
+def _coefficients(f: Map, g: Map, what: str) -> list[list[Any]]:
+    """For each column of f its coefficients in g's columns (polynomials of the ring: in a local
+    ring R_P such a solution in R is one in R_P); refused when a column is not in g's image."""
+    if f.nrows != g.nrows or f.ring is not g.ring:
+        raise MechRuntimeError(f"{what} takes matrices with the same target")
+    owner = f.ring.owner
+    if owner.info.get("localized_at") is None:
+        graded_ring(f.ring)
+    elif owner.coeffs.characteristic is None or not owner.poly.order.is_global:
+        raise MechRuntimeError(f"{what} over this local ring is not supported by mech")
+    out = []
+    for v in columns_of(f):
+        coeffs = km.lift(f.ring, f.nrows, columns_of(g), v) if v else [f.ring.zero()] * g.ncols
+        if coeffs is None:
+            raise MechRuntimeError(f"{what}: a column of f is not in the image of g (the division with a "
+                                   "remainder is not supported by mech)")
+        out.append(coeffs)
+    return out
+
+
 @dataclass(frozen=True, eq=False)
 class ChainComplex:
     """A free resolution: ``modules[i]`` is ``C_i``, ``maps[i]`` the differential ``C_(i+1) -> C_i``."""

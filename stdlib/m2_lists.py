@@ -98,6 +98,7 @@ def product(ctx, L: Seq | int, f: Any = None) -> Any:
 # ---------------------------------------------------------------- functions over lists
 @command("apply", dialect="m2")
 @in_quotients
+@in_local_rings
 def apply(ctx, L: Seq | int, f: Any, g: Any = None) -> Any:
     """apply(L, f): f(x) for x in L (the same kind of list); apply(n, f): for x in 0..n-1;
     apply(L1, L2, f): f(x, y) for the pairs of entries."""
@@ -124,6 +125,7 @@ def apply_table(ctx, T: List, f: Any) -> List:
 
 @command("scan", dialect="m2")
 @in_quotients
+@in_local_rings
 def scan(ctx, L: Seq | int, f: Any) -> None:
     """scan(L, f): apply f to every entry (or to 0..n-1), for its effects."""
     _fn(f)
@@ -134,6 +136,7 @@ def scan(ctx, L: Seq | int, f: Any) -> None:
 
 @command("select", dialect="m2")
 @in_quotients
+@in_local_rings
 def select(ctx, L: Seq | int, f: Any, g: Any = None) -> Any:
     """select(L, f): the entries x with f(x) true; select(n, L, f): the first n of them;
     select(n, f): the integers 0 <= i < n with f(i) true; select(re, s) and select(re, t, s) on
@@ -162,6 +165,7 @@ def select(ctx, L: Seq | int, f: Any, g: Any = None) -> Any:
 
 @command("any", dialect="m2")
 @in_quotients
+@in_local_rings
 def any_(ctx, L: Seq | int, f: Any) -> bool:
     """any(L, f): whether f(x) is true for some entry x (or x in 0..n-1)."""
     _fn(f)
@@ -170,6 +174,7 @@ def any_(ctx, L: Seq | int, f: Any) -> bool:
 
 @command("all", dialect="m2")
 @in_quotients
+@in_local_rings
 def all_(ctx, L: Seq | int, f: Any) -> bool:
     """all(L, f): whether f(x) is true for every entry x (or x in 0..n-1)."""
     _fn(f)
@@ -215,6 +220,7 @@ def number(ctx, L: Seq, f: Any) -> int:
 # ---------------------------------------------------------------- reshaping
 @command("toList", dialect="m2")
 @in_quotients
+@in_local_rings
 def to_list(L: Any) -> List:
     """toList L: the entries of a sequence, set or list as a list."""
     return List(_items(L))
@@ -361,6 +367,7 @@ def tally(L: Seq) -> Tally:
 
 @command("isSubset", dialect="m2")
 @in_quotients
+@in_local_rings
 def is_subset(a: Any, b: Any) -> bool:
     """isSubset(A, B): whether every element of A is one of B (lists, sets), or the ideal A lies in B."""
     if isinstance(a, Ideal) and isinstance(b, Ideal) and localized_at(b.ring) is not None:
@@ -474,6 +481,7 @@ def min_(*xs: Any) -> Any:
 # ---------------------------------------------------------------- entries and output
 @command("toString", dialect="m2")
 @in_quotients
+@in_local_rings
 def to_string_cmd(x: Any) -> str:
     """toString x: the value as one line of text."""
     return to_string(x)
@@ -481,6 +489,7 @@ def to_string_cmd(x: Any) -> str:
 
 @command("print", dialect="m2")
 @in_quotients
+@in_local_rings
 def print_(ctx, x: Any) -> None:
     """print x: print the value (one line, as toString x)."""
     ctx.write(to_string(x) + "\n")
@@ -488,6 +497,7 @@ def print_(ctx, x: Any) -> None:
 
 @command("first", dialect="m2")
 @in_quotients
+@in_local_rings
 def first(L: List | ExprList) -> Any:
     """first L: the first entry."""
     if not L.items:
@@ -497,6 +507,7 @@ def first(L: List | ExprList) -> Any:
 
 @command("last", dialect="m2")
 @in_quotients
+@in_local_rings
 def last(L: List | ExprList) -> Any:
     """last L: the last entry."""
     if not L.items:
@@ -524,6 +535,7 @@ def join(*lists: List | ExprList | Iterator) -> List | ExprList:
 
 @command("length", dialect="m2")
 @in_quotients
+@in_local_rings
 def length(L: List | ExprList) -> int:
     """length L: the number of entries."""
     return len(L.items)
@@ -532,6 +544,7 @@ def length(L: List | ExprList) -> int:
 # ---------------------------------------------------------------- programs
 @command("assert", dialect="m2")
 @in_quotients
+@in_local_rings
 def assert_(x: Any) -> None:
     """assert x: stop with an error unless x is true."""
     if x is not True:
@@ -541,6 +554,7 @@ def assert_(x: Any) -> None:
 
 @command("error", dialect="m2")
 @in_quotients
+@in_local_rings
 def error(*parts: Any) -> None:
     """error "message": stop with this error."""
     raise MechRuntimeError("".join(p if isinstance(p, str) else to_string(p) for p in parts))
@@ -596,3 +610,8 @@ def binomial(n: int, k: int) -> int:
     if n < 0 or k < 0:
         raise MechRuntimeError("binomial(n, k) takes n, k >= 0")
     return comb(n, k)
+
+
+for _name, _f in list(globals().items()):  # the list library: no arithmetic of its own over ZZ (isSubset checks its ideals)
+    if callable(_f) and getattr(_f, "__module__", "") == __name__ and hasattr(_f, "quotient_ok"):
+        _f.zz_ok = True

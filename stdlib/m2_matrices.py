@@ -7,7 +7,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_modules import with_default_degrees
 from ..dsl.m2_ops import lift_to
-from ..dsl.m2_rings import in_quotients, is_integral, normal
+from ..dsl.m2_rings import in_quotients, is_integral, normal, exact_over_zz
 from ..dsl.m2_values import Factored, Opt
 from ..dsl.registry import command
 from ..dsl.values import NONE, ExprList, Ideal, List, Matrix, Ring
@@ -17,6 +17,7 @@ from .m2 import _indices, _polys
 
 @command("jacobian", dialect="m2")
 @in_quotients
+@exact_over_zz
 def jacobian(I: Ideal | Matrix) -> Matrix:
     """jacobian I: the matrix of partial derivatives, one row per variable, one column per generator
     (not in a quotient ring: jacobian R of one is :func:`jacobian_ring`)."""
@@ -42,6 +43,7 @@ def jacobian_ring(R: Ring) -> Matrix:
 
 @command("minors", dialect="m2")
 @in_quotients
+@exact_over_zz
 def minors(ctx, k: int, M: Matrix) -> Ideal:
     """minors(k, M): the ideal of the k x k minors of M (column subsets outermost, as Macaulay2
     lists them; zero minors left out; Limit => n: the first n; k <= 0: the unit ideal)."""
@@ -69,6 +71,7 @@ minors.m2_options = ("Limit",)
 
 
 @command("permanents", dialect="m2")
+@exact_over_zz
 def permanents(k: int, M: Matrix) -> Ideal:
     """permanents(k, M): the ideal of the permanents of the k x k submatrices of M (the sums over
     permutations without signs; zero ones left out)."""
@@ -92,6 +95,7 @@ def permanents(k: int, M: Matrix) -> Ideal:
 
 
 @command("exteriorPower", dialect="m2")
+@exact_over_zz
 def exterior_power(k: int, M: Matrix) -> Matrix:
     """exteriorPower(k, M): the matrix of M's k x k minors, rows and columns indexed by the k-subsets
     of M's rows and columns in Macaulay2's order (by their largest element, then the next...)."""
@@ -110,6 +114,7 @@ def exterior_power(k: int, M: Matrix) -> Matrix:
 
 
 @command("det", dialect="m2")
+@exact_over_zz
 def det(M: Matrix) -> Poly:
     """det M: the determinant of a square matrix."""
     from ..kernel import matrix as KM
@@ -119,6 +124,7 @@ def det(M: Matrix) -> Poly:
 
 
 @command("diff", dialect="m2")
+@exact_over_zz
 def diff(x: Poly | Matrix, f: Poly | Ideal | Matrix) -> Any:
     """diff(x, f): the derivative of f by the variable x; diff(P, f) for a polynomial P: P's
     differential operator (x^2*y: d^3/dx^2dy) applied to f; diff(M, f): to each entry of M."""
@@ -142,6 +148,7 @@ def diff(x: Poly | Matrix, f: Poly | Ideal | Matrix) -> Any:
 
 @command("sub", dialect="m2")
 @in_quotients
+@exact_over_zz
 def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
     """sub(f, {x => a, y => b}): substitute for the variables; sub(f, S): the same polynomials
     (variables matched by name, the others sent to 0) in the ring S."""
@@ -174,6 +181,7 @@ def sub(ctx, f: Poly | Ideal | Matrix, where: List | Ring) -> Any:
 
 
 @command("factor", dialect="m2")
+@exact_over_zz
 def factor(f: Poly) -> Factored:
     """factor f: the factorization of f into irreducible factors (times a unit)."""
     from ..kernel.factor import factorize
@@ -189,6 +197,7 @@ def _unit(f: Poly, unit: Any) -> Any:
 
 
 @command("value", dialect="m2")
+@exact_over_zz
 def value(F: Factored) -> Poly:
     """value F: the product a factorization stands for."""
     out = F.factors[0][0].ring.one() if F.factors else None
@@ -234,6 +243,7 @@ def _submatrix(M: Matrix, rows: list[int], cols: list[int]) -> Matrix:
 
 @command("submatrix", dialect="m2")
 @in_quotients
+@exact_over_zz
 def submatrix(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
     """submatrix(M, {j1, j2, ...}): the columns j1, j2, ... (counted from 0); submatrix(M, rows,
     cols): those rows and columns (an empty place: all)."""
@@ -245,6 +255,7 @@ def submatrix(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
 
 @command("submatrix'", dialect="m2")
 @in_quotients
+@exact_over_zz
 def submatrix_without(M: Matrix, rows: Any, cols: Any = None) -> Matrix:
     """submatrix'(M, rows, cols): M without those rows and columns (an empty place: none);
     submatrix'(M, cols): without those columns."""

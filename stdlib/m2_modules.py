@@ -9,7 +9,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_modules import (CyclicModule, FreeModule, Map, is_homogeneous_map, map_degree, source_degrees,
                               source_of, target_of)
-from ..dsl.m2_rings import M2Ring, in_quotients
+from ..dsl.m2_rings import M2Ring, in_quotients, exact_over_zz
 from ..dsl.m2_values import FUNCTIONS, Opt
 from ..dsl.registry import command
 from ..dsl.values import ExprList, List, Matrix, NoneValue, Number, to_int
@@ -58,6 +58,7 @@ def _entries(ctx, M: FreeModule, ncols: int, v: Any) -> list[Poly]:
 
 @command("map", dialect="m2")
 @in_quotients
+@exact_over_zz
 def map_modules(ctx, M: FreeModule, N: FreeModule | int | NoneValue, v: Any) -> Map:
     """map(M, N, v): the matrix N -> M with entries v (rows, (i,j) => f, a function of (i,j), a
     matrix, r for r times the identity); N an integer or omitted: a free source of the degrees
@@ -95,6 +96,7 @@ map_degree_changed.m2_options = ("Degree",)
 
 @command("map", dialect="m2")
 @in_quotients
+@exact_over_zz
 def map_identity(M: FreeModule) -> Map:
     """map M of a free module: its identity map."""
     return identity(M)
@@ -102,6 +104,7 @@ def map_identity(M: FreeModule) -> Map:
 
 @command("id", dialect="m2")
 @in_quotients
+@exact_over_zz
 def identity(M: FreeModule) -> Map:
     """id_M: the identity map of a free module."""
     ring = M.ring.poly
@@ -113,6 +116,7 @@ identity.subscript_value = True
 
 @command("source", dialect="m2")
 @in_quotients
+@exact_over_zz
 def source(f: Matrix) -> FreeModule:
     """source f: the free module a matrix maps from."""
     return source_of(f)
@@ -120,6 +124,7 @@ def source(f: Matrix) -> FreeModule:
 
 @command("target", dialect="m2")
 @in_quotients
+@exact_over_zz
 def target(f: Matrix) -> FreeModule:
     """target f: the free module a matrix maps to."""
     return target_of(f)
@@ -127,6 +132,7 @@ def target(f: Matrix) -> FreeModule:
 
 @command("degrees", dialect="m2")
 @in_quotients
+@exact_over_zz
 def degrees(M: FreeModule | Matrix) -> List:
     """degrees F: the degrees of a free module's generators; degrees f: those of its target and source."""
     _singly_graded(M, "degrees")
@@ -137,6 +143,7 @@ def degrees(M: FreeModule | Matrix) -> List:
 
 @command("rank", dialect="m2")
 @in_quotients
+@exact_over_zz
 def rank(M: FreeModule) -> int:
     """rank F: the number of generators of a free module."""
     return M.rank
@@ -144,6 +151,7 @@ def rank(M: FreeModule) -> int:
 
 @command("numgens", dialect="m2")
 @in_quotients
+@exact_over_zz
 def numgens(M: FreeModule) -> int:
     """numgens F: the number of generators of a free module."""
     return M.rank
@@ -151,6 +159,7 @@ def numgens(M: FreeModule) -> int:
 
 @command("isHomogeneous", dialect="m2")
 @in_quotients
+@exact_over_zz
 def is_homogeneous(f: Matrix) -> bool:
     """isHomogeneous f: whether each entry has the degree of its column minus its row's, plus f's degree."""
     _singly_graded(f, "isHomogeneous")
@@ -178,6 +187,7 @@ def _singly_graded(M: Any, what: str) -> None:
 
 @command("transpose", dialect="m2")
 @in_quotients
+@exact_over_zz
 def transpose(M: Matrix) -> Matrix:
     """transpose M: the dual map (target and source swapped, their degrees negated)."""
     entries = [M.get(i, j) for j in range(1, M.ncols + 1) for i in range(1, M.nrows + 1)]
@@ -190,6 +200,7 @@ def transpose(M: Matrix) -> Matrix:
 
 @command("dual", dialect="m2")
 @in_quotients
+@exact_over_zz
 def dual(M: Matrix) -> Matrix:
     """dual f of a map between free modules: its transpose."""
     return transpose(M)
@@ -197,6 +208,7 @@ def dual(M: Matrix) -> Matrix:
 
 @command("transpose", dialect="m2")
 @in_quotients
+@exact_over_zz
 def transpose_table(T: List) -> List:
     """transpose T: a table (a list of lists of one length) with rows and columns swapped."""
     rows = T.items

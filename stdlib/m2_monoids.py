@@ -4,13 +4,14 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..dsl.m2_rings import in_quotients
+from ..dsl.m2_rings import in_quotients, exact_over_zz
 from ..dsl.m2_values import Monoid, Symbol
 from ..dsl.registry import command
 from ..dsl.values import NONE, List, Ring
 
 
 @command("monoid", dialect="m2")
+@exact_over_zz
 def monoid(R: Ring) -> Monoid:
     """monoid R: the monoid of R's monomials (R's own variables)."""
     owner = getattr(R.poly, "owner", None) or R

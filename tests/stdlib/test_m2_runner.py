@@ -259,11 +259,11 @@ def test_classify_values_that_are_not_unique(monkeypatch, unique: str, status: s
 
 
 def test_functions_mech_lacks() -> None:
-    info = {"globals": {"setMaxIdeal": "function", "ideal": "function", "f": "function", "R": "Symbol"}}
-    code = "R = QQ[x]; setMaxIdeal x; ideal x; f = y -> y; f x"
+    info = {"globals": {"integralClosure": "function", "ideal": "function", "f": "function", "R": "Symbol"}}
+    code = "R = QQ[x]; integralClosure x; ideal x; f = y -> y; f x"
     results = [R.Result(S.Case("f:1", "Pkg", "example", "n", code), "unsupported"),
                R.Result(S.Case("f:2", "Pkg", "example", "n", code), "agree")]
-    assert R.mech_lacks(results, info) == {"setMaxIdeal": 1}
+    assert R.mech_lacks(results, info) == {"integralClosure": 1}
 
 
 def test_report_ranks_the_missing_features() -> None:
