@@ -3,9 +3,6 @@ and is not a wrong value of mech's (the report prints the reason after the diffe
 listed here still counts as ``differ``."""
 from __future__ import annotations
 
-_OVERFLOW = "Singular's machine int overflows (wraps around 64 bits); mech's integers are exact"
-_BIGINT = ("Singular reads an integer literal beyond 2^31-1 as a bigint; mech's int has any size and a bigint comes "
-           "only from bigint(...) or a bigint declaration: typeof says int where Singular says bigint")
 _EQUIDIM = ("the parts of lower dimension of equidim are made of embedded components, which are not unique; "
             "the top-dimensional part agrees")
 _LIMIT = "Singular refuses an input beyond one of its limits; mech has no such limit and computes the value"
@@ -31,11 +28,6 @@ EXPLAINED: dict[str, str] = {
     "LIB/elim.lib:elimRing": _ELIMRING,
     "Manual/reduce.tst": _LAZY,
     "Old/m113si.tst": _LAZY,
-    "Old/fak.tst": _OVERFLOW,
-    "Old/m13si.tst": _OVERFLOW,
-    "Manual/bigint_expressions.tst": _OVERFLOW,
-    "Manual/Objects.tst": _BIGINT,
-    "Manual/int_expressions.tst": _BIGINT,
     "Manual/equidim.tst": _EQUIDIM,
     "LIB/primdec.lib:equidim": _EQUIDIM,
     "Short/primdec2.tst": _EQUIDIM,
@@ -78,8 +70,6 @@ EXPLAINED: dict[str, str] = {
     "Old/hilb.tst": ("hilb of the syzygy module of three polynomials of degrees 1, 4, 4: Singular's syz gives it "
                      "those degrees as component weights (`module weights:1,4,4`) and its Hilbert series uses them; "
                      "mech's modules carry no component weights (dim, mult, degree and vdim of the module agree)"),
-    "Old/err2.tst": "Singular reads the literal 12345678901234567890 as a bigint and refuses it as an int; mech's int "
-                    "has any size (int = bigint(...) is refused as in Singular)",
 }
 
 _CHARSET = ("char_series: the series splits an ascending set whose polynomial is reducible over the algebraic "
