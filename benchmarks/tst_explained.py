@@ -139,7 +139,6 @@ NOT_RUN: dict[str, str] = {
     "Manual/exteriorBasis.tst": "exteriorBasis builds a super-commutative (noncommutative) ring: outside mech's scope",
     "LIB/matrix.lib:exteriorBasis": "exteriorBasis builds a super-commutative (noncommutative) ring: outside mech's "
                                     "scope",
-    "Manual/monomial.tst": "monomial(v) with a module component gives a vector: not built",
     "Manual/simplify.tst": "simplify(matrix, n) converts the matrix to a module and prints vectors (modules)",
     "Manual/listvar.tst": _LISTVAR,
     "LIB/general.lib:killall": ("killall kills the names Singular's names(Top) lists (its predefined objects, and with "
