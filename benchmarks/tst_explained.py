@@ -71,6 +71,11 @@ EXPLAINED: dict[str, str] = {
                         "ordering: the remainders depend on the divisors chosen (mech: 0, [0,x2+xyz,...], [0,0,x2+xyz] "
                         "for v1, v2, v3; Singular: [0,-x2-xyz,...], 0, [0,-x2-xyz,0,0,...]); each of mech's differs "
                         "from its vector by an element of m (checked in Singular); the reductions by std(m) agree"),
+    "LIB/general.lib:killall": ("killall(\"not\", \"int\") in Singular kills the packages of the loaded libraries "
+                                "on its way through names(Top), general.lib's own package General too, which ends "
+                                "the procedure before it reaches str (defined after LIB \"general.lib\"): str "
+                                "stays; mech's library commands are built in, and it kills str as killall's help "
+                                "says (all variables but the ints); the other forms agree"),
     "Old/hilb.tst": ("hilb of the syzygy module of three polynomials of degrees 1, 4, 4: Singular's syz gives it "
                      "those degrees as component weights (`module weights:1,4,4`) and its Hilbert series uses them; "
                      "mech's modules carry no component weights (dim, mult, degree and vdim of the module agree)"),
@@ -141,8 +146,6 @@ NOT_RUN: dict[str, str] = {
                                     "scope",
     "Manual/simplify.tst": "simplify(matrix, n) converts the matrix to a module and prints vectors (modules)",
     "Manual/listvar.tst": _LISTVAR,
-    "LIB/general.lib:killall": ("killall kills the names Singular's names(Top) lists (its predefined objects, and with "
-                                "general.lib's own local variables shadowing globals): not built"),
     "LIB/general.lib:kmemory": "kmemory prints Singular's memory use in kilobytes (machine-dependent): not built",
     "Manual/coeffs_1.tst": "coeffs(M, K, m) of a module with a kbase K (a module of coefficients): not built",
     "Short/intersect_s.tst": _INTERSECT, "Old/msect.tst": _INTERSECT,
