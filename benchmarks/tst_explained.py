@@ -147,7 +147,6 @@ NOT_RUN: dict[str, str] = {
     "Manual/simplify.tst": "simplify(matrix, n) converts the matrix to a module and prints vectors (modules)",
     "Manual/listvar.tst": _LISTVAR,
     "LIB/general.lib:kmemory": "kmemory prints Singular's memory use in kilobytes (machine-dependent): not built",
-    "Manual/coeffs_1.tst": "coeffs(M, K, m) of a module with a kbase K (a module of coefficients): not built",
     "Short/intersect_s.tst": _INTERSECT, "Old/msect.tst": _INTERSECT,
     "Manual/multBound.tst": ("multBound truncates Singular's std by multiplicity; the truncated basis depends on its "
                              "pair order (engines, s9-20's area)"),
