@@ -178,7 +178,6 @@ NOT_RUN.update({
     **{n: _DEFORM for n in ("Manual/T_1.tst", "Manual/T_2.tst", "Manual/T_12.tst", "Manual/deform.tst",
                             "LIB/sing.lib:T_1", "LIB/sing.lib:T_2", "LIB/sing.lib:T_12", "LIB/sing.lib:deform")},
     "Manual/breakpoint.tst": "breakpoint sets a breakpoint of Singular's debugger in a library procedure: not built",
-    "Manual/freerank.tst": "freerank is built on res and betti (resolutions, outside the scope)",
     "Manual/load_1.tst": "load(...) loads a library into Singular's top level and lists its procedures: not built",
     "Manual/pyobject_related_functions_1.tst": "python_run: Singular's embedded Python interpreter, outside the scope",
     "LIB/standard.lib:hilbRing": "hilbRing (a ring with a homogenizing variable, the ideals exported): not built",
