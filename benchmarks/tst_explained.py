@@ -107,7 +107,7 @@ NOT_RUN: dict[str, str] = {
     "Old/liste.tst": _LISTVAR, "Old/proc.tst": _LISTVAR, "Old/m96si.tst": _LISTVAR,
     "Old/m153si.tst": ("TRACE traces the procedures of Singular's libraries (general.lib's sum calls lsum); mech's "
                        "library commands are built in"),
-    "Old/m149si.tst": _LOCAL, "Old/m8ex.tst": _LOCAL, "Short/reduce_s.tst": _LOCAL, "Short/bug_tr704.tst": _LOCAL,
+    "Old/m149si.tst": _LOCAL, "Short/reduce_s.tst": _LOCAL, "Short/bug_tr704.tst": _LOCAL,
     "Buch/Example_1_8_2.tst": "division in a local ordering: the unit and quotients are Mora's choice; " + _LOCAL,
     **{f"Short/fermat_gcd_{k}.tst": _FERMAT for k in ("2var", "3var", "4var", "mod_2var", "mod_3var", "mod_4var")},
     "Short/bug_tr319.tst": "attrib(r) lists Singular's internal ring attributes (cf_class, maxExp, ring_cf, ...)",
