@@ -110,7 +110,6 @@ NOT_RUN: dict[str, str] = {
     "Old/m149si.tst": _LOCAL, "Short/reduce_s.tst": _LOCAL, "Short/bug_tr704.tst": _LOCAL,
     "Buch/Example_1_8_2.tst": "division in a local ordering: the unit and quotients are Mora's choice; " + _LOCAL,
     **{f"Short/fermat_gcd_{k}.tst": _FERMAT for k in ("2var", "3var", "4var", "mod_2var", "mod_3var", "mod_4var")},
-    "Short/bug_tr319.tst": "attrib(r) lists Singular's internal ring attributes (cf_class, maxExp, ring_cf, ...)",
     "Short/bug_tr873.tst": "a polynomial ring as the coefficient domain (ring R = F,(c),dp with F = 0,(a,b),dp): "
                            "not a field, outside mech's coefficient fields",
     "Old/string.tst": "Singular reports the error of s1[0] and goes on with the next statements; mech stops",
