@@ -113,7 +113,6 @@ NOT_RUN: dict[str, str] = {
     "Short/bug_tr873.tst": "a polynomial ring as the coefficient domain (ring R = F,(c),dp with F = 0,(a,b),dp): "
                            "not a field, outside mech's coefficient fields",
     "Old/string.tst": "Singular reports the error of s1[0] and goes on with the next statements; mech stops",
-    "Old/teste.tst": "test(...) sets Singular's option bits by number",
     "Short/bug_17.tst": "primdecGTZ over Z/2: mech's zero-dimensional step needs a primitive element, which Z/2 is too "
                         "small to give (kernel primary decomposition, s9-18's area)",
     "Short/primdec2.tst": "equidimMax of a 9-variable ideal through mech's full primary decomposition (Singular uses "
