@@ -168,10 +168,7 @@ def test(ctx, *bits: int) -> None:
       → //options: prot 15 redefine usage prompt
     """
     from ..dsl.options import OPTION_BITS
-    if not getattr(ctx, "told_test", False):
-        ctx.warn("Gerhard, use the option command")
-        ctx.told_test = True
-    for k in bits:
+    for k in bits:  # (Singular also prints a note now and then: "Gerhard, use the option command")
         name = OPTION_BITS.get(abs(k), str(abs(k)))
         if name is None:
             continue
