@@ -34,6 +34,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict
@@ -284,7 +285,9 @@ def main(argv: Optional[list[str]] = None) -> int:
     todo = [c for c in cases if c.excluded is None]
     excluded = [c for c in cases if c.excluded is not None]
     t0 = time.perf_counter()
-    runs = _run_all(todo, singular, args.mech.split(), args.timeout, args.jobs, stored, args.show)
+    if args.results:
+        args.results.write_text("")  # filled case by case, so that a run stopped early keeps what it did
+    runs = _run_all(todo, singular, args.mech.split(), args.timeout, args.jobs, stored, args.show, args.results)
     minutes = (time.perf_counter() - t0) / 60
     if args.results:
         args.results.write_text("".join(json.dumps({**asdict(r), "mech": raw}) + "\n" for r, raw in runs))
@@ -308,9 +311,11 @@ def _selected(name: str, patterns: Optional[list[str]]) -> bool:
 
 
 def _run_all(cases: list[Case], singular: Singular, mech_cmd: list[str], timeout: float, jobs: int,
-             stored: dict, show: bool) -> list[tuple[Result, Optional[dict]]]:
-    """Each case's result and mech's raw run (None when mech did not run), in the order of ``cases``."""
+             stored: dict, show: bool, results: Optional[Path] = None) -> list[tuple[Result, Optional[dict]]]:
+    """Each case's result and mech's raw run (None when mech did not run), in the order of ``cases``;
+    each appended to ``results`` (JSON lines) as it finishes."""
     done = 0
+    lock = threading.Lock()
 
     def one(case: Case) -> tuple[Result, Optional[dict]]:
         nonlocal done
@@ -324,7 +329,11 @@ def _run_all(cases: list[Case], singular: Singular, mech_cmd: list[str], timeout
                 r = aside
         except Exception as e:  # the runner's own failure on one case must not end the run
             r = Result(case.name, "set aside", f"runner failure: {type(e).__name__}: {e}")
-        done += 1
+        with lock:
+            done += 1
+            if results:
+                with results.open("a") as f:
+                    f.write(json.dumps({**asdict(r), "mech": raw}) + "\n")
         print(f"[{done}/{len(cases)}] {case.name}: {r.category} {r.key} ({r.seconds:.1f} s)", file=sys.stderr,
               flush=True)
         if show:

@@ -6,6 +6,7 @@ from typing import Any, Optional
 from lark import Token, Transformer_NonRecursive, v_args
 from lark.exceptions import VisitError
 
+from .machine_int import literal
 from . import ast as A
 from .errors import MechSyntaxError, Source
 from .types import block_types, find_type
@@ -56,7 +57,7 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
 
     @v_args(meta=True)
     def int_lit(self, meta, c):
-        return A.IntLit(parse_int(c[0]), pos=token_pos(c[0]))
+        return A.IntLit(literal(parse_int(c[0])), pos=token_pos(c[0]))
 
     @v_args(meta=True)
     def rat_lit(self, meta, c):

@@ -18,6 +18,7 @@ from . import ast as A
 from . import ops
 from .boundary import convert_exception
 from .errors import MechError, MechRuntimeError
+from .machine_int import MAX64, MIN64, int32
 from .signals import SIGNALS, BreakSignal, ContinueSignal, ReturnSignal
 from .values import NONE, ExprList, Ideal, IntVec, List, Matrix, Proc
 
@@ -167,7 +168,9 @@ def _binop(node: A.BinOp, depth: int) -> Fn:
         b = rf(it)
         ta, tb = type(a), type(b)
         if ta is int and tb is int and fast is not None:
-            return fast(a, b)
+            r = fast(a, b)
+            if MIN64 <= r <= MAX64:
+                return r  # else Singular's 64-bit wrap-around below
         try:
             if slow is not None and ta is int and tb is int:
                 return slow(a, b)
@@ -193,7 +196,8 @@ def _binop(node: A.BinOp, depth: int) -> Fn:
 INT_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
             "<": lambda a, b: int(a < b), "<=": lambda a, b: int(a <= b), ">": lambda a, b: int(a > b),
             ">=": lambda a, b: int(a >= b), "==": lambda a, b: int(a == b), "!=": lambda a, b: int(a != b)}
-_INT_DIV = {"div": ops.trunc_div, "mod": ops.trunc_mod}  # these raise "division by 0"
+#: div and mod read their operands as 32-bit ints, as Singular's; they raise "division by 0"
+_INT_DIV = {"div": lambda a, b: ops.trunc_div(int32(a), int32(b)), "mod": lambda a, b: ops.trunc_mod(int32(a), int32(b))}
 _POLY_OPS = {"+": Poly.__add__, "-": Poly.__sub__, "*": Poly.__mul__}
 
 

@@ -9,6 +9,7 @@ from . import ops
 from .boundary import convert_exception
 from .compiled import INT_OPS, arg_names, expr_fn
 from .errors import MechError, MechRuntimeError, MechTypeError
+from .machine_int import MAX64, MIN64, int_binary
 from .limits import LimitExceeded, limit_error
 from .signals import SIGNALS
 from .intmat import IntMat
@@ -90,7 +91,7 @@ class Expressions:
         if type(node.left) is not A.BinOp:  # the common case: one operator
             a, b = self.eval(node.left), self.eval(node.right)
             if type(a) is int and type(b) is int and op in INT_OPS and self.compiled:
-                return INT_OPS[op](a, b)
+                return self._int_op(op, a, b)
             return self._binary(op, a, b)
         spine = [node]  # a long sum x+y+...+z nests to the left: evaluate its left spine by a loop
         while type(spine[-1].left) is A.BinOp and spine[-1].left.op not in ("&&", "||"):
@@ -99,7 +100,7 @@ class Expressions:
         for n in reversed(spine[1:]):
             b = self.eval(n.right)
             if type(a) is int and type(b) is int and n.op in INT_OPS and self.compiled:
-                a = INT_OPS[n.op](a, b)
+                a = self._int_op(n.op, a, b)
                 continue
             try:
                 a = self._binary(n.op, a, b)
@@ -111,13 +112,21 @@ class Expressions:
                 raise convert_exception(e).locate(n.pos, self.source, True) from None
         b = self.eval(node.right)
         if type(a) is int and type(b) is int and op in INT_OPS and self.compiled:
-            return INT_OPS[op](a, b)
+            return self._int_op(op, a, b)
         return self._binary(op, a, b)
+
+    def _int_op(self, op: str, a: int, b: int) -> int:
+        r = INT_OPS[op](a, b)
+        return r if MIN64 <= r <= MAX64 else self._binary(op, a, b)  # beyond 64 bits: Singular's wrap-around
 
     def _binary(self, op: str, a: Any, b: Any) -> Any:
         ring = self.ring.poly if self.ring else None
         if op in ("==", "!=", "<", "<=", ">", ">="):
             return ops.compare(op, a, b, ring)
+        if type(a) is int and type(b) is int:
+            r = int_binary(op, a, b, self.warn)
+            if r is not None:
+                return r
         return ops.binary(op, a, b, ring, self.warn_in_line)
 
     def _eval_unop(self, node: A.UnOp) -> Any:

@@ -13,6 +13,7 @@ import re
 from functools import lru_cache
 from typing import Any, Callable, Optional
 
+from .machine_int import literal
 from . import ast as A
 from .split import statement_ends
 from .templates import make, shape
@@ -133,7 +134,7 @@ def _leaf(tok: tuple) -> A.Expr:
     if kind == "IDENT" or kind == "#":
         return A.Name(value, pos=pos)
     if kind == "NUMBER":
-        return A.IntLit(_int(value), pos=pos)
+        return A.IntLit(literal(_int(value)), pos=pos)
     if kind == "RATIONAL":
         num, den = value.split("/")
         return A.RatLit(_int(num), _int(den), pos=pos)

@@ -72,6 +72,7 @@ class Interpreter(Statements, Declarations, Assignment, Procedures, Libraries, M
         self.ring: Optional[Ring] = None
         self.rings: weakref.WeakSet[Ring] = weakref.WeakSet()  # for 'it belongs to ring r' hints
         self.options: set[str] = set(DEFAULT_OPTIONS)
+        self.explicit_options: set[str] = set()  # set by option(...) or test(...), whatever the ring brings
         self.loaded_libs: set[str] = set()
         self._loading_lib = ""  # the library whose source runs (its procedures belong to it)
         self.source = Source("<string>", "")

@@ -40,7 +40,7 @@ from pathlib import Path
 from typing import Any, Callable, Optional, Protocol
 
 from .errors import MechNameError, MechTypeError
-from .values import (NONE, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring,
+from .values import (NONE, BigInt, ExprList, Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring,
                           to_ideal, to_intvec, to_matrix, to_number, to_poly, typeof)
 from ..kernel import Poly, PolyRing
 from .convert_modules import to_module, to_vector
@@ -299,6 +299,7 @@ _NO = object()
 
 # implicit conversions: target type -> (source types, converter(value, ring))
 _COERCE: dict[type, tuple[tuple, Callable[[Any, Optional[PolyRing]], Any]]] = {
+    int: ((BigInt,), lambda v, r: v),  # a bigint literal (beyond 2^31-1) where a command takes an int
     Number: ((int,), to_number),
     Poly: ((int, Number), to_poly),
     Ideal: ((int, Number, Poly), to_ideal),

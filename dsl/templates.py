@@ -20,6 +20,7 @@ from typing import Any, Callable, Optional
 from ..kernel import Poly
 from . import ast as A
 from . import compiled
+from .machine_int import literal
 
 #: a number literal (or a rational's numerator or denominator, or a monomial's coefficient): digits
 #: not glued to a name or to more digits (longer ones stay in the shape: the builder checks them)
@@ -178,7 +179,7 @@ def _literal(slot: tuple, lits: list[str]) -> A.Expr:
     """The literal node of ``slot`` with the numbers ``lits``."""
     kind, idx, node = slot
     if kind is A.IntLit:
-        return A.IntLit(int(lits[idx[0]]), pos=node.pos)
+        return A.IntLit(literal(int(lits[idx[0]])), pos=node.pos)
     if kind is A.RatLit:
         return A.RatLit(int(lits[idx[0]]), int(lits[idx[1]]), pos=node.pos)
     den = int(lits[idx[1]]) if len(idx) > 1 else 1
@@ -188,7 +189,7 @@ def _literal(slot: tuple, lits: list[str]) -> A.Expr:
 def _slot_fn(kind: type, idx: tuple, node: Any) -> Callable[[Any], Any]:
     if kind is A.IntLit:
         k = idx[0]
-        return lambda it: int(it.lits[k])
+        return lambda it: literal(int(it.lits[k]))
     slot = (kind, idx, node)
     if kind is A.MonomLit:
         return _monomial_fn(slot)

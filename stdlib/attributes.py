@@ -15,7 +15,8 @@ from ..dsl.values import NONE, Ideal, Ring, typeof
 def attrib(ctx, node: A.Expr, *rest: A.Expr) -> Any:
     """attrib(x): print the attributes of the variable x; attrib(x, name): the attribute's value
     (attrib(I, "isSB"): 1 if the ideal I is marked as a standard basis, else 0; attrib(r, "global"):
-    1 if the ring r has a global ordering); attrib(x, name, value) sets it (attrib(I, "isSB", 1)
+    1 if the ring r has a global ordering; a ring lists Singular's internal attributes cf_class, global,
+    maxExp, ring_cf, isLetterplaceRing first); attrib(x, name, value) sets it (attrib(I, "isSB", 1)
     marks I as a standard basis, 0 removes the mark).
 
     Example:
@@ -33,10 +34,9 @@ def attrib(ctx, node: A.Expr, *rest: A.Expr) -> Any:
     marked = isinstance(value, Ideal) and value.is_std
     table = _table(ctx, node, value, create=False)
     if not rest:
-        if isinstance(value, Ring):
-            raise MechRuntimeError("attrib(r) of a ring is not supported (Singular lists its internal attributes)")
-        lines = (["attr:isSB, type int"] if marked else []) + \
-            [f"attr:{k}, type {typeof(v)}" for k, v in reversed(list((table or {}).items()))]
+        lines = [f"attr:{k}, type int" for k in _RING_INTERNAL] if isinstance(value, Ring) else []
+        lines += (["attr:isSB, type int"] if marked else []) + \
+            [f"attr:{k}, type {typeof(v)} " for k, v in reversed(list((table or {}).items()))]  # (sic)
         ctx.write("\n".join(lines) + "\n" if lines else "no attributes\n")
         return None
     name = ctx.eval(rest[0])
@@ -47,6 +47,11 @@ def attrib(ctx, node: A.Expr, *rest: A.Expr) -> Any:
             return int(marked)
         if name == "global" and isinstance(value, Ring):
             return int(value.poly.order.is_global)
+        if name == "isLetterplaceRing" and isinstance(value, Ring):
+            return 0
+        if name in _RING_INTERNAL and isinstance(value, Ring):
+            raise MechRuntimeError(f'attrib(r, "{name}"): Singular\'s internal attribute of its ring data is not '
+                                   "supported")
         return (table or {}).get(name, NONE)
     if len(rest) > 2:
         raise MechRuntimeError("attrib(x, name, value) takes three arguments")
@@ -63,6 +68,9 @@ def attrib(ctx, node: A.Expr, *rest: A.Expr) -> Any:
     ctx.assign(node, Ideal(value.ring, value.gens, is_std=bool(flag)))
     return None
 
+
+#: the internal attributes Singular lists first for every ring (attrib(r))
+_RING_INTERNAL = ("cf_class", "global", "maxExp", "ring_cf", "isLetterplaceRing")
 
 #: attributes with a meaning in Singular that mech does not give them
 _RESERVED = frozenset(("global", "isHomog", "rank", "qringNF", "maxExp", "ring_cf", "cf_class",

@@ -7,7 +7,7 @@ from typing import Any, Callable
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
-from ..dsl.values import Ideal, IntVec, List, Matrix, Number
+from ..dsl.values import BigInt, Ideal, IntVec, List, Matrix, Number
 from ..kernel import Poly
 
 
@@ -134,7 +134,7 @@ def _farey_poly(p: Poly, n: int) -> Poly:
 
 
 @command("farey")
-def farey(ctx, x: int | Poly | Ideal | Matrix, n: int) -> Any:
+def farey(ctx, x: int | Poly | Ideal | Matrix, n: int | BigInt) -> Any:
     """farey(x, N): the rational number a/b with a = b*x mod N and 2a^2 < N found by the extended
     Euclidean algorithm (0 when there is none, x itself when a and b are not coprime), for an integer
     x or each coefficient of a polynomial (giving an ideal, as Singular), ideal or matrix (over QQ).
@@ -149,7 +149,7 @@ def farey(ctx, x: int | Poly | Ideal | Matrix, n: int) -> Any:
     if n <= 1:
         raise MechRuntimeError("farey: the modulus must be at least 2")
     f: Callable[[Poly], Poly] = lambda p: _farey_poly(p, n)
-    if type(x) is int:
+    if isinstance(x, int):
         ring = ctx.basering().poly
         p = f(ring.const(x))
         return Number(ring, p.terms.get(ring.zero_exp, ring.field(0)))

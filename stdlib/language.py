@@ -138,11 +138,9 @@ def option(ctx, *nodes: A.Expr) -> None:
       option();
       → //options: redSB redTail redThrough intStrategy redefine usage prompt
     """
-    from ..dsl.options import OPTION_ORDER
+    from ..dsl.options import OPTION_ORDER, shown_options
     if not nodes:
-        shown = [o for o in OPTION_ORDER if o in ctx.options]
-        shown += sorted(o for o in ctx.options if o not in OPTION_ORDER)
-        ctx.write("//options: " + " ".join(shown) + "\n")
+        ctx.write("//options: " + " ".join(shown_options(ctx.options, ctx.explicit_options, ctx.ring)) + "\n")
         return
     for n in nodes:
         if not isinstance(n, (A.Name, A.StrLit)):
@@ -150,10 +148,36 @@ def option(ctx, *nodes: A.Expr) -> None:
         name = n.id if isinstance(n, A.Name) else n.value
         if name.startswith("no") and name[2:] in OPTION_ORDER:
             ctx.options.discard(name[2:])
+            ctx.explicit_options.discard(name[2:])
             continue
         if name not in OPTION_ORDER:
             raise MechNameError(f"unknown option '{name}'")
         ctx.options.add(name)
+        ctx.explicit_options.add(name)
+
+
+@command("test")
+def test(ctx, *bits: int) -> None:
+    """test(k, ...): Singular's old way to set options by bit number (k >= 0 sets bit k, -k clears it);
+    option(name) is the one to use.
+
+    Example:
+      ring r = 32003,(x,y),ls;
+      test(0, 15);
+      option();
+      → //options: prot 15 redefine usage prompt
+    """
+    from ..dsl.options import OPTION_BITS
+    for k in bits:  # (Singular also prints a note now and then: "Gerhard, use the option command")
+        name = OPTION_BITS.get(abs(k), str(abs(k)))
+        if name is None:
+            continue
+        if k < 0:
+            ctx.options.discard(name)
+            ctx.explicit_options.discard(name)
+        else:
+            ctx.options.add(name)
+            ctx.explicit_options.add(name)
 
 
 @command("system")

@@ -19,6 +19,7 @@ from ..dsl.convert_modules import to_module, to_vector
 from ..dsl.values_modules import Module, Vector, gen as make_gen, kernel_key, lead_term
 from ..kernel import Poly, PolyRing
 from ..kernel import modules as km
+from ..kernel.module_mora import mora_normal_form
 
 
 def _plain(ring: PolyRing, what: str) -> None:
@@ -219,6 +220,9 @@ def std(m: Module) -> Module:
 
 def _reduce_vec(ctx: Any, v: Vector, m: Module) -> Vector:
     key = kernel_key(m.ring)
+    if not m.ring.order.is_global:  # Mora's normal form (over a qring, the quotient's columns as divisors)
+        gens = [g for g in _vecs(m) if g] + q_columns(m.ring, max(m.rank, v.nrows))
+        return Vector.from_terms(m.ring, mora_normal_form(v.terms(), gens, key))
     gb = km.ModuleGB(m.ring, m.rank, key=key)
     extra = q_columns(m.ring, max(m.rank, v.nrows))
     gb._set_basis([g for g in _vecs(m) if g] + extra, [lead_term(g) for g in m.nonzero()]
@@ -229,9 +233,8 @@ def _reduce_vec(ctx: Any, v: Vector, m: Module) -> Vector:
 @command("reduce")
 def reduce(ctx, f: Vector | Module | Poly | Ideal, m: Module) -> Vector | Module:
     """reduce(v, M): the normal form of the vector v (each generator of a module) by the standard
-    basis M (a warning when M is not marked as one); over a qring by M and the quotient's ideal."""
-    if not m.ring.order.is_global:
-        raise MechRuntimeError("reduce of a module in a local or mixed ordering is not supported")
+    basis M (a warning when M is not marked as one); over a qring by M and the quotient's ideal; in a
+    local or mixed ordering Mora's normal form (no tail reduced, as Singular's)."""
     if not m.is_std and len(m.nonzero()) > 1:  # as Singular: one generator is a standard basis
         ctx.warn(f"{ctx.argnames[1] if len(ctx.argnames) > 1 else '_'} is no standard basis")
     if isinstance(f, (Poly, Ideal)):
@@ -242,6 +245,18 @@ def reduce(ctx, f: Vector | Module | Poly | Ideal, m: Module) -> Vector | Module
 
 
 command("NF")(reduce)
+
+
+@command("reduce")
+def reduce_by_ideal(ctx, f: Vector | Module, i: Ideal) -> Vector | Module:
+    """reduce(v, I): the normal form of a vector (each generator of a module) by the submodule I*R^n
+    (n: the vector's rank), as in Singular; a standard basis I gives one of I*R^n."""
+    n = max(1, f.nrows if isinstance(f, Vector) else f.rank)
+    gens = [{(e, k): c for (e, _), c in g.items()} for g in _vecs(to_module(i, i.ring)) for k in range(n)]
+    return reduce(ctx, f, _module(i.ring, gens, n, i.is_std or len(i.gens) == 1))
+
+
+command("NF")(reduce_by_ideal)
 
 
 @command("syz")

@@ -8,7 +8,7 @@ is the first part of the syzygies of [p*e_1, ..., p*e_r | M].
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import Callable, Optional
 
 from ..dsl.registry import command
 from ..dsl.values import Ideal
@@ -89,23 +89,28 @@ def interred(M: Module) -> Module:
     """interred(M): generators of M with no leading term dividing another's and reduced tails."""
     ring = M.ring
     _global(ring, "interred")
-    gens = [g for g in _vecs(M) if g]
+    return _module(ring, interreduce(ring, M.rank, _vecs(M), _key(ring)), M.rank)
+
+
+def interreduce(ring: PolyRing, rank: int, vecs: list[dict], key: Callable[[tuple], tuple]) -> list[dict]:
+    """Vectors generating the same module as ``vecs`` for the global module order ``key``, none with a
+    leading term dividing another's, tails reduced, scaled as Singular's std and sorted by leading term."""
+    gens = [g for g in vecs if g]
     changed = True
     while changed:
         changed = False
         for i in range(len(gens)):
             others = [g for j, g in enumerate(gens) if j != i and g]
-            gb = km.ModuleGB(ring, M.rank, key=_key(ring))
-            gb._set_basis(others, [lead_term(Vector.from_terms(ring, g)) for g in others])
+            gb = km.ModuleGB(ring, rank, key=key)
+            gb._set_basis(others, [max(g, key=key) for g in others])
             red = gb.reduce(gens[i])
             if red != gens[i]:
                 gens[i], changed = red, True
         gens = [g for g in gens if g]
     from .module_commands import _normalized
-    key = _key(ring)
     out = [_normalized(ring, g, max(g, key=key)) for g in gens]
     out.sort(key=lambda g: key(max(g, key=key)))
-    return _module(ring, out, M.rank)
+    return out
 
 
 @command("eliminate")

@@ -1,16 +1,18 @@
 """Singular's built-in ``monomial(v)``: the monomial with exponent vector v (entries beyond the number of
-variables are ignored, except that an entry n+1 gives a module component, which needs vectors)."""
+variables are ignored, except that a nonzero entry n+1 gives a module component: a vector)."""
 from __future__ import annotations
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
 from ..dsl.values import IntVec
+from ..dsl.values_modules import Vector
 from ..kernel import Poly
 
 
 @command("monomial")
-def monomial(ctx, v: IntVec) -> Poly:
-    """monomial(v): the monomial of the basering with exponent vector v.
+def monomial(ctx, v: IntVec) -> Poly | Vector:
+    """monomial(v): the monomial of the basering with exponent vector v (with n+1 entries, n the number of
+    variables, and a last one k > 0: the monomial times gen(k)).
 
     Example:
       ring r = 0,(x,y,z),dp;
@@ -22,7 +24,7 @@ def monomial(ctx, v: IntVec) -> Poly:
     if any(k < 0 for k in e):
         raise MechRuntimeError("monomial: no negative exponent allowed")
     n = ring.nvars
+    m = ring.monomial(tuple((e + [0] * n)[:n]))
     if len(e) == n + 1 and e[n]:
-        raise MechRuntimeError("monomial with a module component (a vector) is not supported")
-    e = (e + [0] * n)[:n]
-    return ring.monomial(tuple(e))
+        return Vector.from_terms(ring, {(m.lm(), e[n] - 1): ring.field.one})
+    return m

@@ -183,8 +183,12 @@ def coeffs(ctx, f_node: A.Expr, v_node: A.Expr, *t_node: A.Expr) -> Matrix:
       → 2z,
       → 3y
     """
-    from ..dsl.values_modules import Vector
+    from ..dsl.values_modules import Module, Vector
     f, v = ctx.eval(f_node), ctx.eval(v_node)
+    if isinstance(f, (Ideal, Module)) and isinstance(v, (Ideal, Module)) and len(t_node) == 1:
+        m = ctx.eval(t_node[0])
+        if isinstance(m, Poly):
+            return _coeffs_in_basis(f, v, m)
     if isinstance(f, Vector) and isinstance(v, Poly) and not t_node:  # each entry's column, one under another
         cols = _coeffs(Ideal(f.ring, list(f.entries) or [f.ring.zero()]), v)
         return Matrix(v.ring, cols.nrows * cols.ncols, 1,
@@ -198,6 +202,27 @@ def coeffs(ctx, f_node: A.Expr, v_node: A.Expr, *t_node: A.Expr) -> Matrix:
         x = v.ring.gen(i)
         ctx.assign(t_node[0], Matrix(v.ring, 1, m.nrows, [x ** k for k in range(m.nrows)]))
     return m
+
+
+def _coeffs_in_basis(f: Any, basis: Any, m: Poly) -> Matrix:
+    """coeffs(M, K, m): the coefficients (polynomials in the variables not in the product m) of M's
+    columns in the basis K of monomial vectors in the variables of m, each K[k] standing for its leading
+    monomial; the terms of M with no such monomial are dropped (K*coeffs(M, K, m) is M only when K is a
+    basis of all of them)."""
+    from ..dsl.convert_modules import to_module
+    from ..dsl.values_modules import lead_term
+    ring = m.ring
+    idx = _coef_vars(m)
+    cols, ks = to_module(f, ring).gens, to_module(basis, ring).gens
+    where = {lead_term(k): r for r, k in enumerate(ks) if not k.is_zero()}
+    entries = [[ring.zero()] * len(cols) for _ in ks]
+    for c, v in enumerate(cols):
+        for (e, comp), a in v.terms().items():
+            key = (tuple(x if i in idx else 0 for i, x in enumerate(e)), comp)
+            r = where.get(key)
+            if r is not None:
+                entries[r][c] = entries[r][c] + ring.monomial(tuple(0 if i in idx else x for i, x in enumerate(e))) * a
+    return Matrix(ring, len(ks), len(cols), [x for row in entries for x in row])
 
 
 def _coeffs(f: Poly | Ideal, v: Poly) -> Matrix:

@@ -399,10 +399,10 @@ def option_is_set(ctx, name: str) -> int:
       → 1
     """
     from ..dsl.errors import MechNameError
-    from ..dsl.options import OPTION_ORDER
+    from ..dsl.options import OPTION_ORDER, shown_options
     base = name[2:] if name.startswith("no") and name[2:] in OPTION_ORDER else name
     if base not in OPTION_ORDER:
         raise MechNameError(f"unknown option '{name}'")
-    shown = [o for o in OPTION_ORDER if o in ctx.options] + sorted(o for o in ctx.options if o not in OPTION_ORDER)
+    shown = shown_options(ctx.options, ctx.explicit_options, ctx.ring)
     return int(name in " ".join(shown))
 

@@ -245,7 +245,8 @@ def _nf(f: Poly, basis: list[Poly], bad_ecart: bool = False) -> Poly:
 def _reduce(ctx: Any, f: Any, I: Ideal, bad_ecart: bool = False) -> Any:
     """reduce(f, I); ``bad_ecart``: Singular's option 2 (local orderings: the tail is reduced also
     by elements of bad ecart)."""
-    ctx.assume_std(I, 1)
+    if len(I.gens) > 1:  # as Singular: an ideal of one generator is a standard basis
+        ctx.assume_std(I, 1)
     key = I.ring.order.key
     basis = sorted(with_quotient(I.nonzero(), I.ring), key=lambda g: key(g.lm()))  # from the smallest
     if isinstance(f, Poly):

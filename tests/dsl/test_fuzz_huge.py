@@ -53,7 +53,8 @@ def test_nesting_built_at_run_time():
 def test_huge_exponents():
     assert outcome("ring r = 0, (x,y), dp; poly f = x^1000000; f; deg(f * y^1000000);") == "x1000000\n2000000\n"
     assert outcome("ring r = 0, x, dp; x^(2^62);") == f"x{2 ** 62}\n"
-    assert outcome("3^99999999;").startswith("error: int too large")
+    # an int power wraps around 64 bits as Singular's (one modular power, no huge number built)
+    assert outcome("3^99999999;") == "// ** int overflow(^), result may be wrong\n1826112817018578603\n"
     assert outcome("ring r = 0, x, dp; number n = 3; n^1000000000;").startswith("error: number too large")
     assert outcome("ring r = 32003, x, dp; number n = 3; n^1000000000;") == "-2425\n"  # pow(3, 10**9, 32003)
 

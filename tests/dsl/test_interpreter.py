@@ -134,9 +134,12 @@ def test_libraries():
 
 
 def test_options_timer_system_execute():
+    # as Singular: redTail, redThrough and intStrategy come with a ring (a degree ordering, char 0)
     assert run("option(); option(redSB); option(); option(noredSB);") == (
-        "//options: redTail redThrough intStrategy redefine usage prompt\n"
-        "//options: redSB redTail redThrough intStrategy redefine usage prompt\n")
+        "//options: redefine usage prompt\n//options: redSB redefine usage prompt\n")
+    assert run("ring r = 0,x,dp; option(); ring s = 32003,x,ls; option(); test(0, 15); option();") == (
+        "//options: redTail redThrough intStrategy redefine usage prompt\n//options: redefine usage prompt\n"
+        "//options: prot 15 redefine usage prompt\n")
     assert "unknown option" in error("option(nonsense);").message
     assert run('system("--ticks-per-sec", 1000); int t = timer; int t2 = rtimer; timer - t >= 0;') == "1\n"
     assert run('execute("int k = 4;"); k;') == "4\n"

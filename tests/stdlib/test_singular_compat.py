@@ -129,6 +129,13 @@ J = x2, x2+y;
 attrib(J, "isSB");
 int i = 3;
 attrib(i);
+attrib(r, "lll", "str1");
+intmat m[1][1] = -4;
+attrib(r, "ll", m);
+attrib(r);
+attrib(r, "ll"); attrib(r, "global"); attrib(r, "isLetterplaceRing");
+ring s = 0,(x,y),ds;
+attrib(s); attrib(s, "global");
 """,
     "intmat": """
 intmat m[2][3] = 1,-2,3,40,5;

@@ -56,6 +56,7 @@ timeFactorize(x2-y2);
     "monomial": """
 ring r = 0,(x,y,z),dp;
 monomial(intvec(2,3)); monomial(intvec(1,2,3,4,5)); monomial(intvec(0,0,0,0)); leadexp(monomial(intvec(0,4)));
+monomial(intvec(2,3,0,1)); leadexp(monomial(intvec(2,3,0,1))); monomial(intvec(1,0,0,3));
 """,
     "sprintf_sba": """
 ring r = 0,(x,y,z),dp;

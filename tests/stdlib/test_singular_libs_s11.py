@@ -17,6 +17,15 @@ from tests.util import output_lines, run, run_singular
 pytestmark = pytest.mark.singular
 
 SNIPPETS = {
+    "coeffs_in_a_basis": """
+ring r = 32003,(x,y,z),dp;
+module M = [y3+x2z, xy], [-xy, y2+x2z];
+module K = [x2, xy], [y3, xy], [xy, x];
+print(coeffs(M, K, xy));
+module M2 = [x2z+y, 3xz], [y, x];
+module K2 = [x,0],[0,x],[y,0],[0,y],[1,0],[0,1];
+print(coeffs(M2, K2, xy)); print(coeffs(M2, K2, x));
+""",
     "select_modules": """
 LIB "elim.lib";
 ring r = 0,(x,y,t,s,z),dp;
