@@ -43,6 +43,7 @@ from .collector import paused
 from .coeffs import Field, PrimeField, RationalField
 from .errors import EngineError
 from .f4 import f4_modp, reduce_modp
+from .flint_reduce import FLINT_TERMS, reduce_basis_qq
 from .fglm import NotZeroDimensional, fglm_qq, fglm_zp, staircase
 from .hilbert_driven import degree_leads, hilbert_driven, hilbert_f4
 from .lazard import lazard
@@ -383,7 +384,12 @@ def _finish(basis: list[Terms], ring: PolyRing, reduced: bool) -> list[Poly]:
     """An engine's basis as the entry point returns it (see :func:`standard_basis`)."""
     if ring.order.is_global:
         if not reduced:
-            reduce = reduce_modp if isinstance(ring.field, PrimeField) else reduce_basis
+            if isinstance(ring.field, PrimeField):
+                reduce = reduce_modp
+            elif isinstance(ring.field, RationalField) and sum(map(len, basis)) >= FLINT_TERMS:
+                reduce = reduce_basis_qq
+            else:
+                reduce = reduce_basis
             return [Poly(ring, b) for b in reduce(basis, ring)]
         out = []
         for b in basis:

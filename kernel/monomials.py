@@ -79,6 +79,7 @@ class Packing:
             pos += w
         shifts.reverse()
         self.bits = pos
+        self.weight_shifts, self.weight_widths = shifts[:n], widths[:n]  # the fields of W e
         # a graded ordering (first weight row positive): its weighted degree is the top field
         self.graded = all(v > 0 for v in W[0])
         self.wshift = shifts[0]
