@@ -381,7 +381,9 @@ def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
 
 
 def _finish(basis: list[Terms], ring: PolyRing, reduced: bool) -> list[Poly]:
-    """An engine's basis as the entry point returns it (see :func:`standard_basis`)."""
+    """An engine's basis as the entry point returns it (see :func:`standard_basis`); a global
+    basis not ``reduced`` is reduced by F4's back substitution over Z/p, by flint over QQ (from
+    :data:`.flint_reduce.FLINT_TERMS` terms), else by Buchberger's reduction."""
     if ring.order.is_global:
         if not reduced:
             if isinstance(ring.field, PrimeField):
