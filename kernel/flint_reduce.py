@@ -48,6 +48,7 @@ def reduce_basis_qq(basis: Sequence[dict[Exp, Any]], ring: PolyRing) -> list[dic
                      if not any(((lm | guard) - l2) & guard == guard and (l2 != lm or j < k)
                                 for j, l2 in enumerate(leads) if j != k))
     embedded: dict[Exp, tuple[int, ...]] = {}
+    exponent: dict[tuple, Exp] = {}
     done: list[flint.fmpz_mpoly] = []
     out = []
     for _, k in minimal:
@@ -70,7 +71,13 @@ def reduce_basis_qq(basis: Sequence[dict[Exp, Any]], ring: PolyRing) -> list[dic
         done.append(f)
         monoms, coeffs = f.monoms(), f.coeffs()
         lc = coeffs[0]
-        out.append({m[n:]: flint.fmpq(c, lc) for m, c in zip(monoms, coeffs)})
+        exps = []
+        for m in monoms:
+            e = exponent.get(m)
+            if e is None:
+                e = exponent[m] = tuple(map(int, m[n:]))  # flint's exponents are fmpz
+            exps.append(e)
+        out.append({e: flint.fmpq(c, lc) for e, c in zip(exps, coeffs)})
     return out
 
 

@@ -29,6 +29,7 @@ def test_same_reduced_basis_as_buchberger(blocks, texts):
     assert ours == reduce_basis(G, R)
     key = R.order.key
     assert all(next(iter(b)) == max(b, key=key) for b in ours)  # leading exponent first
+    assert all(type(a) is int for b in ours for e in b for a in e)
     assert [key(next(iter(b))) for b in ours] == sorted(key(next(iter(b))) for b in ours)
 
 
