@@ -43,8 +43,9 @@ from .collector import paused
 from .coeffs import Field, PrimeField, RationalField
 from .errors import EngineError
 from .f4 import f4_modp, reduce_modp
+from .flint_reduce import FLINT_TERMS, reduce_basis_qq
 from .fglm import NotZeroDimensional, fglm_qq, fglm_zp, staircase
-from .hilbert_driven import hilbert_driven, hilbert_f4
+from .hilbert_driven import degree_leads, hilbert_driven, hilbert_f4
 from .lazard import lazard
 from .local_policy import auto_local
 from .modular import ModularFailure, SmallSystem, f4_qq
@@ -307,8 +308,14 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
             try:
                 return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
             except TooLong:
-                basis = basis or _degree_basis(gens, ring)
+                # positive-dimensional ideals need the dp basis of the homogenized generators (the
+                # Hilbert series), which tells the dimension too: the ideal's own dp basis is
+                # computed only for FGLM
+                if basis is None and _finite_quotient(degree_leads(gens, ring, _dp_auto), ring.nvars):
+                    basis = _degree_basis(gens, ring)
         try:
+            if basis is None:
+                raise NotZeroDimensional("known from the homogenized ideal")
             if kind == "QQ" and not lex and len(staircase([b.lm() for b in basis], ring.nvars)) >= FGLM_STAIRS:
                 return _finish(hilbert_f4(gens, ring, _dp_auto), ring, False)
             return _finish(_convert(basis, ring), ring, True)
@@ -330,6 +337,15 @@ def _zero_dimensional(basis: list[Poly]) -> bool:
     n = basis[0].ring.nvars if basis else 0
     pure = {next(i for i, a in enumerate(e) if a) for e in (b.lm() for b in basis) if sum(1 for a in e if a) == 1}
     return len(pure) == n
+
+
+def _finite_quotient(leads: list[Exp], nvars: int) -> bool:
+    """Whether an ideal whose leading ideal these monomials generate is zero-dimensional or the
+    unit ideal (FGLM's cases)."""
+    if (0,) * nvars in leads:
+        return True
+    pure = {next(i for i, a in enumerate(e) if a) for e in leads if sum(1 for a in e if a) == 1}
+    return len(pure) == nvars
 
 
 def _dp_ring(ring: PolyRing) -> PolyRing:
@@ -365,10 +381,17 @@ def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
 
 
 def _finish(basis: list[Terms], ring: PolyRing, reduced: bool) -> list[Poly]:
-    """An engine's basis as the entry point returns it (see :func:`standard_basis`)."""
+    """An engine's basis as the entry point returns it (see :func:`standard_basis`); a global
+    basis not ``reduced`` is reduced by F4's back substitution over Z/p, by flint over QQ (from
+    :data:`.flint_reduce.FLINT_TERMS` terms), else by Buchberger's reduction."""
     if ring.order.is_global:
         if not reduced:
-            reduce = reduce_modp if isinstance(ring.field, PrimeField) else reduce_basis
+            if isinstance(ring.field, PrimeField):
+                reduce = reduce_modp
+            elif isinstance(ring.field, RationalField) and sum(map(len, basis)) >= FLINT_TERMS:
+                reduce = reduce_basis_qq
+            else:
+                reduce = reduce_basis
             return [Poly(ring, b) for b in reduce(basis, ring)]
         out = []
         for b in basis:

@@ -50,16 +50,32 @@ def homogenize(p: Poly, ring: PolyRing) -> Poly:
     return Poly(ring, {e + (top - sum(e),): c for e, c in p.terms.items()})
 
 
-def _homogenized(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis):
-    """The homogenized ring and generators, and the numerator of their ideal's Hilbert series."""
+def _homogenized_basis(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis):
+    """The homogenized ring and generators, and the ``dp`` basis of the latter."""
     if all(len({sum(e) for e in g.terms}) == 1 for g in gens):
         hring, hgens = ring, list(gens)
     else:
         hring = homogenized_ring(ring)
         hgens = [homogenize(g, hring) for g in gens]
     dp = PolyRing(ring.field, hring.names, MonomialOrder.simple("dp", hring.nvars))
-    dbasis = degree_basis([Poly(dp, g.terms) for g in hgens], dp)
+    return hring, hgens, degree_basis([Poly(dp, g.terms) for g in hgens], dp)
+
+
+def _homogenized(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis):
+    """The homogenized ring and generators, and the numerator of their ideal's Hilbert series."""
+    hring, hgens, dbasis = _homogenized_basis(gens, ring, degree_basis)
     return hring, hgens, hilbert_numerators([b.lm() for b in dbasis], hring.nvars)[0]
+
+
+def degree_leads(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[Exp]:
+    """Leading monomials generating the ideal's leading ideal for ``dp``, read off the ``dp`` basis
+    of the homogenized generators that the Hilbert-driven algorithms use (``degree_basis`` keeps
+    it in a cache for them): with the new variable last, ``dp`` orders homogeneous polynomials by
+    their degree in the old variables first, then by ``dp`` on them, so the basis dehomogenized
+    is a Gröbner basis of the ideal for ``dp`` (Cox, Little, O'Shea, 8.4)."""
+    hring, _, dbasis = _homogenized_basis(gens, ring, degree_basis)
+    n = ring.nvars
+    return [b.lm()[:n] for b in dbasis]
 
 
 def hilbert_driven(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:

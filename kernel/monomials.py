@@ -79,6 +79,7 @@ class Packing:
             pos += w
         shifts.reverse()
         self.bits = pos
+        self.weight_shifts, self.weight_widths = shifts[:n], widths[:n]  # the fields of W e
         # a graded ordering (first weight row positive): its weighted degree is the top field
         self.graded = all(v > 0 for v in W[0])
         self.wshift = shifts[0]
@@ -95,6 +96,8 @@ class Packing:
         self.units = [sum(W[i][j] << shifts[i] for i in range(n)) + (1 << shifts[n])
                       + (1 << shifts[n + 1 + j])
                       for j in range(n)]
+        # the same by exponent field, lowest first (the last variable's field is the lowest)
+        self._field_units = self.units[::-1]
 
     def fits(self, degree: int) -> bool:
         return degree <= self.maxdeg
@@ -127,15 +130,20 @@ class Packing:
         return (ea & sel) | (eb & ~sel)
 
     def lcm(self, a: int, b: int) -> int:
-        mask, units = self.emask, self.units
-        m = 0
-        for s, u in zip(self.eshifts, units):
-            x, y = (a >> s) & mask, (b >> s) & mask
-            if x < y:
-                x = y
-            if x:
-                m += x * u
-        return m
+        """``lcm(a, b)``: ``a`` times the variables' powers by which ``b`` exceeds it, found
+        word-parallel in the exponent fields (usually few)."""
+        ebits, mask = self.ebits, self.emask
+        eall, g = self.eall, self.eguard
+        ea, eb = a & eall, b & eall
+        keep = ((((ea | g) - eb) & g) >> (ebits - 1)) * mask  # the fields where a >= b
+        d = (eb & ~keep) - (ea & ~keep)  # b - a where b exceeds a, else 0 (no borrows)
+        units = self._field_units
+        while d:
+            f = ((d & -d).bit_length() - 1) // ebits
+            x = (d >> (f * ebits)) & mask
+            a += x * units[f]
+            d -= x << (f * ebits)
+        return a
 
 
 @lru_cache(maxsize=64)
