@@ -359,6 +359,7 @@ def _group_power(op: str, a: Any, b: Any, ring: M2Ring) -> Optional[Poly]:
 def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable) -> Any:
     """Arithmetic after promoting both operands to their common ring; quotient rings reduce;
     local rings have fractions."""
+    a, b = _integers_promoted(op, a, b)
     ra, rb = ring_of(a), ring_of(b)
     ring = ra or rb
     if ring is not None and ring.info.get("group") and _group_power(op, a, b, ring) is not None:
@@ -403,6 +404,31 @@ def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable)
             raise MechRuntimeError(f"monomial overflow: exponents of this ring are below {ring.max_exponent} "
                                    f"(MonomialSize)")
     return v
+
+
+def _integers_promoted(op: str, a: Any, b: Any) -> tuple[Any, Any]:
+    """A matrix of integers (over ZZ) beside a matrix, polynomial or number of another ring, or an
+    ideal of ZZ in a sum or quotient with an ideal of another ring: as elements of that
+    ring, as Macaulay2 promotes ZZ into every ring (it refuses the product of ideals of two rings:
+    so does mech)."""
+    from .m2_rings import integers
+    ZZ = integers().poly
+    for x, y in ((a, b), (b, a)):
+        S = getattr(getattr(y, "ring", None), "owner", None)
+        if S is None or y.ring is ZZ or getattr(x, "ring", None) is not ZZ:
+            continue
+        const = lambda p: S.poly.const(S.poly.field(int(p.terms.get((), 0))))  # noqa: E731
+        if isinstance(x, Map) and isinstance(y, (Matrix, Poly, Number)):
+            moved = Map(FreeModule(S, x.target.degrees), FreeModule(S, x.source.degrees),
+                        [const(p) for p in x.entries], x.degree)
+        elif isinstance(x, Matrix) and isinstance(y, (Matrix, Poly, Number)):
+            moved = Matrix(S.poly, x.nrows, x.ncols, [const(p) for p in x.entries])
+        elif isinstance(x, Ideal) and isinstance(y, Ideal) and op in ("+", ":"):
+            moved = Ideal(S.poly, [const(p) for p in x.gens])
+        else:
+            continue
+        return (moved, b) if x is a else (a, moved)
+    return a, b
 
 
 def _integral(v: Poly | Number) -> bool:

@@ -116,11 +116,11 @@ def ideal(ctx, *args: Any) -> Ideal:
 
 def _integers_or_basering(ctx, items: Any) -> Any:
     """The ring of values with none of their own: ZZ's for integers (as Macaulay2's ``matrix {{1, 2}}``,
-    ``ideal 7``) when no ring is in use or the ring in use has a positive characteristic (where
-    its arithmetic would differ), else the ring in use (whose elements they stand for)."""
+    ``ideal(4, 6)``: ideals and matrices of ZZ whatever ring is in use; arithmetic with another ring's
+    values promotes them), or the ring in use when it is over ZZ (the same integers)."""
     def ints(v: Any) -> bool:
         return all(ints(x) for x in v.items) if isinstance(v, (List, ExprList)) else type(v) is int
-    if (ctx.ring is None or ctx.ring.poly.field.characteristic) and all(ints(v) for v in items):
+    if (ctx.ring is None or not is_integral(ctx.ring.poly)) and all(ints(v) for v in items):
         from ..dsl.m2_rings import integers
         return integers().poly
     return ctx.basering().poly
@@ -431,6 +431,8 @@ def intersect(*ideals: Ideal | List) -> Ideal:
         ideals = tuple(ideals[0].items)
     if not ideals or not all(isinstance(I, Ideal) for I in ideals):
         raise MechTypeError("intersect takes ideals")
+    if any(I.ring is not ideals[0].ring for I in ideals):
+        raise MechTypeError("intersect: expected ideals of one ring")
     _global(ideals[0], "intersect")
     ring = ideals[0].ring
     if is_integral(ring):

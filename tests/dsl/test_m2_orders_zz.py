@@ -1,6 +1,7 @@
 """The Macaulay2 dialect's monomial orders ``ProductOrder`` and ``GLex`` with degrees, ``trim`` and
 ``mingens`` over ZZ, ``sort`` of matrices, ``options``, ``RevLex`` and the invertible variables of
-``GroupLex`` / ``GroupRevLex`` (session 11): each script's output is what
+``GroupLex`` / ``GroupRevLex`` (session 11), integers in ideals and matrices as ZZ's whatever ring is
+in use, promoted beside another ring's values (session 12): each script's output is what
 Macaulay2 1.21 prints for it (``M2 --script``); the ``macaulay2`` test checks these outputs against
 the installed Macaulay2."""
 from __future__ import annotations
@@ -86,6 +87,22 @@ print (try c^(-1) else "failed")
      "VerticalList{MonomialSize => 32, GroupRevLex => 2, GRevLex => {1, 1}, Position => Up}\n"
      "b*c^101+b*c^100*e+b*c^100*f+b*c*d^100+b*d^100*e+b*d^100*f+a^(-2)*c+a^(-2)*d\n"
      "a^2*d+c+b^(-1)*d^3+a^(-1)*c^2\nb^2+2*a^(-1)*b+a^(-2)\n1\nfailed\n"),
+    ("integers_are_zz_in_any_ring", """R = QQ[x,y];
+print toString(ideal(x^2, 2*x) : ideal(2))
+print toString(ideal(2) == ideal(1))
+print toString(ideal(x) + ideal(2))
+print toString(trim(ideal(x) + ideal(2)))
+print toString(generator ideal(4,6))
+print toString(matrix{{1,2}} * transpose matrix{{x,y}})
+print toString(2 * matrix{{x,y}})
+print toString(matrix{{1,2}} + matrix{{x,y}})
+print toString(matrix{{1,2}} == matrix{{1,2}})
+print toString(ring ideal(7))
+S = ZZ/7[z];
+print toString(matrix{{8,2}})
+print toString(ring matrix{{8,2}})
+print toString(z * matrix{{8,2}})
+""", 'ideal x\nfalse\nideal(x,2)\nideal 1\n2\nmatrix {{x+2*y}}\nmatrix {{2*x, 2*y}}\nmatrix {{x+1, y+2}}\ntrue\nZZ\nmatrix {{8, 2}}\nZZ\nmatrix {{z, 2*z}}\n'),
 ]
 M2 = shutil.which("M2")
 
