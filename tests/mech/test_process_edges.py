@@ -93,9 +93,9 @@ def test_the_memory_limit_bounds_the_process():
     ('LIB "mechanism.lib"; mechanism m = "fix O; bar O A 1; bar A B 1; slider B";'
      'drawMechanism(m, list("1e999999999", 0, 1, 0), "m.svg");',
      "drawMechanism: '1e999999999' is not a number"),
-    ("ring r = 0,(x,y),(a(10^100000),dp);", "an ordering's size or weights must be at most 2147483647"),
+    ("ring r = 0,(x,y),(a(bigint(10)^100000),dp);", "an ordering's size or weights must be at most 2147483647"),
     ("ring r = 0,(x,y),(a(1" + "0" * 100000 + "),dp);", "integer literal too long (100001 digits; at most 100000)"),
-    ("int k = 1" + "0" * 5000 + ";", None),
+    ("bigint k = 1" + "0" * 5000 + ";", None),
 ])
 def test_huge_numbers_end_quickly_with_a_message(code, message, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
@@ -108,6 +108,16 @@ def test_huge_numbers_end_quickly_with_a_message(code, message, tmp_path, monkey
         s.execute(code)
     assert message in e.value.message and "internal" not in e.value.message
     assert not list(tmp_path.iterdir())
+
+
+def test_machine_int_powers_wrap_as_in_singular():
+    """int arithmetic wraps at 64 bits with Singular's warning (10^100000 ends at once): a weight 0."""
+    s = Session(timeout=20)
+    out = s.execute("ring r = 0,(x,y),(a(10^100000),dp); r;")
+    assert "// ** int overflow(^), result may be wrong" in out and "weights  0" in out
+    with pytest.raises(MechError) as e:
+        s.execute("int k = 1" + "0" * 5000 + ";")
+    assert "int = bigint is not supported" in e.value.message
 
 
 def test_decimal_lengths_still_work():
