@@ -71,6 +71,14 @@ def run_singular(script: str, timeout: float = 120) -> str:
 
 
 
+def run_m2(script: str, tmp_path: Path, timeout: float = 120) -> str:
+    """Macaulay2's output for a script (``M2 --script``: only what it prints)."""
+    f = tmp_path / "case.m2"
+    f.write_text(script)
+    return subprocess.run([shutil.which("M2") or "M2", "--script", str(f)], capture_output=True, text=True,
+                          timeout=timeout).stdout
+
+
 def output_lines(text: str) -> list[str]:
     """The lines of an output that carry values: blank lines and Singular's `// **` notes dropped."""
     return [ln.rstrip() for ln in text.splitlines() if ln.strip() and not ln.startswith("// **")]

@@ -3,12 +3,11 @@
 installed Macaulay2."""
 from __future__ import annotations
 
-import shutil
-import subprocess
 
 import pytest
 
 from mech import Session
+from tests.util import run_m2
 
 #: (name, script, what Macaulay2 prints)
 CASES = [
@@ -116,8 +115,6 @@ print toString gens A
      "z_(1,2)*z_(2,1)\n{z_(1,1), z_(1,2), z_(2,1), z_(2,2)}\n"),
 ]
 
-M2 = shutil.which("M2")
-
 
 def run(code: str) -> str:
     return Session(dialect="m2").execute(code)
@@ -131,10 +128,7 @@ def test_cases(name: str, code: str, expected: str) -> None:
 @pytest.mark.macaulay2
 @pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
 def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    f = tmp_path / "case.m2"
-    f.write_text(code)
-    out = subprocess.run([M2 or "M2", "--script", str(f)], capture_output=True, text=True, timeout=120)
-    assert out.stdout == expected
+    assert run_m2(code, tmp_path) == expected
 
 
 @pytest.mark.parametrize("code, message", [

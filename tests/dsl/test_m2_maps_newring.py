@@ -6,12 +6,11 @@ their degrees, ``newRing`` and ``entries`` over ZZ (session 11): each script's o
 installed Macaulay2."""
 from __future__ import annotations
 
-import shutil
-import subprocess
 
 import pytest
 
 from mech import Session
+from tests.util import run_m2
 from mech.dsl.errors import MechError
 
 #: (name, script, what Macaulay2 prints)
@@ -72,7 +71,6 @@ print (map f == f)
 """, "{{1}, {1}}\n{1}\nfalse\nmatrix {{a^2, a*b}, {a*b, b^2}, {a*b^2, a^3}, {b^3, a^2*b}}\n{{3}, {3}}\n{0}\n"
      "{{4}, {4}}\n{0}\n{{2}, {-1}, {1}, {-2}}\ntrue\ntrue\n"),
 ]
-M2 = shutil.which("M2")
 
 
 def run(code: str) -> str:
@@ -87,10 +85,7 @@ def test_cases(name: str, code: str, expected: str) -> None:
 @pytest.mark.macaulay2
 @pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
 def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    f = tmp_path / "case.m2"
-    f.write_text(code)
-    out = subprocess.run([M2 or "M2", "--script", str(f)], capture_output=True, text=True, timeout=120)
-    assert out.stdout == expected
+    assert run_m2(code, tmp_path) == expected
 
 
 @pytest.mark.parametrize("code, message", [

@@ -6,12 +6,11 @@ Macaulay2 1.21 prints for it (``M2 --script``); the ``macaulay2`` test checks th
 the installed Macaulay2."""
 from __future__ import annotations
 
-import shutil
-import subprocess
 
 import pytest
 
 from mech import Session
+from tests.util import run_m2
 from mech.dsl.errors import MechError
 
 #: (name, script, what Macaulay2 prints)
@@ -104,7 +103,6 @@ print toString(ring matrix{{8,2}})
 print toString(z * matrix{{8,2}})
 """, 'ideal x\nfalse\nideal(x,2)\nideal 1\n2\nmatrix {{x+2*y}}\nmatrix {{2*x, 2*y}}\nmatrix {{x+1, y+2}}\ntrue\nZZ\nmatrix {{8, 2}}\nZZ\nmatrix {{z, 2*z}}\n'),
 ]
-M2 = shutil.which("M2")
 
 
 def run(code: str) -> str:
@@ -119,10 +117,7 @@ def test_cases(name: str, code: str, expected: str) -> None:
 @pytest.mark.macaulay2
 @pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
 def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    f = tmp_path / "case.m2"
-    f.write_text(code)
-    out = subprocess.run([M2 or "M2", "--script", str(f)], capture_output=True, text=True, timeout=120)
-    assert out.stdout == expected
+    assert run_m2(code, tmp_path) == expected
 
 
 @pytest.mark.parametrize("code, message", [

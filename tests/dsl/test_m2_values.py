@@ -3,12 +3,11 @@ multigraded rings (session 9): each script's output is what Macaulay2 1.21 print
 (``M2 --script``); the ``macaulay2`` test checks these outputs against the installed Macaulay2."""
 from __future__ import annotations
 
-import shutil
-import subprocess
 
 import pytest
 
 from mech import Session
+from tests.util import run_m2
 from mech.dsl.errors import MechError
 
 #: (name, script, what Macaulay2 prints)
@@ -77,8 +76,6 @@ print (eliminate(ideal(f,g),x) == ideal resultant(f,g,x))
      'ideal(b*c^4-a*c^3*d+a^2*b*c+3*a*b*c^2+2*b^2*c^2-6*b*c^3-a^3*d-3*a^2*c*d-5*a*b*c*d+6*a*c^2*d-4*b*c^2*d+3*a^2*d^2+3*a*c*d^2+4*b*c*d^2+3*c^2*d^2-3*a*d^3+d^4-a*b^2+b^3-4*a*b*c-10*b^2*c+12*b*c^2+4*a^2*d+10*a*b*d+4*b^2*d-12*a*c*d+12*b*c*d+3*a*d^2-7*b*d^2-18*c*d^2-6*d^3+4*b^2-24*b*d+36*d^2)\ntrue\n'),
 ]
 
-M2 = shutil.which("M2")
-
 
 def run(code: str) -> str:
     return Session(dialect="m2").execute(code)
@@ -92,10 +89,7 @@ def test_cases(name: str, code: str, expected: str) -> None:
 @pytest.mark.macaulay2
 @pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
 def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    f = tmp_path / "case.m2"
-    f.write_text(code)
-    out = subprocess.run([M2 or "M2", "--script", str(f)], capture_output=True, text=True, timeout=120)
-    assert out.stdout == expected
+    assert run_m2(code, tmp_path) == expected
 
 
 @pytest.mark.parametrize("code, message", [

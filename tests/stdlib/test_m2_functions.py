@@ -4,12 +4,11 @@ ZZ, ZZ^n, vectors, lengths over R_P at a non-maximal prime): scripts with what M
 for them (``M2 --script``; the ``macaulay2`` tests check it against the installed Macaulay2)."""
 from __future__ import annotations
 
-import shutil
-import subprocess
 
 import pytest
 
 from mech import Session
+from tests.util import run_m2
 
 #: (name, script, what Macaulay2 prints)
 CASES = [
@@ -108,10 +107,7 @@ def test_cases(name: str, code: str, expected: str) -> None:
 @pytest.mark.macaulay2
 @pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
 def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    f = tmp_path / "case.m2"
-    f.write_text('needsPackage "LocalRings"\n' + code)
-    out = subprocess.run([shutil.which("M2") or "M2", "--script", str(f)], capture_output=True, text=True, timeout=120)
-    assert out.stdout == expected
+    assert run_m2('needsPackage "LocalRings"\n' + code, tmp_path) == expected
 
 
 def test_refusals() -> None:

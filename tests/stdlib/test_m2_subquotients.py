@@ -9,13 +9,13 @@ of a quotient module, minimal generators in a local ring, f // g) are checked by
 not as text."""
 from __future__ import annotations
 
-import shutil
 import subprocess
 import sys
 
 import pytest
 
 from mech import Session
+from tests.util import run_m2
 
 #: (name, script, what Macaulay2 prints)
 CASES = [
@@ -123,10 +123,7 @@ def test_cases(name: str, code: str, expected: str) -> None:
 @pytest.mark.macaulay2
 @pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
 def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    f = tmp_path / "case.m2"
-    f.write_text('needsPackage "LocalRings"\n' + code)
-    out = subprocess.run([shutil.which("M2") or "M2", "--script", str(f)], capture_output=True, text=True, timeout=120)
-    assert out.stdout == expected
+    assert run_m2('needsPackage "LocalRings"\n' + code, tmp_path) == expected
 
 
 def test_is_prime_refuted_by_a_zero_divisor() -> None:
