@@ -617,6 +617,8 @@ def equal(a: Any, b: Any) -> bool:
     entry by entry."""
     if isinstance(b, Ideal) and isinstance(a, (Ring, int)):
         a, b = b, a
+    if isinstance(a, Ideal) and isinstance(b, Ideal) and a.ring is not b.ring:
+        raise MechTypeError("== of ideals of two rings: Macaulay2 compares ideals of one ring")
     if isinstance(a, Ideal) and localized_at(a.ring) is not None:
         if isinstance(b, Ideal):
             return a.ring is b.ring and local_ideals_equal(a, b)

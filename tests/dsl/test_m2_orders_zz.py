@@ -132,6 +132,8 @@ def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> 
     ("R = QQ[a,b]; sort matrix {{a, 0}}", "sort of a matrix with zero entries is not supported"),
     ("R = QQ[a,b]; sort matrix {{a}, {b}}", "sort of a matrix with several rows is not supported"),
     ("R = QQ[a,b]; sort(matrix {{a+b^2}}, DegreeOrder => Ascending)", "inhomogeneous entries is not supported"),
+    ("R = QQ[x]; ideal(1_R) == ideal 1", "== of ideals of two rings"),
+    ("R = QQ[x]; intersect(ideal 2, ideal x)", "intersect: expected ideals of one ring"),
 ])
 def test_named_refusals(code: str, message: str) -> None:
     """What Macaulay2 refuses or mech lacks stops with a message naming it."""
