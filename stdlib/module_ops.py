@@ -150,27 +150,26 @@ def _component_leads(M: Module) -> dict[int, list[tuple]]:
     return leads
 
 
+def _component_lead_sets(ctx, M: Module) -> list[list[tuple]]:
+    """For each component i of R^r/M (M taken as a standard basis), the leading exponents of M's
+    vectors there and of the qring's relations: R/L_i's leading ideal."""
+    from ..dsl.qrings import quotient_of
+    if not M.is_std:
+        ctx.assume_std(M, 0)  # type: ignore[arg-type]
+    leads = _component_leads(M)
+    q = quotient_of(M.ring)
+    qleads = [g.lm() for g in q.basis] if q is not None else []
+    return [leads.get(i, []) + qleads for i in range(M.rank)]
+
+
 @command("dim")
 def dim(ctx, M: Module) -> int:
     """dim(M): the Krull dimension of R^r/M for a standard basis M (-1 when M is the free module; over
     a qring R/Q of (R/Q)^r/M)."""
     from ..kernel.dimension import krull_dim
-    ring = M.ring
-    if not M.is_std:
-        ctx.assume_std(M, 0)  # type: ignore[arg-type]
-    from ..dsl.qrings import quotient_of
-    leads = _component_leads(M)
-    q = quotient_of(ring)
-    qleads = [g.lm() for g in q.basis] if q is not None else []
-    dims = []
-    for i in range(M.rank):
-        es = leads.get(i, []) + qleads
-        if not es:
-            dims.append(ring.nvars)
-        elif any(not any(e) for e in es):
-            continue
-        else:
-            dims.append(krull_dim(es, ring.nvars))
+    n = M.ring.nvars
+    dims = [krull_dim(es, n) if es else n
+            for es in _component_lead_sets(ctx, M) if not any(not any(e) for e in es)]
     return max(dims) if dims else -1
 
 
@@ -184,21 +183,11 @@ def mult(ctx, M: Module) -> int:
       mult(std(module([x2,0],[0,y3])));
       → 5
     """
-    from ..dsl.qrings import quotient_of
     from ..kernel import hilbert as H
     from ..kernel.dimension import krull_dim
-    ring = M.ring
-    if not M.is_std:
-        ctx.assume_std(M, 0)  # type: ignore[arg-type]
-    leads = _component_leads(M)
-    q = quotient_of(ring)
-    qleads = [g.lm() for g in q.basis] if q is not None else []
-    parts = []
-    for i in range(M.rank):
-        es = leads.get(i, []) + qleads
-        if any(not any(e) for e in es):
-            continue
-        parts.append((krull_dim(es, ring.nvars) if es else ring.nvars, H.mult(es, ring.nvars)))
+    n = M.ring.nvars
+    parts = [(krull_dim(es, n) if es else n, H.mult(es, n))
+             for es in _component_lead_sets(ctx, M) if not any(not any(e) for e in es)]
     top = max((d for d, _ in parts), default=-1)
     return sum(m for d, m in parts if d == top)
 
