@@ -79,6 +79,22 @@ def run_m2(script: str, tmp_path: Path, timeout: float = 120) -> str:
                           timeout=timeout).stdout
 
 
+def m2_case_tests(cases: list[tuple[str, str, str]], prelude: str = "") -> tuple:
+    """The two tests of a list of (name, script, what Macaulay2 1.21 prints for it): mech's Macaulay2
+    dialect prints it, and (marked ``macaulay2``) Macaulay2 does, the script after ``prelude``."""
+    ids = [c[0] for c in cases]
+
+    @pytest.mark.parametrize("name, code, expected", cases, ids=ids)
+    def test_cases(name: str, code: str, expected: str) -> None:
+        assert Session(dialect="m2").execute(code) == expected
+
+    @pytest.mark.macaulay2
+    @pytest.mark.parametrize("name, code, expected", cases, ids=ids)
+    def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
+        assert run_m2(prelude + code, tmp_path) == expected
+    return test_cases, test_cases_are_macaulay2s
+
+
 def output_lines(text: str) -> list[str]:
     """The lines of an output that carry values: blank lines and Singular's `// **` notes dropped."""
     return [ln.rstrip() for ln in text.splitlines() if ln.strip() and not ln.startswith("// **")]

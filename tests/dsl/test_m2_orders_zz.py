@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from mech import Session
-from tests.util import run_m2
+from tests.util import m2_case_tests
 from mech.dsl.errors import MechError
 
 #: (name, script, what Macaulay2 prints)
@@ -109,15 +109,7 @@ def run(code: str) -> str:
     return Session(dialect="m2").execute(code)
 
 
-@pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
-def test_cases(name: str, code: str, expected: str) -> None:
-    assert run(code) == expected
-
-
-@pytest.mark.macaulay2
-@pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
-def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    assert run_m2(code, tmp_path) == expected
+test_cases, test_cases_are_macaulay2s = m2_case_tests(CASES)
 
 
 @pytest.mark.parametrize("code, message", [

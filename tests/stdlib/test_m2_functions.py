@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from mech import Session
-from tests.util import run_m2
+from tests.util import m2_case_tests
 
 #: (name, script, what Macaulay2 prints)
 CASES = [
@@ -99,15 +99,7 @@ print toString eliminate(ideal(x^2-a*x+1, b*x^2+2), x)
 ]
 
 
-@pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
-def test_cases(name: str, code: str, expected: str) -> None:
-    assert Session(dialect="m2").execute(code) == expected
-
-
-@pytest.mark.macaulay2
-@pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
-def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    assert run_m2('needsPackage "LocalRings"\n' + code, tmp_path) == expected
+test_cases, test_cases_are_macaulay2s = m2_case_tests(CASES, prelude='needsPackage "LocalRings"\n')
 
 
 def test_refusals() -> None:

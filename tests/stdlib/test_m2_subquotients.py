@@ -12,10 +12,9 @@ from __future__ import annotations
 import subprocess
 import sys
 
-import pytest
 
 from mech import Session
-from tests.util import run_m2
+from tests.util import m2_case_tests
 
 #: (name, script, what Macaulay2 prints)
 CASES = [
@@ -115,15 +114,7 @@ print(matrix {{h, k}} == h | k)
 ]
 
 
-@pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
-def test_cases(name: str, code: str, expected: str) -> None:
-    assert Session(dialect="m2").execute(code) == expected
-
-
-@pytest.mark.macaulay2
-@pytest.mark.parametrize("name, code, expected", CASES, ids=[c[0] for c in CASES])
-def test_cases_are_macaulay2s(tmp_path, name: str, code: str, expected: str) -> None:
-    assert run_m2('needsPackage "LocalRings"\n' + code, tmp_path) == expected
+test_cases, test_cases_are_macaulay2s = m2_case_tests(CASES, prelude='needsPackage "LocalRings"\n')
 
 
 def test_is_prime_refuted_by_a_zero_divisor() -> None:
