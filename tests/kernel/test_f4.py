@@ -17,15 +17,7 @@ from mech.kernel.monomials import Packing
 from tests.util import cyclic, katsura, ring
 
 P32003 = GF(32003)
-
-
-@pytest.fixture(autouse=True, params=["compiled", "python"])
-def row_kernel(request, monkeypatch):
-    """Run the test with the compiled row kernel (when built) and with the pure-Python path."""
-    if request.param == "python":
-        monkeypatch.setattr(f4_rows, "KERNEL", None)
-    elif f4_rows.KERNEL is None:
-        pytest.skip("the compiled row kernel is not built")
+pytestmark = pytest.mark.usefixtures("row_kernel")
 
 
 def f4(R):

@@ -7,19 +7,12 @@ import flint
 import pytest
 from tests.util import cyclic, katsura, ring
 
-from mech.kernel import GF, Block, f4_rows
+from mech.kernel import GF, Block
 from mech.kernel.buchberger import buchberger, reduce_basis
 from mech.kernel.f4 import reduce_modp
 
 F = GF(32003)
-
-
-@pytest.fixture(autouse=True, params=["compiled", "python"])
-def row_kernel(request, monkeypatch):
-    if request.param == "python":
-        monkeypatch.setattr(f4_rows, "KERNEL", None)
-    elif f4_rows.KERNEL is None:
-        pytest.skip("the compiled row kernel is not built")
+pytestmark = pytest.mark.usefixtures("row_kernel")
 
 
 def _systems():
