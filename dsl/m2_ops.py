@@ -15,7 +15,8 @@ from .m2_modules import FreeModule, Map, quotient_module, rows, scaled, source_d
 from .m2_submodules import Module, divide
 from .m2_subquotients import ANY_MODULE, module_arith
 from .m2_vectors import Vector, vector_arith
-from .m2_rings import M2Ring, cached_quotient, common_ring, is_integral, normal, owner, promote, promotes, quotient_ring
+from .m2_rings import (M2Ring, cached_quotient, common_ring, integers, is_integral, normal, owner, promote, promotes,
+                       quotient_ring)
 from .m2_values import FUNCTIONS, Array, CoeffRing, Composed, M2Set, Opt, RingMap, Symbol
 from .values import ExprList, Ideal, List, Matrix, Number, Ring, to_int, typeof
 
@@ -176,7 +177,6 @@ def m2_binary(op: str, a: Any, b: Any, current: Optional[Ring], apply: Callable[
     if op == "^" and isinstance(a, M2Ring) and (type(b) is int or isinstance(b, List)):
         return free_module(a, b)
     if op == "^" and isinstance(a, CoeffRing) and a.name == "ZZ" and type(b) is int:  # ZZ^n
-        from .m2_rings import integers
         return free_module(integers(), b)
     if op == "^" and isinstance(a, Ideal) and isinstance(b, Array):
         return _frobenius(a, b)
@@ -277,7 +277,6 @@ def _one_ring(a: Matrix, b: Matrix) -> tuple[Matrix, Matrix]:
     integers over ZZ: its numbers), as Macaulay2 joins them."""
     if a.ring is b.ring:
         return a, b
-    from .m2_rings import integers
     ra, rb = getattr(a.ring, "owner", None), getattr(b.ring, "owner", None)
     for x, rx, ry in ((b, rb, ra), (a, ra, rb)):
         if ry is None:
@@ -285,7 +284,7 @@ def _one_ring(a: Matrix, b: Matrix) -> tuple[Matrix, Matrix]:
         if rx is not None and promotes(rx, ry):
             moved = [promote(p, ry) for p in x.entries]
         elif rx is not None and rx is integers():
-            moved = [ry.poly.const(ry.poly.field(int(p.terms.get((), 0)))) for p in x.entries]
+            moved = [_from_integers(p, ry) for p in x.entries]
         else:
             continue
         y = Matrix(ry.poly, x.nrows, x.ncols, moved)
@@ -406,25 +405,28 @@ def _arith(op: str, a: Any, b: Any, current: Optional[Ring], fallback: Callable)
     return v
 
 
+def _from_integers(p: Poly, S: M2Ring) -> Poly:
+    """An integer (a constant of ZZ's ring of no variables) as an element of S."""
+    return S.poly.const(S.poly.field(int(p.terms.get((), 0))))
+
+
 def _integers_promoted(op: str, a: Any, b: Any) -> tuple[Any, Any]:
     """A matrix of integers (over ZZ) beside a matrix, polynomial or number of another ring, or an
     ideal of ZZ in a sum or quotient with an ideal of another ring: as elements of that
     ring, as Macaulay2 promotes ZZ into every ring (it refuses the product of ideals of two rings:
     so does mech)."""
-    from .m2_rings import integers
     ZZ = integers().poly
     for x, y in ((a, b), (b, a)):
         S = getattr(getattr(y, "ring", None), "owner", None)
         if S is None or y.ring is ZZ or getattr(x, "ring", None) is not ZZ:
             continue
-        const = lambda p: S.poly.const(S.poly.field(int(p.terms.get((), 0))))  # noqa: E731
         if isinstance(x, Map) and isinstance(y, (Matrix, Poly, Number)):
             moved = Map(FreeModule(S, x.target.degrees), FreeModule(S, x.source.degrees),
-                        [const(p) for p in x.entries], x.degree)
+                        [_from_integers(p, S) for p in x.entries], x.degree)
         elif isinstance(x, Matrix) and isinstance(y, (Matrix, Poly, Number)):
-            moved = Matrix(S.poly, x.nrows, x.ncols, [const(p) for p in x.entries])
+            moved = Matrix(S.poly, x.nrows, x.ncols, [_from_integers(p, S) for p in x.entries])
         elif isinstance(x, Ideal) and isinstance(y, Ideal) and op in ("+", ":"):
-            moved = Ideal(S.poly, [const(p) for p in x.gens])
+            moved = Ideal(S.poly, [_from_integers(p, S) for p in x.gens])
         else:
             continue
         return (moved, b) if x is a else (a, moved)

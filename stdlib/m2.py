@@ -18,7 +18,7 @@ from ..dsl.m2_printing import to_string
 from ..dsl.m2_local import LocalFraction, local_ideal_is_unit, local_ideals_equal, localized_at, in_local_rings
 from ..dsl.m2_modules import FreeModule, Map, with_default_degrees
 from ..dsl.m2_ops import lift_to
-from ..dsl.m2_rings import in_quotients, is_integral, multidegree, normal, owner, promote, promotes, exact_over_zz
+from ..dsl.m2_rings import in_quotients, integers, is_integral, multidegree, normal, owner, promote, promotes, exact_over_zz
 from ..dsl.m2_submodules import Module
 from ..dsl.registry import command, operator
 from ..dsl.values import ExprList, Ideal, List, Matrix, Number, Ring, typeof
@@ -121,7 +121,6 @@ def _integers_or_basering(ctx, items: Any) -> Any:
     def ints(v: Any) -> bool:
         return all(ints(x) for x in v.items) if isinstance(v, (List, ExprList)) else type(v) is int
     if (ctx.ring is None or not is_integral(ctx.ring.poly)) and all(ints(v) for v in items):
-        from ..dsl.m2_rings import integers
         return integers().poly
     return ctx.basering().poly
 
