@@ -7,15 +7,20 @@ mech: ``analyze`` in a fresh Session of this process, the CPU time of each stage
 progress events (``Session(progress=...)``).  Singular: ``timer`` (1 ms ticks) around each step
 of the paper's pipeline, start-up and ``LIB`` loading excluded: ``std`` and ``dim`` of J (mech's
 dimension stage), ``minAssGTZ(J)`` (the motion modes: mech's decomposition stage, whatever
-strategy certifies them), ``minAssGTZ(J + I_r(dJ))`` (the singular configurations), the tangent cones at the singular
-configurations that are points (sing.lib's ``tangentcone`` of J moved to the point, over ``Q(t)``
-modulo the minimal polynomial of a primitive element for conjugate points: mech's local analysis,
-which also classifies the points), and for
-symbolic lengths the eliminations of the lengths (the length conditions).  A Singular step that
-does not finish within ``--singular-timeout`` seconds is reported as such; ratios only where
-Singular takes at least 10 ms (below, the timer's resolution decides).  ``--repeat N`` runs
-mech and Singular alternately N times per case and keeps each stage's minimum (the machine's load
-varies from one run to the next).
+strategy certifies them), ``minAssGTZ(J + I_r(dJ))`` (the singular configurations), then at the
+singular configurations that are points, from mech's motion modes and points (the same input for
+both): the points (a primitive element's basis ``std(P + (t - form))`` for a Galois orbit of
+algebraic points, and the modes through each point by ``reduce``), the local components (at a
+rational point the modes through it, moved there; at conjugate points ``minAssGTZ`` of each mode
+through them moved there, in ``ring (0,t), (x), ds`` with the minimal polynomial: Singular's local
+components; at a point with several, sing.lib's ``tangentcone`` of each for the transition test),
+and the tangent cones (sing.lib's ``tangentcone`` of J moved to the point, over ``Q(t)`` with the
+minimal polynomial for conjugate points); for symbolic lengths the eliminations of the lengths
+(the length conditions).  The steps that may not finish (the decomposition, the local components)
+run in Singular processes of their own, each within ``--singular-timeout`` seconds, reported as
+"did not finish" otherwise; ratios only where Singular takes at least 10 ms (below, the timer's
+resolution decides).  ``--repeat N`` runs mech and Singular alternately N times per case and
+keeps each stage's minimum (the machine's load varies from one run to the next).
 """
 from __future__ import annotations
 
@@ -51,7 +56,8 @@ CASES = [
     Case("stephenson", "ground O A 1; fix G 2 0; bar O B 1; body B C 1 0 E 0 1; bar C A 1; bar E F 1; bar F G 1",
          "full"),
 ]
-STAGES = ["dimension", "decomposition", "singular configurations", "local analysis", "length conditions"]
+STAGES = ["dimension", "decomposition", "singular configurations", "points", "local components", "tangent cones",
+          "length conditions"]
 
 
 def mech_stages(case: Case) -> tuple[dict[str, float], float, object]:
@@ -80,72 +86,139 @@ def mech_stages(case: Case) -> tuple[dict[str, float], float, object]:
     return spent, total, run_analysis(parse_mechanism(case.mechanism), decompose=case.depth == "full")
 
 
-def singular_script(a, depth: str) -> str:
-    """The pipeline's steps in Singular, each printing ``STAGE name ms``."""
+def singular_script(a, depth: str) -> list[str]:
+    """The pipeline's steps in Singular, each printing ``STAGE name ms``: one script per process (the
+    steps that may not finish, the decomposition and the local components, have their own)."""
     from mech.dsl.printing import poly_str
     n, k = a.nvars, len(a.params)
     order = f"(dp({n}),dp({k}))" if k else "dp"
     J = ", ".join(poly_str(g) for g in a.ideal)
     r = len(a.ideal) if a.complete_intersection else n - a.mobility
-    lines = ['LIB "primdec.lib"; LIB "elim.lib"; system("--ticks-per-sec", 1000); int t; int i; int j;',
-             f"ring R = 0, ({','.join(a.ring.names)}), {order};", f"ideal J = {J};",
-             "t = timer; ideal S = std(J); int d = dim(S);", 'print("STAGE dimension " + string(timer - t));',
-             f"matrix D[{len(a.ideal)}][{n}];",
-             f"for (i = 1; i <= {len(a.ideal)}; i++) {{ for (j = 1; j <= {n}; j++) {{ D[i, j] = diff(J[i], var(j)); }} }}"]
+    # the timer's variable is not ``t``: an int named t would stand for the parameter t of Q(t)
+    head = ['LIB "primdec.lib"; LIB "elim.lib"; LIB "sing.lib"; system("--ticks-per-sec", 1000); int tic; int i; '
+            'int j;', f"ring R = 0, ({','.join(a.ring.names)}), {order};", f"ideal J = {J};"]
+    lines = head + ["tic = timer; ideal S = std(J); int d = dim(S);", 'print("STAGE dimension " + string(timer - tic));',
+                    f"matrix D[{len(a.ideal)}][{n}];",
+                    f"for (i = 1; i <= {len(a.ideal)}; i++) {{ for (j = 1; j <= {n}; j++) "
+                    "{ D[i, j] = diff(J[i], var(j)); } }"]
     if k:
         config = "*".join(a.ring.names[:n])
         lengths = "*".join(a.ring.names[n:])
-        lines += ["t = timer; list L = minAssGTZ(minor(D, %d)); ideal C = 1;" % r,
+        lines += ["tic = timer; list L = minAssGTZ(minor(D, %d)); ideal C = 1;" % r,
                   "for (i = 1; i <= size(L); i++) { ideal SP = std(J + L[i]); if (SP[1] != 1) {"
                   f" ideal E = eliminate(SP, {config}); C = intersect(C, sat(E, {lengths})[1]); }} }}",
-                  "list FC = factorize(C[1]);", 'print("STAGE length conditions " + string(timer - t));']
-        return "\n".join(lines)
-    lines += [f"t = timer; list SV = minAssGTZ(J + minor(D, {r}));",
-              'print("STAGE singular configurations " + string(timer - t));']
-    lines += local_script(a)
-    if depth == "full":  # last: Singular may not finish it
-        lines += ["t = timer; list M = minAssGTZ(J);", 'print("STAGE decomposition " + string(timer - t));']
-    return "\n".join(lines)
+                  "list FC = factorize(C[1]);", 'print("STAGE length conditions " + string(timer - tic));']
+        return ["\n".join(lines)]
+    lines += [f"tic = timer; list SV = minAssGTZ(J + minor(D, {r}));",
+              'print("STAGE singular configurations " + string(timer - tic));']
+    scripts = ["\n".join(lines + points_script(a) + cones_script(a))]
+    if depth == "full":
+        scripts.append("\n".join(head + components_script(a)))
+        scripts.append("\n".join(head + ["tic = timer; list M = minAssGTZ(J);",
+                                          'print("STAGE decomposition " + string(timer - tic));']))
+    return scripts
 
 
-def local_script(a) -> list[str]:
-    """The tangent cone of J (radical here) at each singular configuration that is a point: J moved
-    to the point (over ``Q(t)`` with the minimal polynomial of a primitive element for a Galois orbit
-    of algebraic points), ``tangentcone`` (sing.lib: a standard basis for ``ds``, its lowest forms)."""
+def _points(a) -> list:
+    """The singular configurations that are points (rational, or a Galois orbit of algebraic points)."""
+    return [s for s in a.singular if s.point is not None or s.algebraic is not None]
+
+
+def _ideal(polys) -> str:
+    from mech.dsl.printing import poly_str
+    return ", ".join(poly_str(g) for g in polys) or "0"
+
+
+def _point_ring(a, k: int, s, order: str) -> list[str]:
+    """``ring L{k}`` (over ``Q(t)`` with the minimal polynomial for conjugate points) and ``map sh{k}``
+    moving the point to the origin."""
     from mech.dsl.printing import poly_str
     from mech.stdlib.standard import normalize
-    points = [s for s in a.singular if s.point is not None or s.algebraic is not None]
-    if not points or not a.radical:
-        return []
     names = ",".join(a.ring.names)
-    lines = ['LIB "sing.lib"; t = timer;']
+    if s.point is not None:
+        shift = [f"{x}+({c})" for x, c in zip(a.ring.names, s.point)]
+        return [f"ring L{k} = 0, ({names}), {order};", f"map sh{k} = R, {', '.join(shift)};"]
+    pt = s.algebraic
+    shift = [f"{x}+({poly_str(c)})" for x, c in zip(a.ring.names, pt.coords)]
+    return [f"ring L{k} = (0,{pt.ring.names[-1]}), ({names}), {order}; minpoly = {poly_str(normalize(pt.minpoly))};",
+            f"map sh{k} = R, {', '.join(shift)};"]
+
+
+def points_script(a) -> list[str]:
+    """The points of the singular configurations: for a Galois orbit of algebraic points the basis of
+    ``P + (t - form)`` for ``(dp(n), dp(1))`` (the primitive element's shape basis), and at every point the
+    modes through it (``reduce`` of each mode modulo the point's prime)."""
+    from mech.dsl.printing import poly_str
+    points = _points(a)
+    if not points:
+        return []
+    n, names = a.nvars, ",".join(a.ring.names)
+    lines = [f"ideal M{i} = {_ideal(md.prime)};" for i, md in enumerate(a.modes)] + ["tic = timer;"]
     for k, s in enumerate(points):
-        if s.point is not None:
-            lines.append(f"ring L{k} = 0, ({names}), dp;")
-            shift = [f"{x}+({c})" for x, c in zip(a.ring.names, s.point)]
-        else:
+        lines.append(f"ideal P{k} = std(ideal({_ideal(s.prime)}));")
+        lines += [f"int on{k}_{i} = size(reduce(M{i}, P{k})) == 0;" for i in range(len(a.modes))]
+        if s.point is None:
             pt = s.algebraic
-            t = pt.ring.names[-1]
-            lines.append(f"ring L{k} = (0,{t}), ({names}), dp; minpoly = {poly_str(normalize(pt.minpoly))};")
-            shift = [f"{x}+({poly_str(c)})" for x, c in zip(a.ring.names, pt.coords)]
-        lines.append(f"ideal J{k} = fetch(R, J); map sh{k} = L{k}, {', '.join(shift)}; "
-                     f"ideal C{k} = tangentcone(sh{k}(J{k})); setring R;")
-    lines.append('print("STAGE local analysis " + string(timer - t));')
+            lines += [f"ring E{k} = 0, ({names},{pt.ring.names[-1]}), (dp({n}),dp(1));",
+                      f"ideal G{k} = std(imap(R, P{k}) + ideal({pt.ring.names[-1]} - ({poly_str(pt.form)})));", "setring R;"]
+    lines.append('print("STAGE points " + string(timer - tic));')
     return lines
 
 
-def singular_stages(script: str, timeout: float) -> dict[str, float | None]:
-    """Seconds of each step Singular finished (None: the step it was in when the time ran out)."""
-    try:
-        out = subprocess.run([SINGULAR, "-q", "--no-warn"], input=script + "\nquit;\n", text=True,
-                             capture_output=True, timeout=timeout).stdout
-    except subprocess.TimeoutExpired as e:
-        out = (e.stdout or b"").decode() if isinstance(e.stdout, bytes) else (e.stdout or "")
-    got: dict[str, float | None] = {m[1]: int(m[2]) / 1000 for m in re.finditer(r"STAGE (.+) (\d+)\n", out)}
-    for step in re.findall(r'print\("STAGE ([a-z ]+) "', script):
-        if step not in got:
-            got[step] = None
-            break
+def components_script(a) -> list[str]:
+    """The local components at each point, from the motion modes through it: at a rational point the
+    modes moved there (a prime stays prime in the localization), at conjugate points ``minAssGTZ`` of
+    each mode moved there in a ``ds`` ring over ``Q(t)`` (Singular's minimal primes in the local ring);
+    with several components sing.lib's ``tangentcone`` of each (the transition test)."""
+    points = _points(a)
+    if not points or not a.decomposed:
+        return []
+    lines = [f"ideal M{i} = {_ideal(md.prime)};" for i, md in enumerate(a.modes)] + ["tic = timer;"]
+    for k, s in enumerate(points):
+        through = [i - 1 for i in s.modes]
+        lines += _point_ring(a, k, s, "ds") + [f"list C{k};"]
+        for i in through:
+            if s.point is not None:
+                lines.append(f"C{k} = insert(C{k}, sh{k}(M{i}));")
+            else:
+                lines.append(f"C{k} = C{k} + minAssGTZ(sh{k}(M{i}));")
+        lines.append(f"if (size(C{k}) > 1) {{ for (i = 1; i <= size(C{k}); i++) {{ ideal T = tangentcone(C{k}[i]); }} }}")
+        lines.append("setring R;")
+    lines.append('print("STAGE local components " + string(timer - tic));')
+    return lines
+
+
+def cones_script(a) -> list[str]:
+    """The tangent cone of J (radical here) at each singular configuration that is a point: J moved
+    to the point (over ``Q(t)`` with the minimal polynomial of a primitive element for a Galois orbit
+    of algebraic points), ``tangentcone`` (sing.lib: a standard basis for ``ds``, its lowest forms)."""
+    points = _points(a)
+    if not points or not a.radical:
+        return []
+    lines = ["tic = timer;"]
+    for k, s in enumerate(points):
+        lines += _point_ring(a, k, s, "dp")
+        lines.append(f"ideal TC{k} = tangentcone(sh{k}(J)); setring R;")
+    lines.append('print("STAGE tangent cones " + string(timer - tic));')
+    return lines
+
+
+def singular_stages(scripts: list[str], timeout: float) -> dict[str, float | None]:
+    """Seconds of each step Singular finished (None: the step it was in when the time ran out), each
+    script in a process of its own."""
+    got: dict[str, float | None] = {}
+    for script in scripts:
+        try:
+            out = subprocess.run([SINGULAR, "-q", "--no-warn"], input=script + "\nquit;\n", text=True,
+                                 capture_output=True, timeout=timeout).stdout
+        except subprocess.TimeoutExpired as e:
+            out = (e.stdout or b"").decode() if isinstance(e.stdout, bytes) else (e.stdout or "")
+        done = {m[1]: int(m[2]) / 1000 for m in re.finditer(r"STAGE (.+) (\d+)\n", out)}
+        got.update(done)
+        for step in re.findall(r'print\("STAGE ([a-z ]+) "', script):
+            if step not in done:
+                got[step] = None
+                break
     return got
 
 

@@ -13,21 +13,25 @@ from __future__ import annotations
 import random
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any, Callable, Sequence
+from typing import Any, Callable, Iterator, Sequence
+
+from flint import fmpq, fmpq_mat, fmpq_poly, fmpz_poly
 
 from .coeffs import PrimeField, RationalField
 from .dimension import krull_dim
 from .engines import standard_basis
 from .errors import DomainError, NotSupported
-from .factor import factorize, normalize
+from .factor import normalize
 from .groebner import groebner, normal_form
 from .hilbert import mult, vdim
-from .ideals import dimension, independent_set, intersect, is_subset, move, std, with_order
+from .buchberger import reduce_basis
+from .ideals import dimension, dp_ring, independent_set, intersect, is_subset, move, std, with_order
 from .localnf import weak_normal_form
 from .modular_rank import jacobian_rank_mod
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing
 from .primdec import min_ass_gtz, primdec_gtz, radical
+from .real_solve import QuotientAlgebra, RealSolvingError, rur_of
 
 
 def _ring_of(gens: Sequence[Poly], ring: PolyRing | None) -> PolyRing:
@@ -408,80 +412,165 @@ def _tangent_dim(gens: Sequence[Poly], at: Sequence[Poly], ring: PolyRing, m: Po
 MinAss = Callable[[Sequence[Poly], PolyRing], list[list[Poly]]]  # min_ass_gtz or an equivalent
 
 
+class SmoothSlices:
+    """The Galois orbits of smooth points of ``V(prime)`` (a prime of ``Q[x]`` of positive dimension
+    ``d``) on zero-dimensional rational slices ``x_i = c_i`` (``i`` in an independent set), each as the
+    minimal polynomial of a separating linear form on it.  A slice's quotient algebra ``A`` (linear
+    algebra: :mod:`.real_solve`) gives the characteristic polynomial of a separating form; an
+    irreducible factor of multiplicity one is an orbit of points where ``A`` is reduced: there the
+    Jacobian of ``prime`` and the ``d`` hyperplanes has rank ``n``, so the prime's has rank ``n - d``,
+    the tangent space has the variety's dimension, the points are smooth.  The orbits do not depend
+    on the point where the prime is looked at: computed on demand (one slice after another, at most
+    ``tries``) and kept, one search serves every point."""
+
+    def __init__(self, prime: Sequence[Poly], tries: int = 6) -> None:
+        self.prime, self.tries = list(prime), tries
+        self.orbits: list[fmpz_poly] = []
+        self._rnd = random.Random(3)
+        self._basis: list[Poly] | None = None
+        self._free: list[int] = []
+
+    def __iter__(self) -> Iterator[fmpz_poly]:
+        k = 0
+        while True:
+            while k < len(self.orbits):
+                yield self.orbits[k]
+                k += 1
+            if not self._next_slice():
+                return
+
+    def _next_slice(self) -> bool:
+        """Cut the next slice and keep its smooth orbits; False when the tries are used up."""
+        ring = _ring_of(self.prime, None)
+        if self._basis is None:
+            self._basis = std(self.prime, ring)
+            if dimension(self._basis, ring) <= 0:
+                self.tries = 0
+            else:
+                self._free = independent_set(self._basis, ring.nvars)
+        if self.tries <= 0:
+            return False
+        self.tries -= 1
+        rnd = self._rnd
+        sliced = self._basis + [ring.gens()[i] - ring.const(Fraction(rnd.randint(-9, 9), rnd.randint(1, 9)))
+                                for i in self._free]
+        try:
+            rep = rur_of(QuotientAlgebra(sliced, ring))
+        except RealSolvingError:  # not zero-dimensional, or no separating form
+            return True
+        chi = rep.charpoly
+        for f, _ in rep.poly.factor()[1]:
+            if (chi % fmpq_poly(f)).is_zero() and not (chi % fmpq_poly(f) ** 2).is_zero():
+                self.orbits.append(f)
+        return True
+
+
 def stays_prime(prime: Sequence[Poly], point: AlgebraicPoint, tries: int = 6,
-                min_ass: MinAss = min_ass_gtz) -> bool:
+                slices: SmoothSlices | None = None) -> bool:
     """A sufficient test that a prime of ``Q[x]`` of positive dimension stays prime over
-    ``K = Q[t]/m(t)``: a zero-dimensional slice has a prime ``Z`` of smooth points of
-    ``V(prime)`` with ``Z`` prime over K.  Then ``Gal(Qbar/K)`` moves the points of ``Z``
-    transitively; each lies on exactly one geometric component (it is smooth) and every
-    geometric component holds one (``Gal(Qbar/Q)`` permutes them transitively, ``prime`` is
-    prime over Q), so ``Gal(Qbar/K)`` permutes the components transitively."""
-    ring = _ring_of(prime, None)
-    n = ring.nvars
-    basis = std(prime, ring)
-    d = dimension(basis, ring)
-    if d <= 0:
-        return False
-    free = independent_set(basis, n)
-    rnd = random.Random(3)
-
-    def lift(polys: Sequence[Poly], target: PolyRing) -> list[Poly]:
-        return [g.compose(target.gens()[:n], target) for g in polys]
-    for _ in range(tries):
-        sliced = basis + [ring.gens()[i] - ring.const(Fraction(rnd.randint(-9, 9), rnd.randint(1, 9)))
-                          for i in free]
-        if dimension(sliced, ring) != 0:
-            continue
-        for Z in min_ass(sliced, ring):
-            z = primitive_element(Z, ring)
-            if (_tangent_dim(lift(basis, z.ring), z.coords, z.ring, z.minpoly, d) == d
-                    and _irreducible_over(point.minpoly, z.minpoly)):
-                return True
-    return False
+    ``K = Q[t]/m(t)``: a zero-dimensional slice has a Galois orbit ``Z`` of smooth points of
+    ``V(prime)`` (:class:`SmoothSlices`; ``slices``: those of ``prime``, shared across points) that
+    stays one orbit over K.  Then ``Gal(Qbar/K)`` moves the points of ``Z`` transitively; each lies
+    on exactly one geometric component (it is smooth) and every geometric component holds one
+    (``Gal(Qbar/Q)`` permutes them transitively, ``prime`` is prime over Q), so ``Gal(Qbar/K)``
+    permutes the components transitively."""
+    m = _univariate(point.minpoly)
+    return any(_field_product(m, fmpq_poly(mu)) for mu in (slices or SmoothSlices(prime, tries)))
 
 
-def _irreducible_over(m: Poly, mu: Poly) -> bool:
-    """Whether ``m`` stays irreducible over ``Q[s]/mu(s)`` (both irreducible, univariate in
-    their last variable), i.e. ``Q[s, t]/(mu(s), m(t))`` is a field: for ``w = s + k t``
-    of full degree ``deg mu * deg m`` (a primitive element) the algebra is ``Q[w]/r(w)``,
-    ``r`` its minimal polynomial; a field iff ``r`` is irreducible."""
-    ring = PolyRing(m.ring.field, ["s", "t", "w"], MonomialOrder([Block("dp", 2), Block("dp", 1)]))
-    s, t, w = ring.gens()
+def _univariate(p: Poly) -> fmpq_poly:
+    """A polynomial in the last variable only, as flint's ``fmpq_poly``."""
+    coeffs = [0] * (max(e[-1] for e in p.terms) + 1)
+    for e, c in p.terms.items():
+        coeffs[e[-1]] = c
+    return fmpq_poly(coeffs)
 
-    def univariate(p: Poly, x: Poly) -> Poly:
-        return sum((x ** e[-1] * ring.const(c) for e, c in p.terms.items()), ring.zero())
-    full = m.total_degree() * mu.total_degree()
-    for k in range(1, full * full + 2):  # each pair of points rules out at most one k
-        r = groebner([univariate(mu, s), univariate(m, t), w - s - t * ring.const(k)], ring)[0]
-        if r.total_degree() == full:
-            _, factors = factorize(r)
-            return len(factors) == 1
+
+def _field_product(m: fmpq_poly, mu: fmpq_poly) -> bool:
+    """Whether ``Q[s, t]/(mu(s), m(t))`` is a field (``mu``, ``m`` irreducible), i.e. ``m`` stays
+    irreducible over ``Q[s]/mu``: for ``w = s + k t`` with a squarefree characteristic polynomial
+    ``r`` on the algebra (the tensor product of the companion matrices' algebras; then ``w`` is a
+    primitive element) the algebra is ``Q[w]/r``, a field iff ``r`` is irreducible."""
+    a, b = mu.degree(), m.degree()
+    S, T = _companion(mu), _companion(m)
+    for k in range(1, (a * b) ** 2 + 2):  # each pair of roots rules out at most one k
+        W = fmpq_mat(a * b, a * b, [S[i // b, j // b] * (i % b == j % b) + k * T[i % b, j % b] * (i // b == j // b)
+                                    for i in range(a * b) for j in range(a * b)])
+        r = W.charpoly()
+        if r.gcd(r.derivative()).degree() == 0:
+            return len(r.factor()[1]) == 1
     raise NotSupported("no primitive element found")
+
+
+def _companion(f: fmpq_poly) -> fmpq_mat:
+    """The companion matrix of ``f`` (multiplication by the variable on ``Q[s]/f``)."""
+    d, c = f.degree(), f.coeffs()
+    return fmpq_mat(d, d, [(fmpq(int(i == j + 1)) if j < d - 1 else -c[i] / c[d]) for i in range(d) for j in range(d)])
 
 
 def local_components_over(centred: Sequence[Poly], point: AlgebraicPoint,
                           primes: Sequence[Sequence[Poly]] | None = None,
-                          min_ass: MinAss = min_ass_gtz) -> list[list[Poly]]:
+                          min_ass: MinAss = min_ass_gtz,
+                          slices: Sequence[SmoothSlices] | None = None) -> list[list[Poly]]:
     """The minimal primes of ``centred`` (an ideal of ``point.ring`` containing ``m(t)``)
     through the origin over K (contained in ``(x, m(t))``): the local components at the
     point.  With ``primes``, the minimal primes over Q of the uncentred ideal: each one
     through the point that :func:`stays_prime` over K gives one component directly, the
-    others are decomposed (minimal primes over K are slow: linear algebra over K(u))."""
+    others are decomposed (minimal primes over K are slow: linear algebra over K(u));
+    ``slices``: the primes' :class:`SmoothSlices`, kept across points."""
     ring = point.ring
     n = ring.nvars - 1
     origin = ring.gens()[:n] + [point.minpoly]
     if primes is None:
         return [p for p in min_ass(centred, ring) if is_subset(p, origin, ring)]
     comps = []
-    for P in primes:
-        moved = _moved(P, point)
-        if not is_subset(moved, origin, ring):
+    for k, P in enumerate(primes):
+        if not vanishes_at(P, point):
             continue
-        if stays_prime(P, point, min_ass=min_ass):
-            comps.append(groebner(moved, ring))
+        if stays_prime(P, point, slices=None if slices is None else slices[k]):
+            comps.append(moved_basis(P, point))
         else:
-            comps += [p for p in min_ass(moved, ring) if is_subset(p, origin, ring)]
+            comps += [p for p in min_ass(_moved(P, point), ring) if is_subset(p, origin, ring)]
     return comps
+
+
+def moved_basis(prime: Sequence[Poly], point: AlgebraicPoint) -> list[Poly]:
+    """The reduced Gröbner basis of ``point.ring`` of ``prime(x + phi(t)) + (m(t))`` (``prime``: polynomials
+    of ``Q[x]``) without a Buchberger step: ``x -> x + c`` keeps the highest-degree form of every
+    polynomial, so it maps a ``dp`` basis over ``K = Q[t]/m(t)`` to a ``dp`` basis with the same leading
+    monomials; those are free of ``t`` with rational coefficients, so with ``m(t)`` the images form a
+    basis for ``(dp(x), dp(t))``, which only needs its tails reduced."""
+    glob = dp_ring(_ring_of(prime, None))
+    moved = _moved(std(move(list(prime), glob), glob), point)
+    return [Poly(point.ring, t) for t in reduce_basis([g.terms for g in moved], point.ring)]
+
+
+def dimension_over(basis: Sequence[Poly], point: AlgebraicPoint) -> int:
+    """The dimension over ``K = Q[t]/m(t)`` of the ideal of a Gröbner basis of ``point.ring`` (its
+    ordering puts ``x`` before ``t``) containing ``m(t)``: that of the leading monomials in ``x``."""
+    n = point.ring.nvars - 1
+    return krull_dim([g.lm()[:n] for g in basis if not _in_t(g, n)], n)
+
+
+def vanishes_at(gens: Sequence[Poly], point: AlgebraicPoint) -> bool:
+    """Whether the polynomials (of ``Q[x]``) vanish at the conjugate points: ``g(phi(t))`` is 0
+    modulo ``m(t)``, computed with univariate polynomials."""
+    m = _univariate(point.minpoly)
+    coords = [_univariate(c) % m if not c.is_zero() else fmpq_poly([]) for c in point.coords]
+    powers: dict[tuple[int, int], fmpq_poly] = {}
+    for g in gens:
+        value = fmpq_poly([])
+        for e, c in g.terms.items():
+            term = fmpq_poly([c])
+            for i, k in enumerate(e):
+                if k:
+                    if (i, k) not in powers:
+                        powers[i, k] = (coords[i] ** k) % m
+                    term = (term * powers[i, k]) % m
+            value += term
+        if not (value % m).is_zero():
+            return False
+    return True
 
 
 def classify_algebraic_point(gens: Sequence[Poly], point: AlgebraicPoint,

@@ -39,7 +39,8 @@ from mech.kernel.groebner import normal_forms
 from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, intersect, is_subset, move, saturate_poly,
                                 std)
 from mech.kernel.errors import DomainError
-from mech.kernel.local import AlgebraicPoint, centre_at, local_components_over, primitive_element
+from mech.kernel.local import (AlgebraicPoint, SmoothSlices, centre_at, dimension_over, local_components_over,
+                               primitive_element)
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
 from mech.kernel.progress import stage
@@ -389,32 +390,46 @@ def local_analysis(a: Analysis) -> list[SingularPoint]:
     if not ok:
         a.singular_done = True
         return []
-    shared = _Shared(_variety(a), None, _minimal_modes(a) if a.decomposed else [])
+    minimal = _minimal_modes(a) if a.decomposed else []
+    shared = _Shared(_variety(a), None, minimal, [SmoothSlices(md.prime) for md in minimal])
     shared.lr = linear_reduction(shared.variety, R)  # the points' cones in the ring without linear variables
     out = a.singular = []
-    with stage("local analysis", total=len(primes)) as st:
+    with stage("points", total=len(primes)) as st:
         for k, P in enumerate(primes):
             st.step(k, f"singular configuration {k + 1} of {len(primes)}")
-            d = dimension(P, R)
-            point = _rational_point(P) or linear_point(P)
-            sp = SingularPoint(P, tuple(point) if point else None, d, True if point else None)
-            if point is None and d == 0:  # a Galois orbit of algebraic points: real iff m(t) has a real root
-                ok, sp.algebraic = _timed(a, "real points", REAL_BUDGET, primitive_element, P, R)
-                sp.real = bool(count_real_roots(sp.algebraic.minpoly) > 0) if ok else None
-            elif point is None:
-                sp.real = _real(a, P)
-            sp.modes = [i for i, md in enumerate(a.modes, 1) if _on(md.prime, point)] if point else \
-                [i for i, md in enumerate(a.modes, 1) if is_subset(md.prime, P, R)]
-            out.append(sp)
-            if point is None and (d != 0 or sp.algebraic is None):
-                continue
-            ok, _ = _timed(a, f"local analysis at q{k + 1}", POINT_BUDGET, _local_at, a, sp, shared)
+            out.append(_singular_point(a, P))
+    at = [(k, sp) for k, sp in enumerate(out) if sp.point is not None or sp.algebraic is not None]
+    with stage("local components", total=len(at)) as st:
+        for j, (k, sp) in enumerate(at):
+            st.step(j, f"q{k + 1}")
+            ok, _ = _timed(a, f"local components at q{k + 1}", POINT_BUDGET, _components_at, a, sp, shared)
             if not ok:
-                sp.kind = "not classified (its local analysis ran out of its budget)"
+                sp.kind = "not classified (its local components ran out of their budget)"
+    with stage("tangent cones", total=len(at)) as st:
+        for j, (k, sp) in enumerate(at):
+            st.step(j, f"q{k + 1}")
+            _cone_at(a, sp, k, shared)
     for e in a.embedded or []:
         e.singular = any(is_subset(sp.prime, e.prime, R) for sp in out)
     a.singular_done = True
     return out
+
+
+def _singular_point(a: Analysis, P: list[Poly]) -> SingularPoint:
+    """A singular configuration: its dimension, its point (rational coordinates, or a primitive element
+    for a Galois orbit of algebraic points), whether it is real and the modes through it."""
+    R = a.ring
+    d = dimension(P, R)
+    point = _rational_point(P) or linear_point(P)
+    sp = SingularPoint(P, tuple(point) if point else None, d, True if point else None)
+    if point is None and d == 0:  # a Galois orbit of algebraic points: real iff m(t) has a real root
+        ok, sp.algebraic = _timed(a, "real points", REAL_BUDGET, primitive_element, P, R)
+        sp.real = bool(count_real_roots(sp.algebraic.minpoly) > 0) if ok else None
+    elif point is None:
+        sp.real = _real(a, P)
+    sp.modes = [i for i, md in enumerate(a.modes, 1) if _on(md.prime, point)] if point else \
+        [i for i, md in enumerate(a.modes, 1) if is_subset(md.prime, P, R)]
+    return sp
 
 
 def _rational_point(prime: list[Poly]) -> list | None:
@@ -442,33 +457,55 @@ def _on(prime: list[Poly], point: Sequence) -> bool:
 @dataclass
 class _Shared:
     """What the local analyses of all the singular points share: the variety's generators, their
-    :func:`linear_reduction`, the minimal motion modes (empty without the modes)."""
+    :func:`linear_reduction`, the minimal motion modes (empty without the modes) and their
+    :class:`~mech.kernel.local.SmoothSlices` (the certificates that a mode stays prime over a field)."""
 
     variety: list[Poly]
     lr: LinearReduction | None
     minimal: list[Mode]
+    slices: list[SmoothSlices]
 
 
-def _local_at(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
-    """Step 4 at one singular configuration that is a point (rational or algebraic)."""
-    variety, lr = shared.variety, shared.lr
-    if sp.point is None:
-        _algebraic_local(a, sp, shared)
-    elif not a.decomposed:
+def _components_at(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
+    """The local components at a singular configuration that is a point (rational or algebraic), the kind
+    of point and the transition test (their tangent cones)."""
+    if not a.decomposed:
         sp.kind = _no_components(a)
-        sp.tangent_cone = cone_at_point(variety, lr, sp.point)
-    else:  # the kind, components and transition first (cheap), then the cone of J (a local standard basis)
+    elif sp.point is None:
+        _algebraic_components(sp, shared)
+    else:
         through = _modes_through(shared.minimal, sp.point)
         sp.local_components = [translate(md.prime, sp.point) for md in through]
         sp.kind = _kind_at(sp.local_components, [md.dim for md in through], a.ring)
+        sp.transition = _transition(_component_cones(sp, shared, a.ring) if len(through) > 1 else [])
 
-        def cones() -> list[list[Poly]]:
-            return [component_cone(c, md.dim, a.ring) for c, md in zip(sp.local_components, through)]
-        sp.transition = _transition(cones() if len(through) > 1 else [])
+
+def _component_cones(sp: SingularPoint, shared: _Shared, R: PolyRing) -> list[list[Poly]]:
+    """The tangent cones of the local components at a rational point (each of the dimension of its mode)."""
+    dims = [md.dim for md in _modes_through(shared.minimal, sp.point)]
+    return [component_cone(c, d, R) for c, d in zip(sp.local_components, dims)]
+
+
+def _cone_at(a: Analysis, sp: SingularPoint, k: int, shared: _Shared) -> None:
+    """The tangent cone of the variety at the singular configuration ``q{k + 1}`` (a point): at a rational
+    point with several local components within :data:`CONE_BUDGET` (else the union of their cones, as a
+    set), otherwise within :data:`POINT_BUDGET`."""
+    variety, lr = shared.variety, shared.lr
+    if sp.point is None:
+        ok, cone = _timed(a, f"tangent cone at q{k + 1}", POINT_BUDGET, cone_over_point, variety, lr, sp.algebraic)
+    elif a.decomposed and sp.local_components:
         ok, cone = within(CONE_BUDGET, cone_at_point, variety, lr, sp.point, cpu=True)
-        sp.tangent_cone = cone if ok else _union_cone(cones())
-        sp.cone_note = "" if ok else (f"as a set: the union of the local components' cones (the ideal of lowest "
-                                      f"forms ran out of its {CONE_BUDGET:g} s budget)")
+        if not ok:
+            cone = _union_cone(_component_cones(sp, shared, a.ring))
+            sp.cone_note = (f"as a set: the union of the local components' cones (the ideal of lowest "
+                            f"forms ran out of its {CONE_BUDGET:g} s budget)")
+            ok = True
+    else:
+        ok, cone = _timed(a, f"tangent cone at q{k + 1}", POINT_BUDGET, cone_at_point, variety, lr, sp.point)
+    if ok:
+        sp.tangent_cone = cone
+    else:
+        sp.cone_note = f"not computed: it ran out of its {POINT_BUDGET:g} s budget"
 
 
 #: CPU seconds for the tangent cone of J at a singular configuration (a local standard basis: Bricard's
@@ -496,25 +533,22 @@ def _union_cone(cones: list[list[Poly]]) -> list[Poly]:
     return move(intersect(*(move(c, glob) for c in cones), ring=glob), cones[0][0].ring)
 
 
-def _algebraic_local(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
-    """Step 4 at the conjugate points of a zero-dimensional prime that is not a rational point
-    (``sp.algebraic``: a primitive element ``t``): over ``K = Q[t]/m(t)``, with the motion modes
-    (the minimal primes of J over Q) as the starting point of the local components over K."""
-    pt, variety, lr = sp.algebraic, shared.variety, shared.lr
-    if not a.decomposed:
-        sp.kind = _no_components(a)
-        sp.tangent_cone = cone_over_point(variety, lr, pt)
-        return
+def _algebraic_components(sp: SingularPoint, shared: _Shared) -> None:
+    """The local components at the conjugate points of a zero-dimensional prime that is not a rational
+    point (``sp.algebraic``: a primitive element ``t``), over ``K = Q[t]/m(t)``, from the motion modes
+    (the minimal primes of J over Q); the kind and the transition test."""
+    pt = sp.algebraic
     # kernel.local.classify_algebraic_point's kind, without the tangent space of the components' union
     # (their intersection over K: 0.4 s on Watt I-B), which only matters for one component
-    comps = local_components_over(centre_at(variety, pt), pt, [md.prime for md in shared.minimal], min_ass_reduced)
+    comps = local_components_over(centre_at(shared.variety, pt), pt, [md.prime for md in shared.minimal],
+                                  min_ass_reduced, shared.slices)
     if not comps:
         raise DomainError("no component through the points: primes must be the ideal's minimal primes")
     sp.local_components = comps
-    sp.kind = "components meet" if len(comps) > 1 else \
-        "regular" if tangent_dim_over(comps[0], pt) == dimension(comps[0], pt.ring) else "singular"
-    sp.tangent_cone = cone_over_point(variety, lr, pt)
-    sp.transition = _transition([component_cone_over(c, pt) for c in comps] if len(comps) > 1 else [])
+    dims = [dimension_over(c, pt) for c in comps]
+    sp.kind = "components meet" if len(comps) > 1 else "regular" if tangent_dim_over(comps[0], pt) == dims[0] else \
+        "singular"
+    sp.transition = _transition([component_cone_over(c, pt, d) for c, d in zip(comps, dims)] if len(comps) > 1 else [])
 
 
 def _no_components(a: Analysis) -> str:

@@ -260,13 +260,13 @@ def quadratic_cone_over(centred: Sequence[Poly], point: AlgebraicPoint) -> list[
     return None if cone is None else over.up(cone)
 
 
-def component_cone_over(centred: Sequence[Poly], point: AlgebraicPoint) -> list[Poly]:
+def component_cone_over(centred: Sequence[Poly], point: AlgebraicPoint, dim: int) -> list[Poly]:
     """:func:`tangent_cone_over_reduced` of a local component over ``K`` (a prime of ``point.ring``
-    containing ``m(t)``, through the origin): at a smooth point (the linear parts over K of rank
-    ``n - dim``) the linear parts, as :func:`component_cone` over Q; the same reduced basis."""
+    containing ``m(t)``, through the origin, of dimension ``dim``): at a smooth point (the linear parts
+    over K of rank ``n - dim``) the linear parts, as :func:`component_cone` over Q; the same reduced basis."""
     over = _OverK(point)
     polys = over.down(centred)
-    if over.kring.nvars - linear_rank(polys, over.kring) == dimension(list(centred), point.ring):
+    if over.kring.nvars - linear_rank(polys, over.kring) == dim:
         linear = [Poly(over.kring, {e: c for e, c in g.terms.items() if sum(e) == 1}) for g in polys]
         return groebner(over.up([g for g in linear if not g.is_zero()]) + [point.minpoly], point.ring)
     return tangent_cone_over_reduced(centred, point)

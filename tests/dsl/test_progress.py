@@ -22,7 +22,8 @@ def test_session_progress_callback_gets_the_stages():
     top = [(e.kind, e.stage) for e in events if not e.path]
     assert top[0] == ("start", "analysis") and top[-1] == ("end", "analysis")
     inner = {e.stage for e in events if e.path == ("analysis",)}
-    assert {"constraints", "decomposition", "singular configurations", "local analysis"} <= inner
+    assert {"constraints", "decomposition", "singular configurations", "points", "local components",
+            "tangent cones"} <= inner
     starts = sum(e.kind == "start" for e in events)
     assert starts == sum(e.kind == "end" for e in events)  # every stage that opens closes
     assert all(e.status == "done" for e in events if e.kind == "end" and e.stage == "analysis")

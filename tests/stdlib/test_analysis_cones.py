@@ -47,7 +47,7 @@ def test_smooth_components_over_their_field():
     X, Y, t = pt.ring.gens()
     m = pt.minpoly
     for comp in ([Y - X * t, m], [Y - X ** 2 - X * t, m], [X * Y + Y ** 2 - X, m], [Y ** 2 - t * X ** 3, m]):
-        assert ideals_equal(component_cone_over(comp, pt), tangent_cone_over_reduced(comp, pt), pt.ring)
+        assert ideals_equal(component_cone_over(comp, pt, 1), tangent_cone_over_reduced(comp, pt), pt.ring)
     assert [tangent_dim_over(c, pt) for c in ([Y - X * t, m], [Y ** 2 - t * X ** 3, m], [X, Y, m])] == [1, 2, 0]
 
 

@@ -115,11 +115,15 @@ def test_stage_benchmark_measures_the_stages():
     spec.loader.exec_module(bench)
     spent, total, a = bench.mech_stages(bench.CASES[0])  # the kite
     assert {"dimension", "decomposition", "singular configurations"} <= set(spent) and total > 0
-    script = bench.singular_script(a, "full")
-    assert "minAssGTZ(J);" in script and "minor(D, 5)" in script
+    assert {"points", "local components", "tangent cones"} <= set(spent)
+    scripts = bench.singular_script(a, "full")
+    assert len(scripts) == 3  # the decomposition and the local components in processes of their own
+    assert "minAssGTZ(J);" in scripts[2] and "minor(D, 5)" in scripts[0] and "tangentcone(" in scripts[0]
+    assert "int t;" not in "".join(scripts)  # an int t would stand for the parameter t of Q(t)
     if SINGULAR:
-        got = bench.singular_stages(script, 120)
-        assert set(got) == {"dimension", "decomposition", "singular configurations", "local analysis"}
+        got = bench.singular_stages(scripts, 120)
+        assert set(got) == {"dimension", "decomposition", "singular configurations", "points", "local components",
+                            "tangent cones"}
         assert all(v is not None for v in got.values())
 
 
