@@ -8,6 +8,12 @@ The strategies (their proofs are in the kernel modules named):
 * ``slice`` (radical complete intersections): a zero-dimensional slice of ``V(J)`` whose
   ``deg V`` points are one Galois orbit proves ``J`` prime (``mech.kernel.slices``); several
   orbits bound the number of modes.
+* ``reduction`` (radical complete intersections in at most :data:`SMALL` variables: one loop):
+  GTZ's reduction to dimension zero over ``K(u)`` for an independent set ``u``
+  (``mech.kernel.zerodim.Reduction``) gives the minimal primes of ``J`` that meet ``K[u]`` in 0;
+  they are all of them when their degrees add up to ``deg J`` (``J`` radical and unmixed is the
+  intersection of its minimal primes, all of its dimension, each counted once in its degree), with
+  none of ``minAssGTZ``'s splittings and saturations.
 * ``minimal primes``: ``minAssGTZ`` (``mech.kernel.primdec``), first with a short budget (it
   finishes at once on small mechanisms), skipped when the slice found a Galois orbit of
   :data:`HIGH_DEGREE` points or more on a curve (a mode of high degree: the interpolated
@@ -34,11 +40,13 @@ from typing import Any, Callable, Optional
 from mech.dsl.limits import within
 from mech.kernel import Poly
 from mech.kernel.curve_ideals import ideal_of_components
-from mech.kernel.ideals import is_subset
+from mech.kernel.hilbert import mult
+from mech.kernel.ideals import dp_ring, is_subset, move, std
 from mech.kernel.primdec import min_ass_gtz, primdec_gtz
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes, split_by_factors
 from mech.kernel.slices import curve_image, slice_orbits
+from mech.kernel.zerodim import Reduction
 from mech.stdlib.analysis_parts import loop_groups, modes_by_parts
 
 Found = list[list[Poly]]  # the minimal primes
@@ -83,6 +91,20 @@ def _short_min_ass_first(a: Any) -> bool:
     return not (high and _radical_ci(a) and a.dim == 1)
 
 
+def _by_reduction(a: Any) -> Optional[Found]:
+    glob = dp_ring(a.ring)
+    basis = std(move(a.ideal, glob), glob)
+    primes = Reduction(basis, glob).primes()
+    if sum(_degree(P) for P in primes) != _degree(basis):
+        return None  # a mode inside V(h): minAssGTZ's saturations find it
+    return [std(move(P, a.ring), a.ring) for P in primes]
+
+
+def _degree(basis: list[Poly]) -> int:
+    """The degree of the affine variety of a basis for a degree ordering (of its leading ideal)."""
+    return mult([g.lm() for g in basis], basis[0].ring.nvars)
+
+
 def _by_min_ass(a: Any) -> Optional[Found]:
     return min_ass_gtz(a.ideal, a.ring)
 
@@ -120,6 +142,7 @@ def _by_projection(a: Any) -> Optional[Found]:
 #: The chain, in order.  Budgets are seconds of CPU time (a busy machine does not shorten them); the whole analysis
 #: also stops at the statement's time limit (mech --timeout), with a partial report.
 STRATEGIES: list[Strategy] = [
+    Strategy("reduction", 2, lambda a: _radical_ci(a) and a.ring.nvars <= SMALL, _by_reduction, "minimal primes of J"),
     Strategy("slice", 10, _radical_ci, _by_slice, "J is prime, certified by a linear slice"),
     Strategy("minimal primes", 2, _short_min_ass_first, _by_min_ass, "minimal primes of J"),
     Strategy("interpolated projection", 60, lambda a: _radical_ci(a) and a.dim == 1, _by_curve,
@@ -132,21 +155,20 @@ STRATEGIES: list[Strategy] = [
 ]
 
 
-#: Up to this many variables (one loop: four-bars, kites) ``minAssGTZ`` finishes in a few tens of
-#: milliseconds, less than the slice takes when it finds several orbits (the kite: 13 ms): its short
-#: try runs first.
+#: Up to this many variables (one loop: four-bars, kites) the reduction, then ``minAssGTZ``, finish in a
+#: few tens of milliseconds, less than the slice takes when it finds several orbits (the kite: 13 ms):
+#: their short tries run first.
 SMALL = 6
 
 
 def _chain(a: Any) -> list[Strategy]:
     """The strategies that apply, in :data:`STRATEGIES`' order but for small rings (:data:`SMALL`),
-    where the short ``minAssGTZ`` try comes first."""
+    where the short ``minAssGTZ`` try comes before the slice."""
     chain = [s for s in STRATEGIES if s.applies(a)]
-    if a.ring.nvars <= SMALL and chain and chain[0].name == "slice":
-        short = next((s for s in chain if s.name == "minimal primes"), None)
-        if short is not None:
-            chain.remove(short)
-            chain.insert(0, short)
+    names = [s.name for s in chain]
+    if a.ring.nvars <= SMALL and "slice" in names and "minimal primes" in names:
+        short = chain.pop(names.index("minimal primes"))
+        chain.insert(names.index("slice"), short)
     return chain
 
 

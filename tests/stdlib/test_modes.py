@@ -11,11 +11,13 @@ import time
 
 import pytest
 
+from mech.kernel import Block
 from mech.kernel.ideals import ideals_equal
+from mech.kernel.primdec import min_ass_gtz
 from mech.stdlib.analysis import analyze
 from mech.stdlib.mechanism import parse_mechanism
 from mech.stdlib.reports import report_data, report_text
-from tests.util import SINGULAR, ideal_blocks, parse_poly, run_singular
+from tests.util import SINGULAR, ideal_blocks, parse_poly, ring, run_singular
 
 DOUBLE_PARALLELOGRAM = "ground O A 3; fix E 6 0; bar O B 1; body B C 3 0 F 6 0; bar C A 1; bar F E 1"
 WATT_I = "ground O A 4; body O B 3 0 E 2 2; body B C 4 0 F 2 2; bar C A 2; bar E H 3; bar H F 3"
@@ -281,9 +283,25 @@ def test_slice_orbits_order_the_strategies(monkeypatch, mechanism, orbits, short
                           else "minimal primes of J, certified by a projection interpolated from slices")
 
 
-def test_small_rings_try_min_ass_first():
-    """A kite (6 variables): the short minAssGTZ try runs before the slice, and finds its two modes."""
+def test_small_rings_try_the_reduction_and_min_ass_first():
+    """A kite (6 variables): the reduction to dimension zero runs before the slice and finds its two modes,
+    the minimal primes of J (as minAssGTZ gives them); the short minAssGTZ try also comes before the slice."""
     from mech.stdlib import modes
     a = analyze(parse_mechanism("ground O A 1; bar O B 1; bar B C 2; bar C A 2"))
     assert a.ring.nvars <= modes.SMALL and a.slice_orbits is None and len(a.modes) == 2
     assert a.modes_by == "minimal primes of J"
+    found = modes._by_reduction(a)
+    assert sorted(map(str, found)) == sorted(map(str, min_ass_gtz(a.ideal, a.ring)))
+    assert [s.name for s in modes._chain(a)][:3] == ["reduction", "minimal primes", "slice"]
+
+
+def test_the_reduction_declines_when_a_mode_lies_where_h_vanishes():
+    """x*y over K(u) for one variable u misses the line u = 0: the degrees (1 against 2) say so, and the
+    chain goes on to minAssGTZ."""
+    import types
+    from mech.stdlib import modes
+    R = ring(["x", "y"], [Block("dp", 2)])
+    x, y = R.gens()
+    assert modes._by_reduction(types.SimpleNamespace(ring=R, ideal=[x * y])) is None
+    two = modes._by_reduction(types.SimpleNamespace(ring=R, ideal=[x * y - 1, x - y]))  # two points
+    assert two is not None and sorted(map(str, two)) == sorted(map(str, min_ass_gtz([x * y - 1, x - y], R)))
