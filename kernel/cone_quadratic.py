@@ -102,16 +102,22 @@ def _nonzero_on(q: Poly, basis: list[list[Any]], ring: PolyRing) -> bool:
 
 def linear_rank(polys: Sequence[Poly], ring: PolyRing) -> int:
     """The rank of the linear parts of ``polys`` (the Jacobian's rank at the origin)."""
+    return row_rank([_row(g, ring) for g in polys], ring.field)
+
+
+def row_rank(rows: Sequence[Sequence[Any]], field: Any) -> int:
+    """The rank of a matrix over a field (its rows), by Gaussian elimination."""
     rank = 0
     pivots: list[tuple[int, list[Any]]] = []
-    for row in (_row(g, ring) for g in polys):
+    for row in rows:
+        row = list(row)
         for col, prow in pivots:
             if row[col]:
                 f = row[col]
                 row = [a - f * b for a, b in zip(row, prow)]
         col = next((k for k, a in enumerate(row) if a), None)
         if col is not None:
-            inv = ring.field.one / row[col]
+            inv = field.one / row[col]
             pivots.append((col, [a * inv for a in row]))
             rank += 1
     return rank

@@ -11,6 +11,7 @@ element ``t`` (:func:`primitive_element`, :func:`classify_algebraic_point`).
 from __future__ import annotations
 
 import random
+from math import comb
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Callable, Iterator, Sequence
@@ -18,6 +19,7 @@ from typing import Any, Callable, Iterator, Sequence
 from flint import fmpq, fmpq_mat, fmpq_poly, fmpz_poly
 
 from .coeffs import PrimeField, RationalField
+from .cone_quadratic import row_rank
 from .dimension import krull_dim
 from .engines import standard_basis
 from .errors import DomainError, NotSupported
@@ -171,13 +173,30 @@ def _point(ring: PolyRing, point: Sequence[Any]) -> list[Any]:
 
 
 def shift_to_origin(gens: Sequence[Poly], point: Sequence[Any]) -> list[Poly]:
-    """The generators with ``x_i`` replaced by ``x_i + p_i``: the point moves to the origin."""
+    """The generators with ``x_i`` replaced by ``x_i + p_i``: the point moves to the origin (expanded
+    term by term by the binomial theorem)."""
     if not gens:
         return []
     ring = gens[0].ring
+    field = ring.field
     p = _point(ring, point)
-    images = [x + c for x, c in zip(ring.gens(), p)]
-    return [g.compose(images) for g in gens]
+    out = []
+    for g in gens:
+        terms: dict[tuple, Any] = {}
+        for e, c in g.terms.items():
+            parts = [((), c)]
+            for i, k in enumerate(e):
+                if not k:
+                    parts = [(f + (0,), v) for f, v in parts]
+                elif not p[i]:
+                    parts = [(f + (k,), v) for f, v in parts]
+                else:
+                    expansion = [(j, comb(k, j) * p[i] ** (k - j)) for j in range(k + 1)]
+                    parts = [(f + (j,), v * w) for f, v in parts for j, w in expansion]
+            for f, v in parts:
+                terms[f] = terms.get(f, field.zero) + v
+        out.append(Poly(ring, {f: v for f, v in terms.items() if v}))
+    return out
 
 
 def _centred(gens: Sequence[Poly], point: Sequence[Any]) -> list[Poly]:
@@ -201,19 +220,7 @@ def jacobian_rank(gens: Sequence[Poly], point: Sequence[Any]) -> int:
     """Rank of the Jacobian matrix of ``gens`` at the point (exact, over the field)."""
     ring = gens[0].ring
     p = _point(ring, point)
-    rows = [[g.diff(j).evaluate(p) for j in range(ring.nvars)] for g in gens]
-    rank = 0
-    for col in range(ring.nvars):
-        piv = next((r for r in range(rank, len(rows)) if rows[r][col] != 0), None)
-        if piv is None:
-            continue
-        rows[rank], rows[piv] = rows[piv], rows[rank]
-        for r in range(rank + 1, len(rows)):
-            if rows[r][col] != 0:
-                f = rows[r][col] / rows[rank][col]
-                rows[r] = [a - f * b for a, b in zip(rows[r], rows[rank])]
-        rank += 1
-    return rank
+    return row_rank([[g.diff(j).evaluate(p) for j in range(ring.nvars)] for g in gens], ring.field)
 
 
 def tangent_space_dim(gens: Sequence[Poly], point: Sequence[Any]) -> int:

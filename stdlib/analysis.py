@@ -40,14 +40,14 @@ from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, int
                                 std)
 from mech.kernel.errors import DomainError
 from mech.kernel.local import (AlgebraicPoint, SmoothSlices, centre_at, dimension_over, local_components_over,
-                               primitive_element)
+                               primitive_element, shift_to_origin)
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
 from mech.stdlib.analysis_finite import finite_analysis
 from mech.stdlib.analysis_linear import (LinearReduction, component_cone, cone_at_point, cone_over_point, linear_reduction,
-                                         min_ass_reduced, component_cone_over, tangent_dim_over, translate)
+                                         min_ass_reduced, component_cone_over, tangent_dim_over)
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.modes import embedded_components, motion_modes
 from mech.stdlib.realpoints import count_real_roots, has_real_points, linear_point
@@ -475,7 +475,7 @@ def _components_at(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
         _algebraic_components(sp, shared)
     else:
         through = _modes_through(shared.minimal, sp.point)
-        sp.local_components = [translate(md.prime, sp.point) for md in through]
+        sp.local_components = [shift_to_origin(md.prime, sp.point) for md in through]
         sp.kind = _kind_at(sp.local_components, [md.dim for md in through], a.ring)
         sp.transition = _transition(_component_cones(sp, shared, a.ring) if len(through) > 1 else [])
 

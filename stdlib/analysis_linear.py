@@ -13,7 +13,6 @@ decompositions and local standard bases cost far less in the smaller ring.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from math import comb
 from typing import Any, Sequence
 
 from mech.kernel import Poly, PolyRing
@@ -21,7 +20,7 @@ from mech.kernel.algext import AlgebraicField
 from mech.kernel.cone_quadratic import linear_rank, quadratic_cone
 from mech.kernel.ideals import dimension, dp_ring, move, std
 from mech.kernel.groebner import groebner, normal_form
-from mech.kernel.local import AlgebraicPoint, centre_at, tangent_cone, tangent_cone_over
+from mech.kernel.local import AlgebraicPoint, centre_at, shift_to_origin, tangent_cone, tangent_cone_over
 from mech.kernel.primdec import min_ass_gtz
 from mech.kernel.order import Block, MonomialOrder
 
@@ -186,36 +185,9 @@ def cone_at_point(variety: Sequence[Poly], lr: LinearReduction | None, point: Se
     :func:`linear_reduction`, shared by all the points)."""
     ring = variety[0].ring
     if lr is None:
-        return _cone(translate(variety, point), ring)
-    cone = _cone(translate(lr.rest, [point[k] for k in lr.keep]), lr.small) if lr.rest else []
+        return _cone(shift_to_origin(variety, point), ring)
+    cone = _cone(shift_to_origin(lr.rest, [point[k] for k in lr.keep]), lr.small) if lr.rest else []
     return move(_homogeneous_linear(lr, lr.ring) + lr.lift(cone), ring)
-
-
-def translate(polys: Sequence[Poly], point: Sequence) -> list[Poly]:
-    """The polynomials with ``x_i`` replaced by ``x_i + p_i`` (``kernel.local.shift_to_origin``), expanded
-    term by term by the binomial theorem: the point moves to the origin."""
-    if not polys:
-        return []
-    ring = polys[0].ring
-    field = ring.field
-    p = [field(v) for v in point]
-    out = []
-    for g in polys:
-        terms: dict[tuple, Any] = {}
-        for e, c in g.terms.items():
-            parts = [((), c)]
-            for i, k in enumerate(e):
-                if not k:
-                    parts = [(f + (0,), v) for f, v in parts]
-                elif not p[i]:
-                    parts = [(f + (k,), v) for f, v in parts]
-                else:
-                    expansion = [(j, comb(k, j) * p[i] ** (k - j)) for j in range(k + 1)]
-                    parts = [(f + (j,), v * w) for f, v in parts for j, w in expansion]
-            for f, v in parts:
-                terms[f] = terms.get(f, field.zero) + v
-        out.append(Poly(ring, {f: v for f, v in terms.items() if v}))
-    return out
 
 
 def _cone(centred: list[Poly], ring: PolyRing) -> list[Poly]:
