@@ -515,20 +515,22 @@ def _companion(f: fmpq_poly) -> fmpq_mat:
     return fmpq_mat(d, d, [(fmpq(int(i == j + 1)) if j < d - 1 else -c[i] / c[d]) for i in range(d) for j in range(d)])
 
 
-def local_components_over(centred: Sequence[Poly], point: AlgebraicPoint,
+def local_components_over(centred: Sequence[Poly] | None, point: AlgebraicPoint,
                           primes: Sequence[Sequence[Poly]] | None = None,
                           min_ass: MinAss = min_ass_gtz,
                           slices: Sequence[SmoothSlices] | None = None) -> list[list[Poly]]:
     """The minimal primes of ``centred`` (an ideal of ``point.ring`` containing ``m(t)``)
     through the origin over K (contained in ``(x, m(t))``): the local components at the
-    point.  With ``primes``, the minimal primes over Q of the uncentred ideal: each one
-    through the point that :func:`stays_prime` over K gives one component directly, the
-    others are decomposed (minimal primes over K are slow: linear algebra over K(u));
-    ``slices``: the primes' :class:`SmoothSlices`, kept across points."""
+    point.  With ``primes``, the minimal primes over Q of the uncentred ideal (then ``centred``
+    is not needed): each one through the point that :func:`stays_prime` over K gives one
+    component directly, the others are decomposed (minimal primes over K are slow: linear
+    algebra over K(u)); ``slices``: the primes' :class:`SmoothSlices`, kept across points."""
     ring = point.ring
     n = ring.nvars - 1
     origin = ring.gens()[:n] + [point.minpoly]
     if primes is None:
+        if centred is None:
+            raise DomainError("the local components need the centred ideal or the minimal primes")
         return [p for p in min_ass(centred, ring) if is_subset(p, origin, ring)]
     comps = []
     for k, P in enumerate(primes):

@@ -39,7 +39,7 @@ from mech.kernel.groebner import normal_forms
 from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, intersect, is_subset, move, saturate_poly,
                                 std)
 from mech.kernel.errors import DomainError
-from mech.kernel.local import (AlgebraicPoint, SmoothSlices, centre_at, dimension_over, local_components_over,
+from mech.kernel.local import (AlgebraicPoint, SmoothSlices, dimension_over, local_components_over,
                                primitive_element, shift_to_origin)
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
@@ -540,8 +540,7 @@ def _algebraic_components(sp: SingularPoint, shared: _Shared) -> None:
     pt = sp.algebraic
     # kernel.local.classify_algebraic_point's kind, without the tangent space of the components' union
     # (their intersection over K: 0.4 s on Watt I-B), which only matters for one component
-    comps = local_components_over(centre_at(shared.variety, pt), pt, [md.prime for md in shared.minimal],
-                                  min_ass_reduced, shared.slices)
+    comps = local_components_over(None, pt, [md.prime for md in shared.minimal], min_ass_reduced, shared.slices)
     if not comps:
         raise DomainError("no component through the points: primes must be the ideal's minimal primes")
     sp.local_components = comps
