@@ -18,6 +18,7 @@ from typing import Any, Callable, Iterator, Sequence
 
 from flint import fmpq, fmpq_mat, fmpq_poly, fmpz_poly
 
+from . import offload_exact
 from .coeffs import PrimeField, RationalField
 from .cone_quadratic import row_rank
 from .dimension import krull_dim
@@ -503,9 +504,9 @@ def _field_product(m: fmpq_poly, mu: fmpq_poly) -> bool:
     for k in range(1, (a * b) ** 2 + 2):  # each pair of roots rules out at most one k
         W = fmpq_mat(a * b, a * b, [S[i // b, j // b] * (i % b == j % b) + k * T[i % b, j % b] * (i // b == j // b)
                                     for i in range(a * b) for j in range(a * b)])
-        r = W.charpoly()
+        r = offload_exact.charpoly(W)
         if r.gcd(r.derivative()).degree() == 0:
-            return len(r.factor()[1]) == 1
+            return len(offload_exact.factor(r)[1]) == 1
     raise NotSupported("no primitive element found")
 
 
