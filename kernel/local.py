@@ -11,14 +11,15 @@ element ``t`` (:func:`primitive_element`, :func:`classify_algebraic_point`).
 from __future__ import annotations
 
 import random
-from math import comb
 from dataclasses import dataclass, field
 from fractions import Fraction
+from math import comb
 from typing import Any, Callable, Iterator, Sequence
 
 from flint import fmpq, fmpq_mat, fmpq_poly, fmpz_poly
 
 from . import offload_exact
+from .buchberger import reduce_basis
 from .coeffs import PrimeField, RationalField
 from .cone_quadratic import row_rank
 from .dimension import krull_dim
@@ -27,7 +28,6 @@ from .errors import DomainError, NotSupported
 from .factor import normalize
 from .groebner import groebner, normal_form
 from .hilbert import mult, vdim
-from .buchberger import reduce_basis
 from .ideals import dimension, dp_ring, independent_set, intersect, is_subset, move, std, with_order
 from .localnf import weak_normal_form
 from .modular_rank import jacobian_rank_mod
@@ -467,7 +467,7 @@ class SmoothSlices:
         except RealSolvingError:  # not zero-dimensional, or no separating form
             return True
         chi = rep.charpoly
-        for f, _ in rep.poly.factor()[1]:
+        for f, _ in offload_exact.factor(rep.poly)[1]:
             if (chi % fmpq_poly(f)).is_zero() and not (chi % fmpq_poly(f) ** 2).is_zero():
                 self.orbits.append(f)
         return True
