@@ -446,26 +446,27 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             if active[i] and divides(h.lm, basis[i].lm):
                 active[i] = False
 
-    def reduce_compiled(w: bytes, sugar: int) -> tuple[Terms, int] | None:
-        """:func:`reduce` in compiled code."""
+    waiting = 0  # polynomials postponed inside the compiled loop (they wait there, not in ``queue``)
+
+    def run_compiled(w: bytes | None, sugar: int) -> tuple[bytes, int] | None:
+        """:func:`reduce` in compiled code, which goes on with the polynomials postponed there
+        while they come before the queue's head; an irreducible nonzero polynomial or None."""
+        nonlocal counter, waiting
         first_in_queue(0, ring.zero_exp)  # drops the dead pairs at the head
-        head = (queue[0][0], queue[0][4]) if queue else None
-        status, h, sugar, left, lm = compiled.reduce(w, sugar, head, corner.cut,
-                                                     None if budget is None else budget.steps)
+        head = (queue[0][0], queue[0][4], queue[0][2]) if queue else None
+        status, h, sugar, left, counter, waiting = compiled.run(
+            w, sugar, head, corner.cut, None if budget is None else budget.steps, counter)
         if budget is not None:
             budget.steps = left
         if status == 2:
             raise BudgetExceeded
-        if status == 1:
-            push(sugar, lm, (h, sugar))
-            return None
-        return h, sugar
+        return (h, sugar) if status == 0 else None
 
     def reduce(w: Front, sugar: int) -> tuple[Terms, int] | None:
         """Reduce until irreducible (returned with its sugar; {} for zero) or postponed
         (None)."""
         if compiled is not None:
-            return reduce_compiled(w, sugar)
+            return run_compiled(w, sugar)
         limit, passes = sugar + LAZY_DEGREE, 0
         w.trim(corner.cut)
         while w.p:
@@ -501,26 +502,28 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     for g in gens:
         if not g.is_zero():
             push(g.total_degree(), g.lm(), (front(dict(g.terms)), g.total_degree()))
-    while queue:
-        sugar, _, _, item, _ = heapq.heappop(queue)
-        if isinstance(item, _Pair):
-            if not item.alive:
-                continue
-            item.alive = False
-            pairs.remove(item)
-            if corner.cut is not None and sum(item.lcm) > corner.cut:
-                continue  # every term of the S-polynomial is above the cut
-            if compiled is not None:
-                w = compiled.spoly(basis[item.i].b, basis[item.j].b, corner.cut)
-                if w is None:
-                    raise BudgetExceeded
+    while queue or waiting:
+        done = run_compiled(None, 0) if waiting else None
+        if done is None:
+            sugar, _, _, item, _ = heapq.heappop(queue)
+            if isinstance(item, _Pair):
+                if not item.alive:
+                    continue
+                item.alive = False
+                pairs.remove(item)
+                if corner.cut is not None and sum(item.lcm) > corner.cut:
+                    continue  # every term of the S-polynomial is above the cut
+                if compiled is not None:
+                    w = compiled.spoly(basis[item.i].b, basis[item.j].b, corner.cut)
+                    if w is None:
+                        raise BudgetExceeded
+                else:
+                    w = front(_spoly(basis[item.i], basis[item.j], item.lcm))
             else:
-                w = front(_spoly(basis[item.i], basis[item.j], item.lcm))
-        else:
-            w, sugar = item
-        done = reduce(w, sugar)
-        if done is None or not done[0]:
-            continue
+                w, sugar = item
+            done = reduce(w, sugar)
+            if done is None or not done[0]:
+                continue
         h, sugar = done
         if compiled is not None:
             elem = compiled.element(h, sugar)
