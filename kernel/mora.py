@@ -282,10 +282,10 @@ LAZY_PASS = 2
 
 
 class _Pair:
-    __slots__ = ("i", "j", "lcm", "alive")
+    __slots__ = ("i", "j", "lcm", "mask", "alive")
 
-    def __init__(self, i: int, j: int, lcm: Exp) -> None:
-        self.i, self.j, self.lcm, self.alive = i, j, lcm, True
+    def __init__(self, i: int, j: int, lcm: Exp, mask: int) -> None:
+        self.i, self.j, self.lcm, self.mask, self.alive = i, j, lcm, mask, True
 
 
 def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
@@ -417,25 +417,29 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         k = len(basis)
         basis.append(h)
         active.append(True)
-        new = []
-        for i in range(k):
-            if active[i]:
-                new.append(_Pair(i, k, lcm_exp(basis[i].lm, h.lm)))
-        # the pairs whose lcm no other lcm divides properly (masks and degrees first)
-        masks = [basis[a.i].mask | h.mask for a in new]
-        degrees = [sum(a.lcm) for a in new]
-        span = range(len(new))
-        kept = [a for a, m, d in zip(new, masks, degrees)
-                if not any(degrees[y] < d and not masks[y] & ~m and divides(new[y].lcm, a.lcm) for y in span)]
+        hmask = h.mask
+        # the new pairs whose lcm no other new lcm of lower degree divides (Gebauer–Möller's M;
+        # divisibility is transitive, so checking the kept ones of lower degree suffices)
+        new = sorted(((sum(lc), lc, i) for i in range(k) if active[i]
+                      for lc in (lcm_exp(basis[i].lm, h.lm),)), key=lambda t: t[0])
+        kept: list[tuple[int, int, Exp, int]] = []  # (degree, mask, lcm, i)
+        lower = 0  # kept[:lower] have a degree below the current one
+        for d, lc, i in new:
+            while lower < len(kept) and kept[lower][0] < d:
+                lower += 1
+            m = basis[i].mask | hmask
+            if not any(not km & ~m and divides(kl, lc) for _, km, kl, _ in kept[:lower]):
+                kept.append((d, m, lc, i))
         by_lcm: dict[Exp, tuple[_Pair, bool]] = {}
-        for a in kept:
-            lifts = _lifts(basis[a.i], h)
-            prev = by_lcm.get(a.lcm)
+        for _, m, lc, i in kept:
+            lifts = _lifts(basis[i], h)
+            prev = by_lcm.get(lc)
             if prev is None or (lifts and not prev[1]):
-                by_lcm[a.lcm] = (a, lifts)
+                by_lcm[lc] = (_Pair(i, k, lc, m), lifts)
+        hlm = h.lm
         for p in pairs:
-            if p.alive and divides(h.lm, p.lcm) and lcm_exp(basis[p.i].lm, h.lm) != p.lcm \
-                    and lcm_exp(basis[p.j].lm, h.lm) != p.lcm:
+            if p.alive and not hmask & ~p.mask and divides(hlm, p.lcm) \
+                    and lcm_exp(basis[p.i].lm, hlm) != p.lcm and lcm_exp(basis[p.j].lm, hlm) != p.lcm:
                 p.alive = False
         pairs[:] = [p for p in pairs if p.alive]
         for a, lifts in by_lcm.values():
@@ -443,7 +447,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 pairs.append(a)
                 push(sum(a.lcm) + max(basis[a.i].ecart, h.ecart), a.lcm, a)
         for i in range(k):
-            if active[i] and divides(h.lm, basis[i].lm):
+            if active[i] and not hmask & ~basis[i].mask and divides(hlm, basis[i].lm):
                 active[i] = False
 
     waiting = 0  # polynomials postponed inside the compiled loop (they wait there, not in ``queue``)
@@ -509,8 +513,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             if isinstance(item, _Pair):
                 if not item.alive:
                     continue
-                item.alive = False
-                pairs.remove(item)
+                item.alive = False  # dropped from ``pairs`` at the next update
                 if corner.cut is not None and sum(item.lcm) > corner.cut:
                     continue  # every term of the S-polynomial is above the cut
                 if compiled is not None:
