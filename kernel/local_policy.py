@@ -38,7 +38,7 @@ MORA_COMPILED = 40_000
 compiled Mora / Lazard seconds): mora1 6236, 0.02 / 0.10; mora_5 32764, 0.14 / 2.1; mora_7
 29765, 0.37 / 2.5; mora_10 past 166,000, 1.3 / 0.07; mora_9 205,000, 3.7 / 3.7."""
 
-LAZARD_SMALL = 250_000
+LAZARD_SMALL = 100_000
 """After :data:`MORA_COMPILED`: Lazard's method within this many matrix entries (mora_10: 0.08 s;
 mora_9 needs 1-4 M, and runs out of these in 0.3 s), then compiled Mora without trial cuts
 within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 1.2 s; Lazard 2.9 s)."""

@@ -317,7 +317,9 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     (the local ideal is not zero-dimensional, or its corner lies higher) the computation
     runs without a cut; a trial cut is skipped when an earlier trial left a monomial of that
     degree outside its leading monomials.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
-    out; each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
+    out; the trials are skipped when there are fewer generators than variables in them (by
+    Krull's height theorem the ideal of the local ring then has positive dimension, and no trial
+    can succeed); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
     trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts."""
     live = [g for g in gens if not g.is_zero()]
     parts = _separate(live, ring.nvars)
@@ -329,7 +331,8 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 return basis  # the unit ideal
             out.extend(basis)
         return out
-    if live and trials and Corner(ring).enabled:
+    used = {i for g in live for e in g.terms for i, v in enumerate(e) if v}
+    if live and trials and Corner(ring).enabled and len(live) >= len(used):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
         for factor in TRIAL_CUTS:
