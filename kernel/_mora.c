@@ -229,6 +229,43 @@ static Waiting wait_pop(Pool *P)
     return top;
 }
 
+/* The shortest reducer whose leading monomial divides lm (the first of them in the pool). */
+static Entry *choose_short(Pool *P, const u64 *lm)
+{
+    int W = P->W;
+    u64 mask = mask_of(lm, P->n), guard = P->guard;
+    Entry *best = NULL;
+    for (Py_ssize_t i = 0; i < P->size; i++) {
+        Entry *g = P->e + i;
+        if ((g->mask & ~mask) || !divides(g->t, lm, W, guard))
+            continue;
+        if (!best || g->len < best->len)
+            best = g;
+    }
+    return best;
+}
+
+/* Reduction of G in K[x]/m^(cut+1) (cut >= 0): a finite-dimensional algebra where every step
+ * replaces the leading term by smaller terms of a finite set, so it ends without Mora's ecart
+ * rule; the shortest reducer each time, no postponement: 0 irreducible, 2 out of steps, -1 out
+ * of memory. */
+static int reduce_cut(Pool *P, Geo *G, int cut, long long *steps)
+{
+    int S = P->W + 1, li;
+    geo_trim(G, cut);
+    while ((li = geo_lead(G)) >= 0) {
+        geo_unit_cancel(G, li, P->guard);
+        Entry *g = choose_short(P, G->b[li].t + G->b[li].start * S);
+        if (!g)
+            return 0;
+        if (--*steps < 0)
+            return 2;
+        if (geo_reduce(G, li, g, cut))
+            return -1;
+    }
+    return 0;
+}
+
 /* Mora's reduction of G (kernel/mora.py's inner `reduce`): 0 irreducible (maybe zero), 1 to be
  * postponed behind the queue's head (hs, hm; hm NULL: an empty queue), 2 out of steps or
  * degrees, -1 out of memory. */
@@ -345,7 +382,7 @@ static PyObject *mora_run(PyObject *self, PyObject *args)
             es = P->w[0].sugar;
             em = P->w[0].lm;
         }
-        int rc = reduce_geo(P, G, &sugar, es, em, cut, &steps);
+        int rc = cut >= 0 ? reduce_cut(P, G, cut, &steps) : reduce_geo(P, G, &sugar, es, em, cut, &steps);
         if (rc < 0) {
             geo_release(G);
             PyErr_NoMemory();

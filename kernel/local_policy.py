@@ -21,7 +21,7 @@ from .buchberger import TooLong
 from .coeffs import PrimeField
 from .f4 import f4_modp
 from .lazard import lazard
-from .mora import Budget, BudgetExceeded, Terms, mora
+from .mora import Budget, BudgetExceeded, Terms, mora, positive_dimensional
 from .mora_compiled import CompiledMora
 from .poly import Poly, PolyRing
 
@@ -33,7 +33,7 @@ MORA_FIRST = 2000
 32764, 2.2 / 2.1; mora_7 29765, 2.8 / 2.5; mora_9 and mora_10 past 10^5 steps and 30 s, Lazard
 2.6 / 0.07; the Puiseux parametrization in ``ls`` 0 steps, 0.3 ms / 2.9 s."""
 
-MORA_COMPILED = 40_000
+MORA_COMPILED = 100_000
 """Reduction steps (about 0.1-0.4 s) of compiled Mora before Lazard's method.  Measured (steps,
 compiled Mora / Lazard seconds): mora1 6236, 0.02 / 0.10; mora_5 32764, 0.14 / 2.1; mora_7
 29765, 0.37 / 2.5; mora_10 past 166,000, 1.3 / 0.07; mora_9 205,000, 3.7 / 3.7."""
@@ -43,7 +43,7 @@ LAZARD_SMALL = 100_000
 mora_9 needs 1-4 M, and runs out of these in 0.3 s), then compiled Mora without trial cuts
 within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 1.2 s; Lazard 2.9 s)."""
 
-MORA_UNCUT = 1_000_000
+MORA_UNCUT = 20_000_000
 
 MORA_HOMOGENEOUS = 200
 """Reduction steps Mora gets on homogeneous generators before Lazard's method (about 10 ms;
@@ -69,10 +69,11 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
         except BudgetExceeded:
             return lazard(gens, ring, global_basis)
     compiled = CompiledMora.usable(ring)
-    try:
-        return mora(gens, ring, Budget(MORA_COMPILED if compiled else MORA_FIRST), shared=True)
-    except BudgetExceeded:
-        pass
+    if not (compiled and positive_dimensional(gens)):  # then no trial cut can succeed
+        try:
+            return mora(gens, ring, Budget(MORA_COMPILED if compiled else MORA_FIRST), shared=True)
+        except BudgetExceeded:
+            pass
     if compiled:
         try:
             return lazard(gens, ring, _f4_within(LAZARD_SMALL))

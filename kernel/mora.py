@@ -214,6 +214,16 @@ def _choose(reducers: Sequence[Elem], lm: Exp, ecart: int) -> Elem | None:
     return best
 
 
+def _shortest(reducers: Sequence[Elem], lm: Exp) -> Elem | None:
+    """The shortest reducer whose leading monomial divides ``lm`` (the first of them)."""
+    mask = support_mask(lm)
+    best = None
+    for g in reducers:
+        if not g.mask & ~mask and divides(g.lm, lm) and (best is None or len(g.p) < len(best.p)):
+            best = g
+    return best
+
+
 def mora_normal_form(f: Terms, reducers: Sequence[Elem], key: Callable,
                      budget: Budget | None = None) -> Terms:
     """Mora's weak normal form (GP Alg. 1.7.6 with sugar ecarts): ``h`` with ``u f - h`` in
@@ -331,8 +341,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 return basis  # the unit ideal
             out.extend(basis)
         return out
-    used = {i for g in live for e in g.terms for i, v in enumerate(e) if v}
-    if live and trials and Corner(ring).enabled and len(live) >= len(used):
+    if live and trials and Corner(ring).enabled and not positive_dimensional(live):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
         for factor in TRIAL_CUTS:
@@ -350,6 +359,14 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 return basis
             seen = max(seen, corner.seen if corner.seen is not None else -1)
     return _mora(live, ring, budget)[0]
+
+
+def positive_dimensional(gens: Sequence[Poly]) -> bool:
+    """Whether there are fewer generators than variables in them: the ideal of the local ring
+    then has positive dimension (Krull's height theorem: its height is at most the number of
+    generators), or is the whole ring."""
+    used = {i for g in gens for e in g.terms for i, v in enumerate(e) if v}
+    return len(gens) < len(used)
 
 
 def _separate(gens: list[Poly], n: int) -> list[list[Poly]]:
@@ -474,8 +491,10 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         (None)."""
         if compiled is not None:
             return run_compiled(w, sugar)
-        limit, passes = sugar + LAZY_DEGREE, 0
         w.trim(corner.cut)
+        if corner.cut is not None:
+            return reduce_cut(w, sugar)
+        limit, passes = sugar + LAZY_DEGREE, 0
         while w.p:
             lm = w.lm()
             w.unit_cancelled(lm)
@@ -506,12 +525,31 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                     return None
         return w.terms(), sugar
 
+    def reduce_cut(w: Front, sugar: int) -> tuple[Terms, int]:
+        """Reduce until irreducible in ``K[x]/m^(cut+1)``: a finite-dimensional algebra, where
+        each step replaces the leading term by smaller terms of a finite set of monomials, so
+        that the reduction ends without Mora's ecart rule; the shortest reducer each time, and
+        nothing is postponed.  (In ``tjurina`` of Singular's vdim_overflow test the ecart rule
+        took 3.4 million steps on one S-polynomial of 7 terms, 16 s, with four curves.)"""
+        while w.p:
+            lm = w.lm()
+            w.unit_cancelled(lm)
+            g = _shortest(pool, lm)
+            if g is None:
+                break
+            if budget is not None:
+                budget.charge(w.coeff(lm))
+            w.reduce(lm, g)
+        return w.terms(), sugar
+
     for g in gens:
         if not g.is_zero():
             push(g.total_degree(), g.lm(), (front(dict(g.terms)), g.total_degree()))
     while queue or waiting:
         done = run_compiled(None, 0) if waiting else None
         if done is None:
+            if not queue:
+                continue  # (its dead pairs dropped, the postponed polynomials reduced to zero)
             sugar, _, _, item, _ = heapq.heappop(queue)
             if isinstance(item, _Pair):
                 if not item.alive:
