@@ -326,7 +326,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     ``I`` by Nakayama's lemma, ``J = I`` and ``G`` is a standard basis of ``I``.  Otherwise
     (the local ideal is not zero-dimensional, or its corner lies higher) the computation
     runs without a cut; a trial cut is skipped when an earlier trial left a monomial of that
-    degree outside its leading monomials.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
+    degree outside its leading monomials, and the next trial is then one degree above it.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
     out; the trials are skipped when there are fewer generators than variables in them (by
     Krull's height theorem the ideal of the local ring then has positive dimension, and no trial
     can succeed); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
@@ -344,8 +344,9 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     if live and trials and Corner(ring).enabled and not positive_dimensional(live):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
-        for factor in TRIAL_CUTS:
-            k = factor * max(top, 1)
+        cuts = [factor * max(top, 1) for factor in TRIAL_CUTS]
+        while cuts:
+            k = cuts.pop(0)
             if k <= seen:
                 continue
             try:
@@ -357,6 +358,8 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 break
             if corner.found and corner.cut < k:
                 return basis
+            if corner.seen is not None and corner.seen >= k:
+                cuts.insert(0, corner.seen + 1)  # the least cut above the monomial left outside
             seen = max(seen, corner.seen if corner.seen is not None else -1)
     return _mora(live, ring, budget)[0]
 
