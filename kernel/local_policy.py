@@ -43,7 +43,12 @@ LAZARD_SMALL = 100_000
 mora_9 needs 1-4 M, and runs out of these in 0.3 s), then compiled Mora without trial cuts
 within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 1.2 s; Lazard 2.9 s)."""
 
-MORA_UNCUT = 20_000_000
+MORA_UNCUT = 1_000_000
+
+CORNER_STEPS = 20_000_000
+"""Steps compiled Mora is granted once the highest corner is found (about 0.4 µs each there:
+reductions in ``K[x]/m^(cut+1)`` without Mora's ecart rule); vdim_overflow's ``tjurina`` takes
+5.3 million."""
 
 MORA_HOMOGENEOUS = 200
 """Reduction steps Mora gets on homogeneous generators before Lazard's method (about 10 ms;
@@ -71,7 +76,8 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
     compiled = CompiledMora.usable(ring)
     if not (compiled and positive_dimensional(gens)):  # then no trial cut can succeed
         try:
-            return mora(gens, ring, Budget(MORA_COMPILED if compiled else MORA_FIRST), shared=True)
+            budget = Budget(MORA_COMPILED, corner_steps=CORNER_STEPS) if compiled else Budget(MORA_FIRST)
+            return mora(gens, ring, budget, shared=True)
         except BudgetExceeded:
             pass
     if compiled:
@@ -80,7 +86,7 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
         except TooLong:
             pass
         try:
-            return mora(gens, ring, Budget(MORA_UNCUT), shared=True, trials=False)
+            return mora(gens, ring, Budget(MORA_UNCUT, corner_steps=CORNER_STEPS), shared=True, trials=False)
         except BudgetExceeded:
             pass
     try:
