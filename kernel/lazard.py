@@ -11,9 +11,9 @@ from fractions import Fraction
 from typing import Callable, Sequence
 
 from .hilbert import minimal_monomials
-from .mora import Terms, cancel_unit, monic
+from .mora import Terms, cancel_unit
 from .order import Block, MonomialOrder
-from .poly import Poly, PolyRing
+from .poly import Poly, PolyRing, divides
 
 
 def homogenized_order(order: MonomialOrder) -> MonomialOrder:
@@ -83,5 +83,8 @@ def lazard(gens: Sequence[Poly], ring: PolyRing,
         if m in keep:
             keep.discard(m)
             p = dehomogenize(h)
-            out.append(monic(cancel_unit(p, key), key))
+            if all(divides(m, e) for e in p):  # p = x^m u with a unit u
+                p = {m: p[m]}
+            inv = 1 / p[m]
+            out.append({e: c * inv for e, c in p.items()})
     return out

@@ -626,11 +626,28 @@ def elems(basis: Sequence[Poly]) -> list[Elem]:
 
 
 
-def minimal(basis: list[Terms], key: Callable) -> list[Terms]:
-    """Drop elements whose leading monomial is divisible by another's (keep the first)."""
-    lms = [max(b, key=key) for b in basis]
-    keep = []
-    for i, (b, m) in enumerate(zip(basis, lms)):
-        if not any(divides(lms[j], m) and (lms[j] != m or j < i) for j in range(len(basis)) if j != i):
-            keep.append(b)
-    return keep
+def finished(basis: list[Terms], ring: PolyRing) -> list[Poly]:
+    """A standard basis as :func:`.engines.standard_basis` returns it for a non-global ordering:
+    minimal (an element whose leading monomial another's divides is dropped; of equal ones the
+    first is kept), monic, sorted from the largest leading monomial down; each leading monomial
+    is found once (the ordering's key is the cost here: Singular's cyclic_roots_7 has 99
+    elements of 36 terms on average)."""
+    key = ring.order.key
+    one = ring.field.one
+    items = [(max(b, key=key), b) for b in basis if b]
+    lms = [(m, support_mask(m)) for m, _ in items]
+    out = []
+    for i, (m, b) in enumerate(items):
+        mask = support_mask(m)
+        if any(j != i and not jmask & ~mask and divides(lm, m) and (lm != m or j < i)
+               for j, (lm, jmask) in enumerate(lms)):
+            continue
+        c = b[m]
+        if c != one:
+            inv = 1 / c
+            b = {e: v * inv for e, v in b.items()}
+        p = Poly(ring, b)
+        p._lm = m
+        out.append((key(m), p))
+    out.sort(key=lambda t: t[0], reverse=True)
+    return [p for _, p in out]
