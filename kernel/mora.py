@@ -35,7 +35,7 @@ from typing import Any, Callable, Sequence
 from .mora_compiled import CompiledMora
 from .mora_corner import Corner, components
 from .mora_packed import MAX_DEGREE, PackedFront, Packing
-from .order import Exp
+from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing, add_exp, divides, lcm_exp, support_mask
 
 Terms = dict[Exp, Any]
@@ -342,8 +342,9 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     parts = _separate(live, ring.nvars)
     if len(parts) > 1:
         out = []
+        known: dict[tuple, list[Terms]] = {}
         for part in parts:
-            basis = mora(part, ring, budget, shared, trials)
+            basis = _part_basis(part, ring, budget, shared, trials, known)
             if any(b.get(ring.zero_exp) for b in basis):
                 return basis  # the unit ideal
             out.extend(basis)
@@ -369,6 +370,41 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 cuts.insert(0, corner.seen + 1)  # the least cut above the monomial left outside
             seen = max(seen, corner.seen if corner.seen is not None else -1)
     return _mora(live, ring, budget)[0]
+
+
+RESTRICTABLE = ("ds", "Ds", "ls", "dp", "Dp", "lp")
+"""Orderings that compare monomials in some of the variables as the same ordering of those
+variables alone (in their order) does."""
+
+
+def _part_basis(part: list[Poly], ring: PolyRing, budget: Budget | None, shared: bool, trials: bool,
+                known: dict[tuple, list[Terms]]) -> list[Terms]:
+    """:func:`mora` of one group of :func:`_separate`, computed in the ring of its variables
+    when the ordering allows (then a standard basis there is one in ``ring``: its standard
+    representations stay standard); groups equal up to renaming their variables in order (a
+    sum of copies of one singularity, as in Singular's vdim_overflow test) are computed once,
+    ``known`` keeping their bases."""
+    blocks = ring.order.blocks
+    if len(blocks) != 1 or blocks[0].kind not in RESTRICTABLE:
+        return mora(part, ring, budget, shared, trials)
+    used = sorted({i for g in part for e in g.terms for i, v in enumerate(e) if v})
+    local = [{tuple([e[i] for i in used]): c for e, c in g.terms.items()} for g in part]
+    key = (blocks[0].kind, len(used), tuple(tuple(sorted(g.items())) for g in local))
+    basis = known.get(key)
+    if basis is None:
+        sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(blocks[0].kind, len(used))]))
+        basis = known[key] = mora([Poly(sub, g) for g in local], sub, budget, shared, trials)
+    n = ring.nvars
+    out = []
+    for b in basis:
+        terms = {}
+        for e, c in b.items():
+            full = [0] * n
+            for i, v in zip(used, e):
+                full[i] = v
+            terms[tuple(full)] = c
+        out.append(terms)
+    return out
 
 
 def positive_dimensional(gens: Sequence[Poly]) -> bool:
