@@ -11,9 +11,12 @@
  * terms, each W monomial words and one coefficient word, the leading term first; as Python
  * values they are `bytes` of that array.
  *
- * The pool of reducers (basis elements and intermediate polynomials, sorted by sugar) lives in
- * a capsule: pool_new, pool_insert, pool_truncate; `reduce` runs the loop until the polynomial
- * is irreducible, postponed, or the step budget is spent.
+ * The pool of reducers (basis elements and intermediate polynomials, sorted by sugar) and the
+ * polynomials postponed by the loop (a heap, as they would wait in the Python queue) live in a
+ * capsule: pool_new, pool_insert, pool_truncate; `run` reduces a polynomial and then the
+ * postponed ones that come before the queue's head, until one is irreducible and nonzero, the
+ * queue's head comes first, or the step budget is spent.  Under a cut (K[x]/m^(cut+1), finite-
+ * dimensional) reductions take the shortest reducer without the ecart rule (reduce_cut).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>

@@ -4,13 +4,15 @@
 - Homogeneous generators: Mora within :data:`MORA_HOMOGENEOUS` steps, then Lazard's method
   (:mod:`.lazard`), which homogenizes nothing, its global basis from the compiled F4
   (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora, 0.05 s by F4).
-- Otherwise over Z/p: Mora (:mod:`.mora`) within :data:`MORA_FIRST` reduction steps in all
-  (:data:`MORA_COMPILED` when its loop runs compiled, :mod:`.mora_compiled`, and then Lazard
-  within :data:`LAZARD_SMALL` entries and Mora without trial cuts within :data:`MORA_UNCUT`)
-  (small and medium local problems end there, and Lazard would pay for the components away
-  from the origin), then Lazard with F4 within :data:`LAZARD_BUDGET` matrix entries (Singular's
-  ``mora_9`` and ``mora_10``: more than 60 s by Mora, 2.6 s and 0.07 s by Lazard), then Mora
-  with its trial cuts and Lazard without bounds.
+- Otherwise over Z/p: Mora (:mod:`.mora`) with its trial cuts within :data:`MORA_FIRST`
+  reduction steps in all (:data:`MORA_COMPILED` when its loop runs compiled,
+  :mod:`.mora_compiled`; skipped there when there are fewer generators than variables, for
+  then, by Krull's height theorem, no trial cut can succeed), and for the compiled loop then
+  Lazard within :data:`LAZARD_SMALL` entries and Mora without trial cuts within
+  :data:`MORA_UNCUT` steps (small and medium local problems end there, and Lazard would pay
+  for the components away from the origin); each Mora run is granted :data:`CORNER_STEPS` more
+  once it finds the highest corner.  Then Lazard with F4 within :data:`LAZARD_BUDGET` matrix
+  entries, then Mora with its trial cuts and Lazard without bounds.
 - Over other fields: Mora within its default budget, then Lazard (modular F4 over QQ).
 """
 from __future__ import annotations
@@ -34,14 +36,16 @@ MORA_FIRST = 2000
 2.6 / 0.07; the Puiseux parametrization in ``ls`` 0 steps, 0.3 ms / 2.9 s."""
 
 MORA_COMPILED = 100_000
-"""Reduction steps (about 0.1-0.4 s) of compiled Mora before Lazard's method.  Measured (steps,
-compiled Mora / Lazard seconds): mora1 6236, 0.02 / 0.10; mora_5 32764, 0.14 / 2.1; mora_7
-29765, 0.37 / 2.5; mora_10 past 166,000, 1.3 / 0.07; mora_9 205,000, 3.7 / 3.7."""
+"""Reduction steps of compiled Mora with its trial cuts (about 0.05-0.15 s) before Lazard's
+method.  Measured (steps, seconds; session 13): mora1 7750, 0.006; mora_5 76,565, 0.06; mora_7
+39,000, 0.06; mora_9 (not zero-dimensional, 60 generators in 15 variables) spends them all in
+0.1-0.15 s; vdim_overflow's tjurina finds its corner in the second trial and then has
+:data:`CORNER_STEPS` (1.7 s)."""
 
 LAZARD_SMALL = 100_000
-"""After :data:`MORA_COMPILED`: Lazard's method within this many matrix entries (mora_10: 0.08 s;
-mora_9 needs 1-4 M, and runs out of these in 0.3 s), then compiled Mora without trial cuts
-within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 1.2 s; Lazard 2.9 s)."""
+"""After :data:`MORA_COMPILED`: Lazard's method within this many matrix entries (mora_10 needs
+50,000-100,000: 0.06 s; mora_9 needs 1-4 M and runs out of these in 0.1 s), then compiled Mora
+without trial cuts within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 0.3 s)."""
 
 MORA_UNCUT = 1_000_000
 

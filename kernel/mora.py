@@ -18,7 +18,10 @@ hangs on some of them): a :class:`Budget` bounds it, and the engine driver (:mod
 then falls back to Lazard's method (:mod:`.lazard`).  For ``ds`` the polynomial under
 reduction lives on packed monomials (:mod:`.mora_packed`), over Z/p in compiled code when the
 C extension is built (:mod:`.mora_compiled`: the same steps); the highest corner that cuts the
-tails of zero-dimensional ideals is :mod:`.mora_corner`.  Generators in disjoint sets of
+tails of zero-dimensional ideals is :mod:`.mora_corner`.  Under a cut (a trial's or the
+corner's) the computation lives in the finite-dimensional algebra ``K[x]/m^(cut+1)``, and there
+reductions take the shortest reducer without the ecart rule, as Singular does once it knows its
+highest corner.  Generators in disjoint sets of
 variables are computed group by group (:func:`_separate`).
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
