@@ -4,15 +4,16 @@
 - Homogeneous generators: Mora within :data:`MORA_HOMOGENEOUS` steps, then Lazard's method
   (:mod:`.lazard`), which homogenizes nothing, its global basis from the compiled F4
   (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora, 0.05 s by F4).
-- Otherwise over Z/p: Mora (:mod:`.mora`) with its trial cuts within :data:`MORA_FIRST`
-  reduction steps in all (:data:`MORA_COMPILED` when its loop runs compiled,
-  :mod:`.mora_compiled`; skipped there when there are fewer generators than variables, for
-  then, by Krull's height theorem, no trial cut can succeed), and for the compiled loop then
-  Lazard within :data:`LAZARD_SMALL` entries and Mora without trial cuts within
-  :data:`MORA_UNCUT` steps (small and medium local problems end there, and Lazard would pay
-  for the components away from the origin); each Mora run is granted :data:`CORNER_STEPS` more
-  once it finds the highest corner.  Then Lazard with F4 within :data:`LAZARD_BUDGET` matrix
-  entries, then Mora with its trial cuts and Lazard without bounds.
+- Otherwise over Z/p, when Mora's loop runs compiled (:mod:`.mora_compiled`): Mora (:mod:`.mora`)
+  without trial cuts within :data:`MORA_QUICK` steps; Mora with its trial cuts within
+  :data:`MORA_COMPILED` steps in all (skipped when there are fewer generators than variables:
+  then, by Krull's height theorem, no trial cut can succeed); Lazard within
+  :data:`LAZARD_SMALL` entries; Mora without trial cuts within :data:`MORA_UNCUT` steps (small
+  and medium local problems end there, and Lazard would pay for the components away from the
+  origin).  Each Mora run is granted :data:`CORNER_STEPS` more once it finds the highest
+  corner.  Without the compiled loop: Mora with its trial cuts within :data:`MORA_FIRST` steps.
+  Then Lazard with F4 within :data:`LAZARD_BUDGET` matrix entries, then Mora with its trial
+  cuts and Lazard without bounds.
 - Over other fields: Mora within its default budget, then Lazard (modular F4 over QQ).
 """
 from __future__ import annotations
@@ -34,6 +35,12 @@ MORA_FIRST = 2000
 (steps, Mora / Lazard seconds): mora_6 1435, 0.06 / 0.02; mora1 6236, 0.28 / 0.10; mora_5
 32764, 2.2 / 2.1; mora_7 29765, 2.8 / 2.5; mora_9 and mora_10 past 10^5 steps and 30 s, Lazard
 2.6 / 0.07; the Puiseux parametrization in ``ls`` 0 steps, 0.3 ms / 2.9 s."""
+
+MORA_QUICK = 3000
+"""Reduction steps of compiled Mora without trial cuts first: small ideals and those that show
+their highest corner early end there (steps before the corner, seconds in all: mora1 2636,
+0.003, with the trials 0.006; mora_6 1435, 0.0015; each curve of vdim_overflow's milnor; its
+tjurina 19, 1.7); the others lose little (mora_9 0.04 s, mora_5 0.002 s, mora_7 0.007 s)."""
 
 MORA_COMPILED = 100_000
 """Reduction steps of compiled Mora with its trial cuts (about 0.05-0.15 s) before Lazard's
@@ -78,6 +85,11 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
         except BudgetExceeded:
             return lazard(gens, ring, global_basis)
     compiled = CompiledMora.usable(ring)
+    if compiled:
+        try:
+            return mora(gens, ring, Budget(MORA_QUICK, corner_steps=CORNER_STEPS), shared=True, trials=False)
+        except BudgetExceeded:
+            pass
     if not (compiled and positive_dimensional(gens)):  # then no trial cut can succeed
         try:
             budget = Budget(MORA_COMPILED, corner_steps=CORNER_STEPS) if compiled else Budget(MORA_FIRST)
