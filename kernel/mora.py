@@ -674,13 +674,14 @@ def finished(basis: list[Terms], ring: PolyRing) -> list[Poly]:
     key = ring.order.key
     one = ring.field.one
     items = [(max(b, key=key), b) for b in basis if b]
-    lms = [(m, support_mask(m)) for m, _ in items]
+    items.sort(key=lambda t: sum(t[0]))  # a divisor comes first (stable: equal ones in order)
+    kept: list[tuple[Exp, int]] = []
     out = []
-    for i, (m, b) in enumerate(items):
+    for m, b in items:
         mask = support_mask(m)
-        if any(j != i and not jmask & ~mask and divides(lm, m) and (lm != m or j < i)
-               for j, (lm, jmask) in enumerate(lms)):
+        if any(not kmask & ~mask and divides(lm, m) for lm, kmask in kept):
             continue
+        kept.append((m, mask))
         c = b[m]
         if c != one:
             inv = 1 / c
