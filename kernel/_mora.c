@@ -16,10 +16,11 @@
  * capsule: pool_new, pool_insert, pool_truncate; `run` reduces a polynomial and then the
  * postponed ones that come before the queue's head, until one is irreducible and nonzero, the
  * queue's head comes first, or the step budget is spent.  Under a cut (K[x]/m^(cut+1), finite-
- * dimensional) reductions take the shortest reducer without the ecart rule (reduce_cut).
+ * dimensional) reductions take the first reducer without the ecart rule (reduce_cut).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -232,33 +233,17 @@ static Waiting wait_pop(Pool *P)
     return top;
 }
 
-/* The shortest reducer whose leading monomial divides lm (the first of them in the pool). */
-static Entry *choose_short(Pool *P, const u64 *lm)
-{
-    int W = P->W;
-    u64 mask = mask_of(lm, P->n), guard = P->guard;
-    Entry *best = NULL;
-    for (Py_ssize_t i = 0; i < P->size; i++) {
-        Entry *g = P->e + i;
-        if ((g->mask & ~mask) || !divides(g->t, lm, W, guard))
-            continue;
-        if (!best || g->len < best->len)
-            best = g;
-    }
-    return best;
-}
-
 /* Reduction of G in K[x]/m^(cut+1) (cut >= 0): a finite-dimensional algebra where every step
  * replaces the leading term by smaller terms of a finite set, so it ends without Mora's ecart
- * rule; the shortest reducer each time, no postponement: 0 irreducible, 2 out of steps, -1 out
- * of memory. */
+ * rule; the first reducer in the pool (by sugar) each time, no postponement: 0 irreducible, 2
+ * out of steps, -1 out of memory. */
 static int reduce_cut(Pool *P, Geo *G, int cut, long long *steps)
 {
     int S = P->W + 1, li;
     geo_trim(G, cut);
     while ((li = geo_lead(G)) >= 0) {
         geo_unit_cancel(G, li, P->guard);
-        Entry *g = choose_short(P, G->b[li].t + G->b[li].start * S);
+        Entry *g = choose(P, G->b[li].t + G->b[li].start * S, INT_MAX);  /* the first divisor */
         if (!g)
             return 0;
         if (--*steps < 0)

@@ -20,8 +20,8 @@ reduction lives on packed monomials (:mod:`.mora_packed`), over Z/p in compiled 
 C extension is built (:mod:`.mora_compiled`: the same steps); the highest corner that cuts the
 tails of zero-dimensional ideals is :mod:`.mora_corner`.  Under a cut (a trial's or the
 corner's) the computation lives in the finite-dimensional algebra ``K[x]/m^(cut+1)``, and there
-reductions take the shortest reducer without the ecart rule, as Singular does once it knows its
-highest corner.  Generators in disjoint sets of
+reductions take the first reducer (by sugar) without the ecart rule, as Singular does once it
+knows its highest corner.  Generators in disjoint sets of
 variables are computed group by group (:func:`_separate`).
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
@@ -221,16 +221,6 @@ def _choose(reducers: Sequence[Elem], lm: Exp, ecart: int) -> Elem | None:
             best = g
         if best.ecart <= ecart:
             break
-    return best
-
-
-def _shortest(reducers: Sequence[Elem], lm: Exp) -> Elem | None:
-    """The shortest reducer whose leading monomial divides ``lm`` (the first of them)."""
-    mask = support_mask(lm)
-    best = None
-    for g in reducers:
-        if not g.mask & ~mask and divides(g.lm, lm) and (best is None or len(g.p) < len(best.p)):
-            best = g
     return best
 
 
@@ -577,13 +567,13 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     def reduce_cut(w: Front, sugar: int) -> tuple[Terms, int]:
         """Reduce until irreducible in ``K[x]/m^(cut+1)``: a finite-dimensional algebra, where
         each step replaces the leading term by smaller terms of a finite set of monomials, so
-        that the reduction ends without Mora's ecart rule; the shortest reducer each time, and
-        nothing is postponed.  (In ``tjurina`` of Singular's vdim_overflow test the ecart rule
+        that the reduction ends without Mora's ecart rule; the first reducer each time (by
+        sugar), and nothing is postponed.  (In ``tjurina`` of Singular's vdim_overflow test the ecart rule
         took 3.4 million steps on one S-polynomial of 7 terms, 16 s, with four curves.)"""
         while w.p:
             lm = w.lm()
             w.unit_cancelled(lm)
-            g = _shortest(pool, lm)
+            g = _choose(pool, lm, MAX_DEGREE)  # the first divisor (the pool is sorted by sugar)
             if g is None:
                 break
             if budget is not None:
