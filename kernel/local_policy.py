@@ -5,16 +5,15 @@
   (:mod:`.lazard`), which homogenizes nothing, its global basis from the compiled F4
   (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora, 0.05 s by F4).
 - Otherwise over Z/p, when Mora's loop runs compiled (:mod:`.mora_compiled`): Mora (:mod:`.mora`)
-  without trial cuts within :data:`MORA_QUICK` steps; when there are fewer generators than
-  variables (then, by Krull's height theorem, the ideal is not zero-dimensional and no trial
-  cut can succeed), Lazard within :data:`LAZARD_SMALL` entries and Mora without trial cuts
-  within :data:`MORA_UNCUT` steps; otherwise Mora with its trial cuts within
-  :data:`MORA_COMPILED` steps, Mora without them within :data:`MORA_UNCUT`, Lazard within
-  :data:`LAZARD_SMALL` (small and medium local problems end there, and Lazard would pay for the
-  components away from the origin).  Each Mora run is granted :data:`CORNER_STEPS` more once it
-  finds the highest corner.  Without the compiled loop: Mora with its trial cuts within
-  :data:`MORA_FIRST` steps.  Then Lazard with F4 within :data:`LAZARD_BUDGET` matrix entries,
-  then Mora with its trial cuts and Lazard without bounds.
+  without trial cuts within :data:`MORA_QUICK` steps; Mora with its trial cuts within
+  :data:`MORA_COMPILED` steps (skipped when there are fewer generators than variables: then, by
+  Krull's height theorem, the ideal is not zero-dimensional and no trial cut can succeed);
+  Lazard within :data:`LAZARD_SMALL` entries; Mora without trial cuts within
+  :data:`MORA_UNCUT` steps (small and medium local problems end there, and Lazard would pay
+  for the components away from the origin).  Each Mora run is granted :data:`CORNER_STEPS`
+  more once it finds the highest corner.  Without the compiled loop: Mora with its trial cuts
+  within :data:`MORA_FIRST` steps.  Then Lazard with F4 within :data:`LAZARD_BUDGET` matrix
+  entries, then Mora with its trial cuts and Lazard without bounds.
 - Over other fields: Mora within its default budget, then Lazard (modular F4 over QQ).
 """
 from __future__ import annotations
@@ -50,10 +49,12 @@ method.  Measured (steps, seconds; session 13): mora1 7750, 0.006; mora_5 76,565
 0.1-0.15 s; vdim_overflow's tjurina finds its corner in the second trial and then has
 :data:`CORNER_STEPS` (1.7 s)."""
 
-LAZARD_SMALL = 100_000
+LAZARD_SMALL = 250_000
 """After :data:`MORA_COMPILED`: Lazard's method within this many matrix entries (mora_10 needs
-50,000-100,000: 0.06 s; mora_9 needs 1-4 M and runs out of these in 0.1 s), then compiled Mora
-without trial cuts within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 0.3 s)."""
+50,000-100,000: 0.06 s; a random ideal in 4 variables of tests/kernel/test_mora_random.py
+100,000-250,000, 0.02 s, where Mora without cuts runs 1 M steps into high degrees, 0.7 s;
+mora_9 needs 1-4 M and runs out of these in 0.2 s), then compiled Mora without trial cuts
+within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 0.3 s)."""
 
 MORA_UNCUT = 1_000_000
 
@@ -106,9 +107,9 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
 
 def _compiled_routes(gens: list[Poly], ring: PolyRing) -> list[Terms] | None:
     """The routes within bounds when Mora's loop runs compiled (see the module docstring); None
-    when every one runs out.  Trial cuts need a zero-dimensional ideal: when Krull's bound rules
-    that out, Lazard comes before Mora without cuts (mora_10: 0.06 s against 0.11 s), else after
-    it (mora_9: Lazard runs out of its entries in 0.1 s, Mora needs 0.3 s)."""
+    when every one runs out.  Lazard's small attempt comes before Mora without cuts (mora_10:
+    0.06 s against 0.11 s; random ideals in 3-4 variables that drive Mora's normal form into
+    high degrees: 0.01-0.02 s against 0.7-3 s), though it costs mora_9 0.2 s."""
     def quick() -> list[Terms]:
         return mora(gens, ring, Budget(MORA_QUICK, corner_steps=CORNER_STEPS), shared=True, trials=False)
 
@@ -121,7 +122,7 @@ def _compiled_routes(gens: list[Poly], ring: PolyRing) -> list[Terms] | None:
     def uncut() -> list[Terms]:
         return mora(gens, ring, Budget(MORA_UNCUT, corner_steps=CORNER_STEPS), shared=True, trials=False)
 
-    routes = [quick, lazard_small, uncut] if positive_dimensional(gens) else [quick, trials, uncut, lazard_small]
+    routes = [quick, lazard_small, uncut] if positive_dimensional(gens) else [quick, trials, lazard_small, uncut]
     for route in routes:
         try:
             return route()
