@@ -32,14 +32,15 @@ gives a standard representation ``spoly(f, g) = f'g - g'f``: for a local orderin
 from __future__ import annotations
 
 import heapq
-from operator import neg
+from itertools import islice
+from operator import itemgetter, neg
 from typing import Any, Callable, Sequence
 
 from .mora_compiled import CompiledMora
 from .mora_corner import Corner, components
 from .mora_packed import MAX_DEGREE, PackedFront, Packing
 from .order import Block, Exp, MonomialOrder
-from .poly import Poly, PolyRing, add_exp, divides, lcm_exp, support_mask
+from .poly import Poly, PolyRing, add_exp, divides, support_mask
 
 Terms = dict[Exp, Any]
 
@@ -292,10 +293,39 @@ LAZY_PASS = 2
 
 
 class _Pair:
-    __slots__ = ("i", "j", "lcm", "mask", "alive")
+    __slots__ = ("i", "j", "lcm", "mask", "packed", "alive")
 
-    def __init__(self, i: int, j: int, lcm: Exp, mask: int) -> None:
-        self.i, self.j, self.lcm, self.mask, self.alive = i, j, lcm, mask, True
+    def __init__(self, i: int, j: int, lcm: Exp, mask: int, packed: int) -> None:
+        self.i, self.j, self.lcm, self.mask, self.packed, self.alive = i, j, lcm, mask, packed, True
+
+
+class _Words:
+    """Monomials of ``n`` variables as one integer of 16-bit fields (exponents below 2^15, the
+    top bit of each field a guard): lcm, divisibility and degree in a few integer operations,
+    for the pair criteria."""
+
+    def __init__(self, n: int) -> None:
+        self.shifts = [16 * i for i in range(n)]
+        self.guard = sum(0x8000 << s for s in self.shifts)
+        self.ones = sum(1 << s for s in self.shifts)
+        self.top = 16 * (n - 1)
+
+    def pack(self, e: Exp) -> int:
+        return sum(v << s for v, s in zip(e, self.shifts))
+
+    def unpack(self, w: int) -> Exp:
+        return tuple([(w >> s) & 0xFFFF for s in self.shifts])
+
+    def lcm(self, a: int, b: int) -> int:
+        keep = ((((a | self.guard) - b) & self.guard) >> 15) * 0xFFFF  # the fields where a >= b
+        return (a & keep) | (b & ~keep)
+
+    def divides(self, a: int, b: int) -> bool:
+        """Whether ``a`` divides ``b``."""
+        return ((b | self.guard) - a) & self.guard == self.guard
+
+    def degree(self, w: int) -> int:
+        return (w * self.ones >> self.top) & 0xFFFF  # the fields' sum lands in the top one
 
 
 def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
@@ -433,6 +463,8 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     sign = 1 if ring.order.is_global else -1
     basis: list[Elem] = []
     active: list[bool] = []
+    words = _Words(ring.nvars)
+    packs: list[int] = []  # the basis' leading monomials packed
     pairs: list[_Pair] = []
     pool: list[Elem] = []  # reducers, sorted by sugar
     queue: list[tuple] = []  # (sugar, rank of LM, counter, pair or (h, sugar))
@@ -477,28 +509,30 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         basis.append(h)
         active.append(True)
         hmask = h.mask
+        hp = words.pack(h.lm)
+        packs.append(hp)
+        lcm, divides_packed = words.lcm, words.divides
         # the new pairs whose lcm no other new lcm of lower degree divides (Gebauer–Möller's M;
         # divisibility is transitive, so checking the kept ones of lower degree suffices)
-        new = sorted(((sum(lc), lc, i) for i in range(k) if active[i]
-                      for lc in (lcm_exp(basis[i].lm, h.lm),)), key=lambda t: t[0])
-        kept: list[tuple[int, int, Exp, int]] = []  # (degree, mask, lcm, i)
+        new = sorted(((words.degree(lc), lc, i) for i in range(k) if active[i]
+                      for lc in (lcm(packs[i], hp),)), key=itemgetter(0))
+        kept: list[tuple[int, int, int, int]] = []  # (degree, mask, packed lcm, i)
         lower = 0  # kept[:lower] have a degree below the current one
         for d, lc, i in new:
             while lower < len(kept) and kept[lower][0] < d:
                 lower += 1
             m = basis[i].mask | hmask
-            if not any(not km & ~m and divides(kl, lc) for _, km, kl, _ in kept[:lower]):
+            if not any(not km & ~m and divides_packed(kl, lc) for _, km, kl, _ in islice(kept, lower)):
                 kept.append((d, m, lc, i))
-        by_lcm: dict[Exp, tuple[_Pair, bool]] = {}
+        by_lcm: dict[int, tuple[_Pair, bool]] = {}
         for _, m, lc, i in kept:
             lifts = _lifts(basis[i], h)
             prev = by_lcm.get(lc)
             if prev is None or (lifts and not prev[1]):
-                by_lcm[lc] = (_Pair(i, k, lc, m), lifts)
-        hlm = h.lm
+                by_lcm[lc] = (_Pair(i, k, words.unpack(lc), m, lc), lifts)
         for p in pairs:
-            if p.alive and not hmask & ~p.mask and divides(hlm, p.lcm) \
-                    and lcm_exp(basis[p.i].lm, hlm) != p.lcm and lcm_exp(basis[p.j].lm, hlm) != p.lcm:
+            if p.alive and not hmask & ~p.mask and divides_packed(hp, p.packed) \
+                    and lcm(packs[p.i], hp) != p.packed and lcm(packs[p.j], hp) != p.packed:
                 p.alive = False
         pairs[:] = [p for p in pairs if p.alive]
         for a, lifts in by_lcm.values():
@@ -506,7 +540,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 pairs.append(a)
                 push(sum(a.lcm) + max(basis[a.i].ecart, h.ecart), a.lcm, a)
         for i in range(k):
-            if active[i] and not hmask & ~basis[i].mask and divides(hlm, basis[i].lm):
+            if active[i] and not hmask & ~basis[i].mask and divides_packed(hp, packs[i]):
                 active[i] = False
 
     waiting = 0  # polynomials postponed inside the compiled loop (they wait there, not in ``queue``)
