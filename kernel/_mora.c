@@ -257,7 +257,8 @@ static int reduce_cut(Pool *P, Geo *G, int cut, long long *steps)
 /* Mora's reduction of G (kernel/mora.py's inner `reduce`): 0 irreducible (maybe zero), 1 to be
  * postponed behind the queue's head (hs, hm; hm NULL: an empty queue), 2 out of steps or
  * degrees, -1 out of memory. */
-static int reduce_geo(Pool *P, Geo *G, int *sugar, int hs, const u64 *hm, int cut, long long *steps)
+static int reduce_geo(Pool *P, Geo *G, int *sugar, int hs, const u64 *hm, int cut, long long *steps,
+                      int max_sugar)
 {
     int W = P->W, S = W + 1;
     u64 guard = P->guard;
@@ -285,7 +286,7 @@ static int reduce_geo(Pool *P, Geo *G, int *sugar, int hs, const u64 *hm, int cu
             if (g->t != gt)
                 g++;
             *sugar += g->ecart - ecart;
-            if (*sugar > MAX_DEGREE)
+            if (*sugar > max_sugar)
                 return 2;
         }
         if (geo_reduce(G, li, g, cut))
@@ -319,9 +320,10 @@ static void geo_release(Geo *G)
 static PyObject *mora_run(PyObject *self, PyObject *args)
 {
     PyObject *cap, *hobj, *headobj;
-    int sugar, hs, cut;
+    int sugar, hs, cut, max_sugar;
     long long hc, steps, counter;
-    if (!PyArg_ParseTuple(args, "OOiiOLiLL", &cap, &hobj, &sugar, &hs, &headobj, &hc, &cut, &steps, &counter))
+    if (!PyArg_ParseTuple(args, "OOiiOLiLLi", &cap, &hobj, &sugar, &hs, &headobj, &hc, &cut, &steps, &counter,
+                          &max_sugar))
         return NULL;
     Pool *P = get_pool(cap);
     if (!P)
@@ -370,7 +372,8 @@ static PyObject *mora_run(PyObject *self, PyObject *args)
             es = P->w[0].sugar;
             em = P->w[0].lm;
         }
-        int rc = cut >= 0 ? reduce_cut(P, G, cut, &steps) : reduce_geo(P, G, &sugar, es, em, cut, &steps);
+        int rc = cut >= 0 ? reduce_cut(P, G, cut, &steps) : reduce_geo(P, G, &sugar, es, em, cut, &steps,
+                                                       max_sugar < MAX_DEGREE ? max_sugar : MAX_DEGREE);
         if (rc < 0) {
             geo_release(G);
             PyErr_NoMemory();

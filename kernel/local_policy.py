@@ -5,15 +5,17 @@
   (:mod:`.lazard`), which homogenizes nothing, its global basis from the compiled F4
   (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora, 0.05 s by F4).
 - Otherwise over Z/p, when Mora's loop runs compiled (:mod:`.mora_compiled`): Mora (:mod:`.mora`)
-  without trial cuts within :data:`MORA_QUICK` steps; Mora with its trial cuts within
-  :data:`MORA_COMPILED` steps (skipped when there are fewer generators than variables: then, by
-  Krull's height theorem, the ideal is not zero-dimensional and no trial cut can succeed);
-  Lazard within :data:`LAZARD_SMALL` entries; Mora without trial cuts within
-  :data:`MORA_UNCUT` steps (small and medium local problems end there, and Lazard would pay
-  for the components away from the origin).  Each Mora run is granted :data:`CORNER_STEPS`
-  more once it finds the highest corner.  Without the compiled loop: Mora with its trial cuts
-  within :data:`MORA_FIRST` steps.  Then Lazard with F4 within :data:`LAZARD_BUDGET` matrix
-  entries, then Mora with its trial cuts and Lazard without bounds.
+  without trial cuts within :data:`MORA_QUICK` steps.  Then, when there are fewer generators
+  than variables (by Krull's height theorem the ideal is not zero-dimensional, and no trial cut
+  can succeed), Lazard within :data:`LAZARD_SMALL` entries and Mora without trial cuts within
+  :data:`MORA_UNCUT` steps; otherwise Mora with its trial cuts within :data:`MORA_COMPILED`
+  steps, Mora without them within :data:`MORA_UNCUT` steps while its sugar stays below
+  :data:`SUGAR_FACTOR` times the generators' degree, Lazard within :data:`LAZARD_SMALL`, Mora
+  without cuts within :data:`MORA_UNCUT` (small and medium local problems end there, and Lazard
+  would pay for the components away from the origin).  Each Mora run is granted
+  :data:`CORNER_STEPS` more once it finds the highest corner.  Without the compiled loop: Mora
+  with its trial cuts within :data:`MORA_FIRST` steps.  Then Lazard with F4 within
+  :data:`LAZARD_BUDGET` matrix entries, then Mora with its trial cuts and Lazard without bounds.
 - Over other fields: Mora within its default budget, then Lazard (modular F4 over QQ).
 """
 from __future__ import annotations
@@ -57,6 +59,12 @@ mora_9 needs 1-4 M and runs out of these in 0.2 s), then compiled Mora without t
 within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 0.3 s)."""
 
 MORA_UNCUT = 1_000_000
+
+SUGAR_FACTOR = 6
+"""Mora without trial cuts before Lazard's small attempt gives up when a sugar passes this many
+times the generators' largest degree.  Measured largest sugar / degree: mora1 2.5, mora_5 and
+mora_9 2.9, mora_7 3.7, mora_10 4.7; runaways of tests/kernel/test_mora_random.py 12 (with
+factor 4 they leave after 0.01 s, 6: 0.05 s, 8: 0.2 s, none: 0.7-3 s)."""
 
 CORNER_STEPS = 20_000_000
 """Steps compiled Mora is granted once the highest corner is found (about 0.4 µs each there:
@@ -107,9 +115,12 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
 
 def _compiled_routes(gens: list[Poly], ring: PolyRing) -> list[Terms] | None:
     """The routes within bounds when Mora's loop runs compiled (see the module docstring); None
-    when every one runs out.  Lazard's small attempt comes before Mora without cuts (mora_10:
-    0.06 s against 0.11 s; random ideals in 3-4 variables that drive Mora's normal form into
-    high degrees: 0.01-0.02 s against 0.7-3 s), though it costs mora_9 0.2 s."""
+    when every one runs out.  When Krull's bound rules out trial cuts, Lazard's small attempt
+    comes before Mora without cuts (mora_10: 0.06 s against 0.11 s); else Mora without cuts
+    comes first while its sugar stays within :data:`SUGAR_FACTOR` times the generators' degree
+    (mora_9: 0.3 s, where Lazard's attempt runs out in 0.2 s; random ideals in 4 variables that
+    drive Mora's normal form to degree 85 from generators of degree 7 leave within 0.05 s, and
+    Lazard takes them in 0.01-0.02 s)."""
     def quick() -> list[Terms]:
         return mora(gens, ring, Budget(MORA_QUICK, corner_steps=CORNER_STEPS), shared=True, trials=False)
 
@@ -122,7 +133,14 @@ def _compiled_routes(gens: list[Poly], ring: PolyRing) -> list[Terms] | None:
     def uncut() -> list[Terms]:
         return mora(gens, ring, Budget(MORA_UNCUT, corner_steps=CORNER_STEPS), shared=True, trials=False)
 
-    routes = [quick, lazard_small, uncut] if positive_dimensional(gens) else [quick, trials, lazard_small, uncut]
+    def uncut_low() -> list[Terms]:
+        budget = Budget(MORA_UNCUT, corner_steps=CORNER_STEPS, degree=SUGAR_FACTOR)
+        return mora(gens, ring, budget, shared=True, trials=False)
+
+    if positive_dimensional(gens):
+        routes = [quick, lazard_small, uncut]
+    else:
+        routes = [quick, trials, uncut_low, lazard_small, uncut]
     for route in routes:
         try:
             return route()

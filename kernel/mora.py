@@ -170,10 +170,12 @@ class Budget:
     below 600 steps and 400 bits; runaway ones pass 512 bits within a second.
     ``corner_steps``: the steps granted once the highest corner is found (the computation then
     lives in a finite-dimensional algebra, where every reduction ends; Singular's ``tjurina``
-    of vdim_overflow finds it within 20 steps and then takes 5.3 million cheap ones)."""
+    of vdim_overflow finds it within 20 steps and then takes 5.9 million cheap ones).
+    ``degree``: the run stops when a sugar passes this many times the generators' largest
+    degree (a normal form running away into high degrees)."""
 
-    def __init__(self, steps: int = 2000, bits: int = 512, corner_steps: int = 0) -> None:
-        self.steps, self.bits, self.corner_steps = steps, bits, corner_steps
+    def __init__(self, steps: int = 2000, bits: int = 512, corner_steps: int = 0, degree: int | None = None) -> None:
+        self.steps, self.bits, self.corner_steps, self.degree = steps, bits, corner_steps, degree
 
     def corner_found(self) -> None:
         """Grant :attr:`corner_steps` (once)."""
@@ -543,6 +545,8 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             if active[i] and not hmask & ~basis[i].mask and divides_packed(hp, packs[i]):
                 active[i] = False
 
+    max_sugar = None if budget is None or budget.degree is None else \
+        budget.degree * max(1, max(g.total_degree() for g in gens))
     waiting = 0  # polynomials postponed inside the compiled loop (they wait there, not in ``queue``)
 
     def run_compiled(w: bytes | None, sugar: int) -> tuple[bytes, int] | None:
@@ -552,7 +556,8 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         first_in_queue(0, ring.zero_exp)  # drops the dead pairs at the head
         head = (queue[0][0], queue[0][4], queue[0][2]) if queue else None
         status, h, sugar, left, counter, waiting = compiled.run(
-            w, sugar, head, corner.cut, None if budget is None else budget.steps, counter)
+            w, sugar, head, corner.cut, None if budget is None else budget.steps, counter,
+            MAX_DEGREE if max_sugar is None else max_sugar)
         if budget is not None:
             budget.steps = left
         if status == 2:
@@ -583,7 +588,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                     return None
                 _insert(pool, Elem(dict(w.terms()), key, ecart, lm))
                 sugar += g.ecart - ecart
-                if sugar > MAX_DEGREE and packing is not None:
+                if (max_sugar is not None and sugar > max_sugar) or (sugar > MAX_DEGREE and packing is not None):
                     raise BudgetExceeded
             w.reduce(lm, g)
             if not w.p:

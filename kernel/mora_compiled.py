@@ -84,7 +84,7 @@ class CompiledMora:
         C.pool_insert(self.pool, b, ecart)
 
     def run(self, b: bytes | None, sugar: int, head: tuple[int, Exp, int] | None, cut: int | None,
-            steps: int | None, counter: int) -> tuple[int, bytes | None, int, int, int, int]:
+            steps: int | None, counter: int, max_sugar: int) -> tuple[int, bytes | None, int, int, int, int]:
         """Reduce ``b`` (with its ``sugar``) and then the postponed polynomials that come before
         the queue's ``head`` (sugar, leading monomial, counter; None: an empty queue), which
         wait here when postponed again, under the next ``counter``; ``b`` None: only those.
@@ -93,7 +93,7 @@ class CompiledMora:
         its sugar, the steps left, the counter and the number of postponed polynomials."""
         hs, hm, hc = (0, None, 0) if head is None else (head[0], self.monomial(head[1]), head[2])
         return C.run(self.pool, b, sugar, hs, hm, hc, -1 if cut is None else cut,
-                     STEPS if steps is None else steps, counter)
+                     STEPS if steps is None else steps, counter, max_sugar)
 
     def spoly(self, f: bytes, g: bytes, cut: int | None) -> bytes:
         return C.spoly(f, g, self.n, self.p, -1 if cut is None else cut)

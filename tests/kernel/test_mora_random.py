@@ -88,6 +88,21 @@ def test_most_random_ideals_finish_in_mora():
     assert sum(finished) >= 30
 
 
+@pytest.mark.parametrize("compiled", [True, False])
+def test_a_sugar_bound_stops_a_runaway_early(compiled, monkeypatch):
+    """Seed 12 drives Mora's normal form from degree 7 to degree 85 (the policy then turns to
+    Lazard); with ``Budget(degree=4)`` it stops on the sugar, steps to spare."""
+    if not compiled:
+        monkeypatch.setattr(mora_compiled, "C", None)
+    R, gens = _random_ideal(12)
+    budget = Budget(20_000, degree=4)
+    with pytest.raises(BudgetExceeded):
+        mora(gens, R, budget, shared=True, trials=False)
+    assert budget.steps > 0
+    R, gens = _random_ideal(0)
+    assert mora(gens, R, Budget(20_000, degree=6), shared=True) == mora(gens, R, Budget(20_000), shared=True)
+
+
 CURVES = 3
 SUM = "+".join(f"y{k}^7-x{k}^9+x{k}^4*y{k}^4" for k in range(1, CURVES + 1))
 
