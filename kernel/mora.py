@@ -346,7 +346,8 @@ TRIAL_STEPS = 200_000
 
 def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
          shared: bool = False, trials: bool = True) -> list[Terms]:
-    """A minimal standard basis (as dicts, leading-term reduced, monic) by Buchberger's
+    """A minimal standard basis (as dicts, each with its leading monomial first, leading-term
+    reduced, monic) by Buchberger's
     algorithm with Mora's normal form: the Gebauer–Möller criteria, a queue of generators,
     pairs and postponed polynomials ordered by sugar, and one growing set of reducers
     (basis elements and the intermediate polynomials Mora's normal form keeps).
@@ -667,7 +668,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 compiled.cut_tails(basis, corner.cut)
             for g in pool:
                 g.truncate(corner.cut)
-    return [b.p for b, a in zip(basis, active) if a], corner
+    return [{b.lm: b.p[b.lm], **b.p} for b, a in zip(basis, active) if a], corner
 
 
 def _spoly(f: Elem, g: Elem, lc: Exp) -> Terms:
@@ -695,14 +696,14 @@ def elems(basis: Sequence[Poly]) -> list[Elem]:
 
 
 def finished(basis: list[Terms], ring: PolyRing) -> list[Poly]:
-    """A standard basis as :func:`.engines.standard_basis` returns it for a non-global ordering:
-    minimal (an element whose leading monomial another's divides is dropped; of equal ones the
-    first is kept), monic, sorted from the largest leading monomial down; each leading monomial
-    is found once (the ordering's key is the cost here: Singular's cyclic_roots_7 has 99
-    elements of 36 terms on average)."""
+    """A standard basis as :func:`.engines.standard_basis` returns it for a non-global ordering,
+    from dicts that each hold their leading monomial first (as :func:`mora` and
+    :func:`.lazard.lazard` give them): minimal (an element whose leading monomial another's
+    divides is dropped; of equal ones the first is kept), monic, sorted from the largest leading
+    monomial down."""
     key = ring.order.key
     one = ring.field.one
-    items = [(max(b, key=key), b) for b in basis if b]
+    items = [(next(iter(b)), b) for b in basis if b]
     items.sort(key=lambda t: sum(t[0]))  # a divisor comes first (stable: equal ones in order)
     kept: list[tuple[Exp, int]] = []
     out = []
