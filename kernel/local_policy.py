@@ -44,12 +44,12 @@ their highest corner early end there (steps before the corner, seconds in all: m
 0.003, with the trials 0.006; mora_6 1435, 0.0015; each curve of vdim_overflow's milnor; its
 tjurina 19, 1.7); the others lose little (mora_9 0.04 s, mora_5 0.002 s, mora_7 0.007 s)."""
 
-MORA_COMPILED = 100_000
-"""Reduction steps of compiled Mora with its trial cuts (about 0.05-0.15 s) before Lazard's
-method.  Measured (steps, seconds; session 13): mora1 7750, 0.006; mora_5 76,565, 0.06; mora_7
-39,000, 0.06; mora_9 (not zero-dimensional, 60 generators in 15 variables) spends them all in
-0.1-0.15 s; vdim_overflow's tjurina finds its corner in the second trial and then has
-:data:`CORNER_STEPS` (1.7 s)."""
+MORA_COMPILED = 80_000
+"""Reduction steps of compiled Mora with its trial cuts (about 0.05-0.15 s) before Mora without
+them.  Measured (steps, seconds; session 13): mora1 7772, 0.005; mora_5 65,989, 0.04; mora_7
+31,925, 0.04; mora_9 (not zero-dimensional, 60 generators in 15 variables) spends them all in
+0.12-0.15 s; vdim_overflow's tjurina finds its corner in the second trial and then has
+:data:`CORNER_STEPS` (1.0 s)."""
 
 LAZARD_SMALL = 250_000
 """After :data:`MORA_COMPILED`: Lazard's method within this many matrix entries (mora_10 needs
