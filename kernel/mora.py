@@ -547,7 +547,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 active[i] = False
 
     max_sugar = None if budget is None or budget.degree is None else \
-        budget.degree * max(1, max(g.total_degree() for g in gens))
+        budget.degree * max(1, max((g.total_degree() for g in gens), default=1))
     waiting = 0  # polynomials postponed inside the compiled loop (they wait there, not in ``queue``)
 
     def run_compiled(w: bytes | None, sugar: int) -> tuple[bytes, int] | None:
