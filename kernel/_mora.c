@@ -11,12 +11,16 @@
  * terms, each W monomial words and one coefficient word, the leading term first; as Python
  * values they are `bytes` of that array.
  *
- * The pool of reducers (basis elements and intermediate polynomials, sorted by sugar) lives in
- * a capsule: pool_new, pool_insert, pool_truncate; `reduce` runs the loop until the polynomial
- * is irreducible, postponed, or the step budget is spent.
+ * The pool of reducers (basis elements and intermediate polynomials, sorted by sugar) and the
+ * polynomials postponed by the loop (a heap, as they would wait in the Python queue) live in a
+ * capsule: pool_new, pool_insert, pool_truncate; `run` reduces a polynomial and then the
+ * postponed ones that come before the queue's head, until one is irreducible and nonzero, the
+ * queue's head comes first, or the step budget is spent.  Under a cut (K[x]/m^(cut+1), finite-
+ * dimensional) reductions take the first reducer without the ecart rule (reduce_cut).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +37,12 @@ static void pool_free(PyObject *cap)
     for (Py_ssize_t i = 0; i < P->size; i++)
         free(P->e[i].t);
     free(P->e);
+    for (Py_ssize_t i = 0; i < P->wn; i++) {
+        geo_free(P->w[i].G);
+        free(P->w[i].G);
+        free(P->w[i].lm);
+    }
+    free(P->w);
     free(P);
 }
 
@@ -162,165 +172,254 @@ static int first_in_queue(int sugar, const u64 *lm, int hsugar, const u64 *hlm, 
     return cmp_mon(lm, hlm, W) <= 0;
 }
 
-static const char *GEO = "mech.mora.geo";
-
-static void geo_capsule_free(PyObject *cap)
+/* Whether (sugar, lm, counter) comes before (hs, hm, hc) in the queue (hm NULL: nothing). */
+static int before(int sugar, const u64 *lm, long long counter, int hs, const u64 *hm, long long hc, int W)
 {
-    Geo *G = PyCapsule_GetPointer(cap, GEO);
-    if (G) {
-        geo_free(G);
-        free(G);
-    }
+    if (!hm)
+        return 1;
+    if (sugar != hs)
+        return sugar < hs;
+    int c = cmp_mon(lm, hm, W);
+    return c ? c < 0 : counter < hc;
 }
 
-/* The leading exponents (x_1 first) of the head of bucket `li`. */
-static PyObject *lead_tuple(Geo *G, int li, int n)
+static int wait_less(const Waiting *a, const Waiting *b, int W)
 {
-    const u64 *m = G->b[li].t + G->b[li].start * G->S;
-    PyObject *lead = PyTuple_New(n);
-    for (int i = 0; lead && i < n; i++) {
-        int field = n - i;
-        PyObject *v = PyLong_FromUnsignedLongLong((m[field / 4] >> (48 - 16 * (field % 4))) & 0xffff);
-        if (!v) {
-            Py_CLEAR(lead);
+    return before(a->sugar, a->lm, a->counter, b->sugar, b->lm, b->counter, W);
+}
+
+static int wait_push(Pool *P, Geo *G, int sugar, const u64 *lm, long long counter)
+{
+    int W = P->W;
+    if (P->wn == P->wcap) {
+        Py_ssize_t cap = P->wcap ? 2 * P->wcap : 64;
+        Waiting *w = realloc(P->w, (size_t)cap * sizeof(Waiting));
+        if (!w)
+            return -1;
+        P->w = w;
+        P->wcap = cap;
+    }
+    Waiting x = {sugar, counter, malloc((size_t)W * sizeof(u64)), G};
+    if (!x.lm)
+        return -1;
+    memcpy(x.lm, lm, (size_t)W * sizeof(u64));
+    Py_ssize_t i = P->wn++;
+    while (i && wait_less(&x, P->w + (i - 1) / 2, W)) {
+        P->w[i] = P->w[(i - 1) / 2];
+        i = (i - 1) / 2;
+    }
+    P->w[i] = x;
+    return 0;
+}
+
+static Waiting wait_pop(Pool *P)
+{
+    int W = P->W;
+    Waiting top = P->w[0], x = P->w[--P->wn];
+    Py_ssize_t i = 0, n = P->wn;
+    for (;;) {
+        Py_ssize_t c = 2 * i + 1;
+        if (c >= n)
             break;
-        }
-        PyTuple_SET_ITEM(lead, i, v);
+        if (c + 1 < n && wait_less(P->w + c + 1, P->w + c, W))
+            c++;
+        if (!wait_less(P->w + c, &x, W))
+            break;
+        P->w[i] = P->w[c];
+        i = c;
     }
-    return lead;
+    if (n)
+        P->w[i] = x;
+    return top;
 }
 
-/* reduce(pool, h, sugar, head_sugar, head_lm or None, cut, steps)
- *   -> (status, h, sugar, steps left, LM(h) or None): status 0 irreducible (h as bytes, maybe
- *      empty), 1 postponed (h a capsule holding its geobucket, to be passed back as it is),
- *      2 budget spent or degree too large.  The input h: bytes, or such a capsule. */
-static PyObject *mora_reduce(PyObject *self, PyObject *args)
+/* Reduction of G in K[x]/m^(cut+1) (cut >= 0): a finite-dimensional algebra where every step
+ * replaces the leading term by smaller terms of a finite set, so it ends without Mora's ecart
+ * rule; the first reducer in the pool (by sugar) each time, no postponement: 0 irreducible, 2
+ * out of steps, -1 out of memory. */
+static int reduce_cut(Pool *P, Geo *G, int cut, long long *steps)
+{
+    int S = P->W + 1, li;
+    geo_trim(G, cut);
+    while ((li = geo_lead(G)) >= 0) {
+        geo_unit_cancel(G, li, P->guard);
+        Entry *g = choose(P, G->b[li].t + G->b[li].start * S, INT_MAX);  /* the first divisor */
+        if (!g)
+            return 0;
+        if (--*steps < 0)
+            return 2;
+        if (geo_reduce(G, li, g, cut))
+            return -1;
+    }
+    return 0;
+}
+
+/* Mora's reduction of G (kernel/mora.py's inner `reduce`): 0 irreducible (maybe zero), 1 to be
+ * postponed behind the queue's head (hs, hm; hm NULL: an empty queue), 2 out of steps or
+ * degrees, -1 out of memory. */
+static int reduce_geo(Pool *P, Geo *G, int *sugar, int hs, const u64 *hm, int cut, long long *steps,
+                      int max_sugar)
+{
+    int W = P->W, S = W + 1;
+    u64 guard = P->guard;
+    int limit = *sugar + LAZY_DEGREE, passes = 0, li;
+    geo_trim(G, cut);
+    while ((li = geo_lead(G)) >= 0) {
+        geo_unit_cancel(G, li, guard);
+        const u64 *lm = G->b[li].t + G->b[li].start * S;
+        int ecart = *sugar - deg_of(lm);
+        Entry *g = choose(P, lm, ecart);
+        if (!g)
+            return 0;
+        if (--*steps < 0)
+            return 2;
+        if (g->ecart > ecart) {
+            if (!first_in_queue(*sugar, lm, hs, hm, W))
+                return 1;
+            Py_ssize_t gi = g - P->e;
+            u64 *gt = g->t;
+            if (geo_flatten(G) || pool_add(P, G->b[NB - 1].t + G->b[NB - 1].start * S,
+                                           G->b[NB - 1].len - G->b[NB - 1].start, ecart))
+                return -1;
+            li = NB - 1;
+            g = P->e + gi;  /* the array may have moved, and g one place up */
+            if (g->t != gt)
+                g++;
+            *sugar += g->ecart - ecart;
+            if (*sugar > max_sugar)
+                return 2;
+        }
+        if (geo_reduce(G, li, g, cut))
+            return -1;
+        if ((li = geo_lead(G)) < 0)
+            break;
+        passes++;
+        if (*sugar >= limit || passes > LAZY_PASS) {
+            lm = G->b[li].t + G->b[li].start * S;
+            if (!first_in_queue(*sugar, lm, hs, hm, W))
+                return choose(P, lm, *sugar - deg_of(lm)) ? 1 : 0;
+        }
+    }
+    return 0;
+}
+
+static void geo_release(Geo *G)
+{
+    geo_free(G);
+    free(G);
+}
+
+/* run(pool, h or None, sugar, head_sugar, head_lm or None, head_counter, cut, steps, counter)
+ *   -> (status, h, sugar, steps left, counter, waiting): the queue of kernel/mora.py's _mora,
+ *   its postponed polynomials kept here.  h (bytes, with its sugar) is reduced first; None:
+ *   start with the first postponed polynomial if it comes before the queue's head (head_lm
+ *   None: the queue is empty).  A postponed polynomial waits here under the next counter; the
+ *   loop goes on with whatever comes first.  Status 0: an irreducible nonzero h (bytes) with its
+ *   sugar; 2: budget spent or degree too large; 3: the queue's head comes first (or nothing is
+ *   left).  `waiting`: how many polynomials wait here. */
+static PyObject *mora_run(PyObject *self, PyObject *args)
 {
     PyObject *cap, *hobj, *headobj;
-    int sugar, hsugar, cut;
-    long long steps;
-    if (!PyArg_ParseTuple(args, "OOiiOiL", &cap, &hobj, &sugar, &hsugar, &headobj, &cut, &steps))
+    int sugar, hs, cut, max_sugar;
+    long long hc, steps, counter;
+    if (!PyArg_ParseTuple(args, "OOiiOLiLLi", &cap, &hobj, &sugar, &hs, &headobj, &hc, &cut, &steps, &counter,
+                          &max_sugar))
         return NULL;
     Pool *P = get_pool(cap);
     if (!P)
         return NULL;
     int W = P->W, S = W + 1;
-    u64 guard = P->guard;
-    Geo *G;
-    PyObject *gcap;
-    if (PyCapsule_CheckExact(hobj)) {
-        if (!(G = PyCapsule_GetPointer(hobj, GEO)))
+    const u64 *hm = NULL;
+    Py_buffer headb;
+    if (headobj != Py_None) {
+        if (PyObject_GetBuffer(headobj, &headb, PyBUF_SIMPLE))
             return NULL;
-        gcap = hobj;
-        Py_INCREF(gcap);
-    } else {
+        hm = headb.buf;
+    }
+    Geo *G = NULL;
+    int status = 3;
+    if (hobj != Py_None) {
         Py_buffer hb;
         if (PyObject_GetBuffer(hobj, &hb, PyBUF_SIMPLE))
-            return NULL;
+            goto fail;
         G = calloc(1, sizeof(Geo));
-        gcap = G ? PyCapsule_New(G, GEO, geo_capsule_free) : NULL;
-        if (!gcap) {
-            free(G);
-            PyBuffer_Release(&hb);
-            return PyErr_Occurred() ? NULL : PyErr_NoMemory();
-        }
-        G->W = W; G->S = S; G->p = P->p;
         Py_ssize_t len = hb.len / (Py_ssize_t)(S * sizeof(u64));
-        int rc = len ? geo_merge(G, NB - 1, hb.buf, len) : 0;
+        if (G) {
+            G->W = W; G->S = S; G->p = P->p;
+        }
+        int rc = !G || (len && geo_merge(G, NB - 1, hb.buf, len));
         PyBuffer_Release(&hb);
         if (rc) {
-            Py_DECREF(gcap);
-            return PyErr_NoMemory();
+            if (G)
+                geo_release(G);
+            PyErr_NoMemory();
+            goto fail;
         }
     }
-    const u64 *hlm = NULL;
-    Py_buffer headb;
-    int have_head = headobj != Py_None;
-    if (have_head) {
-        if (PyObject_GetBuffer(headobj, &headb, PyBUF_SIMPLE)) {
-            Py_DECREF(gcap);
-            return NULL;
+    for (;;) {
+        if (!G) {
+            if (!P->wn || !before(P->w[0].sugar, P->w[0].lm, P->w[0].counter, hs, hm, hc, W))
+                break;
+            Waiting x = wait_pop(P);
+            G = x.G;
+            sugar = x.sugar;
+            free(x.lm);
         }
-        hlm = headb.buf;
-    }
-    int status = 0, err = 0;
-    int limit = sugar + LAZY_DEGREE, passes = 0, li;
-    geo_trim(G, cut);
-    while ((li = geo_lead(G)) >= 0) {
-        geo_unit_cancel(G, li, guard);
-        const u64 *lm = G->b[li].t + G->b[li].start * S;
-        int ecart = sugar - deg_of(lm);
-        Entry *g = choose(P, lm, ecart);
-        if (!g)
-            goto done;
-        if (--steps < 0) {
+        /* the head of the whole queue: the Python one's or the first waiting here */
+        int es = hs;
+        const u64 *em = hm;
+        if (P->wn && before(P->w[0].sugar, P->w[0].lm, P->w[0].counter, hs, hm, hc, W)) {
+            es = P->w[0].sugar;
+            em = P->w[0].lm;
+        }
+        int rc = cut >= 0 ? reduce_cut(P, G, cut, &steps) : reduce_geo(P, G, &sugar, es, em, cut, &steps,
+                                                       max_sugar < MAX_DEGREE ? max_sugar : MAX_DEGREE);
+        if (rc < 0) {
+            geo_release(G);
+            PyErr_NoMemory();
+            goto fail;
+        }
+        if (rc == 2) {
+            geo_release(G);
             status = 2;
-            goto done;
-        }
-        if (g->ecart > ecart) {
-            if (!first_in_queue(sugar, lm, hsugar, hlm, W)) {
-                status = 1;
-                goto done;
-            }
-            Py_ssize_t gi = g - P->e;
-            u64 *gt = g->t;
-            if (geo_flatten(G) || pool_add(P, G->b[NB - 1].t + G->b[NB - 1].start * S,
-                                           G->b[NB - 1].len - G->b[NB - 1].start, ecart)) {
-                err = 1;
-                goto done;
-            }
-            li = NB - 1;
-            g = P->e + gi;  /* the array may have moved, and g one place up */
-            if (g->t != gt)
-                g++;
-            sugar += g->ecart - ecart;
-            if (sugar > MAX_DEGREE) {
-                status = 2;
-                goto done;
-            }
-        }
-        if (geo_reduce(G, li, g, cut)) {
-            err = 1;
-            goto done;
-        }
-        if ((li = geo_lead(G)) < 0)
             break;
-        passes++;
-        if (sugar >= limit || passes > LAZY_PASS) {
-            lm = G->b[li].t + G->b[li].start * S;
-            if (!first_in_queue(sugar, lm, hsugar, hlm, W)) {
-                if (choose(P, lm, sugar - deg_of(lm)))
-                    status = 1;
-                goto done;
+        }
+        if (rc == 1) {
+            int li = geo_lead(G);
+            if (wait_push(P, G, sugar, G->b[li].t + G->b[li].start * S, ++counter)) {
+                geo_release(G);
+                PyErr_NoMemory();
+                goto fail;
             }
+            G = NULL;
+            continue;
         }
+        if (geo_flatten(G)) {
+            geo_release(G);
+            PyErr_NoMemory();
+            goto fail;
+        }
+        Bucket *B = G->b + NB - 1;
+        if (B->len > B->start) {
+            PyObject *out = PyBytes_FromStringAndSize((const char *)(B->t + B->start * S),
+                                                      (B->len - B->start) * S * (Py_ssize_t)sizeof(u64));
+            geo_release(G);
+            if (!out)
+                goto fail;
+            if (hm)
+                PyBuffer_Release(&headb);
+            return Py_BuildValue("(iNiLLn)", 0, out, sugar, steps, counter, P->wn);
+        }
+        geo_release(G);
+        G = NULL;
     }
-done:
-    if (have_head)
+    if (hm)
         PyBuffer_Release(&headb);
-    if (err) {
-        Py_DECREF(gcap);
-        return PyErr_NoMemory();
-    }
-    if (status == 1) {   /* postponed: the geobucket stays as it is, its leading term found */
-        PyObject *lead = lead_tuple(G, geo_lead(G), P->n);
-        if (!lead) {
-            Py_DECREF(gcap);
-            return NULL;
-        }
-        return Py_BuildValue("(iNiLN)", status, gcap, sugar, steps, lead);
-    }
-    if (geo_flatten(G)) {
-        Py_DECREF(gcap);
-        return PyErr_NoMemory();
-    }
-    Bucket *B = G->b + NB - 1;
-    PyObject *out = PyBytes_FromStringAndSize(B->t ? (const char *)(B->t + B->start * S) : "",
-                                              (B->len - B->start) * S * (Py_ssize_t)sizeof(u64));
-    Py_DECREF(gcap);
-    if (!out)
-        return NULL;
-    return Py_BuildValue("(iNiLO)", status, out, sugar, steps, Py_None);
+    return Py_BuildValue("(iOiLLn)", status, Py_None, sugar, steps, counter, P->wn);
+fail:
+    if (hm)
+        PyBuffer_Release(&headb);
+    return NULL;
 }
 
 /* spoly(f, g, n, p, cut): lc(g) x^(l - lm f) f - lc(f) x^(l - lm g) g for l = lcm(lm f, lm g),
@@ -562,7 +661,7 @@ static PyMethodDef methods[] = {
     {"pool_new", mora_pool_new, METH_VARARGS, "pool_new(n, p): an empty pool of reducers."},
     {"pool_insert", mora_pool_insert, METH_VARARGS, "pool_insert(pool, terms, ecart): add a reducer."},
     {"pool_truncate", mora_pool_truncate, METH_VARARGS, "pool_truncate(pool, cut): drop tails above cut."},
-    {"reduce", mora_reduce, METH_VARARGS, "Mora's reduction loop (see the module source)."},
+    {"run", mora_run, METH_VARARGS, "Mora's reduction loop and its postponed polynomials (see the source)."},
     {"spoly", mora_spoly, METH_VARARGS, "spoly(f, g, n, p, cut): the S-polynomial."},
     {"pack", mora_pack, METH_VARARGS, "pack(n, terms): terms as bytes, leading first."},
     {"unpack", mora_unpack, METH_VARARGS, "unpack(n, b): the terms of bytes."},

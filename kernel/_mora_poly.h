@@ -17,12 +17,6 @@ typedef struct {
     u64 *t;          /* len * (W + 1) words */
 } Entry;
 
-typedef struct {
-    int n, W;
-    u64 p, guard;
-    Py_ssize_t size, cap;
-    Entry *e;
-} Pool;
 
 /* A growable polynomial under reduction. */
 typedef struct {
@@ -107,6 +101,23 @@ typedef struct {
     Bucket b[NB];
     Buf tmp, q;
 } Geo;
+
+/* A polynomial postponed by the reduction loop, waiting for its turn in the queue. */
+typedef struct {
+    int sugar;
+    long long counter;   /* the queue's tie-break: earlier first */
+    u64 *lm;             /* W words */
+    Geo *G;
+} Waiting;
+
+typedef struct {
+    int n, W;
+    u64 p, guard;
+    Py_ssize_t size, cap;
+    Entry *e;
+    Py_ssize_t wn, wcap;  /* the postponed polynomials, a binary heap by (sugar, lm, counter) */
+    Waiting *w;
+} Pool;
 
 static Py_ssize_t bucket_cap(int i) { return i == NB - 1 ? PY_SSIZE_T_MAX : (Py_ssize_t)16 << (2 * i); }
 

@@ -49,7 +49,7 @@ from .hilbert_driven import degree_leads, hilbert_driven, hilbert_f4
 from .lazard import lazard
 from .local_policy import auto_local
 from .modular import ModularFailure, SmallSystem, f4_qq
-from .mora import minimal, monic, mora
+from .mora import finished, mora
 from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
@@ -399,11 +399,7 @@ def _finish(basis: list[Terms], ring: PolyRing, reduced: bool) -> list[Poly]:
             p._lm = next(iter(b))
             out.append(p)
         return out
-    key = ring.order.key
-    one = ring.field.one
-    basis = minimal([b if b[max(b, key=key)] == one else monic(b, key) for b in basis if b], key)
-    basis.sort(key=lambda b: key(max(b, key=key)), reverse=True)
-    return [Poly(ring, b) for b in basis]
+    return finished(basis, ring)
 
 
 def _lazard(gens: list[Poly], ring: PolyRing) -> list[Terms]:

@@ -11,9 +11,9 @@ from fractions import Fraction
 from typing import Callable, Sequence
 
 from .hilbert import minimal_monomials
-from .mora import Terms, cancel_unit, monic
+from .mora import Terms, cancel_unit
 from .order import Block, MonomialOrder
-from .poly import Poly, PolyRing
+from .poly import Poly, PolyRing, divides
 
 
 def homogenized_order(order: MonomialOrder) -> MonomialOrder:
@@ -67,9 +67,9 @@ def dehomogenize(p: Poly) -> Terms:
 
 def lazard(gens: Sequence[Poly], ring: PolyRing,
            groebner: Callable[[list[Poly], PolyRing], list[Poly]]) -> list[Terms]:
-    """A minimal standard basis by Lazard's method: a homogeneous Gröbner basis of the
-    homogenized ideal for :func:`homogenized_order` (computed by ``groebner(gens, ring)``),
-    dehomogenized.  Unit factors ``x^a u`` of the generators are cancelled first (they only
+    """A minimal standard basis (dicts, each with its leading monomial first) by Lazard's
+    method: a homogeneous Gröbner basis of the homogenized ideal for :func:`homogenized_order`
+    (computed by ``groebner(gens, ring)``), dehomogenized.  Unit factors ``x^a u`` of the generators are cancelled first (they only
     enlarge the global problem)."""
     key = ring.order.key
     hring = homogenized_ring(ring)
@@ -83,5 +83,8 @@ def lazard(gens: Sequence[Poly], ring: PolyRing,
         if m in keep:
             keep.discard(m)
             p = dehomogenize(h)
-            out.append(monic(cancel_unit(p, key), key))
+            if all(divides(m, e) for e in p):  # p = x^m u with a unit u
+                p = {m: p[m]}
+            inv = 1 / p[m]
+            out.append({m: p[m] * inv, **{e: c * inv for e, c in p.items()}})  # the leading monomial first
     return out

@@ -4,13 +4,18 @@
 - Homogeneous generators: Mora within :data:`MORA_HOMOGENEOUS` steps, then Lazard's method
   (:mod:`.lazard`), which homogenizes nothing, its global basis from the compiled F4
   (Singular's ``cyclic_roots_7`` in ``ds``: 4.6 s by Mora, 0.05 s by F4).
-- Otherwise over Z/p: Mora (:mod:`.mora`) within :data:`MORA_FIRST` reduction steps in all
-  (:data:`MORA_COMPILED` when its loop runs compiled, :mod:`.mora_compiled`, and then Lazard
-  within :data:`LAZARD_SMALL` entries and Mora without trial cuts within :data:`MORA_UNCUT`)
-  (small and medium local problems end there, and Lazard would pay for the components away
-  from the origin), then Lazard with F4 within :data:`LAZARD_BUDGET` matrix entries (Singular's
-  ``mora_9`` and ``mora_10``: more than 60 s by Mora, 2.6 s and 0.07 s by Lazard), then Mora
-  with its trial cuts and Lazard without bounds.
+- Otherwise over Z/p, when Mora's loop runs compiled (:mod:`.mora_compiled`): Mora (:mod:`.mora`)
+  without trial cuts within :data:`MORA_QUICK` steps.  Then, when there are fewer generators
+  than variables (by Krull's height theorem the ideal is not zero-dimensional, and no trial cut
+  can succeed), Lazard within :data:`LAZARD_SMALL` entries and Mora without trial cuts within
+  :data:`MORA_UNCUT` steps; otherwise Mora with its trial cuts within :data:`MORA_COMPILED`
+  steps, Mora without them within :data:`MORA_UNCUT` steps while its sugar stays below
+  :data:`SUGAR_FACTOR` times the generators' degree, Lazard within :data:`LAZARD_SMALL`, Mora
+  without cuts within :data:`MORA_UNCUT` (small and medium local problems end there, and Lazard
+  would pay for the components away from the origin).  Each Mora run is granted
+  :data:`CORNER_STEPS` more once it finds the highest corner.  Without the compiled loop: Mora
+  with its trial cuts within :data:`MORA_FIRST` steps.  Then Lazard with F4 within
+  :data:`LAZARD_BUDGET` matrix entries, then Mora with its trial cuts and Lazard without bounds.
 - Over other fields: Mora within its default budget, then Lazard (modular F4 over QQ).
 """
 from __future__ import annotations
@@ -21,7 +26,7 @@ from .buchberger import TooLong
 from .coeffs import PrimeField
 from .f4 import f4_modp
 from .lazard import lazard
-from .mora import Budget, BudgetExceeded, Terms, mora
+from .mora import Budget, BudgetExceeded, Terms, mora, positive_dimensional
 from .mora_compiled import CompiledMora
 from .poly import Poly, PolyRing
 
@@ -33,17 +38,38 @@ MORA_FIRST = 2000
 32764, 2.2 / 2.1; mora_7 29765, 2.8 / 2.5; mora_9 and mora_10 past 10^5 steps and 30 s, Lazard
 2.6 / 0.07; the Puiseux parametrization in ``ls`` 0 steps, 0.3 ms / 2.9 s."""
 
-MORA_COMPILED = 40_000
-"""Reduction steps (about 0.1-0.4 s) of compiled Mora before Lazard's method.  Measured (steps,
-compiled Mora / Lazard seconds): mora1 6236, 0.02 / 0.10; mora_5 32764, 0.14 / 2.1; mora_7
-29765, 0.37 / 2.5; mora_10 past 166,000, 1.3 / 0.07; mora_9 205,000, 3.7 / 3.7."""
+MORA_QUICK = 3000
+"""Reduction steps of compiled Mora without trial cuts first: small ideals and those that show
+their highest corner early end there (steps before the corner, seconds in all: mora1 2636,
+0.003, with the trials 0.006; mora_6 1435, 0.0015; each curve of vdim_overflow's milnor; its
+tjurina 19, 1.7); the others lose little (mora_9 0.04 s, mora_5 0.002 s, mora_7 0.007 s)."""
+
+MORA_COMPILED = 80_000
+"""Reduction steps of compiled Mora with its trial cuts (about 0.05-0.15 s) before Mora without
+them.  Measured (steps, seconds; session 13): mora1 7772, 0.005; mora_5 65,989, 0.04; mora_7
+31,925, 0.04; mora_9 (not zero-dimensional, 60 generators in 15 variables) spends them all in
+0.12-0.15 s; vdim_overflow's tjurina finds its corner in the second trial and then has
+:data:`CORNER_STEPS` (1.0 s)."""
 
 LAZARD_SMALL = 250_000
-"""After :data:`MORA_COMPILED`: Lazard's method within this many matrix entries (mora_10: 0.08 s;
-mora_9 needs 1-4 M, and runs out of these in 0.3 s), then compiled Mora without trial cuts
-within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 1.2 s; Lazard 2.9 s)."""
+"""After :data:`MORA_COMPILED`: Lazard's method within this many matrix entries (mora_10 needs
+50,000-100,000: 0.06 s; a random ideal in 4 variables of tests/kernel/test_mora_random.py
+100,000-250,000, 0.02 s, where Mora without cuts runs 1 M steps into high degrees, 0.7 s;
+mora_9 needs 1-4 M and runs out of these in 0.2 s), then compiled Mora without trial cuts
+within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 0.3 s)."""
 
 MORA_UNCUT = 1_000_000
+
+SUGAR_FACTOR = 6
+"""Mora without trial cuts before Lazard's small attempt gives up when a sugar passes this many
+times the generators' largest degree.  Measured largest sugar / degree: mora1 2.5, mora_5 and
+mora_9 2.9, mora_7 3.7, mora_10 4.7; runaways of tests/kernel/test_mora_random.py 12 (with
+factor 4 they leave after 0.01 s, 6: 0.05 s, 8: 0.2 s, none: 0.7-3 s)."""
+
+CORNER_STEPS = 20_000_000
+"""Steps compiled Mora is granted once the highest corner is found (about 0.4 µs each there:
+reductions in ``K[x]/m^(cut+1)`` without Mora's ecart rule); vdim_overflow's ``tjurina`` takes
+5.3 million."""
 
 MORA_HOMOGENEOUS = 200
 """Reduction steps Mora gets on homogeneous generators before Lazard's method (about 10 ms;
@@ -68,18 +94,13 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
             return mora(gens, ring, Budget())
         except BudgetExceeded:
             return lazard(gens, ring, global_basis)
-    compiled = CompiledMora.usable(ring)
-    try:
-        return mora(gens, ring, Budget(MORA_COMPILED if compiled else MORA_FIRST), shared=True)
-    except BudgetExceeded:
-        pass
-    if compiled:
+    if CompiledMora.usable(ring):
+        basis = _compiled_routes(gens, ring)
+        if basis is not None:
+            return basis
+    else:
         try:
-            return lazard(gens, ring, _f4_within(LAZARD_SMALL))
-        except TooLong:
-            pass
-        try:
-            return mora(gens, ring, Budget(MORA_UNCUT), shared=True, trials=False)
+            return mora(gens, ring, Budget(MORA_FIRST), shared=True)
         except BudgetExceeded:
             pass
     try:
@@ -90,6 +111,42 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
         return mora(gens, ring, Budget())
     except BudgetExceeded:
         return lazard(gens, ring, global_basis)
+
+
+def _compiled_routes(gens: list[Poly], ring: PolyRing) -> list[Terms] | None:
+    """The routes within bounds when Mora's loop runs compiled (see the module docstring); None
+    when every one runs out.  When Krull's bound rules out trial cuts, Lazard's small attempt
+    comes before Mora without cuts (mora_10: 0.06 s against 0.11 s); else Mora without cuts
+    comes first while its sugar stays within :data:`SUGAR_FACTOR` times the generators' degree
+    (mora_9: 0.3 s, where Lazard's attempt runs out in 0.2 s; random ideals in 4 variables that
+    drive Mora's normal form to degree 85 from generators of degree 7 leave within 0.05 s, and
+    Lazard takes them in 0.01-0.02 s)."""
+    def quick() -> list[Terms]:
+        return mora(gens, ring, Budget(MORA_QUICK, corner_steps=CORNER_STEPS), shared=True, trials=False)
+
+    def trials() -> list[Terms]:
+        return mora(gens, ring, Budget(MORA_COMPILED, corner_steps=CORNER_STEPS), shared=True)
+
+    def lazard_small() -> list[Terms]:
+        return lazard(gens, ring, _f4_within(LAZARD_SMALL))
+
+    def uncut() -> list[Terms]:
+        return mora(gens, ring, Budget(MORA_UNCUT, corner_steps=CORNER_STEPS), shared=True, trials=False)
+
+    def uncut_low() -> list[Terms]:
+        budget = Budget(MORA_UNCUT, corner_steps=CORNER_STEPS, degree=SUGAR_FACTOR)
+        return mora(gens, ring, budget, shared=True, trials=False)
+
+    if positive_dimensional(gens):
+        routes = [quick, lazard_small, uncut]
+    else:
+        routes = [quick, trials, uncut_low, lazard_small, uncut]
+    for route in routes:
+        try:
+            return route()
+        except (BudgetExceeded, TooLong):
+            pass
+    return None
 
 
 def _f4_within(budget: int) -> GlobalBasis:

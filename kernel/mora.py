@@ -18,7 +18,10 @@ hangs on some of them): a :class:`Budget` bounds it, and the engine driver (:mod
 then falls back to Lazard's method (:mod:`.lazard`).  For ``ds`` the polynomial under
 reduction lives on packed monomials (:mod:`.mora_packed`), over Z/p in compiled code when the
 C extension is built (:mod:`.mora_compiled`: the same steps); the highest corner that cuts the
-tails of zero-dimensional ideals is :mod:`.mora_corner`.  Generators in disjoint sets of
+tails of zero-dimensional ideals is :mod:`.mora_corner`.  Under a cut (a trial's or the
+corner's) the computation lives in the finite-dimensional algebra ``K[x]/m^(cut+1)``, and there
+reductions take the first reducer (by sugar) without the ecart rule, as Singular does once it
+knows its highest corner.  Generators in disjoint sets of
 variables are computed group by group (:func:`_separate`).
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
@@ -29,14 +32,15 @@ gives a standard representation ``spoly(f, g) = f'g - g'f``: for a local orderin
 from __future__ import annotations
 
 import heapq
-from operator import neg
+from itertools import islice
+from operator import itemgetter, neg
 from typing import Any, Callable, Sequence
 
 from .mora_compiled import CompiledMora
 from .mora_corner import Corner, components
 from .mora_packed import MAX_DEGREE, PackedFront, Packing
-from .order import Exp
-from .poly import Poly, PolyRing, add_exp, divides, lcm_exp, support_mask
+from .order import Block, Exp, MonomialOrder
+from .poly import Poly, PolyRing, add_exp, divides, support_mask
 
 Terms = dict[Exp, Any]
 
@@ -163,10 +167,19 @@ class BudgetExceeded(Exception):
 class Budget:
     """A bound on the work of Mora's normal forms: reduction steps and the size (bits) of
     rational coefficients.  Successful runs on random ideals (3 variables, degree 5) stay
-    below 600 steps and 400 bits; runaway ones pass 512 bits within a second."""
+    below 600 steps and 400 bits; runaway ones pass 512 bits within a second.
+    ``corner_steps``: the steps granted once the highest corner is found (the computation then
+    lives in a finite-dimensional algebra, where every reduction ends; Singular's ``tjurina``
+    of vdim_overflow finds it within 20 steps and then takes 5.9 million cheap ones).
+    ``degree``: the run stops when a sugar passes this many times the generators' largest
+    degree (a normal form running away into high degrees)."""
 
-    def __init__(self, steps: int = 2000, bits: int = 512) -> None:
-        self.steps, self.bits = steps, bits
+    def __init__(self, steps: int = 2000, bits: int = 512, corner_steps: int = 0, degree: int | None = None) -> None:
+        self.steps, self.bits, self.corner_steps, self.degree = steps, bits, corner_steps, degree
+
+    def corner_found(self) -> None:
+        """Grant :attr:`corner_steps` (once)."""
+        self.steps, self.corner_steps = max(self.steps, self.corner_steps), 0
 
     def charge(self, c: Any) -> None:
         """Account for one reduction step of a polynomial with leading coefficient ``c``."""
@@ -282,10 +295,39 @@ LAZY_PASS = 2
 
 
 class _Pair:
-    __slots__ = ("i", "j", "lcm", "alive")
+    __slots__ = ("i", "j", "lcm", "mask", "packed", "alive")
 
-    def __init__(self, i: int, j: int, lcm: Exp) -> None:
-        self.i, self.j, self.lcm, self.alive = i, j, lcm, True
+    def __init__(self, i: int, j: int, lcm: Exp, mask: int, packed: int) -> None:
+        self.i, self.j, self.lcm, self.mask, self.packed, self.alive = i, j, lcm, mask, packed, True
+
+
+class _Words:
+    """Monomials of ``n`` variables as one integer of 16-bit fields (exponents below 2^15, the
+    top bit of each field a guard): lcm, divisibility and degree in a few integer operations,
+    for the pair criteria."""
+
+    def __init__(self, n: int) -> None:
+        self.shifts = [16 * i for i in range(n)]
+        self.guard = sum(0x8000 << s for s in self.shifts)
+        self.ones = sum(1 << s for s in self.shifts)
+        self.top = 16 * (n - 1)
+
+    def pack(self, e: Exp) -> int:
+        return sum(v << s for v, s in zip(e, self.shifts))
+
+    def unpack(self, w: int) -> Exp:
+        return tuple([(w >> s) & 0xFFFF for s in self.shifts])
+
+    def lcm(self, a: int, b: int) -> int:
+        keep = ((((a | self.guard) - b) & self.guard) >> 15) * 0xFFFF  # the fields where a >= b
+        return (a & keep) | (b & ~keep)
+
+    def divides(self, a: int, b: int) -> bool:
+        """Whether ``a`` divides ``b``."""
+        return ((b | self.guard) - a) & self.guard == self.guard
+
+    def degree(self, w: int) -> int:
+        return (w * self.ones >> self.top) & 0xFFFF  # the fields' sum lands in the top one
 
 
 def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
@@ -304,7 +346,8 @@ TRIAL_STEPS = 200_000
 
 def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
          shared: bool = False, trials: bool = True) -> list[Terms]:
-    """A minimal standard basis (as dicts, leading-term reduced, monic) by Buchberger's
+    """A minimal standard basis (as dicts, each with its leading monomial first, leading-term
+    reduced, monic) by Buchberger's
     algorithm with Mora's normal form: the Gebauer–Möller criteria, a queue of generators,
     pairs and postponed polynomials ordered by sugar, and one growing set of reducers
     (basis elements and the intermediate polynomials Mora's normal form keeps).
@@ -316,24 +359,28 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     ``I`` by Nakayama's lemma, ``J = I`` and ``G`` is a standard basis of ``I``.  Otherwise
     (the local ideal is not zero-dimensional, or its corner lies higher) the computation
     runs without a cut; a trial cut is skipped when an earlier trial left a monomial of that
-    degree outside its leading monomials.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
-    out; each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
+    degree outside its leading monomials, and the next trial is then one degree above it.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
+    out; the trials are skipped when there are fewer generators than variables in them (by
+    Krull's height theorem the ideal of the local ring then has positive dimension, and no trial
+    can succeed); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
     trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts."""
     live = [g for g in gens if not g.is_zero()]
     parts = _separate(live, ring.nvars)
     if len(parts) > 1:
         out = []
+        known: dict[tuple, list[Terms]] = {}
         for part in parts:
-            basis = mora(part, ring, budget, shared, trials)
+            basis = _part_basis(part, ring, budget, shared, trials, known)
             if any(b.get(ring.zero_exp) for b in basis):
                 return basis  # the unit ideal
             out.extend(basis)
         return out
-    if live and trials and Corner(ring).enabled:
+    if live and trials and Corner(ring).enabled and not positive_dimensional(live):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
-        for factor in TRIAL_CUTS:
-            k = factor * max(top, 1)
+        cuts = [factor * max(top, 1) for factor in TRIAL_CUTS]
+        while cuts:
+            k = cuts.pop(0)
             if k <= seen:
                 continue
             try:
@@ -345,8 +392,53 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 break
             if corner.found and corner.cut < k:
                 return basis
+            if corner.seen is not None and corner.seen >= k:
+                cuts.insert(0, corner.seen + 1)  # the least cut above the monomial left outside
             seen = max(seen, corner.seen if corner.seen is not None else -1)
     return _mora(live, ring, budget)[0]
+
+
+RESTRICTABLE = ("ds", "Ds", "ls", "dp", "Dp", "lp")
+"""Orderings that compare monomials in some of the variables as the same ordering of those
+variables alone (in their order) does."""
+
+
+def _part_basis(part: list[Poly], ring: PolyRing, budget: Budget | None, shared: bool, trials: bool,
+                known: dict[tuple, list[Terms]]) -> list[Terms]:
+    """:func:`mora` of one group of :func:`_separate`, computed in the ring of its variables
+    when the ordering allows (then a standard basis there is one in ``ring``: its standard
+    representations stay standard); groups equal up to renaming their variables in order (a
+    sum of copies of one singularity, as in Singular's vdim_overflow test) are computed once,
+    ``known`` keeping their bases."""
+    blocks = ring.order.blocks
+    if len(blocks) != 1 or blocks[0].kind not in RESTRICTABLE:
+        return mora(part, ring, budget, shared, trials)
+    used = sorted({i for g in part for e in g.terms for i, v in enumerate(e) if v})
+    local = [{tuple([e[i] for i in used]): c for e, c in g.terms.items()} for g in part]
+    key = (blocks[0].kind, len(used), tuple(tuple(sorted(g.items())) for g in local))
+    basis = known.get(key)
+    if basis is None:
+        sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(blocks[0].kind, len(used))]))
+        basis = known[key] = mora([Poly(sub, g) for g in local], sub, budget, shared, trials)
+    n = ring.nvars
+    out = []
+    for b in basis:
+        terms = {}
+        for e, c in b.items():
+            full = [0] * n
+            for i, v in zip(used, e):
+                full[i] = v
+            terms[tuple(full)] = c
+        out.append(terms)
+    return out
+
+
+def positive_dimensional(gens: Sequence[Poly]) -> bool:
+    """Whether there are fewer generators than variables in them: the ideal of the local ring
+    then has positive dimension (Krull's height theorem: its height is at most the number of
+    generators), or is the whole ring."""
+    used = {i for g in gens for e in g.terms for i, v in enumerate(e) if v}
+    return len(gens) < len(used)
 
 
 def _separate(gens: list[Poly], n: int) -> list[list[Poly]]:
@@ -374,6 +466,8 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     sign = 1 if ring.order.is_global else -1
     basis: list[Elem] = []
     active: list[bool] = []
+    words = _Words(ring.nvars)
+    packs: list[int] = []  # the basis' leading monomials packed
     pairs: list[_Pair] = []
     pool: list[Elem] = []  # reducers, sorted by sugar
     queue: list[tuple] = []  # (sugar, rank of LM, counter, pair or (h, sugar))
@@ -417,25 +511,31 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         k = len(basis)
         basis.append(h)
         active.append(True)
-        new = []
-        for i in range(k):
-            if active[i]:
-                new.append(_Pair(i, k, lcm_exp(basis[i].lm, h.lm)))
-        # the pairs whose lcm no other lcm divides properly (masks and degrees first)
-        masks = [basis[a.i].mask | h.mask for a in new]
-        degrees = [sum(a.lcm) for a in new]
-        span = range(len(new))
-        kept = [a for a, m, d in zip(new, masks, degrees)
-                if not any(degrees[y] < d and not masks[y] & ~m and divides(new[y].lcm, a.lcm) for y in span)]
-        by_lcm: dict[Exp, tuple[_Pair, bool]] = {}
-        for a in kept:
-            lifts = _lifts(basis[a.i], h)
-            prev = by_lcm.get(a.lcm)
+        hmask = h.mask
+        hp = words.pack(h.lm)
+        packs.append(hp)
+        lcm, divides_packed = words.lcm, words.divides
+        # the new pairs whose lcm no other new lcm of lower degree divides (Gebauer–Möller's M;
+        # divisibility is transitive, so checking the kept ones of lower degree suffices)
+        new = sorted(((words.degree(lc), lc, i) for i in range(k) if active[i]
+                      for lc in (lcm(packs[i], hp),)), key=itemgetter(0))
+        kept: list[tuple[int, int, int, int]] = []  # (degree, mask, packed lcm, i)
+        lower = 0  # kept[:lower] have a degree below the current one
+        for d, lc, i in new:
+            while lower < len(kept) and kept[lower][0] < d:
+                lower += 1
+            m = basis[i].mask | hmask
+            if not any(not km & ~m and divides_packed(kl, lc) for _, km, kl, _ in islice(kept, lower)):
+                kept.append((d, m, lc, i))
+        by_lcm: dict[int, tuple[_Pair, bool]] = {}
+        for _, m, lc, i in kept:
+            lifts = _lifts(basis[i], h)
+            prev = by_lcm.get(lc)
             if prev is None or (lifts and not prev[1]):
-                by_lcm[a.lcm] = (a, lifts)
+                by_lcm[lc] = (_Pair(i, k, words.unpack(lc), m, lc), lifts)
         for p in pairs:
-            if p.alive and divides(h.lm, p.lcm) and lcm_exp(basis[p.i].lm, h.lm) != p.lcm \
-                    and lcm_exp(basis[p.j].lm, h.lm) != p.lcm:
+            if p.alive and not hmask & ~p.mask and divides_packed(hp, p.packed) \
+                    and lcm(packs[p.i], hp) != p.packed and lcm(packs[p.j], hp) != p.packed:
                 p.alive = False
         pairs[:] = [p for p in pairs if p.alive]
         for a, lifts in by_lcm.values():
@@ -443,31 +543,37 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 pairs.append(a)
                 push(sum(a.lcm) + max(basis[a.i].ecart, h.ecart), a.lcm, a)
         for i in range(k):
-            if active[i] and divides(h.lm, basis[i].lm):
+            if active[i] and not hmask & ~basis[i].mask and divides_packed(hp, packs[i]):
                 active[i] = False
 
-    def reduce_compiled(w: bytes, sugar: int) -> tuple[Terms, int] | None:
-        """:func:`reduce` in compiled code."""
+    max_sugar = None if budget is None or budget.degree is None else \
+        budget.degree * max(1, max((g.total_degree() for g in gens), default=1))
+    waiting = 0  # polynomials postponed inside the compiled loop (they wait there, not in ``queue``)
+
+    def run_compiled(w: bytes | None, sugar: int) -> tuple[bytes, int] | None:
+        """:func:`reduce` in compiled code, which goes on with the polynomials postponed there
+        while they come before the queue's head; an irreducible nonzero polynomial or None."""
+        nonlocal counter, waiting
         first_in_queue(0, ring.zero_exp)  # drops the dead pairs at the head
-        head = (queue[0][0], queue[0][4]) if queue else None
-        status, h, sugar, left, lm = compiled.reduce(w, sugar, head, corner.cut,
-                                                     None if budget is None else budget.steps)
+        head = (queue[0][0], queue[0][4], queue[0][2]) if queue else None
+        status, h, sugar, left, counter, waiting = compiled.run(
+            w, sugar, head, corner.cut, None if budget is None else budget.steps, counter,
+            MAX_DEGREE if max_sugar is None else max_sugar)
         if budget is not None:
             budget.steps = left
         if status == 2:
             raise BudgetExceeded
-        if status == 1:
-            push(sugar, lm, (h, sugar))
-            return None
-        return h, sugar
+        return (h, sugar) if status == 0 else None
 
     def reduce(w: Front, sugar: int) -> tuple[Terms, int] | None:
         """Reduce until irreducible (returned with its sugar; {} for zero) or postponed
         (None)."""
         if compiled is not None:
-            return reduce_compiled(w, sugar)
-        limit, passes = sugar + LAZY_DEGREE, 0
+            return run_compiled(w, sugar)
         w.trim(corner.cut)
+        if corner.cut is not None:
+            return reduce_cut(w, sugar)
+        limit, passes = sugar + LAZY_DEGREE, 0
         while w.p:
             lm = w.lm()
             w.unit_cancelled(lm)
@@ -483,7 +589,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                     return None
                 _insert(pool, Elem(dict(w.terms()), key, ecart, lm))
                 sugar += g.ecart - ecart
-                if sugar > MAX_DEGREE and packing is not None:
+                if (max_sugar is not None and sugar > max_sugar) or (sugar > MAX_DEGREE and packing is not None):
                     raise BudgetExceeded
             w.reduce(lm, g)
             if not w.p:
@@ -498,29 +604,49 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                     return None
         return w.terms(), sugar
 
+    def reduce_cut(w: Front, sugar: int) -> tuple[Terms, int]:
+        """Reduce until irreducible in ``K[x]/m^(cut+1)``: a finite-dimensional algebra, where
+        each step replaces the leading term by smaller terms of a finite set of monomials, so
+        that the reduction ends without Mora's ecart rule; the first reducer each time (by
+        sugar), and nothing is postponed.  (In ``tjurina`` of Singular's vdim_overflow test the ecart rule
+        took 3.4 million steps on one S-polynomial of 7 terms, 16 s, with four curves.)"""
+        while w.p:
+            lm = w.lm()
+            w.unit_cancelled(lm)
+            g = _choose(pool, lm, MAX_DEGREE)  # the first divisor (the pool is sorted by sugar)
+            if g is None:
+                break
+            if budget is not None:
+                budget.charge(w.coeff(lm))
+            w.reduce(lm, g)
+        return w.terms(), sugar
+
     for g in gens:
         if not g.is_zero():
             push(g.total_degree(), g.lm(), (front(dict(g.terms)), g.total_degree()))
-    while queue:
-        sugar, _, _, item, _ = heapq.heappop(queue)
-        if isinstance(item, _Pair):
-            if not item.alive:
-                continue
-            item.alive = False
-            pairs.remove(item)
-            if corner.cut is not None and sum(item.lcm) > corner.cut:
-                continue  # every term of the S-polynomial is above the cut
-            if compiled is not None:
-                w = compiled.spoly(basis[item.i].b, basis[item.j].b, corner.cut)
-                if w is None:
-                    raise BudgetExceeded
+    while queue or waiting:
+        done = run_compiled(None, 0) if waiting else None
+        if done is None:
+            if not queue:
+                continue  # (its dead pairs dropped, the postponed polynomials reduced to zero)
+            sugar, _, _, item, _ = heapq.heappop(queue)
+            if isinstance(item, _Pair):
+                if not item.alive:
+                    continue
+                item.alive = False  # dropped from ``pairs`` at the next update
+                if corner.cut is not None and sum(item.lcm) > corner.cut:
+                    continue  # every term of the S-polynomial is above the cut
+                if compiled is not None:
+                    w = compiled.spoly(basis[item.i].b, basis[item.j].b, corner.cut)
+                    if w is None:
+                        raise BudgetExceeded
+                else:
+                    w = front(_spoly(basis[item.i], basis[item.j], item.lcm))
             else:
-                w = front(_spoly(basis[item.i], basis[item.j], item.lcm))
-        else:
-            w, sugar = item
-        done = reduce(w, sugar)
-        if done is None or not done[0]:
-            continue
+                w, sugar = item
+            done = reduce(w, sugar)
+            if done is None or not done[0]:
+                continue
         h, sugar = done
         if compiled is not None:
             elem = compiled.element(h, sugar)
@@ -536,11 +662,13 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             _insert(pool, elem)
         update(elem)
         if corner.update(elem.lm, lambda: [b.lm for b, a in zip(basis, active) if a]):
+            if budget is not None:
+                budget.corner_found()
             if compiled is not None:
                 compiled.cut_tails(basis, corner.cut)
             for g in pool:
                 g.truncate(corner.cut)
-    return [b.p for b, a in zip(basis, active) if a], corner
+    return [{b.lm: b.p[b.lm], **b.p} for b, a in zip(basis, active) if a], corner
 
 
 def _spoly(f: Elem, g: Elem, lc: Exp) -> Terms:
@@ -567,11 +695,29 @@ def elems(basis: Sequence[Poly]) -> list[Elem]:
 
 
 
-def minimal(basis: list[Terms], key: Callable) -> list[Terms]:
-    """Drop elements whose leading monomial is divisible by another's (keep the first)."""
-    lms = [max(b, key=key) for b in basis]
-    keep = []
-    for i, (b, m) in enumerate(zip(basis, lms)):
-        if not any(divides(lms[j], m) and (lms[j] != m or j < i) for j in range(len(basis)) if j != i):
-            keep.append(b)
-    return keep
+def finished(basis: list[Terms], ring: PolyRing) -> list[Poly]:
+    """A standard basis as :func:`.engines.standard_basis` returns it for a non-global ordering,
+    from dicts that each hold their leading monomial first (as :func:`mora` and
+    :func:`.lazard.lazard` give them): minimal (an element whose leading monomial another's
+    divides is dropped; of equal ones the first is kept), monic, sorted from the largest leading
+    monomial down."""
+    key = ring.order.key
+    one = ring.field.one
+    items = [(next(iter(b)), b) for b in basis if b]
+    items.sort(key=lambda t: sum(t[0]))  # a divisor comes first (stable: equal ones in order)
+    kept: list[tuple[Exp, int]] = []
+    out = []
+    for m, b in items:
+        mask = support_mask(m)
+        if any(not kmask & ~mask and divides(lm, m) for lm, kmask in kept):
+            continue
+        kept.append((m, mask))
+        c = b[m]
+        if c != one:
+            inv = 1 / c
+            b = {e: v * inv for e, v in b.items()}
+        p = Poly(ring, b)
+        p._lm = m
+        out.append((key(m), p))
+    out.sort(key=lambda t: t[0], reverse=True)
+    return [p for _, p in out]

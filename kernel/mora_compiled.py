@@ -1,7 +1,8 @@
 """Mora's algorithm (:mod:`.mora`) for ``ds`` over Z/p with its reduction loop compiled (the
 optional C extension ``_mora``, kernel/_mora.c, built by setup.py beside ``_f4rows``): the
 polynomials under reduction, the reducers and the S-polynomials live in C as arrays of packed
-monomials; the pairs, the queue and the highest corner stay in Python.  The loop is the Python
+monomials, and so do the polynomials postponed by the loop; the pairs, the queue and the highest
+corner stay in Python.  The loop is the Python
 one step for step, so the bases are the same; without the extension :mod:`.mora` runs alone."""
 from __future__ import annotations
 
@@ -15,10 +16,10 @@ from .order import Exp
 from .poly import PolyRing, support_mask
 
 try:
-    from ._mora import normalize, pack, pool_insert, pool_new, pool_truncate, reduce, spoly, truncate, unpack
+    from ._mora import normalize, pack, pool_insert, pool_new, pool_truncate, run, spoly, truncate, unpack
     C: SimpleNamespace | None = SimpleNamespace(
         normalize=normalize, pack=pack, pool_insert=pool_insert, pool_new=pool_new, pool_truncate=pool_truncate,
-        reduce=reduce, spoly=spoly, truncate=truncate, unpack=unpack)
+        run=run, spoly=spoly, truncate=truncate, unpack=unpack)
 except ImportError:  # pragma: no cover - no compiler at install time
     C = None
 
@@ -82,15 +83,17 @@ class CompiledMora:
     def insert(self, b: bytes, ecart: int) -> None:
         C.pool_insert(self.pool, b, ecart)
 
-    def reduce(self, b: Any, sugar: int, head: tuple[int, Exp] | None, cut: int | None,
-               steps: int | None) -> tuple[int, Any, int, int, Exp | None]:
-        """Reduce ``b`` until irreducible (status 0), postponed behind the queue's ``head`` (1),
-        or out of steps or degrees (2); the polynomial, its sugar, the steps left and, when
-        postponed, its leading monomial.  ``b``: packed terms (``bytes``) or a polynomial
-        postponed earlier (an opaque handle on its geobucket, returned with status 1)."""
-        hs, hm = (0, None) if head is None else (head[0], self.monomial(head[1]))
-        return C.reduce(self.pool, b, sugar, hs, hm, -1 if cut is None else cut,
-                        STEPS if steps is None else steps)
+    def run(self, b: bytes | None, sugar: int, head: tuple[int, Exp, int] | None, cut: int | None,
+            steps: int | None, counter: int, max_sugar: int) -> tuple[int, bytes | None, int, int, int, int]:
+        """Reduce ``b`` (with its ``sugar``) and then the postponed polynomials that come before
+        the queue's ``head`` (sugar, leading monomial, counter; None: an empty queue), which
+        wait here when postponed again, under the next ``counter``; ``b`` None: only those.
+        Returns the status (0: an irreducible nonzero polynomial, with its sugar; 2: out of
+        steps or degrees; 3: the queue's head comes first, or nothing is left), the polynomial,
+        its sugar, the steps left, the counter and the number of postponed polynomials."""
+        hs, hm, hc = (0, None, 0) if head is None else (head[0], self.monomial(head[1]), head[2])
+        return C.run(self.pool, b, sugar, hs, hm, hc, -1 if cut is None else cut,
+                     STEPS if steps is None else steps, counter, max_sugar)
 
     def spoly(self, f: bytes, g: bytes, cut: int | None) -> bytes:
         return C.spoly(f, g, self.n, self.p, -1 if cut is None else cut)

@@ -31,6 +31,8 @@ def _ring(names, kind, field):
 def test_every_route_gives_the_leading_ideal_of_mora(names, kind, polys, field, mora_first, monkeypatch):
     monkeypatch.setattr(local_policy, "MORA_FIRST", mora_first)
     monkeypatch.setattr(local_policy, "MORA_COMPILED", mora_first or local_policy.MORA_COMPILED)
+    monkeypatch.setattr(local_policy, "MORA_QUICK", mora_first and local_policy.MORA_QUICK)
+    monkeypatch.setattr(local_policy, "MORA_UNCUT", mora_first and local_policy.MORA_UNCUT)
     R = _ring(names, kind, field)
     gens = [parse_poly(R, p) for p in polys]
     key = R.order.key
@@ -49,6 +51,8 @@ def test_lazard_route_is_taken_and_agrees(monkeypatch):
         return run(budget)
     monkeypatch.setattr(local_policy, "MORA_FIRST", 0)
     monkeypatch.setattr(local_policy, "MORA_COMPILED", 0)
+    monkeypatch.setattr(local_policy, "MORA_QUICK", 0)
+    monkeypatch.setattr(local_policy, "MORA_UNCUT", 0)
     monkeypatch.setattr(local_policy, "_f4_within", spy)
     R = _ring("x,y,z", "ds", GF(32003))
     gens = [parse_poly(R, p) for p in SYSTEMS[0][2]]

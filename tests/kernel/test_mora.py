@@ -100,3 +100,25 @@ def test_generators_in_disjoint_variables_are_split(kind):
     assert sorted(minimal_monomials([max(b, key=key) for b in split])) == \
         sorted(minimal_monomials([max(b, key=key) for b in whole]))
     assert len(split) == len(minimal_monomials([max(b, key=key) for b in split]))
+
+
+@pytest.mark.parametrize("kind", ["ds", "ls"])
+def test_copies_of_a_group_are_computed_once(kind, monkeypatch):
+    """Groups equal up to renaming their variables in order are computed once, in the ring of
+    their own variables (kernel/mora.py's _part_basis), with the leading ideal of the whole."""
+    from mech.kernel import mora as mora_module
+    R = PolyRing(GF(32003), ["x", "y", "z", "w"], MonomialOrder([Block(kind, 4)]))
+    gens = [parse_poly(R, p) for p in ["x^3+y^2+x^4*y", "x*y^3+y^5", "z^3+w^2+z^4*w", "z*w^3+w^5"]]
+    calls = []
+    real = mora_module.mora
+
+    def spy(gens, ring, *args):
+        calls.append(ring.nvars)
+        return real(gens, ring, *args)
+    monkeypatch.setattr(mora_module, "mora", spy)
+    split = real(gens, R)
+    assert calls == [2]
+    key = R.order.key
+    lms = sorted(max(b, key=key) for b in split)
+    assert lms == sorted(minimal_monomials([max(b, key=key) for b in _mora(gens, R)[0]]))
+    assert sorted((e[2], e[3]) for e in lms if e[2] or e[3]) == sorted((e[0], e[1]) for e in lms if e[0] or e[1])
