@@ -45,6 +45,7 @@ from .errors import EngineError
 from .f4 import f4_modp, reduce_modp
 from .flint_reduce import FLINT_TERMS, reduce_basis_qq
 from .fglm import NotZeroDimensional, fglm_qq, fglm_zp, staircase
+from .hilbert_compiled import hilbert_modp, hilbert_qq, usable as compiled_hilbert
 from .hilbert_driven import degree_leads, hilbert_driven, hilbert_f4
 from .lazard import lazard
 from .local_policy import auto_local
@@ -325,7 +326,7 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
                     return _finish(f4_modp(gens, ring, F4_BUDGET), ring, True)
                 except TooLong:
                     pass
-            return _finish(hilbert_driven(gens, ring, _dp_auto), ring, False)
+            return _finish(_hilbert_reduced(gens, ring), ring, True)
         except ModularFailure:
             pass
     return _finish(buchberger(gens, ring), ring, False)
@@ -376,6 +377,19 @@ def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
     return _convert(_degree_basis(gens, ring), ring)
 
 
+def _hilbert_reduced(gens: list[Poly], ring: PolyRing) -> list[Terms]:
+    """The reduced basis by the Hilbert-driven algorithm: compiled modulo p, over QQ lifted
+    from primes (:mod:`.hilbert_compiled`), else (or when the lift fails) in Python."""
+    if compiled_hilbert(ring):
+        try:
+            if isinstance(ring.field, PrimeField):
+                return hilbert_modp(gens, ring, _dp_auto)
+            return hilbert_qq(gens, ring, _dp_auto)
+        except ModularFailure:
+            pass
+    return [{p.lm(): p.terms[p.lm()], **p.terms} for p in _finish(hilbert_driven(gens, ring, _dp_auto), ring, False)]
+
+
 def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
     return _finish(auto_local(gens, ring, lambda hgens, hring: standard_basis(hgens, hring, AUTO)), ring, False)
 
@@ -421,6 +435,9 @@ register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ord
          fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
 register("hilbert", lambda gens, ring: hilbert_driven(gens, ring, _dp_auto),
          "Hilbert-driven Buchberger: homogenize, Hilbert series from a dp basis, drop pairs once it is reached")
+register("hilbert-compiled", _hilbert_reduced,
+         "Hilbert-driven Buchberger in C modulo p, over QQ lifted from primes and verified (Python without a compiler)",
+         returns_reduced=True)
 register("hilbert-f4", lambda gens, ring: hilbert_f4(gens, ring, _dp_auto),
          "Hilbert-driven F4: homogenize, Hilbert series from a dp basis, F4 (modular over QQ) until it is reached",
          fields=("QQ", "Z/p"))

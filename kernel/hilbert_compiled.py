@@ -1,0 +1,210 @@
+"""The Hilbert-driven Buchberger algorithm (:mod:`.hilbert_driven`) modulo ``p < 2^31`` in
+compiled code (the optional C extension ``_bba``, kernel/_bba.c), and over QQ by a modular lift.
+
+Modulo ``p`` the homogenized generators, the basis and the pairs live in C as packed monomials
+(:class:`~.monomials.Packing`); Python keeps the Hilbert series (:class:`.hilbert_driven.Counter`)
+and asks C, degree by degree, for the S-polynomials' top reductions until the degree has its
+new leading monomials.  C then dehomogenizes the basis and reduces it.
+
+Every run modulo ``p`` gives a Gröbner basis of the ideal modulo ``p`` whatever ``p``: with
+``h`` the Hilbert function of the quotient by ``J`` (the homogenized ideal over QQ), that of
+``J mod p`` is at least ``h`` in every degree (ranks only drop modulo ``p``), so a degree that
+found the new leading monomials the series asks for is complete, and one whose pairs ran out
+is complete as in Buchberger's algorithm.
+
+Over QQ (:func:`hilbert_qq`) the reduced bases at several primes of the same shape (monomials)
+are combined by the Chinese remainder theorem and lifted by rational reconstruction
+(:class:`.modular.Reconstructor`) until the next prime's basis agrees with the lift ``G``; a
+prime whose basis has another shape is dropped, and when more primes disagree than agree the
+first one was unlucky and the lift starts again from a later prime.  ``G mod q`` is then the
+reduced Gröbner basis of the ideal modulo a prime ``q`` not used to build ``G``, the
+probabilistic Gröbner basis check of :mod:`.modular` ("fast"); every generator is checked to
+top-reduce to 0 by ``G`` exactly over QQ, so ``G`` generates an ideal containing the ideal, and
+equal to it as soon as one prime used is lucky (as for :func:`.modular.f4_qq` on
+inhomogeneous ideals).
+"""
+from __future__ import annotations
+
+import random
+from array import array
+from functools import lru_cache
+from typing import Any, Sequence
+
+import flint
+
+from .buchberger import Overflow
+from .coeffs import PrimeField, RationalField
+from .hilbert_driven import Basis, Counter, _homogenized
+from .modular import ExactReducer, Lifter, ModularFailure, Reconstructor, _next_prime, primitive
+from .monomials import Packing, packing
+from .order import Exp
+from .poly import Poly, PolyRing
+
+try:
+    from . import _bba
+except ImportError:  # pragma: no cover - no compiler at install time
+    _bba = None
+
+PRIMES = (1 << 30, 1 << 31)
+"""The primes of the lift (the compiled arithmetic takes ``p < 2^31``)."""
+
+MAX_PRIMES = 60
+"""The lift gives up (:class:`~.modular.ModularFailure`) after this many primes."""
+
+
+def usable(ring: PolyRing) -> bool:
+    """Whether the compiled algorithm applies: the extension is built and the field is QQ or
+    Z/p with ``p < 2^31``."""
+    f = ring.field
+    return _bba is not None and (isinstance(f, RationalField)
+                                 or isinstance(f, PrimeField) and f.characteristic < PRIMES[1])
+
+
+@lru_cache(maxsize=64)
+def _layout(pk: Packing):
+    nw = (pk.bits + 64) // 64
+    width = 8 * nw
+    return _bba.layout(nw, pk.guard.to_bytes(width, "little"), b"".join(u.to_bytes(width, "little") for u in pk.units),
+                       tuple(pk.eshifts), pk.dshift, pk.ebits)
+
+
+def _encode(pk: Packing, terms: dict[Exp, int], p: int) -> tuple[bytes, bytes]:
+    width = 8 * ((pk.bits + 64) // 64)
+    items = sorted(((pk.pack(e), c % p) for e, c in terms.items()), reverse=True)
+    items = [(m, c) for m, c in items if c]
+    return b"".join(m.to_bytes(width, "little") for m, _ in items), array("I", [c for _, c in items]).tobytes()
+
+
+class _Series:
+    """The Hilbert series of the leading monomials found (:class:`.hilbert_driven.Counter`),
+    kept across the primes of one lift: primes of the same shape find the same leading monomials
+    in the same order, so each numerator is computed once."""
+
+    def __init__(self, target: list[int], nvars: int) -> None:
+        self.target, self.nvars = target, nvars
+        self.known: dict[tuple, Counter] = {}
+
+    def start(self) -> tuple:
+        return ()
+
+    def add(self, path: tuple, m: Exp) -> tuple:
+        """The path of leading monomials after ``m`` joined those on ``path``."""
+        new = path + (m,)
+        if new not in self.known:
+            c = Counter(self.target, self.nvars)
+            before = self.known.get(path)
+            if before is not None:
+                c.q, c.gens = before.q, list(before.gens)
+            c.add(m)
+            self.known[new] = c
+        return new
+
+    def missing(self, path: tuple, d: int) -> tuple[int, bool]:
+        c = self.known.get(path)
+        if c is None:
+            c = self.known[path] = Counter(self.target, self.nvars)
+        return c.missing(d)
+
+
+def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyRing, series: _Series, p: int):
+    """The reduced basis modulo ``p`` of the ideal of the homogenized generators ``hpolys``
+    (integer coefficients, none of whose leading coefficients ``p`` divides), dehomogenized when
+    ``hring`` is not ``ring``: (layout of ``ring``'s packing, list of (monomials, coefficients)
+    bytes) by increasing leading monomial."""
+    maxdeg = max(64, 2 * max(sum(e) for t in hpolys for e in t))
+    while True:
+        hpk, pk = packing(hring.order, maxdeg), packing(ring.order, maxdeg)
+        if max(hpk.bits, pk.bits) >= 8 * 64:
+            raise ModularFailure("monomials too wide for the compiled Buchberger")
+        try:
+            st = _bba.state(_layout(hpk), p, [_encode(hpk, t, p) for t in hpolys])
+            path = series.start()
+            unpack = hpk.unpack
+            while True:
+                d = _bba.min_degree(st)
+                if d < 0:
+                    break
+                need, done = series.missing(path, d)
+                if done:
+                    break
+                for lm in _bba.step(st, d, need):
+                    path = series.add(path, unpack(lm))
+            layout = _layout(pk)
+            return layout, _bba.reduced(st, None if hring is ring else layout)
+        except Overflow:
+            maxdeg *= 4
+
+
+def hilbert_modp(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
+    """The reduced Gröbner basis over Z/p (``p < 2^31``) by the compiled Hilbert-driven
+    algorithm, as ``{exponent: nmod}`` dicts by increasing leading monomial."""
+    hring, hgens, target = _homogenized(gens, ring, degree_basis)
+    p = ring.field.characteristic
+    layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in hgens], hring, ring,
+                                  _Series(target, hring.nvars), p)
+    nmod = flint.nmod
+    out = []
+    for ms, cs in basis:
+        out.append(dict(zip(_bba.exponents(layout, ms), [nmod(c, p) for c in array("I", cs)])))
+    return out
+
+
+def _primes(seed: int = 30011):
+    rng = random.Random(seed)
+    seen = set()
+    while True:
+        q = _next_prime(rng.randrange(*PRIMES))
+        if q < PRIMES[1] and q not in seen:
+            seen.add(q)
+            yield q
+
+
+def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
+    """The reduced Gröbner basis over QQ by the compiled Hilbert-driven algorithm modulo primes
+    and a lift (see the module docstring), as ``{exponent: fmpq}`` dicts by increasing leading
+    monomial; :class:`~.modular.ModularFailure` if no verified lift is found."""
+    hring, hgens, target = _homogenized(gens, ring, degree_basis)
+    hints = [primitive(g.terms) for g in hgens]
+    key = hring.order.key
+    leads = [t[max(t, key=key)] for t in hints]
+    stream = _primes()
+    series = _Series(target, hring.nvars)
+    used = 0
+    while used < MAX_PRIMES:
+        shape = lifter = rec = layout = None
+        candidate = None
+        misses = good = 0
+        while used < MAX_PRIMES:
+            p = next(stream)
+            used += 1
+            if any(c % p == 0 for c in leads):
+                continue
+            lay, basis = _reduced_modp(hints, hring, ring, series, p)
+            ms = [m for m, _ in basis]
+            residues = [array("I", c).tolist() for _, c in basis]
+            if shape is None:
+                shape, layout = ms, lay
+                lifter, rec = Lifter(), Reconstructor([len(r) for r in residues])
+                lifter.add(residues, p)
+                candidate = rec.attempt(lifter.values, lifter.m)
+                continue
+            if ms != shape:
+                misses += 1
+                if misses > good + 2:
+                    break  # the first prime was unlucky: start again
+                continue
+            good += 1
+            if not rec.check(residues, p) and candidate is not None:
+                basis_qq = [dict(zip(_bba.exponents(layout, m), cs)) for m, cs in zip(shape, candidate)]
+                if _generators_reduce(basis_qq, gens, ring):
+                    return basis_qq
+                break
+            lifter.add(residues, p)
+            candidate = rec.attempt(lifter.values, lifter.m)
+    raise ModularFailure("compiled Hilbert-driven lift: no verified basis")
+
+
+def _generators_reduce(basis: list[dict[Exp, Any]], gens: Sequence[Poly], ring: PolyRing) -> bool:
+    """Whether every generator top-reduces to 0 by ``basis`` exactly over QQ."""
+    red = ExactReducer(basis, ring.order)
+    return all(red.reduces_to_zero(g.terms) for g in gens)

@@ -1,0 +1,121 @@
+"""The compiled Hilbert-driven Buchberger algorithm (kernel/hilbert_compiled.py, kernel/_bba.c,
+engine ``hilbert-compiled``): modulo p and over QQ by a lift from primes, against Buchberger's
+reduced basis, the Python Hilbert-driven algorithm and Singular."""
+import random
+
+import pytest
+
+from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from mech.kernel import engines as E
+from mech.kernel import hilbert_compiled as HC
+from mech.kernel.buchberger import buchberger, reduce_basis
+from mech.kernel.engines import clear_cache, standard_basis
+from mech.kernel.poly import Poly
+from tests.util import ideal_blocks, parse_poly, run_singular
+
+needs_compiled = pytest.mark.skipif(HC._bba is None, reason="the C extension _bba is not built")
+
+FIVE_BAR = ["c1+c2+c3+c4-2", "s1+s2+s3+s4", "c1^2+s1^2-1", "c2^2+s2^2-1", "c3^2+s3^2-1", "c4^2+s4^2-1",
+            "y1-c1-s1", "y2-c2-s2", "y3-c3-s3"]  # benchmarks/cases.py's five-bar projection
+
+
+def ring_of(field, names, blocks):
+    return PolyRing(field, list(names), MonomialOrder([Block(k, n) for k, n in blocks]))
+
+
+def random_ideal(R, rng, count, degree=3, terms=4):
+    n = R.nvars
+    gens = []
+    for _ in range(count):
+        t = {}
+        for _ in range(terms):
+            e = [0] * n
+            for _ in range(rng.randint(1, degree)):
+                e[rng.randrange(n)] += 1
+            t[tuple(e)] = R.field(rng.randint(-9, 9) or 1)
+        gens.append(Poly(R, t))
+    return gens
+
+
+def reference(gens, R):
+    return reduce_basis(buchberger(gens, R), R)
+
+
+BLOCKS = [(("dp", 2), ("dp", 2)), (("lp", 4),), (("dp", 1), ("lp", 3)), (("dp", 3), ("dp", 1))]
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003), GF(2147483629)])
+@pytest.mark.parametrize("blocks", BLOCKS)
+def test_random_ideals_match_buchberger(field, blocks):
+    rng = random.Random(f"{field}{blocks}")
+    R = ring_of(field, "abcd", blocks)
+    for _ in range(4):
+        gens = random_ideal(R, rng, rng.randint(2, 3))
+        clear_cache()
+        assert [g.terms for g in standard_basis(gens, R, "hilbert-compiled")] == reference(gens, R)
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_each_basis_element_leads_with_its_leading_monomial(field):
+    """``returns_reduced``: every dict starts with its leading term, as the entry point expects."""
+    R = ring_of(field, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    basis = E._hilbert_reduced(gens, R)
+    assert all(next(iter(b)) == max(b, key=R.order.key) for b in basis)
+    assert [R.order.key(next(iter(b))) for b in basis] == sorted(R.order.key(next(iter(b))) for b in basis)
+
+
+@needs_compiled
+def test_five_bar_projection_matches_the_python_hilbert_driven_algorithm():
+    R = ring_of(QQ, ["c1", "s1", "c2", "s2", "c3", "s3", "c4", "s4", "y1", "y2", "y3"], (("dp", 8), ("dp", 3)))
+    gens = [parse_poly(R, t) for t in FIVE_BAR]
+    clear_cache()
+    ours = standard_basis(gens, R, "hilbert-compiled")
+    clear_cache()
+    assert ours == standard_basis(gens, R, "hilbert")
+    assert len(ours) == 35 and sum(len(g.terms) for g in ours) == 8018
+
+
+@needs_compiled
+def test_a_prime_dividing_a_leading_coefficient_is_skipped():
+    """The first prime of the lift divides the leading coefficient: the lift goes on without it."""
+    p = next(HC._primes())
+    R = ring_of(QQ, "xyz", (("dp", 1), ("dp", 2)))
+    gens = [parse_poly(R, f"{p}*x^2-y*z+1"), parse_poly(R, "x*y-z^2"), parse_poly(R, "y^3-x-3")]
+    clear_cache()
+    assert [g.terms for g in standard_basis(gens, R, "hilbert-compiled")] == reference(gens, R)
+
+
+def test_without_the_extension_the_python_algorithm_answers(monkeypatch):
+    R = ring_of(QQ, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    monkeypatch.setattr(HC, "_bba", None)
+    assert not HC.usable(R)
+    clear_cache()
+    G = standard_basis(gens, R, "hilbert-compiled")
+    assert [g.terms for g in G] == reference(gens, R)
+    assert all(g._lm == max(g.terms, key=R.order.key) for g in G)
+
+
+@needs_compiled
+@pytest.mark.singular
+def test_block_and_lex_eliminations_match_singular():
+    gens = ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]
+    orders = [(("dp", 3), ("dp", 2)), (("dp", 1), ("dp", 4)), (("lp", 5),)]
+    script = "option(redSB);\n" + "".join(
+        f"ring r = {p}, (x,y,z,u,v), ({','.join(f'{k}({n})' for k, n in o)}); short = 0; "
+        f"ideal i = {', '.join(gens)}; std(i); kill r;\n" for o in orders for p in (0, 32003))
+    blocks = ideal_blocks(run_singular(script))
+    assert len(blocks) == 2 * len(orders)
+    k = 0
+    for o in orders:
+        for field in (QQ, GF(32003)):
+            R = ring_of(field, "xyzuv", o)
+            clear_cache()
+            ours = standard_basis([parse_poly(R, t) for t in gens], R, "hilbert-compiled")
+            theirs = sorted((p.monic() for p in (parse_poly(R, t) for t in blocks[k]) if not p.is_zero()),
+                            key=lambda p: R.order.key(p.lm()))
+            assert ours == theirs, (o, field)
+            k += 1
