@@ -20,6 +20,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <math.h>
 
 #define MAXW 8
 
@@ -34,6 +35,7 @@ typedef struct {
     Py_ssize_t len;
     uint64_t *m; /* len * nw, decreasing */
     uint32_t *c;
+    uint64_t sev; /* reducers: the variables of the leading monomial (bit j mod 64 for x_j) */
 } Poly;
 
 typedef struct {
@@ -50,8 +52,8 @@ typedef struct {
     Py_ssize_t ngens, nb, capb;
     Pair *pairs;
     Py_ssize_t np, capp;
-    Poly scratch, work;
-    Py_ssize_t capscratch, capwork;
+    Poly work;
+    Py_ssize_t capwork;
 } State;
 
 /* -- monomials ------------------------------------------------------------------------------ */
@@ -127,6 +129,16 @@ static inline void maddmul(uint64_t *out, const uint64_t *unit, uint64_t x, int 
         out[k] = (uint64_t)carry;
         carry >>= 64;
     }
+}
+
+/* the variables of a monomial, bit j mod 64 for x_j: a | b needs sev(a) & ~sev(b) == 0 */
+static uint64_t msev(const Layout *L, const uint64_t *a)
+{
+    uint64_t s = 0;
+    for (int j = 0; j < L->n; j++)
+        if (field(a, L->eshift[j], L->ebits))
+            s |= (uint64_t)1 << (j & 63);
+    return s;
 }
 
 static void mlcm(const Layout *L, uint64_t *out, const uint64_t *a, const uint64_t *b)
@@ -254,126 +266,173 @@ static void poly_monic(Poly *f, uint64_t p)
         f->c[k] = (uint32_t)(f->c[k] * inv % p);
 }
 
-/* out = a[ia..] - ca * (ta * b[ib..]) as a merge (decreasing monomials); ta may be NULL (1).
- * -1 and the Overflow flag when a product leaves the packing. */
-static int merge_sub(State *S, Poly *out, Py_ssize_t *capout, const uint64_t *am, const uint32_t *ac,
-                     Py_ssize_t alen, const uint64_t *ta, uint64_t ca, const Poly *b, Py_ssize_t ib, int *overflow)
+/* A reduction runs on a heap of streams (Monagan-Pearce): each stream is coef * mult * g[pos..],
+ * the heap orders the streams by their current monomial, the largest first.  The polynomial
+ * under reduction is the sum of the streams; a term is summed from the streams at the top, and
+ * a reducible one adds the stream -c * t * r[1..] of its reducer r (monic).  Only the terms
+ * asked for are ever formed: a top reduction stops at the first irreducible term (then the rest
+ * is summed without reduction). */
+typedef struct {
+    const Poly *g;
+    Py_ssize_t pos;
+    uint64_t coef;
+    uint64_t mult[MAXW];
+    uint64_t cur[MAXW];
+} Stream;
+
+typedef struct {
+    uint64_t key; /* the top word of the stream's monomial: most comparisons end there */
+    Py_ssize_t s;
+} Entry;
+
+static Stream *streams;
+static Py_ssize_t nstreams, capstreams;
+static Entry *heap;
+static Py_ssize_t nheap, capheap;
+
+/* the stream's current monomial; -1 when it leaves the packing */
+static int stream_load(const Layout *L, Stream *s)
 {
-    const Layout *L = S->L;
-    const int nw = L->nw;
-    const uint64_t p = S->p, neg = (p - ca % p) % p;
-    if (poly_reserve(out, capout, alen + (b->len - ib), nw) < 0)
-        return -2;
-    Py_ssize_t i = 0, k = ib, o = 0;
-    uint64_t tm[MAXW];
-    int have = 0;
-    while (i < alen || k < b->len) {
-        if (k < b->len && !have) {
-            if (ta) {
-                madd(tm, b->m + (size_t)k * nw, ta, nw);
-                if (mguarded(L, tm)) {
-                    *overflow = 1;
-                    return -1;
-                }
-            } else
-                memcpy(tm, b->m + (size_t)k * nw, 8 * nw);
-            have = 1;
-        }
-        int c = (i >= alen) ? -1 : (!have ? 1 : mcmp(am + (size_t)i * nw, tm, nw));
-        if (c > 0) {
-            memcpy(out->m + (size_t)o * nw, am + (size_t)i * nw, 8 * nw);
-            out->c[o++] = ac[i++];
-        } else if (c < 0) {
-            uint64_t v = neg * b->c[k] % p;
-            if (v) {
-                memcpy(out->m + (size_t)o * nw, tm, 8 * nw);
-                out->c[o++] = (uint32_t)v;
-            }
-            k++;
-            have = 0;
-        } else {
-            uint64_t v = (ac[i] + neg * b->c[k]) % p;
-            if (v) {
-                memcpy(out->m + (size_t)o * nw, tm, 8 * nw);
-                out->c[o++] = (uint32_t)v;
-            }
-            i++;
-            k++;
-            have = 0;
-        }
+    madd(s->cur, s->g->m + (size_t)s->pos * L->nw, s->mult, L->nw);
+    return mguarded(L, s->cur) ? -1 : 0;
+}
+
+static inline int ecmp(const Entry *a, const Entry *b, int nw)
+{
+    if (a->key != b->key)
+        return a->key > b->key ? 1 : -1;
+    return mcmp(streams[a->s].cur, streams[b->s].cur, nw);
+}
+
+static void heap_up(int nw, Py_ssize_t k)
+{
+    Entry x = heap[k];
+    while (k > 0) {
+        Py_ssize_t up = (k - 1) / 2;
+        if (ecmp(&heap[up], &x, nw) >= 0)
+            break;
+        heap[k] = heap[up];
+        k = up;
     }
-    out->len = o;
+    heap[k] = x;
+}
+
+static void heap_down(int nw, Py_ssize_t k)
+{
+    Entry x = heap[k];
+    for (;;) {
+        Py_ssize_t c = 2 * k + 1;
+        if (c >= nheap)
+            break;
+        if (c + 1 < nheap && ecmp(&heap[c + 1], &heap[c], nw) > 0)
+            c++;
+        if (ecmp(&heap[c], &x, nw) <= 0)
+            break;
+        heap[k] = heap[c];
+        k = c;
+    }
+    heap[k] = x;
+}
+
+/* a new stream coef * mult * g[pos..] (mult NULL: 1), pushed if not empty */
+static int stream_push(const Layout *L, const Poly *g, Py_ssize_t pos, uint64_t coef, const uint64_t *mult)
+{
+    if (pos >= g->len)
+        return 0;
+    if (nstreams == capstreams) {
+        Py_ssize_t c = capstreams ? 2 * capstreams : 64;
+        Stream *t = realloc(streams, sizeof(Stream) * c);
+        if (!t)
+            return -2;
+        streams = t;
+        capstreams = c;
+    }
+    if (nheap == capheap) {
+        Py_ssize_t c = capheap ? 2 * capheap : 64;
+        Entry *t = realloc(heap, sizeof(Entry) * c);
+        if (!t)
+            return -2;
+        heap = t;
+        capheap = c;
+    }
+    Stream *s = &streams[nstreams];
+    s->g = g;
+    s->pos = pos;
+    s->coef = coef;
+    if (mult)
+        memcpy(s->mult, mult, 8 * L->nw);
+    else
+        memset(s->mult, 0, 8 * L->nw);
+    if (stream_load(L, s) < 0)
+        return -1;
+    heap[nheap].key = s->cur[L->nw - 1];
+    heap[nheap].s = nstreams++;
+    heap_up(L->nw, nheap++);
     return 0;
 }
 
-static void swap_polys(Poly *a, Py_ssize_t *capa, Poly *b, Py_ssize_t *capb)
-{
-    Poly t = *a;
-    *a = *b;
-    *b = t;
-    Py_ssize_t c = *capa;
-    *capa = *capb;
-    *capb = c;
-}
-
-/* the first reducer (in order) whose leading monomial divides m, or -1 */
+/* the shortest reducer whose leading monomial divides m (the first of equal lengths), or -1 */
 static Py_ssize_t find_reducer(const Layout *L, const Poly *red, Py_ssize_t nred, const uint64_t *m)
 {
+    Py_ssize_t best = -1;
+    const uint64_t not_m = ~msev(L, m);
     for (Py_ssize_t r = 0; r < nred; r++)
-        if (mdivides(L, red[r].m, m))
-            return r;
-    return -1;
+        if (!(red[r].sev & not_m) && (best < 0 || red[r].len < red[best].len) && mdivides(L, red[r].m, m))
+            best = r;
+    return best;
 }
 
-/* S->work := its normal form by the reducers: only the top (full = 0) or every term (full = 1,
- * the irreducible terms collected in S->scratch first, then copied back). */
-static int reduce_work(State *S, const Poly *red, Py_ssize_t nred, int full, int *overflow)
+/* S->work := the sum of the streams pushed, reduced by the reducers: only its top (full = 0)
+ * or every term (full = 1) */
+static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
 {
     const Layout *L = S->L;
     const int nw = L->nw;
-    Poly done = {0, NULL, NULL}, tmp = {0, NULL, NULL};
-    Py_ssize_t capdone = 0, captmp = 0, off = 0;
-    int rc = 0;
-    uint64_t t[MAXW];
-    while (off < S->work.len) {
-        const uint64_t *lead = S->work.m + (size_t)off * nw;
-        Py_ssize_t r = find_reducer(L, red, nred, lead);
-        if (r < 0) {
-            if (!full)
-                break;
-            if (poly_reserve(&done, &capdone, done.len + 1, nw) < 0) {
-                rc = -2;
-                break;
+    const uint64_t p = S->p;
+    uint64_t m[MAXW], t[MAXW];
+    int reducing = 1, rc = 0;
+    S->work.len = 0;
+    while (nheap > 0) {
+        memcpy(m, streams[heap[0].s].cur, 8 * nw);
+        uint64_t c = 0;
+        while (nheap > 0 && heap[0].key == m[nw - 1] && mcmp(streams[heap[0].s].cur, m, nw) == 0) {
+            Stream *s = &streams[heap[0].s];
+            c = (c + s->coef * s->g->c[s->pos]) % p;
+            if (++s->pos < s->g->len) {
+                if (stream_load(L, s) < 0)
+                    return -1;
+                heap[0].key = s->cur[nw - 1];
+                heap_down(nw, 0);
+            } else {
+                heap[0] = heap[--nheap];
+                if (nheap)
+                    heap_down(nw, 0);
             }
-            memcpy(done.m + (size_t)done.len * nw, lead, 8 * nw);
-            done.c[done.len++] = S->work.c[off++];
+        }
+        if (!c)
             continue;
+        if (reducing) {
+            Py_ssize_t r = find_reducer(L, red, nred, m);
+            if (r >= 0) {
+                msub(t, m, red[r].m, nw);
+                rc = stream_push(L, &red[r], 1, p - c, t);
+                if (rc < 0)
+                    return rc;
+                continue;
+            }
+            reducing = full;
         }
-        msub(t, lead, red[r].m, nw);
-        uint64_t c = S->work.c[off];
-        rc = merge_sub(S, &tmp, &captmp, S->work.m + (size_t)(off + 1) * nw, S->work.c + off + 1,
-                       S->work.len - off - 1, t, c, &red[r], 1, overflow);
-        if (rc < 0)
-            break;
-        swap_polys(&S->work, &S->capwork, &tmp, &captmp);
-        off = 0;
+        if (poly_reserve(&S->work, &S->capwork, S->work.len + 1, nw) < 0)
+            return -2;
+        memcpy(S->work.m + (size_t)S->work.len * nw, m, 8 * nw);
+        S->work.c[S->work.len++] = (uint32_t)c;
     }
-    if (rc == 0) {
-        Py_ssize_t rest = S->work.len - off;
-        if (poly_reserve(&done, &capdone, done.len + rest, nw) < 0)
-            rc = -2;
-        else {
-            memcpy(done.m + (size_t)done.len * nw, S->work.m + (size_t)off * nw, 8 * nw * rest);
-            memcpy(done.c + done.len, S->work.c + off, 4 * rest);
-            done.len += rest;
-            swap_polys(&S->work, &S->capwork, &done, &capdone);
-        }
-    }
-    free(done.m);
-    free(done.c);
-    free(tmp.m);
-    free(tmp.c);
-    return rc;
+    return 0;
+}
+
+static void heap_clear(void)
+{
+    nheap = nstreams = 0;
 }
 
 /* -- states --------------------------------------------------------------------------------- */
@@ -394,8 +453,6 @@ static void state_free(PyObject *cap)
     free(S->basis);
     free(S->active);
     free(S->pairs);
-    free(S->scratch.m);
-    free(S->scratch.c);
     free(S->work.m);
     free(S->work.c);
     Py_XDECREF(S->layout);
@@ -585,6 +642,7 @@ static int add_basis(State *S)
     poly_monic(&S->work, S->p);
     if (poly_copy(&S->basis[S->nb], S->work.m, S->work.c, S->work.len, S->L->nw) < 0)
         return -2;
+    S->basis[S->nb].sev = msev(S->L, S->work.m);
     S->active[S->nb++] = 1;
     return pair_update(S);
 }
@@ -632,37 +690,19 @@ static int pair_cmp(const void *x, const void *y)
     return (a->j > b->j) - (a->j < b->j);
 }
 
-/* the S-polynomial of pair a into S->work */
-static int spoly(State *S, const Pair *a, int *overflow)
+/* the S-polynomial of pair a as streams */
+static int spoly_streams(State *S, const Pair *a)
 {
     const Layout *L = S->L;
-    const int nw = L->nw;
-    if (a->j < 0) {
-        const Poly *g = &S->gens[a->i];
-        if (poly_reserve(&S->work, &S->capwork, g->len, nw) < 0)
-            return -2;
-        memcpy(S->work.m, g->m, 8 * nw * g->len);
-        memcpy(S->work.c, g->c, 4 * g->len);
-        S->work.len = g->len;
-        return 0;
-    }
+    heap_clear();
+    if (a->j < 0)
+        return stream_push(L, &S->gens[a->i], 0, 1, NULL);
     const Poly *f = &S->basis[a->i], *g = &S->basis[a->j];
     uint64_t tf[MAXW], tg[MAXW];
-    msub(tf, a->lcm, f->m, nw);
-    msub(tg, a->lcm, g->m, nw);
-    /* t_f * f[1..] into scratch, then minus t_g * g[1..] */
-    if (poly_reserve(&S->scratch, &S->capscratch, f->len, nw) < 0)
-        return -2;
-    for (Py_ssize_t k = 1; k < f->len; k++) {
-        madd(S->scratch.m + (size_t)(k - 1) * nw, f->m + (size_t)k * nw, tf, nw);
-        if (mguarded(L, S->scratch.m + (size_t)(k - 1) * nw)) {
-            *overflow = 1;
-            return -1;
-        }
-        S->scratch.c[k - 1] = f->c[k];
-    }
-    S->scratch.len = f->len - 1;
-    return merge_sub(S, &S->work, &S->capwork, S->scratch.m, S->scratch.c, S->scratch.len, tg, 1, g, 1, overflow);
+    msub(tf, a->lcm, f->m, L->nw);
+    msub(tg, a->lcm, g->m, L->nw);
+    int rc = stream_push(L, f, 1, 1, tf);
+    return rc ? rc : stream_push(L, g, 1, S->p - 1, tg);
 }
 
 static PyObject *lm_int(const Layout *L, const uint64_t *m)
@@ -701,11 +741,11 @@ static PyObject *bba_step(PyObject *self, PyObject *args)
     nw_sort = L->nw;
     qsort(sel, nsel, sizeof(Pair), pair_cmp);
     PyObject *out = PyList_New(0);
-    int overflow = 0, rc = 0;
+    int rc = 0;
     for (Py_ssize_t q = 0; q < nsel && need > 0 && out; q++) {
-        rc = spoly(S, &sel[q], &overflow);
+        rc = spoly_streams(S, &sel[q]);
         if (rc == 0)
-            rc = reduce_work(S, S->basis, S->nb, 0, &overflow);
+            rc = heap_reduce(S, S->basis, S->nb, 1);
         if (rc < 0)
             break;
         if (S->work.len == 0)
@@ -780,7 +820,7 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
         free(keep);
         return PyErr_NoMemory();
     }
-    int rc = 0, overflow = 0;
+    int rc = 0;
     Py_ssize_t m = 0, nd = 0;
     for (Py_ssize_t k = 0; k < S->nb && rc == 0; k++) {
         if (!S->active[k])
@@ -828,14 +868,10 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
         S->L = (Layout *)B;
         for (Py_ssize_t a = 0; a < m && rc == 0; a++) {
             Poly *g = &polys[a];
-            if (poly_reserve(&S->work, &S->capwork, g->len - 1, nw) < 0) {
-                rc = -2;
-                break;
-            }
-            memcpy(S->work.m, g->m + nw, 8 * nw * (g->len - 1));
-            memcpy(S->work.c, g->c + 1, 4 * (g->len - 1));
-            S->work.len = g->len - 1;
-            rc = reduce_work(S, done, nd, 1, &overflow);
+            heap_clear();
+            rc = stream_push(B, g, 1, 1, NULL);
+            if (rc == 0)
+                rc = heap_reduce(S, done, nd, 1);
             if (rc < 0)
                 break;
             Poly *r = &done[nd];
@@ -853,6 +889,7 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
             memcpy(r->m + nw, S->work.m, 8 * nw * S->work.len);
             memcpy(r->c + 1, S->work.c, 4 * S->work.len);
             poly_monic(r, S->p);
+            r->sev = msev(B, r->m);
             nd++;
         }
         S->L = saved;
@@ -918,7 +955,167 @@ static PyObject *bba_exponents(PyObject *self, PyObject *args)
     return out;
 }
 
+/* -- the lift to QQ -------------------------------------------------------------------------- */
+typedef unsigned __int128 u128;
+typedef __int128 i128;
+
+static u128 isqrt128(u128 x)
+{
+    u128 r = (u128)sqrtl((long double)x);
+    while (r * r > x)
+        r--;
+    while ((r + 1) * (r + 1) <= x)
+        r++;
+    return r;
+}
+
+static int64_t gcd64(int64_t a, int64_t b)
+{
+    if (a < 0)
+        a = -a;
+    while (b) {
+        int64_t t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* n/d with n = a d mod M, |n| <= B, 0 < d <= B, gcd(n, d) = 1 (Wang); 0 when none */
+static int ratrec128(u128 a, u128 M, u128 B, int64_t *n, int64_t *d)
+{
+    i128 r0 = (i128)M, r1 = (i128)a, s0 = 0, s1 = 1;
+    while (r1 > (i128)B) {
+        i128 q = r0 / r1, t;
+        t = r0 - q * r1;
+        r0 = r1;
+        r1 = t;
+        t = s0 - q * s1;
+        s0 = s1;
+        s1 = t;
+    }
+    i128 as1 = s1 < 0 ? -s1 : s1;
+    if (s1 == 0 || as1 > (i128)B || gcd64((int64_t)r1, (int64_t)as1) != 1)
+        return 0;
+    *n = (int64_t)(s1 > 0 ? r1 : -r1);
+    *d = (int64_t)as1;
+    return 1;
+}
+
+/* ratlift(residues: list of bytes (uint32 per coefficient, one per prime), primes: list, check:
+ * bytes, q): the rationals n/d (|n|, d <= sqrt(M/2), M the product of the primes, at most 4 below
+ * 2^31) with n = r d mod each prime, as (numerators, denominators), if every coefficient has one
+ * and they agree with the residues `check` modulo q; else None.  A running common denominator
+ * makes most coefficients one product per prime. */
+static PyObject *bba_ratlift(PyObject *self, PyObject *args)
+{
+    PyObject *res, *primes;
+    Py_buffer check;
+    unsigned long long q;
+    if (!PyArg_ParseTuple(args, "O!O!y*K", &PyList_Type, &res, &PyList_Type, &primes, &check, &q))
+        return NULL;
+    Py_ssize_t k = PyList_GET_SIZE(primes), N = check.len / 4;
+    PyObject *out = NULL;
+    Py_buffer bufs[4];
+    int nbuf = 0;
+    uint64_t p[4];
+    if (k < 1 || k > 4 || PyList_GET_SIZE(res) != k) {
+        PyErr_SetString(PyExc_ValueError, "ratlift: one to four primes");
+        goto done;
+    }
+    for (Py_ssize_t j = 0; j < k; j++) {
+        p[j] = PyLong_AsUnsignedLongLong(PyList_GET_ITEM(primes, j));
+        if (PyObject_GetBuffer(PyList_GET_ITEM(res, j), &bufs[j], PyBUF_SIMPLE) < 0)
+            goto done;
+        nbuf++;
+        if (bufs[j].len != check.len || p[j] >= (1ULL << 31) || p[j] < 2) {
+            PyErr_SetString(PyExc_ValueError, "ratlift: bad residues");
+            goto done;
+        }
+    }
+    /* Garner: x = sum t_j P_j with P_j the product of the primes before j */
+    u128 P[5];
+    uint64_t inv[4];
+    P[0] = 1;
+    for (Py_ssize_t j = 0; j < k; j++) {
+        P[j + 1] = P[j] * p[j];
+        inv[j] = j ? inv_mod((uint64_t)(P[j] % p[j]), p[j]) : 1;
+    }
+    const u128 M = P[k], half = M / 2, B = isqrt128(M / 2);
+    const uint32_t *r[4];
+    for (Py_ssize_t j = 0; j < k; j++)
+        r[j] = bufs[j].buf;
+    const uint32_t *cq = check.buf;
+    PyObject *nums = PyList_New(N), *dens = PyList_New(N);
+    if (!nums || !dens) {
+        Py_XDECREF(nums);
+        Py_XDECREF(dens);
+        goto done;
+    }
+    int64_t den = 1;
+    int ok = 1;
+    for (Py_ssize_t i = 0; i < N && ok; i++) {
+        /* b = r * den mod M, symmetric */
+        u128 x = 0;
+        for (Py_ssize_t j = 0; j < k; j++) {
+            uint64_t v = (uint64_t)r[j][i] * ((uint64_t)den % p[j]) % p[j];
+            uint64_t xm = (uint64_t)(x % p[j]);
+            uint64_t t = (v + p[j] - xm) % p[j] * inv[j] % p[j];
+            x += (u128)t * P[j];
+        }
+        int64_t n, d;
+        if (x <= B) {
+            n = (int64_t)x;
+            d = den;
+        } else if (x >= M - B && x > half) {
+            n = -(int64_t)(M - x);
+            d = den;
+        } else {
+            u128 a = 0;
+            for (Py_ssize_t j = 0; j < k; j++) {
+                uint64_t xm = (uint64_t)(a % p[j]);
+                uint64_t t = ((uint64_t)r[j][i] + p[j] - xm) % p[j] * inv[j] % p[j];
+                a += (u128)t * P[j];
+            }
+            if (!ratrec128(a, M, B, &n, &d)) {
+                ok = 0;
+                break;
+            }
+            int64_t g = gcd64(den, d);
+            u128 l = (u128)(den / g) * (u128)d;
+            den = l > B ? d : (int64_t)l;
+        }
+        /* n / d modulo q against the check residue */
+        uint64_t dq = (uint64_t)d % q;
+        if (dq == 0) {
+            ok = 0;
+            break;
+        }
+        uint64_t nq = (uint64_t)(n % (int64_t)q + (int64_t)q) % q;
+        if (nq * inv_mod(dq, q) % q != cq[i]) {
+            ok = 0;
+            break;
+        }
+        PyList_SET_ITEM(nums, i, PyLong_FromLongLong(n));
+        PyList_SET_ITEM(dens, i, PyLong_FromLongLong(d));
+    }
+    if (ok)
+        out = Py_BuildValue("(NN)", nums, dens);
+    else {
+        Py_DECREF(nums);
+        Py_DECREF(dens);
+        out = Py_None;
+        Py_INCREF(out);
+    }
+done:
+    for (int j = 0; j < nbuf; j++)
+        PyBuffer_Release(&bufs[j]);
+    PyBuffer_Release(&check);
+    return out;
+}
+
 static PyMethodDef methods[] = {
+    {"ratlift", bba_ratlift, METH_VARARGS, "ratlift(residues, primes, check, q): the lift to QQ, checked mod q."},
     {"layout", bba_layout, METH_VARARGS, "layout(nw, guard, units, eshifts, dshift, ebits): packed monomials."},
     {"state", bba_state, METH_VARARGS, "state(layout, p, gens): generators waiting, no basis yet."},
     {"min_degree", bba_min_degree, METH_VARARGS, "min_degree(st): least degree of a pair, -1 if none."},

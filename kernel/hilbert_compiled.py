@@ -38,7 +38,7 @@ from .hilbert_driven import Basis, Counter, _homogenized
 from .modular import ExactReducer, Lifter, ModularFailure, Reconstructor, _next_prime, primitive
 from .monomials import Packing, packing
 from .order import Exp
-from .poly import Poly, PolyRing
+from .poly import Poly, PolyRing, support_mask
 
 try:
     from . import _bba
@@ -78,32 +78,28 @@ def _encode(pk: Packing, terms: dict[Exp, int], p: int) -> tuple[bytes, bytes]:
 class _Series:
     """The Hilbert series of the leading monomials found (:class:`.hilbert_driven.Counter`),
     kept across the primes of one lift: primes of the same shape find the same leading monomials
-    in the same order, so each numerator is computed once."""
+    in the same order, so each numerator is computed once.  A state is a node of the tree of
+    sequences of leading monomials met so far (0: none)."""
 
     def __init__(self, target: list[int], nvars: int) -> None:
-        self.target, self.nvars = target, nvars
-        self.known: dict[tuple, Counter] = {}
+        self.counters = [Counter(target, nvars)]
+        self.children: list[dict[Exp, int]] = [{}]
 
-    def start(self) -> tuple:
-        return ()
-
-    def add(self, path: tuple, m: Exp) -> tuple:
-        """The path of leading monomials after ``m`` joined those on ``path``."""
-        new = path + (m,)
-        if new not in self.known:
-            c = Counter(self.target, self.nvars)
-            before = self.known.get(path)
-            if before is not None:
-                c.q, c.gens = before.q, list(before.gens)
+    def add(self, node: int, m: Exp) -> int:
+        """The node after ``m`` joined the leading monomials of ``node``."""
+        child = self.children[node].get(m)
+        if child is None:
+            before = self.counters[node]
+            c = Counter(before.target, before.n)
+            c.q, c.gens = before.q, list(before.gens)
             c.add(m)
-            self.known[new] = c
-        return new
+            child = self.children[node][m] = len(self.counters)
+            self.counters.append(c)
+            self.children.append({})
+        return child
 
-    def missing(self, path: tuple, d: int) -> tuple[int, bool]:
-        c = self.known.get(path)
-        if c is None:
-            c = self.known[path] = Counter(self.target, self.nvars)
-        return c.missing(d)
+    def missing(self, node: int, d: int) -> tuple[int, bool]:
+        return self.counters[node].missing(d)
 
 
 def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyRing, series: _Series, p: int):
@@ -118,7 +114,7 @@ def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyR
             raise ModularFailure("monomials too wide for the compiled Buchberger")
         try:
             st = _bba.state(_layout(hpk), p, [_encode(hpk, t, p) for t in hpolys])
-            path = series.start()
+            path = 0
             unpack = hpk.unpack
             while True:
                 d = _bba.min_degree(st)
@@ -171,8 +167,8 @@ def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> lis
     series = _Series(target, hring.nvars)
     used = 0
     while used < MAX_PRIMES:
-        shape = lifter = rec = layout = None
-        candidate = None
+        shape = layout = None
+        lift = _Lift()
         misses = good = 0
         while used < MAX_PRIMES:
             p = next(stream)
@@ -181,30 +177,86 @@ def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> lis
                 continue
             lay, basis = _reduced_modp(hints, hring, ring, series, p)
             ms = [m for m, _ in basis]
-            residues = [array("I", c).tolist() for _, c in basis]
+            flat = b"".join(c for _, c in basis)
             if shape is None:
                 shape, layout = ms, lay
-                lifter, rec = Lifter(), Reconstructor([len(r) for r in residues])
-                lifter.add(residues, p)
-                candidate = rec.attempt(lifter.values, lifter.m)
-                continue
-            if ms != shape:
+                sizes = [len(c) // 4 for _, c in basis]
+            elif ms != shape:
                 misses += 1
                 if misses > good + 2:
                     break  # the first prime was unlucky: start again
                 continue
-            good += 1
-            if not rec.check(residues, p) and candidate is not None:
-                basis_qq = [dict(zip(_bba.exponents(layout, m), cs)) for m, cs in zip(shape, candidate)]
-                if _generators_reduce(basis_qq, gens, ring):
-                    return basis_qq
-                break
-            lifter.add(residues, p)
-            candidate = rec.attempt(lifter.values, lifter.m)
+            else:
+                good += 1
+                coefs = lift.checked(flat, p)
+                if coefs is not None:
+                    out, k = [], 0
+                    for m, size in zip(shape, sizes):
+                        out.append(dict(zip(_bba.exponents(layout, m), coefs[k:k + size])))
+                        k += size
+                    if _generators_reduce(out, gens, ring):
+                        return out
+                    break
+            lift.add(flat, p)
     raise ModularFailure("compiled Hilbert-driven lift: no verified basis")
 
 
+class _Lift:
+    """Residues of the coefficients (one flat uint32 array per prime) lifted to QQ: in C while
+    the product of the primes fits 124 bits (four primes), then by :class:`.modular.Lifter` and
+    :class:`.modular.Reconstructor`."""
+
+    def __init__(self) -> None:
+        self.residues: list[bytes] = []
+        self.primes: list[int] = []
+        self.lifter: Lifter | None = None
+        self.rec: Reconstructor | None = None
+        self.candidate: list | None = None
+
+    def add(self, flat: bytes, p: int) -> None:
+        self.residues.append(flat)
+        self.primes.append(p)
+        if len(self.primes) > 4:
+            if self.lifter is None:
+                self.lifter, self.rec = Lifter(), Reconstructor([len(flat) // 4])
+                for r, q in zip(self.residues, self.primes):
+                    self.lifter.add([array("I", r).tolist()], q)
+            else:
+                self.lifter.add([array("I", flat).tolist()], p)
+            self.candidate = self.rec.attempt(self.lifter.values, self.lifter.m)
+
+    def checked(self, flat: bytes, q: int) -> list | None:
+        """The lift from the primes so far if it agrees with the residues modulo ``q``, else None."""
+        if not self.primes:
+            return None
+        if self.lifter is None:
+            lifted = _bba.ratlift(self.residues, self.primes, flat, q)
+            return None if lifted is None else list(map(flint.fmpq, *lifted))
+        if not self.rec.check([array("I", flat).tolist()], q) and self.candidate is not None:
+            return self.candidate[0]
+        return None
+
+
 def _generators_reduce(basis: list[dict[Exp, Any]], gens: Sequence[Poly], ring: PolyRing) -> bool:
-    """Whether every generator top-reduces to 0 by ``basis`` exactly over QQ."""
-    red = ExactReducer(basis, ring.order)
+    """Whether every generator top-reduces to 0 by ``basis`` (leading exponent first in each
+    dict) exactly over QQ: :class:`~.modular.ExactReducer` with each element's image formed
+    when it first serves as a reducer (the generators' reductions use few of them)."""
+    red = ExactReducer([], ring.order)
+    red.polys = _Images(red, basis)
+    red.lms = [next(iter(b)) for b in basis]
+    red.masks = [support_mask(e) for e in red.lms]
     return all(red.reduces_to_zero(g.terms) for g in gens)
+
+
+class _Images:
+    """The images of the basis elements in the reducer's ring, formed when first asked for."""
+
+    def __init__(self, red: ExactReducer, basis: list[dict[Exp, Any]]) -> None:
+        self.red, self.basis = red, basis
+        self.known: dict[int, Any] = {}
+
+    def __getitem__(self, k: int):
+        f = self.known.get(k)
+        if f is None:
+            f = self.known[k] = self.red.image(self.basis[k])
+        return f
