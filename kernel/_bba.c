@@ -1114,7 +1114,214 @@ done:
     return out;
 }
 
+/* -- Hilbert series numerators -------------------------------------------------------------- */
+/* Q(t) of K[x]/M for a monomial ideal M (kernel/hilbert.py's _numerator, the same pivot
+ * recursion): exponents as rows of n uint16, series as int64 with overflow checks. */
+typedef struct {
+    int64_t *c;
+    int len;
+} Series;
+
+static int series_set(Series *s, int len)
+{
+    s->c = calloc(len, sizeof(int64_t));
+    s->len = len;
+    return s->c ? 0 : -2;
+}
+
+/* the minimal generators of the k rows (in place), their number */
+static int minimal_rows(uint16_t *g, int k, int n)
+{
+    char *keep = malloc(k ? k : 1);
+    if (!keep)
+        return -2;
+    for (int a = 0; a < k; a++) {
+        keep[a] = 1;
+        for (int b = 0; b < k && keep[a]; b++) {
+            if (b == a)
+                continue;
+            int div = 1, eq = 1;
+            for (int j = 0; j < n && div; j++) {
+                if (g[b * n + j] > g[a * n + j])
+                    div = 0;
+                if (g[b * n + j] != g[a * n + j])
+                    eq = 0;
+            }
+            if (div && (!eq || b < a))
+                keep[a] = 0;
+        }
+    }
+    int o = 0;
+    for (int a = 0; a < k; a++)
+        if (keep[a]) {
+            if (o != a)
+                memmove(g + o * n, g + a * n, 2 * n);
+            o++;
+        }
+    free(keep);
+    return o;
+}
+
+static int cmp_u16(const void *a, const void *b)
+{
+    return (int)*(const uint16_t *)a - (int)*(const uint16_t *)b;
+}
+
+/* Q of the ideal of the k minimal rows g (consumed); -1 overflow, -2 memory */
+static int numerator(uint16_t *g, int k, int n, Series *out)
+{
+    if (k == 0) {
+        if (series_set(out, 1) < 0)
+            return -2;
+        out->c[0] = 1;
+        return 0;
+    }
+    int total = 0;
+    for (int a = 0; a < k; a++) {
+        int d = 0;
+        for (int j = 0; j < n; j++)
+            d += g[a * n + j];
+        if (d == 0) {
+            if (series_set(out, 1) < 0)
+                return -2;
+            return 0;
+        }
+        total += d;
+    }
+    int best = 0, bestc = -1;
+    for (int j = 0; j < n; j++) {
+        int c = 0;
+        for (int a = 0; a < k; a++)
+            c += g[a * n + j] != 0;
+        if (c > bestc) {
+            bestc = c;
+            best = j;
+        }
+    }
+    if (bestc <= 1) { /* pairwise coprime: prod (1 - t^deg) */
+        if (series_set(out, total + 1) < 0)
+            return -2;
+        out->c[0] = 1;
+        int len = 1;
+        for (int a = 0; a < k; a++) {
+            int d = 0;
+            for (int j = 0; j < n; j++)
+                d += g[a * n + j];
+            for (int t = len - 1; t >= 0; t--)
+                if (__builtin_sub_overflow(out->c[t + d], out->c[t], &out->c[t + d]))
+                    return -1;
+            len += d;
+        }
+        return 0;
+    }
+    uint16_t *ex = malloc(2 * k);
+    uint16_t *plus = malloc(2 * n * (k + 1)), *colon = malloc(2 * n * (k ? k : 1));
+    if (!ex || !plus || !colon) {
+        free(ex);
+        free(plus);
+        free(colon);
+        return -2;
+    }
+    int ne = 0;
+    for (int a = 0; a < k; a++)
+        if (g[a * n + best])
+            ex[ne++] = g[a * n + best];
+    qsort(ex, ne, 2, cmp_u16);
+    int e = ex[(ne - 1) / 2];
+    free(ex);
+    int kp = 0;
+    for (int a = 0; a < k; a++)
+        if (g[a * n + best] < e)
+            memcpy(plus + (kp++) * n, g + a * n, 2 * n);
+    memset(plus + kp * n, 0, 2 * n);
+    plus[kp * n + best] = (uint16_t)e;
+    kp++;
+    for (int a = 0; a < k; a++) {
+        memcpy(colon + a * n, g + a * n, 2 * n);
+        colon[a * n + best] = g[a * n + best] > e ? g[a * n + best] - e : 0;
+    }
+    int rc = 0;
+    Series A = {NULL, 0}, B = {NULL, 0};
+    kp = minimal_rows(plus, kp, n);
+    int kc = minimal_rows(colon, k, n);
+    if (kp < 0 || kc < 0)
+        rc = -2;
+    if (rc == 0)
+        rc = numerator(plus, kp, n, &A);
+    if (rc == 0)
+        rc = numerator(colon, kc, n, &B);
+    free(plus);
+    free(colon);
+    if (rc == 0) {
+        int len = A.len > B.len + e ? A.len : B.len + e;
+        if (series_set(out, len) < 0)
+            rc = -2;
+        else {
+            for (int t = 0; t < A.len; t++)
+                out->c[t] = A.c[t];
+            for (int t = 0; t < B.len && rc == 0; t++)
+                if (__builtin_add_overflow(out->c[t + e], B.c[t], &out->c[t + e]))
+                    rc = -1;
+        }
+    }
+    free(A.c);
+    free(B.c);
+    return rc;
+}
+
+/* hilbert_numerator(monomials, n): Q(t) of K[x]/M as a list (trailing zeros dropped, [0] for the
+ * unit ideal); OverflowError when a coefficient leaves 64 bits or an exponent 16 bits */
+static PyObject *bba_hilbert_numerator(PyObject *self, PyObject *args)
+{
+    PyObject *mons;
+    int n;
+    if (!PyArg_ParseTuple(args, "O!i", &PyList_Type, &mons, &n))
+        return NULL;
+    int k = (int)PyList_GET_SIZE(mons);
+    uint16_t *g = malloc(2 * (size_t)n * (k ? k : 1));
+    if (!g)
+        return PyErr_NoMemory();
+    for (int a = 0; a < k; a++) {
+        PyObject *t = PyList_GET_ITEM(mons, a);
+        if (!PyTuple_Check(t) || PyTuple_GET_SIZE(t) != n) {
+            free(g);
+            PyErr_SetString(PyExc_ValueError, "hilbert_numerator: tuples of n exponents");
+            return NULL;
+        }
+        for (int j = 0; j < n; j++) {
+            long v = PyLong_AsLong(PyTuple_GET_ITEM(t, j));
+            if (v < 0 || v > 65535) {
+                free(g);
+                if (!PyErr_Occurred())
+                    PyErr_SetString(PyExc_OverflowError, "hilbert_numerator: exponent beyond 16 bits");
+                return NULL;
+            }
+            g[a * n + j] = (uint16_t)v;
+        }
+    }
+    Series out = {NULL, 0};
+    int kk = minimal_rows(g, k, n);
+    int rc = kk < 0 ? -2 : numerator(g, kk, n, &out);
+    free(g);
+    if (rc == -1) {
+        free(out.c);
+        PyErr_SetString(PyExc_OverflowError, "hilbert_numerator: a coefficient beyond 64 bits");
+        return NULL;
+    }
+    if (rc < 0)
+        return PyErr_NoMemory();
+    int len = out.len;
+    while (len > 1 && out.c[len - 1] == 0)
+        len--;
+    PyObject *res = PyList_New(len);
+    for (int t = 0; t < len && res; t++)
+        PyList_SET_ITEM(res, t, PyLong_FromLongLong(out.c[t]));
+    free(out.c);
+    return res;
+}
+
 static PyMethodDef methods[] = {
+    {"hilbert_numerator", bba_hilbert_numerator, METH_VARARGS, "hilbert_numerator(monomials, n): Q(t)."},
     {"ratlift", bba_ratlift, METH_VARARGS, "ratlift(residues, primes, check, q): the lift to QQ, checked mod q."},
     {"layout", bba_layout, METH_VARARGS, "layout(nw, guard, units, eshifts, dshift, ebits): packed monomials."},
     {"state", bba_state, METH_VARARGS, "state(layout, p, gens): generators waiting, no basis yet."},

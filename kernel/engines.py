@@ -45,7 +45,7 @@ from .errors import EngineError
 from .f4 import f4_modp, reduce_modp
 from .flint_reduce import FLINT_TERMS, reduce_basis_qq
 from .fglm import NotZeroDimensional, fglm_qq, fglm_zp, staircase
-from .hilbert_compiled import hilbert_modp, hilbert_qq, usable as compiled_hilbert
+from .hilbert_compiled import buchberger_modp, buchberger_qq, hilbert_modp, hilbert_qq, usable as compiled_hilbert
 from .hilbert_driven import degree_leads, hilbert_driven, hilbert_f4
 from .lazard import lazard
 from .local_policy import auto_local
@@ -69,13 +69,16 @@ QQ to Buchberger, whose smaller overhead wins there (measured on random systems 
 variables: the crossover is near 1000)."""
 
 
-SMALL_BUCHBERGER = 5000
-"""For block and lexicographic orderings ``auto`` first tries Buchberger within this budget
-(terms of reducers used; about 12 ms): the mechanisms' many small eliminations finish there
-(the four-bar coupler curve in 7 ms).  Larger computations go to FGLM (zero-dimensional
-ideals) or the Hilbert-driven algorithm.  Measured on benchmarks/cases.py: a budget of 20000
-wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and katsura-5 in (dp(3),dp(3)) before
-FGLM (1.3-3x slower); 2000 sent the four-bar curve to the Hilbert-driven algorithm (5x slower)."""
+SMALL_BUCHBERGER = 3000
+"""For block and lexicographic orderings over QQ ``auto`` first tries Buchberger within this
+budget (terms of reducers used; about 2.5 ms): the mechanisms' many small eliminations finish
+there.  Larger computations go to FGLM (zero-dimensional ideals) or the Hilbert-driven
+algorithm, compiled and lifted from primes (over Z/p it goes first: faster than the attempt
+even on the four-bar coupler curve, 0.8 against 2.5 ms).  Measured on benchmarks/cases.py
+(session 13): the four-bar curve finishes within 3000 (2.5 ms; the compiled path 3.8 ms) and
+the budget's failure costs 2.4 ms on the block (dp(3),dp(2)) and the five-bar projection
+(5000: 4 ms).  Earlier: 20000 wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and
+katsura-5 in (dp(3),dp(3)) before FGLM."""
 
 
 F4_BUDGET = 4_000_000
@@ -305,14 +308,18 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
         first = lex or kind == "Z/p" or len(gens) >= ring.nvars
         if basis is None and first:
             basis = _degree_basis(gens, ring)
+        # over Z/p the compiled Hilbert-driven algorithm beats the attempt even on small systems
+        attempt = not (kind == "Z/p" and compiled_hilbert(ring))
         if basis is None or first and not _zero_dimensional(basis):
             try:
+                if not attempt:
+                    raise TooLong
                 return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
             except TooLong:
                 # positive-dimensional ideals need the dp basis of the homogenized generators (the
                 # Hilbert series), which tells the dimension too: the ideal's own dp basis is
                 # computed only for FGLM
-                if basis is None and _finite_quotient(degree_leads(gens, ring, _dp_auto), ring.nvars):
+                if basis is None and _finite_quotient(degree_leads(gens, ring, _dp_homogeneous), ring.nvars):
                     basis = _degree_basis(gens, ring)
         try:
             if basis is None:
@@ -372,6 +379,30 @@ def _dp_auto(gens: list[Poly], ring: PolyRing) -> list[Poly]:
     return standard_basis(gens, ring, AUTO)
 
 
+def _dp_homogeneous(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    """The ``dp`` basis of homogenized generators the Hilbert-driven algorithms start from: by
+    the compiled Buchberger where it is built (F4's matrices cost more on these small homogeneous
+    systems), else by ``auto``."""
+    return standard_basis(gens, ring, "buchberger-compiled" if compiled_hilbert(ring) else AUTO)
+
+
+def _buchberger_compiled(gens: list[Poly], ring: PolyRing) -> list[Terms]:
+    """The reduced basis by Buchberger's algorithm in C modulo p, over QQ lifted from primes
+    (:mod:`.hilbert_compiled`), else (or when the lift fails) in Python."""
+    if compiled_hilbert(ring):
+        try:
+            if isinstance(ring.field, PrimeField):
+                return buchberger_modp(gens, ring)
+            return buchberger_qq(gens, ring)
+        except ModularFailure:
+            pass
+    return _lead_first(_finish(buchberger(gens, ring), ring, False))
+
+
+def _lead_first(basis: list[Poly]) -> list[Terms]:
+    return [{p.lm(): p.terms[p.lm()], **p.terms} for p in basis]
+
+
 def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
     """The engine ``fglm``: a ``dp`` basis by ``auto``, converted by FGLM."""
     return _convert(_degree_basis(gens, ring), ring)
@@ -383,11 +414,11 @@ def _hilbert_reduced(gens: list[Poly], ring: PolyRing) -> list[Terms]:
     if compiled_hilbert(ring):
         try:
             if isinstance(ring.field, PrimeField):
-                return hilbert_modp(gens, ring, _dp_auto)
-            return hilbert_qq(gens, ring, _dp_auto)
+                return hilbert_modp(gens, ring, _dp_homogeneous)
+            return hilbert_qq(gens, ring, _dp_homogeneous)
         except ModularFailure:
             pass
-    return [{p.lm(): p.terms[p.lm()], **p.terms} for p in _finish(hilbert_driven(gens, ring, _dp_auto), ring, False)]
+    return _lead_first(_finish(hilbert_driven(gens, ring, _dp_homogeneous), ring, False))
 
 
 def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
@@ -435,6 +466,9 @@ register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ord
          fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
 register("hilbert", lambda gens, ring: hilbert_driven(gens, ring, _dp_auto),
          "Hilbert-driven Buchberger: homogenize, Hilbert series from a dp basis, drop pairs once it is reached")
+register("buchberger-compiled", _buchberger_compiled,
+         "Buchberger's algorithm in C modulo p (normal strategy), over QQ lifted from primes and verified "
+         "(Python without a compiler)", returns_reduced=True)
 register("hilbert-compiled", _hilbert_reduced,
          "Hilbert-driven Buchberger in C modulo p, over QQ lifted from primes and verified (Python without a compiler)",
          returns_reduced=True)

@@ -32,13 +32,13 @@ from typing import Any, Sequence
 
 import flint
 
-from .buchberger import Overflow
+from .buchberger import Overflow, Reducer, pack, packed
 from .coeffs import PrimeField, RationalField
 from .hilbert_driven import Basis, Counter, _homogenized
-from .modular import ExactReducer, Lifter, ModularFailure, Reconstructor, _next_prime, primitive
+from .modular import Lifter, ModularFailure, Reconstructor, _next_prime, primitive
 from .monomials import Packing, packing
 from .order import Exp
-from .poly import Poly, PolyRing, support_mask
+from .poly import Poly, PolyRing
 
 try:
     from . import _bba
@@ -102,7 +102,18 @@ class _Series:
         return self.counters[node].missing(d)
 
 
-def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyRing, series: _Series, p: int):
+class _AllPairs:
+    """No Hilbert series: every pair is reduced (Buchberger's algorithm, normal strategy)."""
+
+    def missing(self, node: int, d: int) -> tuple[int, bool]:
+        return 1 << 62, False
+
+    def add(self, node: int, m: Exp) -> int:
+        return 0
+
+
+def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyRing, series: _Series | _AllPairs,
+                  p: int):
     """The reduced basis modulo ``p`` of the ideal of the homogenized generators ``hpolys``
     (integer coefficients, none of whose leading coefficients ``p`` divides), dehomogenized when
     ``hring`` is not ``ring``: (layout of ``ring``'s packing, list of (monomials, coefficients)
@@ -131,6 +142,10 @@ def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyR
             maxdeg *= 4
 
 
+def _as_dicts(layout, basis, coefficient) -> list[dict[Exp, Any]]:
+    return [dict(zip(_bba.exponents(layout, ms), map(coefficient, array("I", cs)))) for ms, cs in basis]
+
+
 def hilbert_modp(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
     """The reduced Gröbner basis over Z/p (``p < 2^31``) by the compiled Hilbert-driven
     algorithm, as ``{exponent: nmod}`` dicts by increasing leading monomial."""
@@ -138,11 +153,36 @@ def hilbert_modp(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> l
     p = ring.field.characteristic
     layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in hgens], hring, ring,
                                   _Series(target, hring.nvars), p)
-    nmod = flint.nmod
-    out = []
-    for ms, cs in basis:
-        out.append(dict(zip(_bba.exponents(layout, ms), [nmod(c, p) for c in array("I", cs)])))
-    return out
+    return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
+
+
+def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
+    """The reduced Gröbner basis over QQ by the compiled Hilbert-driven algorithm modulo primes
+    and a lift (see the module docstring), as ``{exponent: fmpq}`` dicts by increasing leading
+    monomial; :class:`~.modular.ModularFailure` if no verified lift is found."""
+    hring, hgens, target = _homogenized(gens, ring, degree_basis)
+    hints = [primitive(g.terms) for g in hgens]
+    series = _Series(target, hring.nvars)
+    return _lift_qq(lambda p: _reduced_modp(hints, hring, ring, series, p), hints, hring, gens, ring)
+
+
+def buchberger_modp(gens: Sequence[Poly], ring: PolyRing) -> list[dict[Exp, Any]]:
+    """The reduced Gröbner basis over Z/p (``p < 2^31``) by Buchberger's algorithm in C (normal
+    strategy: pairs by the degree of their lcm, the Gebauer–Möller criteria), as
+    ``{exponent: nmod}`` dicts by increasing leading monomial.  Meant for homogeneous ideals
+    (the ``dp`` bases the Hilbert-driven algorithm starts from)."""
+    p = ring.field.characteristic
+    layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in gens], ring, ring,
+                                  _AllPairs(), p)
+    return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
+
+
+def buchberger_qq(gens: Sequence[Poly], ring: PolyRing) -> list[dict[Exp, Any]]:
+    """:func:`buchberger_modp` over QQ, lifted from primes and verified as in the module
+    docstring.  For homogeneous generators ``J = <G>`` is then the ideal (the dimension count of
+    :mod:`.modular`: ``J`` contains the ideal and ``dim J_d = dim (I mod p)_d <= dim I_d``)."""
+    ints = [primitive(g.terms) for g in gens]
+    return _lift_qq(lambda p: _reduced_modp(ints, ring, ring, _AllPairs(), p), ints, ring, gens, ring)
 
 
 def _primes(seed: int = 30011):
@@ -155,16 +195,13 @@ def _primes(seed: int = 30011):
             yield q
 
 
-def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
-    """The reduced Gröbner basis over QQ by the compiled Hilbert-driven algorithm modulo primes
-    and a lift (see the module docstring), as ``{exponent: fmpq}`` dicts by increasing leading
-    monomial; :class:`~.modular.ModularFailure` if no verified lift is found."""
-    hring, hgens, target = _homogenized(gens, ring, degree_basis)
-    hints = [primitive(g.terms) for g in hgens]
-    key = hring.order.key
-    leads = [t[max(t, key=key)] for t in hints]
+def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[Poly], ring: PolyRing):
+    """The reduced basis over QQ lifted from ``modp(p)`` (a layout and the reduced basis modulo
+    ``p`` as bytes) at primes not dividing the leading coefficients of the integer polynomials
+    ``ints`` of ``iring``, checked against ``gens`` (see the module docstring)."""
+    key = iring.order.key
+    leads = [t[max(t, key=key)] for t in ints]
     stream = _primes()
-    series = _Series(target, hring.nvars)
     used = 0
     while used < MAX_PRIMES:
         shape = layout = None
@@ -175,7 +212,7 @@ def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> lis
             used += 1
             if any(c % p == 0 for c in leads):
                 continue
-            lay, basis = _reduced_modp(hints, hring, ring, series, p)
+            lay, basis = modp(p)
             ms = [m for m, _ in basis]
             flat = b"".join(c for _, c in basis)
             if shape is None:
@@ -198,7 +235,7 @@ def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> lis
                         return out
                     break
             lift.add(flat, p)
-    raise ModularFailure("compiled Hilbert-driven lift: no verified basis")
+    raise ModularFailure("compiled Buchberger's lift: no verified basis")
 
 
 class _Lift:
@@ -239,24 +276,33 @@ class _Lift:
 
 def _generators_reduce(basis: list[dict[Exp, Any]], gens: Sequence[Poly], ring: PolyRing) -> bool:
     """Whether every generator top-reduces to 0 by ``basis`` (leading exponent first in each
-    dict) exactly over QQ: :class:`~.modular.ExactReducer` with each element's image formed
-    when it first serves as a reducer (the generators' reductions use few of them)."""
-    red = ExactReducer([], ring.order)
-    red.polys = _Images(red, basis)
-    red.lms = [next(iter(b)) for b in basis]
-    red.masks = [support_mask(e) for e in red.lms]
-    return all(red.reduces_to_zero(g.terms) for g in gens)
+    dict) exactly over QQ: Buchberger's reducer (:class:`.buchberger.Reducer`) on packed
+    monomials, each basis element packed when it first serves (the generators' reductions use
+    few of them)."""
+    polys = [g.terms for g in gens]
+
+    def run(pk: Packing) -> bool:
+        red = _LazyReducer(pk, basis)
+        return all(not red.reduce(pack(pk, f), full=False) for f in polys)
+    return packed(ring, polys + [dict([next(iter(b.items()))]) for b in basis], run)
 
 
-class _Images:
-    """The images of the basis elements in the reducer's ring, formed when first asked for."""
+class _LazyReducer(Reducer):
+    """A :class:`.buchberger.Reducer` whose polynomials are packed when first used."""
 
-    def __init__(self, red: ExactReducer, basis: list[dict[Exp, Any]]) -> None:
-        self.red, self.basis = red, basis
-        self.known: dict[int, Any] = {}
+    def __init__(self, pk: Packing, basis: list[dict[Exp, Any]]) -> None:
+        super().__init__(pk)
+        self.pk = pk
+        self.items = [(pk.pack(next(iter(b))), b) for b in basis]
+        self.done: dict[int, dict[int, Any]] = {}
 
-    def __getitem__(self, k: int):
-        f = self.known.get(k)
-        if f is None:
-            f = self.known[k] = self.red.image(self.basis[k])
-        return f
+    def find(self, m: int) -> tuple[int, dict[int, Any]] | None:
+        g = self.guard
+        mg = m | g
+        for k, (lm, p) in enumerate(self.items):
+            if (mg - lm) & g == g:
+                q = self.done.get(k)
+                if q is None:
+                    q = self.done[k] = pack(self.pk, p)
+                return lm, q
+        return None

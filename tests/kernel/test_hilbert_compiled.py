@@ -119,3 +119,54 @@ def test_block_and_lex_eliminations_match_singular():
                             key=lambda p: R.order.key(p.lm()))
             assert ours == theirs, (o, field)
             k += 1
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_compiled_buchberger_on_homogeneous_ideals_matches_buchberger(field):
+    """The engine buchberger-compiled (all pairs, no Hilbert series): the dp bases the
+    Hilbert-driven algorithms start from."""
+    rng = random.Random(f"homogeneous {field}")
+    R = ring_of(field, "abcde", (("dp", 5),))
+    for _ in range(4):
+        gens = []
+        for _ in range(rng.randint(2, 4)):
+            d = rng.randint(2, 3)
+            t = {}
+            for _ in range(4):
+                e = [0] * 5
+                for _ in range(d):
+                    e[rng.randrange(5)] += 1
+                t[tuple(e)] = R.field(rng.randint(1, 9))
+            gens.append(Poly(R, t))
+        clear_cache()
+        assert [g.terms for g in standard_basis(gens, R, "buchberger-compiled")] == reference(gens, R)
+
+
+@needs_compiled
+def test_coefficients_past_four_primes_are_lifted_in_python():
+    """Coefficients of ~150 bits need more primes than the compiled lift (four below 2^31) takes."""
+    R = ring_of(QQ, "xyz", (("dp", 1), ("dp", 2)))
+    big = 3 ** 95
+    gens = [parse_poly(R, f"x^2-{big}*y*z+1"), parse_poly(R, f"x*y-{big + 2}*z^2"), parse_poly(R, "y^3-x-3")]
+    clear_cache()
+    assert [g.terms for g in standard_basis(gens, R, "hilbert-compiled")] == reference(gens, R)
+
+
+@needs_compiled
+def test_the_exact_check_refuses_a_basis_missing_an_element():
+    R = ring_of(QQ, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    basis = E._hilbert_reduced(gens, R)
+    assert HC._generators_reduce(basis, gens, R)
+    assert not HC._generators_reduce(basis[:-1], gens, R)
+
+
+@needs_compiled
+def test_the_compiled_hilbert_numerator_is_the_python_one():
+    from mech.kernel import hilbert as H
+    rng = random.Random(7)
+    for _ in range(200):
+        n = rng.randint(1, 6)
+        lms = [tuple(rng.randint(0, 4) for _ in range(n)) for _ in range(rng.randint(0, 8))]
+        assert H.first_numerator(lms, n) == H._trim(H._numerator(H.minimal_monomials(lms)))
