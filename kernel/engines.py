@@ -15,12 +15,15 @@ its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot 
 (then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
 (:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations; lex orderings, every ordering
 over Z/p, and ideals with at least as many generators as variables compute the ``dp`` basis first
-and skip it for zero-dimensional ideals), then a ``dp`` basis (kept in the
+and skip it for zero-dimensional ideals; over Z/p there is no attempt when the compiled
+Hilbert-driven algorithm is built), then a ``dp`` basis (kept in the
 cache) and from it FGLM for zero-dimensional ideals (over QQ in a block ordering with at least
 :data:`FGLM_STAIRS` standard monomials the Hilbert-driven F4 instead); for the others, over Z/p and
 a lex ordering F4 on that ordering within :data:`F4_BUDGET` (its matrices can grow far past
-the Hilbert-driven algorithm's work), then the Hilbert-driven algorithm; Buchberger over other
-fields.  Local orderings: :mod:`.local_policy` (Mora or Lazard's homogenization through F4).
+the Hilbert-driven algorithm's work), then the Hilbert-driven algorithm (compiled modulo p and
+lifted over QQ, :mod:`.hilbert_compiled`, its homogenized ``dp`` basis by the compiled Buchberger;
+in Python without a compiler); Buchberger over other fields.  Local orderings: :mod:`.local_policy`
+(Mora or Lazard's homogenization through F4).
 
 :func:`using_engine` sets the default for a dynamic extent (a context variable); it applies to
 the computations its engine accepts, the others use ``"auto"``.  An engine named in a call must
@@ -59,8 +62,8 @@ Run = Callable[[list[Poly], PolyRing], list[Terms]]
 
 AUTO = "auto"
 AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p; block and lex orderings: "
-                "Buchberger if small, else from a dp basis FGLM or Hilbert-driven F4 (zero-dimensional ideals), "
-                "F4 (lex over Z/p) or Hilbert-driven; "
+                "Buchberger if small (QQ), else from a dp basis FGLM or Hilbert-driven F4 (zero-dimensional ideals), "
+                "F4 (lex over Z/p) or Hilbert-driven (compiled mod p, lifted over QQ); "
                 "local orderings: Mora, then Lazard")
 
 SMALL_WORK = 600
