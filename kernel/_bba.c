@@ -39,7 +39,7 @@ typedef struct {
 } Poly;
 
 typedef struct {
-    int deg, i, j;
+    int deg, i, j; /* deg: the pair's sugar (the lcm's degree for homogeneous input) */
     uint64_t lcm[MAXW];
 } Pair;
 
@@ -49,7 +49,9 @@ typedef struct {
     uint64_t p;
     Poly *gens, *basis;
     char *active;
+    int *sugar; /* of the basis elements */
     Py_ssize_t ngens, nb, capb;
+    long long spent, limit; /* terms summed in reductions; limit 0: none */
     Pair *pairs;
     Py_ssize_t np, capp;
     Poly work;
@@ -397,6 +399,8 @@ static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
         uint64_t c = 0;
         while (nheap > 0 && heap[0].key == m[nw - 1] && mcmp(streams[heap[0].s].cur, m, nw) == 0) {
             Stream *s = &streams[heap[0].s];
+            if (++S->spent > S->limit && S->limit)
+                return -3;
             c = (c + s->coef * s->g->c[s->pos]) % p;
             if (++s->pos < s->g->len) {
                 if (stream_load(L, s) < 0)
@@ -452,6 +456,7 @@ static void state_free(PyObject *cap)
     free(S->gens);
     free(S->basis);
     free(S->active);
+    free(S->sugar);
     free(S->pairs);
     free(S->work.m);
     free(S->work.c);
@@ -488,7 +493,8 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
 {
     PyObject *lay, *gens;
     unsigned long long p;
-    if (!PyArg_ParseTuple(args, "OKO!", &lay, &p, &PyList_Type, &gens))
+    long long limit = 0;
+    if (!PyArg_ParseTuple(args, "OKO!|L", &lay, &p, &PyList_Type, &gens, &limit))
         return NULL;
     Layout *L = PyCapsule_GetPointer(lay, "bba.layout");
     if (!L)
@@ -504,6 +510,7 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
     S->layout = lay;
     Py_INCREF(lay);
     S->p = p;
+    S->limit = limit;
     PyObject *cap = PyCapsule_New(S, "bba.state", state_free);
     if (!cap) {
         Py_DECREF(lay);
@@ -538,7 +545,13 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
                 PyErr_NoMemory();
             return NULL;
         }
-        if (push_pair(S, mdegree(L, S->gens[k].m), S->gens[k].m, (int)k, -1) < 0) {
+        int top = 0;
+        for (Py_ssize_t t = 0; t < S->gens[k].len; t++) {
+            int dt = mdegree(L, S->gens[k].m + (size_t)t * nw);
+            if (dt > top)
+                top = dt;
+        }
+        if (push_pair(S, top, S->gens[k].m, (int)k, -1) < 0) {
             Py_DECREF(cap);
             return PyErr_NoMemory();
         }
@@ -617,7 +630,9 @@ static int pair_update(State *S)
     for (Py_ssize_t a = 0; a < nnew && rc == 0; a++)
         if (state[a] == 1) {
             const uint64_t *lc = lcms + (size_t)a * nw;
-            rc = push_pair(S, mdegree(L, lc), lc, who[a], (int)k);
+            int dl = mdegree(L, lc), i = who[a];
+            int wi = S->sugar[i] + dl - mdegree(L, S->basis[i].m), wk = S->sugar[k] + dl - hdeg;
+            rc = push_pair(S, wi > wk ? wi : wk, lc, i, (int)k);
         }
     free(lcms);
     free(who);
@@ -625,7 +640,7 @@ static int pair_update(State *S)
     return rc ? -2 : 0;
 }
 
-static int add_basis(State *S)
+static int add_basis(State *S, int sugar)
 {
     if (S->nb == S->capb) {
         Py_ssize_t c = S->capb ? 2 * S->capb : 32;
@@ -637,18 +652,33 @@ static int add_basis(State *S)
         if (!a)
             return -2;
         S->active = a;
+        int *sg = realloc(S->sugar, sizeof(int) * c);
+        if (!sg)
+            return -2;
+        S->sugar = sg;
         S->capb = c;
     }
     poly_monic(&S->work, S->p);
     if (poly_copy(&S->basis[S->nb], S->work.m, S->work.c, S->work.len, S->L->nw) < 0)
         return -2;
     S->basis[S->nb].sev = msev(S->L, S->work.m);
+    S->sugar[S->nb] = sugar;
     S->active[S->nb++] = 1;
     return pair_update(S);
 }
 
 static PyObject *error(int rc)
 {
+    if (rc == -3) {
+        PyObject *mod = PyImport_ImportModule("mech.kernel.buchberger");
+        PyObject *exc = mod ? PyObject_GetAttrString(mod, "TooLong") : NULL;
+        Py_XDECREF(mod);
+        if (exc) {
+            PyErr_SetString(exc, "the compiled Buchberger's budget ran out");
+            Py_DECREF(exc);
+        }
+        return NULL;
+    }
     if (rc == -1) {
         PyObject *mod = PyImport_ImportModule("mech.kernel.buchberger");
         PyObject *exc = mod ? PyObject_GetAttrString(mod, "Overflow") : NULL;
@@ -750,7 +780,7 @@ static PyObject *bba_step(PyObject *self, PyObject *args)
             break;
         if (S->work.len == 0)
             continue;
-        rc = add_basis(S);
+        rc = add_basis(S, d);
         if (rc < 0)
             break;
         need--;
@@ -1324,7 +1354,7 @@ static PyMethodDef methods[] = {
     {"hilbert_numerator", bba_hilbert_numerator, METH_VARARGS, "hilbert_numerator(monomials, n): Q(t)."},
     {"ratlift", bba_ratlift, METH_VARARGS, "ratlift(residues, primes, check, q): the lift to QQ, checked mod q."},
     {"layout", bba_layout, METH_VARARGS, "layout(nw, guard, units, eshifts, dshift, ebits): packed monomials."},
-    {"state", bba_state, METH_VARARGS, "state(layout, p, gens): generators waiting, no basis yet."},
+    {"state", bba_state, METH_VARARGS, "state(layout, p, gens, limit=0): generators waiting, no basis yet."},
     {"min_degree", bba_min_degree, METH_VARARGS, "min_degree(st): least degree of a pair, -1 if none."},
     {"step", bba_step, METH_VARARGS, "step(st, d, need): the new leading monomials of degree d."},
     {"reduced", bba_reduced, METH_VARARGS, "reduced(st, target): the reduced basis (bytes pairs)."},

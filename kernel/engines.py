@@ -73,15 +73,26 @@ variables: the crossover is near 1000)."""
 
 
 SMALL_BUCHBERGER = 3000
-"""For block and lexicographic orderings over QQ ``auto`` first tries Buchberger within this
-budget (terms of reducers used; about 2.5 ms): the mechanisms' many small eliminations finish
-there.  Larger computations go to FGLM (zero-dimensional ideals) or the Hilbert-driven
-algorithm, compiled and lifted from primes (over Z/p it goes first: faster than the attempt
-even on the four-bar coupler curve, 0.8 against 2.5 ms).  Measured on benchmarks/cases.py
-(session 13): the four-bar curve finishes within 3000 (2.5 ms; the compiled path 3.8 ms) and
-the budget's failure costs 2.4 ms on the block (dp(3),dp(2)) and the five-bar projection
-(5000: 4 ms).  Earlier: 20000 wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and
-katsura-5 in (dp(3),dp(3)) before FGLM."""
+"""For block and lexicographic orderings ``auto`` first tries Buchberger within a budget, in
+Python without the compiled extension: this many terms of reducers used (about 2.5 ms).  The
+mechanisms' many small eliminations finish there; larger computations go to FGLM
+(zero-dimensional ideals) or the Hilbert-driven algorithm.  Measured on benchmarks/cases.py
+(session 13): the four-bar coupler curve finishes within 3000 and the budget's failure costs
+2.4 ms on the block (dp(3),dp(2)) and the five-bar projection (5000: 4 ms).  Earlier: 20000
+wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and katsura-5 in (dp(3),dp(3))."""
+
+
+ATTEMPT_PRIMES = 6
+"""The compiled attempt gives up after this many primes (coefficients of about 90 bits): larger
+coefficients are left to the Hilbert-driven algorithm or FGLM."""
+
+
+COMPILED_BUDGET = 20000
+"""The same attempt with the compiled Buchberger over QQ (:func:`.hilbert_compiled.buchberger_qq`):
+terms summed in its reductions modulo a prime.  The four-bar coupler curve needs fewer than
+5000 (2.8 ms with the lift, the Python attempt 3.2 ms); failing at 20000 costs 1.3 ms on the
+block (dp(3),dp(2)) and the five-bar projection.  Over Z/p there is no attempt: the compiled
+Hilbert-driven algorithm is faster even on the four-bar curve (0.8 against 2.5 ms)."""
 
 
 F4_BUDGET = 4_000_000
@@ -311,13 +322,9 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
         first = lex or kind == "Z/p" or len(gens) >= ring.nvars
         if basis is None and first:
             basis = _degree_basis(gens, ring)
-        # over Z/p the compiled Hilbert-driven algorithm beats the attempt even on small systems
-        attempt = not (kind == "Z/p" and compiled_hilbert(ring))
         if basis is None or first and not _zero_dimensional(basis):
             try:
-                if not attempt:
-                    raise TooLong
-                return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
+                return _attempt(gens, ring)
             except TooLong:
                 # positive-dimensional ideals need the dp basis of the homogenized generators (the
                 # Hilbert series), which tells the dimension too: the ideal's own dp basis is
@@ -340,6 +347,20 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
         except ModularFailure:
             pass
     return _finish(buchberger(gens, ring), ring, False)
+
+
+def _attempt(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    """Buchberger's algorithm within a budget (:class:`~.buchberger.TooLong` past it): compiled
+    and lifted over QQ (:data:`COMPILED_BUDGET`), none over Z/p where the compiled Hilbert-driven
+    algorithm beats it even on small systems, else in Python (:data:`SMALL_BUCHBERGER`)."""
+    if compiled_hilbert(ring):
+        if isinstance(ring.field, PrimeField):
+            raise TooLong
+        try:
+            return _finish(buchberger_qq(gens, ring, COMPILED_BUDGET, ATTEMPT_PRIMES), ring, True)
+        except ModularFailure:
+            raise TooLong from None
+    return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
 
 
 def _zero_dimensional(basis: list[Poly]) -> bool:

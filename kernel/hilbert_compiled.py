@@ -113,18 +113,19 @@ class _AllPairs:
 
 
 def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyRing, series: _Series | _AllPairs,
-                  p: int):
+                  p: int, limit: int = 0):
     """The reduced basis modulo ``p`` of the ideal of the homogenized generators ``hpolys``
     (integer coefficients, none of whose leading coefficients ``p`` divides), dehomogenized when
     ``hring`` is not ``ring``: (layout of ``ring``'s packing, list of (monomials, coefficients)
-    bytes) by increasing leading monomial."""
+    bytes) by increasing leading monomial.  :class:`~.buchberger.TooLong` once the reductions
+    have summed more than ``limit`` terms (if not 0)."""
     maxdeg = max(64, 2 * max(sum(e) for t in hpolys for e in t))
     while True:
         hpk, pk = packing(hring.order, maxdeg), packing(ring.order, maxdeg)
         if max(hpk.bits, pk.bits) >= 8 * 64:
             raise ModularFailure("monomials too wide for the compiled Buchberger")
         try:
-            st = _bba.state(_layout(hpk), p, [_encode(hpk, t, p) for t in hpolys])
+            st = _bba.state(_layout(hpk), p, [_encode(hpk, t, p) for t in hpolys], limit)
             path = 0
             unpack = hpk.unpack
             while True:
@@ -166,23 +167,25 @@ def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> lis
     return _lift_qq(lambda p: _reduced_modp(hints, hring, ring, series, p), hints, hring, gens, ring)
 
 
-def buchberger_modp(gens: Sequence[Poly], ring: PolyRing) -> list[dict[Exp, Any]]:
-    """The reduced Gröbner basis over Z/p (``p < 2^31``) by Buchberger's algorithm in C (normal
-    strategy: pairs by the degree of their lcm, the Gebauer–Möller criteria), as
-    ``{exponent: nmod}`` dicts by increasing leading monomial.  Meant for homogeneous ideals
-    (the ``dp`` bases the Hilbert-driven algorithm starts from)."""
+def buchberger_modp(gens: Sequence[Poly], ring: PolyRing, limit: int = 0) -> list[dict[Exp, Any]]:
+    """The reduced Gröbner basis over Z/p (``p < 2^31``) by Buchberger's algorithm in C (the
+    sugar strategy, the Gebauer–Möller criteria), as ``{exponent: nmod}`` dicts by increasing
+    leading monomial; :class:`~.buchberger.TooLong` past ``limit`` terms summed (if not 0)."""
     p = ring.field.characteristic
     layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in gens], ring, ring,
-                                  _AllPairs(), p)
+                                  _AllPairs(), p, limit)
     return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
 
 
-def buchberger_qq(gens: Sequence[Poly], ring: PolyRing) -> list[dict[Exp, Any]]:
+def buchberger_qq(gens: Sequence[Poly], ring: PolyRing, limit: int = 0, max_primes: int = MAX_PRIMES) -> list[dict[Exp, Any]]:
     """:func:`buchberger_modp` over QQ, lifted from primes and verified as in the module
     docstring.  For homogeneous generators ``J = <G>`` is then the ideal (the dimension count of
-    :mod:`.modular`: ``J`` contains the ideal and ``dim J_d = dim (I mod p)_d <= dim I_d``)."""
+    :mod:`.modular`: ``J`` contains the ideal and ``dim J_d = dim (I mod p)_d <= dim I_d``), for
+    others as soon as one prime used is lucky.  :class:`~.modular.ModularFailure` after
+    ``max_primes`` primes."""
     ints = [primitive(g.terms) for g in gens]
-    return _lift_qq(lambda p: _reduced_modp(ints, ring, ring, _AllPairs(), p), ints, ring, gens, ring)
+    return _lift_qq(lambda p: _reduced_modp(ints, ring, ring, _AllPairs(), p, limit), ints, ring, gens, ring,
+                    max_primes)
 
 
 def _primes(seed: int = 30011):
@@ -195,7 +198,8 @@ def _primes(seed: int = 30011):
             yield q
 
 
-def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[Poly], ring: PolyRing):
+def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[Poly], ring: PolyRing,
+             max_primes: int = MAX_PRIMES):
     """The reduced basis over QQ lifted from ``modp(p)`` (a layout and the reduced basis modulo
     ``p`` as bytes) at primes not dividing the leading coefficients of the integer polynomials
     ``ints`` of ``iring``, checked against ``gens`` (see the module docstring)."""
@@ -203,11 +207,11 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
     leads = [t[max(t, key=key)] for t in ints]
     stream = _primes()
     used = 0
-    while used < MAX_PRIMES:
+    while used < max_primes:
         shape = layout = None
         lift = _Lift()
         misses = good = 0
-        while used < MAX_PRIMES:
+        while used < max_primes:
             p = next(stream)
             used += 1
             if any(c % p == 0 for c in leads):

@@ -8,8 +8,9 @@ import pytest
 from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
 from mech.kernel import engines as E
 from mech.kernel import hilbert_compiled as HC
-from mech.kernel.buchberger import buchberger, reduce_basis
+from mech.kernel.buchberger import TooLong, buchberger, reduce_basis
 from mech.kernel.engines import clear_cache, standard_basis
+from mech.kernel.modular import ModularFailure
 from mech.kernel.poly import Poly
 from tests.util import ideal_blocks, parse_poly, run_singular
 
@@ -170,3 +171,39 @@ def test_the_compiled_hilbert_numerator_is_the_python_one():
         n = rng.randint(1, 6)
         lms = [tuple(rng.randint(0, 4) for _ in range(n)) for _ in range(rng.randint(0, 8))]
         assert H.first_numerator(lms, n) == H._trim(H._numerator(H.minimal_monomials(lms)))
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_compiled_buchberger_with_sugar_on_inhomogeneous_ideals(field):
+    for blocks in BLOCKS:
+        rng = random.Random(f"sugar {field} {blocks}")
+        R = ring_of(field, "abcd", blocks)
+        gens = random_ideal(R, rng, 3)
+        clear_cache()
+        assert [g.terms for g in standard_basis(gens, R, "buchberger-compiled")] == reference(gens, R)
+
+
+@needs_compiled
+def test_the_compiled_attempt_keeps_to_its_budget():
+    """auto's attempt over QQ: the four-bar's elimination finishes within COMPILED_BUDGET, the
+    block system's does not (TooLong, then the Hilbert-driven algorithm)."""
+    four_bar = ring_of(QQ, ["c1", "s1", "c2", "s2", "c3", "s3", "x", "y"], (("dp", 6), ("dp", 2)))
+    fb = [parse_poly(four_bar, t) for t in ["4+3*c3-2*c1-4*c2", "3*s3-2*s1-4*s2", "x-2*c1-2*c2+s2",
+                                            "y-2*s1-2*s2-c2", "c1^2+s1^2-1", "c2^2+s2^2-1", "c3^2+s3^2-1"]]
+    assert HC.buchberger_qq(fb, four_bar, E.COMPILED_BUDGET) == reference(fb, four_bar)
+    R = ring_of(QQ, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    with pytest.raises(TooLong):
+        HC.buchberger_qq(gens, R, E.COMPILED_BUDGET)
+
+
+@needs_compiled
+def test_the_compiled_attempt_gives_up_on_tall_coefficients():
+    """A lex basis with coefficients of 1600 bits: the attempt stops after ATTEMPT_PRIMES primes."""
+    R = ring_of(QQ, "abcd", (("lp", 4),))
+    rng = random.Random("sugar QQ")
+    random_ideal(R, rng, 3)  # the dp(2),dp(2) ideal of the test above
+    gens = random_ideal(R, rng, 3)
+    with pytest.raises(ModularFailure):
+        HC.buchberger_qq(gens, R, 0, E.ATTEMPT_PRIMES)
