@@ -32,12 +32,12 @@ from typing import Any, Sequence
 
 import flint
 
-from .buchberger import Overflow, Reducer, pack, packed
+from .buchberger import Overflow, Reducer, pack
 from .coeffs import PrimeField, RationalField
 from .hilbert_driven import Basis, Counter, _homogenized
 from .modular import Lifter, ModularFailure, Reconstructor, _next_prime, primitive
 from .monomials import Packing, packing
-from .order import Exp
+from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
 try:
@@ -188,7 +188,8 @@ def buchberger_qq(gens: Sequence[Poly], ring: PolyRing, limit: int = 0, max_prim
                     max_primes)
 
 
-def _primes(seed: int = 30011):
+def lift_primes(seed: int = 30011):
+    """An endless pseudo-random sequence of distinct primes in :data:`PRIMES`."""
     rng = random.Random(seed)
     seen = set()
     while True:
@@ -205,11 +206,11 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
     ``ints`` of ``iring``, checked against ``gens`` (see the module docstring)."""
     key = iring.order.key
     leads = [t[max(t, key=key)] for t in ints]
-    stream = _primes()
+    stream = lift_primes()
     used = 0
     while used < max_primes:
         shape = layout = None
-        lift = _Lift()
+        lift = Lift()
         misses = good = 0
         while used < max_primes:
             p = next(stream)
@@ -235,14 +236,14 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
                     for m, size in zip(shape, sizes):
                         out.append(dict(zip(_bba.exponents(layout, m), coefs[k:k + size])))
                         k += size
-                    if _generators_reduce(out, gens, ring):
+                    if reduce_to_zero(out, [g.terms for g in gens], ring.order):
                         return out
                     break
             lift.add(flat, p)
     raise ModularFailure("compiled Buchberger's lift: no verified basis")
 
 
-class _Lift:
+class Lift:
     """Residues of the coefficients (one flat uint32 array per prime) lifted to QQ: in C while
     the product of the primes fits 124 bits (four primes), then by :class:`.modular.Lifter` and
     :class:`.modular.Reconstructor`."""
@@ -278,17 +279,19 @@ class _Lift:
         return None
 
 
-def _generators_reduce(basis: list[dict[Exp, Any]], gens: Sequence[Poly], ring: PolyRing) -> bool:
-    """Whether every generator top-reduces to 0 by ``basis`` (leading exponent first in each
-    dict) exactly over QQ: Buchberger's reducer (:class:`.buchberger.Reducer`) on packed
+def reduce_to_zero(basis: list[dict[Exp, Any]], polys: Sequence[dict[Exp, Any]], order: MonomialOrder) -> bool:
+    """Whether every polynomial top-reduces to 0 by ``basis`` (leading exponent first in each
+    dict) for ``order``, exactly: Buchberger's reducer (:class:`.buchberger.Reducer`) on packed
     monomials, each basis element packed when it first serves (the generators' reductions use
     few of them)."""
-    polys = [g.terms for g in gens]
-
-    def run(pk: Packing) -> bool:
-        red = _LazyReducer(pk, basis)
-        return all(not red.reduce(pack(pk, f), full=False) for f in polys)
-    return packed(ring, polys + [dict([next(iter(b.items()))]) for b in basis], run)
+    maxdeg = max(8, 2 * max(sum(e) for f in list(polys) + basis for e in f))
+    while True:
+        pk = packing(order, maxdeg)
+        try:
+            red = _LazyReducer(pk, basis)
+            return all(not red.reduce(pack(pk, f), full=False) for f in polys)
+        except Overflow:
+            maxdeg *= 4
 
 
 class _LazyReducer(Reducer):
