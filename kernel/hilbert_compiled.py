@@ -69,8 +69,10 @@ def _layout(pk: Packing):
 
 
 def _encode(pk: Packing, terms: dict[Exp, int], p: int) -> tuple[bytes, bytes]:
+    """The terms as (monomials, coefficients mod p) bytes, leading first (exponents may come as
+    flint integers: the packed monomial is made a Python int)."""
     width = 8 * ((pk.bits + 64) // 64)
-    items = sorted(((pk.pack(e), c % p) for e, c in terms.items()), reverse=True)
+    items = sorted(((int(pk.pack(e)), c % p) for e, c in terms.items()), reverse=True)
     items = [(m, c) for m, c in items if c]
     return b"".join(m.to_bytes(width, "little") for m, _ in items), array("I", [c for _, c in items]).tobytes()
 

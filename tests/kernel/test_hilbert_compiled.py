@@ -208,3 +208,15 @@ def test_the_compiled_attempt_gives_up_on_tall_coefficients():
     gens = random_ideal(R, rng, 3)
     with pytest.raises(ModularFailure):
         HC.buchberger_qq(gens, R, 0, E.ATTEMPT_PRIMES)
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_exponents_given_as_flint_integers(field):
+    """Exponents may come as fmpz (from flint's polynomials, as in primdecGTZ over parameters)."""
+    import flint
+    R = ring_of(field, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    wide = [Poly(R, {tuple(flint.fmpz(a) for a in e): c for e, c in g.terms.items()}) for g in gens]
+    clear_cache()
+    assert standard_basis(wide, R, "hilbert-compiled") == standard_basis(gens, R, "hilbert")
