@@ -28,6 +28,7 @@ from __future__ import annotations
 import random
 from array import array
 from functools import lru_cache
+from types import SimpleNamespace
 from typing import Any, Sequence
 
 import flint
@@ -41,7 +42,9 @@ from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
 try:
-    from . import _bba
+    from ._bba import exponents, layout, min_degree, ratlift, reduced, state, step
+    _bba: SimpleNamespace | None = SimpleNamespace(exponents=exponents, layout=layout, min_degree=min_degree,
+                                                   ratlift=ratlift, reduced=reduced, state=state, step=step)
 except ImportError:  # pragma: no cover - no compiler at install time
     _bba = None
 
