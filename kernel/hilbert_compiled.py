@@ -3,8 +3,10 @@ compiled code (the optional C extension ``_bba``, kernel/_bba.c), and over QQ by
 
 Modulo ``p`` the homogenized generators, the basis and the pairs live in C as packed monomials
 (:class:`~.monomials.Packing`); Python keeps the Hilbert series (:class:`.hilbert_driven.Counter`)
-and asks C, degree by degree, for the S-polynomials' top reductions until the degree has its
-new leading monomials.  C then dehomogenizes the basis and reduces it.
+and asks C, degree by degree, to reduce S-polynomials until the degree has its new leading
+monomials.  C then dehomogenizes the basis and reduces it.  Without a series (:func:`buchberger_modp`,
+:func:`buchberger_qq`) the same code is Buchberger's algorithm with the sugar strategy: the ``dp``
+bases of the homogenized generators that give the series, and ``auto``'s budgeted attempt.
 
 Every run modulo ``p`` gives a Gröbner basis of the ideal modulo ``p`` whatever ``p``: with
 ``h`` the Hilbert function of the quotient by ``J`` (the homogenized ideal over QQ), that of
@@ -13,8 +15,9 @@ found the new leading monomials the series asks for is complete, and one whose p
 is complete as in Buchberger's algorithm.
 
 Over QQ (:func:`hilbert_qq`) the reduced bases at several primes of the same shape (monomials)
-are combined by the Chinese remainder theorem and lifted by rational reconstruction
-(:class:`.modular.Reconstructor`) until the next prime's basis agrees with the lift ``G``; a
+are combined by the Chinese remainder theorem and lifted by rational reconstruction (:class:`Lift`:
+in C up to four primes, then :class:`.modular.Reconstructor`) until the next prime's basis agrees
+with the lift ``G``; a
 prime whose basis has another shape is dropped, and when more primes disagree than agree the
 first one was unlucky and the lift starts again from a later prime.  ``G mod q`` is then the
 reduced Gröbner basis of the ideal modulo a prime ``q`` not used to build ``G``, the
