@@ -8,13 +8,16 @@
  * A layout (capsule) holds the words, the guard bits, each variable's exponent field and packed
  * unit (for lcms), and the degree field.
  *
- * A state (capsule) holds the generators, the basis (monic, terms in decreasing order) and the
- * pairs (degree of the lcm, lcm, i, j; j = -1: generator i waiting) under the Gebauer-Moeller
- * criteria.  step(st, d, need) takes the pairs of degree d in increasing (lcm, i, j) order and
- * top-reduces their S-polynomials until `need` new leading monomials are found; the caller
- * (which knows the Hilbert series) decides the degree and the need.  reduced(st, target) gives
- * the reduced basis of the active elements, their monomials first mapped to the layout
- * `target` (dehomogenization: the exponents of its variables kept, the others dropped). */
+ * A state (capsule) holds the generators, the basis (monic, terms in decreasing order, each with
+ * its sugar) and the pairs (sugar, lcm, i, j; j = -1: generator i waiting; for homogeneous input
+ * the sugar is the lcm's degree) under the Gebauer-Moeller criteria.  step(st, d, need) takes the
+ * pairs of sugar d in increasing (lcm, i, j) order and reduces their S-polynomials until `need`
+ * new leading monomials are found; the caller (which knows the Hilbert series, or asks for every
+ * pair) decides the degree and the need.  A state's limit bounds the terms summed (TooLong).
+ * reduced(st, target) gives the reduced basis of the active elements, their monomials first
+ * mapped to the layout `target` (dehomogenization: the exponents of its variables kept, the
+ * others dropped).  Beside it: ratlift (the lift's rational reconstruction in 128-bit integers)
+ * and hilbert_numerator (kernel/hilbert.py's numerator recursion). */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 #include <stdint.h>
