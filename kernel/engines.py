@@ -15,12 +15,15 @@ its overhead to pay off (:data:`SMALL_WORK`) and when the modular method cannot 
 (then Buchberger).  Block and lex orderings over QQ and Z/p: Buchberger within a budget
 (:data:`SMALL_BUCHBERGER`; the mechanisms' many small eliminations; lex orderings, every ordering
 over Z/p, and ideals with at least as many generators as variables compute the ``dp`` basis first
-and skip it for zero-dimensional ideals), then a ``dp`` basis (kept in the
+and skip it for zero-dimensional ideals; over Z/p there is no attempt when the compiled
+Hilbert-driven algorithm is built), then a ``dp`` basis (kept in the
 cache) and from it FGLM for zero-dimensional ideals (over QQ in a block ordering with at least
 :data:`FGLM_STAIRS` standard monomials the Hilbert-driven F4 instead); for the others, over Z/p and
 a lex ordering F4 on that ordering within :data:`F4_BUDGET` (its matrices can grow far past
-the Hilbert-driven algorithm's work), then the Hilbert-driven algorithm; Buchberger over other
-fields.  Local orderings: :mod:`.local_policy` (Mora or Lazard's homogenization through F4).
+the Hilbert-driven algorithm's work), then the Hilbert-driven algorithm (compiled modulo p and
+lifted over QQ, :mod:`.hilbert_compiled`, its homogenized ``dp`` basis by the compiled Buchberger;
+in Python without a compiler); Buchberger over other fields.  Local orderings: :mod:`.local_policy`
+(Mora or Lazard's homogenization through F4).
 
 :func:`using_engine` sets the default for a dynamic extent (a context variable); it applies to
 the computations its engine accepts, the others use ``"auto"``.  An engine named in a call must
@@ -45,6 +48,7 @@ from .errors import EngineError
 from .f4 import f4_modp, reduce_modp
 from .flint_reduce import FLINT_TERMS, reduce_basis_qq
 from .fglm import NotZeroDimensional, fglm_qq, fglm_zp, staircase
+from .hilbert_compiled import buchberger_modp, buchberger_qq, hilbert_modp, hilbert_qq, usable as compiled_hilbert
 from .hilbert_driven import degree_leads, hilbert_driven, hilbert_f4
 from .lazard import lazard
 from .local_policy import auto_local
@@ -58,8 +62,8 @@ Run = Callable[[list[Poly], PolyRing], list[Terms]]
 
 AUTO = "auto"
 AUTO_SUMMARY = ("the default: F4 for degree orderings over QQ (modular) and Z/p; block and lex orderings: "
-                "Buchberger if small, else from a dp basis FGLM or Hilbert-driven F4 (zero-dimensional ideals), "
-                "F4 (lex over Z/p) or Hilbert-driven; "
+                "Buchberger if small (QQ), else from a dp basis FGLM or Hilbert-driven F4 (zero-dimensional ideals), "
+                "F4 (lex over Z/p) or Hilbert-driven (compiled mod p, lifted over QQ); "
                 "local orderings: Mora, then Lazard")
 
 SMALL_WORK = 600
@@ -68,13 +72,27 @@ QQ to Buchberger, whose smaller overhead wins there (measured on random systems 
 variables: the crossover is near 1000)."""
 
 
-SMALL_BUCHBERGER = 5000
-"""For block and lexicographic orderings ``auto`` first tries Buchberger within this budget
-(terms of reducers used; about 12 ms): the mechanisms' many small eliminations finish there
-(the four-bar coupler curve in 7 ms).  Larger computations go to FGLM (zero-dimensional
-ideals) or the Hilbert-driven algorithm.  Measured on benchmarks/cases.py: a budget of 20000
-wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and katsura-5 in (dp(3),dp(3)) before
-FGLM (1.3-3x slower); 2000 sent the four-bar curve to the Hilbert-driven algorithm (5x slower)."""
+SMALL_BUCHBERGER = 3000
+"""For block and lexicographic orderings ``auto`` first tries Buchberger within a budget, in
+Python without the compiled extension: this many terms of reducers used (about 2.5 ms).  The
+mechanisms' many small eliminations finish there; larger computations go to FGLM
+(zero-dimensional ideals) or the Hilbert-driven algorithm.  Measured on benchmarks/cases.py
+(session 13): the four-bar coupler curve finishes within 3000 and the budget's failure costs
+2.4 ms on the block (dp(3),dp(2)) and the five-bar projection (5000: 4 ms).  Earlier: 20000
+wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and katsura-5 in (dp(3),dp(3))."""
+
+
+ATTEMPT_PRIMES = 6
+"""The compiled attempt gives up after this many primes (coefficients of about 90 bits): larger
+coefficients are left to the Hilbert-driven algorithm or FGLM."""
+
+
+COMPILED_BUDGET = 20000
+"""The same attempt with the compiled Buchberger over QQ (:func:`.hilbert_compiled.buchberger_qq`):
+terms summed in its reductions modulo a prime.  The four-bar coupler curve needs fewer than
+5000 (2.8 ms with the lift, the Python attempt 3.2 ms); failing at 20000 costs 1.3 ms on the
+block (dp(3),dp(2)) and the five-bar projection.  Over Z/p there is no attempt: the compiled
+Hilbert-driven algorithm is faster even on the four-bar curve (0.8 against 2.5 ms)."""
 
 
 F4_BUDGET = 4_000_000
@@ -306,12 +324,12 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
             basis = _degree_basis(gens, ring)
         if basis is None or first and not _zero_dimensional(basis):
             try:
-                return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
+                return _attempt(gens, ring)
             except TooLong:
                 # positive-dimensional ideals need the dp basis of the homogenized generators (the
                 # Hilbert series), which tells the dimension too: the ideal's own dp basis is
                 # computed only for FGLM
-                if basis is None and _finite_quotient(degree_leads(gens, ring, _dp_auto), ring.nvars):
+                if basis is None and _finite_quotient(degree_leads(gens, ring, _dp_homogeneous), ring.nvars):
                     basis = _degree_basis(gens, ring)
         try:
             if basis is None:
@@ -325,10 +343,24 @@ def _auto_global(gens: list[Poly], ring: PolyRing) -> list[Poly]:
                     return _finish(f4_modp(gens, ring, F4_BUDGET), ring, True)
                 except TooLong:
                     pass
-            return _finish(hilbert_driven(gens, ring, _dp_auto), ring, False)
+            return _finish(_hilbert_reduced(gens, ring), ring, True)
         except ModularFailure:
             pass
     return _finish(buchberger(gens, ring), ring, False)
+
+
+def _attempt(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    """Buchberger's algorithm within a budget (:class:`~.buchberger.TooLong` past it): compiled
+    and lifted over QQ (:data:`COMPILED_BUDGET`), none over Z/p where the compiled Hilbert-driven
+    algorithm beats it even on small systems, else in Python (:data:`SMALL_BUCHBERGER`)."""
+    if compiled_hilbert(ring):
+        if isinstance(ring.field, PrimeField):
+            raise TooLong
+        try:
+            return _finish(buchberger_qq(gens, ring, COMPILED_BUDGET, ATTEMPT_PRIMES), ring, True)
+        except ModularFailure:
+            raise TooLong from None
+    return _finish(buchberger(gens, ring, SMALL_BUCHBERGER), ring, False)
 
 
 def _zero_dimensional(basis: list[Poly]) -> bool:
@@ -371,9 +403,46 @@ def _dp_auto(gens: list[Poly], ring: PolyRing) -> list[Poly]:
     return standard_basis(gens, ring, AUTO)
 
 
+def _dp_homogeneous(gens: list[Poly], ring: PolyRing) -> list[Poly]:
+    """The ``dp`` basis of homogenized generators the Hilbert-driven algorithms start from: by
+    the compiled Buchberger where it is built (F4's matrices cost more on these small homogeneous
+    systems), else by ``auto``."""
+    return standard_basis(gens, ring, "buchberger-compiled" if compiled_hilbert(ring) else AUTO)
+
+
+def _buchberger_compiled(gens: list[Poly], ring: PolyRing) -> list[Terms]:
+    """The reduced basis by Buchberger's algorithm in C modulo p, over QQ lifted from primes
+    (:mod:`.hilbert_compiled`), else (or when the lift fails) in Python."""
+    if compiled_hilbert(ring):
+        try:
+            if isinstance(ring.field, PrimeField):
+                return buchberger_modp(gens, ring)
+            return buchberger_qq(gens, ring)
+        except ModularFailure:
+            pass
+    return _lead_first(_finish(buchberger(gens, ring), ring, False))
+
+
+def _lead_first(basis: list[Poly]) -> list[Terms]:
+    return [{p.lm(): p.terms[p.lm()], **p.terms} for p in basis]
+
+
 def _fglm(gens: list[Poly], ring: PolyRing) -> list[Terms]:
     """The engine ``fglm``: a ``dp`` basis by ``auto``, converted by FGLM."""
     return _convert(_degree_basis(gens, ring), ring)
+
+
+def _hilbert_reduced(gens: list[Poly], ring: PolyRing) -> list[Terms]:
+    """The reduced basis by the Hilbert-driven algorithm: compiled modulo p, over QQ lifted
+    from primes (:mod:`.hilbert_compiled`), else (or when the lift fails) in Python."""
+    if compiled_hilbert(ring):
+        try:
+            if isinstance(ring.field, PrimeField):
+                return hilbert_modp(gens, ring, _dp_homogeneous)
+            return hilbert_qq(gens, ring, _dp_homogeneous)
+        except ModularFailure:
+            pass
+    return _lead_first(_finish(hilbert_driven(gens, ring, _dp_homogeneous), ring, False))
 
 
 def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
@@ -417,6 +486,12 @@ register("fglm", _fglm, "a dp basis by auto, converted by FGLM to the ring's ord
          fields=("QQ", "Z/p"), returns_reduced=True, zero_dimensional=True)
 register("hilbert", lambda gens, ring: hilbert_driven(gens, ring, _dp_auto),
          "Hilbert-driven Buchberger: homogenize, Hilbert series from a dp basis, drop pairs once it is reached")
+register("buchberger-compiled", _buchberger_compiled,
+         "Buchberger's algorithm in C modulo p (normal strategy), over QQ lifted from primes and verified "
+         "(Python without a compiler)", returns_reduced=True)
+register("hilbert-compiled", _hilbert_reduced,
+         "Hilbert-driven Buchberger in C modulo p, over QQ lifted from primes and verified (Python without a compiler)",
+         returns_reduced=True)
 register("hilbert-f4", lambda gens, ring: hilbert_f4(gens, ring, _dp_auto),
          "Hilbert-driven F4: homogenize, Hilbert series from a dp basis, F4 (modular over QQ) until it is reached",
          fields=("QQ", "Z/p"))

@@ -32,22 +32,26 @@ def reference(gens, R):
     return reduce_basis(buchberger(gens, R), R)
 
 
+def no_attempt(gens, ring):
+    raise TooLong
+
+
 @pytest.fixture
 def calls(monkeypatch):
-    """Buchberger's first try skipped (budget 0), and the engines ``auto`` reaches recorded."""
+    """Buchberger's first try skipped, and the engines ``auto`` reaches recorded."""
     seen = []
-    f4, hd = E.f4_modp, E.hilbert_driven
+    f4, hd = E.f4_modp, E._hilbert_reduced
 
     def spy_f4(gens, ring, budget=float("inf")):
         seen.append(("f4", budget))
         return f4(gens, ring, budget)
 
-    def spy_hd(gens, ring, basis):
+    def spy_hd(gens, ring):
         seen.append(("hilbert", None))
-        return hd(gens, ring, basis)
-    monkeypatch.setattr(E, "SMALL_BUCHBERGER", 0)
+        return hd(gens, ring)
+    monkeypatch.setattr(E, "_attempt", no_attempt)
     monkeypatch.setattr(E, "f4_modp", spy_f4)
-    monkeypatch.setattr(E, "hilbert_driven", spy_hd)
+    monkeypatch.setattr(E, "_hilbert_reduced", spy_hd)
     clear_cache()
     yield seen
     clear_cache()

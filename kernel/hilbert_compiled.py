@@ -1,0 +1,323 @@
+"""The Hilbert-driven Buchberger algorithm (:mod:`.hilbert_driven`) modulo ``p < 2^31`` in
+compiled code (the optional C extension ``_bba``, kernel/_bba.c), and over QQ by a modular lift.
+
+Modulo ``p`` the homogenized generators, the basis and the pairs live in C as packed monomials
+(:class:`~.monomials.Packing`); Python keeps the Hilbert series (:class:`.hilbert_driven.Counter`)
+and asks C, degree by degree, to reduce S-polynomials until the degree has its new leading
+monomials.  C then dehomogenizes the basis and reduces it.  Without a series (:func:`buchberger_modp`,
+:func:`buchberger_qq`) the same code is Buchberger's algorithm with the sugar strategy: the ``dp``
+bases of the homogenized generators that give the series, and ``auto``'s budgeted attempt.
+
+Every run modulo ``p`` gives a Gröbner basis of the ideal modulo ``p`` whatever ``p``: with
+``h`` the Hilbert function of the quotient by ``J`` (the homogenized ideal over QQ), that of
+``J mod p`` is at least ``h`` in every degree (ranks only drop modulo ``p``), so a degree that
+found the new leading monomials the series asks for is complete, and one whose pairs ran out
+is complete as in Buchberger's algorithm.
+
+Over QQ (:func:`hilbert_qq`) the reduced bases at several primes of the same shape (monomials)
+are combined by the Chinese remainder theorem and lifted by rational reconstruction (:class:`Lift`:
+in C up to four primes, then :class:`.modular.Reconstructor`) until the next prime's basis agrees
+with the lift ``G``; a
+prime whose basis has another shape is dropped, and when more primes disagree than agree the
+first one was unlucky and the lift starts again from a later prime.  ``G mod q`` is then the
+reduced Gröbner basis of the ideal modulo a prime ``q`` not used to build ``G``, the
+probabilistic Gröbner basis check of :mod:`.modular` ("fast"); every generator is checked to
+top-reduce to 0 by ``G`` exactly over QQ, so ``G`` generates an ideal containing the ideal, and
+equal to it as soon as one prime used is lucky (as for :func:`.modular.f4_qq` on
+inhomogeneous ideals).
+"""
+from __future__ import annotations
+
+import random
+from array import array
+from functools import lru_cache
+from types import SimpleNamespace
+from typing import Any, Sequence
+
+import flint
+
+from .buchberger import Overflow, Reducer, pack
+from .coeffs import PrimeField, RationalField
+from .hilbert_driven import Basis, Counter, _homogenized
+from .modular import Lifter, ModularFailure, Reconstructor, _next_prime, primitive
+from .monomials import Packing, packing
+from .order import Exp, MonomialOrder
+from .poly import Poly, PolyRing
+
+try:
+    from ._bba import exponents, layout, min_degree, ratlift, reduced, state, step
+    _bba: SimpleNamespace | None = SimpleNamespace(exponents=exponents, layout=layout, min_degree=min_degree,
+                                                   ratlift=ratlift, reduced=reduced, state=state, step=step)
+except ImportError:  # pragma: no cover - no compiler at install time
+    _bba = None
+
+PRIMES = (1 << 30, 1 << 31)
+"""The primes of the lift (the compiled arithmetic takes ``p < 2^31``)."""
+
+MAX_PRIMES = 60
+"""The lift gives up (:class:`~.modular.ModularFailure`) after this many primes."""
+
+
+def usable(ring: PolyRing) -> bool:
+    """Whether the compiled algorithm applies: the extension is built and the field is QQ or
+    Z/p with ``p < 2^31``."""
+    f = ring.field
+    return _bba is not None and (isinstance(f, RationalField)
+                                 or isinstance(f, PrimeField) and f.characteristic < PRIMES[1])
+
+
+@lru_cache(maxsize=64)
+def _layout(pk: Packing):
+    nw = (pk.bits + 64) // 64
+    width = 8 * nw
+    return _bba.layout(nw, pk.guard.to_bytes(width, "little"), b"".join(u.to_bytes(width, "little") for u in pk.units),
+                       tuple(pk.eshifts), pk.dshift, pk.ebits)
+
+
+def _encode(pk: Packing, terms: dict[Exp, int], p: int) -> tuple[bytes, bytes]:
+    """The terms as (monomials, coefficients mod p) bytes, leading first (exponents may come as
+    flint integers: the packed monomial is made a Python int)."""
+    width = 8 * ((pk.bits + 64) // 64)
+    items = sorted(((int(pk.pack(e)), c % p) for e, c in terms.items()), reverse=True)
+    items = [(m, c) for m, c in items if c]
+    return b"".join(m.to_bytes(width, "little") for m, _ in items), array("I", [c for _, c in items]).tobytes()
+
+
+class _Series:
+    """The Hilbert series of the leading monomials found (:class:`.hilbert_driven.Counter`),
+    kept across the primes of one lift: primes of the same shape find the same leading monomials
+    in the same order, so each numerator is computed once.  A state is a node of the tree of
+    sequences of leading monomials met so far (0: none)."""
+
+    def __init__(self, target: list[int], nvars: int) -> None:
+        self.counters = [Counter(target, nvars)]
+        self.children: list[dict[Exp, int]] = [{}]
+
+    def add(self, node: int, m: Exp) -> int:
+        """The node after ``m`` joined the leading monomials of ``node``."""
+        child = self.children[node].get(m)
+        if child is None:
+            before = self.counters[node]
+            c = Counter(before.target, before.n)
+            c.q, c.gens = before.q, list(before.gens)
+            c.add(m)
+            child = self.children[node][m] = len(self.counters)
+            self.counters.append(c)
+            self.children.append({})
+        return child
+
+    def missing(self, node: int, d: int) -> tuple[int, bool]:
+        return self.counters[node].missing(d)
+
+
+class _AllPairs:
+    """No Hilbert series: every pair is reduced (Buchberger's algorithm, normal strategy)."""
+
+    def missing(self, node: int, d: int) -> tuple[int, bool]:
+        return 1 << 62, False
+
+    def add(self, node: int, m: Exp) -> int:
+        return 0
+
+
+def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyRing, series: _Series | _AllPairs,
+                  p: int, limit: int = 0):
+    """The reduced basis modulo ``p`` of the ideal of the homogenized generators ``hpolys``
+    (integer coefficients, none of whose leading coefficients ``p`` divides), dehomogenized when
+    ``hring`` is not ``ring``: (layout of ``ring``'s packing, list of (monomials, coefficients)
+    bytes) by increasing leading monomial.  :class:`~.buchberger.TooLong` once the reductions
+    have summed more than ``limit`` terms (if not 0)."""
+    maxdeg = max(64, 2 * max(sum(e) for t in hpolys for e in t))
+    while True:
+        hpk, pk = packing(hring.order, maxdeg), packing(ring.order, maxdeg)
+        if max(hpk.bits, pk.bits) >= 8 * 64:
+            raise ModularFailure("monomials too wide for the compiled Buchberger")
+        try:
+            st = _bba.state(_layout(hpk), p, [_encode(hpk, t, p) for t in hpolys], limit)
+            path = 0
+            unpack = hpk.unpack
+            while True:
+                d = _bba.min_degree(st)
+                if d < 0:
+                    break
+                need, done = series.missing(path, d)
+                if done:
+                    break
+                for lm in _bba.step(st, d, need):
+                    path = series.add(path, unpack(lm))
+            layout = _layout(pk)
+            return layout, _bba.reduced(st, None if hring is ring else layout)
+        except Overflow:
+            maxdeg *= 4
+
+
+def _as_dicts(layout, basis, coefficient) -> list[dict[Exp, Any]]:
+    return [dict(zip(_bba.exponents(layout, ms), map(coefficient, array("I", cs)))) for ms, cs in basis]
+
+
+def hilbert_modp(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
+    """The reduced Gröbner basis over Z/p (``p < 2^31``) by the compiled Hilbert-driven
+    algorithm, as ``{exponent: nmod}`` dicts by increasing leading monomial."""
+    hring, hgens, target = _homogenized(gens, ring, degree_basis)
+    p = ring.field.characteristic
+    layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in hgens], hring, ring,
+                                  _Series(target, hring.nvars), p)
+    return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
+
+
+def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
+    """The reduced Gröbner basis over QQ by the compiled Hilbert-driven algorithm modulo primes
+    and a lift (see the module docstring), as ``{exponent: fmpq}`` dicts by increasing leading
+    monomial; :class:`~.modular.ModularFailure` if no verified lift is found."""
+    hring, hgens, target = _homogenized(gens, ring, degree_basis)
+    hints = [primitive(g.terms) for g in hgens]
+    series = _Series(target, hring.nvars)
+    return _lift_qq(lambda p: _reduced_modp(hints, hring, ring, series, p), hints, hring, gens, ring)
+
+
+def buchberger_modp(gens: Sequence[Poly], ring: PolyRing, limit: int = 0) -> list[dict[Exp, Any]]:
+    """The reduced Gröbner basis over Z/p (``p < 2^31``) by Buchberger's algorithm in C (the
+    sugar strategy, the Gebauer–Möller criteria), as ``{exponent: nmod}`` dicts by increasing
+    leading monomial; :class:`~.buchberger.TooLong` past ``limit`` terms summed (if not 0)."""
+    p = ring.field.characteristic
+    layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in gens], ring, ring,
+                                  _AllPairs(), p, limit)
+    return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
+
+
+def buchberger_qq(gens: Sequence[Poly], ring: PolyRing, limit: int = 0, max_primes: int = MAX_PRIMES) -> list[dict[Exp, Any]]:
+    """:func:`buchberger_modp` over QQ, lifted from primes and verified as in the module
+    docstring.  For homogeneous generators ``J = <G>`` is then the ideal (the dimension count of
+    :mod:`.modular`: ``J`` contains the ideal and ``dim J_d = dim (I mod p)_d <= dim I_d``), for
+    others as soon as one prime used is lucky.  :class:`~.modular.ModularFailure` after
+    ``max_primes`` primes."""
+    ints = [primitive(g.terms) for g in gens]
+    return _lift_qq(lambda p: _reduced_modp(ints, ring, ring, _AllPairs(), p, limit), ints, ring, gens, ring,
+                    max_primes)
+
+
+def lift_primes(seed: int = 30011):
+    """An endless pseudo-random sequence of distinct primes in :data:`PRIMES`."""
+    rng = random.Random(seed)
+    seen = set()
+    while True:
+        q = _next_prime(rng.randrange(*PRIMES))
+        if q < PRIMES[1] and q not in seen:
+            seen.add(q)
+            yield q
+
+
+def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[Poly], ring: PolyRing,
+             max_primes: int = MAX_PRIMES):
+    """The reduced basis over QQ lifted from ``modp(p)`` (a layout and the reduced basis modulo
+    ``p`` as bytes) at primes not dividing the leading coefficients of the integer polynomials
+    ``ints`` of ``iring``, checked against ``gens`` (see the module docstring)."""
+    key = iring.order.key
+    leads = [t[max(t, key=key)] for t in ints]
+    stream = lift_primes()
+    used = 0
+    while used < max_primes:
+        shape = layout = None
+        lift = Lift()
+        misses = good = 0
+        while used < max_primes:
+            p = next(stream)
+            used += 1
+            if any(c % p == 0 for c in leads):
+                continue
+            lay, basis = modp(p)
+            ms = [m for m, _ in basis]
+            flat = b"".join(c for _, c in basis)
+            if shape is None:
+                shape, layout = ms, lay
+                sizes = [len(c) // 4 for _, c in basis]
+            elif ms != shape:
+                misses += 1
+                if misses > good + 2:
+                    break  # the first prime was unlucky: start again
+                continue
+            else:
+                good += 1
+                coefs = lift.checked(flat, p)
+                if coefs is not None:
+                    out, k = [], 0
+                    for m, size in zip(shape, sizes):
+                        out.append(dict(zip(_bba.exponents(layout, m), coefs[k:k + size])))
+                        k += size
+                    if reduce_to_zero(out, [g.terms for g in gens], ring.order):
+                        return out
+                    break
+            lift.add(flat, p)
+    raise ModularFailure("compiled Buchberger's lift: no verified basis")
+
+
+class Lift:
+    """Residues of the coefficients (one flat uint32 array per prime) lifted to QQ: in C while
+    the product of the primes fits 124 bits (four primes), then by :class:`.modular.Lifter` and
+    :class:`.modular.Reconstructor`."""
+
+    def __init__(self) -> None:
+        self.residues: list[bytes] = []
+        self.primes: list[int] = []
+        self.lifter: Lifter | None = None
+        self.rec: Reconstructor | None = None
+        self.candidate: list | None = None
+
+    def add(self, flat: bytes, p: int) -> None:
+        self.residues.append(flat)
+        self.primes.append(p)
+        if len(self.primes) > 4:
+            if self.lifter is None:
+                self.lifter, self.rec = Lifter(), Reconstructor([len(flat) // 4])
+                for r, q in zip(self.residues, self.primes):
+                    self.lifter.add([array("I", r).tolist()], q)
+            else:
+                self.lifter.add([array("I", flat).tolist()], p)
+            self.candidate = self.rec.attempt(self.lifter.values, self.lifter.m)
+
+    def checked(self, flat: bytes, q: int) -> list | None:
+        """The lift from the primes so far if it agrees with the residues modulo ``q``, else None."""
+        if not self.primes:
+            return None
+        if self.lifter is None:
+            lifted = _bba.ratlift(self.residues, self.primes, flat, q)
+            return None if lifted is None else list(map(flint.fmpq, *lifted))
+        if not self.rec.check([array("I", flat).tolist()], q) and self.candidate is not None:
+            return self.candidate[0]
+        return None
+
+
+def reduce_to_zero(basis: list[dict[Exp, Any]], polys: Sequence[dict[Exp, Any]], order: MonomialOrder) -> bool:
+    """Whether every polynomial top-reduces to 0 by ``basis`` (leading exponent first in each
+    dict) for ``order``, exactly: Buchberger's reducer (:class:`.buchberger.Reducer`) on packed
+    monomials, each basis element packed when it first serves (the generators' reductions use
+    few of them)."""
+    maxdeg = max(8, 2 * max(sum(e) for f in list(polys) + basis for e in f))
+    while True:
+        pk = packing(order, maxdeg)
+        try:
+            red = _LazyReducer(pk, basis)
+            return all(not red.reduce(pack(pk, f), full=False) for f in polys)
+        except Overflow:
+            maxdeg *= 4
+
+
+class _LazyReducer(Reducer):
+    """A :class:`.buchberger.Reducer` whose polynomials are packed when first used."""
+
+    def __init__(self, pk: Packing, basis: list[dict[Exp, Any]]) -> None:
+        super().__init__(pk)
+        self.pk = pk
+        self.items = [(pk.pack(next(iter(b))), b) for b in basis]
+        self.done: dict[int, dict[int, Any]] = {}
+
+    def find(self, m: int) -> tuple[int, dict[int, Any]] | None:
+        g = self.guard
+        mg = m | g
+        for k, (lm, p) in enumerate(self.items):
+            if (mg - lm) & g == g:
+                q = self.done.get(k)
+                if q is None:
+                    q = self.done[k] = pack(self.pk, p)
+                return lm, q
+        return None

@@ -1,0 +1,222 @@
+"""The compiled Hilbert-driven Buchberger algorithm (kernel/hilbert_compiled.py, kernel/_bba.c,
+engine ``hilbert-compiled``): modulo p and over QQ by a lift from primes, against Buchberger's
+reduced basis, the Python Hilbert-driven algorithm and Singular."""
+import random
+
+import pytest
+
+from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
+from mech.kernel import engines as E
+from mech.kernel import hilbert_compiled as HC
+from mech.kernel.buchberger import TooLong, buchberger, reduce_basis
+from mech.kernel.engines import clear_cache, standard_basis
+from mech.kernel.modular import ModularFailure
+from mech.kernel.poly import Poly
+from tests.util import ideal_blocks, parse_poly, run_singular
+
+needs_compiled = pytest.mark.skipif(HC._bba is None, reason="the C extension _bba is not built")
+
+FIVE_BAR = ["c1+c2+c3+c4-2", "s1+s2+s3+s4", "c1^2+s1^2-1", "c2^2+s2^2-1", "c3^2+s3^2-1", "c4^2+s4^2-1",
+            "y1-c1-s1", "y2-c2-s2", "y3-c3-s3"]  # benchmarks/cases.py's five-bar projection
+
+
+def ring_of(field, names, blocks):
+    return PolyRing(field, list(names), MonomialOrder([Block(k, n) for k, n in blocks]))
+
+
+def random_ideal(R, rng, count, degree=3, terms=4):
+    n = R.nvars
+    gens = []
+    for _ in range(count):
+        t = {}
+        for _ in range(terms):
+            e = [0] * n
+            for _ in range(rng.randint(1, degree)):
+                e[rng.randrange(n)] += 1
+            t[tuple(e)] = R.field(rng.randint(-9, 9) or 1)
+        gens.append(Poly(R, t))
+    return gens
+
+
+def reference(gens, R):
+    return reduce_basis(buchberger(gens, R), R)
+
+
+BLOCKS = [(("dp", 2), ("dp", 2)), (("lp", 4),), (("dp", 1), ("lp", 3)), (("dp", 3), ("dp", 1))]
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003), GF(2147483629)])
+@pytest.mark.parametrize("blocks", BLOCKS)
+def test_random_ideals_match_buchberger(field, blocks):
+    rng = random.Random(f"{field}{blocks}")
+    R = ring_of(field, "abcd", blocks)
+    for _ in range(4):
+        gens = random_ideal(R, rng, rng.randint(2, 3))
+        clear_cache()
+        assert [g.terms for g in standard_basis(gens, R, "hilbert-compiled")] == reference(gens, R)
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_each_basis_element_leads_with_its_leading_monomial(field):
+    """``returns_reduced``: every dict starts with its leading term, as the entry point expects."""
+    R = ring_of(field, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    basis = E._hilbert_reduced(gens, R)
+    assert all(next(iter(b)) == max(b, key=R.order.key) for b in basis)
+    assert [R.order.key(next(iter(b))) for b in basis] == sorted(R.order.key(next(iter(b))) for b in basis)
+
+
+@needs_compiled
+def test_five_bar_projection_matches_the_python_hilbert_driven_algorithm():
+    R = ring_of(QQ, ["c1", "s1", "c2", "s2", "c3", "s3", "c4", "s4", "y1", "y2", "y3"], (("dp", 8), ("dp", 3)))
+    gens = [parse_poly(R, t) for t in FIVE_BAR]
+    clear_cache()
+    ours = standard_basis(gens, R, "hilbert-compiled")
+    clear_cache()
+    assert ours == standard_basis(gens, R, "hilbert")
+    assert len(ours) == 35 and sum(len(g.terms) for g in ours) == 8018
+
+
+@needs_compiled
+def test_a_prime_dividing_a_leading_coefficient_is_skipped():
+    """The first prime of the lift divides the leading coefficient: the lift goes on without it."""
+    p = next(HC.lift_primes())
+    R = ring_of(QQ, "xyz", (("dp", 1), ("dp", 2)))
+    gens = [parse_poly(R, f"{p}*x^2-y*z+1"), parse_poly(R, "x*y-z^2"), parse_poly(R, "y^3-x-3")]
+    clear_cache()
+    assert [g.terms for g in standard_basis(gens, R, "hilbert-compiled")] == reference(gens, R)
+
+
+def test_without_the_extension_the_python_algorithm_answers(monkeypatch):
+    R = ring_of(QQ, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    monkeypatch.setattr(HC, "_bba", None)
+    assert not HC.usable(R)
+    clear_cache()
+    G = standard_basis(gens, R, "hilbert-compiled")
+    assert [g.terms for g in G] == reference(gens, R)
+    assert all(g._lm == max(g.terms, key=R.order.key) for g in G)
+
+
+@needs_compiled
+@pytest.mark.singular
+def test_block_and_lex_eliminations_match_singular():
+    gens = ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]
+    orders = [(("dp", 3), ("dp", 2)), (("dp", 1), ("dp", 4)), (("lp", 5),)]
+    script = "option(redSB);\n" + "".join(
+        f"ring r = {p}, (x,y,z,u,v), ({','.join(f'{k}({n})' for k, n in o)}); short = 0; "
+        f"ideal i = {', '.join(gens)}; std(i); kill r;\n" for o in orders for p in (0, 32003))
+    blocks = ideal_blocks(run_singular(script))
+    assert len(blocks) == 2 * len(orders)
+    k = 0
+    for o in orders:
+        for field in (QQ, GF(32003)):
+            R = ring_of(field, "xyzuv", o)
+            clear_cache()
+            ours = standard_basis([parse_poly(R, t) for t in gens], R, "hilbert-compiled")
+            theirs = sorted((p.monic() for p in (parse_poly(R, t) for t in blocks[k]) if not p.is_zero()),
+                            key=lambda p: R.order.key(p.lm()))
+            assert ours == theirs, (o, field)
+            k += 1
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_compiled_buchberger_on_homogeneous_ideals_matches_buchberger(field):
+    """The engine buchberger-compiled (all pairs, no Hilbert series): the dp bases the
+    Hilbert-driven algorithms start from."""
+    rng = random.Random(f"homogeneous {field}")
+    R = ring_of(field, "abcde", (("dp", 5),))
+    for _ in range(4):
+        gens = []
+        for _ in range(rng.randint(2, 4)):
+            d = rng.randint(2, 3)
+            t = {}
+            for _ in range(4):
+                e = [0] * 5
+                for _ in range(d):
+                    e[rng.randrange(5)] += 1
+                t[tuple(e)] = R.field(rng.randint(1, 9))
+            gens.append(Poly(R, t))
+        clear_cache()
+        assert [g.terms for g in standard_basis(gens, R, "buchberger-compiled")] == reference(gens, R)
+
+
+@needs_compiled
+def test_coefficients_past_four_primes_are_lifted_in_python():
+    """Coefficients of ~150 bits need more primes than the compiled lift (four below 2^31) takes."""
+    R = ring_of(QQ, "xyz", (("dp", 1), ("dp", 2)))
+    big = 3 ** 95
+    gens = [parse_poly(R, f"x^2-{big}*y*z+1"), parse_poly(R, f"x*y-{big + 2}*z^2"), parse_poly(R, "y^3-x-3")]
+    clear_cache()
+    assert [g.terms for g in standard_basis(gens, R, "hilbert-compiled")] == reference(gens, R)
+
+
+@needs_compiled
+def test_the_exact_check_refuses_a_basis_missing_an_element():
+    R = ring_of(QQ, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    basis = E._hilbert_reduced(gens, R)
+    polys = [g.terms for g in gens]
+    assert HC.reduce_to_zero(basis, polys, R.order)
+    assert not HC.reduce_to_zero(basis[:-1], polys, R.order)
+
+
+@needs_compiled
+def test_the_compiled_hilbert_numerator_is_the_python_one():
+    from mech.kernel import hilbert as H
+    rng = random.Random(7)
+    for _ in range(200):
+        n = rng.randint(1, 6)
+        lms = [tuple(rng.randint(0, 4) for _ in range(n)) for _ in range(rng.randint(0, 8))]
+        assert H.first_numerator(lms, n) == H._trim(H._numerator(H.minimal_monomials(lms)))
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_compiled_buchberger_with_sugar_on_inhomogeneous_ideals(field):
+    for blocks in BLOCKS:
+        rng = random.Random(f"sugar {field} {blocks}")
+        R = ring_of(field, "abcd", blocks)
+        gens = random_ideal(R, rng, 3)
+        clear_cache()
+        assert [g.terms for g in standard_basis(gens, R, "buchberger-compiled")] == reference(gens, R)
+
+
+@needs_compiled
+def test_the_compiled_attempt_keeps_to_its_budget():
+    """auto's attempt over QQ: the four-bar's elimination finishes within COMPILED_BUDGET, the
+    block system's does not (TooLong, then the Hilbert-driven algorithm)."""
+    four_bar = ring_of(QQ, ["c1", "s1", "c2", "s2", "c3", "s3", "x", "y"], (("dp", 6), ("dp", 2)))
+    fb = [parse_poly(four_bar, t) for t in ["4+3*c3-2*c1-4*c2", "3*s3-2*s1-4*s2", "x-2*c1-2*c2+s2",
+                                            "y-2*s1-2*s2-c2", "c1^2+s1^2-1", "c2^2+s2^2-1", "c3^2+s3^2-1"]]
+    assert HC.buchberger_qq(fb, four_bar, E.COMPILED_BUDGET) == reference(fb, four_bar)
+    R = ring_of(QQ, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    with pytest.raises(TooLong):
+        HC.buchberger_qq(gens, R, E.COMPILED_BUDGET)
+
+
+@needs_compiled
+def test_the_compiled_attempt_gives_up_on_tall_coefficients():
+    """A lex basis with coefficients of 1600 bits: the attempt stops after ATTEMPT_PRIMES primes."""
+    R = ring_of(QQ, "abcd", (("lp", 4),))
+    rng = random.Random("sugar QQ")
+    random_ideal(R, rng, 3)  # the dp(2),dp(2) ideal of the test above
+    gens = random_ideal(R, rng, 3)
+    with pytest.raises(ModularFailure):
+        HC.buchberger_qq(gens, R, 0, E.ATTEMPT_PRIMES)
+
+
+@needs_compiled
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_exponents_given_as_flint_integers(field):
+    """Exponents may come as fmpz (from flint's polynomials, as in primdecGTZ over parameters)."""
+    import flint
+    R = ring_of(field, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    wide = [Poly(R, {tuple(flint.fmpz(a) for a in e): c for e, c in g.terms.items()}) for g in gens]
+    clear_cache()
+    assert standard_basis(wide, R, "hilbert-compiled") == standard_basis(gens, R, "hilbert")
