@@ -6,9 +6,12 @@
    the trace is dropped; when too many do, ``p0`` was unlucky and a new prime learns.  Primes
    dividing a leading coefficient of ``F`` are skipped.
 3. The residues of the coefficients of the reduced basis are combined by the Chinese remainder
-   theorem and lifted to rationals by rational reconstruction (:class:`Reconstructor`); every
-   lifted coefficient is checked against the later primes, and a complete lift is accepted
-   once the next prime agrees with all of it.
+   theorem and lifted to rationals by rational reconstruction (:class:`Reconstructor`), tried
+   from the first prime on (small coefficients need no second one); every lifted coefficient
+   is checked against the later primes, and a complete lift is accepted once the next prime
+   agrees with all of it.  While a complete lift is at hand, that prime replays the run in
+   full (step 4): if it agrees, it is the fresh prime ``q`` of step 4's check modulo ``q``,
+   made on the way (it is drawn after every prime the lift used, so independently of ``G``).
 4. The lift ``G`` is verified (:func:`verify_basis`):
 
    * exactly over QQ: every generator top-reduces to 0 by ``G``, so ``I = <F>`` lies in
@@ -50,6 +53,7 @@ import flint
 
 from .errors import NotSupported
 from .f4 import F4, PackingOverflow, initial_degree, is_groebner
+from .f4_rows import compiled
 from .f4_trace import Trace, TraceMismatch, replay, replay_full
 from .monomials import Packing, nonnegative_matrix
 from .poly import support_mask
@@ -202,11 +206,11 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
                 maxdeg = 2 * maxdeg + 1
         if result is None:
             continue
-        shape, G, trace = result
+        shape, G, trace, certified = result
         exps = {mo: P.unpack(mo) for mo in {mo for ms in shape for mo in ms}}  # a monomial once
         basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
-        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact",
-                                            lambda q: _replayed_basis_agrees(trace, coefs, G, q)):
+        replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
+        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed):
             return basis
     raise ModularFailure("modular F4: no verified basis after 3 attempts (use another engine)")
 
@@ -222,7 +226,12 @@ def _pack(ints: list[dict], P: Packing):
 
 def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int = 0,
              counter: Callable | None = None):
-    """(monomials, rational coefficients) of the lifted basis, or None to start again."""
+    """``(monomials, rational coefficients, trace, certified)`` of the lifted basis, or None to
+    start again.  A lift is tried from the first prime on (small coefficients need no more)
+    and accepted once a further prime agrees with all of it; while a lift is at hand, that
+    prime replays the trace in full (:func:`.f4_trace.replay_full`), and ``certified`` says
+    that it did: the lift modulo that prime is then the reduced Gröbner basis of the ideal
+    modulo it, the check of :func:`verify_basis` modulo a fresh prime, made on the way."""
     used = 0
     while used < max_primes:
         p0 = next(stream)
@@ -240,7 +249,7 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
         lifter = Lifter()
         lifter.add([cs for _, cs in basis], p0)
         rec = Reconstructor([len(cs) for _, cs in basis])
-        candidate = None
+        candidate = rec.attempt(lifter.values, lifter.m)
         misses = good = 0
         while used < max_primes:
             p = next(stream)
@@ -248,7 +257,7 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
             if any(cs[0] % p == 0 for cs in coefs):
                 continue
             try:
-                res = replay(trace, [[c % p for c in cs] for cs in coefs], p)
+                res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p, candidate is not None)
             except TraceMismatch:
                 misses += 1
                 if misses > good + 2:
@@ -256,10 +265,22 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
                 continue
             good += 1
             if not rec.check(res, p) and candidate is not None:
-                return shape, candidate, trace
+                return shape, candidate, trace, full
             lifter.add(res, p)
             candidate = rec.attempt(lifter.values, lifter.m)
     return None
+
+
+def _replay(trace: Trace, polys: list[list[int]], p: int, full: bool) -> tuple[list[list[int]], bool]:
+    """The basis modulo ``p`` by the trace, and whether by a full replay (tried when ``full``;
+    a prime that keeps the rows the run used but not the rank of every matrix still serves
+    the lift)."""
+    if full and trace.full and compiled(p):
+        try:
+            return replay_full(trace, polys, p), True
+        except TraceMismatch:
+            pass
+    return replay(trace, polys, p), False
 
 
 def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool = False,
@@ -352,33 +373,48 @@ def _is_groebner_mod(polys, order, q: int) -> bool:
 class ExactReducer:
     """Top-reduction over QQ by a reduced basis, with python-flint's ``fmpq_mpoly``.
 
-    ``x^e`` is mapped to ``y^(W e, e)`` in ``QQ[y_1..y_2n]`` with the lexicographic ordering:
-    a ring embedding that maps leading terms to leading terms (``W`` is the ordering's
-    nonnegative matrix), so flint does the arithmetic and finds leading terms."""
+    Orderings flint has (``lp``, ``Dp``, ``dp`` as one block) are flint's own (``lex``,
+    ``deglex``, ``degrevlex``: the same comparisons, variables in the ring's order).  Any
+    other ``x^e`` is mapped to ``y^(W e, e)`` in ``QQ[y_1..y_2n]`` with the lexicographic
+    ordering: a ring embedding that maps leading terms to leading terms (``W`` is the
+    ordering's nonnegative matrix), so flint does the arithmetic and finds leading terms."""
 
     def __init__(self, basis: list[dict], order) -> None:
         n = self.n = order.nvars
-        self.W = W = nonnegative_matrix(order)
-        self.ctx = flint.fmpq_mpoly_ctx.get(("y", 2 * n), "lex")
-        self.xctx = flint.fmpq_mpoly_ctx.get(("x", n), "lex")
-        ys = self.ctx.gens()
-        self.images = []
-        for j in range(n):
-            m = ys[n + j]
-            for i in range(n):
-                if W[i][j]:
-                    m = m * ys[i] ** W[i][j]
-            self.images.append(m)
-        self.polys = [self.image(b) for b in basis]
-        self.lms = [p.monomial(0)[n:] for p in self.polys]
+        blocks = order.blocks
+        native = _FLINT_ORDERINGS.get(blocks[0].kind) if len(blocks) == 1 and blocks[0].size == n else None
+        if native is not None:
+            self.W = None
+            self.lead = 0  # the leading exponent starts at this position of flint's exponent
+            self.ctx = flint.fmpq_mpoly_ctx.get(("x", n), native)
+            self.polys = [self.ctx.from_dict(b) for b in basis]
+        else:
+            self.lead = n
+            self.W = W = nonnegative_matrix(order)
+            self.ctx = flint.fmpq_mpoly_ctx.get(("y", 2 * n), "lex")
+            self.xctx = flint.fmpq_mpoly_ctx.get(("x", n), "lex")
+            ys = self.ctx.gens()
+            self.images = []
+            for j in range(n):
+                m = ys[n + j]
+                for i in range(n):
+                    if W[i][j]:
+                        m = m * ys[i] ** W[i][j]
+                self.images.append(m)
+            self.polys = [self.image(b) for b in basis]
+        self.lms = [p.monomial(0)[self.lead:] for p in self.polys]
         self.masks = [support_mask(e) for e in self.lms]
 
     def image(self, terms: dict):
         """The image of a polynomial (substitution of monomials, done by flint)."""
+        if self.W is None:
+            return self.ctx.from_dict(terms)
         return self.xctx.from_dict(terms).compose(*self.images, ctx=self.ctx)
 
     def _term(self, u, c):
         W = self.W
+        if W is None:
+            return self.ctx.from_dict({u: c})
         return self.ctx.from_dict({tuple([sum(w * x for w, x in zip(r, u)) for r in W]) + tuple(u): c})
 
     def reduces_to_zero(self, terms: dict) -> bool:
@@ -386,7 +422,7 @@ class ExactReducer:
         return self._top_reduce(f)
 
     def _top_reduce(self, f) -> bool:
-        n, lms, masks, polys = self.n, self.lms, self.masks, self.polys
+        n, lms, masks, polys = self.lead, self.lms, self.masks, self.polys
         while not f.is_zero():
             e = f.monomial(0)[n:]
             m = support_mask(e)
@@ -409,6 +445,10 @@ class ExactReducer:
             if not self._top_reduce(s):
                 return False
         return True
+
+
+_FLINT_ORDERINGS = {"lp": "lex", "Dp": "deglex", "dp": "degrevlex"}
+"""Singular's orderings flint has (on one block of all variables)."""
 
 
 def _pairs(lms: list) -> list[tuple[int, int, tuple]]:

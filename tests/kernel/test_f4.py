@@ -193,7 +193,7 @@ def test_full_replay_certifies_the_lift_modulo_a_fresh_prime():
     ints = [primitive(g.terms) for g in katsura(R, 4)]
     P = Packing(R.order, 31)
     shapes, coefs = _pack(ints, P)
-    shape, G, trace = _modular(shapes, coefs, P, primes(), 100)
+    shape, G, trace, _ = _modular(shapes, coefs, P, primes(), 100)
     q = 1000003
     compiled = f4_rows.compiled(q)
     assert _replayed_basis_agrees(trace, coefs, G, q) is (True if compiled else None)
@@ -214,6 +214,6 @@ def test_a_large_run_keeps_no_full_trace(monkeypatch):
     ints = [primitive(g.terms) for g in katsura(R, 4)]
     P = Packing(R.order, 31)
     shapes, coefs = _pack(ints, P)
-    shape, G, trace = _modular(shapes, coefs, P, primes(), 100)
+    shape, G, trace, _ = _modular(shapes, coefs, P, primes(), 100)
     assert not trace.full and all(st.full is None for st in trace.steps)
     assert _replayed_basis_agrees(trace, coefs, G, 1000003) is None
