@@ -50,6 +50,14 @@ class Trace:
     shape: list[list[int]] = field(default_factory=list)
     full: bool = True  # whether every step kept all its rows (see :func:`replay_full`)
 
+    def full_cost(self) -> float:
+        """The entries a full replay reduces per entry of a replay (inf without a full trace)."""
+        if not self.full:
+            return float("inf")
+        kept = sum(len(_codes(r)) for st in self.steps for r in [r for _, r in st.reducers] + [r for r, _ in st.rows])
+        every = sum(len(_codes(r)) for st in self.steps if st.full for r in st.full[0] + st.full[1])
+        return every / max(kept, 1)
+
 
 def replay(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
     """The coefficients mod ``p`` of the reduced basis recorded in ``trace`` (monomials in
@@ -147,3 +155,8 @@ def _values_on(vec: Vectors, x: int, m: int, slots: list[int]) -> list[int]:
     if m - vals.count(0) != len(out) - out.count(0):
         raise TraceMismatch("a polynomial has a term the recorded run did not have")
     return out
+
+
+def _codes(row: RowSpec | CodedRow):
+    """A recorded row's entries (their pivots and slots)."""
+    return row.codes if isinstance(row, CodedRow) else row.piv_t + row.np_t

@@ -10,8 +10,9 @@
    from the first prime on (small coefficients need no second one); every lifted coefficient
    is checked against the later primes, and a complete lift is accepted once the next prime
    agrees with all of it.  While a complete lift is at hand, that prime replays the run in
-   full (step 4): if it agrees, it is the fresh prime ``q`` of step 4's check modulo ``q``,
-   made on the way (it is drawn after every prime the lift used, so independently of ``G``).
+   full (step 4) when this is cheap or the lift likely right: if it agrees, it is the fresh
+   prime ``q`` of step 4's check modulo ``q``, made on the way (it is drawn after every prime
+   the lift used, so independently of ``G``).
 4. The lift ``G`` is verified (:func:`verify_basis`):
 
    * exactly over QQ: every generator top-reduces to 0 by ``G``, so ``I = <F>`` lies in
@@ -59,6 +60,10 @@ from .monomials import Packing, nonnegative_matrix
 from .poly import support_mask
 
 PRIME_RANGE = (1 << 27, 1 << 28)
+FULL_REPLAY_COST = 3.0
+"""A lift not yet likely right is confirmed by a full replay (the check modulo a fresh prime on
+the way) when that reduces at most this many times the entries of a replay (else by a replay,
+the check then by another prime)."""
 
 
 class ModularFailure(NotSupported):
@@ -125,6 +130,7 @@ class Reconstructor:
     def reset(self) -> None:
         self.i = self.j = 0
         self.den = 1
+        self.confident = False  # the last complete lift's coefficients are far below the bound
 
     def check(self, residues: list[list[int]], p: int) -> bool:
         """Rewind to the first lifted coefficient that disagrees with the residues mod p;
@@ -164,7 +170,12 @@ class Reconstructor:
                 j += 1
             i, j = i + 1, 0
         self.i, self.j, self.den = i, j, den
-        return [[flint.fmpq(n, d) for n, d in row] for row in out]
+        lift = [[flint.fmpq(n, d) for n, d in row] for row in out]
+        # far below the bound a wrong lift is unlikely: a residue mod m is n/d with |n|, d < 2^h
+        # for fewer than 2^(2h+1) residues, here at most m/32 (a wrong lift of many is far rarer)
+        height = max([c.height_bits() for row in lift for c in row], default=0)
+        self.confident = 2 * height + 6 < m.bit_length()
+        return lift
 
 
 class Lifter:
@@ -228,8 +239,10 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
              counter: Callable | None = None):
     """``(monomials, rational coefficients, trace, certified)`` of the lifted basis, or None to
     start again.  A lift is tried from the first prime on (small coefficients need no more)
-    and accepted once a further prime agrees with all of it; while a lift is at hand, that
-    prime replays the trace in full (:func:`.f4_trace.replay_full`), and ``certified`` says
+    and accepted once a further prime agrees with all of it.  While a lift is at hand, that
+    prime replays the trace in full (:func:`.f4_trace.replay_full`) if this costs at most
+    :data:`FULL_REPLAY_COST` replays or the lift's coefficients lie far below the
+    reconstruction's bound (a likely right lift), and ``certified`` says
     that it did: the lift modulo that prime is then the reduced Gröbner basis of the ideal
     modulo it, the check of :func:`verify_basis` modulo a fresh prime, made on the way."""
     used = 0
@@ -250,6 +263,7 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
         lifter.add([cs for _, cs in basis], p0)
         rec = Reconstructor([len(cs) for _, cs in basis])
         candidate = rec.attempt(lifter.values, lifter.m)
+        cheap_full = trace.full_cost() <= FULL_REPLAY_COST
         misses = good = 0
         while used < max_primes:
             p = next(stream)
@@ -257,7 +271,8 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
             if any(cs[0] % p == 0 for cs in coefs):
                 continue
             try:
-                res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p, candidate is not None)
+                res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p,
+                                    candidate is not None and (rec.confident or cheap_full))
             except TraceMismatch:
                 misses += 1
                 if misses > good + 2:
