@@ -372,6 +372,7 @@ done:
 
 PyObject *f4_layout(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *fglm_step(PyObject *self, PyObject *args);  /* kernel/_fglm.c */
+extern PyTypeObject PairsType;  /* kernel/_f4pairs.c */
 
 static PyMethodDef methods[] = {
     {"reduce", f4_reduce, METH_VARARGS, "Reduce one F4 matrix modulo p (see the module source)."},
@@ -385,5 +386,16 @@ static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_f4rows", "F4 row re
 
 PyMODINIT_FUNC PyInit__f4rows(void)
 {
-    return PyModule_Create(&module);
+    if (PyType_Ready(&PairsType) < 0)
+        return NULL;
+    PyObject *m = PyModule_Create(&module);
+    if (m == NULL)
+        return NULL;
+    Py_INCREF(&PairsType);
+    if (PyModule_AddObject(m, "Pairs", (PyObject *)&PairsType) < 0) {
+        Py_DECREF(&PairsType);
+        Py_DECREF(m);
+        return NULL;
+    }
+    return m;
 }

@@ -32,6 +32,7 @@ import flint
 
 from .buchberger import TooLong
 from .f4_rows import LAYOUT, CodedRow, Flat, Packed, Plan, compiled
+from .f4_pairs import pair_set
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing
@@ -65,7 +66,8 @@ class F4:
         self.tdeg: list[int] = []
         self.sugar: list[int] = []
         self.active: list[bool] = []   # basis elements usable as reducers and in new pairs
-        self.pairs: list[tuple[int, int, int, int]] = []  # (sugar, lcm, i, j); j < 0: an input row
+        # (key, lcm, i, j), j < 0: an input row; the key is the weighted degree or the sugar
+        self.pairs = pair_set(packing, packing.graded and counter is None)
         self.divisor: dict[int, int] = {}  # monomial -> reducer, or -1 - (basis size scanned)
         self.trace = Trace(len(polys)) if record else None
         self.packed = Packed(packing) if compiled(p) and LAYOUT is not None else None
@@ -81,7 +83,7 @@ class F4:
         for ms, cs in polys:
             k = self._add(ms, cs, is_basis=False)
             key = packing.weighted_degree(ms[0]) if packing.graded and counter is None else self.tdeg[k]
-            self.pairs.append((key, ms[0], k, -1))
+            self.pairs.push(key, k)
 
     # -- bookkeeping -------------------------------------------------------------------
     def _add(self, ms: list[int], cs: list[int], is_basis: bool, sugar: int | None = None) -> int:
@@ -95,71 +97,13 @@ class F4:
         self.tdeg.append(td)
         self.sugar.append(td if sugar is None else sugar)
         self.active.append(is_basis)
+        self.pairs.add(int(ms[0]), self.sugar[-1])
         return len(self.mons) - 1
 
     def _update(self, h: int) -> None:
-        """Add basis element ``h``: new pairs and pruned old ones (Gebauer–Möller).  The
-        criteria compare lcms by their exponent fields only (word-parallel, no repacking)."""
-        P = self.P
-        g, eg, eall = P.guard, P.eguard, P.eall
-        lcm_e = P.lcm_e
-        mons, active = self.mons, self.active
-        H = mons[h][0]
-        He = H & eall
-        Hg, shift, fill = He | eg, P.ebits - 1, (1 << P.ebits) - 1
-        cands = []
-        for i in range(h):
-            if active[i]:
-                ei = mons[i][0] & eall
-                sel = (((Hg - ei) & eg) >> shift) * fill  # lcm_e inline: the fields where H >= l_i
-                Le = (He & sel) | (ei & ~sel)
-                cands.append((Le, i, Le == ei + He))
-        # criterion M: drop (i,h) if another new pair's lcm properly divides its lcm;
-        # criterion F: among equal lcms keep one, a coprime one if there is one.  In increasing
-        # order of the exponent fields (lexicographic, so divisors come first) it suffices to
-        # test the lcms kept so far.
-        cands.sort()
-        kept: dict[int, tuple] = {}
-        for c in cands:
-            Le = c[0]
-            prev = kept.get(Le)
-            if prev is not None:
-                if c[2] and not prev[2]:
-                    kept[Le] = c
-                continue
-            Lg = Le | eg
-            for d in kept:
-                if (Lg - d) & eg == eg:
-                    break
-            else:
-                kept[Le] = c
-        degree, sugar, graded = P.degree, self.sugar, P.graded
-        dH, sh = degree(H), sugar[h]
-        new = []
-        for Le, i, coprime in kept.values():
-            if coprime:
-                continue
-            li = mons[i][0]
-            L = P.lcm(li, H)
-            dL = degree(L)
-            if dL > P.maxdeg:
-                raise PackingOverflow
-            key = P.weighted_degree(L) if graded and self.counter is None else max(sugar[i] + dL - degree(li), sh + dL - dH)
-            new.append((key, L, i, h))
-        # criterion B on the old pairs
-        old = []
-        for pr in self.pairs:
-            s, L, i, j = pr
-            if j >= 0 and ((L | g) - H) & g == g:
-                Le = L & eall
-                if lcm_e(mons[i][0], H) != Le and lcm_e(mons[j][0], H) != Le:
-                    continue
-            old.append(pr)
-        self.pairs = old + new
-        for i in range(h):
-            if active[i] and ((mons[i][0] | g) - H) & g == g:
-                active[i] = False
-        active[h] = True
+        """Add basis element ``h``: new pairs and pruned old ones (Gebauer–Möller)."""
+        if not self.pairs.update(h, self.active):
+            raise PackingOverflow
 
     # -- one matrix ----------------------------------------------------------------------
     def _find_reducer(self, x: int, reducers: list[tuple[int, int]]) -> int:
@@ -368,9 +312,8 @@ class F4:
 
     def _step(self) -> bool:
         """Process the pairs of lowest degree; returns False when 1 is in the ideal."""
-        d = min(pr[0] for pr in self.pairs)
-        sel = [pr for pr in self.pairs if pr[0] == d]
-        self.pairs = [pr for pr in self.pairs if pr[0] != d]
+        sel = self.pairs.take()
+        d = sel[0][0]
         pivots, crows = self._pair_rows(sel)
         if not crows:
             return True
@@ -412,13 +355,13 @@ class F4:
         counter = self.counter
         while self.pairs:
             if counter is not None:  # Hilbert-driven (Traverso): skip what reduces to zero
-                d = min(pr[0] for pr in self.pairs)
+                d = self.pairs.lowest()
                 need, done = counter.missing(d)
                 if done:
-                    self.pairs = []
+                    self.pairs.clear()
                     break
                 if need <= 0:
-                    self.pairs = [pr for pr in self.pairs if pr[0] != d]
+                    self.pairs.drop(d)
                     continue
             if not self._step():
                 if self.trace is not None:
@@ -465,7 +408,7 @@ def is_groebner(polys: Sequence[Row], packing: Packing, p: int) -> bool:
     eng = F4([], packing, p)
     for ms, cs in polys:
         eng._update(eng._add(ms, cs, True))
-    pivots, crows = eng._pair_rows(eng.pairs)
+    pivots, crows = eng._pair_rows(eng.pairs.everything())
     if not crows:
         return True
     if compiled(p):

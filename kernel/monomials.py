@@ -82,6 +82,7 @@ class Packing:
         self.weight_shifts, self.weight_widths = shifts[:n], widths[:n]  # the fields of W e
         # a graded ordering (first weight row positive): its weighted degree is the top field
         self.graded = all(v > 0 for v in W[0])
+        self.first_weights = tuple(W[0])
         self.wshift = shifts[0]
         self.guard = sum(1 << (s + w - 1) for s, w in zip(shifts, widths))
         self.eshifts = shifts[n + 1:]
