@@ -25,6 +25,7 @@ prime below ``2^31`` runs there in one call, on the same rows.
 """
 from __future__ import annotations
 
+from functools import partial
 from itertools import islice
 from typing import Sequence
 
@@ -62,7 +63,7 @@ class F4:
         self.vec = Vectors(p)
         self.mons: list[list[int]] = []
         self.coefs: list[list[int]] = []
-        self.neg: list[list[int]] = []
+        self.neg: list[list[int]] | None = None if compiled(p) else []  # -c mod p, for the Python rows
         self.tdeg: list[int] = []
         self.sugar: list[int] = []
         self.active: list[bool] = []   # basis elements usable as reducers and in new pairs
@@ -88,12 +89,17 @@ class F4:
     # -- bookkeeping -------------------------------------------------------------------
     def _add(self, ms: list[int], cs: list[int], is_basis: bool, sugar: int | None = None) -> int:
         P = self.P
-        td = max(map(P.degree, ms))
-        if not P.fits(td):
+        if P.degree_first:  # the leading monomial has the largest total degree
+            td = (ms[0] >> P.dshift) & P.emask
+        else:
+            dshift, emask = P.dshift, P.emask
+            td = max([(m >> dshift) & emask for m in ms])
+        if td > P.maxdeg:
             raise PackingOverflow
         self.mons.append(ms)
         self.coefs.append(cs)
-        self.neg.append([self.p - c for c in cs])
+        if self.neg is not None:
+            self.neg.append([self.p - c for c in cs])
         self.tdeg.append(td)
         self.sugar.append(td if sugar is None else sugar)
         self.active.append(is_basis)
@@ -222,8 +228,8 @@ class F4:
                          want: list[int] = (), stop: bool = False):
         """:meth:`_matrix` by the compiled kernel (:mod:`.f4_rows`): returns the pivot columns,
         the non-pivot monomials, the kernel's ``(used, E, W)`` (``W``: the reduced tails of the
-        reducers with leading monomials ``want``) and, when recording, the rows as
-        :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
+        reducers with leading monomials ``want``) and, when recording, a callable giving the
+        rows as :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
         if self.packed is not None:
             return self._matrix_packed(crow_specs, pivots, want, stop)
         rowmons, pivcols, nonpivot, where = self._layout(crow_specs, pivots)
@@ -245,7 +251,7 @@ class F4:
                 codes = list(map(get, islice(rowmons[spec], start, None)))
                 flat.add(codes, coefs[spec[0]][start:])
                 recorded.append(CodedRow(spec[0], start, codes))
-            recorded = (recorded[:K], recorded[K:])
+            recorded = partial(tuple, (recorded[:K], recorded[K:]))
         out = flat.reduce(self.p, m, K, [where[x] for x in want], stop)
         return pivcols, nonpivot, out, recorded
 
@@ -271,25 +277,10 @@ class F4:
         result = flat.reduce(self.p, len(nonpivot), K, want, stop)
         recorded = None
         if self.trace is not None:
-            off, col = flat.off, flat.col  # rows keep array slices of the column codes
-            rows = [CodedRow(k, 1, col[off[j]:off[j + 1]]) for j, k in enumerate(redk)]
-            rows += [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]]) for i, (k, _) in enumerate(crow_specs)]
-            recorded = (rows[:K], rows[K:])
-            self._plan = Plan.of_flat(flat, redk + [k for k, _ in crow_specs], [1] * K + [0] * len(crow_specs))
+            crowk = [k for k, _ in crow_specs]
+            recorded = partial(_coded_rows, flat.off, flat.col, redk, crowk)
+            self._plan = Plan.of_flat(flat, redk + crowk, [1] * K + [0] * len(crow_specs))
         return pivcols, nonpivot, result, recorded
-
-    def _record(self, K: int, m: int, red_specs: list[RowSpec], rows: list[tuple[RowSpec, int]],
-                new: list[list[int]], roots: Sequence[int] = ()) -> Step:
-        """A trace step keeping only the reducers the given rows (and reducers ``roots``)
-        need, transitively."""
-        needed = set()
-        stack = list(roots) + [j for spec, _ in rows for j in spec.piv_j]
-        while stack:
-            j = stack.pop()
-            if j not in needed:
-                needed.add(j)
-                stack.extend(red_specs[j].piv_j)
-        return Step(K, m, [(j, red_specs[j]) for j in sorted(needed)], rows, new)
 
     def _pair_rows(self, sel: list[tuple[int, int, int, int]]):
         """The rows of the selected pairs: per lcm one row becomes its reducer, the others
@@ -318,27 +309,26 @@ class F4:
         if not crows:
             return True
         if compiled(self.p):
-            pivcols, nonpivot, (used, E, _), specs = self._matrix_compiled(crows, pivots)
+            pivcols, nonpivot, (used, E, _), rows_of = self._matrix_compiled(crows, pivots)
             m = len(nonpivot)
             new = [(slots, vals) for _, slots, vals in E]  # increasing leading monomial
-            if specs is not None:
-                red_specs, c_specs = specs
         else:
             T, pivcols, nonpivot, E, used, red_specs, c_specs = self._matrix(crows, pivots)
             m = len(nonpivot)
             new = [support(self.vec, E[s0], m) for s0 in sorted(E)]  # increasing leading monomial
+            rows_of = partial(tuple, (red_specs, c_specs))
         if self.trace is not None:
-            rows = [(c_specs[r], s0) for r, s0 in used]
-            step = self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new])
+            step = Step(len(pivcols), m, rows_of, used, [s for s, _ in new])
             if self.trace.full and self.work <= FULL_TRACE_WORK:  # every row, for a full replay
-                step.full = (red_specs, c_specs, used)
+                step.keeps_full = True
                 if self._plan is not None:  # the rows as the kernel reduced them, for full replays
                     step.plans["full"] = self._plan
-            elif self.trace.full:  # too large to keep: no full replay, the rows are let go
-                self.trace.full = False
-                for st in self.trace.steps:
-                    st.full = None
-                    st.plans.pop("full", None)
+            else:
+                step.settle()
+                if self.trace.full:  # too large to keep: no full replay, the rows are let go
+                    self.trace.full = False
+                    for st in self.trace.steps:
+                        st.let_go()
             self.trace.steps.append(step)
         for slots, vals in new:
             k = self._add([nonpivot[s] for s in slots], vals, True, d)
@@ -374,19 +364,23 @@ class F4:
         """Tail-reduce the minimal basis with one more back substitution."""
         g = self.P.guard
         mons = self.mons
-        lms = [mons[k][0] for k in range(len(mons)) if self.active[k]]
-        keep = [k for k in range(len(mons)) if self.active[k]
-                and not any(((mons[k][0] | g) - lm) & g == g and lm != mons[k][0] for lm in lms)]
-        keep.sort(key=lambda k: mons[k][0])
+        keep: list[int] = []  # the minimal elements by increasing leading monomial (divisors come first)
+        for k in sorted((k for k in range(len(mons)) if self.active[k]), key=lambda k: mons[k][0]):
+            xg = mons[k][0] | g
+            for j in keep:
+                if (xg - mons[j][0]) & g == g:
+                    break
+            else:
+                keep.append(k)
         pivots = {mons[k][0]: (k, 0) for k in keep}
         lead = [mons[k][0] for k in keep]
         if compiled(self.p):
-            pivcols, nonpivot, (_, _, tails), specs = self._matrix_compiled([], pivots, lead)
-            red_specs = specs[0] if specs else None
+            pivcols, nonpivot, (_, _, tails), rows_of = self._matrix_compiled([], pivots, lead)
         else:
             T, pivcols, nonpivot, _, _, red_specs, _ = self._matrix([], pivots)
             column = dict(zip(pivcols, range(len(pivcols))))
             tails = [support(self.vec, T[column[lm]], len(nonpivot)) for lm in lead]
+            rows_of = partial(tuple, (red_specs, []))
         m = len(nonpivot)
         where = dict(zip(pivcols, range(len(pivcols))))
         out, final = [], []
@@ -395,7 +389,7 @@ class F4:
             out.append(([lm] + [nonpivot[s] for s in slots], [1] + vals))
             final.append((j, slots))
         if self.trace is not None:
-            self.trace.final = self._record(len(pivcols), m, red_specs, [], [], [j for j, _ in final])
+            self.trace.final = Step(len(pivcols), m, rows_of, [], [], [j for j, _ in final])
             self.trace.final_out = final
             self.trace.shape = [ms for ms, _ in out]
         return out
@@ -484,3 +478,12 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
     exps = {m: P.unpack(m) for m in {m for ms, _ in out for m in ms}}
     nmod = flint.nmod
     return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in out]
+
+
+def _coded_rows(off, col, redk: list[int], crowk: list[int]) -> tuple[list[CodedRow], list[CodedRow]]:
+    """The rows of a matrix laid out flat (offsets, column codes) as :class:`~.f4_rows.CodedRow`
+    (array slices of the codes): the reducers by pivot id (of basis elements ``redk``), then the
+    pair rows (of ``crowk``)."""
+    K = len(redk)
+    reds = [CodedRow(k, 1, col[off[j]:off[j + 1]]) for j, k in enumerate(redk)]
+    return reds, [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]]) for i, k in enumerate(crowk)]

@@ -9,7 +9,7 @@ path.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Sequence
+from typing import Callable, Sequence
 
 from .f4_rows import CodedRow, as_spec, compiled, replay_step
 from .f4_vectors import RowSpec, Vectors, echelon
@@ -19,21 +19,75 @@ class TraceMismatch(Exception):
     """The prime does not follow the recorded computation (unlucky prime or unlucky trace)."""
 
 
-@dataclass
 class Step:
     """One recorded matrix: ``K`` pivot columns, ``m`` slots, the needed reducers (by pivot
     id), the pair rows that raised the rank with the slot of their new pivot, and for each new
-    polynomial (appended to the basis in this order) its slots, leading one first."""
+    polynomial (appended to the basis in this order) its slots, leading one first.
 
-    K: int
-    m: int
-    reducers: list[tuple[int, RowSpec | CodedRow]]
-    rows: list[tuple[RowSpec | CodedRow, int]]
-    new: list[list[int]]
-    # every reducer (by pivot id), every pair row and the rows that raised the rank with their
-    # pivot slots, for a full replay (None: not kept)
-    full: tuple[list, list, list[tuple[int, int]]] | None = None
-    plans: dict = field(default_factory=dict)  # the rows laid out for replays (f4_rows.Plan)
+    ``rows_of()`` gives every row of the matrix (the reducers by pivot id, the pair rows), and
+    ``used`` the pair rows that raised the rank with their pivot slots; the needed reducers are
+    those these rows (and the reducers ``roots``) need, transitively.  Both are worked out when
+    first asked for: a run whose replays are all full (:func:`replay_full`, from the recorded
+    plans) never needs them.  ``full``: every reducer, every pair row and ``used``, for a full
+    replay (None: not kept); ``plans``: the rows laid out for replays (f4_rows.Plan)."""
+
+    def __init__(self, K: int, m: int, rows_of: Callable[[], tuple[list, list]], used: list,
+                 new: list[list[int]], roots: Sequence[int] = ()) -> None:
+        self.K, self.m, self.new, self.used, self.roots = K, m, new, used, roots
+        self.keeps_full = False
+        self.plans: dict = {}
+        self._rows_of = rows_of
+        self._every: tuple[list, list] | None = None
+        self._reducers: list[tuple[int, RowSpec | CodedRow]] | None = None
+        self._rows: list[tuple[RowSpec | CodedRow, int]] | None = None
+
+    def every(self) -> tuple[list, list]:
+        """Every row: the reducers by pivot id and the pair rows."""
+        if self._every is None:
+            self._every, self._rows_of = self._rows_of(), None
+        return self._every
+
+    @property
+    def full(self) -> tuple[list, list, list] | None:
+        return (*self.every(), self.used) if self.keeps_full else None
+
+    @property
+    def reducers(self) -> list[tuple[int, RowSpec | CodedRow]]:
+        if self._reducers is None:
+            self.settle()
+        return self._reducers
+
+    @property
+    def rows(self) -> list[tuple[RowSpec | CodedRow, int]]:
+        if self._rows is None:
+            self.settle()
+        return self._rows
+
+    def settle(self) -> None:
+        """Work out the needed reducers and the rows that raised the rank; unless the step keeps
+        every row, let the others go."""
+        if self._rows is not None:
+            return
+        red, crows = self.every()
+        rows = [(crows[r], s0) for r, s0 in self.used]
+        needed = set()
+        stack = list(self.roots) + [j for spec, _ in rows for j in spec.piv_j]
+        while stack:
+            j = stack.pop()
+            if j not in needed:
+                needed.add(j)
+                stack.extend(red[j].piv_j)
+        self._reducers = [(j, red[j]) for j in sorted(needed)]
+        self._rows = rows
+        if not self.keeps_full:
+            self._every = ([], [])
+
+    def let_go(self) -> None:
+        """Keep only what a replay needs (no full replay)."""
+        self.settle()
+        self.keeps_full = False
+        self._every = ([], [])
+        self.plans.pop("full", None)
 
 
 @dataclass
@@ -55,7 +109,7 @@ class Trace:
         if not self.full:
             return float("inf")
         kept = sum(len(_codes(r)) for st in self.steps for r in [r for _, r in st.reducers] + [r for r, _ in st.rows])
-        every = sum(len(_codes(r)) for st in self.steps if st.full for r in st.full[0] + st.full[1])
+        every = sum(len(_codes(r)) for st in self.steps for r in st.every()[0] + st.every()[1])
         return every / max(kept, 1)
 
 

@@ -263,7 +263,7 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
         lifter.add([cs for _, cs in basis], p0)
         rec = Reconstructor([len(cs) for _, cs in basis])
         candidate = rec.attempt(lifter.values, lifter.m)
-        cheap_full = trace.full_cost() <= FULL_REPLAY_COST
+        cheap_full = None  # whether a full replay costs little (worked out when needed)
         misses = good = 0
         while used < max_primes:
             p = next(stream)
@@ -271,6 +271,8 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
             if any(cs[0] % p == 0 for cs in coefs):
                 continue
             try:
+                if candidate is not None and not rec.confident and cheap_full is None:
+                    cheap_full = trace.full_cost() <= FULL_REPLAY_COST
                 res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p,
                                     candidate is not None and (rec.confident or cheap_full))
             except TraceMismatch:

@@ -83,6 +83,7 @@ class Packing:
         # a graded ordering (first weight row positive): its weighted degree is the top field
         self.graded = all(v > 0 for v in W[0])
         self.first_weights = tuple(W[0])
+        self.degree_first = all(v == 1 for v in W[0])  # the ordering compares total degrees first
         self.wshift = shifts[0]
         self.guard = sum(1 << (s + w - 1) for s, w in zip(shifts, widths))
         self.eshifts = shifts[n + 1:]
