@@ -178,9 +178,9 @@ def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[i
         raise TraceMismatch("no full trace to replay")
     coefs: list[list[int]] = [list(c) for c in polys]
     for st in trace.steps:
-        reducers, rows, used_then = st.full
+        reducers, rows = ([], []) if "full" in st.plans else st.every()  # the plan holds the rows
         used, E, _ = replay_step(list(enumerate(reducers)), rows, st, coefs, p, key="full")
-        if used != used_then:
+        if used != st.used:
             raise TraceMismatch("a matrix reduced differently")
         got = {s0: (slots, vals) for s0, slots, vals in E}
         for slots in st.new:

@@ -304,6 +304,7 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
                  replayed: Callable[[int], bool | None] | None = None) -> bool:
     """Check a lifted reduced basis (see the module docstring).
 
+    ``basis``: dicts with the leading exponent first (as :func:`f4_qq` builds them).
     Always exact: every generator top-reduces to 0 over QQ.  The Gröbner basis property is
     checked exactly over QQ (``exact``), or else modulo one fresh prime ``q``: by
     ``replayed(q)`` when given (True: ``G mod q`` is the reduced basis of the ideal mod
@@ -311,7 +312,7 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
     by the Gebauer–Möller criteria."""
     if len(basis) == 1 and len(basis[0]) == 1 and not any(next(iter(basis[0]))):
         return True  # the unit ideal: nothing to check beyond the lift
-    red = ExactReducer(basis, ring.order)
+    red = ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
     if exact:
         if not red.is_groebner():
             return False
@@ -396,7 +397,7 @@ class ExactReducer:
     ordering: a ring embedding that maps leading terms to leading terms (``W`` is the
     ordering's nonnegative matrix), so flint does the arithmetic and finds leading terms."""
 
-    def __init__(self, basis: list[dict], order) -> None:
+    def __init__(self, basis: list[dict], order, leads: list[tuple] | None = None) -> None:
         n = self.n = order.nvars
         blocks = order.blocks
         native = _FLINT_ORDERINGS.get(blocks[0].kind) if len(blocks) == 1 and blocks[0].size == n else None
@@ -404,6 +405,11 @@ class ExactReducer:
             self.W = None
             self.lead = 0  # the leading exponent starts at this position of flint's exponent
             self.ctx = flint.fmpq_mpoly_ctx.get(("x", n), native)
+            if leads is not None:  # the elements (leading exponents known) go to flint when first needed
+                self.basis, self.lms = basis, list(leads)
+                self.polys = [None] * len(basis)
+                self.masks = [support_mask(e) for e in self.lms]
+                return
             self.polys = [self.ctx.from_dict(b) for b in basis]
         else:
             self.lead = n
@@ -422,6 +428,12 @@ class ExactReducer:
         self.lms = [p.monomial(0)[self.lead:] for p in self.polys]
         self.masks = [support_mask(e) for e in self.lms]
 
+    def _poly(self, k: int):
+        """Basis element ``k`` in flint."""
+        if self.polys[k] is None:
+            self.polys[k] = self.ctx.from_dict(self.basis[k])
+        return self.polys[k]
+
     def image(self, terms: dict):
         """The image of a polynomial (substitution of monomials, done by flint)."""
         if self.W is None:
@@ -439,7 +451,7 @@ class ExactReducer:
         return self._top_reduce(f)
 
     def _top_reduce(self, f) -> bool:
-        n, lms, masks, polys = self.lead, self.lms, self.masks, self.polys
+        n, lms, masks = self.lead, self.lms, self.masks
         while not f.is_zero():
             e = f.monomial(0)[n:]
             m = support_mask(e)
@@ -449,11 +461,12 @@ class ExactReducer:
             else:
                 return False
             u = tuple([a - b for a, b in zip(e, lm)])
-            f = f - self._term(u, f.leading_coefficient()) * polys[k]
+            f = f - self._term(u, f.leading_coefficient()) * self._poly(k)
         return True
 
     def is_groebner(self) -> bool:
         """Every S-pair left by the Gebauer–Möller criteria top-reduces to 0 over QQ."""
+        self.polys = [self._poly(k) for k in range(len(self.polys))]
         for i, j, L in _pairs(self.lms):
             ui = tuple([a - b for a, b in zip(L, self.lms[i])])
             uj = tuple([a - b for a, b in zip(L, self.lms[j])])
