@@ -6,14 +6,20 @@
  * Rows are given flat: row r has the entries off[r] .. off[r+1]-1 with column codes col[]
  * (c >= 0: pivot column c, whose reducer is unit-leading; c < 0: non-pivot slot ~c) and
  * coefficients val[] (below p).  The first nred rows are reducers (leading entry left out),
- * filling the pivot ids ids[r] (0 <= id < K) in an order where every pivot a row refers to is
- * filled before; each becomes its reduced tail T = N - sum c_j T_j over its pivot entries.
- * The other rows (pair rows) are reduced the same way and brought to reduced echelon form
- * exactly as kernel/f4_vectors.echelon does (same operations in the same order).
+ * filling the pivot ids ids[r] (0 <= id < K, increasing with the columns' monomials) in
+ * increasing order, so every pivot a reducer refers to lies below its own and is filled
+ * before.  Either each reducer becomes its reduced tail T = N - sum c_j T_j over its pivot
+ * entries (dense in the slots; combine) and the pair rows are reduced the same way, or, when
+ * that is expected to cost more (sequential_pays), each pair row is reduced by the reducer rows
+ * one pivot at a time from the highest down (reduce_seq): the same reduced rows, the row minus
+ * the unique combination of reducers clearing its pivot entries.  The reduced pair rows are
+ * brought to reduced echelon form exactly as kernel/f4_vectors.echelon does (same operations
+ * in the same order).
  * Returns used = [(pair row index, pivot slot)], E = [(pivot slot, slots, values)] by
  * increasing pivot slot (slots highest first), W = [(slots, values)] of the reduced tails
  * of the pivot ids in want.  With stop set, returns as soon as a pair row does not reduce
- * to zero (used then holds that row).
+ * to zero (used then holds that row).  An optional last argument forces the dense tails (0) or
+ * the pivot-by-pivot reduction (1) (tests; -1, the default: the cheaper by estimate).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -91,6 +97,55 @@ static Py_ssize_t combine(const Table *T, uint64_t *acc, Py_ssize_t m, uint64_t 
     return b;
 }
 
+/* Row r reduced by the reducer rows one pivot at a time, from the highest pivot down (the
+ * rows' tails as given, not reduced first): accP[0..K) and acc[0..m) take the pivot and the
+ * non-pivot entries; pivot j with a nonzero entry c subtracts c times reducer row rowof[j], whose
+ * pivot entries all lie below j and whose values are below p (both checked by the caller).  Leaves the reduced row (non-pivot slots, entries < p) in
+ * acc[0..b) and returns b (highest nonzero + 1), -1 on a bad pivot reference.  The same numbers
+ * as combine(): a row minus the unique combination of reducers clearing its pivot entries.
+ * Entries stay below p^2 (p^2 + p^2 < 2^63 for p < 2^31) by one conditional subtraction. */
+static Py_ssize_t reduce_seq(const int64_t *rowof, Py_ssize_t K, uint64_t *accP, uint64_t *acc, Py_ssize_t m,
+                             uint64_t p, const int64_t *off, const int32_t *col, const uint64_t *val,
+                             Py_ssize_t r, int32_t below)
+{
+    uint64_t p2 = p * p;
+    Py_ssize_t top = below < 0 ? K : below;  /* pivots a reducer row may refer to lie below its own */
+    memset(accP, 0, (size_t)top * sizeof(uint64_t));
+    memset(acc, 0, (size_t)m * sizeof(uint64_t));
+    for (int64_t e = off[r]; e < off[r + 1]; e++) {
+        int32_t c = col[e];
+        uint64_t v = val[e] % p;
+        if (c < 0) {
+            if ((Py_ssize_t)(~c) >= m)
+                return -1;
+            acc[~c] += v;
+        } else {
+            if (c >= top || rowof[c] < 0)
+                return -1;
+            accP[c] += v;
+        }
+    }
+    for (Py_ssize_t j = top - 1; j >= 0; j--) {
+        uint64_t c = accP[j] % p;
+        if (!c)
+            continue;
+        uint64_t f = p - c;
+        int64_t rj = rowof[j];
+        for (int64_t e = off[rj]; e < off[rj + 1]; e++) {  /* (references checked by the caller) */
+            int32_t cc = col[e];
+            uint64_t *x = cc < 0 ? acc + ~cc : accP + cc;
+            uint64_t y = *x + f * val[e];
+            *x = y >= p2 ? y - p2 : y;
+        }
+    }
+    Py_ssize_t b = m;
+    for (Py_ssize_t s = 0; s < m; s++)
+        acc[s] %= p;
+    while (b > 0 && acc[b - 1] == 0)
+        b--;
+    return b;
+}
+
 static PyObject *support(const uint64_t *x, Py_ssize_t b)
 {
     PyObject *slots = PyList_New(0), *vals = PyList_New(0);
@@ -126,18 +181,36 @@ static uint64_t inverse(uint64_t a, uint64_t p)
     return (uint64_t)(t < 0 ? t + (int64_t)p : t);
 }
 
+/* Whether reducing the pair rows (and wanted tails) one pivot at a time (reduce_seq) is
+ * expected to cost less than reducing every reducer to a dense tail first (combine): at most,
+ * a row meets each reducer's entries once, against each pivot entry of the matrix meeting a
+ * dense tail of about m/2 slots (a quarter more for large primes, whose sums are normalized
+ * more often).  Measured on the matrices of benchmarks/cases.py (RESULTS.md, session 13). */
+static int sequential_pays(uint64_t p, Py_ssize_t m, Py_ssize_t nred, Py_ssize_t R, Py_ssize_t nwant,
+                           const int64_t *off, const int32_t *col)
+{
+    double piv = 0;
+    for (int64_t e = 0; e < off[R]; e++)
+        if (col[e] >= 0)
+            piv += 1;
+    double dense = piv * (double)m / 2 * (p >= (1u << 20) ? 1.25 : 1.0);
+    return (double)(R - nred + nwant) * (double)off[nred] < dense;
+}
+
 static PyObject *f4_reduce(PyObject *self, PyObject *args)
 {
     unsigned long long p_;
     Py_ssize_t m, K, nred;
-    int stop;
+    int stop, mode = -1;
     Py_buffer ids, off, col, val, want;
-    if (!PyArg_ParseTuple(args, "Knnny*y*y*y*y*p", &p_, &m, &K, &nred, &ids, &off, &col, &val, &want, &stop))
+    if (!PyArg_ParseTuple(args, "Knnny*y*y*y*y*p|i", &p_, &m, &K, &nred, &ids, &off, &col, &val, &want, &stop,
+                          &mode))
         return NULL;
     uint64_t p = p_;
     PyObject *result = NULL, *used = NULL, *E = NULL, *W = NULL;
     Table T = {NULL, NULL, K};
-    uint64_t *acc = NULL, **piv = NULL;
+    uint64_t *acc = NULL, **piv = NULL, *accP = NULL, *vmod = NULL;
+    int64_t *rowof = NULL;
     Py_ssize_t *pslot = NULL, npiv = 0;
     Py_ssize_t R = off.len / (Py_ssize_t)sizeof(int64_t) - 1;
     const int32_t *pid = ids.buf, *pcol = col.buf, *pwant = want.buf;
@@ -166,7 +239,38 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     }
     for (Py_ssize_t j = 0; j < K; j++)
         T.len[j] = -1;
-    for (Py_ssize_t r = 0; r < nred; r++) {
+    int seq = mode == 1 || (mode < 0 && sequential_pays(p, m, nred, R, nwant, poff, pcol));
+    if (seq) {
+        Py_ssize_t nent = (Py_ssize_t)poff[R];
+        rowof = malloc((size_t)(K ? K : 1) * sizeof(int64_t));
+        accP = malloc((size_t)(K ? K : 1) * sizeof(uint64_t));
+        vmod = malloc((size_t)(nent ? nent : 1) * sizeof(uint64_t));
+        if (!rowof || !accP || !vmod) {
+            PyErr_NoMemory();
+            goto done;
+        }
+        for (Py_ssize_t j = 0; j < K; j++)
+            rowof[j] = -1;
+        for (Py_ssize_t r = 0; r < nred; r++) {
+            if (pid[r] < 0 || pid[r] >= K) {
+                PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
+                goto done;
+            }
+            rowof[pid[r]] = r;
+        }
+        for (Py_ssize_t r = 0; r < nred; r++)  /* every reducer refers to filled pivots below its own */
+            for (int64_t e = poff[r]; e < poff[r + 1]; e++) {
+                int32_t c = pcol[e];
+                if (c >= 0 ? c >= pid[r] || rowof[c] < 0 : (Py_ssize_t)(~c) >= m) {
+                    PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
+                    goto done;
+                }
+            }
+        for (Py_ssize_t e = 0; e < nent; e++)
+            vmod[e] = pval[e] % p;
+        pval = vmod;
+    }
+    for (Py_ssize_t r = 0; r < nred && !seq; r++) {
         if ((r & 1023) == 1023 && PyErr_CheckSignals())
             goto done;  /* Ctrl-C, a time limit's signal: the handler's exception propagates */
         Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
@@ -190,7 +294,8 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     for (Py_ssize_t r = nred; r < R; r++) {
         if (((r - nred) & 255) == 255 && PyErr_CheckSignals())
             goto done;
-        Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
+        Py_ssize_t b = seq ? reduce_seq(rowof, K, accP, acc, m, p, poff, pcol, pval, r, -1)
+                           : combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
         if (b < 0) {
             PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
             goto done;
@@ -293,13 +398,22 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     }
     for (Py_ssize_t i = 0; i < nwant; i++) {
         int32_t j = pwant[i];
-        if (j < 0 || j >= K || T.len[j] < 0) {
+        if (j < 0 || j >= K || (seq ? rowof[j] < 0 : T.len[j] < 0)) {
             PyErr_SetString(PyExc_ValueError, "f4 rows: unknown pivot wanted");
             goto done;
         }
-        for (Py_ssize_t s = 0; s < T.len[j]; s++)
-            acc[s] = T.rows[j][s];
-        PyObject *sv = support(acc, T.len[j]);
+        Py_ssize_t b = T.len[j];
+        if (seq) {
+            b = reduce_seq(rowof, K, accP, acc, m, p, poff, pcol, pval, rowof[j], j);
+            if (b < 0) {
+                PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
+                goto done;
+            }
+        } else {
+            for (Py_ssize_t s = 0; s < b; s++)
+                acc[s] = T.rows[j][s];
+        }
+        PyObject *sv = support(acc, b);
         if (!sv || PyList_Append(W, sv)) {
             Py_XDECREF(sv);
             goto done;
@@ -319,6 +433,9 @@ done:
     }
     free(pslot);
     free(acc);
+    free(accP);
+    free(vmod);
+    free(rowof);
     PyBuffer_Release(&ids);
     PyBuffer_Release(&off);
     PyBuffer_Release(&col);

@@ -1,6 +1,7 @@
 """The compiled F4 row kernel (kernel/_f4rows.c through kernel/f4_rows.py) against the
 pure-Python linear algebra of kernel/f4_vectors.py on random matrices."""
 import random
+from array import array
 
 import pytest
 
@@ -45,40 +46,67 @@ def by_python(p, K, m, rows):
     return used, [(s0, *support(vec, E[s0], m)) for s0 in sorted(E)], [support(vec, t, m) for t in T]
 
 
-def by_kernel(p, K, m, rows, stop=False):
+MODES = {"chosen": -1, "dense tails": 0, "pivot by pivot": 1}  # the kernel's two reductions, or its choice
+
+
+def by_kernel(p, K, m, rows, stop=False, mode=-1):
     flat = Flat()
     flat.ids.extend(range(K))
     for cs, piv, slots in rows:
         flat.add(piv + [~s for s in slots], cs)
-    return flat.reduce(p, m, K, list(range(K)), stop)
+    if mode < 0:
+        return flat.reduce(p, m, K, list(range(K)), stop)
+    return f4_rows.KERNEL(p, m, K, len(flat.ids), flat.ids, flat.off, flat.col, flat.val,
+                          array("i", range(K)), stop, mode)
 
 
+@pytest.mark.parametrize("mode", MODES.values(), ids=MODES.keys())
 @pytest.mark.parametrize("p", [2, 3, 32003, (1 << 28) - 57, (1 << 31) - 1])
-def test_random_matrices(p):
+def test_random_matrices(p, mode):
     rng = random.Random(p)
     for trial in range(40):
         K, m, npair = rng.randrange(0, 40), rng.randrange(1, 30), rng.randrange(0, 12)
         rows = random_matrix(rng, p, K, m, npair)
-        used, E, W = by_kernel(p, K, m, rows)
+        used, E, W = by_kernel(p, K, m, rows, mode=mode)
         assert (used, E, W) == by_python(p, K, m, rows)
-        first, _, _ = by_kernel(p, K, m, rows, stop=True)
+        first, _, _ = by_kernel(p, K, m, rows, stop=True, mode=mode)
         assert first == used[:1]
 
 
-def test_dense_rows_need_intermediate_reduction():
+@pytest.mark.parametrize("mode", MODES.values(), ids=MODES.keys())
+def test_dense_rows_need_intermediate_reduction(mode):
     """More products per slot than fit 64 bits at once: the kernel reduces on the way."""
     p, K, m = (1 << 31) - 1, 30, 8
     rows = [([p - 1] * (j + m), list(range(j)), list(range(m))) for j in range(K)]
     rows.append(([p - 2] * (K + m), list(range(K)), list(range(m))))
-    assert by_kernel(p, K, m, rows) == by_python(p, K, m, rows)
+    assert by_kernel(p, K, m, rows, mode=mode) == by_python(p, K, m, rows)
 
 
-def test_bad_arguments_are_errors():
+def test_the_kernel_chooses_each_reduction_somewhere():
+    """Many sparse reducers and few pair rows go pivot by pivot, dense reducers with many pair
+    rows by dense tails (the choice only changes the cost: the results are equal above)."""
+    p, rng = 32003, random.Random(5)
+    few = random_matrix(rng, p, 400, 300, 2)
+    many = [([1] * (j + 40), list(range(j)), list(range(40))) for j in range(40)]
+    many += [([2] * 80, list(range(40)), list(range(40)))] * 40
+    for rows, K, m in [(few, 400, 300), (many, 40, 40)]:
+        assert by_kernel(p, K, m, rows) == by_kernel(p, K, m, rows, mode=0) == by_kernel(p, K, m, rows, mode=1)
+
+
+@pytest.mark.parametrize("mode", MODES.values(), ids=MODES.keys())
+def test_bad_arguments_are_errors(mode):
     flat = Flat()
     flat.ids.append(0)
     flat.add([1], [1])  # refers to a pivot not yet filled
     with pytest.raises(ValueError):
-        flat.reduce(32003, 2, 2)
+        f4_rows.KERNEL(32003, 2, 2, 1, flat.ids, flat.off, flat.col, flat.val, array("i"), False, mode)
+    flat = Flat()
+    flat.ids.extend([0, 1])
+    flat.add([1], [1])  # reducer 0 refers to pivot 1 above it
+    flat.add([], [])
+    flat.add([0, ~0], [1, 1])
+    with pytest.raises(ValueError):
+        f4_rows.KERNEL(32003, 2, 2, 2, flat.ids, flat.off, flat.col, flat.val, array("i"), False, mode)
     with pytest.raises(ValueError):
         Flat().reduce(1 << 31, 2, 0)
     assert not f4_rows.compiled(1 << 31)
