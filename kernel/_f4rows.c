@@ -487,6 +487,118 @@ done:
     return out;
 }
 
+/* subplan(off, col, rk, rstart, K, rows, roots) -> (ids, off, col, rk, rstart): from the plan of
+ * a whole matrix (reducer j is row j for the pivots 0..K-1, then the pair rows; kernel/f4_rows.Plan's
+ * arrays), the plan of the pair rows `rows` (int32, numbered from 0 after the reducers) and of the
+ * reducers they and the pivots `roots` need, transitively: the needed pivot ids increasing, their
+ * rows, then the pair rows in the order given (all arrays as bytes, as Plan holds them). */
+static PyObject *f4_subplan(PyObject *self, PyObject *args)
+{
+    Py_buffer off, col, rk, rstart, rows, roots;
+    Py_ssize_t K;
+    if (!PyArg_ParseTuple(args, "y*y*y*y*ny*y*", &off, &col, &rk, &rstart, &K, &rows, &roots))
+        return NULL;
+    PyObject *result = NULL;
+    const int64_t *po = off.buf;
+    const int32_t *pc = col.buf, *pk = rk.buf, *ps = rstart.buf, *pr = rows.buf, *pt = roots.buf;
+    Py_ssize_t R = off.len / (Py_ssize_t)sizeof(int64_t) - 1;
+    Py_ssize_t nrows = rows.len / (Py_ssize_t)sizeof(int32_t), nroots = roots.len / (Py_ssize_t)sizeof(int32_t);
+    char *need = NULL;
+    int32_t *stack = NULL, *ids = NULL, *ocol = NULL, *ork = NULL, *ors = NULL;
+    int64_t *ooff = NULL;
+    if (K < 0 || K > R || col.len / (Py_ssize_t)sizeof(int32_t) < po[R] || rk.len / 4 < R || rstart.len / 4 < R) {
+        PyErr_SetString(PyExc_ValueError, "f4 subplan: bad arguments");
+        goto done;
+    }
+    need = calloc((size_t)(K ? K : 1), 1);
+    stack = malloc((size_t)(K + 1) * sizeof(int32_t));
+    if (!need || !stack) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    Py_ssize_t top = 0, total = 0;
+    for (Py_ssize_t i = 0; i < nroots + nrows; i++) {  /* the roots, then the pair rows' pivots */
+        Py_ssize_t q = i < nroots ? -1 : K + pr[i - nroots];
+        if (q >= R || (q < 0 && (pt[i] < 0 || pt[i] >= K)) || (q >= 0 && q < K)) {
+            PyErr_SetString(PyExc_ValueError, "f4 subplan: bad row");
+            goto done;
+        }
+        if (q < 0) {
+            if (!need[pt[i]]) {
+                need[pt[i]] = 1;
+                stack[top++] = pt[i];
+            }
+            continue;
+        }
+        total += po[q + 1] - po[q];
+        for (int64_t e = po[q]; e < po[q + 1]; e++)
+            if (pc[e] >= 0 && pc[e] < K && !need[pc[e]]) {
+                need[pc[e]] = 1;
+                stack[top++] = pc[e];
+            }
+    }
+    while (top > 0) {
+        int32_t j = stack[--top];
+        for (int64_t e = po[j]; e < po[j + 1]; e++)
+            if (pc[e] >= 0 && pc[e] < K && !need[pc[e]]) {
+                need[pc[e]] = 1;
+                stack[top++] = pc[e];
+            }
+    }
+    Py_ssize_t nids = 0;
+    for (Py_ssize_t j = 0; j < K; j++)
+        if (need[j]) {
+            nids++;
+            total += po[j + 1] - po[j];
+        }
+    Py_ssize_t n = nids + nrows;
+    ids = malloc((size_t)(nids + 1) * sizeof(int32_t));
+    ooff = malloc((size_t)(n + 1) * sizeof(int64_t));
+    ocol = malloc((size_t)(total + 1) * sizeof(int32_t));
+    ork = malloc((size_t)(n + 1) * sizeof(int32_t));
+    ors = malloc((size_t)(n + 1) * sizeof(int32_t));
+    if (!ids || !ooff || !ocol || !ork || !ors) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    Py_ssize_t a = 0, w = 0;
+    ooff[0] = 0;
+    for (Py_ssize_t i = 0, j = 0; i < n; i++) {
+        Py_ssize_t q;
+        if (i < nids) {
+            while (!need[j])
+                j++;
+            ids[i] = (int32_t)j;
+            q = j++;
+        } else {
+            q = K + pr[i - nids];
+        }
+        for (int64_t e = po[q]; e < po[q + 1]; e++)
+            ocol[w++] = pc[e];
+        ooff[++a] = w;
+        ork[i] = pk[q];
+        ors[i] = ps[q];
+    }
+    result = Py_BuildValue("(y#y#y#y#y#)", (const char *)ids, (Py_ssize_t)(nids * 4), (const char *)ooff,
+                           (Py_ssize_t)((n + 1) * 8), (const char *)ocol, (Py_ssize_t)(w * 4),
+                           (const char *)ork, (Py_ssize_t)(n * 4), (const char *)ors, (Py_ssize_t)(n * 4));
+done:
+    free(need);
+    free(stack);
+    free(ids);
+    free(ooff);
+    free(ocol);
+    free(ork);
+    free(ors);
+    PyBuffer_Release(&off);
+    PyBuffer_Release(&col);
+    PyBuffer_Release(&rk);
+    PyBuffer_Release(&rstart);
+    PyBuffer_Release(&rows);
+    PyBuffer_Release(&roots);
+    return result;
+}
+
 PyObject *f4_layout(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *fglm_step(PyObject *self, PyObject *args);  /* kernel/_fglm.c */
 extern PyTypeObject PairsType;  /* kernel/_f4pairs.c */
@@ -494,6 +606,7 @@ extern PyTypeObject PairsType;  /* kernel/_f4pairs.c */
 static PyMethodDef methods[] = {
     {"reduce", f4_reduce, METH_VARARGS, "Reduce one F4 matrix modulo p (see the module source)."},
     {"gather", f4_gather, METH_VARARGS, "The coefficients of recorded rows for another prime (see the source)."},
+    {"subplan", f4_subplan, METH_VARARGS, "The plan of some pair rows and the reducers they need (see the source)."},
     {"layout", f4_layout, METH_VARARGS, "F4's symbolic preprocessing and matrix layout (see kernel/_f4sym.c)."},
     {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p (see kernel/_fglm.c)."},
     {NULL, NULL, 0, NULL}

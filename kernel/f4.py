@@ -390,6 +390,8 @@ class F4:
             final.append((j, slots))
         if self.trace is not None:
             self.trace.final = Step(len(pivcols), m, rows_of, [], [], [j for j, _ in final])
+            if self._plan is not None:  # the matrix as the kernel reduced it, to cut replays from
+                self.trace.final.plans["full"] = self._plan
             self.trace.final_out = final
             self.trace.shape = [ms for ms, _ in out]
         return out

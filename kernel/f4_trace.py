@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
-from .f4_rows import CodedRow, as_spec, compiled, replay_step
+from .f4_rows import SUBPLAN, CodedRow, as_spec, compiled, replay_step
 from .f4_vectors import RowSpec, Vectors, echelon
 
 
@@ -108,8 +108,12 @@ class Trace:
         """The entries a full replay reduces per entry of a replay (inf without a full trace)."""
         if not self.full:
             return float("inf")
-        kept = sum(len(_codes(r)) for st in self.steps for r in [r for _, r in st.reducers] + [r for r, _ in st.rows])
-        every = sum(len(_codes(r)) for st in self.steps for r in st.every()[0] + st.every()[1])
+        if SUBPLAN is not None and all("full" in st.plans for st in self.steps):  # from the plans
+            every = sum(len(st.plans["full"].col) for st in self.steps)
+            kept = sum(len(st.plans["full"].sub(st.K, [r for r, _ in st.used]).col) for st in self.steps)
+        else:
+            kept = sum(len(_codes(r)) for st in self.steps for r in [r for _, r in st.reducers] + [r for r, _ in st.rows])
+            every = sum(len(_codes(r)) for st in self.steps for r in st.every()[0] + st.every()[1])
         return every / max(kept, 1)
 
 
@@ -152,19 +156,32 @@ def _replay_compiled(trace: Trace, polys: Sequence[list[int]], p: int) -> list[l
     """:func:`replay` with the matrices reduced by the compiled kernel (:mod:`.f4_rows`)."""
     coefs: list[list[int]] = [list(c) for c in polys]
     for st in trace.steps:
-        if not st.rows:
+        if not st.used:
             continue
-        used, E, _ = replay_step(st.reducers, [row for row, _ in st.rows], st, coefs, p)
-        if [s0 for _, s0 in used] != [s0 for _, s0 in st.rows]:
+        used, E, _ = _replay_needed(st, coefs, p)
+        if [s0 for _, s0 in used] != [s0 for _, s0 in st.used]:
             raise TraceMismatch("a pair row reduced differently")
         rows = {s0: (slots, vals) for s0, slots, vals in E}
         for slots in st.new:
             coefs.append(_on_slots(*rows[slots[0]], slots))
     if trace.unit:
         return [[1]]
-    st = trace.final
-    _, _, W = replay_step(st.reducers, [], st, coefs, p, [j for j, _ in trace.final_out])
+    _, _, W = _replay_needed(trace.final, coefs, p, [j for j, _ in trace.final_out])
     return [[1] + _on_slots(*w, slots) for w, (_, slots) in zip(W, trace.final_out)]
+
+
+def _replay_needed(st: Step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
+    """The kernel's ``(used, E, W)`` for the rows of a step a replay needs: cut from the plan
+    of the whole matrix when the step has one (no rows laid out in Python), else laid out."""
+    plan = st.plans.get("rows")
+    if plan is None and "full" in st.plans and SUBPLAN is not None:
+        plan = st.plans["rows"] = st.plans["full"].sub(st.K, [r for r, _ in st.used], st.roots)
+    if plan is not None:
+        try:
+            return plan.reduce(coefs, p, st.m, st.K, want)
+        except TypeError:  # coefficients that are not Python ints
+            pass
+    return replay_step(st.reducers, [row for row, _ in st.rows], st, coefs, p, want)
 
 
 def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
@@ -195,6 +212,8 @@ def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[i
 def _on_slots(support: list[int], vals: list[int], slots: list[int]) -> list[int]:
     """The entries of a vector (its nonzero slots and values) in the given slots, which must
     hold all its nonzero entries."""
+    if support == slots:  # the usual case: the recorded support, in the kernel's order
+        return vals
     got = dict(zip(support, vals))
     out = [got.pop(s, 0) for s in slots]
     if got:

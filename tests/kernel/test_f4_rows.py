@@ -5,7 +5,7 @@ from array import array
 
 import pytest
 
-from mech.kernel import Block, f4_rows
+from mech.kernel import Block, f4_rows, f4_trace
 from mech.kernel.f4 import F4
 from mech.kernel.f4_rows import CodedRow, Flat
 from mech.kernel.f4_trace import replay
@@ -132,3 +132,32 @@ def test_trace_recorded_by_one_path_replays_on_the_other(record_compiled, monkey
     monkeypatch.setattr(f4_rows, "KERNEL", None if record_compiled else kernel)
     got = replay(eng.trace, [[c % p for c in cs] for _, cs in rows], p)
     assert got == [cs for _, cs in F4([(ms, [c % p for c in cs]) for ms, cs in rows], P, p).run()]
+
+
+def test_replays_cut_from_the_whole_matrix_plan(monkeypatch):
+    """A replay takes the rows it needs from the plan of each whole matrix (in C): the same
+    reducers and rows as laid out from the recorded rows, and the same basis."""
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    gens = [primitive(g.terms) for g in katsura(R, 4)]
+    P = Packing(R.order, 31)
+    rows = []
+    for t in gens:
+        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
+        rows.append(([m for m, _ in items], [c for _, c in items]))
+    eng = F4([(ms, [c % 32003 for c in cs]) for ms, cs in rows], P, 32003, record=True)
+    eng.run()
+    for st in eng.trace.steps + [eng.trace.final]:
+        cut = st.plans["full"].sub(st.K, [r for r, _ in st.used], st.roots)
+        laid = f4_rows.Plan([j for j, _ in st.reducers], [r for _, r in st.reducers] + [r for r, _ in st.rows])
+        assert (cut.ids, cut.off, cut.col, cut.rk, cut.rstart) == (laid.ids, laid.off, laid.col, laid.rk, laid.rstart)
+    p = 1000003
+    polys = [[c % p for c in cs] for _, cs in rows]
+    got = replay(eng.trace, polys, p)
+    monkeypatch.setattr(f4_trace, "SUBPLAN", None)
+    for st in eng.trace.steps + [eng.trace.final]:
+        st.plans.pop("rows", None)
+    assert got == replay(eng.trace, polys, p)
+    assert got == [cs for _, cs in F4([(ms, [c % p for c in cs]) for ms, cs in rows], P, p).run()]
+    with pytest.raises(ValueError):
+        f4_rows.SUBPLAN(array("q", [0, 1]), array("i", [0]), array("i", [0]), array("i", [0]), 1,
+                        array("i", [5]), array("i"))  # no pair row 5
