@@ -36,7 +36,7 @@ from .f4_rows import LAYOUT, CodedRow, Flat, Packed, Plan, compiled
 from .f4_pairs import pair_set
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
-from .monomials import Packing
+from .monomials import Packing, packing
 
 Row = tuple[list[int], list[int]]  # (packed monomials, decreasing; coefficients mod p)
 
@@ -437,7 +437,7 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
     p = ring.field.characteristic
     maxdeg = initial_degree(gens)
     while True:
-        P = Packing(ring.order, maxdeg)
+        P = packing(ring.order, maxdeg)
         rows = pack_polys(gens, P, int)
         try:
             basis = F4([r for r in rows if r[0]], P, p, budget=budget,
@@ -461,7 +461,7 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
     while maxdeg < 4 * max(sum(e) for b in polys for e in b) + 2:
         maxdeg = 2 * maxdeg + 1
     while True:
-        P = Packing(ring.order, maxdeg)
+        P = packing(ring.order, maxdeg)
         eng = F4([], P, p)
         seen: set[int] = set()
         try:

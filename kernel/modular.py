@@ -56,7 +56,7 @@ from .errors import NotSupported
 from .f4 import F4, PackingOverflow, initial_degree, is_groebner
 from .f4_rows import compiled
 from .f4_trace import Trace, TraceMismatch, replay, replay_full
-from .monomials import Packing, nonnegative_matrix
+from .monomials import Packing, nonnegative_matrix, packing
 from .poly import support_mask
 
 PRIME_RANGE = (1 << 27, 1 << 28)
@@ -75,7 +75,21 @@ class SmallSystem(Exception):
 
 
 def primes(seed: int = 20031):
-    """An endless pseudo-random sequence of distinct primes in ``PRIME_RANGE``."""
+    """An endless pseudo-random sequence of distinct primes in ``PRIME_RANGE``, the same for a
+    seed (the primes found are kept: every computation over QQ starts with the same ones)."""
+    got, more = _SEQUENCES.setdefault(seed, ([], _prime_sequence(seed)))
+    i = 0
+    while True:
+        if i == len(got):
+            got.append(next(more))
+        yield got[i]
+        i += 1
+
+
+_SEQUENCES: dict[int, tuple[list[int], Any]] = {}
+
+
+def _prime_sequence(seed: int):
     rng = random.Random(seed)
     seen = set()
     while True:
@@ -208,7 +222,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
     stream = primes()
     for attempt in range(3):
         while True:
-            P = Packing(ring.order, maxdeg)
+            P = packing(ring.order, maxdeg)
             shapes, coefs = _pack(ints, P)
             try:
                 result = _modular(shapes, coefs, P, stream, max_primes, small_work, counter)
@@ -377,7 +391,7 @@ def _is_groebner_mod(polys, order, q: int) -> bool:
     while maxdeg < 2 * top:
         maxdeg = 2 * maxdeg + 1
     while True:
-        P = Packing(order, maxdeg)
+        P = packing(order, maxdeg)
         rows = []
         for items in polys:
             packed = sorted(((P.pack(e), c) for e, c in items), reverse=True)
