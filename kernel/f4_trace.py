@@ -82,6 +82,14 @@ class Step:
         if not self.keeps_full:
             self._every = ([], [])
 
+    def rows_plan(self):
+        """The plan (f4_rows.Plan) of the rows a replay needs, cut in C from the plan of the
+        whole matrix when the step keeps one; None otherwise (the rows are then laid out)."""
+        plan = self.plans.get("rows")
+        if plan is None and "full" in self.plans and SUBPLAN is not None:
+            plan = self.plans["rows"] = self.plans["full"].sub(self.K, [r for r, _ in self.used], self.roots)
+        return plan
+
     def let_go(self) -> None:
         """Keep only what a replay needs (no full replay)."""
         self.settle()
@@ -110,7 +118,7 @@ class Trace:
             return float("inf")
         if SUBPLAN is not None and all("full" in st.plans for st in self.steps):  # from the plans
             every = sum(len(st.plans["full"].col) for st in self.steps)
-            kept = sum(len(st.plans["full"].sub(st.K, [r for r, _ in st.used]).col) for st in self.steps)
+            kept = sum(len(st.rows_plan().col) for st in self.steps)
         else:
             kept = sum(len(_codes(r)) for st in self.steps for r in [r for _, r in st.reducers] + [r for r, _ in st.rows])
             every = sum(len(_codes(r)) for st in self.steps for r in st.every()[0] + st.every()[1])
@@ -173,9 +181,7 @@ def _replay_compiled(trace: Trace, polys: Sequence[list[int]], p: int) -> list[l
 def _replay_needed(st: Step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
     """The kernel's ``(used, E, W)`` for the rows of a step a replay needs: cut from the plan
     of the whole matrix when the step has one (no rows laid out in Python), else laid out."""
-    plan = st.plans.get("rows")
-    if plan is None and "full" in st.plans and SUBPLAN is not None:
-        plan = st.plans["rows"] = st.plans["full"].sub(st.K, [r for r, _ in st.used], st.roots)
+    plan = st.rows_plan()
     if plan is not None:
         try:
             return plan.reduce(coefs, p, st.m, st.K, want)

@@ -144,7 +144,8 @@ class Reconstructor:
     def reset(self) -> None:
         self.i = self.j = 0
         self.den = 1
-        self.confident = False  # the last complete lift's coefficients are far below the bound
+        self.lift: list[list[Any]] = []  # the last complete lift, from a modulus of ``bits`` bits
+        self.bits = 0
 
     def check(self, residues: list[list[int]], p: int) -> bool:
         """Rewind to the first lifted coefficient that disagrees with the residues mod p;
@@ -184,12 +185,15 @@ class Reconstructor:
                 j += 1
             i, j = i + 1, 0
         self.i, self.j, self.den = i, j, den
-        lift = [[flint.fmpq(n, d) for n, d in row] for row in out]
-        # far below the bound a wrong lift is unlikely: a residue mod m is n/d with |n|, d < 2^h
-        # for fewer than 2^(2h+1) residues, here at most m/32 (a wrong lift of many is far rarer)
-        height = max([c.height_bits() for row in lift for c in row], default=0)
-        self.confident = 2 * height + 6 < m.bit_length()
-        return lift
+        self.lift, self.bits = [[flint.fmpq(n, d) for n, d in row] for row in out], m.bit_length()
+        return self.lift
+
+    def confident(self) -> bool:
+        """Whether the last complete lift's coefficients lie far below the bound, where a wrong
+        lift is unlikely: a residue mod m is n/d with |n|, d < 2^h for fewer than 2^(2h+1)
+        residues, here at most m/32 (and a wrong lift of many coefficients is far rarer)."""
+        height = max([c.height_bits() for row in self.lift for c in row], default=0)
+        return 2 * height + 6 < self.bits
 
 
 class Lifter:
@@ -285,10 +289,10 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
             if any(cs[0] % p == 0 for cs in coefs):
                 continue
             try:
-                if candidate is not None and not rec.confident and cheap_full is None:
+                if candidate is not None and cheap_full is None:
                     cheap_full = trace.full_cost() <= FULL_REPLAY_COST
                 res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p,
-                                    candidate is not None and (rec.confident or cheap_full))
+                                    candidate is not None and (cheap_full or rec.confident()))
             except TraceMismatch:
                 misses += 1
                 if misses > good + 2:
