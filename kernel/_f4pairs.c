@@ -225,7 +225,7 @@ static PyObject *Pairs_update(Pairs *s, PyObject *args)
     const int32_t *H = s->ex + (Py_ssize_t)h * n;
     int nc = 0;
     for (int i = 0; i < h; i++) {
-        if (PyList_GET_ITEM(active, i) != Py_True)
+        if (PyObject_IsTrue(PyList_GET_ITEM(active, i)) != 1)
             continue;
         const int32_t *E = s->ex + (Py_ssize_t)i * n;
         int32_t *L = s->cand + (Py_ssize_t)nc * n;
@@ -338,7 +338,7 @@ static PyObject *Pairs_update(Pairs *s, PyObject *args)
     free(kept);
     free(keys);
     for (int i = 0; i < h; i++) {
-        if (PyList_GET_ITEM(active, i) == Py_True && divides(H, s->ex + (Py_ssize_t)i * n, n)) {
+        if (PyObject_IsTrue(PyList_GET_ITEM(active, i)) == 1 && divides(H, s->ex + (Py_ssize_t)i * n, n)) {
             Py_INCREF(Py_False);
             PyList_SetItem(active, i, Py_False);
         }
