@@ -6,7 +6,7 @@ for the others, whose lcm degrees grow too fast), put the two multiples of each 
 matrix, add by *symbolic preprocessing* a reducer ``u*g`` (``g`` in the basis) for every
 monomial of the matrix divisible by a leading monomial, and row-reduce; the rows whose leading
 monomial is new join the basis.  Pairs are pruned with the Gebauer–Möller criteria
-(Becker–Weispfenning's UPDATE).
+(Becker–Weispfenning's UPDATE; :mod:`.f4_pairs`, compiled when built).
 
 Monomials are packed integers (:mod:`.monomials`).  The linear algebra exploits the shape of
 F4 matrices.  The columns split into *pivot* columns (leading monomials of reducers; one
