@@ -445,9 +445,9 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = {m: P.unpack(m) for m in {m for ms, _ in basis for m in ms}}  # a monomial once
-    nmod = flint.nmod
-    return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in basis]
+    exps = P.unpack_all(m for ms, _ in basis for m in ms)
+    one = flint.nmod(1, p)  # one * c: an nmod, made faster than by nmod(c, p)
+    return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in basis]
 
 
 def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
@@ -477,9 +477,9 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = {m: P.unpack(m) for m in {m for ms, _ in out for m in ms}}
-    nmod = flint.nmod
-    return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in out]
+    exps = P.unpack_all(m for ms, _ in out for m in ms)
+    one = flint.nmod(1, p)
+    return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in out]
 
 
 def _coded_rows(off, col, redk: list[int], crowk: list[int]) -> tuple[list[CodedRow], list[CodedRow]]:

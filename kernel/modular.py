@@ -236,7 +236,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
         if result is None:
             continue
         shape, G, trace, certified = result
-        exps = {mo: P.unpack(mo) for mo in {mo for ms in shape for mo in ms}}  # a monomial once
+        exps = P.unpack_all(mo for ms in shape for mo in ms)
         basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
         replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
         if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed):

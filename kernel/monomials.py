@@ -111,6 +111,11 @@ class Packing:
         mask = self.emask
         return tuple([(m >> s) & mask for s in self.eshifts])
 
+    def unpack_all(self, monomials) -> dict[int, Exp]:
+        """The exponents of packed monomials, by monomial (each unpacked once)."""
+        mask, shifts = self.emask, self.eshifts
+        return {m: tuple([(m >> s) & mask for s in shifts]) for m in set(monomials)}
+
     def weighted_degree(self, m: int) -> int:
         """The first weight row applied to the exponent (the degree of a graded ordering)."""
         return m >> self.wshift
