@@ -2,6 +2,7 @@
 
     python benchmarks/run.py                      # every case of benchmarks/cases.py
     python benchmarks/run.py --only katsura-6 --no-sympy
+    python benchmarks/run.py --degree --no-sympy    # the dp systems only (--elimination: lp and blocks)
     python benchmarks/run.py --write              # also rewrite benchmarks/RESULTS.md
 
 Each system runs in its own process.  Times are CPU seconds of that process (the machine is
@@ -314,6 +315,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--only", nargs="*", help="case names (default: all)")
     ap.add_argument("--elimination", action="store_true", help="only the lex and block orderings")
+    ap.add_argument("--degree", action="store_true", help="only the degree orderings (dp, Dp)")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--timeout", type=float, default=600, help="limit for mech and Singular (s)")
     ap.add_argument("--sympy-timeout", type=float, default=60)
@@ -335,7 +337,8 @@ def main() -> None:
         return
 
     cases = [c for c in CASES if (not args.only or c.name in args.only) and c.name not in args.exclude
-             and (not args.elimination or c.task == "std" and c.ordering not in ("dp", "Dp", "ds", "Ds", "ls"))]
+             and (not args.elimination or c.task == "std" and c.ordering not in ("dp", "Dp", "ds", "Ds", "ls"))
+             and (not args.degree or c.task == "std" and c.ordering in ("dp", "Dp"))]
     cases = cases[args.skip:]
     head = ("| system | field | ordering | basis | mech | Singular | mech / Singular | Macaulay2 | mech / M2 "
             "| SymPy | SymPy / mech | msolve | mech / msolve | mech peak RSS |")

@@ -6,14 +6,20 @@
  * Rows are given flat: row r has the entries off[r] .. off[r+1]-1 with column codes col[]
  * (c >= 0: pivot column c, whose reducer is unit-leading; c < 0: non-pivot slot ~c) and
  * coefficients val[] (below p).  The first nred rows are reducers (leading entry left out),
- * filling the pivot ids ids[r] (0 <= id < K) in an order where every pivot a row refers to is
- * filled before; each becomes its reduced tail T = N - sum c_j T_j over its pivot entries.
- * The other rows (pair rows) are reduced the same way and brought to reduced echelon form
- * exactly as kernel/f4_vectors.echelon does (same operations in the same order).
+ * filling the pivot ids ids[r] (0 <= id < K, increasing with the columns' monomials) in
+ * increasing order, so every pivot a reducer refers to lies below its own and is filled
+ * before.  Either each reducer becomes its reduced tail T = N - sum c_j T_j over its pivot
+ * entries (dense in the slots; combine) and the pair rows are reduced the same way, or, when
+ * that is expected to cost more (sequential_pays), each pair row is reduced by the reducer rows
+ * one pivot at a time from the highest down (reduce_seq): the same reduced rows, the row minus
+ * the unique combination of reducers clearing its pivot entries.  The reduced pair rows are
+ * brought to reduced echelon form exactly as kernel/f4_vectors.echelon does (same operations
+ * in the same order).
  * Returns used = [(pair row index, pivot slot)], E = [(pivot slot, slots, values)] by
  * increasing pivot slot (slots highest first), W = [(slots, values)] of the reduced tails
  * of the pivot ids in want.  With stop set, returns as soon as a pair row does not reduce
- * to zero (used then holds that row).
+ * to zero (used then holds that row).  An optional last argument forces the dense tails (0) or
+ * the pivot-by-pivot reduction (1) (tests; -1, the default: the cheaper by estimate).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -91,6 +97,55 @@ static Py_ssize_t combine(const Table *T, uint64_t *acc, Py_ssize_t m, uint64_t 
     return b;
 }
 
+/* Row r reduced by the reducer rows one pivot at a time, from the highest pivot down (the
+ * rows' tails as given, not reduced first): accP[0..K) and acc[0..m) take the pivot and the
+ * non-pivot entries; pivot j with a nonzero entry c subtracts c times reducer row rowof[j], whose
+ * pivot entries all lie below j and whose values are below p (both checked by the caller).  Leaves the reduced row (non-pivot slots, entries < p) in
+ * acc[0..b) and returns b (highest nonzero + 1), -1 on a bad pivot reference.  The same numbers
+ * as combine(): a row minus the unique combination of reducers clearing its pivot entries.
+ * Entries stay below p^2 (p^2 + p^2 < 2^63 for p < 2^31) by one conditional subtraction. */
+static Py_ssize_t reduce_seq(const int64_t *rowof, Py_ssize_t K, uint64_t *accP, uint64_t *acc, Py_ssize_t m,
+                             uint64_t p, const int64_t *off, const int32_t *col, const uint64_t *val,
+                             Py_ssize_t r, int32_t below)
+{
+    uint64_t p2 = p * p;
+    Py_ssize_t top = below < 0 ? K : below;  /* pivots a reducer row may refer to lie below its own */
+    memset(accP, 0, (size_t)top * sizeof(uint64_t));
+    memset(acc, 0, (size_t)m * sizeof(uint64_t));
+    for (int64_t e = off[r]; e < off[r + 1]; e++) {
+        int32_t c = col[e];
+        uint64_t v = val[e] % p;
+        if (c < 0) {
+            if ((Py_ssize_t)(~c) >= m)
+                return -1;
+            acc[~c] += v;
+        } else {
+            if (c >= top || rowof[c] < 0)
+                return -1;
+            accP[c] += v;
+        }
+    }
+    for (Py_ssize_t j = top - 1; j >= 0; j--) {
+        uint64_t c = accP[j] % p;
+        if (!c)
+            continue;
+        uint64_t f = p - c;
+        int64_t rj = rowof[j];
+        for (int64_t e = off[rj]; e < off[rj + 1]; e++) {  /* (references checked by the caller) */
+            int32_t cc = col[e];
+            uint64_t *x = cc < 0 ? acc + ~cc : accP + cc;
+            uint64_t y = *x + f * val[e];
+            *x = y >= p2 ? y - p2 : y;
+        }
+    }
+    Py_ssize_t b = m;
+    for (Py_ssize_t s = 0; s < m; s++)
+        acc[s] %= p;
+    while (b > 0 && acc[b - 1] == 0)
+        b--;
+    return b;
+}
+
 static PyObject *support(const uint64_t *x, Py_ssize_t b)
 {
     PyObject *slots = PyList_New(0), *vals = PyList_New(0);
@@ -126,18 +181,36 @@ static uint64_t inverse(uint64_t a, uint64_t p)
     return (uint64_t)(t < 0 ? t + (int64_t)p : t);
 }
 
+/* Whether reducing the pair rows (and wanted tails) one pivot at a time (reduce_seq) is
+ * expected to cost less than reducing every reducer to a dense tail first (combine): at most,
+ * a row meets each reducer's entries once, against each pivot entry of the matrix meeting a
+ * dense tail of about m/2 slots (a quarter more for large primes, whose sums are normalized
+ * more often).  Measured on the matrices of benchmarks/cases.py (RESULTS.md, session 13). */
+static int sequential_pays(uint64_t p, Py_ssize_t m, Py_ssize_t nred, Py_ssize_t R, Py_ssize_t nwant,
+                           const int64_t *off, const int32_t *col)
+{
+    double piv = 0;
+    for (int64_t e = 0; e < off[R]; e++)
+        if (col[e] >= 0)
+            piv += 1;
+    double dense = piv * (double)m / 2 * (p >= (1u << 20) ? 1.25 : 1.0);
+    return (double)(R - nred + nwant) * (double)off[nred] < dense;
+}
+
 static PyObject *f4_reduce(PyObject *self, PyObject *args)
 {
     unsigned long long p_;
     Py_ssize_t m, K, nred;
-    int stop;
+    int stop, mode = -1;
     Py_buffer ids, off, col, val, want;
-    if (!PyArg_ParseTuple(args, "Knnny*y*y*y*y*p", &p_, &m, &K, &nred, &ids, &off, &col, &val, &want, &stop))
+    if (!PyArg_ParseTuple(args, "Knnny*y*y*y*y*p|i", &p_, &m, &K, &nred, &ids, &off, &col, &val, &want, &stop,
+                          &mode))
         return NULL;
     uint64_t p = p_;
     PyObject *result = NULL, *used = NULL, *E = NULL, *W = NULL;
     Table T = {NULL, NULL, K};
-    uint64_t *acc = NULL, **piv = NULL;
+    uint64_t *acc = NULL, **piv = NULL, *accP = NULL, *vmod = NULL;
+    int64_t *rowof = NULL;
     Py_ssize_t *pslot = NULL, npiv = 0;
     Py_ssize_t R = off.len / (Py_ssize_t)sizeof(int64_t) - 1;
     const int32_t *pid = ids.buf, *pcol = col.buf, *pwant = want.buf;
@@ -166,7 +239,38 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     }
     for (Py_ssize_t j = 0; j < K; j++)
         T.len[j] = -1;
-    for (Py_ssize_t r = 0; r < nred; r++) {
+    int seq = mode == 1 || (mode < 0 && sequential_pays(p, m, nred, R, nwant, poff, pcol));
+    if (seq) {
+        Py_ssize_t nent = (Py_ssize_t)poff[R];
+        rowof = malloc((size_t)(K ? K : 1) * sizeof(int64_t));
+        accP = malloc((size_t)(K ? K : 1) * sizeof(uint64_t));
+        vmod = malloc((size_t)(nent ? nent : 1) * sizeof(uint64_t));
+        if (!rowof || !accP || !vmod) {
+            PyErr_NoMemory();
+            goto done;
+        }
+        for (Py_ssize_t j = 0; j < K; j++)
+            rowof[j] = -1;
+        for (Py_ssize_t r = 0; r < nred; r++) {
+            if (pid[r] < 0 || pid[r] >= K) {
+                PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
+                goto done;
+            }
+            rowof[pid[r]] = r;
+        }
+        for (Py_ssize_t r = 0; r < nred; r++)  /* every reducer refers to filled pivots below its own */
+            for (int64_t e = poff[r]; e < poff[r + 1]; e++) {
+                int32_t c = pcol[e];
+                if (c >= 0 ? c >= pid[r] || rowof[c] < 0 : (Py_ssize_t)(~c) >= m) {
+                    PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
+                    goto done;
+                }
+            }
+        for (Py_ssize_t e = 0; e < nent; e++)
+            vmod[e] = pval[e] % p;
+        pval = vmod;
+    }
+    for (Py_ssize_t r = 0; r < nred && !seq; r++) {
         if ((r & 1023) == 1023 && PyErr_CheckSignals())
             goto done;  /* Ctrl-C, a time limit's signal: the handler's exception propagates */
         Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
@@ -190,7 +294,8 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     for (Py_ssize_t r = nred; r < R; r++) {
         if (((r - nred) & 255) == 255 && PyErr_CheckSignals())
             goto done;
-        Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
+        Py_ssize_t b = seq ? reduce_seq(rowof, K, accP, acc, m, p, poff, pcol, pval, r, -1)
+                           : combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
         if (b < 0) {
             PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
             goto done;
@@ -293,13 +398,22 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     }
     for (Py_ssize_t i = 0; i < nwant; i++) {
         int32_t j = pwant[i];
-        if (j < 0 || j >= K || T.len[j] < 0) {
+        if (j < 0 || j >= K || (seq ? rowof[j] < 0 : T.len[j] < 0)) {
             PyErr_SetString(PyExc_ValueError, "f4 rows: unknown pivot wanted");
             goto done;
         }
-        for (Py_ssize_t s = 0; s < T.len[j]; s++)
-            acc[s] = T.rows[j][s];
-        PyObject *sv = support(acc, T.len[j]);
+        Py_ssize_t b = T.len[j];
+        if (seq) {
+            b = reduce_seq(rowof, K, accP, acc, m, p, poff, pcol, pval, rowof[j], j);
+            if (b < 0) {
+                PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
+                goto done;
+            }
+        } else {
+            for (Py_ssize_t s = 0; s < b; s++)
+                acc[s] = T.rows[j][s];
+        }
+        PyObject *sv = support(acc, b);
         if (!sv || PyList_Append(W, sv)) {
             Py_XDECREF(sv);
             goto done;
@@ -319,6 +433,9 @@ done:
     }
     free(pslot);
     free(acc);
+    free(accP);
+    free(vmod);
+    free(rowof);
     PyBuffer_Release(&ids);
     PyBuffer_Release(&off);
     PyBuffer_Release(&col);
@@ -370,12 +487,126 @@ done:
     return out;
 }
 
+/* subplan(off, col, rk, rstart, K, rows, roots) -> (ids, off, col, rk, rstart): from the plan of
+ * a whole matrix (reducer j is row j for the pivots 0..K-1, then the pair rows; kernel/f4_rows.Plan's
+ * arrays), the plan of the pair rows `rows` (int32, numbered from 0 after the reducers) and of the
+ * reducers they and the pivots `roots` need, transitively: the needed pivot ids increasing, their
+ * rows, then the pair rows in the order given (all arrays as bytes, as Plan holds them). */
+static PyObject *f4_subplan(PyObject *self, PyObject *args)
+{
+    Py_buffer off, col, rk, rstart, rows, roots;
+    Py_ssize_t K;
+    if (!PyArg_ParseTuple(args, "y*y*y*y*ny*y*", &off, &col, &rk, &rstart, &K, &rows, &roots))
+        return NULL;
+    PyObject *result = NULL;
+    const int64_t *po = off.buf;
+    const int32_t *pc = col.buf, *pk = rk.buf, *ps = rstart.buf, *pr = rows.buf, *pt = roots.buf;
+    Py_ssize_t R = off.len / (Py_ssize_t)sizeof(int64_t) - 1;
+    Py_ssize_t nrows = rows.len / (Py_ssize_t)sizeof(int32_t), nroots = roots.len / (Py_ssize_t)sizeof(int32_t);
+    char *need = NULL;
+    int32_t *stack = NULL, *ids = NULL, *ocol = NULL, *ork = NULL, *ors = NULL;
+    int64_t *ooff = NULL;
+    if (K < 0 || K > R || col.len / (Py_ssize_t)sizeof(int32_t) < po[R] || rk.len / 4 < R || rstart.len / 4 < R) {
+        PyErr_SetString(PyExc_ValueError, "f4 subplan: bad arguments");
+        goto done;
+    }
+    need = calloc((size_t)(K ? K : 1), 1);
+    stack = malloc((size_t)(K + 1) * sizeof(int32_t));
+    if (!need || !stack) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    Py_ssize_t top = 0, total = 0;
+    for (Py_ssize_t i = 0; i < nroots + nrows; i++) {  /* the roots, then the pair rows' pivots */
+        Py_ssize_t q = i < nroots ? -1 : K + pr[i - nroots];
+        if (q >= R || (q < 0 && (pt[i] < 0 || pt[i] >= K)) || (q >= 0 && q < K)) {
+            PyErr_SetString(PyExc_ValueError, "f4 subplan: bad row");
+            goto done;
+        }
+        if (q < 0) {
+            if (!need[pt[i]]) {
+                need[pt[i]] = 1;
+                stack[top++] = pt[i];
+            }
+            continue;
+        }
+        total += po[q + 1] - po[q];
+        for (int64_t e = po[q]; e < po[q + 1]; e++)
+            if (pc[e] >= 0 && pc[e] < K && !need[pc[e]]) {
+                need[pc[e]] = 1;
+                stack[top++] = pc[e];
+            }
+    }
+    while (top > 0) {
+        int32_t j = stack[--top];
+        for (int64_t e = po[j]; e < po[j + 1]; e++)
+            if (pc[e] >= 0 && pc[e] < K && !need[pc[e]]) {
+                need[pc[e]] = 1;
+                stack[top++] = pc[e];
+            }
+    }
+    Py_ssize_t nids = 0;
+    for (Py_ssize_t j = 0; j < K; j++)
+        if (need[j]) {
+            nids++;
+            total += po[j + 1] - po[j];
+        }
+    Py_ssize_t n = nids + nrows;
+    ids = malloc((size_t)(nids + 1) * sizeof(int32_t));
+    ooff = malloc((size_t)(n + 1) * sizeof(int64_t));
+    ocol = malloc((size_t)(total + 1) * sizeof(int32_t));
+    ork = malloc((size_t)(n + 1) * sizeof(int32_t));
+    ors = malloc((size_t)(n + 1) * sizeof(int32_t));
+    if (!ids || !ooff || !ocol || !ork || !ors) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    Py_ssize_t a = 0, w = 0;
+    ooff[0] = 0;
+    for (Py_ssize_t i = 0, j = 0; i < n; i++) {
+        Py_ssize_t q;
+        if (i < nids) {
+            while (!need[j])
+                j++;
+            ids[i] = (int32_t)j;
+            q = j++;
+        } else {
+            q = K + pr[i - nids];
+        }
+        for (int64_t e = po[q]; e < po[q + 1]; e++)
+            ocol[w++] = pc[e];
+        ooff[++a] = w;
+        ork[i] = pk[q];
+        ors[i] = ps[q];
+    }
+    result = Py_BuildValue("(y#y#y#y#y#)", (const char *)ids, (Py_ssize_t)(nids * 4), (const char *)ooff,
+                           (Py_ssize_t)((n + 1) * 8), (const char *)ocol, (Py_ssize_t)(w * 4),
+                           (const char *)ork, (Py_ssize_t)(n * 4), (const char *)ors, (Py_ssize_t)(n * 4));
+done:
+    free(need);
+    free(stack);
+    free(ids);
+    free(ooff);
+    free(ocol);
+    free(ork);
+    free(ors);
+    PyBuffer_Release(&off);
+    PyBuffer_Release(&col);
+    PyBuffer_Release(&rk);
+    PyBuffer_Release(&rstart);
+    PyBuffer_Release(&rows);
+    PyBuffer_Release(&roots);
+    return result;
+}
+
 PyObject *f4_layout(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *fglm_step(PyObject *self, PyObject *args);  /* kernel/_fglm.c */
+extern PyTypeObject PairsType;  /* kernel/_f4pairs.c */
 
 static PyMethodDef methods[] = {
     {"reduce", f4_reduce, METH_VARARGS, "Reduce one F4 matrix modulo p (see the module source)."},
     {"gather", f4_gather, METH_VARARGS, "The coefficients of recorded rows for another prime (see the source)."},
+    {"subplan", f4_subplan, METH_VARARGS, "The plan of some pair rows and the reducers they need (see the source)."},
     {"layout", f4_layout, METH_VARARGS, "F4's symbolic preprocessing and matrix layout (see kernel/_f4sym.c)."},
     {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p (see kernel/_fglm.c)."},
     {NULL, NULL, 0, NULL}
@@ -385,5 +616,16 @@ static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_f4rows", "F4 row re
 
 PyMODINIT_FUNC PyInit__f4rows(void)
 {
-    return PyModule_Create(&module);
+    if (PyType_Ready(&PairsType) < 0)
+        return NULL;
+    PyObject *m = PyModule_Create(&module);
+    if (m == NULL)
+        return NULL;
+    Py_INCREF(&PairsType);
+    if (PyModule_AddObject(m, "Pairs", (PyObject *)&PairsType) < 0) {
+        Py_DECREF(&PairsType);
+        Py_DECREF(m);
+        return NULL;
+    }
+    return m;
 }

@@ -6,7 +6,7 @@ for the others, whose lcm degrees grow too fast), put the two multiples of each 
 matrix, add by *symbolic preprocessing* a reducer ``u*g`` (``g`` in the basis) for every
 monomial of the matrix divisible by a leading monomial, and row-reduce; the rows whose leading
 monomial is new join the basis.  Pairs are pruned with the Gebauer–Möller criteria
-(Becker–Weispfenning's UPDATE).
+(Becker–Weispfenning's UPDATE; :mod:`.f4_pairs`, compiled when built).
 
 Monomials are packed integers (:mod:`.monomials`).  The linear algebra exploits the shape of
 F4 matrices.  The columns split into *pivot* columns (leading monomials of reducers; one
@@ -25,6 +25,7 @@ prime below ``2^31`` runs there in one call, on the same rows.
 """
 from __future__ import annotations
 
+from functools import partial
 from itertools import islice
 from typing import Sequence
 
@@ -32,9 +33,10 @@ import flint
 
 from .buchberger import TooLong
 from .f4_rows import LAYOUT, CodedRow, Flat, Packed, Plan, compiled
+from .f4_pairs import pair_set
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
-from .monomials import Packing
+from .monomials import Packing, packing
 
 Row = tuple[list[int], list[int]]  # (packed monomials, decreasing; coefficients mod p)
 
@@ -61,11 +63,12 @@ class F4:
         self.vec = Vectors(p)
         self.mons: list[list[int]] = []
         self.coefs: list[list[int]] = []
-        self.neg: list[list[int]] = []
+        self.neg: list[list[int]] | None = None if compiled(p) else []  # -c mod p, for the Python rows
         self.tdeg: list[int] = []
         self.sugar: list[int] = []
         self.active: list[bool] = []   # basis elements usable as reducers and in new pairs
-        self.pairs: list[tuple[int, int, int, int]] = []  # (sugar, lcm, i, j); j < 0: an input row
+        # (key, lcm, i, j), j < 0: an input row; the key is the weighted degree or the sugar
+        self.pairs = pair_set(packing, packing.graded and counter is None)
         self.divisor: dict[int, int] = {}  # monomial -> reducer, or -1 - (basis size scanned)
         self.trace = Trace(len(polys)) if record else None
         self.packed = Packed(packing) if compiled(p) and LAYOUT is not None else None
@@ -81,85 +84,32 @@ class F4:
         for ms, cs in polys:
             k = self._add(ms, cs, is_basis=False)
             key = packing.weighted_degree(ms[0]) if packing.graded and counter is None else self.tdeg[k]
-            self.pairs.append((key, ms[0], k, -1))
+            self.pairs.push(key, k)
 
     # -- bookkeeping -------------------------------------------------------------------
     def _add(self, ms: list[int], cs: list[int], is_basis: bool, sugar: int | None = None) -> int:
         P = self.P
-        td = max(map(P.degree, ms))
-        if not P.fits(td):
+        if P.degree_first:  # the leading monomial has the largest total degree
+            td = (ms[0] >> P.dshift) & P.emask
+        else:
+            dshift, emask = P.dshift, P.emask
+            td = max([(m >> dshift) & emask for m in ms])
+        if td > P.maxdeg:
             raise PackingOverflow
         self.mons.append(ms)
         self.coefs.append(cs)
-        self.neg.append([self.p - c for c in cs])
+        if self.neg is not None:
+            self.neg.append([self.p - c for c in cs])
         self.tdeg.append(td)
         self.sugar.append(td if sugar is None else sugar)
         self.active.append(is_basis)
+        self.pairs.add(int(ms[0]), self.sugar[-1])
         return len(self.mons) - 1
 
     def _update(self, h: int) -> None:
-        """Add basis element ``h``: new pairs and pruned old ones (Gebauer–Möller).  The
-        criteria compare lcms by their exponent fields only (word-parallel, no repacking)."""
-        P = self.P
-        g, eg, eall = P.guard, P.eguard, P.eall
-        lcm_e = P.lcm_e
-        mons, active = self.mons, self.active
-        H = mons[h][0]
-        He = H & eall
-        Hg, shift, fill = He | eg, P.ebits - 1, (1 << P.ebits) - 1
-        cands = []
-        for i in range(h):
-            if active[i]:
-                ei = mons[i][0] & eall
-                sel = (((Hg - ei) & eg) >> shift) * fill  # lcm_e inline: the fields where H >= l_i
-                Le = (He & sel) | (ei & ~sel)
-                cands.append((Le, i, Le == ei + He))
-        # criterion M: drop (i,h) if another new pair's lcm properly divides its lcm;
-        # criterion F: among equal lcms keep one, a coprime one if there is one.  In increasing
-        # order of the exponent fields (lexicographic, so divisors come first) it suffices to
-        # test the lcms kept so far.
-        cands.sort()
-        kept: dict[int, tuple] = {}
-        for c in cands:
-            Le = c[0]
-            prev = kept.get(Le)
-            if prev is not None:
-                if c[2] and not prev[2]:
-                    kept[Le] = c
-                continue
-            Lg = Le | eg
-            for d in kept:
-                if (Lg - d) & eg == eg:
-                    break
-            else:
-                kept[Le] = c
-        degree, sugar, graded = P.degree, self.sugar, P.graded
-        dH, sh = degree(H), sugar[h]
-        new = []
-        for Le, i, coprime in kept.values():
-            if coprime:
-                continue
-            li = mons[i][0]
-            L = P.lcm(li, H)
-            dL = degree(L)
-            if dL > P.maxdeg:
-                raise PackingOverflow
-            key = P.weighted_degree(L) if graded and self.counter is None else max(sugar[i] + dL - degree(li), sh + dL - dH)
-            new.append((key, L, i, h))
-        # criterion B on the old pairs
-        old = []
-        for pr in self.pairs:
-            s, L, i, j = pr
-            if j >= 0 and ((L | g) - H) & g == g:
-                Le = L & eall
-                if lcm_e(mons[i][0], H) != Le and lcm_e(mons[j][0], H) != Le:
-                    continue
-            old.append(pr)
-        self.pairs = old + new
-        for i in range(h):
-            if active[i] and ((mons[i][0] | g) - H) & g == g:
-                active[i] = False
-        active[h] = True
+        """Add basis element ``h``: new pairs and pruned old ones (Gebauer–Möller)."""
+        if not self.pairs.update(h, self.active):
+            raise PackingOverflow
 
     # -- one matrix ----------------------------------------------------------------------
     def _find_reducer(self, x: int, reducers: list[tuple[int, int]]) -> int:
@@ -278,8 +228,8 @@ class F4:
                          want: list[int] = (), stop: bool = False):
         """:meth:`_matrix` by the compiled kernel (:mod:`.f4_rows`): returns the pivot columns,
         the non-pivot monomials, the kernel's ``(used, E, W)`` (``W``: the reduced tails of the
-        reducers with leading monomials ``want``) and, when recording, the rows as
-        :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
+        reducers with leading monomials ``want``) and, when recording, a callable giving the
+        rows as :class:`~.f4_rows.CodedRow` (reducers by pivot id, pair rows)."""
         if self.packed is not None:
             return self._matrix_packed(crow_specs, pivots, want, stop)
         rowmons, pivcols, nonpivot, where = self._layout(crow_specs, pivots)
@@ -301,7 +251,7 @@ class F4:
                 codes = list(map(get, islice(rowmons[spec], start, None)))
                 flat.add(codes, coefs[spec[0]][start:])
                 recorded.append(CodedRow(spec[0], start, codes))
-            recorded = (recorded[:K], recorded[K:])
+            recorded = partial(tuple, (recorded[:K], recorded[K:]))
         out = flat.reduce(self.p, m, K, [where[x] for x in want], stop)
         return pivcols, nonpivot, out, recorded
 
@@ -327,25 +277,10 @@ class F4:
         result = flat.reduce(self.p, len(nonpivot), K, want, stop)
         recorded = None
         if self.trace is not None:
-            off, col = flat.off, flat.col  # rows keep array slices of the column codes
-            rows = [CodedRow(k, 1, col[off[j]:off[j + 1]]) for j, k in enumerate(redk)]
-            rows += [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]]) for i, (k, _) in enumerate(crow_specs)]
-            recorded = (rows[:K], rows[K:])
-            self._plan = Plan.of_flat(flat, redk + [k for k, _ in crow_specs], [1] * K + [0] * len(crow_specs))
+            crowk = [k for k, _ in crow_specs]
+            recorded = partial(_coded_rows, flat.off, flat.col, redk, crowk)
+            self._plan = Plan.of_flat(flat, redk + crowk, [1] * K + [0] * len(crow_specs))
         return pivcols, nonpivot, result, recorded
-
-    def _record(self, K: int, m: int, red_specs: list[RowSpec], rows: list[tuple[RowSpec, int]],
-                new: list[list[int]], roots: Sequence[int] = ()) -> Step:
-        """A trace step keeping only the reducers the given rows (and reducers ``roots``)
-        need, transitively."""
-        needed = set()
-        stack = list(roots) + [j for spec, _ in rows for j in spec.piv_j]
-        while stack:
-            j = stack.pop()
-            if j not in needed:
-                needed.add(j)
-                stack.extend(red_specs[j].piv_j)
-        return Step(K, m, [(j, red_specs[j]) for j in sorted(needed)], rows, new)
 
     def _pair_rows(self, sel: list[tuple[int, int, int, int]]):
         """The rows of the selected pairs: per lcm one row becomes its reducer, the others
@@ -368,34 +303,32 @@ class F4:
 
     def _step(self) -> bool:
         """Process the pairs of lowest degree; returns False when 1 is in the ideal."""
-        d = min(pr[0] for pr in self.pairs)
-        sel = [pr for pr in self.pairs if pr[0] == d]
-        self.pairs = [pr for pr in self.pairs if pr[0] != d]
+        sel = self.pairs.take()
+        d = sel[0][0]
         pivots, crows = self._pair_rows(sel)
         if not crows:
             return True
         if compiled(self.p):
-            pivcols, nonpivot, (used, E, _), specs = self._matrix_compiled(crows, pivots)
+            pivcols, nonpivot, (used, E, _), rows_of = self._matrix_compiled(crows, pivots)
             m = len(nonpivot)
             new = [(slots, vals) for _, slots, vals in E]  # increasing leading monomial
-            if specs is not None:
-                red_specs, c_specs = specs
         else:
             T, pivcols, nonpivot, E, used, red_specs, c_specs = self._matrix(crows, pivots)
             m = len(nonpivot)
             new = [support(self.vec, E[s0], m) for s0 in sorted(E)]  # increasing leading monomial
+            rows_of = partial(tuple, (red_specs, c_specs))
         if self.trace is not None:
-            rows = [(c_specs[r], s0) for r, s0 in used]
-            step = self._record(len(pivcols), m, red_specs, rows, [s for s, _ in new])
+            step = Step(len(pivcols), m, rows_of, used, [s for s, _ in new])
             if self.trace.full and self.work <= FULL_TRACE_WORK:  # every row, for a full replay
-                step.full = (red_specs, c_specs, used)
+                step.keeps_full = True
                 if self._plan is not None:  # the rows as the kernel reduced them, for full replays
                     step.plans["full"] = self._plan
-            elif self.trace.full:  # too large to keep: no full replay, the rows are let go
-                self.trace.full = False
-                for st in self.trace.steps:
-                    st.full = None
-                    st.plans.pop("full", None)
+            else:
+                step.settle()
+                if self.trace.full:  # too large to keep: no full replay, the rows are let go
+                    self.trace.full = False
+                    for st in self.trace.steps:
+                        st.let_go()
             self.trace.steps.append(step)
         for slots, vals in new:
             k = self._add([nonpivot[s] for s in slots], vals, True, d)
@@ -412,13 +345,13 @@ class F4:
         counter = self.counter
         while self.pairs:
             if counter is not None:  # Hilbert-driven (Traverso): skip what reduces to zero
-                d = min(pr[0] for pr in self.pairs)
+                d = self.pairs.lowest()
                 need, done = counter.missing(d)
                 if done:
-                    self.pairs = []
+                    self.pairs.clear()
                     break
                 if need <= 0:
-                    self.pairs = [pr for pr in self.pairs if pr[0] != d]
+                    self.pairs.drop(d)
                     continue
             if not self._step():
                 if self.trace is not None:
@@ -431,19 +364,23 @@ class F4:
         """Tail-reduce the minimal basis with one more back substitution."""
         g = self.P.guard
         mons = self.mons
-        lms = [mons[k][0] for k in range(len(mons)) if self.active[k]]
-        keep = [k for k in range(len(mons)) if self.active[k]
-                and not any(((mons[k][0] | g) - lm) & g == g and lm != mons[k][0] for lm in lms)]
-        keep.sort(key=lambda k: mons[k][0])
+        keep: list[int] = []  # the minimal elements by increasing leading monomial (divisors come first)
+        for k in sorted((k for k in range(len(mons)) if self.active[k]), key=lambda k: mons[k][0]):
+            xg = mons[k][0] | g
+            for j in keep:
+                if (xg - mons[j][0]) & g == g:
+                    break
+            else:
+                keep.append(k)
         pivots = {mons[k][0]: (k, 0) for k in keep}
         lead = [mons[k][0] for k in keep]
         if compiled(self.p):
-            pivcols, nonpivot, (_, _, tails), specs = self._matrix_compiled([], pivots, lead)
-            red_specs = specs[0] if specs else None
+            pivcols, nonpivot, (_, _, tails), rows_of = self._matrix_compiled([], pivots, lead)
         else:
             T, pivcols, nonpivot, _, _, red_specs, _ = self._matrix([], pivots)
             column = dict(zip(pivcols, range(len(pivcols))))
             tails = [support(self.vec, T[column[lm]], len(nonpivot)) for lm in lead]
+            rows_of = partial(tuple, (red_specs, []))
         m = len(nonpivot)
         where = dict(zip(pivcols, range(len(pivcols))))
         out, final = [], []
@@ -452,7 +389,9 @@ class F4:
             out.append(([lm] + [nonpivot[s] for s in slots], [1] + vals))
             final.append((j, slots))
         if self.trace is not None:
-            self.trace.final = self._record(len(pivcols), m, red_specs, [], [], [j for j, _ in final])
+            self.trace.final = Step(len(pivcols), m, rows_of, [], [], [j for j, _ in final])
+            if self._plan is not None:  # the matrix as the kernel reduced it, to cut replays from
+                self.trace.final.plans["full"] = self._plan
             self.trace.final_out = final
             self.trace.shape = [ms for ms, _ in out]
         return out
@@ -465,7 +404,7 @@ def is_groebner(polys: Sequence[Row], packing: Packing, p: int) -> bool:
     eng = F4([], packing, p)
     for ms, cs in polys:
         eng._update(eng._add(ms, cs, True))
-    pivots, crows = eng._pair_rows(eng.pairs)
+    pivots, crows = eng._pair_rows(eng.pairs.everything())
     if not crows:
         return True
     if compiled(p):
@@ -498,7 +437,7 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
     p = ring.field.characteristic
     maxdeg = initial_degree(gens)
     while True:
-        P = Packing(ring.order, maxdeg)
+        P = packing(ring.order, maxdeg)
         rows = pack_polys(gens, P, int)
         try:
             basis = F4([r for r in rows if r[0]], P, p, budget=budget,
@@ -506,9 +445,9 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = {m: P.unpack(m) for m in {m for ms, _ in basis for m in ms}}  # a monomial once
-    nmod = flint.nmod
-    return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in basis]
+    exps = P.unpack_all(m for ms, _ in basis for m in ms)
+    one = flint.nmod(1, p)  # one * c: an nmod, made faster than by nmod(c, p)
+    return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in basis]
 
 
 def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
@@ -522,7 +461,7 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
     while maxdeg < 4 * max(sum(e) for b in polys for e in b) + 2:
         maxdeg = 2 * maxdeg + 1
     while True:
-        P = Packing(ring.order, maxdeg)
+        P = packing(ring.order, maxdeg)
         eng = F4([], P, p)
         seen: set[int] = set()
         try:
@@ -538,6 +477,15 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = {m: P.unpack(m) for m in {m for ms, _ in out for m in ms}}
-    nmod = flint.nmod
-    return [{exps[m]: nmod(c, p) for m, c in zip(ms, cs)} for ms, cs in out]
+    exps = P.unpack_all(m for ms, _ in out for m in ms)
+    one = flint.nmod(1, p)
+    return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in out]
+
+
+def _coded_rows(off, col, redk: list[int], crowk: list[int]) -> tuple[list[CodedRow], list[CodedRow]]:
+    """The rows of a matrix laid out flat (offsets, column codes) as :class:`~.f4_rows.CodedRow`
+    (array slices of the codes): the reducers by pivot id (of basis elements ``redk``), then the
+    pair rows (of ``crowk``)."""
+    K = len(redk)
+    reds = [CodedRow(k, 1, col[off[j]:off[j + 1]]) for j, k in enumerate(redk)]
+    return reds, [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]]) for i, k in enumerate(crowk)]

@@ -14,8 +14,9 @@ from .f4_vectors import RowSpec
 
 try:
     from ._f4rows import fglm_step as FGLM_STEP, gather as GATHER, layout as LAYOUT, reduce as KERNEL
+    from ._f4rows import subplan as SUBPLAN
 except ImportError:  # no compiler at install (or an extension built before FGLM's step): pure Python
-    KERNEL = LAYOUT = GATHER = FGLM_STEP = None
+    KERNEL = LAYOUT = GATHER = FGLM_STEP = SUBPLAN = None
 
 LIMIT = 1 << 31  # primes the kernel handles (products of two entries fit 62 bits)
 
@@ -175,6 +176,17 @@ class Plan:
         term of each row)."""
         plan = cls.__new__(cls)
         plan.ids, plan.off, plan.col = flat.ids, flat.off, flat.col
+        plan.rk, plan.rstart = array("i", rk), array("i", rstart)
+        return plan
+
+    def sub(self, K: int, rows: Sequence[int], roots: Sequence[int] = ()) -> "Plan":
+        """The plan of the pair rows ``rows`` (numbered after the ``K`` reducers, which this plan
+        holds as rows ``0..K-1`` by pivot id) and the reducers they and the pivots ``roots`` need,
+        transitively (cut out in C)."""
+        ids, off, col, rk, rstart = SUBPLAN(self.off, self.col, self.rk, self.rstart, K,
+                                            array("i", rows), array("i", roots))
+        plan = Plan.__new__(Plan)
+        plan.ids, plan.off, plan.col = array("i", ids), array("q", off), array("i", col)
         plan.rk, plan.rstart = array("i", rk), array("i", rstart)
         return plan
 

@@ -9,9 +9,9 @@ path.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Sequence
+from typing import Callable, Sequence
 
-from .f4_rows import CodedRow, as_spec, compiled, replay_step
+from .f4_rows import SUBPLAN, CodedRow, as_spec, compiled, replay_step
 from .f4_vectors import RowSpec, Vectors, echelon
 
 
@@ -19,21 +19,83 @@ class TraceMismatch(Exception):
     """The prime does not follow the recorded computation (unlucky prime or unlucky trace)."""
 
 
-@dataclass
 class Step:
     """One recorded matrix: ``K`` pivot columns, ``m`` slots, the needed reducers (by pivot
     id), the pair rows that raised the rank with the slot of their new pivot, and for each new
-    polynomial (appended to the basis in this order) its slots, leading one first."""
+    polynomial (appended to the basis in this order) its slots, leading one first.
 
-    K: int
-    m: int
-    reducers: list[tuple[int, RowSpec | CodedRow]]
-    rows: list[tuple[RowSpec | CodedRow, int]]
-    new: list[list[int]]
-    # every reducer (by pivot id), every pair row and the rows that raised the rank with their
-    # pivot slots, for a full replay (None: not kept)
-    full: tuple[list, list, list[tuple[int, int]]] | None = None
-    plans: dict = field(default_factory=dict)  # the rows laid out for replays (f4_rows.Plan)
+    ``rows_of()`` gives every row of the matrix (the reducers by pivot id, the pair rows), and
+    ``used`` the pair rows that raised the rank with their pivot slots; the needed reducers are
+    those these rows (and the reducers ``roots``) need, transitively.  Both are worked out when
+    first asked for: a run whose replays are all full (:func:`replay_full`, from the recorded
+    plans) never needs them.  ``full``: every reducer, every pair row and ``used``, for a full
+    replay (None: not kept); ``plans``: the rows laid out for replays (f4_rows.Plan)."""
+
+    def __init__(self, K: int, m: int, rows_of: Callable[[], tuple[list, list]], used: list,
+                 new: list[list[int]], roots: Sequence[int] = ()) -> None:
+        self.K, self.m, self.new, self.used, self.roots = K, m, new, used, roots
+        self.keeps_full = False
+        self.plans: dict = {}
+        self._rows_of = rows_of
+        self._every: tuple[list, list] | None = None
+        self._reducers: list[tuple[int, RowSpec | CodedRow]] | None = None
+        self._rows: list[tuple[RowSpec | CodedRow, int]] | None = None
+
+    def every(self) -> tuple[list, list]:
+        """Every row: the reducers by pivot id and the pair rows."""
+        if self._every is None:
+            self._every, self._rows_of = self._rows_of(), None
+        return self._every
+
+    @property
+    def full(self) -> tuple[list, list, list] | None:
+        return (*self.every(), self.used) if self.keeps_full else None
+
+    @property
+    def reducers(self) -> list[tuple[int, RowSpec | CodedRow]]:
+        if self._reducers is None:
+            self.settle()
+        return self._reducers
+
+    @property
+    def rows(self) -> list[tuple[RowSpec | CodedRow, int]]:
+        if self._rows is None:
+            self.settle()
+        return self._rows
+
+    def settle(self) -> None:
+        """Work out the needed reducers and the rows that raised the rank; unless the step keeps
+        every row, let the others go."""
+        if self._rows is not None:
+            return
+        red, crows = self.every()
+        rows = [(crows[r], s0) for r, s0 in self.used]
+        needed = set()
+        stack = list(self.roots) + [j for spec, _ in rows for j in spec.piv_j]
+        while stack:
+            j = stack.pop()
+            if j not in needed:
+                needed.add(j)
+                stack.extend(red[j].piv_j)
+        self._reducers = [(j, red[j]) for j in sorted(needed)]
+        self._rows = rows
+        if not self.keeps_full:
+            self._every = ([], [])
+
+    def rows_plan(self):
+        """The plan (f4_rows.Plan) of the rows a replay needs, cut in C from the plan of the
+        whole matrix when the step keeps one; None otherwise (the rows are then laid out)."""
+        plan = self.plans.get("rows")
+        if plan is None and "full" in self.plans and SUBPLAN is not None:
+            plan = self.plans["rows"] = self.plans["full"].sub(self.K, [r for r, _ in self.used], self.roots)
+        return plan
+
+    def let_go(self) -> None:
+        """Keep only what a replay needs (no full replay)."""
+        self.settle()
+        self.keeps_full = False
+        self._every = ([], [])
+        self.plans.pop("full", None)
 
 
 @dataclass
@@ -49,6 +111,18 @@ class Trace:
     final_out: list[tuple[int, list[int]]] = field(default_factory=list)
     shape: list[list[int]] = field(default_factory=list)
     full: bool = True  # whether every step kept all its rows (see :func:`replay_full`)
+
+    def full_cost(self) -> float:
+        """The entries a full replay reduces per entry of a replay (inf without a full trace)."""
+        if not self.full:
+            return float("inf")
+        if SUBPLAN is not None and all("full" in st.plans for st in self.steps):  # from the plans
+            every = sum(len(st.plans["full"].col) for st in self.steps)
+            kept = sum(len(st.rows_plan().col) for st in self.steps)
+        else:
+            kept = sum(len(_codes(r)) for st in self.steps for r in [r for _, r in st.reducers] + [r for r, _ in st.rows])
+            every = sum(len(_codes(r)) for st in self.steps for r in st.every()[0] + st.every()[1])
+        return every / max(kept, 1)
 
 
 def replay(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
@@ -90,19 +164,30 @@ def _replay_compiled(trace: Trace, polys: Sequence[list[int]], p: int) -> list[l
     """:func:`replay` with the matrices reduced by the compiled kernel (:mod:`.f4_rows`)."""
     coefs: list[list[int]] = [list(c) for c in polys]
     for st in trace.steps:
-        if not st.rows:
+        if not st.used:
             continue
-        used, E, _ = replay_step(st.reducers, [row for row, _ in st.rows], st, coefs, p)
-        if [s0 for _, s0 in used] != [s0 for _, s0 in st.rows]:
+        used, E, _ = _replay_needed(st, coefs, p)
+        if [s0 for _, s0 in used] != [s0 for _, s0 in st.used]:
             raise TraceMismatch("a pair row reduced differently")
         rows = {s0: (slots, vals) for s0, slots, vals in E}
         for slots in st.new:
             coefs.append(_on_slots(*rows[slots[0]], slots))
     if trace.unit:
         return [[1]]
-    st = trace.final
-    _, _, W = replay_step(st.reducers, [], st, coefs, p, [j for j, _ in trace.final_out])
+    _, _, W = _replay_needed(trace.final, coefs, p, [j for j, _ in trace.final_out])
     return [[1] + _on_slots(*w, slots) for w, (_, slots) in zip(W, trace.final_out)]
+
+
+def _replay_needed(st: Step, coefs: list[list[int]], p: int, want: Sequence[int] = ()):
+    """The kernel's ``(used, E, W)`` for the rows of a step a replay needs: cut from the plan
+    of the whole matrix when the step has one (no rows laid out in Python), else laid out."""
+    plan = st.rows_plan()
+    if plan is not None:
+        try:
+            return plan.reduce(coefs, p, st.m, st.K, want)
+        except TypeError:  # coefficients that are not Python ints
+            pass
+    return replay_step(st.reducers, [row for row, _ in st.rows], st, coefs, p, want)
 
 
 def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[int]]:
@@ -116,9 +201,9 @@ def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[i
         raise TraceMismatch("no full trace to replay")
     coefs: list[list[int]] = [list(c) for c in polys]
     for st in trace.steps:
-        reducers, rows, used_then = st.full
+        reducers, rows = ([], []) if "full" in st.plans else st.every()  # the plan holds the rows
         used, E, _ = replay_step(list(enumerate(reducers)), rows, st, coefs, p, key="full")
-        if used != used_then:
+        if used != st.used:
             raise TraceMismatch("a matrix reduced differently")
         got = {s0: (slots, vals) for s0, slots, vals in E}
         for slots in st.new:
@@ -133,6 +218,8 @@ def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[i
 def _on_slots(support: list[int], vals: list[int], slots: list[int]) -> list[int]:
     """The entries of a vector (its nonzero slots and values) in the given slots, which must
     hold all its nonzero entries."""
+    if support == slots:  # the usual case: the recorded support, in the kernel's order
+        return vals
     got = dict(zip(support, vals))
     out = [got.pop(s, 0) for s in slots]
     if got:
@@ -147,3 +234,8 @@ def _values_on(vec: Vectors, x: int, m: int, slots: list[int]) -> list[int]:
     if m - vals.count(0) != len(out) - out.count(0):
         raise TraceMismatch("a polynomial has a term the recorded run did not have")
     return out
+
+
+def _codes(row: RowSpec | CodedRow):
+    """A recorded row's entries (their pivots and slots)."""
+    return row.codes if isinstance(row, CodedRow) else row.piv_t + row.np_t

@@ -6,9 +6,13 @@
    the trace is dropped; when too many do, ``p0`` was unlucky and a new prime learns.  Primes
    dividing a leading coefficient of ``F`` are skipped.
 3. The residues of the coefficients of the reduced basis are combined by the Chinese remainder
-   theorem and lifted to rationals by rational reconstruction (:class:`Reconstructor`); every
-   lifted coefficient is checked against the later primes, and a complete lift is accepted
-   once the next prime agrees with all of it.
+   theorem and lifted to rationals by rational reconstruction (:class:`Reconstructor`), tried
+   from the first prime on (small coefficients need no second one); every lifted coefficient
+   is checked against the later primes, and a complete lift is accepted once the next prime
+   agrees with all of it.  While a complete lift is at hand, that prime replays the run in
+   full (step 4) when this is cheap or the lift likely right: if it agrees, it is the fresh
+   prime ``q`` of step 4's check modulo ``q``, made on the way (it is drawn after every prime
+   the lift used, so independently of ``G``).
 4. The lift ``G`` is verified (:func:`verify_basis`):
 
    * exactly over QQ: every generator top-reduces to 0 by ``G``, so ``I = <F>`` lies in
@@ -50,11 +54,16 @@ import flint
 
 from .errors import NotSupported
 from .f4 import F4, PackingOverflow, initial_degree, is_groebner
+from .f4_rows import compiled
 from .f4_trace import Trace, TraceMismatch, replay, replay_full
-from .monomials import Packing, nonnegative_matrix
+from .monomials import Packing, nonnegative_matrix, packing
 from .poly import support_mask
 
 PRIME_RANGE = (1 << 27, 1 << 28)
+FULL_REPLAY_COST = 3.0
+"""A lift not yet likely right is confirmed by a full replay (the check modulo a fresh prime on
+the way) when that reduces at most this many times the entries of a replay (else by a replay,
+the check then by another prime)."""
 
 
 class ModularFailure(NotSupported):
@@ -66,7 +75,21 @@ class SmallSystem(Exception):
 
 
 def primes(seed: int = 20031):
-    """An endless pseudo-random sequence of distinct primes in ``PRIME_RANGE``."""
+    """An endless pseudo-random sequence of distinct primes in ``PRIME_RANGE``, the same for a
+    seed (the primes found are kept: every computation over QQ starts with the same ones)."""
+    got, more = _SEQUENCES.setdefault(seed, ([], _prime_sequence(seed)))
+    i = 0
+    while True:
+        if i == len(got):
+            got.append(next(more))
+        yield got[i]
+        i += 1
+
+
+_SEQUENCES: dict[int, tuple[list[int], Any]] = {}
+
+
+def _prime_sequence(seed: int):
     rng = random.Random(seed)
     seen = set()
     while True:
@@ -121,6 +144,8 @@ class Reconstructor:
     def reset(self) -> None:
         self.i = self.j = 0
         self.den = 1
+        self.lift: list[list[Any]] = []  # the last complete lift, from a modulus of ``bits`` bits
+        self.bits = 0
 
     def check(self, residues: list[list[int]], p: int) -> bool:
         """Rewind to the first lifted coefficient that disagrees with the residues mod p;
@@ -160,7 +185,15 @@ class Reconstructor:
                 j += 1
             i, j = i + 1, 0
         self.i, self.j, self.den = i, j, den
-        return [[flint.fmpq(n, d) for n, d in row] for row in out]
+        self.lift, self.bits = [[flint.fmpq(n, d) for n, d in row] for row in out], m.bit_length()
+        return self.lift
+
+    def confident(self) -> bool:
+        """Whether the last complete lift's coefficients lie far below the bound, where a wrong
+        lift is unlikely: a residue mod m is n/d with |n|, d < 2^h for fewer than 2^(2h+1)
+        residues, here at most m/32 (and a wrong lift of many coefficients is far rarer)."""
+        height = max([c.height_bits() for row in self.lift for c in row], default=0)
+        return 2 * height + 6 < self.bits
 
 
 class Lifter:
@@ -193,7 +226,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
     stream = primes()
     for attempt in range(3):
         while True:
-            P = Packing(ring.order, maxdeg)
+            P = packing(ring.order, maxdeg)
             shapes, coefs = _pack(ints, P)
             try:
                 result = _modular(shapes, coefs, P, stream, max_primes, small_work, counter)
@@ -202,11 +235,11 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
                 maxdeg = 2 * maxdeg + 1
         if result is None:
             continue
-        shape, G, trace = result
-        exps = {mo: P.unpack(mo) for mo in {mo for ms in shape for mo in ms}}  # a monomial once
+        shape, G, trace, certified = result
+        exps = P.unpack_all(mo for ms in shape for mo in ms)
         basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
-        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact",
-                                            lambda q: _replayed_basis_agrees(trace, coefs, G, q)):
+        replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
+        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed):
             return basis
     raise ModularFailure("modular F4: no verified basis after 3 attempts (use another engine)")
 
@@ -222,7 +255,14 @@ def _pack(ints: list[dict], P: Packing):
 
 def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int = 0,
              counter: Callable | None = None):
-    """(monomials, rational coefficients) of the lifted basis, or None to start again."""
+    """``(monomials, rational coefficients, trace, certified)`` of the lifted basis, or None to
+    start again.  A lift is tried from the first prime on (small coefficients need no more)
+    and accepted once a further prime agrees with all of it.  While a lift is at hand, that
+    prime replays the trace in full (:func:`.f4_trace.replay_full`) if this costs at most
+    :data:`FULL_REPLAY_COST` replays or the lift's coefficients lie far below the
+    reconstruction's bound (a likely right lift), and ``certified`` says
+    that it did: the lift modulo that prime is then the reduced Gröbner basis of the ideal
+    modulo it, the check of :func:`verify_basis` modulo a fresh prime, made on the way."""
     used = 0
     while used < max_primes:
         p0 = next(stream)
@@ -240,7 +280,8 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
         lifter = Lifter()
         lifter.add([cs for _, cs in basis], p0)
         rec = Reconstructor([len(cs) for _, cs in basis])
-        candidate = None
+        candidate = rec.attempt(lifter.values, lifter.m)
+        cheap_full = None  # whether a full replay costs little (worked out when needed)
         misses = good = 0
         while used < max_primes:
             p = next(stream)
@@ -248,7 +289,10 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
             if any(cs[0] % p == 0 for cs in coefs):
                 continue
             try:
-                res = replay(trace, [[c % p for c in cs] for cs in coefs], p)
+                if candidate is not None and cheap_full is None:
+                    cheap_full = trace.full_cost() <= FULL_REPLAY_COST
+                res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p,
+                                    candidate is not None and (cheap_full or rec.confident()))
             except TraceMismatch:
                 misses += 1
                 if misses > good + 2:
@@ -256,16 +300,29 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
                 continue
             good += 1
             if not rec.check(res, p) and candidate is not None:
-                return shape, candidate, trace
+                return shape, candidate, trace, full
             lifter.add(res, p)
             candidate = rec.attempt(lifter.values, lifter.m)
     return None
+
+
+def _replay(trace: Trace, polys: list[list[int]], p: int, full: bool) -> tuple[list[list[int]], bool]:
+    """The basis modulo ``p`` by the trace, and whether by a full replay (tried when ``full``;
+    a prime that keeps the rows the run used but not the rank of every matrix still serves
+    the lift)."""
+    if full and trace.full and compiled(p):
+        try:
+            return replay_full(trace, polys, p), True
+        except TraceMismatch:
+            pass
+    return replay(trace, polys, p), False
 
 
 def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool = False,
                  replayed: Callable[[int], bool | None] | None = None) -> bool:
     """Check a lifted reduced basis (see the module docstring).
 
+    ``basis``: dicts with the leading exponent first (as :func:`f4_qq` builds them).
     Always exact: every generator top-reduces to 0 over QQ.  The Gröbner basis property is
     checked exactly over QQ (``exact``), or else modulo one fresh prime ``q``: by
     ``replayed(q)`` when given (True: ``G mod q`` is the reduced basis of the ideal mod
@@ -273,7 +330,7 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
     by the Gebauer–Möller criteria."""
     if len(basis) == 1 and len(basis[0]) == 1 and not any(next(iter(basis[0]))):
         return True  # the unit ideal: nothing to check beyond the lift
-    red = ExactReducer(basis, ring.order)
+    red = ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
     if exact:
         if not red.is_groebner():
             return False
@@ -338,7 +395,7 @@ def _is_groebner_mod(polys, order, q: int) -> bool:
     while maxdeg < 2 * top:
         maxdeg = 2 * maxdeg + 1
     while True:
-        P = Packing(order, maxdeg)
+        P = packing(order, maxdeg)
         rows = []
         for items in polys:
             packed = sorted(((P.pack(e), c) for e, c in items), reverse=True)
@@ -352,33 +409,59 @@ def _is_groebner_mod(polys, order, q: int) -> bool:
 class ExactReducer:
     """Top-reduction over QQ by a reduced basis, with python-flint's ``fmpq_mpoly``.
 
-    ``x^e`` is mapped to ``y^(W e, e)`` in ``QQ[y_1..y_2n]`` with the lexicographic ordering:
-    a ring embedding that maps leading terms to leading terms (``W`` is the ordering's
-    nonnegative matrix), so flint does the arithmetic and finds leading terms."""
+    Orderings flint has (``lp``, ``Dp``, ``dp`` as one block) are flint's own (``lex``,
+    ``deglex``, ``degrevlex``: the same comparisons, variables in the ring's order).  Any
+    other ``x^e`` is mapped to ``y^(W e, e)`` in ``QQ[y_1..y_2n]`` with the lexicographic
+    ordering: a ring embedding that maps leading terms to leading terms (``W`` is the
+    ordering's nonnegative matrix), so flint does the arithmetic and finds leading terms."""
 
-    def __init__(self, basis: list[dict], order) -> None:
+    def __init__(self, basis: list[dict], order, leads: list[tuple] | None = None) -> None:
         n = self.n = order.nvars
-        self.W = W = nonnegative_matrix(order)
-        self.ctx = flint.fmpq_mpoly_ctx.get(("y", 2 * n), "lex")
-        self.xctx = flint.fmpq_mpoly_ctx.get(("x", n), "lex")
-        ys = self.ctx.gens()
-        self.images = []
-        for j in range(n):
-            m = ys[n + j]
-            for i in range(n):
-                if W[i][j]:
-                    m = m * ys[i] ** W[i][j]
-            self.images.append(m)
-        self.polys = [self.image(b) for b in basis]
-        self.lms = [p.monomial(0)[n:] for p in self.polys]
+        blocks = order.blocks
+        native = _FLINT_ORDERINGS.get(blocks[0].kind) if len(blocks) == 1 and blocks[0].size == n else None
+        if native is not None:
+            self.W = None
+            self.lead = 0  # the leading exponent starts at this position of flint's exponent
+            self.ctx = flint.fmpq_mpoly_ctx.get(("x", n), native)
+            if leads is not None:  # the elements (leading exponents known) go to flint when first needed
+                self.basis, self.lms = basis, list(leads)
+                self.polys = [None] * len(basis)
+                self.masks = [support_mask(e) for e in self.lms]
+                return
+            self.polys = [self.ctx.from_dict(b) for b in basis]
+        else:
+            self.lead = n
+            self.W = W = nonnegative_matrix(order)
+            self.ctx = flint.fmpq_mpoly_ctx.get(("y", 2 * n), "lex")
+            self.xctx = flint.fmpq_mpoly_ctx.get(("x", n), "lex")
+            ys = self.ctx.gens()
+            self.images = []
+            for j in range(n):
+                m = ys[n + j]
+                for i in range(n):
+                    if W[i][j]:
+                        m = m * ys[i] ** W[i][j]
+                self.images.append(m)
+            self.polys = [self.image(b) for b in basis]
+        self.lms = [p.monomial(0)[self.lead:] for p in self.polys]
         self.masks = [support_mask(e) for e in self.lms]
+
+    def _poly(self, k: int):
+        """Basis element ``k`` in flint."""
+        if self.polys[k] is None:
+            self.polys[k] = self.ctx.from_dict(self.basis[k])
+        return self.polys[k]
 
     def image(self, terms: dict):
         """The image of a polynomial (substitution of monomials, done by flint)."""
+        if self.W is None:
+            return self.ctx.from_dict(terms)
         return self.xctx.from_dict(terms).compose(*self.images, ctx=self.ctx)
 
     def _term(self, u, c):
         W = self.W
+        if W is None:
+            return self.ctx.from_dict({u: c})
         return self.ctx.from_dict({tuple([sum(w * x for w, x in zip(r, u)) for r in W]) + tuple(u): c})
 
     def reduces_to_zero(self, terms: dict) -> bool:
@@ -386,7 +469,7 @@ class ExactReducer:
         return self._top_reduce(f)
 
     def _top_reduce(self, f) -> bool:
-        n, lms, masks, polys = self.n, self.lms, self.masks, self.polys
+        n, lms, masks = self.lead, self.lms, self.masks
         while not f.is_zero():
             e = f.monomial(0)[n:]
             m = support_mask(e)
@@ -396,11 +479,12 @@ class ExactReducer:
             else:
                 return False
             u = tuple([a - b for a, b in zip(e, lm)])
-            f = f - self._term(u, f.leading_coefficient()) * polys[k]
+            f = f - self._term(u, f.leading_coefficient()) * self._poly(k)
         return True
 
     def is_groebner(self) -> bool:
         """Every S-pair left by the Gebauer–Möller criteria top-reduces to 0 over QQ."""
+        self.polys = [self._poly(k) for k in range(len(self.polys))]
         for i, j, L in _pairs(self.lms):
             ui = tuple([a - b for a, b in zip(L, self.lms[i])])
             uj = tuple([a - b for a, b in zip(L, self.lms[j])])
@@ -409,6 +493,10 @@ class ExactReducer:
             if not self._top_reduce(s):
                 return False
         return True
+
+
+_FLINT_ORDERINGS = {"lp": "lex", "Dp": "deglex", "dp": "degrevlex"}
+"""Singular's orderings flint has (on one block of all variables)."""
 
 
 def _pairs(lms: list) -> list[tuple[int, int, tuple]]:

@@ -82,6 +82,8 @@ class Packing:
         self.weight_shifts, self.weight_widths = shifts[:n], widths[:n]  # the fields of W e
         # a graded ordering (first weight row positive): its weighted degree is the top field
         self.graded = all(v > 0 for v in W[0])
+        self.first_weights = tuple(W[0])
+        self.degree_first = all(v == 1 for v in W[0])  # the ordering compares total degrees first
         self.wshift = shifts[0]
         self.guard = sum(1 << (s + w - 1) for s, w in zip(shifts, widths))
         self.eshifts = shifts[n + 1:]
@@ -108,6 +110,11 @@ class Packing:
     def unpack(self, m: int) -> Exp:
         mask = self.emask
         return tuple([(m >> s) & mask for s in self.eshifts])
+
+    def unpack_all(self, monomials) -> dict[int, Exp]:
+        """The exponents of packed monomials, by monomial (each unpacked once)."""
+        mask, shifts = self.emask, self.eshifts
+        return {m: tuple([(m >> s) & mask for s in shifts]) for m in set(monomials)}
 
     def weighted_degree(self, m: int) -> int:
         """The first weight row applied to the exponent (the degree of a graded ordering)."""

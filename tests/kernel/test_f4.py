@@ -1,12 +1,14 @@
 """The F4 engines (kernel/f4.py, f4_vectors.py, f4_trace.py, f4_rows.py, modular.py, monomials.py)
 against Buchberger's reduced bases: ``f4`` over Z/p, ``modular`` over QQ; every test runs with the
 compiled row kernel and with the pure-Python linear algebra."""
+import itertools
 import random
 
 import flint
 import pytest
 
-from mech.kernel import GF, QQ, Block, MonomialOrder, f4_rows
+from mech.kernel import GF, QQ, Block, MonomialOrder, f4_rows, modular
+from mech.kernel.engines import clear_cache
 from mech.kernel.groebner import groebner
 from mech.kernel import f4 as f4_module
 from mech.kernel.f4 import F4, pack_polys
@@ -193,7 +195,7 @@ def test_full_replay_certifies_the_lift_modulo_a_fresh_prime():
     ints = [primitive(g.terms) for g in katsura(R, 4)]
     P = Packing(R.order, 31)
     shapes, coefs = _pack(ints, P)
-    shape, G, trace = _modular(shapes, coefs, P, primes(), 100)
+    shape, G, trace, _ = _modular(shapes, coefs, P, primes(), 100)
     q = 1000003
     compiled = f4_rows.compiled(q)
     assert _replayed_basis_agrees(trace, coefs, G, q) is (True if compiled else None)
@@ -214,6 +216,90 @@ def test_a_large_run_keeps_no_full_trace(monkeypatch):
     ints = [primitive(g.terms) for g in katsura(R, 4)]
     P = Packing(R.order, 31)
     shapes, coefs = _pack(ints, P)
-    shape, G, trace = _modular(shapes, coefs, P, primes(), 100)
+    shape, G, trace, _ = _modular(shapes, coefs, P, primes(), 100)
     assert not trace.full and all(st.full is None for st in trace.steps)
     assert _replayed_basis_agrees(trace, coefs, G, 1000003) is None
+
+
+def _stream_from(first, monkeypatch):
+    """f4_qq's primes: ``first`` (adversarial choices), then the usual sequence."""
+    usual = modular.primes
+    monkeypatch.setattr(modular, "primes", lambda seed=20031: itertools.chain(first, usual(seed)))
+
+
+def test_a_lift_from_the_first_prime_is_confirmed_by_a_full_replay(monkeypatch):
+    """Small coefficients: the lift from p0 alone is confirmed by the next prime's full replay,
+    which is the check modulo a fresh prime (no direct S-pair check is made)."""
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    gens = cyclic(R)
+    ints = [primitive(g.terms) for g in gens]
+    P = Packing(R.order, 63)
+    shapes, coefs = _pack(ints, P)
+    stream = primes()
+    shape, G, trace, certified = _modular(shapes, coefs, P, stream, 100)
+    assert next(stream) == list(itertools.islice(primes(), 3))[2]  # p0 and one confirming prime used
+    if f4_rows.KERNEL is None:  # no full replays in pure Python: the check is made apart
+        assert not certified
+        return
+    assert certified and trace.full
+    monkeypatch.setattr(modular, "_is_groebner_mod", lambda *a: pytest.fail("direct check made"))
+    clear_cache()
+    assert groebner(gens, engine="modular") == groebner(gens, engine="buchberger")
+
+
+def test_an_unlucky_first_prime(monkeypatch):
+    """x^2 + q y, x y - 1 is the unit ideal modulo q (x = x^2 y - x (x y - 1)), not over QQ: with
+    q as the first prime, the trace does not hold for the next primes and another prime learns."""
+    q = 134217757  # a prime of PRIME_RANGE
+    assert flint.fmpz(q).is_prime() and modular.PRIME_RANGE[0] < q < modular.PRIME_RANGE[1]
+    R = ring("xy", [Block("dp", 2)])
+    x, y = R.gens()
+    gens = [x**2 + q * y, x * y - 1]
+    _stream_from([q], monkeypatch)
+    clear_cache()
+    G = groebner(gens, engine="modular")
+    assert G == groebner(gens, engine="buchberger") and G != [R.one()]
+
+
+def test_a_confirming_prime_off_the_full_trace_still_serves_the_lift(monkeypatch):
+    """A prime whose full replay leaves the trace gives its plain replay to the lift; the check
+    modulo a fresh prime is then made apart (and can fail for a changed basis)."""
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    gens = katsura(R, 4)
+    full = modular.replay_full
+    calls = []
+
+    def refuse_first(trace, polys, p):  # the first full replay leaves the trace
+        calls.append(p)
+        if len(calls) == 1:
+            raise TraceMismatch("adversarial")
+        return full(trace, polys, p)
+    monkeypatch.setattr(modular, "replay_full", refuse_first)
+    clear_cache()
+    assert groebner(gens, engine="modular") == groebner(gens, engine="buchberger")
+    # the refused prime, then the separate check (without the kernel: only the check's attempt)
+    assert len(calls) >= (2 if f4_rows.KERNEL is not None else 1)
+
+
+def test_a_wrong_lift_from_few_primes_is_rejected(monkeypatch):
+    """Basis coefficients of about 64 bits: lifts from one or two primes (below 2^56) fail or are
+    wrong (fractions that agree with the primes used, not with the next one), and the confirming
+    prime says so."""
+    R = ring("xyz", [Block("dp", 3)])
+    x, y, z = R.gens()
+    big = flint.fmpq(3**40 + 1, 7**20)
+    gens = [x**2 - big * y * z, y**2 - x + big, z**2 - y]
+    lifts = []
+    attempt = modular.Reconstructor.attempt
+
+    def spy(self, values, m):
+        out = attempt(self, values, m)
+        lifts.append(out)
+        return out
+    monkeypatch.setattr(modular.Reconstructor, "attempt", spy)
+    clear_cache()
+    G = groebner(gens, engine="modular")
+    assert G == groebner(gens, engine="buchberger")
+    final = [c for cs in lifts[-1] for c in cs]
+    assert max(c.height_bits() for c in final) > 56  # beyond what one or two primes can lift
+    assert len(lifts) >= 4 and all(out is None or out != lifts[-1] for out in lifts[:2])

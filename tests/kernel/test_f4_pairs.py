@@ -1,0 +1,88 @@
+"""F4's pair set (kernel/f4_pairs.py): the compiled set (kernel/_f4pairs.c) takes the same steps
+as the pure-Python one, and the Gebauer–Möller criteria keep what Buchberger's criterion needs."""
+import random
+
+import pytest
+
+from mech.kernel import Block, MonomialOrder, f4_pairs
+from mech.kernel.f4_pairs import PairSet, pair_set
+from mech.kernel.monomials import Packing
+
+compiled = pytest.mark.skipif(f4_pairs._Compiled is None, reason="the compiled pair set is not built")
+
+
+def run(pairs, P, leads, sugars, rng):
+    """Feed elements one by one (some as input rows), taking pairs now and then; the log of
+    everything the set returned."""
+    log, active = [], []
+    for k, (e, s) in enumerate(zip(leads, sugars)):
+        pairs.add(P.pack(e), s)
+        active.append(False)
+        if rng.random() < 0.2:
+            pairs.push(sum(e), k)
+            log.append(("push", k))
+            continue
+        log.append(("update", k, pairs.update(k, active), list(active)))
+        if rng.random() < 0.3 and len(pairs):
+            log.append(("take", pairs.lowest(), pairs.take()))
+    log.append(("rest", len(pairs), pairs.everything()))
+    return log
+
+
+@compiled
+@pytest.mark.parametrize("order", ["dp", "lp", "block"])
+@pytest.mark.parametrize("seed", range(6))
+def test_compiled_and_python_pair_sets_agree(order, seed):
+    rng = random.Random(seed)
+    n = rng.choice([2, 3, 5, 7])
+    if order == "block":
+        mo = MonomialOrder([Block("dp", n - 1), Block("dp", 1)]) if n > 1 else MonomialOrder.simple("dp", n)
+    else:
+        mo = MonomialOrder.simple(order, n)
+    P = Packing(mo, 63)
+    leads = [tuple(rng.randrange(5) for _ in range(n)) for _ in range(40)]
+    leads = [e if any(e) else (1,) + e[1:] for e in leads]
+    sugars = [sum(e) + rng.randrange(3) for e in leads]
+    by_weight = order != "lp"
+    ours = run(pair_set(P, by_weight), P, leads, sugars, random.Random(seed))
+    theirs = run(PairSet(P, by_weight), P, leads, sugars, random.Random(seed))
+    assert ours == theirs
+
+
+@pytest.mark.parametrize("use_compiled", [True, False])
+def test_overflow_leaves_the_set_unchanged(use_compiled, monkeypatch):
+    if not use_compiled:
+        monkeypatch.setattr(f4_pairs, "_Compiled", None)
+    elif f4_pairs._Compiled is None:
+        pytest.skip("the compiled pair set is not built")
+    P = Packing(MonomialOrder.simple("dp", 2), 7)
+    pairs = pair_set(P, True)
+    active = [False, False]
+    pairs.add(P.pack((5, 0)), 5)
+    assert pairs.update(0, active) and active == [True, False]
+    pairs.add(P.pack((0, 5)), 5)
+    assert pairs.update(1, active)  # coprime: no pair, its lcm (degree 10) not even formed
+    pairs.add(P.pack((3, 3)), 6)
+    active.append(False)
+    assert not pairs.update(2, active)  # lcms x^5 y^3 and x^3 y^5 of degree 8 > 7
+    assert active == [True, True, False] and len(pairs) == 0
+
+
+@pytest.mark.parametrize("use_compiled", [True, False])
+def test_criteria_on_a_small_example(use_compiled, monkeypatch):
+    """x^2, xy, y^2: the pairs (x^2, xy) and (xy, y^2) of lcm degree 3 survive, (x^2, y^2) is
+    coprime (Buchberger's first criterion drops it)."""
+    if not use_compiled:
+        monkeypatch.setattr(f4_pairs, "_Compiled", None)
+    elif f4_pairs._Compiled is None:
+        pytest.skip("the compiled pair set is not built")
+    P = Packing(MonomialOrder.simple("dp", 2), 63)
+    pairs = pair_set(P, True)
+    active = []
+    for k, e in enumerate([(2, 0), (1, 1), (0, 2)]):
+        pairs.add(P.pack(e), 2)
+        active.append(False)
+        assert pairs.update(k, active)
+    got = sorted((key, P.unpack(L), i, j) for key, L, i, j in pairs.everything())
+    assert got == [(3, (1, 2), 1, 2), (3, (2, 1), 0, 1)]
+    assert pairs.lowest() == 3 and len(pairs.take()) == 2 and pairs.lowest() is None
