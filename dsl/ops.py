@@ -165,7 +165,7 @@ def _matrix_op(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Matrix:
                     out.append(s)
             return Matrix(ring, a.nrows, b.ncols, out)
         raise _bad(op, a, b)
-    if op in ("+", "-") and isinstance(a, Matrix) and isinstance(b, Ideal):  # the ideal as a 1 x n matrix
+    if op in ("+", "-", "*") and isinstance(a, Matrix) and isinstance(b, Ideal):  # the ideal as a 1 x n matrix
         return _matrix_op(op, a, Matrix(ring, 1, len(b.gens), list(b.gens)), ring)
     if op in ("+", "-") and isinstance(a, Matrix) and _rank(b) >= 0:  # Singular: b times the unit matrix
         p = to_poly(b, ring)
