@@ -1,7 +1,8 @@
 """Singular builtins added in session 13 for the conformance run: division (global and local orderings,
 vectors), a matrix declared from a vector ([rows][cols] filled row by row), matrix * ideal, gcd over a
 parameter field in several variables, reduce(f, u, I, d), ring.lib's isSubModule, and the lines imap prints
-under option(Imap).  Each snippet's output is compared with the installed Singular's line by line; the
+under option(Imap); attributes: homog marks isHomog (the components' weights), an assignment drops a
+variable's attributes, modules of at most one generator are standard bases.  Each snippet's output is compared with the installed Singular's line by line; the
 expected values of a few are also checked without Singular."""
 from __future__ import annotations
 
@@ -70,4 +71,29 @@ def test_gcd_over_parameters_without_singular():
 @pytest.mark.parametrize("name", sorted(SNIPPETS))
 def test_as_singular(name: str) -> None:
     src = SNIPPETS[name]
+    assert output_lines(run(src)) == output_lines(run_singular(src))
+
+
+ATTRIBUTE_SNIPPETS = {
+    "homog_marks_isHomog": """
+ring r = 0,(x,y),dp; module M = [x,y3],[0,y]; homog(M); attrib(M, "isHomog");
+module N = [0,x2,y],[x,0,0]; homog(N); attrib(N, "isHomog");
+module K = [x,y2]; homog(K); attrib(K);
+ideal I = x2,y2; homog(I); attrib(I); attrib(I, "isHomog"); poly f = x2; homog(f); attrib(f);
+ring B = 0,(x,y,z),wp(1,2,3); module M = [y3-z2,x3-z],[x3,1]; homog(M); attrib(M, "isHomog");
+intvec v = 4,7; attrib(M, "isHomog", v); attrib(M, "isHomog");
+""",
+    "assignment_drops_attributes": """
+ring r = 0,(x,y),dp; ideal i = x; attrib(i, "huhu", 1); attrib(i); i = x,y; attrib(i);
+attrib(i, "huhu", 1); i[2] = x+1; attrib(i);
+ideal j = x2,y; attrib(j, "huhu", 2); attrib(j, "isSB", 1); attrib(j); killattrib(j, "isSB"); attrib(j);
+module Z; attrib(Z); module L = [x,y],[y,x]; attrib(L); attrib(std(L), "isSB");
+""",
+}
+
+
+@pytest.mark.singular
+@pytest.mark.parametrize("name", sorted(ATTRIBUTE_SNIPPETS))
+def test_attributes_as_singular(name: str) -> None:
+    src = ATTRIBUTE_SNIPPETS[name]
     assert output_lines(run(src)) == output_lines(run_singular(src))
