@@ -146,6 +146,16 @@ _LIFT_MODULE = ("module A = {s1}; module G = {m2}; matrix T[{m3}][{m4}] = {m5}; 
                 "&& (size(reduce(lead(std(A)), std(lead(G)))) == 0);")
 _LIFT_MODULE_SYZ = _LIFT_MODULE + (" module S = {m6}; matrix SS = matrix(S, ncols(A), ncols(S)); "
                                    "ok = ok && (size(module(matrix(A)*SS)) == 0) && (size(reduce(syz(A), std(S))) == 0);")
+#: division(f, I) = (T, R, U): f*U = I*T + R, U a unit of the local ring, R's leading monomial outside the
+#: leading ideal of I
+_DIVISION = ("poly f = {s1}; ideal I = {s2}; matrix T[ncols(I)][1] = {m3}; ideal R = {m4}; matrix U[1][1] = {m5}; "
+             "ok = (matrix(f)*U == matrix(I)*T + matrix(R)) && (jet(U[1,1], 0) != 0) "
+             "&& ((R[1] == 0) || (reduce(leadmonom(R[1]), std(lead(std(I)))) != 0));")
+#: division(G, I, n) = (T, R): G = I*T + R up to degree n, no leading monomial of R in the leading ideal of I
+_DIVISION_UP_TO = ("ideal G = {s1}; ideal I = {s2}; matrix T[ncols(I)][ncols(G)] = {m3}; ideal R = {m4}; "
+                   "int n = {s5}; int k; ok = (size(module(jet(matrix(G) - matrix(I)*T - matrix(R), n))) == 0); "
+                   "for (k = 1; k <= ncols(R); k++) { if (R[k] != 0) { "
+                   "if (reduce(leadmonom(R[k]), std(lead(std(I)))) == 0) { ok = 0; } } }")
 #: the same element up to a nonzero constant factor (a gcd is defined up to units)
 _ASSOCIATE = ("poly a = {m1}; poly b = {s1}; "
               "ok = ((a == 0) && (b == 0)) || ((a != 0) && (b != 0) && (leadcoef(b)*a == leadcoef(a)*b));")
@@ -246,6 +256,17 @@ CHECKS: dict[str, Check] = {
         "a gcd is unique up to a constant factor (Singular prints its raw gcd, mech's is monic): each of "
         "mech's is checked to be Singular's times a nonzero constant; the normalized ones agree as text",
         (("  poly d=gcd( f, g );\n  d;", "  poly d=gcd( f, g );\n  " + value("d")),), _ASSOCIATE),
+    "Manual/division.tst": Check(
+        "division in a local ordering: the quotients T, remainder R and unit U are not unique (Singular's U is "
+        "mech's divided by 4 for f^2): mech's are checked to satisfy f*U = I*T + R with U a unit and R's leading "
+        "monomial outside the leading ideal; division(G, I, 10)'s (T, R) to satisfy G = I*T + R up to degree 10 "
+        "with no leading monomial of R in the leading ideal (Singular's R is x10+9/4y10, mech's 0)",
+        (("division(f,jacob(f)); // automatic conversion: poly -> ideal\ndivision(f^2,jacob(f));",
+          "list D@ = division(f,jacob(f)); " + value("f", "jacob(f)", "D@[1]", "D@[2]", "D@[3]")
+          + "\nD@ = division(f^2,jacob(f)); " + value("f^2", "jacob(f)", "D@[1]", "D@[2]", "D@[3]")),
+         ("division(ideal(f^2),jacob(f),10);", "D@ = division(ideal(f^2),jacob(f),10); "
+          + value("ideal(f^2)", "jacob(f)", "D@[1]", "D@[2]", "10", '"up to"'))),
+        {5: _DIVISION, 6: _DIVISION_UP_TO}),
     "Short/liftstd_m.tst": Check(
         "liftstd of a module: the standard basis, T and the syzygies are not unique (Singular leaves the tail "
         "of xz-yz unreduced): mech's G is checked to be A*T with leading terms generating the leading module "

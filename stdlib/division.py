@@ -30,8 +30,8 @@ def division(ctx, g: Poly | Ideal | Vector | Module | Matrix, f: Ideal | Module 
       ring r = 0,(x,y),dp;
       division(x2y+y2, ideal(x2, y));
       → [1]:
-      →    _[1,1]=y
-      →    _[2,1]=y
+      →    _[1,1]=0
+      →    _[2,1]=x2+y
       → [2]:
       →    _[1]=0
       → [3]:
@@ -68,6 +68,29 @@ def division(ctx, g: Poly | Ideal | Vector | Module | Matrix, f: Ideal | Module 
     else:
         R = Module(ring, [Vector.from_terms(ring, rest) for rest in remainders], rank)
     return List([T, R, U])
+
+
+@command("division")
+def division_up_to(ctx, g: Ideal, f: Ideal, n: int) -> List:
+    """division(G, F, n): the list (T, R) with matrix(G) = matrix(F)*T + matrix(R) up to terms of degree
+    above n (power series: the quotients and remainders of division(G, F) divided by its units, cut at
+    degree n); one choice among many.
+
+    Example:
+      ring r = 0,(x,y),ds;
+      division(ideal(x+x2), ideal(x+y2), 3);
+      → [1]:
+      →    _[1,1]=1+x
+      → [2]:
+      →    _[1]=-y2-xy2
+    """
+    from .polyops import jet_unit
+    T, R, U = division(ctx, g, f).items
+    k = U.nrows
+    units = [U.get(c, c) for c in range(1, k + 1)]
+    entries = [jet_unit(T.get(r, c), units[c - 1], n) for r in range(1, T.nrows + 1) for c in range(1, k + 1)]
+    rest = Ideal(R.ring, [jet_unit(p, u, n) for p, u in zip(R.gens, units)])
+    return List([Matrix(T.ring, T.nrows, k, entries), rest])
 
 
 def _quotient_order(ring: Any, rank: int) -> Callable[[tuple], tuple]:

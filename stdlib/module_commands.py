@@ -302,8 +302,9 @@ def _lift_std(ring: PolyRing, m: Module) -> tuple[list[dict], list[dict], list[d
 @command("liftstd", raw=True)
 def liftstd(ctx, m_node: A.Expr, t_node: A.Expr, *rest: A.Expr) -> Ideal | Module:
     """liftstd(M, T): a standard basis S of M, setting the matrix T with matrix(S) = matrix(M)*T;
-    liftstd(M, T, U) also sets the module U of the syzygies of M's generators (a last string argument,
-    the algorithm, is ignored).
+    liftstd(M, T, U) also sets the module U of the syzygies of M's generators (a string argument, the
+    algorithm, is ignored); with a last argument N, a module, a standard basis S of M + N with
+    matrix(S) = matrix(M)*T modulo N, and U the syzygies of M's generators modulo N.
 
     Example:
       ring r = 0,(x,y),dp;
@@ -317,14 +318,23 @@ def liftstd(ctx, m_node: A.Expr, t_node: A.Expr, *rest: A.Expr) -> Ideal | Modul
       → 0,0,0
     """
     kinds = tuple(isinstance(r, A.StrLit) for r in rest)
+    relative = kinds in ((False, False), (True, False), (False, True, False))  # a last module N
+    if relative:
+        kinds, n_node, rest = kinds[:-1], rest[-1], rest[:-1]
     if kinds not in ((), (False,), (True,), (False, True)):
-        raise MechRuntimeError("liftstd with a module to work relative to (liftstd(M, T, alg, N)) is not supported")
+        raise MechRuntimeError("liftstd takes (M, T), (M, T, S), (M, T, alg) or (M, T, S, alg), then maybe a module N")
     v = ctx.eval(m_node)
     ring = ctx.basering().poly
     m = to_module(v, ring)
     _global(ring, "liftstd")
-    basis, coeffs, syz = _lift_std(ring, m)
     k = len(m.gens)
+    if relative:  # a standard basis of M + N, T with M*T = it modulo N, S the syzygies of M modulo N
+        n = to_module(ctx.eval(n_node), ring)
+        basis, coeffs, syz = _lift_std(ring, Module(ring, list(m.gens) + list(n.gens), max(m.rank, n.rank)))
+        coeffs = [{t: c for t, c in cf.items() if t[1] < k} for cf in coeffs]
+        syz = _basis(ring, k, [{t: c for t, c in s.items() if t[1] < k} for s in syz])
+    else:
+        basis, coeffs, syz = _lift_std(ring, m)
     cols = [Vector.from_terms(ring, c).padded(k) for c in coeffs] or [[ring.zero()] * k]
     ctx.assign(t_node, Matrix(ring, k, len(cols), [cols[j][i] for i in range(k) for j in range(len(cols))]))
     if rest and not isinstance(rest[0], A.StrLit):

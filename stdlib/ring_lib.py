@@ -416,6 +416,7 @@ def is_sub_module(ctx, i: Ideal | Module, j: Ideal | Module) -> int:
     as submodules of R^1; in a local ordering, of the localization, as Singular's reduce).
 
     Example:
+      LIB "ring.lib";
       ring r = 0,x,dp;
       isSubModule(ideal(x3), ideal(x2));
       → 1

@@ -97,3 +97,31 @@ module Z; attrib(Z); module L = [x,y],[y,x]; attrib(L); attrib(std(L), "isSB");
 def test_attributes_as_singular(name: str) -> None:
     src = ATTRIBUTE_SNIPPETS[name]
     assert output_lines(run(src)) == output_lines(run_singular(src))
+
+
+RELATIVE_SNIPPETS = {
+    "liftstd_relative_to_a_module": """
+LIB "matrix.lib";
+ring R = 0,(x,y,z),(c,dp);
+matrix A[1][1] = x; matrix B[1][2] = x+y-z,x-y-z;
+matrix C[nrows(A)][ncols(A) + ncols(B)] = concat(A,B);
+matrix G1 = std(C); matrix T;
+module G2 = liftstd(module(A), T, "std", module(B));
+print(reduce(G1,G2)); print(reduce(A*T-matrix(G2),std(B)));
+ring S = 0,(x,y,z),lp; matrix M[2][3] = x,x,y,y,z,z; module A1 = module(M); module A2 = A1[3]; A1 = A1[1..2];
+matrix T; module U; module G = liftstd(A1, T, U, A2);
+print(reduce(matrix(G) - matrix(A1)*T, std(A2))); print(reduce(matrix(A1)*matrix(U), std(A2)));
+size(reduce(std(A2+A1), std(G))); size(reduce(modulo(A1, A2), std(U))); size(reduce(U, std(modulo(A1, A2))));
+""",
+    "division_up_to_a_degree_identity": """
+ring S = 0,(x,y),ds; poly f = x5+x2y2+y5; list D = division(ideal(f^2), jacob(f), 10);
+print(jet(matrix(ideal(f^2)) - matrix(jacob(f))*D[1] - matrix(D[2]), 10));
+""",
+}
+
+
+@pytest.mark.singular
+@pytest.mark.parametrize("name", sorted(RELATIVE_SNIPPETS))
+def test_relative_as_singular(name: str) -> None:
+    src = RELATIVE_SNIPPETS[name]
+    assert output_lines(run(src)) == output_lines(run_singular(src))
