@@ -125,3 +125,15 @@ print(jet(matrix(ideal(f^2)) - matrix(jacob(f))*D[1] - matrix(D[2]), 10));
 def test_relative_as_singular(name: str) -> None:
     src = RELATIVE_SNIPPETS[name]
     assert output_lines(run(src)) == output_lines(run_singular(src))
+
+
+LISTVAR = """
+ring r1 = 32003,(x,y,z),dp; poly s2 = 12x2+3y2; int i = 34;
+ring r2 = 0,(x,y,z),ds; poly s1 = x4+y2; ideal i1 = x2,y2,z2;
+listvar(r2); listvar(ring); listvar(poly); listvar(i1); listvar(int); listvar(all);
+"""
+
+
+@pytest.mark.singular
+def test_listvar_of_a_type_as_singular() -> None:
+    assert output_lines(run(LISTVAR)) == output_lines(run_singular(LISTVAR))
