@@ -9,7 +9,7 @@ syzygies over R/Q are those over R of M's generators together with the q*e_i, cu
 from __future__ import annotations
 
 from math import gcd
-from typing import Any
+from typing import Any, Optional
 
 from ..dsl import ast as A
 from ..dsl.errors import MechRuntimeError
@@ -215,7 +215,9 @@ def std(m: Module) -> Module:
       → _[2]=[y]
       → _[3]=[x,y]
     """
-    return _module(m.ring, _basis(m.ring, m.rank, _vecs(m)), m.rank, True)
+    out = _module(m.ring, _basis(m.ring, m.rank, _vecs(m)), m.rank, True)
+    out.weights = m.weights  # as Singular: the components' weights stay
+    return out
 
 
 def _reduce_vec(ctx: Any, v: Vector, m: Module) -> Vector:
@@ -274,7 +276,23 @@ def syz(M: Ideal | Module) -> Module:
     rel = km.syzygies(global_twin(ring), m.rank, _vecs(m) + q_columns(ring, m.rank))
     rel = [{t: c for t, c in r.items() if t[1] < n} for r in rel]
     basis = _basis(ring, n, rel)
-    return _module(ring, basis, len(m.gens), True)
+    out = _module(ring, basis, len(m.gens), True)
+    if isinstance(M, Ideal):  # as Singular: a homogeneous ideal's syzygies have its degrees as weights
+        out.weights = _generator_degrees(ring, M)
+    return out
+
+
+def _generator_degrees(ring: PolyRing, I: Ideal) -> Optional[tuple[int, ...]]:
+    """The (weighted) degrees of I's generators when each is homogeneous and none is zero, else None."""
+    from .polynomials import _ring_weights
+    ws = _ring_weights(ring) or [1] * ring.nvars
+    degrees = []
+    for g in I.gens:
+        found = {sum(a * w for a, w in zip(e, ws)) for e in g.terms}
+        if len(found) != 1:
+            return None
+        degrees.append(found.pop())
+    return tuple(degrees)
 
 
 def _lift_std(ring: PolyRing, m: Module) -> tuple[list[dict], list[dict], list[dict]]:

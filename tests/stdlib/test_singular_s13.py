@@ -137,3 +137,17 @@ listvar(r2); listvar(ring); listvar(poly); listvar(i1); listvar(int); listvar(al
 @pytest.mark.singular
 def test_listvar_of_a_type_as_singular() -> None:
     assert output_lines(run(LISTVAR)) == output_lines(run_singular(LISTVAR))
+
+
+WEIGHTED_HILB = """
+ring r4 = 32003,(x(1..6)),ds;
+ideal i0 = x(1)+x(2)+x(3)+x(4), x(1)^2*x(2)^2+x(2)*x(3)*x(5)*x(6), x(1)*x(2)^2*x(3)+x(2)*x(3)*x(6)^2;
+option(returnSB); module m = syz(i0);
+hilb(m); hilb(m, 1);
+ring r = 0,(x,y,z),dp; module s = syz(ideal(x, y2, z3)); hilb(std(s)); hilb(s, 1); hilb(syz(ideal(x+1, y)), 1);
+"""
+
+
+@pytest.mark.singular
+def test_hilb_of_syzygies_with_their_weights_as_singular() -> None:
+    assert output_lines(run(WEIGHTED_HILB)) == output_lines(run_singular(WEIGHTED_HILB))
