@@ -156,6 +156,14 @@ _DIVISION_UP_TO = ("ideal G = {s1}; ideal I = {s2}; matrix T[ncols(I)][ncols(G)]
                    "int n = {s5}; int k; ok = (size(module(jet(matrix(G) - matrix(I)*T - matrix(R), n))) == 0); "
                    "for (k = 1; k <= ncols(R); k++) { if (R[k] != 0) { "
                    "if (reduce(leadmonom(R[k]), std(lead(std(I)))) == 0) { ok = 0; } } }")
+#: liftstd(A, T, [S,] N): G = A*T modulo N, G in A + N with leading terms generating the leading module of
+#: A + N (and S syzygies of A modulo N generating all of them: modulo(A, N))
+_LIFT_RELATIVE = ("module A = {s1}; module N = {s2}; module G = {m3}; matrix T[{m4}][{m5}] = {m6}; int n = nrows(A); "
+                  "module AN = A + N; ok = (size(reduce(module(matrix(G, n, ncols(G)) - matrix(A)*T), std(N))) == 0) "
+                  "&& (size(reduce(G, std(AN))) == 0) && (size(reduce(lead(std(AN)), std(lead(G)))) == 0);")
+_LIFT_RELATIVE_SYZ = _LIFT_RELATIVE + (" module S = {m7}; matrix SS = matrix(S, ncols(A), ncols(S)); "
+                                       "ok = ok && (size(reduce(module(matrix(A)*SS), std(N))) == 0) "
+                                       "&& (size(reduce(modulo(A, N), std(S))) == 0);")
 #: the same element up to a nonzero constant factor (a gcd is defined up to units)
 _ASSOCIATE = ("poly a = {m1}; poly b = {s1}; "
               "ok = ((a == 0) && (b == 0)) || ((a != 0) && (b != 0) && (leadcoef(b)*a == leadcoef(a)*b));")
@@ -270,14 +278,20 @@ CHECKS: dict[str, Check] = {
     "Short/liftstd_m.tst": Check(
         "liftstd of a module: the standard basis, T and the syzygies are not unique (Singular leaves the tail "
         "of xz-yz unreduced): mech's G is checked to be A*T with leading terms generating the leading module "
-        "of A, and S to be syzygies of A generating all of them",
+        "of A, and S to be syzygies of A generating all of them; relative to a module N likewise modulo N",
         (("print(liftstd(module(A),T,S));\nprint(T);\nprint(S);",
           "module G@ = liftstd(module(A),T,S); " + value("module(A)", "G@", "nrows(T)", "ncols(T)", "T", "S")),
          ('print(liftstd(module(A),T,"std"));\nprint(T);\n',
           'G@ = liftstd(module(A),T,"std"); ' + value("module(A)", "G@", "nrows(T)", "ncols(T)", "T") + "\n"),
          ('print(liftstd(module(A),T,S,"std"));\nprint(T);\nprint(S);',
-          'G@ = liftstd(module(A),T,S,"std"); ' + value("module(A)", "G@", "nrows(T)", "ncols(T)", "T", "S"))),
-        {5: _LIFT_MODULE, 6: _LIFT_MODULE_SYZ}),
+          'G@ = liftstd(module(A),T,S,"std"); ' + value("module(A)", "G@", "nrows(T)", "ncols(T)", "T", "S")),
+         ("print(liftstd(A1,T,S,A2));\nprint(T);\nprint(S);",
+          "G@ = liftstd(A1,T,S,A2); " + value("A1", "A2", "G@", "nrows(T)", "ncols(T)", "T", "S", '"relative"')),
+         ('print(liftstd(A1,T,"std",A2));\nprint(T);',
+          'G@ = liftstd(A1,T,"std",A2); ' + value("A1", "A2", "G@", "nrows(T)", "ncols(T)", "T", '"relative"')),
+         ('print(liftstd(A1,T,S,"std",A2));\nprint(T);\nprint(S);',
+          'G@ = liftstd(A1,T,S,"std",A2); ' + value("A1", "A2", "G@", "nrows(T)", "ncols(T)", "T", "S", '"relative"'))),
+        {5: _LIFT_MODULE, 6: _LIFT_MODULE_SYZ, 7: _LIFT_RELATIVE, 8: _LIFT_RELATIVE_SYZ}),
 }
 for _case in ("Manual/equidim.tst", "LIB/primdec.lib:equidim"):
     CHECKS[_case] = Check(
