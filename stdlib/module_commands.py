@@ -386,6 +386,17 @@ def lift(ctx, M: Module, N: Module | Vector) -> Matrix:
     return Matrix(ring, k, len(cols), [cols[j][i] for i in range(k) for j in range(len(cols))])
 
 
+@command("lift")
+def lift_unit(ctx, M: Module, N: Module | Vector, U: Matrix, alg: str = "std") -> Matrix:
+    """lift(M, N, U, alg): lift(M, N), setting the matrix variable U to the unit matrix Singular's
+    matrix(N)*U = matrix(M)*T has in a global ordering; the algorithm is ignored."""
+    T = lift(ctx, M, N)
+    k = T.ncols
+    _set_output(ctx, 2, Matrix(M.ring, k, k, [M.ring.one() if i == j else M.ring.zero()
+                                              for i in range(k) for j in range(k)]))
+    return T
+
+
 @command("modulo")
 def modulo(h1: Ideal | Module, h2: Ideal | Module) -> Module:
     """modulo(h1, h2): generators of the kernel of R^k -> R^n/<h2> sending e_i to the i-th generator
@@ -404,6 +415,29 @@ def modulo(h1: Ideal | Module, h2: Ideal | Module) -> Module:
     rel = km.syzygies(global_twin(ring), rank, _vecs(a) + _vecs(b) + q_columns(ring, rank))
     kept = [{t: c for t, c in s.items() if t[1] < k} for s in rel]
     return _module(ring, _basis(ring, k, kept), k, True)
+
+
+@command("modulo")
+def modulo_lifting(ctx, h1: Ideal | Module, h2: Ideal | Module, T: Matrix, alg: str = "std") -> Module:
+    """modulo(h1, h2, T, alg): modulo(h1, h2), setting the matrix variable T as liftstd(h1, T, h2) does
+    (a standard basis of h1 + h2 equals h1*T modulo h2); the algorithm is ignored."""
+    ring = h1.ring
+    a, b = to_module(h1, ring), to_module(h2, ring)
+    _global(ring, "modulo")
+    k = len(a.gens)
+    _, coeffs, _ = _lift_std(ring, Module(ring, list(a.gens) + list(b.gens), max(a.rank, b.rank)))
+    cols = [Vector.from_terms(ring, {t: c for t, c in cf.items() if t[1] < k}).padded(k) for cf in coeffs] \
+        or [[ring.zero()] * k]
+    _set_output(ctx, 2, Matrix(ring, k, len(cols), [cols[j][i] for i in range(k) for j in range(len(cols))]))
+    return modulo(h1, h2)
+
+
+def _set_output(ctx: Any, k: int, value: Any) -> None:
+    """Store ``value`` in the variable given as argument k (an output argument, as Singular's)."""
+    name = ctx.argnames[k] if len(ctx.argnames) > k else "_"
+    if name == "_" or ctx.lookup(name) is None:
+        raise MechRuntimeError(f"argument {k + 1} must be a variable (it receives a matrix)")
+    ctx.assign(A.Name(name), value)
 
 
 @command("id2mod", lib="polylib.lib")

@@ -151,3 +151,21 @@ ring r = 0,(x,y,z),dp; module s = syz(ideal(x, y2, z3)); hilb(std(s)); hilb(s, 1
 @pytest.mark.singular
 def test_hilb_of_syzygies_with_their_weights_as_singular() -> None:
     assert output_lines(run(WEIGHTED_HILB)) == output_lines(run_singular(WEIGHTED_HILB))
+
+
+OUTPUT_ARGUMENTS = """
+ring r = 0, (x1), (dp(1), c);
+module a1 = 2*x1*(gen(6)), gen(6)*(2-8*(x1)), gen(1)*(x1-2*(x1^2))+gen(6)*(-2+8*(x1));
+module a2 = gen(6), gen(1)*(-(x1)+2*(x1^2));
+matrix T; module result = lift(a1, a2, T, "slimgb"); print(T); print(matrix(a1)*matrix(result) - matrix(a2));
+ring R = 0,(x,y,z),lp;
+matrix A[2][3] = x,x,y,y,z,z; module A1 = module(A); module A2 = A1[3]; A1 = A1[1..2];
+matrix T; module S = modulo(A1,A2,T,"std"); print(S);
+matrix T1; module S2; matrix G = liftstd(A1,T1,S2,"std",A2); print(T-T1); reduce(G-A1*T,A2);
+module m = [x,y],[y,x]; matrix U[2][1] = 1,x; print(m*U);
+"""
+
+
+@pytest.mark.singular
+def test_output_arguments_of_lift_and_modulo_as_singular() -> None:
+    assert output_lines(run(OUTPUT_ARGUMENTS)) == output_lines(run_singular(OUTPUT_ARGUMENTS))
