@@ -37,13 +37,14 @@ import tempfile
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import asdict
+from dataclasses import asdict, replace
 from pathlib import Path
 from typing import Optional
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
+from tst_checks import CHECKS, edit, judge_checked  # noqa: E402
 from tst_compare import Oracle, check_script, compare, normalize, parse, read_answers, split_error  # noqa: E402
 from tst_report import Result, report  # noqa: E402
 from tst_source import Case, collect, instrument  # noqa: E402
@@ -98,6 +99,10 @@ class Singular:
     def answer(self, questions: list) -> dict:
         out, _, _, _ = run(self.cmd, check_script(questions), "check.sing", 4 * self.timeout)
         return read_answers(questions, out)
+
+    def check(self, script: str) -> str:
+        """Singular's output of a check script (``tst_checks``)."""
+        return run(self.cmd, script, "check.sing", 4 * self.timeout)[0]
 
 
 # ---------------------------------------------------------------- classifying one case
@@ -320,11 +325,20 @@ def _run_all(cases: list[Case], singular: Singular, mech_cmd: list[str], timeout
     def one(case: Case) -> tuple[Result, Optional[dict]]:
         nonlocal done
         raw, s_text, s_error = None, "", None
+        check = CHECKS.get(case.name)
         try:
+            script = edit(case.script, check) if check else case.script
+            if script is None:
+                raise ValueError("the script lacks a text its check edits (tst_checks.py)")
+            case = replace(case, script=script)
             aside, s_text, s_error = singular_side(case, singular)
             if aside is None:
                 raw = stored.get(case.name) or run_mech(case, mech_cmd, timeout)
-                r = judge(case.name, s_text, s_error, raw, singular.answer)
+                if check:
+                    r = judge_checked(check, s_text, raw["out"], singular.check, lambda s, m: judge(
+                        case.name, s, s_error, {**raw, "out": m}, singular.answer))
+                else:
+                    r = judge(case.name, s_text, s_error, raw, singular.answer)
             else:
                 r = aside
         except Exception as e:  # the runner's own failure on one case must not end the run

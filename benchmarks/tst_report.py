@@ -43,8 +43,9 @@ def report(results: list[Result], excluded: list[Case], meta: dict) -> str:
         "How cases are chosen, run and compared: the docstrings of `benchmarks/singular_tst.py`, "
         "`tst_source.py` (the selection rule), `tst_compare.py` (comparison as values). Agreement counts "
         "equal text, equal values (ideals as ideals, lists of ideals as sets, primary decompositions up to "
-        "embedded components, factorizations up to order and units), and an error at the same place as "
-        "Singular's.",
+        "embedded components, factorizations up to order and units), an error at the same place as "
+        "Singular's, and values Singular chooses among many correct ones (`checked`: each of mech's values "
+        "proven right by a check Singular runs on it, `tst_checks.py`; listed below with the check).",
         "",
         "## Result",
         "",
@@ -64,6 +65,9 @@ def report(results: list[Result], excluded: list[Case], meta: dict) -> str:
                      + " | ".join(str(c[k]) for k in CATEGORIES) + f" | {pct} |")
     kinds = Counter(r.key for r in run_ if r.category == "agree")
     lines += ["", "Agreement: " + ", ".join(f"{n} {k}" for k, n in kinds.most_common()) + "."]
+    checked = sorted((r for r in run_ if r.category == "agree" and r.key == "checked"), key=lambda r: r.name)
+    lines += ["", f"## Agreement judged by a check Singular runs on mech's values ({len(checked)})", ""]
+    lines += [f"- `{r.name}`: {_md(r.detail)}" for r in checked] or ["none"]
     lines += _ranking(run_)
     sections = (("differ", "value", "Differences: other values than Singular's"),
                 ("differ", "accepts", "Differences: Singular reports an error, mech goes on"),

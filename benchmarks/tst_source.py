@@ -120,10 +120,10 @@ _WORDS = {
     "system(...) call": "system",
     "timing, memory or random values": "timer rtimer memory datetime random sparseid sparsemat sparsepoly "
                                        "sparsetriag sparseHomogIdeal randomid randommat randomLast "
-                                       "randomBinomial genericid",
+                                       "randomBinomial genericid kmemory",
     "noncommutative ring": "nc_algebra ncalgebra plural opposite oppose envelope twostd bracket Weyl makeWeyl "
                            "freeAlgebra makeLetterplaceRing letplaceGBasis superCommutative exteriorAlgebra "
-                           "rightstd isCommutative ncdetection",
+                           "rightstd isCommutative ncdetection exteriorBasis",
     "resolutions and homological algebra": "resolution smatrix res mres sres lres nres hres fres minres betti "
                                            "prune mpresmat kres Ext Ext_R Tor",
     "links and files": "link open close read write dump getdump status fprintf waitall waitfirst monitor",
@@ -178,6 +178,9 @@ def _ring_decls(masked: str) -> Iterator[tuple[int, str]]:
         inner = char[1:-1] if char.startswith("(") and char.endswith(")") else char
         first = _top_level_split(inner)[0].strip().replace(" ", "")
         why = _coefficients(first, len(_top_level_split(inner)) > 1)
+        if not why and re.fullmatch(r"[A-Za-z_]\w*", first) and \
+                re.search(rf"\bq?ring\s+{first}\b", masked[:m.start()]):
+            why = "a ring as the coefficient domain (not a field)"
         if why:
             yield m.start(), why
 

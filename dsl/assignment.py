@@ -103,10 +103,12 @@ class Assignment:
             else:
                 value = self._converted(value, var.type, kring)
             self._rebind(var, value)
+            var.attributes = None  # as Singular: a new value has none of the old one's attributes
             return
         chain.reverse()
         new = self._set_in(var.value, chain, 0, value)
         self._rebind(var, new)
+        var.attributes = None
 
     def _set_in(self, container: Any, chain: list[A.Index], k: int, value: Any, idx: Optional[list] = None) -> Any:
         """``container`` with the entry ``chain[k:]`` set to ``value`` (``idx``: the values of

@@ -93,6 +93,10 @@ class TreeBuilder(Transformer_NonRecursive):  # iterative: deeply nested input c
         return A.TypeCall(c[0], _list(c[1]), pos=meta_pos(meta))
 
     @v_args(meta=True)
+    def type_ref(self, meta, c):  # a type's name as a value: listvar(poly)
+        return A.Name(str(c[0]), pos=meta_pos(meta))
+
+    @v_args(meta=True)
     def vector_lit(self, meta, c):  # [p1, p2, ...]: the vector with these entries
         return A.TypeCall("vector", _list(c[0]), pos=meta_pos(meta))
 

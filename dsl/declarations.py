@@ -82,7 +82,10 @@ class Declarations:
             if v is None:
                 v = Matrix(ring, *(dims or (1, 1)))
             else:
-                # as Singular: a matrix value keeps its size, other values fill [rows][cols] (default 1 x 1)
+                # as Singular: a matrix value keeps its size, other values fill [rows][cols] (default 1 x 1),
+                # a vector's components too when the size is given
+                if isinstance(v, Vector) and dims:
+                    v = ExprList([v.get(i) for i in range(1, v.nrows + 1)])
                 keeps = isinstance(v, (Matrix, Module, Vector)) or (typeof(v) == "intmat" and not dims)
                 v = to_matrix(v, ring) if keeps else to_matrix(v, ring, *(dims or (1, 1)))
         elif typ == "intmat":

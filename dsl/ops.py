@@ -165,7 +165,7 @@ def _matrix_op(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Matrix:
                     out.append(s)
             return Matrix(ring, a.nrows, b.ncols, out)
         raise _bad(op, a, b)
-    if op in ("+", "-") and isinstance(a, Matrix) and isinstance(b, Ideal):  # the ideal as a 1 x n matrix
+    if op in ("+", "-", "*") and isinstance(a, Matrix) and isinstance(b, Ideal):  # the ideal as a 1 x n matrix
         return _matrix_op(op, a, Matrix(ring, 1, len(b.gens), list(b.gens)), ring)
     if op in ("+", "-") and isinstance(a, Matrix) and _rank(b) >= 0:  # Singular: b times the unit matrix
         p = to_poly(b, ring)
@@ -488,6 +488,8 @@ def module_binary(op: str, a: Any, b: Any, ring: Optional[PolyRing]) -> Any:
             return module_binary("*", b, a, ring)
         if op == "*" and isinstance(a, Matrix) and isinstance(b, Module):
                 return binary("*", a, Matrix(ring, *matrix_entries(b)), ring, lambda _m: None)
+        if op == "*" and isinstance(a, Module) and isinstance(b, Matrix):  # the module as its matrix
+            return binary("*", Matrix(ring, *matrix_entries(a)), b, ring, lambda _m: None)
         raise _bad(op, a, b)
     if op in ("+", "-") and (isinstance(a, Vector) or _is_scalar(a)) and (isinstance(b, Vector) or _is_scalar(b)):
         return _add(to_vector(a, ring), to_vector(b, ring), 1 if op == "+" else -1)

@@ -70,16 +70,19 @@ class Vector:
 
 class Module:
     """A submodule of R^rank given by generators (at least one, possibly zero); ``is_std`` marks a
-    standard basis."""
+    standard basis, ``weights`` the components' degrees Singular's syz gives a homogeneous input's syzygies
+    (its attribute isHomog; None: none)."""
 
-    __slots__ = ("ring", "gens", "rank", "is_std")
+    __slots__ = ("ring", "gens", "rank", "is_std", "weights")
     type_name = "module"
 
-    def __init__(self, ring: PolyRing, gens: Iterable[Vector], rank: int = 0, is_std: bool = False) -> None:
+    def __init__(self, ring: PolyRing, gens: Iterable[Vector], rank: int = 0, is_std: bool = False,
+                 weights: Optional[tuple[int, ...]] = None) -> None:
         self.ring = ring
         self.gens: tuple[Vector, ...] = tuple(gens) or (Vector(ring, ()),)
         self.rank = max([rank, 1] + [g.nrows for g in self.gens])
         self.is_std = is_std
+        self.weights = weights
 
     def nonzero(self) -> list[Vector]:
         return [g for g in self.gens if not g.is_zero()]

@@ -127,6 +127,9 @@ def gcd(f: Poly, g: Poly) -> Poly:
     if isinstance(f.ring.field, AlgebraicField):
         return algext_factor.gcd(f, g)
     if getattr(f.ring.field, "params", ()) and not (f.is_zero() or g.is_zero()):
+        if len(f.variables() | g.variables()) > 1:  # K(a,...): by Gauss's lemma in K[a,...,x,...]
+            from .param_gcd import param_gcd
+            return param_gcd(f, g)
         return algext_factor.euclid_gcd(f, g)  # K(a,...): Euclid in one variable
     if f.is_zero():
         return normalize(g)

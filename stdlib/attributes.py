@@ -9,6 +9,7 @@ from ..dsl import ast as A
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
 from ..dsl.values import NONE, Ideal, Ring, typeof
+from ..dsl.values_modules import Module
 
 
 @command("attrib", raw=True)
@@ -31,7 +32,8 @@ def attrib(ctx, node: A.Expr, *rest: A.Expr) -> Any:
       → 1
     """
     value = ctx.eval(node)
-    marked = isinstance(value, Ideal) and value.is_std
+    marked = isinstance(value, Ideal) and value.is_std or \
+        isinstance(value, Module) and (value.is_std or len(value.nonzero()) <= 1)  # as Singular's modules
     table = _table(ctx, node, value, create=False)
     if not rest:
         lines = [f"attr:{k}, type int" for k in _RING_INTERNAL] if isinstance(value, Ring) else []
@@ -65,7 +67,10 @@ def attrib(ctx, node: A.Expr, *rest: A.Expr) -> Any:
         raise MechRuntimeError("attrib(x, \"isSB\", 1): x must be an ideal")
     if not isinstance(node, A.Name):
         raise MechRuntimeError("attrib(x, \"isSB\", 1): x must be a variable")
+    kept = dict(table or {})
     ctx.assign(node, Ideal(value.ring, value.gens, is_std=bool(flag)))
+    if kept:
+        ctx.lookup(node.id).attributes = kept
     return None
 
 
@@ -73,7 +78,7 @@ def attrib(ctx, node: A.Expr, *rest: A.Expr) -> Any:
 _RING_INTERNAL = ("cf_class", "global", "maxExp", "ring_cf", "isLetterplaceRing")
 
 #: attributes with a meaning in Singular that mech does not give them
-_RESERVED = frozenset(("global", "isHomog", "rank", "qringNF", "maxExp", "ring_cf", "cf_class",
+_RESERVED = frozenset(("global", "rank", "qringNF", "maxExp", "ring_cf", "cf_class",
                        "isLetterplaceRing", "isSCA", "isCommutative"))
 
 
@@ -110,7 +115,9 @@ def killattrib(ctx, node: A.Expr, *rest: A.Expr) -> None:
     if isinstance(value, Ideal) and value.is_std and names in ([], ["isSB"]):
         if not isinstance(node, A.Name):
             raise MechRuntimeError("killattrib(x, ...): x must be a variable")
+        kept = dict(_table(ctx, node, value, create=False) or {})
         ctx.assign(node, Ideal(value.ring, value.gens, is_std=False))
+        ctx.lookup(node.id).attributes = kept or None
     table = _table(ctx, node, value, create=False)
     if table:
         if names:

@@ -146,7 +146,7 @@ def radical(I: Ideal) -> Ideal:
 
 
 @command("homog")
-def homog(I: Poly | Ideal) -> int:
+def homog(ctx, I: Poly | Ideal) -> int:
     """homog(I): 1 if every generator of I (or the poly) is homogeneous for the ring's variable
     weights, else 0.
 
@@ -157,7 +157,18 @@ def homog(I: Poly | Ideal) -> int:
       homog(ideal(x2+y, y2));
       → 0
     """
-    return int(_homog.is_homogeneous(I if isinstance(I, Poly) else list(I.gens)))
+    result = int(_homog.is_homogeneous(I if isinstance(I, Poly) else list(I.gens)))
+    if result and isinstance(I, Ideal):
+        mark_homogeneous(ctx, [0])
+    return result
+
+
+def mark_homogeneous(ctx: Any, weights: list[int]) -> None:
+    """As Singular's homog: the variable given as the argument gets the attribute isHomog (the
+    components' weights)."""
+    var = ctx.lookup(ctx.argnames[0]) if ctx.argnames and ctx.argnames[0] != "_" else None
+    if var is not None:
+        var.attributes = {**(var.attributes or {}), "isHomog": IntVec(weights)}
 
 
 @command("homog")

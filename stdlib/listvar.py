@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any, Optional
 
 from ..dsl import ast as A
-from ..dsl.errors import MechTypeError
+from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.registry import command
 from ..dsl.values_modules import Module
 from ..dsl.values import Ideal, IntVec, List, Map, Matrix, Number, Proc, Ring, typeof
@@ -54,7 +54,8 @@ def _line(name: str, level: int, text: str, nested: bool) -> str:
 def listvar(ctx, *nodes: A.Expr) -> None:
     """listvar(): the variables visible here, newest first, with level and type (the basering's
     objects indented under it); listvar(all): the objects of every ring; listvar(r): the ring r and
-    its objects.
+    its objects; listvar(x): the variable x; listvar(type): the variables of that type (rings: with
+    Singular's predefined coefficient rings ZZ and QQ).
 
     Example:
       int a = 3;
@@ -72,10 +73,18 @@ def listvar(ctx, *nodes: A.Expr) -> None:
         node = nodes[0]
         if len(nodes) > 1 or not isinstance(node, A.Name):
             raise MechTypeError("listvar takes no argument, all, or a ring")
+        if node.id == "proc":
+            raise MechRuntimeError("listvar(proc): listing procedures (Singular's lists its libraries') is not "
+                                   "supported")
+        if node.id in _TYPES:
+            _of_type(ctx, frames, node.id, basering)
+            return
         if node.id != "all":
             ring = ctx.eval(node)
             if not isinstance(ring, Ring):
-                raise MechTypeError(f"listvar({node.id}): listing the variables of one type is not supported")
+                var = ctx.lookup(node.id)
+                ctx.write(_line(node.id, var.level, _text(var, basering), False))
+                return
             other_name = ring is basering and getattr(ring, "name", None) not in (None, node.id)
             ctx.write(_line(node.id, 0, "ring(*)" if other_name else describe(ring, basering), False))
             for f in frames:
@@ -100,6 +109,26 @@ def listvar(ctx, *nodes: A.Expr) -> None:
                         out.append(_line(dep.name, dep.level, _text(dep, basering), True))
         if f.proc is not None and f.proc.params is None and "#" not in f.vars:  # its empty argument list
             out.append(_line("#", f.level, "list, size: 0", False))
+    ctx.write("".join(out))
+
+
+#: the types listvar(type) lists ("ring" adds Singular's predefined coefficient rings ZZ and QQ)
+_TYPES = ("int", "bigint", "number", "poly", "ideal", "matrix", "list", "string", "intvec", "intmat", "map",
+          "ring", "vector", "module")
+
+
+def _of_type(ctx: Any, frames: list, typ: str, basering: Optional[Ring]) -> None:
+    """listvar(type): the visible variables of that type, newest first (the basering's objects too)."""
+    out = []
+    for f in frames:
+        found = list(f.vars.values())
+        if basering is not None:
+            found += list(_ring_vars(ctx, f, basering).values())
+        for var in reversed(found):
+            if typeof(var.value) == typ or (typ == "ring" and isinstance(var.value, Ring)):
+                out.append(_line(var.name, var.level, _text(var, basering), False))
+    if typ == "ring":
+        out += [_line(name, 0, "cring", False) for name in ("ZZ", "QQ")]
     ctx.write("".join(out))
 
 

@@ -9,7 +9,7 @@ syzygies over R/Q are those over R of M's generators together with the q*e_i, cu
 from __future__ import annotations
 
 from math import gcd
-from typing import Any
+from typing import Any, Optional
 
 from ..dsl import ast as A
 from ..dsl.errors import MechRuntimeError
@@ -215,7 +215,9 @@ def std(m: Module) -> Module:
       → _[2]=[y]
       → _[3]=[x,y]
     """
-    return _module(m.ring, _basis(m.ring, m.rank, _vecs(m)), m.rank, True)
+    out = _module(m.ring, _basis(m.ring, m.rank, _vecs(m)), m.rank, True)
+    out.weights = m.weights  # as Singular: the components' weights stay
+    return out
 
 
 def _reduce_vec(ctx: Any, v: Vector, m: Module) -> Vector:
@@ -274,7 +276,23 @@ def syz(M: Ideal | Module) -> Module:
     rel = km.syzygies(global_twin(ring), m.rank, _vecs(m) + q_columns(ring, m.rank))
     rel = [{t: c for t, c in r.items() if t[1] < n} for r in rel]
     basis = _basis(ring, n, rel)
-    return _module(ring, basis, len(m.gens), True)
+    out = _module(ring, basis, len(m.gens), True)
+    if isinstance(M, Ideal):  # as Singular: a homogeneous ideal's syzygies have its degrees as weights
+        out.weights = _generator_degrees(ring, M)
+    return out
+
+
+def _generator_degrees(ring: PolyRing, I: Ideal) -> Optional[tuple[int, ...]]:
+    """The (weighted) degrees of I's generators when each is homogeneous and none is zero, else None."""
+    from .polynomials import _ring_weights
+    ws = _ring_weights(ring) or [1] * ring.nvars
+    degrees = []
+    for g in I.gens:
+        found = {sum(a * w for a, w in zip(e, ws)) for e in g.terms}
+        if len(found) != 1:
+            return None
+        degrees.append(found.pop())
+    return tuple(degrees)
 
 
 def _lift_std(ring: PolyRing, m: Module) -> tuple[list[dict], list[dict], list[dict]]:
@@ -302,8 +320,9 @@ def _lift_std(ring: PolyRing, m: Module) -> tuple[list[dict], list[dict], list[d
 @command("liftstd", raw=True)
 def liftstd(ctx, m_node: A.Expr, t_node: A.Expr, *rest: A.Expr) -> Ideal | Module:
     """liftstd(M, T): a standard basis S of M, setting the matrix T with matrix(S) = matrix(M)*T;
-    liftstd(M, T, U) also sets the module U of the syzygies of M's generators (a last string argument,
-    the algorithm, is ignored).
+    liftstd(M, T, U) also sets the module U of the syzygies of M's generators (a string argument, the
+    algorithm, is ignored); with a last argument N, a module, a standard basis S of M + N with
+    matrix(S) = matrix(M)*T modulo N, and U the syzygies of M's generators modulo N.
 
     Example:
       ring r = 0,(x,y),dp;
@@ -317,14 +336,23 @@ def liftstd(ctx, m_node: A.Expr, t_node: A.Expr, *rest: A.Expr) -> Ideal | Modul
       → 0,0,0
     """
     kinds = tuple(isinstance(r, A.StrLit) for r in rest)
+    relative = kinds in ((False, False), (True, False), (False, True, False))  # a last module N
+    if relative:
+        kinds, n_node, rest = kinds[:-1], rest[-1], rest[:-1]
     if kinds not in ((), (False,), (True,), (False, True)):
-        raise MechRuntimeError("liftstd with a module to work relative to (liftstd(M, T, alg, N)) is not supported")
+        raise MechRuntimeError("liftstd takes (M, T), (M, T, S), (M, T, alg) or (M, T, S, alg), then maybe a module N")
     v = ctx.eval(m_node)
     ring = ctx.basering().poly
     m = to_module(v, ring)
     _global(ring, "liftstd")
-    basis, coeffs, syz = _lift_std(ring, m)
     k = len(m.gens)
+    if relative:  # a standard basis of M + N, T with M*T = it modulo N, S the syzygies of M modulo N
+        n = to_module(ctx.eval(n_node), ring)
+        basis, coeffs, syz = _lift_std(ring, Module(ring, list(m.gens) + list(n.gens), max(m.rank, n.rank)))
+        coeffs = [{t: c for t, c in cf.items() if t[1] < k} for cf in coeffs]
+        syz = _basis(ring, k, [{t: c for t, c in s.items() if t[1] < k} for s in syz])
+    else:
+        basis, coeffs, syz = _lift_std(ring, m)
     cols = [Vector.from_terms(ring, c).padded(k) for c in coeffs] or [[ring.zero()] * k]
     ctx.assign(t_node, Matrix(ring, k, len(cols), [cols[j][i] for i in range(k) for j in range(len(cols))]))
     if rest and not isinstance(rest[0], A.StrLit):
@@ -358,6 +386,17 @@ def lift(ctx, M: Module, N: Module | Vector) -> Matrix:
     return Matrix(ring, k, len(cols), [cols[j][i] for i in range(k) for j in range(len(cols))])
 
 
+@command("lift")
+def lift_unit(ctx, M: Module, N: Module | Vector, U: Matrix, alg: str = "std") -> Matrix:
+    """lift(M, N, U, alg): lift(M, N), setting the matrix variable U to the unit matrix Singular's
+    matrix(N)*U = matrix(M)*T has in a global ordering; the algorithm is ignored."""
+    T = lift(ctx, M, N)
+    k = T.ncols
+    _set_output(ctx, 2, Matrix(M.ring, k, k, [M.ring.one() if i == j else M.ring.zero()
+                                              for i in range(k) for j in range(k)]))
+    return T
+
+
 @command("modulo")
 def modulo(h1: Ideal | Module, h2: Ideal | Module) -> Module:
     """modulo(h1, h2): generators of the kernel of R^k -> R^n/<h2> sending e_i to the i-th generator
@@ -376,6 +415,29 @@ def modulo(h1: Ideal | Module, h2: Ideal | Module) -> Module:
     rel = km.syzygies(global_twin(ring), rank, _vecs(a) + _vecs(b) + q_columns(ring, rank))
     kept = [{t: c for t, c in s.items() if t[1] < k} for s in rel]
     return _module(ring, _basis(ring, k, kept), k, True)
+
+
+@command("modulo")
+def modulo_lifting(ctx, h1: Ideal | Module, h2: Ideal | Module, T: Matrix, alg: str = "std") -> Module:
+    """modulo(h1, h2, T, alg): modulo(h1, h2), setting the matrix variable T as liftstd(h1, T, h2) does
+    (a standard basis of h1 + h2 equals h1*T modulo h2); the algorithm is ignored."""
+    ring = h1.ring
+    a, b = to_module(h1, ring), to_module(h2, ring)
+    _global(ring, "modulo")
+    k = len(a.gens)
+    _, coeffs, _ = _lift_std(ring, Module(ring, list(a.gens) + list(b.gens), max(a.rank, b.rank)))
+    cols = [Vector.from_terms(ring, {t: c for t, c in cf.items() if t[1] < k}).padded(k) for cf in coeffs] \
+        or [[ring.zero()] * k]
+    _set_output(ctx, 2, Matrix(ring, k, len(cols), [cols[j][i] for i in range(k) for j in range(len(cols))]))
+    return modulo(h1, h2)
+
+
+def _set_output(ctx: Any, k: int, value: Any) -> None:
+    """Store ``value`` in the variable given as argument k (an output argument, as Singular's)."""
+    name = ctx.argnames[k] if len(ctx.argnames) > k else "_"
+    if name == "_" or ctx.lookup(name) is None:
+        raise MechRuntimeError(f"argument {k + 1} must be a variable (it receives a matrix)")
+    ctx.assign(A.Name(name), value)
 
 
 @command("id2mod", lib="polylib.lib")

@@ -203,9 +203,11 @@ _register_multiplicity()
 
 
 @command("homog")
-def homog(M: Module | Vector) -> int:
+def homog(ctx, M: Module | Vector) -> int:
     """homog(M): 1 if M is homogeneous for some degrees of the components (each generator's terms of
-    one degree, counting its component's degree), else 0."""
+    one degree, counting its component's degree), else 0; a module variable M gets those degrees as its
+    attribute isHomog (the least ones: 0 for a component no other one's degree fixes)."""
+    from .ideals import mark_homogeneous
     from .polynomials import _ring_weights
     ws = _ring_weights(M.ring) or [1] * M.ring.nvars
 
@@ -214,22 +216,26 @@ def homog(M: Module | Vector) -> int:
     vecs = [{(wdeg(e), i): c for (e, i), c in v.items()} for v in
             ([M.terms()] if isinstance(M, Vector) else [g.terms() for g in M.nonzero()])]
     shift: dict[int, int] = {}
+    group: dict[int, int] = {}  # component -> the first component of its connected set
     todo = [v for v in vecs if v]
     while todo:
         v = next((w for w in todo if any(i in shift for _, i in w)), todo[0])
         todo.remove(v)
         known: Optional[int] = next((e + shift[i] for e, i in v if i in shift), None)
+        root = next((group[i] for _, i in v if i in shift), None)
         if known is None:
             e, i = next(iter(v))
-            shift[i] = 0
+            shift[i], group[i], root = 0, i, i
             known = e
         for e, i in v:
             if i not in shift:
-                shift[i] = known - e
+                shift[i], group[i] = known - e, root
             elif e + shift[i] != known:
                 return 0
+    if isinstance(M, Module):
+        least = {r: min(s for i, s in shift.items() if group[i] == r) for r in set(group.values())}
+        mark_homogeneous(ctx, [shift[i] - least[group[i]] if i in shift else 0 for i in range(M.rank)])
     return 1
-
 
 
 @command("transpose")

@@ -178,9 +178,24 @@ def imap(ctx, ring_node: A.Expr, obj_node: A.Expr) -> Any:
     """
     from ..dsl.maps import map_value
     from ..kernel.maps import imap as imap_polys
-    _, v = _in_ring(ctx, ring_node, obj_node, "imap")
+    src, v = _in_ring(ctx, ring_node, obj_node, "imap")
     target = ctx.basering().poly
+    if "Imap" in ctx.options:
+        ctx.write("".join(f"{line}\n" for line in imap_report(src.poly, target)))
     return map_value(v, [], target, lambda polys, source: imap_polys(polys, source, target))
+
+
+def imap_report(source: Any, target: Any) -> list[str]:
+    """The lines Singular prints for imap under option(Imap): where each variable and parameter of
+    the source goes (``// var x: nr 2 -> nr 3``, ``// par a: par 1 -> nr 1``), those going nowhere left out."""
+    def where(name: str) -> str | None:
+        if name in target.names:
+            return f"nr {target.names.index(name) + 1}"
+        params = getattr(target.field, "params", ())
+        return f"par {params.index(name) + 1}" if name in params else None
+    lines = [(f"var {n}: nr {k}", where(n)) for k, n in enumerate(source.names, 1)]
+    lines += [(f"par {n}: par {k}", where(n)) for k, n in enumerate(getattr(source.field, "params", ()), 1)]
+    return [f"// {head} -> {dest}" for head, dest in lines if dest]
 
 
 @command("fetch", raw=True)

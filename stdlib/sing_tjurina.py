@@ -86,11 +86,17 @@ def module_hilbert(M: Module) -> tuple[list[int], list[int], int]:
         e, i = lead_term(g)
         leads[i].append(e)
     q: list[int] = [0]
-    for ls in leads:
+    weights = M.weights if M.weights and len(M.weights) >= M.rank else (0,) * M.rank
+    top = 0  # as Singular: the numerator's coefficients up to the largest component's degree plus weight
+    for ls, w in zip(leads, weights):  # component i's numerator times t^(its weight)
         qi = H.hilbert_numerators(ls, n)[0] if ls else [1]
+        top = max(top, len(qi) - 1 + max(weights))
+        qi = [0] * w + qi
         q = [a + b for a, b in zip(q + [0] * (len(qi) - len(q)), qi + [0] * (len(q) - len(qi)))]
     while len(q) > 1 and q[-1] == 0:
         q.pop()
+    if any(weights):
+        q = q + [0] * (top + 1 - len(q))
     p, d = q, n
     if q == [0]:
         d = -1
@@ -131,11 +137,13 @@ def hilb_module(ctx, M: Module, which: int = 0) -> IntVec | None:
     """hilb(M): the Hilbert series numerators and degree lines of R^r/M for a standard basis M (the
     components of degree 0)."""
     q, p, d = module_hilbert(M)
-    if which in (1, 2):
-        return IntVec((q if which == 1 else p) + [0])
+    shift = min(M.weights) if M.weights and any(M.weights) else 0
+    if which in (1, 2):  # the coefficients from t^shift, then shift
+        return IntVec((q if which == 1 else p)[shift:] + [shift])
     info = _degree_info(M, p, d)
-    lines = [f"//{c:10d} t^{k}" for k, c in enumerate(q) if c] + [""] + \
-            [f"//{c:10d} t^{k}" for k, c in enumerate(p) if c] + info.lines()
+    head = [f"module weights:{','.join(map(str, M.weights))}"] if M.weights and any(M.weights) else []
+    lines = head + [f"//{c:10d} t^{k}" for k, c in enumerate(q) if c] + [""] + head + \
+        [f"//{c:10d} t^{k}" for k, c in enumerate(p) if c] + info.lines()
     ctx.write("\n".join(lines) + "\n")
     return None
 

@@ -300,3 +300,62 @@ def test_check_script_in_singular():
     got = read_answers(qs, out)
     assert [got.get(q) for q in qs] == [True, False, True, True, True, True, False, True, True, False, True, None,
                                      True]
+
+
+# ---------------------------------------------------------------- values judged by a check (tst_checks)
+def test_value_lines_are_printed_split_and_edited_in():
+    from tst_checks import Check, edit, split_values, value
+    assert value("f", "reduce(f,G)") == '"@@VALUE " + string(f) + " @@ " + string(reduce(f,G));'
+    out = f"{MARKER}{RING[0]}@@0@@0\nS[1]=x\n@@VALUE x2 @@ y\n1\n"
+    rest, values = split_values(out)
+    assert values == [(RING, ["x2", "y"])] and "@@VALUE" not in rest and "S[1]=x" in rest
+    check = Check("why", (("print(T);", value("T")),), "ok = 1;")
+    assert edit("matrix T; print(T);", check) == 'matrix T; "@@VALUE " + string(T);'
+    assert edit("matrix T;", check) is None  # the text the check edits is missing
+
+
+def test_a_case_agrees_only_when_every_differing_value_passes(monkeypatch):
+    from tst_checks import Check, judge_checked
+    check = Check("a remainder is not unique", (), "ok = ({m1}) == ({s1});")
+    marker = f"{MARKER}{RING[0]}@@0@@0\n"
+    singular = marker + "1\n@@VALUE x @@ y\n@@VALUE z @@ y\n"
+    scripts = []
+
+    def run_singular(script, answers):
+        scripts.append(script)
+        return "".join(f"@@OK {k} {a}\n" for k, a in enumerate(answers))
+
+    def judge_text(s, m):
+        return judge("c", s, None, {"out": m, "err": "", "status": 0}, lambda qs: {})
+    mech = "1\n@@VALUE x @@ y\n@@VALUE w @@ y\n"  # the first value as Singular's: not asked
+    r = judge_checked(check, singular, mech, lambda s: run_singular(s, ["1"]), judge_text)
+    assert (r.category, r.key, r.detail) == ("agree", "checked", "a remainder is not unique")
+    assert "check@0" in scripts[-1] and "w" in scripts[-1] and "check@1" not in scripts[-1]
+    r = judge_checked(check, singular, mech, lambda s: run_singular(s, ["0"]), judge_text)
+    assert r.category == "differ" and "value 2" in r.detail
+    r = judge_checked(check, singular, "2\n@@VALUE x @@ y\n@@VALUE w @@ y\n", lambda s: run_singular(s, ["1"]),
+                      judge_text)
+    assert r.category == "differ"  # the rest of the output differs: no check can make it agree
+    r = judge_checked(check, singular, "1\n@@VALUE x @@ y\n", lambda s: run_singular(s, ["1"]), judge_text)
+    assert r.category == "differ" and "Singular prints 2, mech 1" in r.detail
+
+
+@pytest.mark.singular
+def test_checks_prove_right_values_and_refuse_wrong_ones():
+    import subprocess
+    from tst_checks import CHECKS, check_script
+    remainder = CHECKS["Buch/Example_1_6_13.tst"]  # f - r in <G>, no term of r divisible by lead(G)
+    ring = ("(QQ),(x,y,z),(dp(3),C)", "0", "0")
+    f, G = "x2yz+xy2z+y2z+z3+xy", "xy+y2-1,xy"
+    singular = [(ring, [f, G, "y2z+z3"])] * 3
+    mech = [(ring, [f, G, "y2z+z3-y2+xz+1"]), (ring, [f, G, "y2z+z3+1"]), (ring, [f, G, "xy+y2z+z3-y2+xz+1"])]
+    out = subprocess.run([SINGULAR, "-q", "--no-rc", "--no-warn"], input=check_script(remainder, singular, mech),
+                         text=True, capture_output=True, timeout=120).stdout
+    assert [ln for ln in out.splitlines() if ln.startswith("@@OK")] == ["@@OK 0 1", "@@OK 1 0", "@@OK 2 0"]
+    modules = CHECKS["LIB/elim.lib:elim"]  # the same module as Singular's
+    local = ("(QQ),(x,y),(c,ds(2))", "0", "0")
+    singular = [(local, ["[x,y],[0,y2]"])] * 2
+    mech = [(local, ["[x+x2,y+xy],[0,y2+y3]"]), (local, ["[x,y],[0,y3]"])]
+    out = subprocess.run([SINGULAR, "-q", "--no-rc", "--no-warn"], input=check_script(modules, singular, mech),
+                         text=True, capture_output=True, timeout=120).stdout
+    assert [ln for ln in out.splitlines() if ln.startswith("@@OK")] == ["@@OK 0 1", "@@OK 1 0"]
