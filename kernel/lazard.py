@@ -11,6 +11,7 @@ from fractions import Fraction
 from typing import Callable, Sequence
 
 from .hilbert import minimal_monomials
+from .monomials import independent_row
 from .mora import Terms, cancel_unit
 from .order import Block, MonomialOrder
 from .poly import Poly, PolyRing, divides
@@ -32,14 +33,7 @@ def _square(rows: list[list[int]], n: int) -> list[list[int]]:
     chosen: list[list[int]] = []
     echelon: list[list[Fraction]] = []
     for r in rows:
-        v = [Fraction(x) for x in r]
-        for e in echelon:
-            piv = next(i for i, x in enumerate(e) if x)
-            if v[piv]:
-                f = v[piv] / e[piv]
-                v = [a - f * b for a, b in zip(v, e)]
-        if any(v):
-            echelon.append(v)
+        if independent_row(echelon, r):
             chosen.append(r)
         if len(chosen) == n:
             break

@@ -35,7 +35,7 @@ def _nonnegative(matrix: tuple[tuple[int, ...], ...], n: int) -> tuple[tuple[int
     rows: list[list[int]] = []
     echelon: list[list[Fraction]] = []  # for the rank test
     for r in matrix:
-        if not _independent(echelon, r):
+        if not independent_row(echelon, r):
             continue
         r = list(r)
         for j in range(n):
@@ -49,7 +49,7 @@ def _nonnegative(matrix: tuple[tuple[int, ...], ...], n: int) -> tuple[tuple[int
     return tuple(map(tuple, rows))
 
 
-def _independent(echelon: list[list[Fraction]], row: Sequence[int]) -> bool:
+def independent_row(echelon: list[list[Fraction]], row: Sequence[int]) -> bool:
     """Whether ``row`` is independent of the rows in ``echelon`` (which it then joins)."""
     v = [Fraction(x) for x in row]
     for e in echelon:

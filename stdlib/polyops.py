@@ -465,6 +465,32 @@ def jet_unit(f: Poly | Ideal, u: Poly, d: int) -> Any:
     return Ideal(ring, [jet(g * inv, d) for g in f.gens])
 
 
+
+@command("reduce")
+def reduce_unit(ctx, f: Poly, u: Poly, I: Ideal, d: int) -> Poly:
+    """reduce(f, u, I, d): the normal form of f/u with respect to I up to degree d, for a unit u of
+    the local ring: the d-jet of f/u with every term reduced by the generators of I (a standard
+    basis: the normal form of the power series, cut at degree d).
+
+    Example:
+      ring r = 0,x,ds;
+      reduce(poly(1), 1+x, ideal(x3), 5);
+      → 1-x+x2
+    """
+    if len(I.nonzero()) > 1 and not I.is_std:
+        ctx.warn(f"{ctx.argnames[2] if len(ctx.argnames) > 2 else '_'} is no standard basis")
+    divisors = [g for g in I.gens if not g.is_zero()]
+    p, rest = jet_unit(f, u, d), {}
+    while not p.is_zero():  # every term reduced; terms above degree d never reach those below
+        e, c = p.lm(), p.lc()
+        g = next((g for g in divisors if all(a >= b for a, b in zip(e, g.lm()))), None)
+        if g is None:
+            rest[e] = c
+            p = p - p.ring.monomial(e, c)
+        else:
+            p = jet(p - g.mul_term(tuple(a - b for a, b in zip(e, g.lm())), c / g.lc()), d)
+    return f.ring.from_dict(rest)
+
 @command("cleardenom")
 def cleardenom(f: Poly) -> Poly:
     """cleardenom(f): f times a constant so that its coefficients are coprime integers with a positive
