@@ -26,7 +26,7 @@ prime below ``2^31`` runs there in one call, on the same rows.
 from __future__ import annotations
 
 from functools import partial
-from itertools import islice
+from itertools import compress, islice
 from typing import Sequence
 
 import flint
@@ -261,7 +261,7 @@ class F4:
         (:class:`~.f4_rows.Packed`); the reducer of a monomial is the first active element, by
         increasing length, whose leading monomial divides it."""
         mons, active = self.mons, self.active
-        reducers = sorted((k for k in range(len(mons)) if active[k]), key=lambda k: len(mons[k]))
+        reducers = sorted(compress(range(len(mons)), active), key=list(map(len, mons)).__getitem__)
         out = self.packed.layout(mons, self.coefs, self.tdeg, reducers, crow_specs, pivots)
         if out is None:
             raise PackingOverflow
