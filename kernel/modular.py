@@ -47,6 +47,7 @@
 from __future__ import annotations
 
 import random
+from itertools import chain
 from math import gcd, isqrt
 from typing import Any, Callable, Sequence
 
@@ -166,7 +167,7 @@ class Reconstructor:
         i, j, den, out = self.i, self.j, self.den, self.out
         while i < len(values):
             cs, row = values[i], out[i]
-            while j < len(cs):
+            for j in range(j, len(cs)):
                 a = cs[j]
                 b = a * den % m
                 if b > half:
@@ -182,7 +183,6 @@ class Reconstructor:
                     den = den * r[1] // gcd(den, r[1])
                     if den > bound:
                         den = r[1]
-                j += 1
             i, j = i + 1, 0
         self.i, self.j, self.den = i, j, den
         fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
@@ -238,7 +238,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
         if result is None:
             continue
         shape, G, trace, certified = result
-        exps = P.unpack_all(mo for ms in shape for mo in ms)
+        exps = P.unpack_all(chain.from_iterable(shape))
         basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
         replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
         if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed):
