@@ -49,6 +49,7 @@ from __future__ import annotations
 import random
 from itertools import chain
 from math import gcd, isqrt
+from operator import le, sub
 from typing import Any, Callable, Sequence
 
 import flint
@@ -476,11 +477,11 @@ class ExactReducer:
             e = f.monomial(0)[n:]
             m = support_mask(e)
             for k, lm in enumerate(lms):
-                if masks[k] & ~m == 0 and all(a <= b for a, b in zip(lm, e)):
+                if masks[k] & ~m == 0 and all(map(le, lm, e)):
                     break
             else:
                 return False
-            u = tuple([a - b for a, b in zip(e, lm)])
+            u = tuple(map(sub, e, lm))
             f = f - self._term(u, f.leading_coefficient()) * self._poly(k)
         return True
 
