@@ -600,6 +600,7 @@ done:
 }
 
 PyObject *f4_layout(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
+PyObject *f4_words(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *fglm_step(PyObject *self, PyObject *args);  /* kernel/_fglm.c */
 extern PyTypeObject PairsType;  /* kernel/_f4pairs.c */
 
@@ -608,6 +609,7 @@ static PyMethodDef methods[] = {
     {"gather", f4_gather, METH_VARARGS, "The coefficients of recorded rows for another prime (see the source)."},
     {"subplan", f4_subplan, METH_VARARGS, "The plan of some pair rows and the reducers they need (see the source)."},
     {"layout", f4_layout, METH_VARARGS, "F4's symbolic preprocessing and matrix layout (see kernel/_f4sym.c)."},
+    {"words", f4_words, METH_VARARGS, "Packed monomials as little-endian 64-bit words (see kernel/_f4sym.c)."},
     {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p (see kernel/_fglm.c)."},
     {NULL, NULL, 0, NULL}
 };

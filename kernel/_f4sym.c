@@ -467,3 +467,54 @@ done:
     keys_free(&mono);
     return result;
 }
+
+/* words(monomials, nw) -> bytes: nonnegative Python ints (packed monomials below 2^(64 nw)) as
+ * nw little-endian 64-bit words each, one after the other (``int.to_bytes(8 nw, "little")``
+ * joined; kernel/f4_rows.Packed converts basis elements with it). */
+PyObject *f4_words(PyObject *self, PyObject *args)
+{
+    PyObject *seq;
+    int nw;
+    if (!PyArg_ParseTuple(args, "Oi", &seq, &nw))
+        return NULL;
+    PyObject *fast = PySequence_Fast(seq, "words: a sequence of ints");
+    if (fast == NULL)
+        return NULL;
+    if (nw < 1) {
+        Py_DECREF(fast);
+        PyErr_SetString(PyExc_ValueError, "words: nw must be positive");
+        return NULL;
+    }
+    Py_ssize_t n = PySequence_Fast_GET_SIZE(fast), nb = 8 * (Py_ssize_t)nw;
+    PyObject *out = PyBytes_FromStringAndSize(NULL, n * nb);
+    if (out == NULL) {
+        Py_DECREF(fast);
+        return NULL;
+    }
+    unsigned char *buf = (unsigned char *)PyBytes_AS_STRING(out);
+    for (Py_ssize_t i = 0; i < n; i++) {
+        PyObject *x = PySequence_Fast_GET_ITEM(fast, i);
+        int bad;
+        if (!PyLong_Check(x)) {
+            PyErr_SetString(PyExc_TypeError, "words: a sequence of ints");
+            bad = -1;
+        } else {
+#if PY_VERSION_HEX >= 0x030D0000
+            Py_ssize_t need = PyLong_AsNativeBytes(x, buf + i * nb, nb,
+                                                   Py_ASNATIVEBYTES_LITTLE_ENDIAN | Py_ASNATIVEBYTES_REJECT_NEGATIVE);
+            bad = need < 0 ? -1 : need > nb ? 1 : 0;
+#else
+            bad = _PyLong_AsByteArray((PyLongObject *)x, buf + i * nb, (size_t)nb, 1, 0);
+#endif
+            if (bad > 0)
+                PyErr_SetString(PyExc_OverflowError, "words: a monomial does not fit nw words");
+        }
+        if (bad) {
+            Py_DECREF(fast);
+            Py_DECREF(out);
+            return NULL;
+        }
+    }
+    Py_DECREF(fast);
+    return out;
+}

@@ -26,7 +26,7 @@ prime below ``2^31`` runs there in one call, on the same rows.
 from __future__ import annotations
 
 from functools import partial
-from itertools import islice
+from itertools import chain, compress, islice
 from typing import Sequence
 
 import flint
@@ -261,7 +261,7 @@ class F4:
         (:class:`~.f4_rows.Packed`); the reducer of a monomial is the first active element, by
         increasing length, whose leading monomial divides it."""
         mons, active = self.mons, self.active
-        reducers = sorted((k for k in range(len(mons)) if active[k]), key=lambda k: len(mons[k]))
+        reducers = sorted(compress(range(len(mons)), active), key=list(map(len, mons)).__getitem__)
         out = self.packed.layout(mons, self.coefs, self.tdeg, reducers, crow_specs, pivots)
         if out is None:
             raise PackingOverflow
@@ -445,7 +445,7 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = P.unpack_all(m for ms, _ in basis for m in ms)
+    exps = P.unpack_all(chain.from_iterable(ms for ms, _ in basis))
     one = flint.nmod(1, p)  # one * c: an nmod, made faster than by nmod(c, p)
     return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in basis]
 
@@ -477,7 +477,7 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = P.unpack_all(m for ms, _ in out for m in ms)
+    exps = P.unpack_all(chain.from_iterable(ms for ms, _ in out))
     one = flint.nmod(1, p)
     return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in out]
 

@@ -17,6 +17,10 @@ try:
     from ._f4rows import subplan as SUBPLAN
 except ImportError:  # no compiler at install (or an extension built before FGLM's step): pure Python
     KERNEL = LAYOUT = GATHER = FGLM_STEP = SUBPLAN = None
+try:
+    from ._f4rows import words as WORDS
+except ImportError:  # the same bytes by int.to_bytes (an extension built before it)
+    WORDS = None
 
 LIMIT = 1 << 31  # primes the kernel handles (products of two entries fit 62 bits)
 
@@ -74,9 +78,12 @@ class Packed:
         self.coefs: list[bytes] = []
 
     def _sync(self, mons: list[list[int]], coefs: list[list[int]]) -> None:
-        nb = self.nb
+        nb, nw = self.nb, self.nw
         for k in range(len(self.mons), len(mons)):
-            self.mons.append(b"".join([int(x).to_bytes(nb, "little") for x in mons[k]]))
+            if WORDS is not None:
+                self.mons.append(WORDS(mons[k], nw))
+            else:
+                self.mons.append(b"".join([int(x).to_bytes(nb, "little") for x in mons[k]]))
             self.coefs.append(array("Q", map(int, coefs[k])).tobytes())
 
     def layout(self, mons: list[list[int]], coefs: list[list[int]], tdeg: list[int], reducers: list[int],

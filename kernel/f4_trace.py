@@ -210,8 +210,7 @@ def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[i
             coefs.append(_on_slots(*got[slots[0]], slots))
     if trace.unit:
         return [[1]]
-    st = trace.final
-    _, _, W = replay_step(st.reducers, [], st, coefs, p, [j for j, _ in trace.final_out])
+    _, _, W = _replay_needed(trace.final, coefs, p, [j for j, _ in trace.final_out])
     return [[1] + _on_slots(*w, slots) for w, (_, slots) in zip(W, trace.final_out)]
 
 

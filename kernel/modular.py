@@ -47,7 +47,9 @@
 from __future__ import annotations
 
 import random
+from itertools import chain
 from math import gcd, isqrt
+from operator import le, sub
 from typing import Any, Callable, Sequence
 
 import flint
@@ -166,7 +168,7 @@ class Reconstructor:
         i, j, den, out = self.i, self.j, self.den, self.out
         while i < len(values):
             cs, row = values[i], out[i]
-            while j < len(cs):
+            for j in range(j, len(cs)):
                 a = cs[j]
                 b = a * den % m
                 if b > half:
@@ -182,10 +184,11 @@ class Reconstructor:
                     den = den * r[1] // gcd(den, r[1])
                     if den > bound:
                         den = r[1]
-                j += 1
             i, j = i + 1, 0
         self.i, self.j, self.den = i, j, den
-        self.lift, self.bits = [[flint.fmpq(n, d) for n, d in row] for row in out], m.bit_length()
+        fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
+        self.lift = [[fmpq(n) if d == 1 else fmpq(n, d) for n, d in row] for row in out]
+        self.bits = m.bit_length()
         return self.lift
 
     def confident(self) -> bool:
@@ -236,7 +239,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
         if result is None:
             continue
         shape, G, trace, certified = result
-        exps = P.unpack_all(mo for ms in shape for mo in ms)
+        exps = P.unpack_all(chain.from_iterable(shape))
         basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
         replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
         if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed):
@@ -474,11 +477,11 @@ class ExactReducer:
             e = f.monomial(0)[n:]
             m = support_mask(e)
             for k, lm in enumerate(lms):
-                if masks[k] & ~m == 0 and all(a <= b for a, b in zip(lm, e)):
+                if masks[k] & ~m == 0 and all(map(le, lm, e)):
                     break
             else:
                 return False
-            u = tuple([a - b for a, b in zip(e, lm)])
+            u = tuple(map(sub, e, lm))
             f = f - self._term(u, f.leading_coefficient()) * self._poly(k)
         return True
 

@@ -112,9 +112,13 @@ class Packing:
         return tuple([(m >> s) & mask for s in self.eshifts])
 
     def unpack_all(self, monomials) -> dict[int, Exp]:
-        """The exponents of packed monomials, by monomial (each unpacked once)."""
-        mask, shifts = self.emask, self.eshifts
-        return {m: tuple([(m >> s) & mask for s in shifts]) for m in set(monomials)}
+        """The exponents of packed monomials, by monomial (each unpacked once): the exponent
+        fields (the lowest bits) cut out first, then one field of every monomial at a time."""
+        mask, eall = self.emask, self.eall
+        ms = list(set(monomials))
+        low = [m & eall for m in ms]
+        columns = [[e >> s & mask for e in low] for s in self.eshifts]
+        return dict(zip(ms, zip(*columns))) if columns else dict.fromkeys(ms, ())
 
     def weighted_degree(self, m: int) -> int:
         """The first weight row applied to the exponent (the degree of a graded ordering)."""

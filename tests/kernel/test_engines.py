@@ -216,3 +216,17 @@ def test_engines_are_listed_with_one_line_descriptions():
 def test_auto_is_not_an_engine_name():
     with pytest.raises(EngineError):
         register("auto", buchberger, "no")
+
+
+def test_auto_leaves_a_small_system_over_qq_to_the_compiled_buchberger(monkeypatch):
+    # the block system of benchmarks/cases.py in dp: its first modular F4 run stays below SMALL_WORK
+    ring = PolyRing(QQ, list("xyzuv"), MonomialOrder.simple("dp", 5))
+    gens = [parse_poly(ring, s) for s in ("x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v")]
+    calls = []
+    compiled = E._buchberger_compiled
+    monkeypatch.setattr(E, "_buchberger_compiled", lambda g, r: calls.append(r) or compiled(g, r))
+    E.clear_cache()
+    basis = standard_basis(gens, ring)
+    assert calls == [ring]
+    assert [p.terms for p in basis] == [p.terms for p in standard_basis(gens, ring, "buchberger")]
+    assert len(basis) > len(gens)

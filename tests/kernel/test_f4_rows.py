@@ -161,3 +161,27 @@ def test_replays_cut_from_the_whole_matrix_plan(monkeypatch):
     with pytest.raises(ValueError):
         f4_rows.SUBPLAN(array("q", [0, 1]), array("i", [0]), array("i", [0]), array("i", [0]), 1,
                         array("i", [5]), array("i"))  # no pair row 5
+
+
+@pytest.mark.skipif(f4_rows.WORDS is None, reason="the compiled word packing is not built")
+def test_words_are_the_monomials_little_endian():
+    rng = random.Random(5)
+    for nw in (1, 2, 3):
+        ms = [0, 1, (1 << 64 * nw) - 1] + [rng.getrandbits(64 * nw) for _ in range(20)]
+        assert f4_rows.WORDS(ms, nw) == b"".join(m.to_bytes(8 * nw, "little") for m in ms)
+    with pytest.raises(OverflowError):
+        f4_rows.WORDS([1 << 64], 1)
+    with pytest.raises(OverflowError):
+        f4_rows.WORDS([-1], 1)
+
+
+def test_packed_basis_elements_are_the_same_without_the_compiled_words(monkeypatch):
+    P = Packing(ring("abcd", [Block("dp", 4)]).order, 9)
+    mons = [[P.pack((2, 1, 0, 3)), P.pack((0, 0, 1, 0))], [P.pack((1, 1, 1, 1))]]
+    coefs = [[3, 5], [7]]
+    compiled = f4_rows.Packed(P)
+    compiled._sync(mons, coefs)
+    monkeypatch.setattr(f4_rows, "WORDS", None)
+    python = f4_rows.Packed(P)
+    python._sync(mons, coefs)
+    assert compiled.mons == python.mons and compiled.coefs == python.coefs
