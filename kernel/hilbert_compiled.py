@@ -28,7 +28,6 @@ inhomogeneous ideals).
 """
 from __future__ import annotations
 
-import random
 from array import array
 from functools import lru_cache
 from types import SimpleNamespace
@@ -39,7 +38,7 @@ import flint
 from .buchberger import Overflow, Reducer, pack
 from .coeffs import PrimeField, RationalField
 from .hilbert_driven import Basis, Counter, _homogenized
-from .modular import Lifter, ModularFailure, Reconstructor, _next_prime, primitive
+from .modular import Lifter, ModularFailure, Reconstructor, primes, primitive
 from .monomials import Packing, packing
 from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
@@ -198,13 +197,7 @@ def buchberger_qq(gens: Sequence[Poly], ring: PolyRing, limit: int = 0, max_prim
 
 def lift_primes(seed: int = 30011):
     """An endless pseudo-random sequence of distinct primes in :data:`PRIMES`."""
-    rng = random.Random(seed)
-    seen = set()
-    while True:
-        q = _next_prime(rng.randrange(*PRIMES))
-        if q < PRIMES[1] and q not in seen:
-            seen.add(q)
-            yield q
+    return primes(seed, PRIMES)
 
 
 def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[Poly], ring: PolyRing,

@@ -76,10 +76,10 @@ class SmallSystem(Exception):
     """The first modular run was smaller than the caller's threshold (use another engine)."""
 
 
-def primes(seed: int = 20031):
-    """An endless pseudo-random sequence of distinct primes in ``PRIME_RANGE``, the same for a
-    seed (the primes found are kept: every computation over QQ starts with the same ones)."""
-    got, more = _SEQUENCES.setdefault(seed, ([], _prime_sequence(seed)))
+def primes(seed: int = 20031, bounds: tuple[int, int] = PRIME_RANGE):
+    """An endless pseudo-random sequence of distinct primes in ``bounds``, the same for a seed (the
+    primes found are kept: every computation over QQ starts with the same ones)."""
+    got, more = _SEQUENCES.setdefault((seed, bounds), ([], _prime_sequence(seed, bounds)))
     i = 0
     while True:
         if i == len(got):
@@ -88,15 +88,15 @@ def primes(seed: int = 20031):
         i += 1
 
 
-_SEQUENCES: dict[int, tuple[list[int], Any]] = {}
+_SEQUENCES: dict[tuple[int, tuple[int, int]], tuple[list[int], Any]] = {}
 
 
-def _prime_sequence(seed: int):
+def _prime_sequence(seed: int, bounds: tuple[int, int]):
     rng = random.Random(seed)
     seen = set()
     while True:
-        q = _next_prime(rng.randrange(*PRIME_RANGE))
-        if q < PRIME_RANGE[1] and q not in seen:
+        q = _next_prime(rng.randrange(*bounds))
+        if q < bounds[1] and q not in seen:
             seen.add(q)
             yield q
 
