@@ -36,6 +36,17 @@ typedef struct {
     Py_ssize_t capc;
 } Pairs;
 
+/* Pair q moved to slot w (w <= q) when the set is compacted. */
+static void pairs_move(Pairs *s, Py_ssize_t w, Py_ssize_t q)
+{
+    if (w == q)
+        return;
+    memmove(s->pex + w * s->n, s->pex + q * s->n, s->n * sizeof(int32_t));
+    s->key[w] = s->key[q];
+    s->pi[w] = s->pi[q];
+    s->pj[w] = s->pj[q];
+}
+
 static int grow(void **a, Py_ssize_t n, size_t size)
 {
     void *b = realloc(*a, (size_t)(n ? n : 1) * size);
@@ -386,7 +397,6 @@ static PyObject *Pairs_take(Pairs *s, PyObject *unused)
         if (s->key[q] < d)
             d = s->key[q];
     Py_ssize_t w = 0;
-    int n = s->n;
     for (Py_ssize_t q = 0; q < s->np; q++) {
         if (s->key[q] == d) {
             PyObject *t = pair_tuple(s, q);
@@ -398,13 +408,7 @@ static PyObject *Pairs_take(Pairs *s, PyObject *unused)
             Py_DECREF(t);
             continue;
         }
-        if (w != q) {
-            memmove(s->pex + w * n, s->pex + q * n, n * sizeof(int32_t));
-            s->key[w] = s->key[q];
-            s->pi[w] = s->pi[q];
-            s->pj[w] = s->pj[q];
-        }
-        w++;
+        pairs_move(s, w++, q);
     }
     s->np = w;
     return out;
@@ -429,17 +433,10 @@ static PyObject *Pairs_drop(Pairs *s, PyObject *arg)
     if (d == -1 && PyErr_Occurred())
         return NULL;
     Py_ssize_t w = 0;
-    int n = s->n;
     for (Py_ssize_t q = 0; q < s->np; q++) {
         if (s->key[q] == d)
             continue;
-        if (w != q) {
-            memmove(s->pex + w * n, s->pex + q * n, n * sizeof(int32_t));
-            s->key[w] = s->key[q];
-            s->pi[w] = s->pi[q];
-            s->pj[w] = s->pj[q];
-        }
-        w++;
+        pairs_move(s, w++, q);
     }
     s->np = w;
     Py_RETURN_NONE;
