@@ -18,11 +18,13 @@ the compiled extension the same steps run in C on dense arrays (``kernel/_fglm.c
 :class:`_Compiled`).  Whether a visited monomial lies in the new leading ideal is read off its
 quotients by the variables (visited before it), not tested against every leading monomial.
 
-Over QQ the conversion runs modulo primes and is lifted by Chinese remaindering and rational
-reconstruction (:mod:`.modular`), then verified: the generators reduce to 0 by the lifted basis
-over QQ, the lifted basis is a Gröbner basis (modulo a fresh prime, or exactly), and it has ``D``
-standard monomials -- so it generates an ideal containing ``I`` with the same finite codimension,
-i.e. ``I`` itself.
+Over QQ the conversion runs modulo primes.  From a source basis of small coefficients
+(:data:`LIFT_HEIGHT`) the conversions are lifted by Chinese remaindering and rational
+reconstruction and the lift is proved (:func:`_proved`: its elements reduce to 0 by the source
+basis exactly, so they lie in ``I``, and its leading monomials leave ``D`` standard monomials,
+so they generate ``lt(I)``).  Otherwise, or when that fails, the conversion found modulo a prime
+is redone over QQ (:func:`_exact`): the border normal forms exactly, the normal forms of the new
+standard and leading monomials by the multiplication matrices, one linear solve for the tails.
 """
 from __future__ import annotations
 
