@@ -28,14 +28,16 @@ inhomogeneous ideals).
 """
 from __future__ import annotations
 
+import heapq
 from array import array
 from functools import lru_cache
+from math import gcd
 from types import SimpleNamespace
 from typing import Any, Sequence
 
 import flint
 
-from .buchberger import Overflow, Reducer, pack
+from .buchberger import Overflow
 from .coeffs import PrimeField, RationalField
 from .hilbert_driven import Basis, Counter, _homogenized
 from .modular import Lifter, ModularFailure, Reconstructor, primes, primitive
@@ -282,35 +284,84 @@ class Lift:
 
 def reduce_to_zero(basis: list[dict[Exp, Any]], polys: Sequence[dict[Exp, Any]], order: MonomialOrder) -> bool:
     """Whether every polynomial top-reduces to 0 by ``basis`` (leading exponent first in each
-    dict) for ``order``, exactly: Buchberger's reducer (:class:`.buchberger.Reducer`) on packed
-    monomials, each basis element packed when it first serves (the generators' reductions use
-    few of them)."""
+    dict) for ``order``, exactly.  Fraction-free on integers (:class:`_IntegerReducer`): each
+    polynomial and each basis element is scaled to a primitive integer polynomial (nonzero
+    scalars do not change whether a reduction ends in 0), and a step ``a p - c x^s g`` with
+    ``a c = lc(g) p_m / gcd`` cancels the top term ``p_m`` of ``p`` without a division."""
     maxdeg = max(8, 2 * max(sum(e) for f in list(polys) + basis for e in f))
     while True:
         pk = packing(order, maxdeg)
         try:
-            red = _LazyReducer(pk, basis)
-            return all(not red.reduce(pack(pk, f), full=False) for f in polys)
+            red = _IntegerReducer(pk, basis)
+            return all(red.reduces_to_zero({pk.pack(e): c for e, c in primitive(f).items()}) for f in polys)
         except Overflow:
             maxdeg *= 4
 
 
-class _LazyReducer(Reducer):
-    """A :class:`.buchberger.Reducer` whose polynomials are packed when first used."""
+class _IntegerReducer:
+    """Basis elements as primitive integer polynomials on packed monomials, each packed when it
+    first serves (the generators' reductions use few of them)."""
 
     def __init__(self, pk: Packing, basis: list[dict[Exp, Any]]) -> None:
-        super().__init__(pk)
         self.pk = pk
+        self.guard = pk.guard
         self.items = [(pk.pack(next(iter(b))), b) for b in basis]
-        self.done: dict[int, dict[int, Any]] = {}
+        self.done: dict[int, tuple[int, dict[int, int]]] = {}
 
-    def find(self, m: int) -> tuple[int, dict[int, Any]] | None:
+    def find(self, m: int) -> tuple[int, dict[int, int]] | None:
         g = self.guard
         mg = m | g
         for k, (lm, p) in enumerate(self.items):
             if (mg - lm) & g == g:
-                q = self.done.get(k)
-                if q is None:
-                    q = self.done[k] = pack(self.pk, p)
-                return lm, q
+                hit = self.done.get(k)
+                if hit is None:
+                    pk_pack = self.pk.pack
+                    hit = self.done[k] = (lm, {pk_pack(e): c for e, c in primitive(p).items()})
+                return hit
         return None
+
+    def reduces_to_zero(self, f: dict[int, int]) -> bool:
+        """Whether the integer polynomial ``f`` top-reduces to 0."""
+        guard = self.guard
+        p = dict(f)
+        heap = [-m for m in p]
+        heapq.heapify(heap)
+        while heap:
+            m = -heapq.heappop(heap)
+            c = p.get(m)
+            if c is None:
+                continue
+            hit = self.find(m)
+            if hit is None:
+                return False
+            lm, g = hit
+            a = g[lm]
+            d = gcd(a, c)
+            a, c = a // d, c // d
+            if a != 1:
+                if a == -1:
+                    a, c = 1, -c
+                else:
+                    for k in p:
+                        p[k] *= a
+            shift = m - lm
+            for ge, gc in g.items():
+                te = ge + shift
+                v = p.get(te)
+                if v is None:
+                    if te & guard:
+                        raise Overflow
+                    p[te] = -c * gc
+                    heapq.heappush(heap, -te)
+                else:
+                    v -= c * gc
+                    if v:
+                        p[te] = v
+                    else:
+                        del p[te]
+            if len(p) > 1 and a != 1:
+                cont = gcd(*p.values())
+                if cont != 1:
+                    for k in p:
+                        p[k] //= cont
+        return True

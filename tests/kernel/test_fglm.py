@@ -158,3 +158,34 @@ def test_compiled_and_packed_linear_algebra_give_the_same_conversion(monkeypatch
         runs.append(out)
     assert runs[0] == runs[1]
     assert len(runs[0][0][2]) == 70 and len(runs[0][1][2]) == 32
+
+
+def test_the_lifted_conversion_over_qq_is_the_exact_one(monkeypatch):
+    """cyclic-5 in lp: the conversion lifted from primes and proved (its source has 8-bit
+    coefficients) against the exact conversion (the lift switched off)."""
+    from mech.kernel import fglm as F
+    dp = ring("abcde", [Block("dp", 5)], QQ)
+    source = [g.terms for g in standard_basis(cyclic(dp), dp)]
+    target = MonomialOrder(LEX)
+    proofs = []
+    proved = F._proved
+    monkeypatch.setattr(F, "_proved", lambda *a: proofs.append(proved(*a)) or proofs[-1])
+    lifted = F.fglm_qq(source, dp.order, target)
+    assert proofs == [True]
+    monkeypatch.setattr(F, "LIFT_HEIGHT", -1)
+    assert F.fglm_qq(source, dp.order, target) == lifted
+
+
+def test_the_proof_of_a_lifted_conversion_refuses_wrong_bases():
+    from mech.kernel import fglm as F
+    dp = ring("abcde", [Block("dp", 5)], QQ)
+    source = [{max(g.terms, key=dp.order.key): g.lc(), **g.terms} for g in standard_basis(cyclic(dp), dp)]
+    lex = ring("abcde", LEX, QQ)
+    target = [dict(g.terms) for g in standard_basis(cyclic(lex), lex)]
+    B = staircase([next(iter(g)) for g in source], 5)
+    assert F._proved(target, source, dp.order, lex.order, B)
+    wrong = [dict(g) for g in target]
+    e = next(e for e in wrong[-1] if e != next(iter(wrong[-1])))
+    wrong[-1][e] += 1  # a tail coefficient off: no longer in the ideal
+    assert not F._proved(wrong, source, dp.order, lex.order, B)
+    assert not F._proved(target[:-1], source, dp.order, lex.order, B)  # too many standard monomials

@@ -164,6 +164,17 @@ def test_the_exact_check_refuses_a_basis_missing_an_element():
     assert not HC.reduce_to_zero(basis[:-1], polys, R.order)
 
 
+def test_the_exact_check_is_fraction_free_on_rational_coefficients():
+    # leading coefficients 3/7 and -5/2, scaled generators: the check is up to nonzero scalars
+    R = ring_of(QQ, "xyz", (("dp", 2), ("dp", 1)))
+    basis = [parse_poly(R, t).terms for t in ["3/7*y^2-z+1/3", "-5/2*x-4*y+2/9*z"]]
+    member = parse_poly(R, "(11/5*x*y-3)*(3/7*y^2-z+1/3)+(2*y^2+1/4)*(-5/2*x-4*y+2/9*z)").terms
+    assert HC.reduce_to_zero([dict(sorted(b.items(), key=lambda t: R.order.key(t[0]), reverse=True))
+                              for b in basis], [member], R.order)
+    assert not HC.reduce_to_zero([dict(sorted(b.items(), key=lambda t: R.order.key(t[0]), reverse=True))
+                                  for b in basis], [parse_poly(R, "x*y-z^2").terms], R.order)
+
+
 @needs_compiled
 def test_the_compiled_hilbert_numerator_is_the_python_one():
     from mech.kernel import hilbert as H

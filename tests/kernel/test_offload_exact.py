@@ -11,7 +11,7 @@ import time
 import flint
 import pytest
 
-from mech.kernel import QQ, Block, fglm_solve, offload, offload_exact
+from mech.kernel import QQ, Block, fglm, fglm_solve, offload, offload_exact
 from mech.kernel.engines import standard_basis
 from mech.kernel.real_roots import isolate_real_roots
 
@@ -46,10 +46,11 @@ def test_results_through_a_child_equal_the_process(forking):
 
 
 def test_fglm_and_real_roots_use_them(forking, monkeypatch):
-    """FGLM's solve runs in the process (kernel/fglm_solve.py) and comes here only when its
-    multimodular loop gives up (forced: no primes)."""
+    """FGLM's exact solve runs in the process (kernel/fglm_solve.py) and comes here only when
+    its multimodular loop gives up (forced: no primes)."""
     monkeypatch.setattr(fglm_solve, "DIRECT", 0.0)
     monkeypatch.setattr(fglm_solve, "MAX_PRIMES", 0)
+    monkeypatch.setattr(fglm, "LIFT_HEIGHT", -1)  # the exact conversion (katsura-3 would lift from primes)
     calls = []
     for name in ("solve", "factor_squarefree"):
         real = getattr(offload_exact, name)
