@@ -493,9 +493,11 @@ PyObject *f4_words(PyObject *self, PyObject *args)
     }
     unsigned char *buf = (unsigned char *)PyBytes_AS_STRING(out);
     for (Py_ssize_t i = 0; i < n; i++) {
-        PyObject *x = PySequence_Fast_GET_ITEM(fast, i);
+        /* an int, or an integer of another type (python-flint's fmpz) through __index__ */
+        PyObject *x = PyNumber_Index(PySequence_Fast_GET_ITEM(fast, i));
         int bad;
-        if (!PyLong_Check(x)) {
+        if (x == NULL) {
+            PyErr_Clear();
             PyErr_SetString(PyExc_TypeError, "words: a sequence of ints");
             bad = -1;
         } else {
@@ -506,6 +508,7 @@ PyObject *f4_words(PyObject *self, PyObject *args)
 #else
             bad = _PyLong_AsByteArray((PyLongObject *)x, buf + i * nb, (size_t)nb, 1, 0);
 #endif
+            Py_DECREF(x);
             if (bad > 0)
                 PyErr_SetString(PyExc_OverflowError, "words: a monomial does not fit nw words");
         }

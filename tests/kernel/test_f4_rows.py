@@ -3,6 +3,7 @@ pure-Python linear algebra of kernel/f4_vectors.py on random matrices."""
 import random
 from array import array
 
+import flint
 import pytest
 
 from mech.kernel import Block, f4_rows, f4_trace
@@ -173,6 +174,10 @@ def test_words_are_the_monomials_little_endian():
         f4_rows.WORDS([1 << 64], 1)
     with pytest.raises(OverflowError):
         f4_rows.WORDS([-1], 1)
+    # packed monomials of rings over parameter fields may be flint integers (minAssGTZ over Z/7(a) stopped here)
+    assert f4_rows.WORDS([flint.fmpz(5), 3], 1) == (5).to_bytes(8, "little") + (3).to_bytes(8, "little")
+    with pytest.raises(TypeError):
+        f4_rows.WORDS(["5"], 1)
 
 
 def test_packed_basis_elements_are_the_same_without_the_compiled_words(monkeypatch):
