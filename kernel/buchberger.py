@@ -111,21 +111,28 @@ class Reducer:
                 raise TooLong
             if self.limit != _INF and hasattr(factor, "height_bits"):
                 self.work += len(g) * (factor.height_bits() >> 6)
-            for ge, gc in g.items():
-                te = ge + shift
-                v = p.get(te)
-                if v is None:
-                    if te & guard:
-                        raise Overflow
-                    p[te] = -factor * gc
-                    heapq.heappush(heap, -te)
-                else:
-                    v = v - factor * gc
-                    if v == 0:
-                        del p[te]
-                    else:
-                        p[te] = v
+            subtract_shifted(p, heap, g, shift, factor, guard)
         return result
+
+
+def subtract_shifted(p: dict[int, Any], heap: list[int], g: dict[int, Any], shift: int, factor: Any,
+                     guard: int) -> None:
+    """``p -= factor * x^shift * g`` on packed monomials, in place; monomials new to ``p`` go on
+    ``heap`` (negated: a max-heap); :class:`Overflow` when one leaves the packing."""
+    for ge, gc in g.items():
+        te = ge + shift
+        v = p.get(te)
+        if v is None:
+            if te & guard:
+                raise Overflow
+            p[te] = -factor * gc
+            heapq.heappush(heap, -te)
+        else:
+            v = v - factor * gc
+            if v == 0:
+                del p[te]
+            else:
+                p[te] = v
 
 
 def _monic(p: dict, lm: Any) -> dict:

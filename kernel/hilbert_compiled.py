@@ -37,7 +37,7 @@ from typing import Any, Sequence
 
 import flint
 
-from .buchberger import Overflow
+from .buchberger import Overflow, subtract_shifted
 from .coeffs import PrimeField, RationalField
 from .hilbert_driven import Basis, Counter, _homogenized
 from .modular import Lifter, ModularFailure, Reconstructor, primes, primitive
@@ -344,21 +344,7 @@ class _IntegerReducer:
                 else:
                     for k in p:
                         p[k] *= a
-            shift = m - lm
-            for ge, gc in g.items():
-                te = ge + shift
-                v = p.get(te)
-                if v is None:
-                    if te & guard:
-                        raise Overflow
-                    p[te] = -c * gc
-                    heapq.heappush(heap, -te)
-                else:
-                    v -= c * gc
-                    if v:
-                        p[te] = v
-                    else:
-                        del p[te]
+            subtract_shifted(p, heap, g, m - lm, c, guard)
             if len(p) > 1 and a != 1:
                 cont = gcd(*p.values())
                 if cont != 1:
