@@ -670,28 +670,25 @@ static int add_basis(State *S, int sugar)
     return pair_update(S);
 }
 
+/* Raise mech.kernel.buchberger's exception ``name`` with ``message``; NULL. */
+static PyObject *raise_buchberger(const char *name, const char *message)
+{
+    PyObject *mod = PyImport_ImportModule("mech.kernel.buchberger");
+    PyObject *exc = mod ? PyObject_GetAttrString(mod, name) : NULL;
+    Py_XDECREF(mod);
+    if (exc) {
+        PyErr_SetString(exc, message);
+        Py_DECREF(exc);
+    }
+    return NULL;
+}
+
 static PyObject *error(int rc)
 {
-    if (rc == -3) {
-        PyObject *mod = PyImport_ImportModule("mech.kernel.buchberger");
-        PyObject *exc = mod ? PyObject_GetAttrString(mod, "TooLong") : NULL;
-        Py_XDECREF(mod);
-        if (exc) {
-            PyErr_SetString(exc, "the compiled Buchberger's budget ran out");
-            Py_DECREF(exc);
-        }
-        return NULL;
-    }
-    if (rc == -1) {
-        PyObject *mod = PyImport_ImportModule("mech.kernel.buchberger");
-        PyObject *exc = mod ? PyObject_GetAttrString(mod, "Overflow") : NULL;
-        Py_XDECREF(mod);
-        if (exc) {
-            PyErr_SetString(exc, "a monomial outgrew its packing");
-            Py_DECREF(exc);
-        }
-        return NULL;
-    }
+    if (rc == -3)
+        return raise_buchberger("TooLong", "the compiled Buchberger's budget ran out");
+    if (rc == -1)
+        return raise_buchberger("Overflow", "a monomial outgrew its packing");
     return PyErr_NoMemory();
 }
 
