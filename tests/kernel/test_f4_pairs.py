@@ -49,12 +49,17 @@ def test_compiled_and_python_pair_sets_agree(order, seed):
     assert ours == theirs
 
 
-@pytest.mark.parametrize("use_compiled", [True, False])
-def test_overflow_leaves_the_set_unchanged(use_compiled, monkeypatch):
-    if not use_compiled:
+@pytest.fixture(params=[True, False], ids=["compiled", "python"])
+def use_compiled(request, monkeypatch):
+    """Each test once with the compiled pair set and once with the pure-Python one."""
+    if not request.param:
         monkeypatch.setattr(f4_pairs, "_Compiled", None)
     elif f4_pairs._Compiled is None:
         pytest.skip("the compiled pair set is not built")
+    return request.param
+
+
+def test_overflow_leaves_the_set_unchanged(use_compiled):
     P = Packing(MonomialOrder.simple("dp", 2), 7)
     pairs = pair_set(P, True)
     active = [False, False]
@@ -68,14 +73,9 @@ def test_overflow_leaves_the_set_unchanged(use_compiled, monkeypatch):
     assert active == [True, True, False] and len(pairs) == 0
 
 
-@pytest.mark.parametrize("use_compiled", [True, False])
-def test_criteria_on_a_small_example(use_compiled, monkeypatch):
+def test_criteria_on_a_small_example(use_compiled):
     """x^2, xy, y^2: the pairs (x^2, xy) and (xy, y^2) of lcm degree 3 survive, (x^2, y^2) is
     coprime (Buchberger's first criterion drops it)."""
-    if not use_compiled:
-        monkeypatch.setattr(f4_pairs, "_Compiled", None)
-    elif f4_pairs._Compiled is None:
-        pytest.skip("the compiled pair set is not built")
     P = Packing(MonomialOrder.simple("dp", 2), 63)
     pairs = pair_set(P, True)
     active = []

@@ -113,17 +113,22 @@ def test_bad_arguments_are_errors(mode):
     assert not f4_rows.compiled(1 << 31)
 
 
+def _katsura4_rows() -> tuple[Packing, list[tuple[list[int], list[int]]]]:
+    """katsura-4's generators over QQ as F4's packed rows: monomials from the largest, integer coefficients."""
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    P = Packing(R.order, 31)
+    rows = []
+    for t in (primitive(g.terms) for g in katsura(R, 4)):
+        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
+        rows.append(([m for m, _ in items], [c for _, c in items]))
+    return P, rows
+
+
 @pytest.mark.parametrize("record_compiled", [True, False], ids=["recorded-compiled", "recorded-python"])
 def test_trace_recorded_by_one_path_replays_on_the_other(record_compiled, monkeypatch):
     """A trace recorded with the kernel (rows as CodedRow) replays in pure Python and the
     reverse (rows as RowSpec), giving the basis a fresh F4 run gives."""
-    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
-    gens = [primitive(g.terms) for g in katsura(R, 4)]
-    P = Packing(R.order, 31)
-    rows = []
-    for t in gens:
-        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
-        rows.append(([m for m, _ in items], [c for _, c in items]))
+    P, rows = _katsura4_rows()
     kernel = f4_rows.KERNEL
     p0, p = 32003, 1000003
     monkeypatch.setattr(f4_rows, "KERNEL", kernel if record_compiled else None)
@@ -138,13 +143,7 @@ def test_trace_recorded_by_one_path_replays_on_the_other(record_compiled, monkey
 def test_replays_cut_from_the_whole_matrix_plan(monkeypatch):
     """A replay takes the rows it needs from the plan of each whole matrix (in C): the same
     reducers and rows as laid out from the recorded rows, and the same basis."""
-    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
-    gens = [primitive(g.terms) for g in katsura(R, 4)]
-    P = Packing(R.order, 31)
-    rows = []
-    for t in gens:
-        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
-        rows.append(([m for m, _ in items], [c for _, c in items]))
+    P, rows = _katsura4_rows()
     eng = F4([(ms, [c % 32003 for c in cs]) for ms, cs in rows], P, 32003, record=True)
     eng.run()
     for st in eng.trace.steps + [eng.trace.final]:

@@ -67,13 +67,6 @@ def test_gcd_over_parameters_without_singular():
     assert output_lines(out) == ["x2+(a-1)*xy+(-a)*y2"]
 
 
-@pytest.mark.singular
-@pytest.mark.parametrize("name", sorted(SNIPPETS))
-def test_as_singular(name: str) -> None:
-    src = SNIPPETS[name]
-    assert output_lines(run(src)) == output_lines(run_singular(src))
-
-
 ATTRIBUTE_SNIPPETS = {
     "homog_marks_isHomog": """
 ring r = 0,(x,y),dp; module M = [x,y3],[0,y]; homog(M); attrib(M, "isHomog");
@@ -90,13 +83,6 @@ ideal j = x2,y; attrib(j, "huhu", 2); attrib(j, "isSB", 1); attrib(j); killattri
 module Z; attrib(Z); module L = [x,y],[y,x]; attrib(L); attrib(std(L), "isSB");
 """,
 }
-
-
-@pytest.mark.singular
-@pytest.mark.parametrize("name", sorted(ATTRIBUTE_SNIPPETS))
-def test_attributes_as_singular(name: str) -> None:
-    src = ATTRIBUTE_SNIPPETS[name]
-    assert output_lines(run(src)) == output_lines(run_singular(src))
 
 
 RELATIVE_SNIPPETS = {
@@ -120,10 +106,13 @@ print(jet(matrix(ideal(f^2)) - matrix(jacob(f))*D[1] - matrix(D[2]), 10));
 }
 
 
+ALL_SNIPPETS = {**SNIPPETS, **ATTRIBUTE_SNIPPETS, **RELATIVE_SNIPPETS}
+
+
 @pytest.mark.singular
-@pytest.mark.parametrize("name", sorted(RELATIVE_SNIPPETS))
-def test_relative_as_singular(name: str) -> None:
-    src = RELATIVE_SNIPPETS[name]
+@pytest.mark.parametrize("name", sorted(ALL_SNIPPETS))
+def test_as_singular(name: str) -> None:
+    src = ALL_SNIPPETS[name]
     assert output_lines(run(src)) == output_lines(run_singular(src))
 
 
