@@ -10,10 +10,11 @@
  *
  * A state (capsule) holds the generators, the basis (monic, terms in decreasing order, each with
  * its sugar) and the pairs (sugar, lcm, i, j; j = -1: generator i waiting; for homogeneous input
- * the sugar is the lcm's degree) under the Gebauer-Moeller criteria.  step(st, d, need) takes the
- * pairs of sugar d in increasing (lcm, i, j) order and reduces their S-polynomials until `need`
- * new leading monomials are found; the caller (which knows the Hilbert series, or asks for every
- * pair) decides the degree and the need.  A state's limit bounds the terms summed (TooLong).
+ * the sugar is the lcm's degree) under the Gebauer-Moeller criteria.  step(st, d, need, defer)
+ * takes the pairs of sugar d in increasing (lcm, i, j) order (those marked in `defer` last) and
+ * reduces their S-polynomials until `need` new leading monomials are found; the caller (which
+ * knows the Hilbert series, or asks for every pair) decides the degree and the need, and defers
+ * the pairs a previous prime reduced to zero.  A state's limit bounds the terms summed (TooLong).
  * reduced(st, target) gives the reduced basis of the active elements, their monomials first
  * mapped to the layout `target` (dehomogenization: the exponents of its variables kept, the
  * others dropped).  Beside it: ratlift (the lift's rational reconstruction in 128-bit integers)
@@ -740,26 +741,37 @@ static PyObject *lm_int(const Layout *L, const uint64_t *m)
     return _PyLong_FromByteArray((const unsigned char *)m, 8 * L->nw, 1, 0);
 }
 
-/* step(st, d, need): the pairs of degree d, top-reduced until `need` new elements are found;
- * returns the new leading monomials (packed integers) */
+/* step(st, d, need, defer): the pairs of degree d in increasing (lcm, i, j) order, reduced until
+ * `need` new elements are found, those whose byte in `defer` (indexed like that order) is set
+ * last: a previous prime's zero reductions (any order finds a degree's new leading monomials).
+ * Returns (the new leading monomials as packed integers, a byte per pair: 1 if it reduced to
+ * zero). */
 static PyObject *bba_step(PyObject *self, PyObject *args)
 {
     PyObject *cap;
     int d;
     Py_ssize_t need;
-    if (!PyArg_ParseTuple(args, "Oin", &cap, &d, &need))
+    Py_buffer defer = {0};
+    if (!PyArg_ParseTuple(args, "Oin|y*", &cap, &d, &need, &defer))
         return NULL;
     State *S = get_state(cap);
-    if (!S)
+    if (!S) {
+        PyBuffer_Release(&defer);
         return NULL;
+    }
     const Layout *L = S->L;
     Py_ssize_t nsel = 0, o = 0;
     for (Py_ssize_t q = 0; q < S->np; q++)
         if (S->pairs[q].deg == d)
             nsel++;
     Pair *sel = malloc(sizeof(Pair) * (nsel ? nsel : 1));
-    if (!sel)
+    char *zeros = calloc(nsel ? nsel : 1, 1);
+    if (!sel || !zeros) {
+        free(sel);
+        free(zeros);
+        PyBuffer_Release(&defer);
         return PyErr_NoMemory();
+    }
     nsel = 0;
     for (Py_ssize_t q = 0; q < S->np; q++) {
         if (S->pairs[q].deg == d)
@@ -770,32 +782,42 @@ static PyObject *bba_step(PyObject *self, PyObject *args)
     S->np = o;
     nw_sort = L->nw;
     qsort(sel, nsel, sizeof(Pair), pair_cmp);
-    PyObject *out = PyList_New(0);
+    const char *late = defer.len == nsel ? defer.buf : NULL;
+    PyObject *lms = PyList_New(0);
     int rc = 0;
-    for (Py_ssize_t q = 0; q < nsel && need > 0 && out; q++) {
-        rc = spoly_streams(S, &sel[q]);
-        if (rc == 0)
-            rc = heap_reduce(S, S->basis, S->nb, 1);
-        if (rc < 0)
-            break;
-        if (S->work.len == 0)
-            continue;
-        rc = add_basis(S, d);
-        if (rc < 0)
-            break;
-        need--;
-        PyObject *lm = lm_int(L, S->basis[S->nb - 1].m);
-        if (!lm || PyList_Append(out, lm) < 0) {
-            Py_XDECREF(lm);
-            Py_CLEAR(out);
-        } else
-            Py_DECREF(lm);
-    }
+    for (int pass = 0; pass < (late ? 2 : 1) && rc == 0; pass++)
+        for (Py_ssize_t q = 0; q < nsel && need > 0 && lms; q++) {
+            if (late && (late[q] != 0) != pass)
+                continue;
+            rc = spoly_streams(S, &sel[q]);
+            if (rc == 0)
+                rc = heap_reduce(S, S->basis, S->nb, 1);
+            if (rc < 0)
+                break;
+            if (S->work.len == 0) {
+                zeros[q] = 1;
+                continue;
+            }
+            rc = add_basis(S, d);
+            if (rc < 0)
+                break;
+            need--;
+            PyObject *lm = lm_int(L, S->basis[S->nb - 1].m);
+            if (!lm || PyList_Append(lms, lm) < 0) {
+                Py_XDECREF(lm);
+                Py_CLEAR(lms);
+            } else
+                Py_DECREF(lm);
+        }
+    PyBuffer_Release(&defer);
+    PyObject *out = NULL;
+    if (rc < 0)
+        error(rc);
+    else if (lms)
+        out = Py_BuildValue("(Oy#)", lms, zeros, nsel);
+    Py_XDECREF(lms);
     free(sel);
-    if (rc < 0) {
-        Py_XDECREF(out);
-        return error(rc);
-    }
+    free(zeros);
     return out;
 }
 
@@ -1356,7 +1378,7 @@ static PyMethodDef methods[] = {
     {"layout", bba_layout, METH_VARARGS, "layout(nw, guard, units, eshifts, dshift, ebits): packed monomials."},
     {"state", bba_state, METH_VARARGS, "state(layout, p, gens, limit=0): generators waiting, no basis yet."},
     {"min_degree", bba_min_degree, METH_VARARGS, "min_degree(st): least degree of a pair, -1 if none."},
-    {"step", bba_step, METH_VARARGS, "step(st, d, need): the new leading monomials of degree d."},
+    {"step", bba_step, METH_VARARGS, "step(st, d, need, defer): the new leading monomials of degree d, the zero reductions."},
     {"reduced", bba_reduced, METH_VARARGS, "reduced(st, target): the reduced basis (bytes pairs)."},
     {"exponents", bba_exponents, METH_VARARGS, "exponents(layout, monomials): exponent tuples."},
     {NULL, NULL, 0, NULL}

@@ -88,11 +88,19 @@ class _Series:
     """The Hilbert series of the leading monomials found (:class:`.hilbert_driven.Counter`),
     kept across the primes of one lift: primes of the same shape find the same leading monomials
     in the same order, so each numerator is computed once.  A state is a node of the tree of
-    sequences of leading monomials met so far (0: none)."""
+    sequences of leading monomials met so far (0: none).
+
+    The pairs that reduced to zero in a degree at the first prime through a node are reduced last
+    at the next ones (:meth:`deferred`): a degree is complete once it has the new leading
+    monomials the series asks for, whichever pairs gave them (module docstring), so the order of
+    the pairs changes the work, not the result's correctness; at primes of the same shape the
+    pairs that gave new elements come in the same order with the same basis before each, so the
+    basis is the same as without deferring."""
 
     def __init__(self, target: list[int], nvars: int) -> None:
         self.counters = [Counter(target, nvars)]
         self.children: list[dict[Exp, int]] = [{}]
+        self.zeros: dict[tuple[int, int], bytes] = {}
 
     def add(self, node: int, m: Exp) -> int:
         """The node after ``m`` joined the leading monomials of ``node``."""
@@ -110,6 +118,14 @@ class _Series:
     def missing(self, node: int, d: int) -> tuple[int, bool]:
         return self.counters[node].missing(d)
 
+    def deferred(self, node: int, d: int) -> bytes:
+        """A byte per pair of degree ``d`` at ``node`` (sorted as in C), set for those to reduce
+        last; empty: none known."""
+        return self.zeros.get((node, d), b"")
+
+    def reduced_to_zero(self, node: int, d: int, zeros: bytes) -> None:
+        self.zeros.setdefault((node, d), zeros)
+
 
 class _AllPairs:
     """No Hilbert series: every pair is reduced (Buchberger's algorithm, normal strategy)."""
@@ -119,6 +135,12 @@ class _AllPairs:
 
     def add(self, node: int, m: Exp) -> int:
         return 0
+
+    def deferred(self, node: int, d: int) -> bytes:
+        return b""
+
+    def reduced_to_zero(self, node: int, d: int, zeros: bytes) -> None:
+        pass
 
 
 def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyRing, series: _Series | _AllPairs,
@@ -144,7 +166,9 @@ def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyR
                 need, done = series.missing(path, d)
                 if done:
                     break
-                for lm in _bba.step(st, d, need):
+                lms, zeros = _bba.step(st, d, need, series.deferred(path, d))
+                series.reduced_to_zero(path, d, zeros)
+                for lm in lms:
                     path = series.add(path, unpack(lm))
             layout = _layout(pk)
             return layout, _bba.reduced(st, None if hring is ring else layout)

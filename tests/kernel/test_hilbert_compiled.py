@@ -10,7 +10,7 @@ from mech.kernel import engines as E
 from mech.kernel import hilbert_compiled as HC
 from mech.kernel.buchberger import TooLong, buchberger, reduce_basis
 from mech.kernel.engines import clear_cache, standard_basis
-from mech.kernel.modular import ModularFailure
+from mech.kernel.modular import ModularFailure, primitive
 from mech.kernel.poly import Poly
 from tests.util import ideal_blocks, parse_poly, run_singular
 
@@ -77,6 +77,46 @@ def test_five_bar_projection_matches_the_python_hilbert_driven_algorithm():
     clear_cache()
     assert ours == standard_basis(gens, R, "hilbert")
     assert len(ours) == 35 and sum(len(g.terms) for g in ours) == 8018
+
+
+class _Deferring(HC._Series):
+    """A series whose deferral hint is replaced by ``hint(zeros known, number of pairs)``."""
+
+    def __init__(self, target, nvars, hint):
+        super().__init__(target, nvars)
+        self.hint = hint
+        self.sizes = {}
+
+    def deferred(self, node, d):
+        known = super().deferred(node, d)
+        return self.hint(known, self.sizes.get((node, d), len(known)))
+
+    def reduced_to_zero(self, node, d, zeros):
+        self.sizes[(node, d)] = len(zeros)
+        super().reduced_to_zero(node, d, zeros)
+
+
+@needs_compiled
+@pytest.mark.parametrize("hint", [
+    lambda known, n: known,  # the first prime's zero reductions last (what the lift does)
+    lambda known, n: bytes(1 - b for b in known),  # the pairs that gave new elements last
+    lambda known, n: b"\x01" * n,  # every pair marked: the order is unchanged
+    lambda known, n: b"\x01" * (n + 1),  # a hint of the wrong length is ignored
+])
+def test_deferring_pairs_keeps_the_basis_modulo_p(hint):
+    """A degree is complete once it has its new leading monomials, whichever pairs gave them: the
+    five-bar's reduced basis modulo p is the same whatever pairs are deferred, and every later
+    prime sees the first prime's zero reductions."""
+    R = ring_of(QQ, ["c1", "s1", "c2", "s2", "c3", "s3", "c4", "s4", "y1", "y2", "y3"], (("dp", 8), ("dp", 3)))
+    gens = [parse_poly(R, t) for t in FIVE_BAR]
+    hring, hgens, target = HC._homogenized(gens, R, E._dp_homogeneous)
+    ints = [primitive(g.terms) for g in hgens]
+    p = 2147483629
+    plain = HC._reduced_modp(ints, hring, R, HC._Series(target, hring.nvars), p)[1]
+    series = _Deferring(target, hring.nvars, hint)
+    first = HC._reduced_modp(ints, hring, R, series, p)[1]
+    assert any(0 < sum(z) for z in series.zeros.values())  # some pairs reduced to zero
+    assert HC._reduced_modp(ints, hring, R, series, p)[1] == first == plain
 
 
 @needs_compiled
