@@ -1,4 +1,4 @@
-/* The Hilbert-driven Buchberger algorithm modulo p < 2^31 and the reduction of its basis
+/* The Hilbert-driven Buchberger algorithm modulo p < 2^50 and the reduction of its basis
  * (kernel/hilbert_compiled.py drives it), the optional extension mech.kernel._bba.
  *
  * Monomials are the packed integers of kernel/monomials.py (``Packing``), split into `nw`
@@ -38,7 +38,7 @@ typedef struct {
 typedef struct {
     Py_ssize_t len;
     uint64_t *m; /* len * nw, decreasing */
-    uint32_t *c;
+    uint64_t *c; /* below p */
     uint64_t sev; /* reducers: the variables of the leading monomial (bit j mod 64 for x_j) */
 } Poly;
 
@@ -51,6 +51,7 @@ typedef struct {
     Layout *L;
     PyObject *layout; /* owns L */
     uint64_t p;
+    double pinv; /* 1 / p, for mulmod */
     Poly *gens, *basis;
     char *active;
     int *sugar; /* of the basis elements */
@@ -228,7 +229,7 @@ static int poly_reserve(Poly *f, Py_ssize_t *cap, Py_ssize_t len, int nw)
     if (!m)
         return -1;
     f->m = m;
-    uint32_t *cc = realloc(f->c, sizeof(uint32_t) * c);
+    uint64_t *cc = realloc(f->c, sizeof(uint64_t) * c);
     if (!cc)
         return -1;
     f->c = cc;
@@ -236,16 +237,30 @@ static int poly_reserve(Poly *f, Py_ssize_t *cap, Py_ssize_t len, int nw)
     return 0;
 }
 
-static int poly_copy(Poly *dst, const uint64_t *m, const uint32_t *c, Py_ssize_t len, int nw)
+static int poly_copy(Poly *dst, const uint64_t *m, const uint64_t *c, Py_ssize_t len, int nw)
 {
     dst->len = len;
     dst->m = malloc(sizeof(uint64_t) * nw * (len ? len : 1));
-    dst->c = malloc(sizeof(uint32_t) * (len ? len : 1));
+    dst->c = malloc(sizeof(uint64_t) * (len ? len : 1));
     if (!dst->m || !dst->c)
         return -1;
     memcpy(dst->m, m, sizeof(uint64_t) * nw * len);
-    memcpy(dst->c, c, sizeof(uint32_t) * len);
+    memcpy(dst->c, c, sizeof(uint64_t) * len);
     return 0;
+}
+
+/* a b mod p for a, b < p < 2^50: the quotient estimated in double precision is off by less than
+ * 1 (relative error below 2^-51 of a value below 2^50), so a b - q p, exact modulo 2^64, lies in
+ * [-p, 2p) */
+static inline uint64_t mulmod(uint64_t a, uint64_t b, uint64_t p, double pinv)
+{
+    uint64_t q = (uint64_t)((double)a * (double)b * pinv);
+    int64_t r = (int64_t)(a * b - q * p);
+    if (r < 0)
+        r += (int64_t)p;
+    else if (r >= (int64_t)p)
+        r -= (int64_t)p;
+    return (uint64_t)r;
 }
 
 static uint64_t inv_mod(uint64_t a, uint64_t p)
@@ -269,7 +284,7 @@ static void poly_monic(Poly *f, uint64_t p)
         return;
     uint64_t inv = inv_mod(f->c[0], p);
     for (Py_ssize_t k = 0; k < f->len; k++)
-        f->c[k] = (uint32_t)(f->c[k] * inv % p);
+        f->c[k] = (uint64_t)((unsigned __int128)f->c[k] * inv % p);
 }
 
 /* A reduction runs on a heap of streams (Monagan-Pearce): each stream is coef * mult * g[pos..],
@@ -395,6 +410,7 @@ static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
     const Layout *L = S->L;
     const int nw = L->nw;
     const uint64_t p = S->p;
+    const double pinv = S->pinv;
     uint64_t m[MAXW], t[MAXW];
     int reducing = 1, rc = 0;
     S->work.len = 0;
@@ -405,7 +421,9 @@ static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
             Stream *s = &streams[heap[0].s];
             if (++S->spent > S->limit && S->limit)
                 return -3;
-            c = (c + s->coef * s->g->c[s->pos]) % p;
+            c += mulmod(s->coef, s->g->c[s->pos], p, pinv);
+            if (c >= p)
+                c -= p;
             if (++s->pos < s->g->len) {
                 if (stream_load(L, s) < 0)
                     return -1;
@@ -433,7 +451,7 @@ static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
         if (poly_reserve(&S->work, &S->capwork, S->work.len + 1, nw) < 0)
             return -2;
         memcpy(S->work.m + (size_t)S->work.len * nw, m, 8 * nw);
-        S->work.c[S->work.len++] = (uint32_t)c;
+        S->work.c[S->work.len++] = c;
     }
     return 0;
 }
@@ -503,8 +521,8 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
     Layout *L = PyCapsule_GetPointer(lay, "bba.layout");
     if (!L)
         return NULL;
-    if (p < 2 || p >= (1ULL << 31)) {
-        PyErr_SetString(PyExc_ValueError, "bba.state: p must be below 2^31");
+    if (p < 2 || p >= (1ULL << 50)) {
+        PyErr_SetString(PyExc_ValueError, "bba.state: p must be below 2^50");
         return NULL;
     }
     State *S = calloc(1, sizeof(State));
@@ -514,6 +532,7 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
     S->layout = lay;
     Py_INCREF(lay);
     S->p = p;
+    S->pinv = 1.0 / (double)p;
     S->limit = limit;
     PyObject *cap = PyCapsule_New(S, "bba.state", state_free);
     if (!cap) {
@@ -535,7 +554,7 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
             Py_DECREF(cap);
             return NULL;
         }
-        Py_ssize_t len = cb.len / 4;
+        Py_ssize_t len = cb.len / 8;
         int bad = mb.len != (Py_ssize_t)8 * nw * len || len == 0;
         int err = bad ? 0 : poly_copy(&S->gens[k], mb.buf, cb.buf, len, nw);
         PyBuffer_Release(&mb);
@@ -881,12 +900,12 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
         Poly *g = &polys[m++];
         g->len = f->len;
         g->m = malloc(8 * nw * f->len);
-        g->c = malloc(4 * f->len);
+        g->c = malloc(8 * f->len);
         if (!g->m || !g->c) {
             rc = -2;
             break;
         }
-        memcpy(g->c, f->c, 4 * f->len);
+        memcpy(g->c, f->c, 8 * f->len);
         for (Py_ssize_t t = 0; t < f->len; t++) {
             if (B == A)
                 memcpy(g->m + (size_t)t * nw, f->m + (size_t)t * nw, 8 * nw);
@@ -929,7 +948,7 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
             Poly *r = &done[nd];
             r->len = S->work.len + 1;
             r->m = malloc(8 * nw * r->len);
-            r->c = malloc(4 * r->len);
+            r->c = malloc(8 * r->len);
             if (!r->m || !r->c) {
                 free(r->m);
                 free(r->c);
@@ -939,7 +958,7 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
             memcpy(r->m, g->m, 8 * nw);
             r->c[0] = g->c[0];
             memcpy(r->m + nw, S->work.m, 8 * nw * S->work.len);
-            memcpy(r->c + 1, S->work.c, 4 * S->work.len);
+            memcpy(r->c + 1, S->work.c, 8 * S->work.len);
             poly_monic(r, S->p);
             r->sev = msev(B, r->m);
             nd++;
@@ -954,7 +973,7 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
             out = PyList_New(nd);
             for (Py_ssize_t a = 0; a < nd && out; a++) {
                 PyObject *item = Py_BuildValue("(y#y#)", (const char *)done[a].m, (Py_ssize_t)(8 * nw * done[a].len),
-                                               (const char *)done[a].c, (Py_ssize_t)(4 * done[a].len));
+                                               (const char *)done[a].c, (Py_ssize_t)(8 * done[a].len));
                 if (!item)
                     Py_CLEAR(out);
                 else
@@ -1054,11 +1073,11 @@ static int ratrec128(u128 a, u128 M, u128 B, int64_t *n, int64_t *d)
     return 1;
 }
 
-/* ratlift(residues: list of bytes (uint32 per coefficient, one per prime), primes: list, check:
- * bytes, q): the rationals n/d (|n|, d <= sqrt(M/2), M the product of the primes, at most 4 below
- * 2^31) with n = r d mod each prime, as (numerators, denominators), if every coefficient has one
- * and they agree with the residues `check` modulo q; else None.  A running common denominator
- * makes most coefficients one product per prime. */
+/* ratlift(residues: list of bytes (uint64 per coefficient, one per prime), primes: list, check:
+ * bytes, q): the rationals n/d (|n|, d <= sqrt(M/2), M the product of the primes, each below
+ * 2^50, M below 2^124) with n = r d mod each prime, as (numerators, denominators), if every
+ * coefficient has one and they agree with the residues `check` modulo q < 2^50; else None.  A
+ * running common denominator makes most coefficients one product per prime. */
 static PyObject *bba_ratlift(PyObject *self, PyObject *args)
 {
     PyObject *res, *primes;
@@ -1066,12 +1085,14 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
     unsigned long long q;
     if (!PyArg_ParseTuple(args, "O!O!y*K", &PyList_Type, &res, &PyList_Type, &primes, &check, &q))
         return NULL;
-    Py_ssize_t k = PyList_GET_SIZE(primes), N = check.len / 4;
+    Py_ssize_t k = PyList_GET_SIZE(primes), N = check.len / 8;
     PyObject *out = NULL;
     Py_buffer bufs[4];
     int nbuf = 0;
     uint64_t p[4];
-    if (k < 1 || k > 4 || PyList_GET_SIZE(res) != k) {
+    u128 P[5];
+    P[0] = 1;
+    if (k < 1 || k > 4 || PyList_GET_SIZE(res) != k || q < 2 || q >= (1ULL << 50)) {
         PyErr_SetString(PyExc_ValueError, "ratlift: one to four primes");
         goto done;
     }
@@ -1080,24 +1101,21 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
         if (PyObject_GetBuffer(PyList_GET_ITEM(res, j), &bufs[j], PyBUF_SIMPLE) < 0)
             goto done;
         nbuf++;
-        if (bufs[j].len != check.len || p[j] >= (1ULL << 31) || p[j] < 2) {
-            PyErr_SetString(PyExc_ValueError, "ratlift: bad residues");
+        if (bufs[j].len != check.len || p[j] >= (1ULL << 50) || p[j] < 2 || P[j] > ((((u128)1) << 124) - 1) / p[j]) {
+            PyErr_SetString(PyExc_ValueError, "ratlift: bad residues or primes");
             goto done;
         }
+        P[j + 1] = P[j] * p[j];
     }
     /* Garner: x = sum t_j P_j with P_j the product of the primes before j */
-    u128 P[5];
     uint64_t inv[4];
-    P[0] = 1;
-    for (Py_ssize_t j = 0; j < k; j++) {
-        P[j + 1] = P[j] * p[j];
+    for (Py_ssize_t j = 0; j < k; j++)
         inv[j] = j ? inv_mod((uint64_t)(P[j] % p[j]), p[j]) : 1;
-    }
     const u128 M = P[k], half = M / 2, B = isqrt128(M / 2);
-    const uint32_t *r[4];
+    const uint64_t *r[4];
     for (Py_ssize_t j = 0; j < k; j++)
         r[j] = bufs[j].buf;
-    const uint32_t *cq = check.buf;
+    const uint64_t *cq = check.buf;
     PyObject *nums = PyList_New(N), *dens = PyList_New(N);
     if (!nums || !dens) {
         Py_XDECREF(nums);
@@ -1110,9 +1128,9 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
         /* b = r * den mod M, symmetric */
         u128 x = 0;
         for (Py_ssize_t j = 0; j < k; j++) {
-            uint64_t v = (uint64_t)r[j][i] * ((uint64_t)den % p[j]) % p[j];
+            uint64_t v = (uint64_t)((u128)r[j][i] * ((uint64_t)den % p[j]) % p[j]);
             uint64_t xm = (uint64_t)(x % p[j]);
-            uint64_t t = (v + p[j] - xm) % p[j] * inv[j] % p[j];
+            uint64_t t = (uint64_t)((u128)((v + p[j] - xm) % p[j]) * inv[j] % p[j]);
             x += (u128)t * P[j];
         }
         int64_t n, d;
@@ -1126,7 +1144,7 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
             u128 a = 0;
             for (Py_ssize_t j = 0; j < k; j++) {
                 uint64_t xm = (uint64_t)(a % p[j]);
-                uint64_t t = ((uint64_t)r[j][i] + p[j] - xm) % p[j] * inv[j] % p[j];
+                uint64_t t = (uint64_t)((u128)((r[j][i] + p[j] - xm) % p[j]) * inv[j] % p[j]);
                 a += (u128)t * P[j];
             }
             if (!ratrec128(a, M, B, &n, &d)) {
@@ -1144,7 +1162,7 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
             break;
         }
         uint64_t nq = (uint64_t)(n % (int64_t)q + (int64_t)q) % q;
-        if (nq * inv_mod(dq, q) % q != cq[i]) {
+        if ((u128)nq * inv_mod(dq, q) % q != cq[i]) {
             ok = 0;
             break;
         }

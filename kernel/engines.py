@@ -86,8 +86,8 @@ mechanisms' many small eliminations finish there; larger computations go to FGLM
 wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and katsura-5 in (dp(3),dp(3))."""
 
 
-ATTEMPT_PRIMES = 6
-"""The compiled attempt gives up after this many primes (coefficients of about 90 bits): larger
+ATTEMPT_PRIMES = 4
+"""The compiled attempt gives up after this many primes of 50 bits (coefficients of about 95 bits): larger
 coefficients are left to the Hilbert-driven algorithm or FGLM."""
 
 

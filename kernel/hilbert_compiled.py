@@ -1,4 +1,4 @@
-"""The Hilbert-driven Buchberger algorithm (:mod:`.hilbert_driven`) modulo ``p < 2^31`` in
+"""The Hilbert-driven Buchberger algorithm (:mod:`.hilbert_driven`) modulo ``p < 2^50`` in
 compiled code (the optional C extension ``_bba``, kernel/_bba.c), and over QQ by a modular lift.
 
 Modulo ``p`` the homogenized generators, the basis and the pairs live in C as packed monomials
@@ -16,7 +16,7 @@ is complete as in Buchberger's algorithm.
 
 Over QQ (:func:`hilbert_qq`) the reduced bases at several primes of the same shape (monomials)
 are combined by the Chinese remainder theorem and lifted by rational reconstruction (:class:`Lift`:
-in C up to four primes, then :class:`.modular.Reconstructor`) until the next prime's basis agrees
+in C up to two primes, then :class:`.modular.Reconstructor`) until the next prime's basis agrees
 with the lift ``G``; a
 prime whose basis has another shape is dropped, and when more primes disagree than agree the
 first one was unlucky and the lift starts again from a later prime.  ``G mod q`` is then the
@@ -52,8 +52,16 @@ try:
 except ImportError:  # pragma: no cover - no compiler at install time
     _bba = None
 
-PRIMES = (1 << 30, 1 << 31)
-"""The primes of the lift (the compiled arithmetic takes ``p < 2^31``)."""
+PRIMES = (1 << 49, 1 << 50)
+"""The primes of the lift (the compiled arithmetic takes ``p < 2^50``: two primes lift coefficients
+of 49 bits, where four of 31 bits took 61)."""
+
+MAX_CHARACTERISTIC = 1 << 31
+"""Rings over Z/p with ``p`` below this use the compiled algorithm (as the other engines)."""
+
+C_LIFT_BITS = 124
+"""The lift's rational reconstruction runs in C (128-bit integers) while the product of the primes
+has at most this many bits."""
 
 MAX_PRIMES = 60
 """The lift gives up (:class:`~.modular.ModularFailure`) after this many primes."""
@@ -64,7 +72,7 @@ def usable(ring: PolyRing) -> bool:
     Z/p with ``p < 2^31``."""
     f = ring.field
     return _bba is not None and (isinstance(f, RationalField)
-                                 or isinstance(f, PrimeField) and f.characteristic < PRIMES[1])
+                                 or isinstance(f, PrimeField) and f.characteristic < MAX_CHARACTERISTIC)
 
 
 @lru_cache(maxsize=64)
@@ -81,7 +89,7 @@ def _encode(pk: Packing, terms: dict[Exp, int], p: int) -> tuple[bytes, bytes]:
     width = 8 * ((pk.bits + 64) // 64)
     items = sorted(((int(pk.pack(e)), c % p) for e, c in terms.items()), reverse=True)
     items = [(m, c) for m, c in items if c]
-    return b"".join(m.to_bytes(width, "little") for m, _ in items), array("I", [c for _, c in items]).tobytes()
+    return b"".join(m.to_bytes(width, "little") for m, _ in items), array("Q", [c for _, c in items]).tobytes()
 
 
 class _Series:
@@ -177,7 +185,7 @@ def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyR
 
 
 def _as_dicts(layout, basis, coefficient) -> list[dict[Exp, Any]]:
-    return [dict(zip(_bba.exponents(layout, ms), map(coefficient, array("I", cs)))) for ms, cs in basis]
+    return [dict(zip(_bba.exponents(layout, ms), map(coefficient, array("Q", cs)))) for ms, cs in basis]
 
 
 def hilbert_modp(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
@@ -249,7 +257,7 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
             flat = b"".join(c for _, c in basis)
             if shape is None:
                 shape, layout = ms, lay
-                sizes = [len(c) // 4 for _, c in basis]
+                sizes = [len(c) // 8 for _, c in basis]
             elif ms != shape:
                 misses += 1
                 if misses > good + 2:
@@ -271,13 +279,14 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
 
 
 class Lift:
-    """Residues of the coefficients (one flat uint32 array per prime) lifted to QQ: in C while
-    the product of the primes fits 124 bits (four primes), then by :class:`.modular.Lifter` and
-    :class:`.modular.Reconstructor`."""
+    """Residues of the coefficients (one flat uint64 array per prime) lifted to QQ: in C while
+    the product of the primes has at most :data:`C_LIFT_BITS` bits (two primes), then by
+    :class:`.modular.Lifter` and :class:`.modular.Reconstructor`."""
 
     def __init__(self) -> None:
         self.residues: list[bytes] = []
         self.primes: list[int] = []
+        self.modulus = 1
         self.lifter: Lifter | None = None
         self.rec: Reconstructor | None = None
         self.candidate: list | None = None
@@ -285,13 +294,14 @@ class Lift:
     def add(self, flat: bytes, p: int) -> None:
         self.residues.append(flat)
         self.primes.append(p)
-        if len(self.primes) > 4:
+        self.modulus *= p
+        if self.modulus.bit_length() > C_LIFT_BITS:
             if self.lifter is None:
-                self.lifter, self.rec = Lifter(), Reconstructor([len(flat) // 4])
+                self.lifter, self.rec = Lifter(), Reconstructor([len(flat) // 8])
                 for r, q in zip(self.residues, self.primes):
-                    self.lifter.add([array("I", r).tolist()], q)
+                    self.lifter.add([array("Q", r).tolist()], q)
             else:
-                self.lifter.add([array("I", flat).tolist()], p)
+                self.lifter.add([array("Q", flat).tolist()], p)
             self.candidate = self.rec.attempt(self.lifter.values, self.lifter.m)
 
     def checked(self, flat: bytes, q: int) -> list | None:
@@ -301,7 +311,7 @@ class Lift:
         if self.lifter is None:
             lifted = _bba.ratlift(self.residues, self.primes, flat, q)
             return None if lifted is None else list(map(flint.fmpq, *lifted))
-        if not self.rec.check([array("I", flat).tolist()], q) and self.candidate is not None:
+        if not self.rec.check([array("Q", flat).tolist()], q) and self.candidate is not None:
             return self.candidate[0]
         return None
 

@@ -3,6 +3,7 @@ engine ``hilbert-compiled``): modulo p and over QQ by a lift from primes, agains
 reduced basis, the Python Hilbert-driven algorithm and Singular."""
 import random
 
+import flint
 import pytest
 
 from mech.kernel import GF, QQ, Block, MonomialOrder, PolyRing
@@ -185,8 +186,48 @@ def test_compiled_buchberger_on_homogeneous_ideals_matches_buchberger(field):
 
 
 @needs_compiled
-def test_coefficients_past_four_primes_are_lifted_in_python():
-    """Coefficients of ~150 bits need more primes than the compiled lift (four below 2^31) takes."""
+@pytest.mark.parametrize("blocks", BLOCKS)
+def test_the_compiled_arithmetic_modulo_primes_of_50_bits(blocks):
+    """The lift's primes lie below 2^50 (products by a double-precision quotient): the basis
+    modulo the largest prime below 2^50 is Buchberger's over that field, with coefficients
+    spread over the whole range."""
+    p = (1 << 50) - 27
+    assert flint.fmpz(p).is_prime() and p < HC.PRIMES[1]
+    rng = random.Random(f"p50 {blocks}")
+    R = ring_of(GF(p), "abcd", blocks)
+    for _ in range(4):
+        gens = [Poly(R, {e: R.field(rng.randrange(1, p)) for e, _ in g.terms.items()})
+                for g in random_ideal(R, rng, rng.randint(2, 3))]
+        got = HC.buchberger_modp(gens, R)
+        assert [{e: int(c) for e, c in b.items()} for b in got] == \
+            [{e: int(c) for e, c in b.items()} for b in reference(gens, R)]
+
+
+@needs_compiled
+def test_the_compiled_reconstruction_refuses_a_wrong_check_and_too_many_bits():
+    """``ratlift`` returns None when the lift disagrees with the check residues (a wrong candidate),
+    and refuses primes whose product passes 124 bits or a prime of 50 bits or more."""
+    from array import array
+    p1, p2, q = (1 << 50) - 27, (1 << 50) - 35, (1 << 49) - 81
+    values = [flint.fmpq(-3, 7), flint.fmpq(123456789, 1000003), flint.fmpq(5)]
+
+    def residues(m):
+        return array("Q", [int(v.p) * pow(int(v.q), -1, m) % m for v in values]).tobytes()
+
+    nums, dens = HC._bba.ratlift([residues(p1), residues(p2)], [p1, p2], residues(q), q)
+    assert list(map(flint.fmpq, nums, dens)) == values
+    wrong = bytearray(residues(q))
+    wrong[0] ^= 1
+    assert HC._bba.ratlift([residues(p1), residues(p2)], [p1, p2], bytes(wrong), q) is None
+    with pytest.raises(ValueError):
+        HC._bba.ratlift([residues(p1)] * 3, [p1, p2, q], residues(q), q)  # 149 bits
+    with pytest.raises(ValueError):
+        HC._bba.ratlift([residues(p1)], [1 << 50], residues(q), q)
+
+
+@needs_compiled
+def test_coefficients_past_two_primes_are_lifted_in_python():
+    """Coefficients of ~150 bits need more primes than the compiled lift (two below 2^50) takes."""
     R = ring_of(QQ, "xyz", (("dp", 1), ("dp", 2)))
     big = 3 ** 95
     gens = [parse_poly(R, f"x^2-{big}*y*z+1"), parse_poly(R, f"x*y-{big + 2}*z^2"), parse_poly(R, "y^3-x-3")]
