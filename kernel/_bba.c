@@ -1184,6 +1184,249 @@ done:
     return out;
 }
 
+/* -- the exact check of a lift ------------------------------------------------------------- */
+/* Polynomials with integer coefficients in 128 bits; every product and sum is checked for
+ * overflow (then the check answers None and the caller does it with Python integers). */
+typedef struct {
+    Py_ssize_t len;
+    uint64_t *m;
+    i128 *c;
+    uint64_t sev;
+} IPoly;
+
+static u128 uabs128(i128 x)
+{
+    return x < 0 ? -(u128)x : (u128)x;
+}
+
+static u128 gcd128(u128 a, u128 b)
+{
+    while (b) {
+        u128 t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* f /= the gcd of its coefficients */
+static void ipoly_primitive(IPoly *f)
+{
+    u128 g = 0;
+    for (Py_ssize_t k = 0; k < f->len && g != 1; k++)
+        g = gcd128(uabs128(f->c[k]), g);
+    if (g > 1)
+        for (Py_ssize_t k = 0; k < f->len; k++)
+            f->c[k] /= (i128)g;
+}
+
+static void ipolys_free(IPoly *f, Py_ssize_t n)
+{
+    for (Py_ssize_t k = 0; k < n; k++) {
+        free(f[k].m);
+        free(f[k].c);
+    }
+    free(f);
+}
+
+/* item = (monomials, numerators[, denominators]) (int64 each): f the primitive integer multiple,
+ * 1 on overflow, -1 on bad input (exception set), -2 out of memory */
+static int ipoly_read(const Layout *L, PyObject *item, IPoly *f)
+{
+    Py_buffer mb, nb, db = {0};
+    int has_den = PyTuple_Check(item) && PyTuple_GET_SIZE(item) == 3;
+    if (!PyArg_ParseTuple(item, has_den ? "y*y*y*" : "y*y*", &mb, &nb, &db))
+        return -1;
+    const int nw = L->nw;
+    Py_ssize_t len = nb.len / 8;
+    int rc = 0;
+    if (mb.len != 8 * nw * len || (has_den && db.len != nb.len) || len == 0) {
+        PyErr_SetString(PyExc_ValueError, "bba.in_ideal: bad polynomial");
+        rc = -1;
+        goto done;
+    }
+    f->len = len;
+    f->m = malloc(8 * nw * len);
+    f->c = malloc(sizeof(i128) * len);
+    if (!f->m || !f->c) {
+        rc = -2;
+        goto done;
+    }
+    memcpy(f->m, mb.buf, 8 * nw * len);
+    const int64_t *num = nb.buf, *den = has_den ? db.buf : NULL;
+    i128 l = 1; /* the lcm of the denominators */
+    for (Py_ssize_t k = 0; den && k < len && rc == 0; k++) {
+        if (den[k] <= 0) {
+            PyErr_SetString(PyExc_ValueError, "bba.in_ideal: bad denominator");
+            rc = -1;
+        } else if (__builtin_mul_overflow(l / (i128)gcd128((u128)l, (u128)den[k]), (i128)den[k], &l))
+            rc = 1;
+    }
+    for (Py_ssize_t k = 0; k < len && rc == 0; k++)
+        if (__builtin_mul_overflow((i128)num[k], den ? l / den[k] : 1, &f->c[k]))
+            rc = 1;
+    if (rc == 0) {
+        ipoly_primitive(f);
+        f->sev = msev(L, f->m);
+    }
+done:
+    PyBuffer_Release(&mb);
+    PyBuffer_Release(&nb);
+    if (has_den)
+        PyBuffer_Release(&db);
+    return rc;
+}
+
+/* Whether f top-reduces to 0 by the reducers, fraction-free (a step a f - c x^s g cancels the top
+ * term with a c = lc(g) f_top / gcd, then the content is removed): 1 yes, 0 no (a top term no
+ * leading monomial divides), 2 on overflow (of the coefficients or the packing), -2 out of
+ * memory.  f is consumed. */
+static int ipoly_reduces_to_zero(const Layout *L, const IPoly *red, Py_ssize_t nred, IPoly *f)
+{
+    const int nw = L->nw;
+    Py_ssize_t cap = 0, fcap = f->len; /* of the buffers om, oc and f's */
+    uint64_t *om = NULL, t[MAXW], s[MAXW];
+    i128 *oc = NULL;
+    int rc = 1;
+    while (f->len > 0) {
+        Py_ssize_t best = -1;
+        const uint64_t not_m = ~msev(L, f->m);
+        for (Py_ssize_t k = 0; k < nred; k++)
+            if (!(red[k].sev & not_m) && (best < 0 || red[k].len < red[best].len) && mdivides(L, red[k].m, f->m))
+                best = k;
+        if (best < 0) {
+            rc = 0;
+            break;
+        }
+        const IPoly *g = &red[best];
+        i128 a = g->c[0], c = f->c[0];
+        i128 d = (i128)gcd128(uabs128(a), uabs128(c));
+        a /= d;
+        c /= d;
+        msub(s, f->m, g->m, nw);
+        Py_ssize_t need = f->len + g->len;
+        if (need > cap) {
+            cap = 2 * need;
+            uint64_t *m2 = realloc(om, 8 * nw * cap);
+            i128 *c2 = m2 ? realloc(oc, sizeof(i128) * cap) : NULL;
+            if (m2)
+                om = m2;
+            if (c2)
+                oc = c2;
+            if (!m2 || !c2) {
+                rc = -2;
+                break;
+            }
+        }
+        /* out = a f[1..] - c x^s g[1..], both decreasing */
+        Py_ssize_t i = 1, j = 1, n = 0;
+        int have = 0;
+        while (i < f->len || j < g->len) {
+            if (j < g->len && !have) {
+                madd(t, g->m + (size_t)j * nw, s, nw);
+                if (mguarded(L, t)) {
+                    rc = 2;
+                    break;
+                }
+                have = 1;
+            }
+            int cmp = i >= f->len ? -1 : !have ? 1 : mcmp(f->m + (size_t)i * nw, t, nw);
+            i128 v, w;
+            const uint64_t *mono;
+            if (cmp > 0) {
+                if (__builtin_mul_overflow(a, f->c[i], &v)) {
+                    rc = 2;
+                    break;
+                }
+                mono = f->m + (size_t)i++ * nw;
+            } else {
+                if (__builtin_mul_overflow(c, g->c[j], &w)) {
+                    rc = 2;
+                    break;
+                }
+                v = -w;
+                if (cmp == 0) {
+                    i128 u;
+                    if (__builtin_mul_overflow(a, f->c[i], &u) || __builtin_add_overflow(u, v, &v)) {
+                        rc = 2;
+                        break;
+                    }
+                    i++;
+                }
+                mono = t;
+                j++;
+                have = 0;
+            }
+            if (v) {
+                memcpy(om + (size_t)n * nw, mono, 8 * nw);
+                oc[n++] = v;
+            }
+        }
+        if (rc != 1)
+            break;
+        uint64_t *fm = f->m;
+        i128 *fc = f->c;
+        f->m = om;
+        f->c = oc;
+        f->len = n;
+        om = fm;
+        oc = fc;
+        Py_ssize_t c2 = cap;
+        cap = fcap;
+        fcap = c2;
+        if (a != 1 && a != -1)
+            ipoly_primitive(f);
+    }
+    free(om);
+    free(oc);
+    return rc;
+}
+
+/* in_ideal(layout, reducers, polys): whether every polynomial top-reduces to 0 by the reducers
+ * exactly (True/False), None when 128-bit integers do not suffice.  A reducer is (monomials,
+ * numerators, denominators), leading term first; a polynomial (monomials, integer coefficients);
+ * all int64 bytes, monomials in the layout's packing. */
+static PyObject *bba_in_ideal(PyObject *self, PyObject *args)
+{
+    PyObject *lay, *reds, *polys;
+    if (!PyArg_ParseTuple(args, "OO!O!", &lay, &PyList_Type, &reds, &PyList_Type, &polys))
+        return NULL;
+    const Layout *L = PyCapsule_GetPointer(lay, "bba.layout");
+    if (!L)
+        return NULL;
+    Py_ssize_t nred = PyList_GET_SIZE(reds);
+    IPoly *red = calloc(nred ? nred : 1, sizeof(IPoly));
+    if (!red)
+        return PyErr_NoMemory();
+    int rc = 0; /* 0 going, 1 overflow, -1 error set, -2 memory; answer: */
+    int answer = 1;
+    for (Py_ssize_t k = 0; k < nred && rc == 0; k++)
+        rc = ipoly_read(L, PyList_GET_ITEM(reds, k), &red[k]);
+    for (Py_ssize_t k = 0; k < PyList_GET_SIZE(polys) && rc == 0 && answer; k++) {
+        IPoly f = {0};
+        rc = ipoly_read(L, PyList_GET_ITEM(polys, k), &f);
+        if (rc == 0) {
+            int z = ipoly_reduces_to_zero(L, red, nred, &f);
+            if (z == 2)
+                rc = 1;
+            else if (z < 0)
+                rc = -2;
+            else
+                answer = z;
+        }
+        free(f.m);
+        free(f.c);
+    }
+    ipolys_free(red, nred);
+    if (rc == -1)
+        return NULL;
+    if (rc == -2)
+        return PyErr_NoMemory();
+    if (rc == 1)
+        Py_RETURN_NONE;
+    return PyBool_FromLong(answer);
+}
+
 /* -- Hilbert series numerators -------------------------------------------------------------- */
 /* Q(t) of K[x]/M for a monomial ideal M (kernel/hilbert.py's _numerator, the same pivot
  * recursion): exponents as rows of n uint16, series as int64 with overflow checks. */
@@ -1399,6 +1642,7 @@ static PyMethodDef methods[] = {
     {"step", bba_step, METH_VARARGS, "step(st, d, need, defer): the new leading monomials of degree d, the zero reductions."},
     {"reduced", bba_reduced, METH_VARARGS, "reduced(st, target): the reduced basis (bytes pairs)."},
     {"exponents", bba_exponents, METH_VARARGS, "exponents(layout, monomials): exponent tuples."},
+    {"in_ideal", bba_in_ideal, METH_VARARGS, "in_ideal(layout, reducers, polys): exact top reductions to 0, None on overflow."},
     {NULL, NULL, 0, NULL}
 };
 

@@ -46,9 +46,10 @@ from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
 try:
-    from ._bba import exponents, layout, min_degree, ratlift, reduced, state, step
-    _bba: SimpleNamespace | None = SimpleNamespace(exponents=exponents, layout=layout, min_degree=min_degree,
-                                                   ratlift=ratlift, reduced=reduced, state=state, step=step)
+    from ._bba import exponents, in_ideal, layout, min_degree, ratlift, reduced, state, step
+    _bba: SimpleNamespace | None = SimpleNamespace(exponents=exponents, in_ideal=in_ideal, layout=layout,
+                                                   min_degree=min_degree, ratlift=ratlift, reduced=reduced,
+                                                   state=state, step=step)
 except ImportError:  # pragma: no cover - no compiler at install time
     _bba = None
 
@@ -83,13 +84,15 @@ def _layout(pk: Packing):
                        tuple(pk.eshifts), pk.dshift, pk.ebits)
 
 
-def _encode(pk: Packing, terms: dict[Exp, int], p: int) -> tuple[bytes, bytes]:
-    """The terms as (monomials, coefficients mod p) bytes, leading first (exponents may come as
-    flint integers: the packed monomial is made a Python int)."""
+def _encode(pk: Packing, terms: dict[Exp, int], p: int = 0) -> tuple[bytes, bytes]:
+    """The integer terms as (monomials, coefficients) bytes, leading first: the coefficients mod
+    ``p`` (uint64), or for ``p = 0`` as they are (int64: OverflowError past 63 bits).  Exponents
+    may come as flint integers: the packed monomial is made a Python int."""
     width = 8 * ((pk.bits + 64) // 64)
-    items = sorted(((int(pk.pack(e)), c % p) for e, c in terms.items()), reverse=True)
+    items = sorted(((int(pk.pack(e)), c % p if p else c) for e, c in terms.items()), reverse=True)
     items = [(m, c) for m, c in items if c]
-    return b"".join(m.to_bytes(width, "little") for m, _ in items), array("Q", [c for _, c in items]).tobytes()
+    coefs = array("Q" if p else "q", [c for _, c in items])
+    return b"".join(m.to_bytes(width, "little") for m, _ in items), coefs.tobytes()
 
 
 class _Series:
@@ -155,8 +158,8 @@ def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyR
                   p: int, limit: int = 0):
     """The reduced basis modulo ``p`` of the ideal of the homogenized generators ``hpolys``
     (integer coefficients, none of whose leading coefficients ``p`` divides), dehomogenized when
-    ``hring`` is not ``ring``: (layout of ``ring``'s packing, list of (monomials, coefficients)
-    bytes) by increasing leading monomial.  :class:`~.buchberger.TooLong` once the reductions
+    ``hring`` is not ``ring``: (``ring``'s packing, list of (monomials, coefficients) bytes) by
+    increasing leading monomial.  :class:`~.buchberger.TooLong` once the reductions
     have summed more than ``limit`` terms (if not 0)."""
     maxdeg = max(64, 2 * max(sum(e) for t in hpolys for e in t))
     while True:
@@ -178,13 +181,13 @@ def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyR
                 series.reduced_to_zero(path, d, zeros)
                 for lm in lms:
                     path = series.add(path, unpack(lm))
-            layout = _layout(pk)
-            return layout, _bba.reduced(st, None if hring is ring else layout)
+            return pk, _bba.reduced(st, None if hring is ring else _layout(pk))
         except Overflow:
             maxdeg *= 4
 
 
-def _as_dicts(layout, basis, coefficient) -> list[dict[Exp, Any]]:
+def _as_dicts(pk: Packing, basis, coefficient) -> list[dict[Exp, Any]]:
+    layout = _layout(pk)
     return [dict(zip(_bba.exponents(layout, ms), map(coefficient, array("Q", cs)))) for ms, cs in basis]
 
 
@@ -193,9 +196,9 @@ def hilbert_modp(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> l
     algorithm, as ``{exponent: nmod}`` dicts by increasing leading monomial."""
     hring, hgens, target = _homogenized(gens, ring, degree_basis)
     p = ring.field.characteristic
-    layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in hgens], hring, ring,
+    pk, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in hgens], hring, ring,
                                   _Series(target, hring.nvars), p)
-    return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
+    return _as_dicts(pk, basis, lambda c: flint.nmod(c, p))
 
 
 def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
@@ -213,9 +216,9 @@ def buchberger_modp(gens: Sequence[Poly], ring: PolyRing, limit: int = 0) -> lis
     sugar strategy, the Gebauer–Möller criteria), as ``{exponent: nmod}`` dicts by increasing
     leading monomial; :class:`~.buchberger.TooLong` past ``limit`` terms summed (if not 0)."""
     p = ring.field.characteristic
-    layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in gens], ring, ring,
+    pk, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in gens], ring, ring,
                                   _AllPairs(), p, limit)
-    return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
+    return _as_dicts(pk, basis, lambda c: flint.nmod(c, p))
 
 
 def buchberger_qq(gens: Sequence[Poly], ring: PolyRing, limit: int = 0, max_primes: int = MAX_PRIMES) -> list[dict[Exp, Any]]:
@@ -236,7 +239,7 @@ def lift_primes(seed: int = 30011):
 
 def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[Poly], ring: PolyRing,
              max_primes: int = MAX_PRIMES):
-    """The reduced basis over QQ lifted from ``modp(p)`` (a layout and the reduced basis modulo
+    """The reduced basis over QQ lifted from ``modp(p)`` (a packing and the reduced basis modulo
     ``p`` as bytes) at primes not dividing the leading coefficients of the integer polynomials
     ``ints`` of ``iring``, checked against ``gens`` (see the module docstring)."""
     key = iring.order.key
@@ -244,7 +247,7 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
     stream = lift_primes()
     used = 0
     while used < max_primes:
-        shape = layout = None
+        shape = pk = None
         lift = Lift()
         misses = good = 0
         while used < max_primes:
@@ -252,11 +255,12 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
             used += 1
             if any(c % p == 0 for c in leads):
                 continue
-            lay, basis = modp(p)
+            ppk, basis = modp(p)
             ms = [m for m, _ in basis]
             flat = b"".join(c for _, c in basis)
             if shape is None:
-                shape, layout = ms, lay
+                shape, pk = ms, ppk
+                layout = _layout(pk)
                 sizes = [len(c) // 8 for _, c in basis]
             elif ms != shape:
                 misses += 1
@@ -271,11 +275,36 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
                     for m, size in zip(shape, sizes):
                         out.append(dict(zip(_bba.exponents(layout, m), coefs[k:k + size])))
                         k += size
-                    if reduce_to_zero(out, [g.terms for g in gens], ring.order):
+                    if _generators_reduce_to_zero(pk, shape, lift.fractions, out, gens, ring.order):
                         return out
                     break
             lift.add(flat, p)
     raise ModularFailure("compiled Buchberger's lift: no verified basis")
+
+
+def _generators_reduce_to_zero(pk: Packing, shape: list[bytes], fractions: tuple[list[int], list[int]] | None,
+                               lift: list[dict[Exp, Any]], gens: Sequence[Poly], order: MonomialOrder) -> bool:
+    """Whether every generator top-reduces to 0 by the lift exactly: in C on 128-bit integers
+    (``_bba.in_ideal``) from the numerators and denominators of the C reconstruction
+    (``fractions``, the coefficients of the basis elements of monomials ``shape`` in turn), else
+    (past 128 bits, or a lift by :class:`.modular.Reconstructor`) by :func:`reduce_to_zero`."""
+    if fractions is not None:
+        try:
+            polys = [_encode(pk, primitive(g.terms)) for g in gens]
+        except OverflowError:  # a coefficient of more than 63 bits
+            polys = None
+        if polys is not None:
+            nums, dens = memoryview(array("q", fractions[0])), memoryview(array("q", fractions[1]))
+            reducers, k = [], 0
+            width = 8 * ((pk.bits + 64) // 64)
+            for ms in shape:
+                size = len(ms) // width
+                reducers.append((ms, nums[k:k + size], dens[k:k + size]))
+                k += size
+            answer = _bba.in_ideal(_layout(pk), reducers, polys)
+            if answer is not None:
+                return answer
+    return reduce_to_zero(lift, [g.terms for g in gens], order)
 
 
 class Lift:
@@ -290,6 +319,8 @@ class Lift:
         self.lifter: Lifter | None = None
         self.rec: Reconstructor | None = None
         self.candidate: list | None = None
+        self.fractions: tuple[list[int], list[int]] | None = None
+        """The numerators and denominators of the last lift :meth:`checked` made in C."""
 
     def add(self, flat: bytes, p: int) -> None:
         self.residues.append(flat)
@@ -309,8 +340,9 @@ class Lift:
         if not self.primes:
             return None
         if self.lifter is None:
-            lifted = _bba.ratlift(self.residues, self.primes, flat, q)
-            return None if lifted is None else list(map(flint.fmpq, *lifted))
+            self.fractions = _bba.ratlift(self.residues, self.primes, flat, q)
+            return None if self.fractions is None else list(map(flint.fmpq, *self.fractions))
+        self.fractions = None
         if not self.rec.check([array("Q", flat).tolist()], q) and self.candidate is not None:
             return self.candidate[0]
         return None

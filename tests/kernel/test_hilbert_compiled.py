@@ -2,6 +2,7 @@
 engine ``hilbert-compiled``): modulo p and over QQ by a lift from primes, against Buchberger's
 reduced basis, the Python Hilbert-driven algorithm and Singular."""
 import random
+from array import array
 
 import flint
 import pytest
@@ -254,6 +255,62 @@ def test_the_exact_check_is_fraction_free_on_rational_coefficients():
                               for b in basis], [member], R.order)
     assert not HC.reduce_to_zero([dict(sorted(b.items(), key=lambda t: R.order.key(t[0]), reverse=True))
                                   for b in basis], [parse_poly(R, "x*y-z^2").terms], R.order)
+
+
+def _exact_check_in_c(basis, polys, R):
+    """``_bba.in_ideal`` on fmpq basis dicts and integer-scaled polynomials (as the lift calls it)."""
+    from mech.kernel.monomials import packing
+    pk = packing(R.order, 64)
+    width = 8 * ((pk.bits + 64) // 64)
+    reducers = []
+    for b in basis:
+        terms = sorted(((pk.pack(e), flint.fmpq(c)) for e, c in b.items()), key=lambda t: t[0], reverse=True)
+        reducers.append((b"".join(m.to_bytes(width, "little") for m, _ in terms),
+                         array("q", [int(c.p) for _, c in terms]), array("q", [int(c.q) for _, c in terms])))
+    return HC._bba.in_ideal(HC._layout(pk), reducers, [HC._encode(pk, primitive(f)) for f in polys])
+
+
+@needs_compiled
+def test_the_exact_check_in_c_agrees_with_python():
+    """The generators' check of a lift on 128-bit integers: a basis, the basis missing an element,
+    a perturbed coefficient (a wrong candidate) and rational coefficients, against
+    :func:`reduce_to_zero`."""
+    R = ring_of(QQ, "xyzuv", (("dp", 3), ("dp", 2)))
+    gens = [parse_poly(R, t) for t in ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]]
+    basis = E._hilbert_reduced(gens, R)
+    polys = [g.terms for g in gens]
+    wrong = [dict(b) for b in basis]
+    e = list(wrong[-1])[-1]
+    wrong[-1][e] += 1
+    for candidate, expected in [(basis, True), (basis[:-1], False), (wrong, False)]:
+        assert HC.reduce_to_zero(candidate, polys, R.order) is expected
+        assert _exact_check_in_c(candidate, polys, R) is expected
+    S = ring_of(QQ, "xyz", (("dp", 2), ("dp", 1)))
+    fractions = [parse_poly(S, t).terms for t in ["3/7*y^2-z+1/3", "-5/2*x-4*y+2/9*z"]]
+    member = parse_poly(S, "(11/5*x*y-3)*(3/7*y^2-z+1/3)+(2*y^2+1/4)*(-5/2*x-4*y+2/9*z)").terms
+    assert _exact_check_in_c(fractions, [member], S) is True
+    assert _exact_check_in_c(fractions, [parse_poly(S, "x*y-z^2").terms], S) is False
+
+
+@needs_compiled
+def test_the_exact_check_leaves_128_bits_to_python():
+    """Reducing x^3 by x - c y with c of 62 bits reaches c^3 y^3: the C check answers None and the
+    lift's check falls back to Python integers (x^3 lies in (x - c y, y^3), not in (x - c y))."""
+    R = ring_of(QQ, "xy", (("dp", 1), ("dp", 1)))
+    c = (1 << 61) + 1
+    line, cube = {(1, 0): flint.fmpq(1), (0, 1): flint.fmpq(-c)}, {(0, 3): flint.fmpq(1)}
+    gens = [Poly(R, {(3, 0): R.field(1)})]
+    from mech.kernel.monomials import packing
+    pk = packing(R.order, 64)
+    width = 8 * ((pk.bits + 64) // 64)
+
+    def shape(basis):
+        return [b"".join(pk.pack(e).to_bytes(width, "little") for e in b) for b in basis]
+
+    for basis, fractions, expected in [([line, cube], ([1, -c, 1], [1, 1, 1]), True),
+                                       ([line], ([1, -c], [1, 1]), False)]:
+        assert _exact_check_in_c(basis, [g.terms for g in gens], R) is None
+        assert HC._generators_reduce_to_zero(pk, shape(basis), fractions, basis, gens, R.order) is expected
 
 
 @needs_compiled
