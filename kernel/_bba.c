@@ -287,117 +287,167 @@ static void poly_monic(Poly *f, uint64_t p)
         f->c[k] = (uint64_t)((unsigned __int128)f->c[k] * inv % p);
 }
 
-/* A reduction runs on a heap of streams (Monagan-Pearce): each stream is coef * mult * g[pos..],
- * the heap orders the streams by their current monomial, the largest first.  The polynomial
- * under reduction is the sum of the streams; a term is summed from the streams at the top, and
- * a reducible one adds the stream -c * t * r[1..] of its reducer r (monic).  Only the terms
- * asked for are ever formed: a top reduction stops at the first irreducible term (then the rest
- * is summed without reduction). */
-typedef struct {
-    const Poly *g;
-    Py_ssize_t pos;
-    uint64_t coef;
-    uint64_t mult[MAXW];
-    uint64_t cur[MAXW];
-} Stream;
+/* A reduction sums polynomials in a geobucket (Yan, 1998): bucket i holds a sorted polynomial of
+ * at most 4^(i+1) terms; a polynomial added goes to the first bucket that holds its length, by a
+ * merge, and a bucket grown past its size is merged into the next one.  The polynomial under
+ * reduction is the sum of the buckets; its leading term is summed from the buckets' first terms,
+ * and a reducible one adds -c * t * r[1..] for its reducer r (monic).  A top reduction stops
+ * reducing at the first irreducible term (the rest is summed without reduction). */
+#define NBUCKETS 24
 
 typedef struct {
-    uint64_t key, key2; /* the top two words of the stream's monomial: most comparisons end there */
-    Py_ssize_t s;
-} Entry;
+    Py_ssize_t head, len; /* the terms head..len-1 */
+    Py_ssize_t capm, capc; /* allocated words of monomials (layouts differ in width), coefficients */
+    uint64_t *m, *c;
+} Bucket;
 
-static Stream *streams;
-static Py_ssize_t nstreams, capstreams;
-static Entry *heap;
-static Py_ssize_t nheap, capheap;
+static Bucket buckets[NBUCKETS];
+static int nbuckets;                 /* buckets 0..nbuckets-1 may hold terms */
+static Bucket scratch, addend;       /* a merge's output, the polynomial being added */
+static uint64_t sum_p;
+static double sum_pinv;
+static long long sum_terms;          /* terms added since sum_clear */
 
-/* the stream's current monomial; -1 when it leaves the packing */
-static int stream_load(const Layout *L, Stream *s)
+static int bucket_reserve(Bucket *b, Py_ssize_t n, int nw)
 {
-    madd(s->cur, s->g->m + (size_t)s->pos * L->nw, s->mult, L->nw);
-    return mguarded(L, s->cur) ? -1 : 0;
-}
-
-static inline int ecmp(const Entry *a, const Entry *b, int nw)
-{
-    if (a->key != b->key)
-        return a->key > b->key ? 1 : -1;
-    if (a->key2 != b->key2)
-        return a->key2 > b->key2 ? 1 : -1;
-    return nw > 2 ? mcmp(streams[a->s].cur, streams[b->s].cur, nw - 2) : 0;
-}
-
-static inline void entry_keys(Entry *e, const uint64_t *cur, int nw)
-{
-    e->key = cur[nw - 1];
-    e->key2 = nw > 1 ? cur[nw - 2] : 0;
-}
-
-static void heap_up(int nw, Py_ssize_t k)
-{
-    Entry x = heap[k];
-    while (k > 0) {
-        Py_ssize_t up = (k - 1) / 2;
-        if (ecmp(&heap[up], &x, nw) >= 0)
-            break;
-        heap[k] = heap[up];
-        k = up;
-    }
-    heap[k] = x;
-}
-
-static void heap_down(int nw, Py_ssize_t k)
-{
-    Entry x = heap[k];
-    for (;;) {
-        Py_ssize_t c = 2 * k + 1;
-        if (c >= nheap)
-            break;
-        if (c + 1 < nheap && ecmp(&heap[c + 1], &heap[c], nw) > 0)
-            c++;
-        if (ecmp(&heap[c], &x, nw) <= 0)
-            break;
-        heap[k] = heap[c];
-        k = c;
-    }
-    heap[k] = x;
-}
-
-/* a new stream coef * mult * g[pos..] (mult NULL: 1), pushed if not empty */
-static int stream_push(const Layout *L, const Poly *g, Py_ssize_t pos, uint64_t coef, const uint64_t *mult)
-{
-    if (pos >= g->len)
-        return 0;
-    if (nstreams == capstreams) {
-        Py_ssize_t c = capstreams ? 2 * capstreams : 64;
-        Stream *t = realloc(streams, sizeof(Stream) * c);
-        if (!t)
+    if ((size_t)n * nw > (size_t)b->capm) {
+        Py_ssize_t c = 2 * n * nw;
+        uint64_t *m = realloc(b->m, 8 * (size_t)c);
+        if (!m)
             return -2;
-        streams = t;
-        capstreams = c;
+        b->m = m;
+        b->capm = c;
     }
-    if (nheap == capheap) {
-        Py_ssize_t c = capheap ? 2 * capheap : 64;
-        Entry *t = realloc(heap, sizeof(Entry) * c);
-        if (!t)
+    if (n > b->capc) {
+        uint64_t *c = realloc(b->c, 8 * (size_t)(2 * n));
+        if (!c)
             return -2;
-        heap = t;
-        capheap = c;
+        b->c = c;
+        b->capc = 2 * n;
     }
-    Stream *s = &streams[nstreams];
-    s->g = g;
-    s->pos = pos;
-    s->coef = coef;
-    if (mult)
-        memcpy(s->mult, mult, 8 * L->nw);
-    else
-        memset(s->mult, 0, 8 * L->nw);
-    if (stream_load(L, s) < 0)
-        return -1;
-    entry_keys(&heap[nheap], s->cur, L->nw);
-    heap[nheap].s = nstreams++;
-    heap_up(L->nw, nheap++);
     return 0;
+}
+
+/* buckets[i] += the terms m, c (n of them, decreasing) */
+static int bucket_add(int i, const uint64_t *m, const uint64_t *c, Py_ssize_t n, int nw)
+{
+    Bucket *b = &buckets[i];
+    Py_ssize_t na = b->len - b->head;
+    if (bucket_reserve(&scratch, na + n, nw) < 0)
+        return -2;
+    const uint64_t *am = b->m + (size_t)b->head * nw, *ac = b->c + b->head;
+    Py_ssize_t x = 0, y = 0, o = 0;
+    while (x < na && y < n) {
+        int cmp = mcmp(am + (size_t)x * nw, m + (size_t)y * nw, nw);
+        if (cmp > 0) {
+            memcpy(scratch.m + (size_t)o * nw, am + (size_t)x * nw, 8 * nw);
+            scratch.c[o++] = ac[x++];
+        } else if (cmp < 0) {
+            memcpy(scratch.m + (size_t)o * nw, m + (size_t)y * nw, 8 * nw);
+            scratch.c[o++] = c[y++];
+        } else {
+            uint64_t v = ac[x] + c[y];
+            if (v >= sum_p)
+                v -= sum_p;
+            if (v) {
+                memcpy(scratch.m + (size_t)o * nw, am + (size_t)x * nw, 8 * nw);
+                scratch.c[o++] = v;
+            }
+            x++;
+            y++;
+        }
+    }
+    memcpy(scratch.m + (size_t)o * nw, am + (size_t)x * nw, 8 * nw * (na - x));
+    memcpy(scratch.c + o, ac + x, 8 * (na - x));
+    o += na - x;
+    memcpy(scratch.m + (size_t)o * nw, m + (size_t)y * nw, 8 * nw * (n - y));
+    memcpy(scratch.c + o, c + y, 8 * (n - y));
+    o += n - y;
+    Bucket t = *b;
+    *b = scratch;
+    b->head = 0;
+    b->len = o;
+    scratch = t;
+    if (i >= nbuckets)
+        nbuckets = i + 1;
+    return 0;
+}
+
+static Py_ssize_t bucket_size(int i)
+{
+    return (Py_ssize_t)4 << (2 * i);
+}
+
+static void sum_clear(uint64_t p, double pinv)
+{
+    for (int i = 0; i < nbuckets; i++)
+        buckets[i].head = buckets[i].len = 0;
+    nbuckets = 0;
+    sum_p = p;
+    sum_pinv = pinv;
+    sum_terms = 0;
+}
+
+/* the sum += coef * mult * g[pos..] (mult NULL: 1); -1 when a monomial leaves the packing */
+static int sum_add(const Layout *L, const Poly *g, Py_ssize_t pos, uint64_t coef, const uint64_t *mult)
+{
+    const int nw = L->nw;
+    Py_ssize_t n = g->len - pos;
+    if (n <= 0)
+        return 0;
+    if (bucket_reserve(&addend, n, nw) < 0)
+        return -2;
+    for (Py_ssize_t k = 0; k < n; k++) {
+        uint64_t *out = addend.m + (size_t)k * nw;
+        const uint64_t *in = g->m + (size_t)(pos + k) * nw;
+        if (mult) {
+            madd(out, in, mult, nw);
+            if (mguarded(L, out))
+                return -1;
+        } else
+            memcpy(out, in, 8 * nw);
+        addend.c[k] = coef == 1 ? g->c[pos + k] : mulmod(coef, g->c[pos + k], sum_p, sum_pinv);
+    }
+    sum_terms += n;
+    int i = 0;
+    while (i < NBUCKETS - 1 && n > bucket_size(i))
+        i++;
+    if (bucket_add(i, addend.m, addend.c, n, nw) < 0)
+        return -2;
+    while (i < NBUCKETS - 1 && buckets[i].len - buckets[i].head > bucket_size(i)) {
+        Bucket *b = &buckets[i];
+        if (bucket_add(i + 1, b->m + (size_t)b->head * nw, b->c + b->head, b->len - b->head, nw) < 0)
+            return -2;
+        b->head = b->len = 0;
+        i++;
+    }
+    return 0;
+}
+
+/* the leading monomial of the sum into m and its coefficient into c, the terms taken out of the
+ * buckets; 0 when the sum is empty */
+static int sum_top(int nw, uint64_t *m, uint64_t *c)
+{
+    int best = -1;
+    for (int i = 0; i < nbuckets; i++)
+        if (buckets[i].head < buckets[i].len
+            && (best < 0 || mcmp(buckets[i].m + (size_t)buckets[i].head * nw,
+                                 buckets[best].m + (size_t)buckets[best].head * nw, nw) > 0))
+            best = i;
+    if (best < 0)
+        return 0;
+    memcpy(m, buckets[best].m + (size_t)buckets[best].head * nw, 8 * nw);
+    uint64_t v = 0;
+    for (int i = best; i < nbuckets; i++) {
+        Bucket *b = &buckets[i];
+        if (b->head < b->len && mcmp(b->m + (size_t)b->head * nw, m, nw) == 0) {
+            v += b->c[b->head++];
+            if (v >= sum_p)
+                v -= sum_p;
+        }
+    }
+    *c = v;
+    return 1;
 }
 
 /* the shortest reducer whose leading monomial divides m (the first of equal lengths), or -1 */
@@ -411,45 +461,25 @@ static Py_ssize_t find_reducer(const Layout *L, const Poly *red, Py_ssize_t nred
     return best;
 }
 
-/* S->work := the sum of the streams pushed, reduced by the reducers: only its top (full = 0)
- * or every term (full = 1) */
-static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
+/* S->work := the sum, reduced by the reducers: only its top (full = 0) or every term (full = 1) */
+static int sum_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
 {
     const Layout *L = S->L;
     const int nw = L->nw;
     const uint64_t p = S->p;
-    const double pinv = S->pinv;
-    uint64_t m[MAXW], t[MAXW];
+    uint64_t m[MAXW], t[MAXW], c;
     int reducing = 1, rc = 0;
     S->work.len = 0;
-    while (nheap > 0) {
-        memcpy(m, streams[heap[0].s].cur, 8 * nw);
-        uint64_t c = 0;
-        while (nheap > 0 && heap[0].key == m[nw - 1] && mcmp(streams[heap[0].s].cur, m, nw) == 0) {
-            Stream *s = &streams[heap[0].s];
-            if (++S->spent > S->limit && S->limit)
-                return -3;
-            c += mulmod(s->coef, s->g->c[s->pos], p, pinv);
-            if (c >= p)
-                c -= p;
-            if (++s->pos < s->g->len) {
-                if (stream_load(L, s) < 0)
-                    return -1;
-                entry_keys(&heap[0], s->cur, nw);
-                heap_down(nw, 0);
-            } else {
-                heap[0] = heap[--nheap];
-                if (nheap)
-                    heap_down(nw, 0);
-            }
-        }
+    while (sum_top(nw, m, &c)) {
+        if (S->limit && S->spent + sum_terms > S->limit)
+            return -3;
         if (!c)
             continue;
         if (reducing) {
             Py_ssize_t r = find_reducer(L, red, nred, m);
             if (r >= 0) {
                 msub(t, m, red[r].m, nw);
-                rc = stream_push(L, &red[r], 1, p - c, t);
+                rc = sum_add(L, &red[r], 1, p - c, t);
                 if (rc < 0)
                     return rc;
                 continue;
@@ -461,12 +491,9 @@ static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
         memcpy(S->work.m + (size_t)S->work.len * nw, m, 8 * nw);
         S->work.c[S->work.len++] = c;
     }
+    S->spent += sum_terms;
+    sum_terms = 0;
     return 0;
-}
-
-static void heap_clear(void)
-{
-    nheap = nstreams = 0;
 }
 
 /* -- states --------------------------------------------------------------------------------- */
@@ -748,19 +775,19 @@ static int pair_cmp(const void *x, const void *y)
     return (a->j > b->j) - (a->j < b->j);
 }
 
-/* the S-polynomial of pair a as streams */
-static int spoly_streams(State *S, const Pair *a)
+/* the sum := the S-polynomial of pair a (or generator i waiting) */
+static int spoly_sum(State *S, const Pair *a)
 {
     const Layout *L = S->L;
-    heap_clear();
+    sum_clear(S->p, S->pinv);
     if (a->j < 0)
-        return stream_push(L, &S->gens[a->i], 0, 1, NULL);
+        return sum_add(L, &S->gens[a->i], 0, 1, NULL);
     const Poly *f = &S->basis[a->i], *g = &S->basis[a->j];
     uint64_t tf[MAXW], tg[MAXW];
     msub(tf, a->lcm, f->m, L->nw);
     msub(tg, a->lcm, g->m, L->nw);
-    int rc = stream_push(L, f, 1, 1, tf);
-    return rc ? rc : stream_push(L, g, 1, S->p - 1, tg);
+    int rc = sum_add(L, f, 1, 1, tf);
+    return rc ? rc : sum_add(L, g, 1, S->p - 1, tg);
 }
 
 static PyObject *lm_int(const Layout *L, const uint64_t *m)
@@ -816,9 +843,9 @@ static PyObject *bba_step(PyObject *self, PyObject *args)
         for (Py_ssize_t q = 0; q < nsel && need > 0 && lms; q++) {
             if (late && (late[q] != 0) != pass)
                 continue;
-            rc = spoly_streams(S, &sel[q]);
+            rc = spoly_sum(S, &sel[q]);
             if (rc == 0)
-                rc = heap_reduce(S, S->basis, S->nb, 1);
+                rc = sum_reduce(S, S->basis, S->nb, 1);
             if (rc < 0)
                 break;
             if (S->work.len == 0) {
@@ -947,10 +974,10 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
         S->L = (Layout *)B;
         for (Py_ssize_t a = 0; a < m && rc == 0; a++) {
             Poly *g = &polys[a];
-            heap_clear();
-            rc = stream_push(B, g, 1, 1, NULL);
+            sum_clear(S->p, S->pinv);
+            rc = sum_add(B, g, 1, 1, NULL);
             if (rc == 0)
-                rc = heap_reduce(S, done, nd, 1);
+                rc = sum_reduce(S, done, nd, 1);
             if (rc < 0)
                 break;
             Poly *r = &done[nd];
