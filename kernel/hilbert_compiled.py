@@ -22,9 +22,11 @@ prime whose basis has another shape is dropped, and when more primes disagree th
 first one was unlucky and the lift starts again from a later prime.  ``G mod q`` is then the
 reduced Gröbner basis of the ideal modulo a prime ``q`` not used to build ``G``, the
 probabilistic Gröbner basis check of :mod:`.modular` ("fast"); every generator is checked to
-top-reduce to 0 by ``G`` exactly over QQ, so ``G`` generates an ideal containing the ideal, and
-equal to it as soon as one prime used is lucky (as for :func:`.modular.f4_qq` on
-inhomogeneous ideals).
+top-reduce to 0 by ``G`` exactly over QQ (in C on 128-bit integers while they suffice,
+``_bba.in_ideal``), so ``G`` generates an ideal containing the ideal, and equal to it as soon as
+one prime used is lucky (as for :func:`.modular.f4_qq` on inhomogeneous ideals).  The primes lie
+below ``2^50`` (products in C by a double-precision quotient), so two of them lift coefficients
+of 49 bits.
 """
 from __future__ import annotations
 
