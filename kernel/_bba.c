@@ -1144,8 +1144,11 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
     }
     /* Garner: x = sum t_j P_j with P_j the product of the primes before j */
     uint64_t inv[4];
-    for (Py_ssize_t j = 0; j < k; j++)
+    double pinv[4], qinv = 1.0 / (double)q;
+    for (Py_ssize_t j = 0; j < k; j++) {
         inv[j] = j ? inv_mod((uint64_t)(P[j] % p[j]), p[j]) : 1;
+        pinv[j] = 1.0 / (double)p[j];
+    }
     const u128 M = P[k], half = M / 2, B = isqrt128(M / 2);
     const uint64_t *r[4];
     for (Py_ssize_t j = 0; j < k; j++)
@@ -1163,9 +1166,9 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
         /* b = r * den mod M, symmetric */
         u128 x = 0;
         for (Py_ssize_t j = 0; j < k; j++) {
-            uint64_t v = (uint64_t)((u128)r[j][i] * ((uint64_t)den % p[j]) % p[j]);
-            uint64_t xm = (uint64_t)(x % p[j]);
-            uint64_t t = (uint64_t)((u128)((v + p[j] - xm) % p[j]) * inv[j] % p[j]);
+            uint64_t v = mulmod(r[j][i] % p[j], (uint64_t)den % p[j], p[j], pinv[j]);
+            uint64_t xm = x >> 64 ? (uint64_t)(x % p[j]) : (uint64_t)x % p[j];
+            uint64_t t = mulmod(v >= xm ? v - xm : v + p[j] - xm, inv[j], p[j], pinv[j]);
             x += (u128)t * P[j];
         }
         int64_t n, d;
@@ -1178,8 +1181,9 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
         } else {
             u128 a = 0;
             for (Py_ssize_t j = 0; j < k; j++) {
-                uint64_t xm = (uint64_t)(a % p[j]);
-                uint64_t t = (uint64_t)((u128)((r[j][i] + p[j] - xm) % p[j]) * inv[j] % p[j]);
+                uint64_t xm = a >> 64 ? (uint64_t)(a % p[j]) : (uint64_t)a % p[j];
+                uint64_t rj = r[j][i] % p[j];
+                uint64_t t = mulmod(rj >= xm ? rj - xm : rj + p[j] - xm, inv[j], p[j], pinv[j]);
                 a += (u128)t * P[j];
             }
             if (!ratrec128(a, M, B, &n, &d)) {
@@ -1190,14 +1194,14 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
             u128 l = (u128)(den / g) * (u128)d;
             den = l > B ? d : (int64_t)l;
         }
-        /* n / d modulo q against the check residue */
+        /* n / d modulo q against the check residue: n = r d mod q, d invertible */
         uint64_t dq = (uint64_t)d % q;
         if (dq == 0) {
             ok = 0;
             break;
         }
         uint64_t nq = (uint64_t)(n % (int64_t)q + (int64_t)q) % q;
-        if ((u128)nq * inv_mod(dq, q) % q != cq[i]) {
+        if (nq != mulmod(cq[i] % q, dq, q, qinv)) {
             ok = 0;
             break;
         }
