@@ -40,14 +40,14 @@ from mech.kernel.ideals import (dimension, dp_ring, eliminate, ideals_equal, int
                                 std)
 from mech.kernel.errors import DomainError
 from mech.kernel.local import (AlgebraicPoint, SmoothSlices, dimension_over, local_components_over,
-                               primitive_element, shift_to_origin)
+                               primitive_element, shift_to_origin, tangent_dim_over)
 from mech.kernel.matrix import Matrix, minors
 from mech.kernel.primdec import min_ass_gtz, radical
 from mech.kernel.progress import stage
 from mech.kernel.projection import project_primes
 from mech.stdlib.analysis_finite import finite_analysis
 from mech.stdlib.analysis_linear import (LinearReduction, component_cone, cone_at_point, cone_over_point, linear_reduction,
-                                         min_ass_reduced, component_cone_over, tangent_dim_over)
+                                         min_ass_reduced, component_cone_over)
 from mech.stdlib.mechanism import Mechanism, MechanismError
 from mech.stdlib.modes import embedded_components, motion_modes
 from mech.stdlib.realpoints import count_real_roots, has_real_points, linear_point
@@ -476,7 +476,8 @@ def _components_at(a: Analysis, sp: SingularPoint, shared: _Shared) -> None:
     else:
         through = _modes_through(shared.minimal, sp.point)
         sp.local_components = [shift_to_origin(md.prime, sp.point) for md in through]
-        sp.kind = _kind_at(sp.local_components, [md.dim for md in through], a.ring)
+        R = a.ring
+        sp.kind = _kind_at(sp.local_components, [md.dim for md in through], lambda c: R.nvars - linear_rank(c, R))
         sp.transition = _transition(_component_cones(sp, shared, a.ring) if len(through) > 1 else [])
 
 
@@ -519,12 +520,12 @@ def _modes_through(modes: list[Mode], point: tuple) -> list[Mode]:
     return [md for md in modes if _on(md.prime, point)]
 
 
-def _kind_at(components: list[list[Poly]], dims: list[int], R: PolyRing) -> str:
+def _kind_at(components: list[list[Poly]], dims: list[int], tangent_dim: Callable[[list[Poly]], int]) -> str:
     """Theorem 3 and Definition 3 (``kernel.local.classify_point``'s kind): several components meet, or
-    the one component's tangent space (the kernel of its Jacobian at the origin) has its dimension."""
+    the one component's tangent space at the origin (``tangent_dim`` of its generators) has its dimension."""
     if len(components) > 1:
         return "components meet"
-    return "regular" if R.nvars - linear_rank(components[0], R) == dims[0] else "singular"
+    return "regular" if tangent_dim(components[0]) == dims[0] else "singular"
 
 
 def _union_cone(cones: list[list[Poly]]) -> list[Poly]:
@@ -545,8 +546,8 @@ def _algebraic_components(sp: SingularPoint, shared: _Shared) -> None:
         raise DomainError("no component through the points: primes must be the ideal's minimal primes")
     sp.local_components = comps
     dims = [dimension_over(c, pt) for c in comps]
-    sp.kind = "components meet" if len(comps) > 1 else "regular" if tangent_dim_over(comps[0], pt) == dims[0] else \
-        "singular"
+    origin = [pt.ring.zero()] * (pt.ring.nvars - 1)
+    sp.kind = _kind_at(comps, dims, lambda c: tangent_dim_over(c, origin, pt.ring, pt.minpoly, dims[0]))
     sp.transition = _transition([component_cone_over(c, pt, d) for c, d in zip(comps, dims)] if len(comps) > 1 else [])
 
 
