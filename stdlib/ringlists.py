@@ -11,14 +11,13 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.minpoly import extended, get_minpoly
 from ..dsl.qrings import make_qring, quotient_ideal
 from ..dsl.registry import command
-from ..dsl.rings import make_ring
+from ..dsl.rings import make_ring, ordering_items, parse_ordering
 from ..dsl.values import NONE, Ideal, IntVec, List, OrderBlock, Ring
 from ..kernel import Poly
 from ..kernel.algext import AlgebraicField
 from ..kernel.maps import fetch
 from ..dsl.printing import ordstr
 from .general_lib import _letters
-from .ring_lib import parse_ordering
 from .standard import standard_basis
 
 _SIZED = ("lp", "dp", "Dp", "ls", "ds", "Ds", "rp")
@@ -208,13 +207,12 @@ def _covered(text: str) -> int:
     """The variables an ordering string's blocks cover by their explicit sizes and weights (a block
     without a size: all, as many as can be)."""
     total = 0
-    for kind, args in re.findall(r"([A-Za-z]+)\s*(?:\(([^()]*)\))?", text):
-        nums = [a for a in args.split(",") if a.strip()] if args else []
+    for kind, nums in ordering_items(text):
         if kind in ("c", "C", "a"):
             continue
         if kind in _SIZED and not nums:
             return 1 << 30
-        total += int(nums[0]) if kind in _SIZED else len(nums)
+        total += nums[0] if kind in _SIZED else len(nums or [])
     return total
 
 
