@@ -98,22 +98,26 @@ def _blocks(L: Any, nvars: int) -> list[OrderBlock]:
 
 
 class CoeffRing:
-    """ring_list's first entry for a ring with parameters: the coefficient field (Singular's cring),
-    printed as "char,parameters" (not indented in a list), minimal polynomial included."""
+    """ring_list's first entry: the coefficient field (Singular's cring), printed ``QQ`` or ``ZZ/p``, with
+    parameters "char,parameters" (not indented in a list), minimal polynomial included."""
 
     unindented = True
+    type_name = "cring"
 
     def __init__(self, ring: Ring) -> None:
         self.ring = ring
 
     def __str__(self) -> str:
-        return ",".join([str(self.ring.characteristic)] + list(self.ring.params))
+        char = self.ring.characteristic
+        if not self.ring.params:
+            return f"ZZ/{char}" if char else "QQ"
+        return ",".join([str(char)] + list(self.ring.params))
 
 
 def _char(c: Any) -> tuple[int, tuple[str, ...], Any]:
     """(characteristic, parameters, minimal polynomial ideal or None) of ringlist's first entry."""
     if isinstance(c, CoeffRing):
-        return c.ring.characteristic, c.ring.params, _coefficients(c.ring).items[3]
+        return c.ring.characteristic, c.ring.params, _coefficients(c.ring).items[3] if c.ring.params else None
     if isinstance(c, int):
         return c, (), None
     if isinstance(c, str):
@@ -175,19 +179,19 @@ def ring_of_list(L: List) -> Ring:
 
 @command("ring_list")
 def ring_list(r: Ring) -> List:
-    """ring_list(r): ringlist(r), with the coefficients of a ring with parameters as a coefficient ring
-    (printed "char,parameters"; create_ring keeps its minimal polynomial).
+    """ring_list(r): ringlist(r), with the coefficients as a coefficient ring (a cring, printed QQ, ZZ/p
+    or "char,parameters"; create_ring keeps its minimal polynomial).
 
     Example:
       LIB "standard.lib";
       ring r = (0,a),x,dp;
       ring_list(r)[1];
       → 0,a
+      ring s = 7,x,dp;
+      ring_list(s)[1];
+      → ZZ/7
     """
-    out = ringlist(r)
-    if r.params:
-        out = List([CoeffRing(r)] + list(out.items[1:]))
-    return out
+    return List([CoeffRing(r)] + list(ringlist(r).items[1:]))
 
 
 def _lenient_ordering(text: str, nvars: int) -> list[OrderBlock]:

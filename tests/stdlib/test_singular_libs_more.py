@@ -15,6 +15,23 @@ from tests.util import output_lines, run, run_singular
 pytestmark = pytest.mark.singular
 
 SNIPPETS = {
+    "ring_list_coefficients": """
+ring r = 0,(x,y),dp;
+list L = ring_list(r);
+typeof(L[1]);
+L[1];
+ring s = 7,(x),dp;
+ring_list(s)[1];
+typeof(ring_list(s)[1]);
+ring t = (0,a),(x),dp;
+ring_list(t)[1];
+typeof(ring_list(t)[1]);
+ring u = (7,a),(x),dp;
+minpoly = a2+1;
+ring_list(u)[1];
+typeof(ring_list(u)[1]);
+ringlist(r)[1];
+""",
     "ordering_strings": """
 ring r = 0,(x,y,z),(dp(1),lp(2)); r;
 ring r2 = 0,(x,y,z),(wp(1,1),lp(1)); r2;
