@@ -21,7 +21,8 @@ EXPLAINED: dict[str, str] = {
     "Short/primdec2.tst": _EQUIDIM,
     "Short/bug_41.tst": ("homog(l[1]) and attrib(l[2], ...) of list entries: Singular keeps attributes on a list's "
                          "entries (isHomog, huhu), mech's belong to variables (homog marks a variable argument), so "
-                         "attrib(l[1]) lists isSB only; no value differs"),
+                         "attrib(l[1]) lists isSB only; no value differs (and after l[1][2]=y Singular keeps the "
+                         "entry's isSB, even where it is false: docs/design.md, attrib)"),
     "Short/bug_23.tst": "Singular forbids changing the basering inside a procedure called with arguments of "
                         "another ring; mech allows it",
     "Short/bug_26.tst": "Singular forbids changing the basering inside a procedure called with arguments of "

@@ -9,6 +9,7 @@ int expressions, evaluated by the caller's ``evaluate``.
 from __future__ import annotations
 
 import math
+import re
 from typing import Any, Callable
 
 from ..kernel import GF, QQ, Block, MonomialOrder, PolyRing
@@ -22,6 +23,7 @@ Evaluate = Callable[[A.Expr], Any]
 
 ORDERINGS = {"lp", "dp", "Dp", "wp", "Wp", "ls", "ds", "Ds", "ws", "Ws", "a", "M", "c", "C"}
 WEIGHTED = {"wp", "Wp", "ws", "Ws", "a"}
+OrderItem = tuple[str, list[int] | None]  # a block as written: its name, its arguments (None: no parentheses)
 
 _ring_cache: dict[tuple, PolyRing] = {}
 
@@ -147,16 +149,52 @@ def _names(node: A.Expr, evaluate: Evaluate) -> list[str]:
 
 
 def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
-    items = node.items if isinstance(node, A.Tuple) else [node]
-    blocks: list[OrderBlock] = []
-    covered = 0
-    for k, it in enumerate(items):
+    items: list[OrderItem] = []
+    for it in node.items if isinstance(node, A.Tuple) else [node]:
         if isinstance(it, A.Name):
-            kind, args = it.id, None
+            items.append((it.id, None))
         elif isinstance(it, A.Call) and isinstance(it.func, A.Name):
-            kind, args = it.func.id, _int_args(it.args, evaluate, "an ordering's size or weights")
+            items.append((it.func.id, _int_args(it.args, evaluate, "an ordering's size or weights")))
         else:
             raise MechRuntimeError("expected an ordering such as dp, wp(1,2,3) or (dp(2),lp(1))")
+    return _merge_lp([_unit_weights(b) for b in order_blocks(items, nvars)])
+
+
+def _unit_weights(b: OrderBlock) -> OrderBlock:
+    """As Singular's ring declarations: ``wp(1,..,1)`` is ``dp`` (``Wp``: ``Dp``)."""
+    if b.kind in ("wp", "Wp") and all(w == 1 for w in b.weights):
+        return OrderBlock(b.kind.replace("w", "d").replace("W", "D"), b.size)
+    return b
+
+
+def parse_ordering(text: str, nvars: int) -> list[OrderBlock]:
+    """The blocks of an ordering written as a string, ``"(dp(3),ws(1,2,3),ds)"`` (what library
+    procedures take; as Singular's ``ring(L)`` from a ring list, unlike a ring declaration, it keeps
+    ``wp(1,..,1)`` and ``(dp(1),lp(2))`` as written)."""
+    items = ordering_items(text)
+    if not items:
+        raise MechRuntimeError(f"not an ordering: \"{text}\"")
+    return order_blocks(items, nvars)
+
+
+def ordering_items(text: str) -> list[OrderItem]:
+    """The blocks of an ordering string, each with its integer arguments."""
+    items: list[OrderItem] = []
+    for kind, args in re.findall(r"([A-Za-z]+)\s*(\([^()]*\))?", text):
+        try:
+            items.append((kind, [int(a) for a in args[1:-1].split(",") if a.strip()] if args else None))
+        except ValueError:
+            raise MechRuntimeError(f"not an ordering: \"{text}\" (sizes and weights are integers)") from None
+    return items
+
+
+def order_blocks(items: list[OrderItem], nvars: int) -> list[OrderBlock]:
+    """The blocks of an ordering for ``nvars`` variables, as Singular reads them: a block without a size
+    (only the last) covers the variables left, ``a`` is cut to them, a module ordering ``C`` is added
+    when none is given."""
+    blocks: list[OrderBlock] = []
+    covered = 0
+    for k, (kind, args) in enumerate(items):
         if kind not in ORDERINGS:
             raise MechRuntimeError(f"unknown ordering '{kind}' (known: lp dp Dp wp Wp ls ds Ds ws Ws a M c C)")
         if kind in ("c", "C"):
@@ -171,10 +209,7 @@ def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
                 args = args[:nvars - covered]
                 if not args:
                     continue
-            if kind in ("wp", "Wp") and all(w == 1 for w in args):  # as Singular: wp(1,..,1) is dp
-                blocks.append(OrderBlock(kind.replace("w", "d").replace("W", "D"), len(args)))
-            else:
-                blocks.append(OrderBlock(kind, len(args), tuple(args)))
+            blocks.append(OrderBlock(kind, len(args), tuple(args)))
         elif kind == "M":
             n = math.isqrt(len(args or []))
             if not args or n * n != len(args):
@@ -183,8 +218,7 @@ def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
         else:
             if args is None:
                 rest = nvars - covered
-                if any(isinstance(x, A.Call) or (isinstance(x, A.Name) and x.id not in ("c", "C"))
-                       for x in items[k + 1:]):
+                if any(a is not None or later not in ("c", "C") for later, a in items[k + 1:]):
                     raise MechRuntimeError(f"the ordering {kind} without a size must be the last block")
                 size = rest
             elif len(args) != 1:
@@ -200,7 +234,7 @@ def _ordering(node: A.Expr, evaluate: Evaluate, nvars: int) -> list[OrderBlock]:
         raise MechRuntimeError(f"the ordering covers {covered} variables, the ring has {nvars}")
     if not any(b.kind in ("c", "C") for b in blocks):
         blocks.append(OrderBlock("C"))
-    return _merge_lp(blocks)
+    return blocks
 
 
 def _merge_lp(blocks: list[OrderBlock]) -> list[OrderBlock]:

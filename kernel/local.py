@@ -400,9 +400,9 @@ def tangent_cone_over(centred: Sequence[Poly], point: AlgebraicPoint) -> list[Po
     return groebner([_lowest_in(g, n) for g in move(basis, ring)] + [point.minpoly], ring)
 
 
-def _tangent_dim(gens: Sequence[Poly], at: Sequence[Poly], ring: PolyRing, m: Poly,
-                 at_least: int | None = None) -> int:
-    """The dimension over ``Q[t]/m(t)`` of the Zariski tangent space of ``V(gens)`` (gens of
+def tangent_dim_over(gens: Sequence[Poly], at: Sequence[Poly], ring: PolyRing, m: Poly,
+                     at_least: int | None = None) -> int:
+    """The dimension over ``K = Q[t]/m(t)`` of the Zariski tangent space of ``V(gens)`` (gens of
     ``ring = Q[x, t]``) at ``x = at(t)``: the kernel of the Jacobian there, as a linear ideal.
     ``at_least``: a known lower bound (the dimension of the variety at the point); when the
     Jacobian's rank modulo a prime reaches it (:mod:`.modular_rank`), it is the answer."""
@@ -600,7 +600,7 @@ def classify_algebraic_point(gens: Sequence[Poly], point: AlgebraicPoint,
         raise DomainError("no component through the points: primes must be the ideal's minimal primes")
     radical = intersect(*comps, ring=ring) if len(comps) > 1 else comps[0]
     d = max(dimension(c, ring) for c in comps)
-    t = _tangent_dim(radical, [ring.zero()] * n, ring, point.minpoly, d)
+    t = tangent_dim_over(radical, [ring.zero()] * n, ring, point.minpoly, d)
     cone = (cone_over or tangent_cone_over)(centred, point)
     lms = [g.lm()[:n] for g in cone if not _in_t(g, n)]
     return PointInfo(_kind(len(comps), t, d), tuple(point.coords), d, t, mult(lms, n), cone, comps)

@@ -244,13 +244,6 @@ def component_cone_over(centred: Sequence[Poly], point: AlgebraicPoint, dim: int
     return tangent_cone_over_reduced(centred, point)
 
 
-def tangent_dim_over(centred: Sequence[Poly], point: AlgebraicPoint) -> int:
-    """The dimension over ``K = Q[t]/m(t)`` of the Zariski tangent space at the origin of an ideal of
-    ``point.ring`` containing ``m(t)``: ``n`` minus the rank over K of its generators' linear parts."""
-    over = _OverK(point)
-    return over.kring.nvars - linear_rank(over.down(centred), over.kring)
-
-
 class _OverK:
     """Polynomials of ``point.ring = Q[x, t]`` as polynomials of ``K[x]``, ``K = Q[t]/m(t)``, and back."""
 

@@ -94,8 +94,7 @@ def _sort_generators(ctx, M: Any, opts: tuple) -> List:
     else:
         gens = list(M.gens)
         if isinstance(opts[0], str):
-            from ..dsl.rings import make_ring
-            from .ring_lib import parse_ordering
+            from ..dsl.rings import make_ring, parse_ordering
             base = ctx.basering()
             other = make_ring(base.characteristic, base.params, list(ring.names),
                               parse_ordering(opts[0], ring.nvars)).poly

@@ -225,8 +225,7 @@ def showrecursive(ctx, f: Poly, p: Poly, order: str = "dp") -> object:
       → // poly, 2 monomial(s)
       → (a+y)*x2+(y)
     """
-    from ..dsl.rings import make_ring
-    from .ring_lib import parse_ordering
+    from ..dsl.rings import make_ring, parse_ordering
     ring = f.ring
     if len(p.terms) != 1:
         raise MechRuntimeError("showrecursive(f, p): p must be a product of variables")

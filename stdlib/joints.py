@@ -16,6 +16,8 @@ from __future__ import annotations
 
 from typing import Protocol, Union
 
+from mech.kernel import PolyRing
+
 from mech.stdlib.joint_base import (Element, Form, Length, MechanismError, Source, number, number_or_name, point_name,
                                     substitute, text_of, where)
 from mech.stdlib.joints_loop import Cylindrical, Helical, LoopJoint, Prismatic, Revolute, Universal
@@ -101,3 +103,5 @@ class Described(Protocol):
     def gears(self) -> list[Gear]: ...
 
     def symbols(self) -> list[str]: ...
+
+    def ring(self, values: dict[str, Length] | None = None) -> PolyRing: ...

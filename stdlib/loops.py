@@ -25,7 +25,7 @@ import math
 from fractions import Fraction
 from typing import Any, Optional, Sequence
 
-from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing, normal_form
+from mech.kernel import Poly, PolyRing, normal_form
 from mech.stdlib.joints import Cylindrical, Described, Length, LoopJoint, MechanismError, Prismatic, Revolute, Universal
 
 
@@ -121,20 +121,13 @@ def variables(m: Described) -> list[str]:
             for name in names]
 
 
-def ring(m: Described, values: dict[str, Length]) -> PolyRing:
-    config = variables(m)
-    params = [p for p in m.symbols() if p not in values]
-    blocks = [Block("dp", len(config))] + ([Block("dp", len(params))] if params else [])
-    return PolyRing(QQ, config + params, MonomialOrder(blocks))
-
-
 # ---------------------------------------------------------------- equations
 def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
     joints = m.joints
     n = len(joints)
     if n < 2:
         raise MechanismError(f"{m.name}: a loop needs at least two joints")
-    R = ring(m, values)
+    R = m.ring(values)
     gens = dict(zip(R.names, R.gens()))
 
     def param(v: Length) -> Poly:
@@ -265,5 +258,5 @@ def degrees(cs: tuple[float, float]) -> float:
     return math.degrees(math.atan2(cs[1], cs[0]))
 
 
-__all__ = ["Cylindrical", "Prismatic", "Revolute", "Universal", "constraints", "variables", "ring",
+__all__ = ["Cylindrical", "Prismatic", "Revolute", "Universal", "constraints", "variables",
            "gruebler_kutzbach", "joint_values", "frames", "cut_link"]

@@ -15,7 +15,7 @@ from typing import Any, Callable, ClassVar, Optional
 from mech.dsl.errors import MechRuntimeError, MechTypeError
 from mech.dsl.types import register_type
 from mech.dsl.values import typeof
-from mech.kernel import Poly, PolyRing
+from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
 from mech.stdlib.joints import (Element, Fix, Gear, Length, LineSlider, Link, LoopJoint, MechanismError, Slider, Source,
                                 arity_message, classes, keywords)
 
@@ -100,8 +100,12 @@ class Mechanism:
         return self.model.variables(self)
 
     def ring(self, values: dict[str, Length] | None = None) -> PolyRing:
-        """``QQ[configuration, (parameters)]``, the parameters as a trailing dp block."""
-        return self.model.ring(self, values or {})
+        """``QQ[configuration, (parameters)]``, the parameters without a value in ``values`` as a trailing
+        dp block (omitted when every parameter has one)."""
+        config = self.variables()
+        params = [p for p in self.symbols() if p not in (values or {})]
+        blocks = [Block("dp", len(config))] + ([Block("dp", len(params))] if params else [])
+        return PolyRing(QQ, config + params, MonomialOrder(blocks))
 
     def positions(self, R: PolyRing, values: dict[str, Length] | None = None
                   ) -> tuple[dict[str, tuple[Poly, ...]], list[Poly]]:

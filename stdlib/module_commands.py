@@ -1,5 +1,5 @@
 """Singular's commands on vectors and modules: ``gen``, ``freemodule``, ``vector(...)``, ``module(...)``,
-``nrows``/``ncols``/``size``, ``std``, ``reduce``/``NF``, ``syz``, ``lift``, ``liftstd``, ``modulo``,
+``nrows``/``ncols``/``size``, ``std``, ``reduce``/``NF``, ``syz``, ``liftstd``, ``modulo`` (``lift``: :mod:`.lift`),
 and polylib.lib's ``id2mod``/``mod2id``.  Standard bases of submodules are Buchberger's algorithm for
 modules (:mod:`mech.kernel.modules`) in the ring's module ordering (``(dp,C)``, ``(c,dp)``, ...), for
 global orderings.  Over a qring R/Q a submodule M of (R/Q)^r is M + Q*R^r in R^r (:func:`q_columns`):
@@ -360,41 +360,6 @@ def liftstd(ctx, m_node: A.Expr, t_node: A.Expr, *rest: A.Expr) -> Ideal | Modul
     if isinstance(v, Module):
         return _module(ring, basis, m.rank, True)
     return Ideal(ring, [Vector.from_terms(ring, b).get(1) for b in basis], is_std=True)
-
-
-@command("lift")
-def lift(ctx, M: Module, N: Module | Vector) -> Matrix:
-    """lift(M, N): the matrix T with matrix(N) = matrix(M)*T (N inside M).
-
-    Example:
-      ring r = 0,(x,y),dp;
-      print(lift(module([x,0],[0,y]), module([x2,xy])));
-      → x,
-      → x
-    """
-    ring = M.ring
-    _global(ring, "lift")
-    targets = [N] if isinstance(N, Vector) else list(N.gens)
-    rank = max([M.rank] + [t.nrows for t in targets])
-    cols = []
-    for t in targets:
-        c = km.lift(ring, rank, _vecs(M), t.terms())
-        if c is None:
-            raise MechRuntimeError("lift: the second module is not contained in the first")
-        cols.append(c)
-    k = len(M.gens)
-    return Matrix(ring, k, len(cols), [cols[j][i] for i in range(k) for j in range(len(cols))])
-
-
-@command("lift")
-def lift_unit(ctx, M: Module, N: Module | Vector, U: Matrix, alg: str = "std") -> Matrix:
-    """lift(M, N, U, alg): lift(M, N), setting the matrix variable U to the unit matrix Singular's
-    matrix(N)*U = matrix(M)*T has in a global ordering; the algorithm is ignored."""
-    T = lift(ctx, M, N)
-    k = T.ncols
-    _set_output(ctx, 2, Matrix(M.ring, k, k, [M.ring.one() if i == j else M.ring.zero()
-                                              for i in range(k) for j in range(k)]))
-    return T
 
 
 @command("modulo")

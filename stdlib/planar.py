@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
+from mech.kernel import Poly, PolyRing
 from mech.stdlib.joints import Described, Gear, Length, LineSlider, MechanismError, Slider, where
 
 
@@ -67,15 +67,6 @@ def variables(m: Described) -> list[str]:
     for p in free_points(m):
         names += [f"x_{p}", f"y_{p}"]
     return names
-
-
-def ring(m: Described, values: dict[str, Length]) -> PolyRing:
-    """``QQ[c1,s1,...,(d...),(x_P,y_P...),(parameters)]`` with the parameters as a trailing dp
-    block (omitted when every parameter has a value)."""
-    config = variables(m)
-    params = [p for p in m.symbols() if p not in values]
-    blocks = [Block("dp", len(config))] + ([Block("dp", len(params))] if params else [])
-    return PolyRing(QQ, config + params, MonomialOrder(blocks))
 
 
 def positions(m: Described, R: PolyRing, values: dict[str, Length]
@@ -204,7 +195,7 @@ def _direction(m: Described, sl: LineSlider, pos: dict[str, tuple[Poly, ...]], g
 
 def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
     """The constraint ideal's ring and generators (loop and slider constraints, then circles)."""
-    R = ring(m, values)
+    R = m.ring(values)
     _, closures = positions(m, R, values)
     gens = dict(zip(R.names, R.gens()))
     circles = [gens[f"c{i}"] ** 2 + gens[f"s{i}"] ** 2 - 1 for i in range(1, len(m.links) + 1)]

@@ -5,15 +5,13 @@ minimal polynomial of a parameter (``rootofUnity``) and tensor products of rings
 ``export`` puts a procedure's result variables into the ring it returns."""
 from __future__ import annotations
 
-import re
-
 import flint
 from typing import Any
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.qrings import make_qring, quotient_ideal
 from ..dsl.registry import command
-from ..dsl.rings import make_ring
+from ..dsl.rings import make_ring, parse_ordering
 from ..dsl.scopes import Var
 from ..dsl.convert_modules import to_module
 from ..dsl.values import Ideal, IntVec, Number, OrderBlock, Ring
@@ -22,42 +20,12 @@ from ..kernel import Poly
 from .general_lib import _letters
 
 LIB = "ring.lib"
-_WEIGHTED = ("wp", "Wp", "ws", "Ws", "a")
 
 
 def export(ring: Ring, name: str, typ: str, value: Any) -> None:
     """Make ``value`` the variable ``name`` of the ring (what a library procedure exports into a ring
     it returns: seen after ``setring``)."""
     ring.objects[name] = Var(name, typ, value, ring, 0)
-
-
-def parse_ordering(text: str, nvars: int) -> list[OrderBlock]:
-    """The blocks of an ordering written as in a ring declaration, ``"(dp(3),ws(1,2,3),ds)"``; a block
-    without a size covers the variables left."""
-    items = re.findall(r"([A-Za-z]+)\s*(?:\(([^()]*)\))?", text)
-    if not items:
-        raise MechRuntimeError(f"not an ordering: \"{text}\"")
-    blocks, covered = [], 0
-    for k, (kind, args) in enumerate(items):
-        nums = [int(a) for a in args.split(",") if a.strip()] if args else []
-        if kind in ("c", "C"):
-            blocks.append(OrderBlock(kind))
-            continue
-        if kind in _WEIGHTED:
-            if not nums:
-                raise MechRuntimeError(f"the ordering {kind} needs weights")
-            blocks.append(OrderBlock(kind, len(nums), tuple(nums)))
-        elif kind in ("lp", "dp", "Dp", "ls", "ds", "Ds"):
-            blocks.append(OrderBlock(kind, nums[0] if nums else nvars - covered))
-        else:
-            raise MechRuntimeError(f"the ordering {kind} is not supported here")
-        if kind != "a":
-            covered += blocks[-1].size
-    if covered != nvars:
-        raise MechRuntimeError(f"the ordering \"{text}\" covers {covered} variables, the ring has {nvars}")
-    if not any(b.kind in ("c", "C") for b in blocks):
-        blocks.append(OrderBlock("C"))
-    return blocks
 
 
 def parse_characteristic(text: str) -> tuple[int, tuple[str, ...]]:

@@ -11,14 +11,13 @@ from ..dsl.errors import MechRuntimeError
 from ..dsl.minpoly import extended, get_minpoly
 from ..dsl.qrings import make_qring, quotient_ideal
 from ..dsl.registry import command
-from ..dsl.rings import make_ring
+from ..dsl.rings import make_ring, ordering_items, parse_ordering
 from ..dsl.values import NONE, Ideal, IntVec, List, OrderBlock, Ring
 from ..kernel import Poly
 from ..kernel.algext import AlgebraicField
 from ..kernel.maps import fetch
 from ..dsl.printing import ordstr
 from .general_lib import _letters
-from .ring_lib import parse_ordering
 from .standard import standard_basis
 
 _SIZED = ("lp", "dp", "Dp", "ls", "ds", "Ds", "rp")
@@ -99,22 +98,26 @@ def _blocks(L: Any, nvars: int) -> list[OrderBlock]:
 
 
 class CoeffRing:
-    """ring_list's first entry for a ring with parameters: the coefficient field (Singular's cring),
-    printed as "char,parameters" (not indented in a list), minimal polynomial included."""
+    """ring_list's first entry: the coefficient field (Singular's cring), printed ``QQ`` or ``ZZ/p``, with
+    parameters "char,parameters" (not indented in a list), minimal polynomial included."""
 
     unindented = True
+    type_name = "cring"
 
     def __init__(self, ring: Ring) -> None:
         self.ring = ring
 
     def __str__(self) -> str:
-        return ",".join([str(self.ring.characteristic)] + list(self.ring.params))
+        char = self.ring.characteristic
+        if not self.ring.params:
+            return f"ZZ/{char}" if char else "QQ"
+        return ",".join([str(char)] + list(self.ring.params))
 
 
 def _char(c: Any) -> tuple[int, tuple[str, ...], Any]:
     """(characteristic, parameters, minimal polynomial ideal or None) of ringlist's first entry."""
     if isinstance(c, CoeffRing):
-        return c.ring.characteristic, c.ring.params, _coefficients(c.ring).items[3]
+        return c.ring.characteristic, c.ring.params, _coefficients(c.ring).items[3] if c.ring.params else None
     if isinstance(c, int):
         return c, (), None
     if isinstance(c, str):
@@ -176,19 +179,19 @@ def ring_of_list(L: List) -> Ring:
 
 @command("ring_list")
 def ring_list(r: Ring) -> List:
-    """ring_list(r): ringlist(r), with the coefficients of a ring with parameters as a coefficient ring
-    (printed "char,parameters"; create_ring keeps its minimal polynomial).
+    """ring_list(r): ringlist(r), with the coefficients as a coefficient ring (a cring, printed QQ, ZZ/p
+    or "char,parameters"; create_ring keeps its minimal polynomial).
 
     Example:
       LIB "standard.lib";
       ring r = (0,a),x,dp;
       ring_list(r)[1];
       → 0,a
+      ring s = 7,x,dp;
+      ring_list(s)[1];
+      → ZZ/7
     """
-    out = ringlist(r)
-    if r.params:
-        out = List([CoeffRing(r)] + list(out.items[1:]))
-    return out
+    return List([CoeffRing(r)] + list(ringlist(r).items[1:]))
 
 
 def _lenient_ordering(text: str, nvars: int) -> list[OrderBlock]:
@@ -208,13 +211,12 @@ def _covered(text: str) -> int:
     """The variables an ordering string's blocks cover by their explicit sizes and weights (a block
     without a size: all, as many as can be)."""
     total = 0
-    for kind, args in re.findall(r"([A-Za-z]+)\s*(?:\(([^()]*)\))?", text):
-        nums = [a for a in args.split(",") if a.strip()] if args else []
+    for kind, nums in ordering_items(text):
         if kind in ("c", "C", "a"):
             continue
         if kind in _SIZED and not nums:
             return 1 << 30
-        total += int(nums[0]) if kind in _SIZED else len(nums)
+        total += nums[0] if kind in _SIZED else len(nums or [])
     return total
 
 

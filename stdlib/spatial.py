@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from mech.kernel import QQ, Block, MonomialOrder, Poly, PolyRing
+from mech.kernel import Poly, PolyRing
 from mech.stdlib.joints import Body, Described, Length, LineSlider, MechanismError, where
 
 
@@ -72,13 +72,6 @@ def variables(m: Described) -> list[str]:
         if kind == "free":
             names += [f"{x}_{p}" for x in "xyz"]
     return names
-
-
-def ring(m: Described, values: dict[str, Length]) -> PolyRing:
-    config = variables(m)
-    params = [p for p in m.symbols() if p not in values]
-    blocks = [Block("dp", len(config))] + ([Block("dp", len(params))] if params else [])
-    return PolyRing(QQ, config + params, MonomialOrder(blocks))
 
 
 def positions(m: Described, R: PolyRing, values: dict[str, Length]
@@ -143,7 +136,7 @@ def _on_line(m: Described, sl: LineSlider, pos: dict[str, tuple[Poly, ...]]) -> 
 
 
 def constraints(m: Described, values: dict[str, Length]) -> tuple[PolyRing, list[Poly]]:
-    R = ring(m, values)
+    R = m.ring(values)
     _, closures = positions(m, R, values)
     gens = dict(zip(R.names, R.gens()))
     frames: list[Poly] = []

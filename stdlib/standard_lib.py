@@ -10,10 +10,10 @@ from typing import Any
 
 from ..dsl.errors import MechRuntimeError
 from ..dsl.registry import command
+from ..dsl.rings import parse_ordering
 from ..dsl.values import Ideal, IntVec, List
 from ..dsl.values_modules import Module
 from ..kernel import Poly
-from .ring_lib import parse_ordering
 
 LIB = "standard.lib"
 

@@ -1,12 +1,12 @@
 """The Jacobian's rank at algebraic points modulo a prime (kernel/modular_rank.py): a lower bound
 for the rank over K = Q[t]/m(t), equal to it at smooth points, and the tangent dimension it
-certifies (kernel/local._tangent_dim) equal to the exact one."""
+certifies (kernel/local.tangent_dim_over) equal to the exact one."""
 from __future__ import annotations
 
 from fractions import Fraction
 
 from mech.kernel import QQ, Block, MonomialOrder, PolyRing
-from mech.kernel.local import _tangent_dim, primitive_element
+from mech.kernel.local import tangent_dim_over, primitive_element
 from mech.kernel.modular_rank import jacobian_rank_mod
 
 R = PolyRing(QQ, ["x", "y", "t"], MonomialOrder([Block("dp", 2), Block("dp", 1)]))
@@ -24,7 +24,7 @@ def test_singular_point_rank_zero():
     (-4x(x^2 - 2), 2y) vanishes there."""
     f = y * y - (x * x - 2) ** 2
     assert jacobian_rank_mod([f], [t, R.zero()], M) == 0
-    assert _tangent_dim([f], [t, R.zero()], R, M) == 2
+    assert tangent_dim_over([f], [t, R.zero()], R, M) == 2
 
 
 def test_two_equations_and_denominators():
@@ -43,5 +43,5 @@ def test_certified_dimension_equals_the_exact_one():
     pt = primitive_element([u * u - 2, v - 1], S)
     X, Y = pt.ring.gens()[:2]
     curve = [X * X - 2 * Y * Y]
-    exact = _tangent_dim(curve, pt.coords, pt.ring, pt.minpoly)
-    assert exact == _tangent_dim(curve, pt.coords, pt.ring, pt.minpoly, at_least=1) == 1
+    exact = tangent_dim_over(curve, pt.coords, pt.ring, pt.minpoly)
+    assert exact == tangent_dim_over(curve, pt.coords, pt.ring, pt.minpoly, at_least=1) == 1

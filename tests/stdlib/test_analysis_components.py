@@ -1,4 +1,4 @@
-"""The local components at singular configurations (stdlib/analysis.py's "local components" stage) against
+"""The local components at singular configurations (stdlib/analysis_points.py's "local components" stage) against
 Singular's minimal primes in the local ring (``minAssGTZ`` in a ``ds`` ring, over ``Q(t)`` at conjugate
 points), and the kernel's certificates behind them (kernel/local.py: a mode stays prime over ``Q(t)``)."""
 from __future__ import annotations

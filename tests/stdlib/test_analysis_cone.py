@@ -1,4 +1,4 @@
-"""Local analysis at a singular configuration (stdlib/analysis.py): the kind, the local components and the
+"""Local analysis at a singular configuration (stdlib/analysis_points.py): the kind, the local components and the
 transition come first, from the motion modes; the tangent cone of J (a local standard basis, which does not
 finish on Bricard's 6R loop) has its own budget, and when it runs out the report gives the cone as a set (the
 union of the local components' cones) and says so."""
@@ -8,7 +8,7 @@ import pytest
 
 from mech.kernel.ideals import dp_ring, ideals_equal, move
 from mech.kernel.primdec import radical
-from mech.stdlib import analysis
+from mech.stdlib import analysis_points
 from mech.stdlib.analysis import analyze
 from mech.stdlib.mechanism import parse_mechanism
 from mech.stdlib.reports import report_data, report_text
@@ -25,8 +25,8 @@ def test_cone_out_of_budget_keeps_the_classification(monkeypatch):
     full = analyze(parse_mechanism(PARALLELOGRAM))
     assert "components meet" in [s.kind for s in full.singular]
     assert full.singular and all(not s.cone_note for s in full.singular)
-    monkeypatch.setattr(analysis, "CONE_BUDGET", 0.3)
-    monkeypatch.setattr(analysis, "cone_at_point", _spin)
+    monkeypatch.setattr(analysis_points, "CONE_BUDGET", 0.3)
+    monkeypatch.setattr(analysis_points, "cone_at_point", _spin)
     part = analyze(parse_mechanism(PARALLELOGRAM))
     assert [(s.kind, s.transition, s.modes) for s in part.singular] == \
         [(s.kind, s.transition, s.modes) for s in full.singular]

@@ -8,11 +8,12 @@ import pytest
 from mech.dsl.printing import poly_str
 from mech.kernel.coeffs import QQ
 from mech.kernel.ideals import ideals_equal
-from mech.kernel.local import centre_at, primitive_element, shift_to_origin, tangent_cone, tangent_cone_over
+from mech.kernel.local import (centre_at, primitive_element, shift_to_origin, tangent_cone, tangent_cone_over,
+                               tangent_dim_over)
 from mech.kernel.order import Block, MonomialOrder
 from mech.kernel.poly import PolyRing
 from mech.stdlib.analysis import analyze
-from mech.stdlib.analysis_linear import (component_cone_over, quadratic_cone_over, tangent_cone_over_reduced, tangent_dim_over)
+from mech.stdlib.analysis_linear import component_cone_over, quadratic_cone_over, tangent_cone_over_reduced
 from mech.stdlib.mechanism import parse_mechanism
 from tests.util import SINGULAR, ideal_blocks, parse_poly, run_singular
 
@@ -48,7 +49,10 @@ def test_smooth_components_over_their_field():
     m = pt.minpoly
     for comp in ([Y - X * t, m], [Y - X ** 2 - X * t, m], [X * Y + Y ** 2 - X, m], [Y ** 2 - t * X ** 3, m]):
         assert ideals_equal(component_cone_over(comp, pt, 1), tangent_cone_over_reduced(comp, pt), pt.ring)
-    assert [tangent_dim_over(c, pt) for c in ([Y - X * t, m], [Y ** 2 - t * X ** 3, m], [X, Y, m])] == [1, 2, 0]
+    origin = [pt.ring.zero()] * 2
+    comps = ([Y - X * t, m], [Y ** 2 - t * X ** 3, m], [X, Y, m])
+    assert [tangent_dim_over(c, origin, pt.ring, m) for c in comps] == [1, 2, 0]
+    assert [tangent_dim_over(c, origin, pt.ring, m, at_least=d) for c, d in zip(comps, (1, 1, 0))] == [1, 2, 0]
 
 
 WATT = "ground O A 1; fix G 2 0; bar O B 1; bar B C 1; body A C 1 0 E 0 1; bar E F 1; bar F G 1"

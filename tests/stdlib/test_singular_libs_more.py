@@ -3,7 +3,8 @@ zero_decomp, newZero_decomp, newMaxIndependSetDp/Lp; sqrfree, facstd, mstd, jane
 complete intersection; matrix.lib's gauss_col/gauss_row; ring.lib's preimageLoc; algebra.lib's
 noetherNormal and module_containment; elim.lib's blowup0; hilb(I, 1, w); minor(M, k, I, n); milnor's and
 nf_icis's comments; indepSet's order; ringlist, ring(list), ring_list, create_ring, quotientList, changechar,
-changeord, extendring, optionIsSet, show; factmodd; general.lib's sort; the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
+changeord, extendring, optionIsSet, show; factmodd; general.lib's sort; orderings as strings (ring.lib's defring, create_ring: read as ring(L) reads them, not
+merged as a ring declaration's); the widths of a ring's weights and its minimal polynomial in long form.  Each snippet's output is compared with the installed Singular's,
 line by line; where Singular's answer is random or not unique, the snippet prints what is determined."""
 from __future__ import annotations
 
@@ -14,6 +15,35 @@ from tests.util import output_lines, run, run_singular
 pytestmark = pytest.mark.singular
 
 SNIPPETS = {
+    "ring_list_coefficients": """
+ring r = 0,(x,y),dp;
+list L = ring_list(r);
+typeof(L[1]);
+L[1];
+ring s = 7,(x),dp;
+ring_list(s)[1];
+typeof(ring_list(s)[1]);
+ring t = (0,a),(x),dp;
+ring_list(t)[1];
+typeof(ring_list(t)[1]);
+ring u = (7,a),(x),dp;
+minpoly = a2+1;
+ring_list(u)[1];
+typeof(ring_list(u)[1]);
+ringlist(r)[1];
+""",
+    "ordering_strings": """
+ring r = 0,(x,y,z),(dp(1),lp(2)); r;
+ring r2 = 0,(x,y,z),(wp(1,1),lp(1)); r2;
+ring r3 = 0,(x,y,z),(a(1,2,3,4),dp); r3;
+LIB "ring.lib";
+def s1 = defring("0", 3, "x", "(dp(1),lp(2))"); s1;
+def s2 = defring("0", 3, "x", "(wp(1,1),lp(1))"); s2;
+def s3 = defring("0", 3, "x", "(a(1,2,3,4),dp)"); s3;
+def s4 = defring("(7,a)", 4, "u", "(ds(2),M(1,2,0,1))"); s4;
+ring s = 0,(x,y,z),dp;
+ring_list(create_ring(0, "(x,y,z)", "(wp(1,1),lp(1))"))[3];
+""",
     "primdec_zero": """
 LIB "primdec.lib";
 ring r = 0,(x,y),lp;
