@@ -1,7 +1,20 @@
-/* One step of FGLM's linear algebra modulo p < 2^31 (kernel/fglm.py ``fglm_modp``), part of the
- * optional extension mech.kernel._f4rows.
+/* FGLM's linear algebra modulo p < 2^31 (kernel/fglm.py ``fglm_modp``): the module
+ * mech.kernel._fglm (built with FGLM_MODULE defined); ``fglm_step`` is also part of the optional
+ * extension mech.kernel._f4rows.
  *
- * The state lives in Python-owned arrays of uint32 (array('I')) and int32 (array('i')):
+ * fglm_matrices(p, D, n, cols, plan, tidx, tval, M) fills the multiplication matrices M (n*D
+ * columns of D entries, uint32) of the quotient by a reduced Groebner basis with standard
+ * monomials B (D of them).  Column (a, j) is NF(x_a * B[j]): cols[a*D + j] = r >= 0 says
+ * x_a * B[j] = B[r] (a unit vector), r < 0 that it is the border monomial q = -1 - r.  The border
+ * monomials come in increasing order of the basis' ordering; plan[3q .. 3q+2] = (kind, x, y):
+ * kind 0: q is the leading monomial of a basis element, its normal form is minus its tail, the
+ * entries x .. y-1 of (tidx, tval) (B-index, value already negated mod p); kind 1: q = x_x * q'
+ * with q' = y an earlier border monomial: NF(q) = sum_c NF(q')_c * NF(x_x * B[c]), where every
+ * x_x * B[c] with NF(q')_c != 0 lies below q (B[c] lies below q'), so its column is known.
+ * The plan depends on the monomials only (the same at every prime), tval on the prime.
+ *
+ * fglm_step(p, D, K, M, nfs, piv, slot, mode, a, b): one step of the new staircase's linear
+ * algebra.  The state lives in Python-owned arrays of uint32 (array('I')) and int32 (array('i')):
  *   M      n*D columns of D entries: column (i, j) is NF(x_i * B[j]) over the old staircase B;
  *   nfs    the normal forms of the new standard monomials found so far (K vectors of D entries);
  *   piv    their semi-echelon rows, width W = 2*D + 1: D low slots (over B), then slot D + k
@@ -12,7 +25,13 @@
  * reduces (v | e_{D+K}) by the K rows.  If the low slots vanish, the monomial is a new leading
  * monomial: returns the K combination slots (its tail over the new standard monomials).
  * Otherwise v becomes nfs[K], the reduced row (made monic) piv[K] with its pivot, and the
- * result is None.  Accumulation in 64 bits with a reduction every `lim` additions. */
+ * result is None.  Accumulation in 64 bits with a reduction every `lim` additions.
+ *
+ * fglm_replay(p, D, M, steps, tails) repeats at another prime the steps of a conversion done at
+ * a first one (the same visits in the same order): steps holds (mode, a, b, leading) for each
+ * visit; the tails of the leading monomials go to tails (uint32, D entries each, the K slots of
+ * each one followed by zeros).  Returns False as soon as a visit behaves otherwise than at the
+ * first prime (the prime is unlucky for this shape or the first one was), else True. */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 #include <stdint.h>
@@ -30,30 +49,12 @@ static uint64_t inv_mod(uint64_t a, uint64_t p)
     return (uint64_t)(t < 0 ? t + (int64_t)p : t);
 }
 
-PyObject *fglm_step(PyObject *self, PyObject *args)
+/* The step itself on the raw arrays, x a zeroed scratch vector of W = 2D + 1 entries: returns
+ * -1 if the monomial is leading (its tail in x[D .. D+K-1]), else its pivot (the row stored). */
+static Py_ssize_t step(uint64_t p, Py_ssize_t D, Py_ssize_t K, const uint32_t *Mv, uint32_t *N, uint32_t *R,
+                       int32_t *S, int mode, Py_ssize_t a, Py_ssize_t b, uint64_t *x)
 {
-    unsigned long long p_;
-    Py_ssize_t D, K;
-    int mode;
-    Py_ssize_t a, b;
-    Py_buffer M, nfs, piv, slot;
-    if (!PyArg_ParseTuple(args, "Knnw*w*w*w*inn", &p_, &D, &K, &M, &nfs, &piv, &slot, &mode, &a, &b))
-        return NULL;
-    const uint64_t p = p_;
     const Py_ssize_t W = 2 * D + 1;
-    uint32_t *Mv = M.buf, *N = nfs.buf, *R = piv.buf;
-    int32_t *S = slot.buf;
-    PyObject *result = NULL;
-    if (K > D || (Py_ssize_t)(nfs.len / 4) < (K + 1) * D || (Py_ssize_t)(piv.len / 4) < (K + 1) * W
-        || (Py_ssize_t)(slot.len / 4) < K + 1) {
-        PyErr_SetString(PyExc_ValueError, "fglm_step: arrays too small");
-        goto done;
-    }
-    uint64_t *x = calloc((size_t)W, sizeof(uint64_t));
-    if (!x) {
-        PyErr_NoMemory();
-        goto done;
-    }
     const uint64_t big = (p - 1) * (p - 1);
     const uint64_t lim = (UINT64_MAX - p) / (big ? big : 1);
     if (mode == 0) {
@@ -109,7 +110,38 @@ PyObject *fglm_step(PyObject *self, PyObject *args)
         if (t < D && x[t])
             s0 = t;
     }
-    if (s0 < 0) {
+    if (s0 >= 0) {
+        const uint64_t inv = inv_mod(x[s0], p);
+        uint32_t *row = R + K * W;
+        for (Py_ssize_t t = 0; t < W; t++)
+            row[t] = (uint32_t)(x[t] * inv % p);
+        S[K] = (int32_t)s0;
+    }
+    return s0;
+}
+
+PyObject *fglm_step(PyObject *self, PyObject *args)
+{
+    unsigned long long p_;
+    Py_ssize_t D, K;
+    int mode;
+    Py_ssize_t a, b;
+    Py_buffer M, nfs, piv, slot;
+    if (!PyArg_ParseTuple(args, "Knnw*w*w*w*inn", &p_, &D, &K, &M, &nfs, &piv, &slot, &mode, &a, &b))
+        return NULL;
+    const Py_ssize_t W = 2 * D + 1;
+    PyObject *result = NULL;
+    if (K > D || (Py_ssize_t)(nfs.len / 4) < (K + 1) * D || (Py_ssize_t)(piv.len / 4) < (K + 1) * W
+        || (Py_ssize_t)(slot.len / 4) < K + 1) {
+        PyErr_SetString(PyExc_ValueError, "fglm_step: arrays too small");
+        goto done;
+    }
+    uint64_t *x = calloc((size_t)W, sizeof(uint64_t));
+    if (!x) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (step(p_, D, K, M.buf, nfs.buf, piv.buf, slot.buf, mode, a, b, x) < 0) {
         result = PyList_New(K);
         if (result)
             for (Py_ssize_t k = 0; k < K; k++) {
@@ -121,11 +153,6 @@ PyObject *fglm_step(PyObject *self, PyObject *args)
                 PyList_SET_ITEM(result, k, o);
             }
     } else {
-        const uint64_t inv = inv_mod(x[s0], p);
-        uint32_t *row = R + K * W;
-        for (Py_ssize_t t = 0; t < W; t++)
-            row[t] = (uint32_t)(x[t] * inv % p);
-        S[K] = (int32_t)s0;
         Py_INCREF(Py_None);
         result = Py_None;
     }
@@ -137,3 +164,174 @@ done:
     PyBuffer_Release(&slot);
     return result;
 }
+
+#ifdef FGLM_MODULE
+static PyObject *fglm_matrices(PyObject *self, PyObject *args)
+{
+    unsigned long long p_;
+    Py_ssize_t D, n;
+    Py_buffer cols, plan, tidx, tval, M;
+    if (!PyArg_ParseTuple(args, "Knny*y*y*y*w*", &p_, &D, &n, &cols, &plan, &tidx, &tval, &M))
+        return NULL;
+    const uint64_t p = p_;
+    const int32_t *C = cols.buf, *P = plan.buf, *I = tidx.buf;
+    const uint32_t *V = tval.buf;
+    uint32_t *Mv = M.buf;
+    const Py_ssize_t Q = plan.len / 12, T = tidx.len / 4;
+    PyObject *result = NULL;
+    uint32_t *F = NULL; /* the border monomials' normal forms, Q vectors of D entries */
+    uint64_t *x = NULL;
+    if (cols.len / 4 < n * D || M.len / 4 < n * D * D || tval.len / 4 < T) {
+        PyErr_SetString(PyExc_ValueError, "fglm_matrices: arrays too small");
+        goto done;
+    }
+    F = calloc((size_t)(Q * D + 1), sizeof(uint32_t));
+    x = calloc((size_t)(D + 1), sizeof(uint64_t));
+    if (!F || !x) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    const uint64_t big = (p - 1) * (p - 1);
+    const uint64_t lim = (UINT64_MAX - p) / (big ? big : 1);
+    for (Py_ssize_t q = 0; q < Q; q++) {
+        const int32_t kind = P[3 * q], u = P[3 * q + 1], w = P[3 * q + 2];
+        uint32_t *f = F + q * D;
+        if (kind == 0) {
+            if (u < 0 || w > T || u > w)
+                goto bad;
+            for (Py_ssize_t e = u; e < w; e++) {
+                if (I[e] < 0 || I[e] >= D)
+                    goto bad;
+                f[I[e]] = V[e];
+            }
+            continue;
+        }
+        if (u < 0 || u >= n || w < 0 || w >= q)
+            goto bad;
+        const uint32_t *g = F + (Py_ssize_t)w * D;
+        memset(x, 0, (size_t)D * sizeof(uint64_t));
+        uint64_t count = 0;
+        for (Py_ssize_t c = 0; c < D; c++) {
+            const uint64_t v = g[c];
+            if (!v)
+                continue;
+            const int32_t r = C[u * D + c];
+            if (r >= 0) {
+                if (r >= D)
+                    goto bad;
+                x[r] += v;
+            } else {
+                if (-1 - r >= q)
+                    goto bad;
+                const uint32_t *h = F + (Py_ssize_t)(-1 - r) * D;
+                for (Py_ssize_t s = 0; s < D; s++)
+                    x[s] += v * h[s];
+            }
+            if (++count == lim) {
+                for (Py_ssize_t s = 0; s < D; s++)
+                    x[s] %= p;
+                count = 0;
+            }
+        }
+        for (Py_ssize_t s = 0; s < D; s++)
+            f[s] = (uint32_t)(x[s] % p);
+    }
+    for (Py_ssize_t c = 0; c < n * D; c++) {
+        uint32_t *col = Mv + c * D;
+        const int32_t r = C[c];
+        if (r >= 0) {
+            if (r >= D)
+                goto bad;
+            memset(col, 0, (size_t)D * sizeof(uint32_t));
+            col[r] = 1;
+        } else {
+            if (-1 - r >= Q)
+                goto bad;
+            memcpy(col, F + (Py_ssize_t)(-1 - r) * D, (size_t)D * sizeof(uint32_t));
+        }
+    }
+    Py_INCREF(Py_None);
+    result = Py_None;
+    goto done;
+bad:
+    PyErr_SetString(PyExc_ValueError, "fglm_matrices: the plan is inconsistent");
+done:
+    free(F);
+    free(x);
+    PyBuffer_Release(&cols);
+    PyBuffer_Release(&plan);
+    PyBuffer_Release(&tidx);
+    PyBuffer_Release(&tval);
+    PyBuffer_Release(&M);
+    return result;
+}
+
+static PyObject *fglm_replay(PyObject *self, PyObject *args)
+{
+    unsigned long long p_;
+    Py_ssize_t D;
+    Py_buffer M, steps, tails;
+    if (!PyArg_ParseTuple(args, "Kny*y*w*", &p_, &D, &M, &steps, &tails))
+        return NULL;
+    const Py_ssize_t W = 2 * D + 1, S = steps.len / 16;
+    const int32_t *st = steps.buf;
+    uint32_t *out = tails.buf;
+    PyObject *result = NULL;
+    uint32_t *N = calloc((size_t)(D * (D + 1)), sizeof(uint32_t));
+    uint32_t *R = calloc((size_t)(W * (D + 1)), sizeof(uint32_t));
+    int32_t *slot = calloc((size_t)(D + 1), sizeof(int32_t));
+    uint64_t *x = malloc((size_t)W * sizeof(uint64_t));
+    if (!N || !R || !slot || !x) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    Py_ssize_t K = 0, L = 0;
+    int same = 1;
+    for (Py_ssize_t i = 0; i < S && same; i++) {
+        const int mode = st[4 * i], leading = st[4 * i + 3];
+        const Py_ssize_t a = st[4 * i + 1], b = st[4 * i + 2];
+        if (mode < 0 || mode > 2 || a < 0 || b < 0 || (mode == 0 && a >= D) || (mode == 1 && b >= D)
+            || (mode == 2 && b >= K) || (mode > 0 && (Py_ssize_t)(M.len / 4) < (a + 1) * D * D)
+            || (leading && (Py_ssize_t)(tails.len / 4) < (L + 1) * D)) {
+            PyErr_SetString(PyExc_ValueError, "fglm_replay: a step out of range");
+            goto done;
+        }
+        memset(x, 0, (size_t)W * sizeof(uint64_t));
+        const Py_ssize_t s0 = step(p_, D, K, M.buf, N, R, slot, mode, a, b, x);
+        if ((s0 < 0) != (leading != 0)) {
+            same = 0;
+        } else if (s0 < 0) {
+            uint32_t *t = out + L * D;
+            for (Py_ssize_t k = 0; k < D; k++)
+                t[k] = k < K ? (uint32_t)x[D + k] : 0;
+            L++;
+        } else if (++K > D) {
+            same = 0;
+        }
+    }
+    result = PyBool_FromLong(same);
+done:
+    free(N);
+    free(R);
+    free(slot);
+    free(x);
+    PyBuffer_Release(&M);
+    PyBuffer_Release(&steps);
+    PyBuffer_Release(&tails);
+    return result;
+}
+
+static PyMethodDef methods[] = {
+    {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p."},
+    {"fglm_matrices", fglm_matrices, METH_VARARGS, "The multiplication matrices modulo p from a border plan."},
+    {"fglm_replay", fglm_replay, METH_VARARGS, "A conversion's steps repeated at another prime."},
+    {NULL, NULL, 0, NULL},
+};
+
+static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, "_fglm", "FGLM's linear algebra modulo p.", -1, methods};
+
+PyMODINIT_FUNC PyInit__fglm(void)
+{
+    return PyModule_Create(&module);
+}
+#endif

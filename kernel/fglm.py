@@ -38,12 +38,16 @@ import flint
 
 from .errors import NotSupported
 from .f4 import F4, PackingOverflow
-from .f4_rows import FGLM_STEP, compiled
+from .f4_rows import compiled
 from .f4_vectors import Vectors, support
 from .fglm_solve import solve_qq
 from .monomials import Packing
 from .order import Exp, MonomialOrder
 
+try:
+    from ._fglm import fglm_matrices as MATRICES, fglm_replay as REPLAY, fglm_step as STEP
+except ImportError:  # no compiler at install: the packed Python integers
+    MATRICES = REPLAY = STEP = None
 
 
 @dataclass
@@ -57,6 +61,8 @@ class Conversion:
     stairs: list[Exp]
     stair_from: list[tuple[int, int]]
     lm_from: list[tuple[int, int]]
+    steps: array | None = None
+    """With the compiled steps: ``(mode, a, b, leading)`` of each visit, for :func:`replay`."""
 
 
 class NotZeroDimensional(NotSupported):
@@ -162,10 +168,10 @@ def _border(basis, lms, P: Packing, border, B, p) -> dict[Exp, list[int]]:
 
 
 def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: MonomialOrder, p: int,
-              border: dict[Exp, list[int]] | None = None, B: list[Exp] | None = None) -> Conversion:
+              B: list[Exp] | None = None, structure: Border | None = None) -> Conversion:
     """The reduced basis for ``target`` of the ideal with the monic Gröbner basis ``basis``
-    (for ``source``, coefficients as ints mod ``p``; ``border``: its :func:`border_forms` and
-    ``B`` its standard monomials in increasing ``source`` order, if known already)."""
+    (for ``source``, coefficients as ints mod ``p``; ``B``: its standard monomials in increasing
+    ``source`` order and ``structure`` its :class:`Border`, if known already)."""
     n = source.nvars
     key = source.key
     if B is None:
@@ -173,14 +179,20 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
     D = len(B)
     if not D:
         return Conversion([(0,) * n], [[]], [], [], [])
-    if border is None:
-        border = border_forms(basis, source, B, p)
     index = {b: j for j, b in enumerate(B)}
-    algebra = _Compiled if compiled(p) and (n + 3) * D * D <= COMPILED_ENTRIES else _Packed
-    lin = algebra(p, B, index, border, n)
+    if STEP is not None and p < LIMIT and (n + 3) * D * D <= COMPILED_ENTRIES:
+        if structure is None:
+            structure = Border.of(basis, source, B)
+        if structure is not None:
+            lin = _Compiled(p, index, structure.where, structure.matrices(basis, p))
+        else:  # a basis that is not reduced
+            border = border_forms(basis, source, B, p)
+            lin = _Compiled(p, index, _where(border, B, n), _dense(border, B, index, n))
+    else:
+        lin = _Packed(p, B, index, border_forms(basis, source, B, p), n)
     tkey = target.key
     one = (0,) * n
-    out = Conversion([], [], [], [], [])
+    out = Conversion([], [], [], [], [], getattr(lin, "steps", None))
     heap = [(tkey(one), one, -1, -1)]
     seen = {one}
     # monomials visited and found in the new leading ideal; each visited t = x_i s (s standard)
@@ -211,6 +223,119 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
         raise Unlucky("the new staircase has the wrong size")
     return out
 
+
+def replay(first: Conversion, basis: Sequence[dict[Exp, int]], structure: Border, p: int) -> Conversion | None:
+    """The conversion ``first`` (made with the compiled steps) at another prime ``p``: the same
+    visits in the same order, only the linear algebra redone (``fglm_replay`` of
+    kernel/_fglm.c); None if a visit turns out otherwise (one of the two primes is unlucky)."""
+    D = len(structure.B)
+    tails = array("I", bytes(4 * D * len(first.lms)))
+    if not REPLAY(p, D, structure.matrices(basis, p), first.steps, tails):
+        return None
+    return Conversion(first.lms, [tails[D * i:D * (i + 1)].tolist() for i in range(len(first.lms))],
+                      first.stairs, first.stair_from, first.lm_from, first.steps)
+
+
+class Border:
+    """The part of the multiplication matrices of ``K[x]/I`` that is the same at every prime, from
+    a reduced Gröbner basis of ``I`` with the standard monomials ``B``: which monomial each
+    column ``x_a B[j]`` is, and how the normal form of each border monomial (in increasing
+    order) follows from earlier ones -- minus a basis element's tail for its leading monomial,
+    else ``x_i`` times an earlier border monomial's form (see ``fglm_matrices`` in
+    kernel/_fglm.c).  :meth:`matrices` fills in the numbers at a prime."""
+
+    def __init__(self, B: list[Exp], cols: array, plan: array, tidx: array, terms: list[tuple[int, Exp]],
+                 where: dict[Exp, tuple[int, int]]) -> None:
+        self.B, self.cols, self.plan, self.tidx, self.terms, self.where = B, cols, plan, tidx, terms, where
+
+    @classmethod
+    def of(cls, basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> Border | None:
+        """The structure for ``basis`` (None if it is not reduced)."""
+        n, key = order.nvars, order.key
+        index = {b: j for j, b in enumerate(B)}
+        where: dict[Exp, tuple[int, int]] = {}  # each border monomial as x_a B[j], first reached
+        for a in range(n):
+            for j, b in enumerate(B):
+                u = _times(b, a)
+                if u not in index and u not in where:
+                    where[u] = (a, j)
+        order_of = {t: q for q, t in enumerate(sorted(where, key=key))}
+        D = len(B)
+        cols = array("i", bytes(4 * n * D))
+        for a in range(n):
+            for j, b in enumerate(B):
+                u = _times(b, a)
+                r = index.get(u)
+                cols[a * D + j] = r if r is not None else -1 - order_of[u]
+        lead = {max(g, key=key): k for k, g in enumerate(basis)}
+        plan, tidx, terms = array("i"), array("i"), []
+        for t in order_of:  # increasing
+            k = lead.get(t)
+            if k is not None:
+                start = len(tidx)
+                for e in basis[k]:
+                    if e != t:
+                        j = index.get(e)
+                        if j is None:
+                            return None
+                        tidx.append(j)
+                        terms.append((k, e))
+                plan.extend((0, start, len(tidx)))
+                continue
+            i = next((i for i in range(n) if t[i] and _divided(t, i) in order_of), None)
+            if i is None:  # a minimal generator of lt(I) leads no element
+                return None
+            plan.extend((1, i, order_of[_divided(t, i)]))
+        if len(lead) != len(basis) or len(terms) != sum(len(g) - 1 for g in basis):
+            return None
+        return cls(B, cols, plan, tidx, terms, where)
+
+    def matrices(self, basis: Sequence[dict[Exp, int]], p: int) -> array:
+        """The multiplication matrices modulo ``p`` (the layout of :class:`_Compiled`) for this
+        structure's basis with coefficients ``basis`` (monic, ints mod ``p``, same elements in
+        the same positions)."""
+        vals = array("I", [(p - basis[k][e]) % p for k, e in self.terms])
+        D, n = len(self.B), len(self.cols) // max(len(self.B), 1)
+        M = array("I", bytes(4 * n * D * D))
+        MATRICES(p, D, n, self.cols, self.plan, self.tidx, vals, M)
+        return M
+
+
+def _divided(t: Exp, i: int) -> Exp:
+    return t[:i] + (t[i] - 1,) + t[i + 1:]
+
+
+def _where(border: dict[Exp, list[int]], B: list[Exp], n: int) -> dict[Exp, tuple[int, int]]:
+    """Each border monomial as ``x_a B[j]`` (the first reached)."""
+    where: dict[Exp, tuple[int, int]] = {}
+    for a in range(n):
+        for j, b in enumerate(B):
+            u = _times(b, a)
+            if u in border:
+                where.setdefault(u, (a, j))
+    return where
+
+
+def _dense(border: dict[Exp, list[int]], B: list[Exp], index: dict[Exp, int], n: int) -> array:
+    """The multiplication matrices in :class:`_Compiled`'s layout from the border normal forms."""
+    D = len(B)
+    M = array("I")
+    unit = [0] * D
+    for a in range(n):
+        for b in B:
+            u = _times(b, a)
+            r = index.get(u)
+            if r is None:
+                M.extend(border[u])
+            else:
+                unit[r] = 1
+                M.extend(unit)
+                unit[r] = 0
+    return M
+
+
+LIMIT = 1 << 31
+"""Primes below this go to the compiled steps (products of two entries fit 62 bits)."""
 
 COMPILED_ENTRIES = 1 << 23
 """FGLM modulo ``p`` runs its linear algebra in the compiled kernel (kernel/_fglm.c) when its
@@ -274,30 +399,16 @@ class _Packed:
 
 class _Compiled:
     """:class:`_Packed`'s operations in the compiled kernel (``fglm_step`` of kernel/_fglm.c) on
-    dense arrays: the multiplication matrices, the new standard monomials' normal forms, the
-    rows and their pivots."""
+    dense arrays: the multiplication matrices ``M``, the new standard monomials' normal forms,
+    the rows and their pivots; each visit is recorded in :attr:`steps`."""
 
-    def __init__(self, p: int, B: list[Exp], index: dict[Exp, int], border: dict[Exp, list[int]], n: int) -> None:
-        D = self.D = len(B)
-        self.p, self.index = p, index
-        M = array("I")
-        unit = [0] * D
-        self.where: dict[Exp, tuple[int, int]] = {}  # a border monomial as x_a * B[j]
-        for a in range(n):
-            for j, b in enumerate(B):
-                u = _times(b, a)
-                r = index.get(u)
-                if r is None:
-                    M.extend(border[u])
-                    self.where.setdefault(u, (a, j))
-                else:
-                    unit[r] = 1
-                    M.extend(unit)
-                    unit[r] = 0
-        self.M = M
+    def __init__(self, p: int, index: dict[Exp, int], where: dict[Exp, tuple[int, int]], M: array) -> None:
+        D = self.D = len(index)
+        self.p, self.index, self.where, self.M = p, index, where, M
         self.nfs = array("I", bytes(4 * D * (D + 1)))
         self.piv = array("I", bytes(4 * (2 * D + 1) * (D + 1)))
         self.slot = array("i", bytes(4 * (D + 1)))
+        self.steps = array("i")
 
     def visit(self, t: Exp, i: int, k: int, K: int) -> list[int] | None:
         """As :meth:`_Packed.visit`."""
@@ -308,7 +419,9 @@ class _Compiled:
             mode, (a, b) = 1, self.where[t]
         else:
             mode, a, b = 2, i, k
-        return FGLM_STEP(self.p, self.D, K, self.M, self.nfs, self.piv, self.slot, mode, a, b)
+        tail = STEP(self.p, self.D, K, self.M, self.nfs, self.piv, self.slot, mode, a, b)
+        self.steps.extend((mode, a, b, tail is not None))
+        return tail
 
 
 def _times(e: Exp, i: int) -> Exp:
@@ -400,8 +513,12 @@ def fglm_qq(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: Mono
 
 def _conversions(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder, B: list[Exp]):
     """``(p, conversion modulo p)`` at successive primes, the unlucky ones skipped, within five
-    primes that divide no denominator."""
+    primes that divide no denominator.  The border's structure is found once; after the first
+    conversion with the compiled steps the others replay its visits (:func:`replay`), in full
+    again where a visit turns out otherwise."""
     from .modular import primes
+    structure = Border.of(basis, source, B) if STEP is not None else None
+    first = None
     tried = 0
     for p in primes(20240917):
         mod = _mod(basis, p)
@@ -410,10 +527,15 @@ def _conversions(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target:
         tried += 1
         if tried > 5:
             return
-        try:
-            yield p, fglm_modp(mod, source, target, p, B=B)
-        except Unlucky:
-            continue
+        conv = replay(first, mod, structure, p) if first is not None and p < LIMIT else None
+        if conv is None:
+            try:
+                conv = fglm_modp(mod, source, target, p, B, structure)
+            except Unlucky:
+                continue
+        if first is None and conv.steps is not None and structure is not None:
+            first = conv
+        yield p, conv
 
 
 def _lifted(runs, done: list[Conversion], basis: Sequence[dict[Exp, Any]], source: MonomialOrder,
