@@ -86,17 +86,31 @@ def staircase(lms: Sequence[Exp], nvars: int) -> list[Exp]:
     if len(pure) < nvars:
         raise NotZeroDimensional("FGLM needs a zero-dimensional ideal")
     one = (0,) * nvars
-    out = [one]
-    std = {one}
-    for b in out:  # grows while it is read
+    w, unit = _digits(lms, nvars, 2)
+    leads = {_packed(e, w) for e in lmset}
+    out, packs = [one], [0]
+    std = {0}
+    for b, x in zip(out, packs):  # both grow while they are read
         for i in range(nvars):
-            t = b[:i] + (b[i] + 1,) + b[i + 1:]
-            if t in std or t in lmset:
+            t = x + unit[i]
+            if t in std or t in leads:
                 continue
-            if all(t[:j] + (t[j] - 1,) + t[j + 1:] in std for j in range(nvars) if t[j] and j != i):
+            if all(t - unit[j] in std for j in range(nvars) if b[j] and j != i):
                 std.add(t)
-                out.append(t)
+                packs.append(t)
+                out.append(b[:i] + (b[i] + 1,) + b[i + 1:])
     return out
+
+
+def _digits(monomials: Sequence[Exp], nvars: int, room: int) -> tuple[int, list[int]]:
+    """Exponents as the base ``2^w`` digits of an integer (:func:`_packed`), with room for
+    exponents up to ``room`` above those of ``monomials``: ``w`` and the variables' units."""
+    w = (max(max(e) for e in monomials) + room + 1).bit_length()
+    return w, [1 << (w * i) for i in range(nvars)]
+
+
+def _packed(e: Exp, w: int) -> int:
+    return sum(a << (w * i) for i, a in enumerate(e))
 
 
 def border_forms(basis: Sequence[dict[Exp, int]], order: MonomialOrder, B: list[Exp], p: int) -> dict[Exp, list[int]]:
@@ -192,22 +206,23 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
         lin = _Packed(p, B, index, border_forms(basis, source, B, p), n)
     tkey = target.key
     one = (0,) * n
+    w, unit = _digits([(D,) * n], n, 0)  # a visited monomial has no exponent above D
     out = Conversion([], [], [], [], [], getattr(lin, "steps", None))
-    heap = [(tkey(one), one, -1, -1)]
-    seen = {one}
+    heap = [(tkey(one), 0, one, -1, -1)]  # (key, packed monomial, monomial, i, k): x_i * stairs[k]
+    seen = {0}
     # monomials visited and found in the new leading ideal; each visited t = x_i s (s standard)
     # has its other quotients t / x_j = x_i (s / x_j) visited before it (smaller, pushed when
     # the standard s / x_j was found), so t is in the ideal iff one of them is
-    inside: set[Exp] = set()
+    inside: set[int] = set()
     while heap:
-        _, t, i, k = heapq.heappop(heap)
-        if any(t[j] and t[:j] + (t[j] - 1,) + t[j + 1:] in inside for j in range(n) if j != i):
-            inside.add(t)
+        _, x, t, i, k = heapq.heappop(heap)
+        if any(t[j] and x - unit[j] in inside for j in range(n) if j != i):
+            inside.add(x)
             continue
         K = len(out.stairs)
         tail = lin.visit(t, i, k, K)
         if tail is not None:
-            inside.add(t)
+            inside.add(x)
             out.lms.append(t)
             out.lm_from.append((i, k))
             out.tails.append(tail + [0] * (D - K))
@@ -215,10 +230,11 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
         out.stairs.append(t)
         out.stair_from.append((i, k))
         for j in range(n):
-            u = _times(t, j)
-            if u not in seen:
-                seen.add(u)
-                heapq.heappush(heap, (tkey(u), u, j, K))
+            y = x + unit[j]
+            if y not in seen:
+                seen.add(y)
+                u = t[:j] + (t[j] + 1,) + t[j + 1:]
+                heapq.heappush(heap, (tkey(u), y, u, j, K))
     if len(out.stairs) != D:
         raise Unlucky("the new staircase has the wrong size")
     return out
@@ -252,43 +268,47 @@ class Border:
     def of(cls, basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> Border | None:
         """The structure for ``basis`` (None if it is not reduced)."""
         n, key = order.nvars, order.key
-        index = {b: j for j, b in enumerate(B)}
-        where: dict[Exp, tuple[int, int]] = {}  # each border monomial as x_a B[j], first reached
-        for a in range(n):
-            for j, b in enumerate(B):
-                u = _times(b, a)
-                if u not in index and u not in where:
-                    where[u] = (a, j)
-        order_of = {t: q for q, t in enumerate(sorted(where, key=key))}
         D = len(B)
-        cols = array("i", bytes(4 * n * D))
+        w, unit = _digits(B, n, 2)
+        packs = [_packed(b, w) for b in B]
+        index = {x: j for j, x in enumerate(packs)}
+        reached: dict[int, tuple[int, int]] = {}  # each border monomial (packed) as x_a B[j], first reached
         for a in range(n):
-            for j, b in enumerate(B):
-                u = _times(b, a)
-                r = index.get(u)
-                cols[a * D + j] = r if r is not None else -1 - order_of[u]
-        lead = {max(g, key=key): k for k, g in enumerate(basis)}
+            ua = unit[a]
+            for j, x in enumerate(packs):
+                u = x + ua
+                if u not in index and u not in reached:
+                    reached[u] = (a, j)
+        exps = {u: _times(B[j], a) for u, (a, j) in reached.items()}
+        border = sorted(reached, key=lambda u: key(exps[u]))
+        order_of = {u: q for q, u in enumerate(border)}
+        cols = array("i", [index[u] if u in index else ~order_of[u] for ua in unit for u in (x + ua for x in packs)])
+        stairs = dict(zip(B, range(D)))
+        lead, tails = {}, []  # a reduced basis: one term of each element is not standard, its leading one
+        for k, g in enumerate(basis):
+            outside = [e for e in g if e not in stairs]
+            if len(outside) != 1 or outside[0] in lead:
+                return None
+            lead[outside[0]] = k
+            tails.append([(stairs[e], e) for e in g if e != outside[0]])
         plan, tidx, terms = array("i"), array("i"), []
-        for t in order_of:  # increasing
+        for q, u in enumerate(border):
+            t = exps[u]
             k = lead.get(t)
             if k is not None:
                 start = len(tidx)
-                for e in basis[k]:
-                    if e != t:
-                        j = index.get(e)
-                        if j is None:
-                            return None
-                        tidx.append(j)
-                        terms.append((k, e))
+                for j, e in tails[k]:
+                    tidx.append(j)
+                    terms.append((k, e))
                 plan.extend((0, start, len(tidx)))
                 continue
-            i = next((i for i in range(n) if t[i] and _divided(t, i) in order_of), None)
+            i = next((i for i in range(n) if t[i] and u - unit[i] in order_of), None)
             if i is None:  # a minimal generator of lt(I) leads no element
                 return None
-            plan.extend((1, i, order_of[_divided(t, i)]))
-        if len(lead) != len(basis) or len(terms) != sum(len(g) - 1 for g in basis):
+            plan.extend((1, i, order_of[u - unit[i]]))
+        if len(lead) != sum(1 for u in border if exps[u] in lead):
             return None
-        return cls(B, cols, plan, tidx, terms, where)
+        return cls(B, cols, plan, tidx, terms, {exps[u]: r for u, r in reached.items()})
 
     def matrices(self, basis: Sequence[dict[Exp, int]], p: int) -> array:
         """The multiplication matrices modulo ``p`` (the layout of :class:`_Compiled`) for this
@@ -299,10 +319,6 @@ class Border:
         M = array("I", bytes(4 * n * D * D))
         MATRICES(p, D, n, self.cols, self.plan, self.tidx, vals, M)
         return M
-
-
-def _divided(t: Exp, i: int) -> Exp:
-    return t[:i] + (t[i] - 1,) + t[i + 1:]
 
 
 def _where(border: dict[Exp, list[int]], B: list[Exp], n: int) -> dict[Exp, tuple[int, int]]:
