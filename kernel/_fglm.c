@@ -321,10 +321,238 @@ done:
     return result;
 }
 
+/* An open-addressing table of packed monomials (nonzero keys stored as key + 1). */
+typedef struct {
+    uint64_t *keys;
+    int64_t *vals;
+    size_t mask;
+} Table;
+
+static int table_init(Table *t, size_t want)
+{
+    size_t size = 16;
+    while (size < 2 * want + 2)
+        size <<= 1;
+    t->keys = calloc(size, sizeof(uint64_t));
+    t->vals = calloc(size, sizeof(int64_t));
+    t->mask = size - 1;
+    return t->keys && t->vals;
+}
+
+static int64_t *table_slot(Table *t, uint64_t key, int insert)
+{
+    size_t h = (size_t)((key + 1) * 0x9E3779B97F4A7C15ULL >> 17) & t->mask;
+    while (t->keys[h]) {
+        if (t->keys[h] == key + 1)
+            return t->vals + h;
+        h = (h + 1) & t->mask;
+    }
+    if (!insert)
+        return NULL;
+    t->keys[h] = key + 1;
+    return t->vals + h;
+}
+
+/* A node of the walk's heap: a monomial x_i * stairs[k], its key W e (n entries) kept apart. */
+typedef struct {
+    uint64_t mono;
+    int32_t i, k;
+} Node;
+
+static int key_less(const int64_t *a, const int64_t *b, Py_ssize_t n)
+{
+    for (Py_ssize_t r = 0; r < n; r++)
+        if (a[r] != b[r])
+            return a[r] < b[r];
+    return 0;
+}
+
+/* fglm_walk(p, D, n, w, W, M, codes_keys, codes_vals, tails, steps) runs fglm_modp's visits in C:
+ * monomials packed with w bits a variable, visited in increasing order of the keys W e (W the
+ * target's nonnegative n x n weight matrix, int64 row by row); codes_keys/codes_vals say which
+ * packed monomials are B[j] (value j) or the border monomial x_a * B[j] (value D + a*D + j).
+ * Fills tails (L rows of D uint32) and steps (4 int32 a visit) and returns (stairs, stair_from,
+ * lms, lm_from, visits) with packed monomials and flat (i, k) pairs, or None when the new
+ * staircase outgrows D (an unlucky prime). */
+static PyObject *fglm_walk(PyObject *self, PyObject *args)
+{
+    unsigned long long p_;
+    Py_ssize_t D, n, w;
+    Py_buffer Wb, M, ck, cv, tails, steps;
+    if (!PyArg_ParseTuple(args, "Knnny*y*y*y*w*w*", &p_, &D, &n, &w, &Wb, &M, &ck, &cv, &tails, &steps))
+        return NULL;
+    const int64_t *W = Wb.buf;
+    const uint64_t *CK = ck.buf;
+    const int64_t *CV = cv.buf;
+    const Py_ssize_t ncodes = ck.len / 8, cap = n * (D + 1) + 1; /* visits at most */
+    const Py_ssize_t Wd = 2 * D + 1;
+    PyObject *result = NULL;
+    Table codes = {0}, marks = {0}; /* marks: 1 seen, 2 inside the new leading ideal */
+    Node *nodes = NULL;
+    int64_t *keys = NULL;
+    Py_ssize_t *heap = NULL;
+    uint32_t *N = NULL, *R = NULL;
+    int32_t *slot = NULL;
+    uint64_t *x = NULL, *st = NULL, *lm = NULL;
+    int32_t *stf = NULL, *lmf = NULL;
+    if (Wb.len / 8 < n * n || cv.len / 8 < ncodes || n * w > 64 || (Py_ssize_t)(tails.len / 4) < cap * D
+        || (Py_ssize_t)(steps.len / 16) < cap || (Py_ssize_t)(M.len / 4) < n * D * D) {
+        PyErr_SetString(PyExc_ValueError, "fglm_walk: arrays too small");
+        goto done;
+    }
+    nodes = malloc((size_t)cap * sizeof(Node));
+    keys = malloc((size_t)(cap * n + 1) * sizeof(int64_t));
+    heap = malloc((size_t)cap * sizeof(Py_ssize_t));
+    N = calloc((size_t)(D * (D + 1) + 1), sizeof(uint32_t));
+    R = calloc((size_t)(Wd * (D + 1)), sizeof(uint32_t));
+    slot = calloc((size_t)(D + 1), sizeof(int32_t));
+    x = malloc((size_t)Wd * sizeof(uint64_t));
+    st = malloc((size_t)(D + 1) * sizeof(uint64_t));
+    stf = malloc((size_t)(2 * D + 2) * sizeof(int32_t));
+    lm = malloc((size_t)cap * sizeof(uint64_t));
+    lmf = malloc((size_t)(2 * cap) * sizeof(int32_t));
+    if (!nodes || !keys || !heap || !N || !R || !slot || !x || !st || !stf || !lm || !lmf
+        || !table_init(&codes, (size_t)ncodes) || !table_init(&marks, (size_t)cap)) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t c = 0; c < ncodes; c++)
+        *table_slot(&codes, CK[c], 1) = CV[c];
+    const uint64_t field = (w >= 64) ? ~0ULL : ((1ULL << w) - 1);
+    Py_ssize_t used = 0, size = 0, K = 0, L = 0, visits = 0;
+    /* push 1 */
+    nodes[0].mono = 0;
+    nodes[0].i = nodes[0].k = -1;
+    memset(keys, 0, (size_t)n * sizeof(int64_t));
+    heap[size++] = used++;
+    *table_slot(&marks, 0, 1) = 1;
+    while (size) {
+        const Py_ssize_t top = heap[0];
+        heap[0] = heap[--size];
+        for (Py_ssize_t h = 0;;) { /* sift down */
+            Py_ssize_t l = 2 * h + 1, m = h;
+            if (l < size && key_less(keys + heap[l] * n, keys + heap[m] * n, n))
+                m = l;
+            if (l + 1 < size && key_less(keys + heap[l + 1] * n, keys + heap[m] * n, n))
+                m = l + 1;
+            if (m == h)
+                break;
+            Py_ssize_t tmp = heap[h]; heap[h] = heap[m]; heap[m] = tmp;
+            h = m;
+        }
+        const uint64_t mono = nodes[top].mono;
+        const int32_t i = nodes[top].i, k = nodes[top].k;
+        int inside = 0;
+        for (Py_ssize_t j = 0; j < n && !inside; j++) {
+            if (j == i || !((mono >> (w * j)) & field))
+                continue;
+            int64_t *v = table_slot(&marks, mono - (1ULL << (w * j)), 0);
+            inside = v && (*v & 2);
+        }
+        if (inside) {
+            *table_slot(&marks, mono, 1) |= 2;
+            continue;
+        }
+        int mode;
+        Py_ssize_t a, b;
+        const int64_t *code = table_slot(&codes, mono, 0);
+        if (code && *code < D) {
+            mode = 0, a = *code, b = 0;
+        } else if (code) {
+            mode = 1, a = (*code - D) / D, b = (*code - D) % D;
+        } else {
+            if (i < 0 || k < 0 || k >= K) {
+                PyErr_SetString(PyExc_ValueError, "fglm_walk: a monomial neither in B nor on the border");
+                goto done;
+            }
+            mode = 2, a = i, b = k;
+        }
+        memset(x, 0, (size_t)Wd * sizeof(uint64_t));
+        const Py_ssize_t s0 = step(p_, D, K, M.buf, N, R, slot, mode, a, b, x);
+        int32_t *rec = (int32_t *)steps.buf + 4 * visits++;
+        rec[0] = mode, rec[1] = (int32_t)a, rec[2] = (int32_t)b, rec[3] = s0 < 0;
+        if (s0 < 0) {
+            *table_slot(&marks, mono, 1) |= 2;
+            uint32_t *t = (uint32_t *)tails.buf + L * D;
+            for (Py_ssize_t c = 0; c < D; c++)
+                t[c] = c < K ? (uint32_t)x[D + c] : 0;
+            lm[L] = mono, lmf[2 * L] = i, lmf[2 * L + 1] = k;
+            L++;
+            continue;
+        }
+        if (K == D) { /* the new staircase outgrows the old one: an unlucky prime */
+            Py_INCREF(Py_None);
+            result = Py_None;
+            goto done;
+        }
+        st[K] = mono, stf[2 * K] = i, stf[2 * K + 1] = k;
+        K++;
+        for (Py_ssize_t j = 0; j < n; j++) {
+            const uint64_t y = mono + (1ULL << (w * j));
+            if (((y >> (w * j)) & field) == 0 || used >= cap) {
+                PyErr_SetString(PyExc_ValueError, "fglm_walk: an exponent outgrows its digits");
+                goto done;
+            }
+            int64_t *v = table_slot(&marks, y, 1);
+            if (*v & 1)
+                continue;
+            *v |= 1;
+            Node *nd = nodes + used;
+            nd->mono = y, nd->i = (int32_t)j, nd->k = (int32_t)(K - 1);
+            int64_t *ky = keys + used * n;
+            for (Py_ssize_t r = 0; r < n; r++)
+                ky[r] = keys[top * n + r] + W[r * n + j];
+            Py_ssize_t h = size++; /* sift up */
+            heap[h] = used++;
+            while (h) {
+                Py_ssize_t parent = (h - 1) / 2;
+                if (!key_less(keys + heap[h] * n, keys + heap[parent] * n, n))
+                    break;
+                Py_ssize_t tmp = heap[h]; heap[h] = heap[parent]; heap[parent] = tmp;
+                h = parent;
+            }
+        }
+    }
+    {
+        PyObject *s_list = PyList_New(K), *sf = PyList_New(2 * K), *l_list = PyList_New(L), *lf = PyList_New(2 * L);
+        if (!s_list || !sf || !l_list || !lf) {
+            Py_XDECREF(s_list); Py_XDECREF(sf); Py_XDECREF(l_list); Py_XDECREF(lf);
+            goto done;
+        }
+        for (Py_ssize_t c = 0; c < K; c++) {
+            PyList_SET_ITEM(s_list, c, PyLong_FromUnsignedLongLong(st[c]));
+            PyList_SET_ITEM(sf, 2 * c, PyLong_FromLong(stf[2 * c]));
+            PyList_SET_ITEM(sf, 2 * c + 1, PyLong_FromLong(stf[2 * c + 1]));
+        }
+        for (Py_ssize_t c = 0; c < L; c++) {
+            PyList_SET_ITEM(l_list, c, PyLong_FromUnsignedLongLong(lm[c]));
+            PyList_SET_ITEM(lf, 2 * c, PyLong_FromLong(lmf[2 * c]));
+            PyList_SET_ITEM(lf, 2 * c + 1, PyLong_FromLong(lmf[2 * c + 1]));
+        }
+        if (PyErr_Occurred()) { /* an int not made: lists with holes */
+            Py_DECREF(s_list); Py_DECREF(sf); Py_DECREF(l_list); Py_DECREF(lf);
+            goto done;
+        }
+        result = Py_BuildValue("(NNNNn)", s_list, sf, l_list, lf, visits);
+    }
+done:
+    free(codes.keys); free(codes.vals); free(marks.keys); free(marks.vals);
+    free(nodes); free(keys); free(heap); free(N); free(R); free(slot); free(x);
+    free(st); free(stf); free(lm); free(lmf);
+    PyBuffer_Release(&Wb);
+    PyBuffer_Release(&M);
+    PyBuffer_Release(&ck);
+    PyBuffer_Release(&cv);
+    PyBuffer_Release(&tails);
+    PyBuffer_Release(&steps);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p."},
     {"fglm_matrices", fglm_matrices, METH_VARARGS, "The multiplication matrices modulo p from a border plan."},
     {"fglm_replay", fglm_replay, METH_VARARGS, "A conversion's steps repeated at another prime."},
+    {"fglm_walk", fglm_walk, METH_VARARGS, "A whole conversion modulo p: the visits and their steps."},
     {NULL, NULL, 0, NULL},
 };
 

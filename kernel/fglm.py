@@ -41,13 +41,13 @@ from .f4 import F4, PackingOverflow
 from .f4_rows import compiled
 from .f4_vectors import Vectors, support
 from .fglm_solve import solve_qq
-from .monomials import Packing
+from .monomials import Packing, nonnegative_matrix
 from .order import Exp, MonomialOrder
 
 try:
-    from ._fglm import fglm_matrices as MATRICES, fglm_replay as REPLAY, fglm_step as STEP
+    from ._fglm import fglm_matrices as MATRICES, fglm_replay as REPLAY, fglm_step as STEP, fglm_walk as WALK
 except ImportError:  # no compiler at install: the packed Python integers
-    MATRICES = REPLAY = STEP = None
+    MATRICES = REPLAY = STEP = WALK = None
 
 
 @dataclass
@@ -198,7 +198,10 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
         if structure is None:
             structure = Border.of(basis, source, B)
         if structure is not None:
-            lin = _Compiled(p, index, structure.where, structure.matrices(basis, p))
+            M = structure.matrices(basis, p)
+            if n * structure.w <= 64:
+                return _walked(structure, M, target, p)
+            lin = _Compiled(p, index, structure.where, M)
         else:  # a basis that is not reduced
             border = border_forms(basis, source, B, p)
             lin = _Compiled(p, index, _where(border, B, n), _dense(border, B, index, n))
@@ -252,24 +255,54 @@ def replay(first: Conversion, basis: Sequence[dict[Exp, int]], structure: Border
                       first.stairs, first.stair_from, first.lm_from, first.steps)
 
 
+def _walked(structure: Border, M: array, target: MonomialOrder, p: int) -> Conversion:
+    """:func:`fglm_modp`'s visits all in C (``fglm_walk`` of kernel/_fglm.c, the same steps in
+    the same order) on monomials packed as :attr:`Border.w`-bit digits, the target ordering as
+    its nonnegative weight matrix."""
+    B, n, w = structure.B, structure.n, structure.w
+    D = len(B)
+    cap = n * (D + 1) + 1
+    tails, steps = array("I", bytes(4 * cap * D)), array("i", bytes(16 * cap))
+    W = array("q", [v for row in nonnegative_matrix(target) for v in row])
+    got = WALK(p, D, n, w, W, M, structure.code_keys, structure.code_values, tails, steps)
+    if got is None or len(got[0]) != D:
+        raise Unlucky("the new staircase has the wrong size")
+    stairs, stair_from, lms, lm_from, visits = got
+    mask = (1 << w) - 1
+    shifts = [w * i for i in range(n)]
+    return Conversion([tuple((x >> s) & mask for s in shifts) for x in lms],
+                      [tails[D * r:D * (r + 1)].tolist() for r in range(len(lms))],
+                      [tuple((x >> s) & mask for s in shifts) for x in stairs],
+                      list(zip(stair_from[::2], stair_from[1::2])), list(zip(lm_from[::2], lm_from[1::2])),
+                      steps[:4 * visits])
+
+
 class Border:
     """The part of the multiplication matrices of ``K[x]/I`` that is the same at every prime, from
     a reduced Gröbner basis of ``I`` with the standard monomials ``B``: which monomial each
     column ``x_a B[j]`` is, and how the normal form of each border monomial (in increasing
     order) follows from earlier ones -- minus a basis element's tail for its leading monomial,
     else ``x_i`` times an earlier border monomial's form (see ``fglm_matrices`` in
-    kernel/_fglm.c).  :meth:`matrices` fills in the numbers at a prime."""
+    kernel/_fglm.c).  :meth:`matrices` fills in the numbers at a prime.  Monomials are packed as
+    digits of :attr:`w` bits (room for the exponents up to ``D`` a conversion visits);
+    :attr:`code_keys` and :attr:`code_values` say which packed monomial is ``B[j]`` (``j``) or
+    ``x_a B[j]`` on the border (``D + a D + j``)."""
 
-    def __init__(self, B: list[Exp], cols: array, plan: array, tidx: array, terms: list[tuple[int, Exp]],
-                 where: dict[Exp, tuple[int, int]]) -> None:
-        self.B, self.cols, self.plan, self.tidx, self.terms, self.where = B, cols, plan, tidx, terms, where
+    def __init__(self, B: list[Exp], n: int, w: int, cols: array, plan: array, tidx: array,
+                 terms: list[tuple[int, Exp]], reached: dict[int, tuple[int, int]], exps: dict[int, Exp],
+                 packs: list[int]) -> None:
+        D = len(B)
+        self.B, self.n, self.w, self.cols, self.plan, self.tidx, self.terms = B, n, w, cols, plan, tidx, terms
+        self.where = {exps[u]: r for u, r in reached.items()}
+        self.code_keys = array("Q", packs + list(reached))
+        self.code_values = array("q", list(range(D)) + [D + a * D + j for a, j in reached.values()])
 
     @classmethod
     def of(cls, basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> Border | None:
         """The structure for ``basis`` (None if it is not reduced)."""
         n, key = order.nvars, order.key
         D = len(B)
-        w, unit = _digits(B, n, 2)
+        w, unit = _digits([(D,) * n], n, 0)
         packs = [_packed(b, w) for b in B]
         index = {x: j for j, x in enumerate(packs)}
         reached: dict[int, tuple[int, int]] = {}  # each border monomial (packed) as x_a B[j], first reached
@@ -308,14 +341,14 @@ class Border:
             plan.extend((1, i, order_of[u - unit[i]]))
         if len(lead) != sum(1 for u in border if exps[u] in lead):
             return None
-        return cls(B, cols, plan, tidx, terms, {exps[u]: r for u, r in reached.items()})
+        return cls(B, n, w, cols, plan, tidx, terms, reached, exps, packs)
 
     def matrices(self, basis: Sequence[dict[Exp, int]], p: int) -> array:
         """The multiplication matrices modulo ``p`` (the layout of :class:`_Compiled`) for this
         structure's basis with coefficients ``basis`` (monic, ints mod ``p``, same elements in
         the same positions)."""
         vals = array("I", [(p - basis[k][e]) % p for k, e in self.terms])
-        D, n = len(self.B), len(self.cols) // max(len(self.B), 1)
+        D, n = len(self.B), self.n
         M = array("I", bytes(4 * n * D * D))
         MATRICES(p, D, n, self.cols, self.plan, self.tidx, vals, M)
         return M
