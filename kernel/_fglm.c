@@ -1,6 +1,6 @@
 /* FGLM's linear algebra modulo p < 2^31 (kernel/fglm.py ``fglm_modp``): the module
- * mech.kernel._fglm (built with FGLM_MODULE defined); ``fglm_step`` is also part of the optional
- * extension mech.kernel._f4rows.
+ * mech.kernel._fglm (built with FGLM_MODULE defined, with kernel/_fglm_proof.c); ``fglm_step`` is
+ * also part of the optional extension mech.kernel._f4rows.
  *
  * fglm_matrices(p, D, n, cols, plan, tidx, tval, M) fills the multiplication matrices M (n*D
  * columns of D entries, uint32) of the quotient by a reduced Groebner basis with standard
@@ -548,11 +548,14 @@ done:
     return result;
 }
 
+PyObject *fglm_reduces(PyObject *self, PyObject *args); /* kernel/_fglm_proof.c */
+
 static PyMethodDef methods[] = {
     {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p."},
     {"fglm_matrices", fglm_matrices, METH_VARARGS, "The multiplication matrices modulo p from a border plan."},
     {"fglm_replay", fglm_replay, METH_VARARGS, "A conversion's steps repeated at another prime."},
     {"fglm_walk", fglm_walk, METH_VARARGS, "A whole conversion modulo p: the visits and their steps."},
+    {"fglm_reduces", fglm_reduces, METH_VARARGS, "Whether integer polynomials top-reduce to 0 (see kernel/_fglm_proof.c)."},
     {NULL, NULL, 0, NULL},
 };
 

@@ -45,9 +45,10 @@ from .monomials import Packing, nonnegative_matrix
 from .order import Exp, MonomialOrder
 
 try:
-    from ._fglm import fglm_matrices as MATRICES, fglm_replay as REPLAY, fglm_step as STEP, fglm_walk as WALK
+    from ._fglm import fglm_matrices as MATRICES, fglm_reduces as REDUCES, fglm_replay as REPLAY
+    from ._fglm import fglm_step as STEP, fglm_walk as WALK
 except ImportError:  # no compiler at install: the packed Python integers
-    MATRICES = REPLAY = STEP = WALK = None
+    MATRICES = REDUCES = REPLAY = STEP = WALK = None
 
 
 @dataclass
@@ -638,7 +639,32 @@ def _proved(candidate: list[dict[Exp, Any]], basis: Sequence[dict[Exp, Any]], so
         top = tkey(lm)
         if g[lm] != 1 or any(e != lm and (e not in std or tkey(e) > top) for e in g):
             return False
-    return reduce_to_zero(list(basis), candidate, source)
+    got = _reduces_compiled(basis, candidate, source)
+    return reduce_to_zero(list(basis), candidate, source) if got is None else got
+
+
+def _reduces_compiled(basis: Sequence[dict[Exp, Any]], polys: Sequence[dict[Exp, Any]],
+                      order: MonomialOrder) -> bool | None:
+    """:func:`.hilbert_compiled.reduce_to_zero` in C on 64-bit integers (``fglm_reduces`` of
+    kernel/_fglm_proof.c, the same fraction-free steps); None without the extension or when a
+    number leaves 64 bits (then Python's integers decide)."""
+    from .modular import primitive
+    if REDUCES is None:
+        return None
+    flat = []
+    for group in (basis, polys):
+        ints = [primitive(f) for f in group]
+        offsets = array("q", [0])
+        for f in ints:
+            offsets.append(offsets[-1] + len(f))
+        try:
+            coefs = array("q", [c for f in ints for c in f.values()])
+        except OverflowError:
+            return None
+        flat += [offsets, array("i", [a for f in ints for e in f for a in e]), coefs]
+    W = array("q", [v for row in nonnegative_matrix(order) for v in row])
+    got = REDUCES(order.nvars, W, *flat)
+    return None if got < 0 else bool(got)
 
 
 def border_forms_qq(basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> dict[Exp, list]:
