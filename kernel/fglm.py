@@ -497,12 +497,16 @@ def as_dicts(conv: Conversion, one: Any) -> list[dict[Exp, Any]]:
     return out
 
 
-def fglm_zp(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder, p: int) -> list[dict]:
+def fglm_zp(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder, p: int,
+            leads: Sequence[Exp] | None = None) -> list[dict]:
     """The reduced basis for ``target`` over Z/p (``nmod`` coefficients), increasing leading
-    monomials, from a reduced basis for ``source``."""
-    conv = fglm_modp([{e: int(c) for e, c in g.items()} for g in basis], source, target, p)
-    conv.tails = [[flint.nmod(c, p) for c in tl] for tl in conv.tails]
-    return as_dicts(conv, flint.nmod(1, p))
+    monomials, from a reduced basis for ``source`` (``leads``: its leading exponents, if known)."""
+    key = source.key
+    B = sorted(staircase(leads if leads is not None else [max(g, key=key) for g in basis], source.nvars), key=key)
+    conv = fglm_modp([{e: int(c) for e, c in g.items()} for g in basis], source, target, p, B)
+    one = flint.nmod(1, p)
+    return [{lm: one, **{s: flint.nmod(c, p) for s, c in zip(conv.stairs, tail) if c}}
+            for lm, tail in zip(conv.lms, conv.tails)]
 
 
 # --- over QQ -------------------------------------------------------------------------------
@@ -536,14 +540,18 @@ LIFT_PRIMES = 3
 """See :data:`LIFT_HEIGHT`."""
 
 
-def fglm_qq(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder) -> list[dict]:
+def fglm_qq(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder,
+            leads: Sequence[Exp] | None = None) -> list[dict]:
     """The reduced basis for ``target`` over QQ (``fmpq`` coefficients), increasing leading
     monomials, of the zero-dimensional ideal with the reduced basis ``basis`` for ``source``
-    (see the module docstring): lifted from primes and proved, else converted exactly."""
+    (``leads``: its leading exponents, if known; see the module docstring): lifted from primes
+    and proved, else converted exactly."""
     from .modular import ModularFailure
     n = source.nvars
     key = source.key
-    basis = [{max(g, key=key): g[max(g, key=key)], **g} for g in basis]  # leading exponent first
+    if leads is None:
+        leads = [max(g, key=key) for g in basis]
+    basis = [{lm: g[lm], **g} for lm, g in zip(leads, basis)]  # leading exponent first
     B = sorted(staircase([next(iter(g)) for g in basis], n), key=key)
     if not B:
         return [{(0,) * n: flint.fmpq(1)}]
