@@ -200,7 +200,7 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
             structure = Border.of(basis, source, B)
         if structure is not None:
             M = structure.matrices(basis, p)
-            if n * structure.w <= 64:
+            if WALK is not None and n * structure.w <= 64:
                 return _walked(structure, M, target, p)
             lin = _Compiled(p, index, structure.where, M)
         else:  # a basis that is not reduced
@@ -347,8 +347,8 @@ class Border:
     def matrices(self, basis: Sequence[dict[Exp, int]], p: int) -> array:
         """The multiplication matrices modulo ``p`` (the layout of :class:`_Compiled`) for this
         structure's basis with coefficients ``basis`` (monic, ints mod ``p``, same elements in
-        the same positions)."""
-        vals = array("I", [(p - basis[k][e]) % p for k, e in self.terms])
+        the same positions, terms missing counted as 0)."""
+        vals = array("I", [(p - basis[k].get(e, 0)) % p for k, e in self.terms])
         D, n = len(self.B), self.n
         M = array("I", bytes(4 * n * D * D))
         MATRICES(p, D, n, self.cols, self.plan, self.tidx, vals, M)
