@@ -3,26 +3,33 @@ basis in another one (Faugère, Gianni, Lazard, Mora, J. Symb. Comput. 16, 1993)
 
 ``K[x]/I`` has the standard monomials ``B`` of the known basis ``G`` as a ``K``-basis
 (``D = |B|``).  The normal forms of the *border* ``{x_i b : b in B} \\ B`` give the
-multiplication matrices; they come out of one F4 matrix (:meth:`.f4.F4._matrix`): each border
-monomial's row ``u g`` is reduced by back substitution, and its reduced tail is minus its normal
-form.  Then the monomials are visited in increasing target order, each one ``x_i m`` with ``m`` a
-new standard monomial: its normal form is ``M_i NF(m)`` (or read off directly for ``B`` and the
-border), and it is reduced against the normal forms of the new standard monomials so far.  A
-dependent monomial gives an element of the new basis (tail: the dependency, on new standard
-monomials only, so the basis comes out reduced); an independent one is a new standard monomial.
+multiplication matrices.  Then the monomials are visited in increasing target order, each one
+``x_i m`` with ``m`` a new standard monomial: its normal form is ``M_i NF(m)`` (or read off
+directly for ``B`` and the border), and it is reduced against the normal forms of the new
+standard monomials so far.  A dependent monomial gives an element of the new basis (tail: the
+dependency, on new standard monomials only, so the basis comes out reduced); an independent one
+is a new standard monomial.  Whether a visited monomial lies in the new leading ideal is read
+off its quotients by the variables (visited before it), not tested against every leading
+monomial.
 
-Vectors are packed modulo ``p`` as in :mod:`.f4_vectors`: slot ``j < D`` holds the coefficient
-of ``B[j]``; slot ``D + k`` records how a row combines the normal forms of the new standard
-monomials (the ``k``-th one), so a dependency is read off when the low slots vanish.  With
-the compiled extension the same steps run in C on dense arrays (``kernel/_fglm.c``,
-:class:`_Compiled`).  Whether a visited monomial lies in the new leading ideal is read off its
-quotients by the variables (visited before it), not tested against every leading monomial.
+With the compiled module ``_fglm`` (kernel/_fglm.c) and a reduced ``G``, the border's
+:class:`Border` plan -- which monomial each column ``x_a B[j]`` is; the normal form of each
+border monomial, in increasing order, as minus a basis element's tail or as ``x_i`` times an
+earlier border monomial's form -- is found once and depends on the monomials only; C fills the
+matrices from it at each prime and walks the whole new staircase (:func:`_walked`), and at
+further primes repeats the first walk's steps without the walk (:func:`replay`).  Otherwise
+the border normal forms come out of one F4 matrix (:meth:`.f4.F4._matrix`: each border
+monomial's row ``u g`` reduced by back substitution, its reduced tail minus its normal form) and
+the walk runs in Python, its steps in C on dense arrays (:class:`_Compiled`) or on vectors
+packed modulo ``p`` as in :mod:`.f4_vectors` (:class:`_Packed`: slot ``j < D`` holds the
+coefficient of ``B[j]``; slot ``D + k`` records how a row combines the normal forms of the new
+standard monomials, so a dependency is read off when the low slots vanish).
 
 Over QQ the conversion runs modulo primes.  From a source basis of small coefficients
 (:data:`LIFT_HEIGHT`) the conversions are lifted by Chinese remaindering and rational
 reconstruction and the lift is proved (:func:`_proved`: its elements reduce to 0 by the source
-basis exactly, so they lie in ``I``, and its leading monomials leave ``D`` standard monomials,
-so they generate ``lt(I)``).  Otherwise, or when that fails, the conversion found modulo a prime
+basis exactly -- in C on 64-bit integers while they fit, kernel/_fglm_proof.c -- so they lie in
+``I``, and its leading monomials leave ``D`` standard monomials, so they generate ``lt(I)``).  Otherwise, or when that fails, the conversion found modulo a prime
 is redone over QQ (:func:`_exact`): the border normal forms exactly, the normal forms of the new
 standard and leading monomials by the multiplication matrices, one linear solve for the tails.
 """
@@ -532,7 +539,8 @@ primes) and proved (:func:`_proved`); otherwise, past those primes, or when a li
 proof, the exact conversion (:func:`_exact`) takes over.  Measured (session 13): cyclic-5 in
 ``lp``, a source of 8 bits, 70 standard monomials, a target of 18 bits: two conversions modulo p
 2.7 ms each and the proof 2 ms, against the exact conversion's 11 ms more (its border normal
-forms 5 ms, its linear algebra 6 ms): 15.8 -> 10.9 ms.  katsura-4/5 (sources of 32 and 61
+forms 5 ms, its linear algebra 6 ms): 15.8 -> 10.9 ms (session 14, compiled: the first
+conversion 0.3 ms, the replay 0.2, the proof 0.75; the lifted path 3 ms).  katsura-4/5 (sources of 32 and 61
 bits, targets of 251 and 1411 bits) and katsura-6 in (dp(3),dp(4)) (115 bits) lost 4-40 ms
 to four primes that did not lift."""
 
