@@ -39,6 +39,7 @@ import heapq
 from array import array
 from dataclasses import dataclass
 from itertools import chain
+from operator import mul
 from typing import Any, Sequence
 
 import flint
@@ -95,15 +96,20 @@ def staircase(lms: Sequence[Exp], nvars: int) -> list[Exp]:
         raise NotZeroDimensional("FGLM needs a zero-dimensional ideal")
     one = (0,) * nvars
     w, unit = _digits(lms, nvars, 2)
-    leads = {_packed(e, w) for e in lmset}
+    leads = {_packed(e, unit) for e in lmset}
     out, packs = [one], [0]
     std = {0}
     for b, x in zip(out, packs):  # both grow while they are read
+        lower = [x - unit[j] for j in range(nvars) if b[j]]  # b / x_j: t / x_j = x_i (b / x_j)
         for i in range(nvars):
-            t = x + unit[i]
+            ui = unit[i]
+            t = x + ui
             if t in std or t in leads:
                 continue
-            if all(t - unit[j] in std for j in range(nvars) if b[j] and j != i):
+            for y in lower:
+                if y + ui not in std:
+                    break
+            else:
                 std.add(t)
                 packs.append(t)
                 out.append(b[:i] + (b[i] + 1,) + b[i + 1:])
@@ -117,8 +123,8 @@ def _digits(monomials: Sequence[Exp], nvars: int, room: int) -> tuple[int, list[
     return w, [1 << (w * i) for i in range(nvars)]
 
 
-def _packed(e: Exp, w: int) -> int:
-    return sum(a << (w * i) for i, a in enumerate(e))
+def _packed(e: Exp, unit: list[int]) -> int:
+    return sum(map(mul, e, unit))
 
 
 def border_forms(basis: Sequence[dict[Exp, int]], order: MonomialOrder, B: list[Exp], p: int) -> dict[Exp, list[int]]:
@@ -311,7 +317,7 @@ class Border:
         n, key = order.nvars, order.key
         D = len(B)
         w, unit = _digits([(D,) * n], n, 0)
-        packs = [_packed(b, w) for b in B]
+        packs = [_packed(b, unit) for b in B]
         index = {x: j for j, x in enumerate(packs)}
         reached: dict[int, tuple[int, int]] = {}  # each border monomial (packed) as x_a B[j], first reached
         for a in range(n):
