@@ -93,6 +93,8 @@ static int packing_init(Packing *P, Py_ssize_t n, const int64_t *W, int64_t top)
             if (W[r * n + j] > m)
                 m = W[r * n + j];
         }
+        if (m > INT64_MAX / top)
+            return 0;
         const int w = bits_of((uint64_t)(m * top)) + 1;
         P->kshift[r] = pos;
         pos += w;

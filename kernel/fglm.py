@@ -213,7 +213,7 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
             structure = Border.of(basis, source, B)
         if structure is not None:
             M = structure.matrices(basis, p)
-            if WALK is not None and n * structure.w <= 64:
+            if WALK is not None and n * structure.w <= 64 and _small_weights(target, D):
                 return _walked(structure, M, target, p)
             lin = _Compiled(p, index, structure.where, M)
         else:  # a basis that is not reduced
@@ -289,6 +289,11 @@ def _walked(structure: Border, M: array, target: MonomialOrder, p: int) -> Conve
                       [tuple((x >> s) & mask for s in shifts) for x in stairs],
                       list(zip(stair_from[::2], stair_from[1::2])), list(zip(lm_from[::2], lm_from[1::2])),
                       steps[:4 * visits])
+
+
+def _small_weights(order: MonomialOrder, D: int) -> bool:
+    """Whether the keys ``W e`` of monomials of degree at most ``n D`` fit 63 bits."""
+    return max(max(row) for row in nonnegative_matrix(order)) * order.nvars * (D + 1) < 1 << 62
 
 
 class Border:
