@@ -324,3 +324,12 @@ def test_the_conversion_over_qq_without_the_compiled_module_is_the_same(monkeypa
     for name in ("MATRICES", "REDUCES", "REPLAY", "STEP", "WALK"):
         monkeypatch.setattr(F, name, None)
     assert F.fglm_qq(source, dp.order, target) == compiled
+
+
+@pytest.mark.parametrize("field", [QQ, GF(32003)], ids=["QQ", "Z/32003"])
+def test_conversions_to_weighted_and_mixed_orderings_agree_with_buchberger(field):
+    """The C walk takes any global target as its nonnegative weight matrix."""
+    for blocks in ([Block("wp", 4, (3, 2, 1, 1))], [Block("lp", 2), Block("wp", 2, (5, 1))], [Block("Dp", 4)]):
+        R = ring("abcd", blocks, field)
+        gens = katsura(R, 3)
+        assert standard_basis(gens, R, "fglm") == standard_basis(gens, R, "buchberger")
