@@ -548,6 +548,195 @@ done:
     return result;
 }
 
+/* fglm_plan(n, w, W, B, terms, offsets): the border's plan of fglm_matrices (kernel/fglm.py
+ * ``Border``) for a reduced basis whose elements have the terms offsets[k] .. offsets[k+1]-1 of
+ * terms (n int32 exponents each) and standard monomials B (D of them, increasing), monomials
+ * packed with w bits a variable, W the basis ordering's nonnegative weight matrix.  The leading
+ * term of an element is its one term outside B.  Returns (cols, plan, tidx, tsrc, code_keys,
+ * code_values) as bytes -- tsrc: each tail entry's position among the terms -- or None when the
+ * basis is not reduced for B (then the caller takes another path). */
+static const int64_t *sort_keys;
+static Py_ssize_t sort_n;
+
+static int by_key(const void *a, const void *b)
+{
+    const int64_t *x = sort_keys + *(const Py_ssize_t *)a * sort_n, *y = sort_keys + *(const Py_ssize_t *)b * sort_n;
+    for (Py_ssize_t r = 0; r < sort_n; r++)
+        if (x[r] != y[r])
+            return x[r] < y[r] ? -1 : 1;
+    return 0;
+}
+
+static PyObject *fglm_plan(PyObject *self, PyObject *args)
+{
+    Py_ssize_t n, w;
+    Py_buffer Wb, Bb, tb, ob;
+    if (!PyArg_ParseTuple(args, "nny*y*y*y*", &n, &w, &Wb, &Bb, &tb, &ob))
+        return NULL;
+    const int64_t *W = Wb.buf, *O = ob.buf;
+    const int32_t *BE = Bb.buf, *TE = tb.buf;
+    const Py_ssize_t D = n > 0 ? Bb.len / 4 / n : 0, L = ob.len / 8 - 1, T = n > 0 ? tb.len / 4 / n : 0;
+    PyObject *result = NULL;
+    Table index = {0}, border = {0};
+    uint64_t *Bp = NULL, *bp = NULL;
+    int32_t *cols = NULL, *ba = NULL, *bj = NULL, *plan = NULL, *tidx = NULL, *tsrc = NULL, *lead = NULL;
+    int64_t *keys = NULL, *codes = NULL;
+    Py_ssize_t *sorted = NULL, *pos = NULL, nb = 0, nt = 0;
+    int reduced = 1;
+    if (n <= 0 || n * w > 64 || w <= 0 || Wb.len / 8 < n * n || L < 0 || D <= 0) {
+        PyErr_SetString(PyExc_ValueError, "fglm_plan: inconsistent arguments");
+        goto done;
+    }
+    const uint64_t field = (w >= 64) ? ~0ULL : ((1ULL << w) - 1);
+    const Py_ssize_t cap = n * D;
+    Bp = malloc((size_t)D * sizeof(uint64_t));
+    bp = malloc((size_t)cap * sizeof(uint64_t));
+    cols = malloc((size_t)cap * sizeof(int32_t));
+    ba = malloc((size_t)cap * sizeof(int32_t));
+    bj = malloc((size_t)cap * sizeof(int32_t));
+    plan = malloc((size_t)(3 * cap + 1) * sizeof(int32_t));
+    tidx = malloc((size_t)(T + 1) * sizeof(int32_t));
+    tsrc = malloc((size_t)(T + 1) * sizeof(int32_t));
+    lead = malloc((size_t)cap * sizeof(int32_t));
+    keys = malloc((size_t)(cap * n + 1) * sizeof(int64_t));
+    codes = malloc((size_t)(D + cap) * 2 * sizeof(int64_t));
+    sorted = malloc((size_t)cap * sizeof(Py_ssize_t));
+    pos = malloc((size_t)cap * sizeof(Py_ssize_t));
+    if (!Bp || !bp || !cols || !ba || !bj || !plan || !tidx || !tsrc || !lead || !keys || !codes || !sorted || !pos
+        || !table_init(&index, (size_t)D) || !table_init(&border, (size_t)cap)) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    /* pack a monomial; 0 if an exponent does not fit its digit */
+#define PACK(e, out)                                                    \
+    do {                                                                \
+        uint64_t v_ = 0;                                                \
+        for (Py_ssize_t j_ = 0; j_ < n; j_++) {                         \
+            if ((e)[j_] < 0 || (uint64_t)(e)[j_] >= field)              \
+                reduced = 0;                                            \
+            v_ += (uint64_t)(e)[j_] << (w * j_);                        \
+        }                                                               \
+        (out) = v_;                                                     \
+    } while (0)
+    for (Py_ssize_t j = 0; j < D; j++) {
+        PACK(BE + j * n, Bp[j]);
+        *table_slot(&index, Bp[j], 1) = j;
+    }
+    if (!reduced)
+        goto refuse;
+    for (Py_ssize_t a = 0; a < n; a++)
+        for (Py_ssize_t j = 0; j < D; j++) {
+            const uint64_t u = Bp[j] + (1ULL << (w * a));
+            if ((((Bp[j] >> (w * a)) & field) + 1) >= field)
+                goto refuse;
+            int64_t *r = table_slot(&index, u, 0);
+            if (r) {
+                cols[a * D + j] = (int32_t)*r;
+                continue;
+            }
+            int64_t *v = table_slot(&border, u, 1);
+            if (!*v) { /* new on the border: ids from 1 in the table */
+                *v = ++nb;
+                bp[nb - 1] = u, ba[nb - 1] = (int32_t)a, bj[nb - 1] = (int32_t)j, lead[nb - 1] = -1;
+                int64_t *k = keys + (nb - 1) * n;
+                for (Py_ssize_t r2 = 0; r2 < n; r2++) {
+                    int64_t s = W[r2 * n + a];
+                    for (Py_ssize_t c = 0; c < n; c++)
+                        s += W[r2 * n + c] * BE[j * n + c];
+                    k[r2] = s;
+                }
+            }
+            cols[a * D + j] = (int32_t)(-*v); /* -(id + 1) for now */
+        }
+    for (Py_ssize_t q = 0; q < nb; q++)
+        sorted[q] = q;
+    sort_keys = keys, sort_n = n;
+    qsort(sorted, (size_t)nb, sizeof(Py_ssize_t), by_key);
+    for (Py_ssize_t q = 0; q < nb; q++)
+        pos[sorted[q]] = q;
+    for (Py_ssize_t c = 0; c < cap; c++)
+        if (cols[c] < 0)
+            cols[c] = (int32_t)(-1 - pos[-cols[c] - 1]);
+    /* the elements: one term outside B each (on the border, leading no other element), the rest
+     * their tails */
+    int64_t *toff = codes; /* borrowed until the codes are written: L + 1 entries */
+    if (L + 1 > 2 * (D + cap))
+        goto refuse;
+    for (Py_ssize_t k = 0; k < L; k++) {
+        const Py_ssize_t a = O[k], b = O[k + 1];
+        if (a < 0 || b < a || b > T)
+            goto refuse;
+        Py_ssize_t outside = -1;
+        toff[k] = nt;
+        for (Py_ssize_t t = a; t < b; t++) {
+            uint64_t u;
+            PACK(TE + t * n, u);
+            if (!reduced)
+                goto refuse;
+            int64_t *r = table_slot(&index, u, 0);
+            if (r) {
+                tidx[nt] = (int32_t)*r, tsrc[nt] = (int32_t)t;
+                nt++;
+            } else {
+                int64_t *v = table_slot(&border, u, 0);
+                if (outside >= 0 || !v || lead[*v - 1] >= 0)
+                    goto refuse;
+                outside = *v - 1;
+                lead[outside] = (int32_t)k;
+            }
+        }
+        if (outside < 0)
+            goto refuse;
+    }
+    toff[L] = nt;
+    for (Py_ssize_t q = 0; q < nb; q++) {
+        const Py_ssize_t id = sorted[q];
+        int32_t *pl = plan + 3 * q;
+        if (lead[id] >= 0) {
+            pl[0] = 0, pl[1] = (int32_t)toff[lead[id]], pl[2] = (int32_t)toff[lead[id] + 1];
+            continue;
+        }
+        const uint64_t u = bp[id];
+        Py_ssize_t i = 0;
+        for (; i < n; i++) {
+            if (!((u >> (w * i)) & field))
+                continue;
+            int64_t *v = table_slot(&border, u - (1ULL << (w * i)), 0);
+            if (v) {
+                pl[0] = 1, pl[1] = (int32_t)i, pl[2] = (int32_t)pos[*v - 1];
+                break;
+            }
+        }
+        if (i == n) /* a minimal generator of the leading ideal leads no element */
+            goto refuse;
+    }
+    {
+        uint64_t *ck = (uint64_t *)codes;
+        int64_t *cv = codes + D + nb;
+        for (Py_ssize_t j = 0; j < D; j++)
+            ck[j] = Bp[j], cv[j] = j;
+        for (Py_ssize_t id = 0; id < nb; id++)
+            ck[D + id] = bp[id], cv[D + id] = D + (int64_t)ba[id] * D + bj[id];
+        result = Py_BuildValue("(y#y#y#y#y#y#)", (char *)cols, (Py_ssize_t)(cap * 4), (char *)plan, (Py_ssize_t)(nb * 12),
+                               (char *)tidx, (Py_ssize_t)(nt * 4), (char *)tsrc, (Py_ssize_t)(nt * 4),
+                               (char *)ck, (Py_ssize_t)((D + nb) * 8), (char *)cv, (Py_ssize_t)((D + nb) * 8));
+    }
+    goto done;
+#undef PACK
+refuse:
+    Py_INCREF(Py_None);
+    result = Py_None;
+done:
+    free(index.keys); free(index.vals); free(border.keys); free(border.vals);
+    free(Bp); free(bp); free(cols); free(ba); free(bj); free(plan); free(tidx); free(tsrc); free(lead);
+    free(keys); free(codes); free(sorted); free(pos);
+    PyBuffer_Release(&Wb);
+    PyBuffer_Release(&Bb);
+    PyBuffer_Release(&tb);
+    PyBuffer_Release(&ob);
+    return result;
+}
+
 PyObject *fglm_reduces(PyObject *self, PyObject *args); /* kernel/_fglm_proof.c */
 
 static PyMethodDef methods[] = {
@@ -555,6 +744,7 @@ static PyMethodDef methods[] = {
     {"fglm_matrices", fglm_matrices, METH_VARARGS, "The multiplication matrices modulo p from a border plan."},
     {"fglm_replay", fglm_replay, METH_VARARGS, "A conversion's steps repeated at another prime."},
     {"fglm_walk", fglm_walk, METH_VARARGS, "A whole conversion modulo p: the visits and their steps."},
+    {"fglm_plan", fglm_plan, METH_VARARGS, "The border's plan for fglm_matrices from a reduced basis."},
     {"fglm_reduces", fglm_reduces, METH_VARARGS, "Whether integer polynomials top-reduce to 0 (see kernel/_fglm_proof.c)."},
     {NULL, NULL, 0, NULL},
 };

@@ -53,10 +53,10 @@ from .monomials import Packing, nonnegative_matrix
 from .order import Exp, MonomialOrder
 
 try:
-    from ._fglm import fglm_matrices as MATRICES, fglm_reduces as REDUCES, fglm_replay as REPLAY
+    from ._fglm import fglm_matrices as MATRICES, fglm_plan as PLAN, fglm_reduces as REDUCES, fglm_replay as REPLAY
     from ._fglm import fglm_step as STEP, fglm_walk as WALK
 except ImportError:  # no compiler at install: the packed Python integers
-    MATRICES = REDUCES = REPLAY = STEP = WALK = None
+    MATRICES = PLAN = REDUCES = REPLAY = STEP = WALK = None
 
 
 @dataclass
@@ -308,59 +308,37 @@ class Border:
     ``x_a B[j]`` on the border (``D + a D + j``)."""
 
     def __init__(self, B: list[Exp], n: int, w: int, cols: array, plan: array, tidx: array,
-                 terms: list[tuple[int, Exp]], reached: dict[int, tuple[int, int]], exps: dict[int, Exp],
-                 packs: list[int]) -> None:
-        D = len(B)
+                 terms: list[tuple[int, Exp]], code_keys: array, code_values: array) -> None:
         self.B, self.n, self.w, self.cols, self.plan, self.tidx, self.terms = B, n, w, cols, plan, tidx, terms
-        self.where = {exps[u]: r for u, r in reached.items()}
-        self.code_keys = array("Q", packs + list(reached))
-        self.code_values = array("q", list(range(D)) + [D + a * D + j for a, j in reached.values()])
+        self.code_keys, self.code_values = code_keys, code_values
+
+    @property
+    def where(self) -> dict[Exp, tuple[int, int]]:
+        """Each border monomial as ``x_a B[j]`` (the first reached)."""
+        D = len(self.B)
+        return {_times(self.B[(c - D) % D], (c - D) // D): ((c - D) // D, (c - D) % D) for c in self.code_values[D:]}
 
     @classmethod
     def of(cls, basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> Border | None:
-        """The structure for ``basis`` (None if it is not reduced)."""
-        n, key = order.nvars, order.key
-        D = len(B)
-        w, unit = _digits([(D,) * n], n, 0)
-        packs = [_packed(b, unit) for b in B]
-        index = {x: j for j, x in enumerate(packs)}
-        reached: dict[int, tuple[int, int]] = {}  # each border monomial (packed) as x_a B[j], first reached
-        for a in range(n):
-            ua = unit[a]
-            for j, x in enumerate(packs):
-                u = x + ua
-                if u not in index and u not in reached:
-                    reached[u] = (a, j)
-        exps = {u: _times(B[j], a) for u, (a, j) in reached.items()}
-        border = sorted(reached, key=lambda u: key(exps[u]))
-        order_of = {u: q for q, u in enumerate(border)}
-        cols = array("i", [index[u] if u in index else ~order_of[u] for ua in unit for u in (x + ua for x in packs)])
-        stairs = dict(zip(B, range(D)))
-        lead, tails = {}, []  # a reduced basis: one term of each element is not standard, its leading one
-        for k, g in enumerate(basis):
-            outside = [e for e in g if e not in stairs]
-            if len(outside) != 1 or outside[0] in lead:
-                return None
-            lead[outside[0]] = k
-            tails.append([(stairs[e], e) for e in g if e != outside[0]])
-        plan, tidx, terms = array("i"), array("i"), []
-        for q, u in enumerate(border):
-            t = exps[u]
-            k = lead.get(t)
-            if k is not None:
-                start = len(tidx)
-                for j, e in tails[k]:
-                    tidx.append(j)
-                    terms.append((k, e))
-                plan.extend((0, start, len(tidx)))
-                continue
-            i = next((i for i in range(n) if t[i] and u - unit[i] in order_of), None)
-            if i is None:  # a minimal generator of lt(I) leads no element
-                return None
-            plan.extend((1, i, order_of[u - unit[i]]))
-        if len(lead) != sum(1 for u in border if exps[u] in lead):
+        """The structure for ``basis`` (``fglm_plan`` of kernel/_fglm.c; None if the basis is not
+        reduced or its monomials do not pack into 64 bits)."""
+        n, D = order.nvars, len(B)
+        w = (D + 1).bit_length()  # a conversion visits exponents up to D
+        if n * w > 64:
             return None
-        return cls(B, n, w, cols, plan, tidx, terms, reached, exps, packs)
+        W = array("q", [v for row in nonnegative_matrix(order) for v in row])
+        offsets = array("q", [0])
+        for g in basis:
+            offsets.append(offsets[-1] + len(g))
+        got = PLAN(n, w, W, array("i", [a for b in B for a in b]), array("i", [a for g in basis for e in g for a in e]),
+                   offsets)
+        if got is None:
+            return None
+        cols, plan, tidx, tsrc, code_keys, code_values = got
+        flat = [(k, e) for k, g in enumerate(basis) for e in g]
+        tsrc = array("i", tsrc)
+        return cls(B, n, w, array("i", cols), array("i", plan), array("i", tidx), [flat[t] for t in tsrc],
+                   array("Q", code_keys), array("q", code_values))
 
     def matrices(self, basis: Sequence[dict[Exp, int]], p: int) -> array:
         """The multiplication matrices modulo ``p`` (the layout of :class:`_Compiled`) for this
