@@ -1,10 +1,11 @@
 /* The exact check of a lifted FGLM conversion (kernel/fglm.py ``_proved``), part of the module
  * mech.kernel._fglm: whether polynomials with integer coefficients top-reduce to 0 by a basis.
  *
- * fglm_reduces(n, W, basis_offsets, basis_exps, basis_coefs, offsets, exps, coefs) with
- * W the ordering's nonnegative n x n weight matrix (int64, row by row), each polynomial's terms
- * from offsets[i] to offsets[i+1] (exponents n int32 a term, coefficients int64), leading term
- * of each basis element anywhere among its terms.  Returns 1 if every polynomial top-reduces to
+ * fglm_reduces(n, W, basis_offsets, basis_exps, basis_nums, basis_dens, offsets, exps, nums, dens)
+ * with W the ordering's nonnegative n x n weight matrix (int64, row by row), each polynomial's
+ * terms from offsets[i] to offsets[i+1] (exponents n int32 a term, rational coefficients as
+ * int64 numerators and positive denominators), the leading term of each basis element anywhere
+ * among its terms; every polynomial is first scaled to its primitive integer multiple.  Returns 1 if every polynomial top-reduces to
  * 0, 0 if one does not, -1 if the check left 64 bits (a coefficient or a packed field; the caller
  * then checks in Python with unbounded integers).
  *
@@ -130,15 +131,16 @@ static int pack(const Packing *P, const int64_t *W, const int32_t *e, Term *t)
     return !(t->key & P->kguard) && !(t->exps & P->eguard);
 }
 
-/* Reads polynomials (offsets, exponents, coefficients) into sorted term arrays. */
-static int read_polys(const Packing *P, const int64_t *W, Py_buffer *off, Py_buffer *ex, Py_buffer *co,
-                      Poly **out, Py_ssize_t *count)
+/* Reads polynomials (offsets, exponents, numerators, denominators) into sorted term arrays, each
+ * scaled to its primitive integer multiple (-1 if that leaves 64 bits). */
+static int read_polys(const Packing *P, const int64_t *W, Py_buffer *off, Py_buffer *ex, Py_buffer *nu,
+                      Py_buffer *de, Poly **out, Py_ssize_t *count)
 {
     const int64_t *O = off->buf;
     const int32_t *E = ex->buf;
-    const int64_t *C = co->buf;
-    const Py_ssize_t m = off->len / 8 - 1, T = co->len / 8;
-    if (m < 0 || ex->len / 4 < T * P->n)
+    const int64_t *C = nu->buf, *Q = de->buf;
+    const Py_ssize_t m = off->len / 8 - 1, T = nu->len / 8;
+    if (m < 0 || ex->len / 4 < T * P->n || de->len / 8 < T)
         return -2;
     Poly *ps = calloc((size_t)(m + 1), sizeof(Poly));
     if (!ps)
@@ -151,15 +153,26 @@ static int read_polys(const Packing *P, const int64_t *W, Py_buffer *off, Py_buf
             return -2;
         if (!reserve(ps + i, b - a + 1))
             return -3;
+        int64_t den = 1, cont = 0;
+        for (Py_ssize_t k = a; k < b; k++) {
+            if (Q[k] <= 0)
+                return -2;
+            const int64_t g = gcd64(den, Q[k]);
+            if (__builtin_mul_overflow(den / g, Q[k], &den))
+                return -1;
+        }
         for (Py_ssize_t k = a; k < b; k++) {
             Term *t = ps[i].t + (k - a);
             if (!pack(P, W, E + k * P->n, t))
                 return -1;
-            t->coef = C[k];
-            if (t->coef == INT64_MIN)
+            if (C[k] == INT64_MIN || __builtin_mul_overflow(C[k], den / Q[k], &t->coef) || t->coef == INT64_MIN)
                 return -1;
+            cont = gcd64(cont, t->coef);
         }
         ps[i].len = b - a;
+        if (cont > 1)
+            for (Py_ssize_t k = 0; k < ps[i].len; k++)
+                ps[i].t[k].coef /= cont;
         qsort(ps[i].t, (size_t)ps[i].len, sizeof(Term), by_key_desc);
     }
     return 0;
@@ -246,8 +259,8 @@ static int reduces(const Packing *P, const Poly *basis, Py_ssize_t nb, Poly *p, 
 PyObject *fglm_reduces(PyObject *self, PyObject *args)
 {
     Py_ssize_t n;
-    Py_buffer Wb, bo, be, bc, po, pe, pc;
-    if (!PyArg_ParseTuple(args, "ny*y*y*y*y*y*y*", &n, &Wb, &bo, &be, &bc, &po, &pe, &pc))
+    Py_buffer Wb, bo, be, bc, bd, po, pe, pc, pd;
+    if (!PyArg_ParseTuple(args, "ny*y*y*y*y*y*y*y*y*", &n, &Wb, &bo, &be, &bc, &bd, &po, &pe, &pc, &pd))
         return NULL;
     const int64_t *W = Wb.buf;
     Poly *basis = NULL, *polys = NULL, tmp = {0};
@@ -274,7 +287,8 @@ PyObject *fglm_reduces(PyObject *self, PyObject *args)
     result = packing_init(&P, n, W, 2 * top + 2) ? 0 : -1;
     if (result < 0)
         goto done;
-    if ((result = read_polys(&P, W, &bo, &be, &bc, &basis, &nb)) || (result = read_polys(&P, W, &po, &pe, &pc, &polys, &np)))
+    if ((result = read_polys(&P, W, &bo, &be, &bc, &bd, &basis, &nb))
+        || (result = read_polys(&P, W, &po, &pe, &pc, &pd, &polys, &np)))
         goto done;
     for (Py_ssize_t k = 0; k < nb; k++)
         if (!basis[k].len) {
@@ -298,9 +312,11 @@ done:
     PyBuffer_Release(&bo);
     PyBuffer_Release(&be);
     PyBuffer_Release(&bc);
+    PyBuffer_Release(&bd);
     PyBuffer_Release(&po);
     PyBuffer_Release(&pe);
     PyBuffer_Release(&pc);
+    PyBuffer_Release(&pd);
     if (result == -2) {
         PyErr_SetString(PyExc_ValueError, "fglm_reduces: inconsistent arrays");
         return NULL;

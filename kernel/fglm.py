@@ -653,20 +653,19 @@ def _reduces_compiled(basis: Sequence[dict[Exp, Any]], polys: Sequence[dict[Exp,
     """:func:`.hilbert_compiled.reduce_to_zero` in C on 64-bit integers (``fglm_reduces`` of
     kernel/_fglm_proof.c, the same fraction-free steps); None without the extension or when a
     number leaves 64 bits (then Python's integers decide)."""
-    from .modular import primitive
     if REDUCES is None:
         return None
     flat = []
     for group in (basis, polys):
-        ints = [primitive(f) for f in group]
         offsets = array("q", [0])
-        for f in ints:
+        for f in group:
             offsets.append(offsets[-1] + len(f))
+        coefs = [c for f in group for c in f.values()]
         try:
-            coefs = array("q", [c for f in ints for c in f.values()])
+            nums, dens = array("q", [int(c.p) for c in coefs]), array("q", [int(c.q) for c in coefs])
         except OverflowError:
             return None
-        flat += [offsets, array("i", [a for f in ints for e in f for a in e]), coefs]
+        flat += [offsets, array("i", [a for f in group for e in f for a in e]), nums, dens]
     W = array("q", [v for row in nonnegative_matrix(order) for v in row])
     got = REDUCES(order.nvars, W, *flat)
     return None if got < 0 else bool(got)
