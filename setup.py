@@ -1,6 +1,5 @@
 """The optional compiled kernels: F4's rows, pairs and FGLM's steps (kernel/_f4rows.c, kernel/_f4sym.c,
-kernel/_f4pairs.c, kernel/_fglm.c), FGLM modulo p and its exact check (kernel/_fglm.c, kernel/_fglm_proof.c),
-the Hilbert-driven Buchberger algorithm modulo p (kernel/_bba.c) and Mora's
+kernel/_f4pairs.c, kernel/_fglm.c), the Hilbert-driven Buchberger algorithm modulo p (kernel/_bba.c) and Mora's
 reduction loop (kernel/_mora.c): built when a C compiler is present, skipped otherwise (mech then uses its
 pure-Python code).  Everything else is in pyproject.toml."""
 from setuptools import Extension, setup

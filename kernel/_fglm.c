@@ -717,7 +717,8 @@ static PyObject *fglm_plan(PyObject *self, PyObject *args)
             ck[j] = Bp[j], cv[j] = j;
         for (Py_ssize_t id = 0; id < nb; id++)
             ck[D + id] = bp[id], cv[D + id] = D + (int64_t)ba[id] * D + bj[id];
-        result = Py_BuildValue("(y#y#y#y#y#y#)", (char *)cols, (Py_ssize_t)(cap * 4), (char *)plan, (Py_ssize_t)(nb * 12),
+        result = Py_BuildValue("(y#y#y#y#y#y#)", (char *)cols, (Py_ssize_t)(cap * 4), (char *)plan,
+                               (Py_ssize_t)(nb * 12),
                                (char *)tidx, (Py_ssize_t)(nt * 4), (char *)tsrc, (Py_ssize_t)(nt * 4),
                                (char *)ck, (Py_ssize_t)((D + nb) * 8), (char *)cv, (Py_ssize_t)((D + nb) * 8));
     }
@@ -745,7 +746,7 @@ static PyMethodDef methods[] = {
     {"fglm_replay", fglm_replay, METH_VARARGS, "A conversion's steps repeated at another prime."},
     {"fglm_walk", fglm_walk, METH_VARARGS, "A whole conversion modulo p: the visits and their steps."},
     {"fglm_plan", fglm_plan, METH_VARARGS, "The border's plan for fglm_matrices from a reduced basis."},
-    {"fglm_reduces", fglm_reduces, METH_VARARGS, "Whether integer polynomials top-reduce to 0 (see kernel/_fglm_proof.c)."},
+    {"fglm_reduces", fglm_reduces, METH_VARARGS, "Whether polynomials top-reduce to 0 (kernel/_fglm_proof.c)."},
     {NULL, NULL, 0, NULL},
 };
 

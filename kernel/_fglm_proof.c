@@ -5,8 +5,9 @@
  * with W the ordering's nonnegative n x n weight matrix (int64, row by row), each polynomial's
  * terms from offsets[i] to offsets[i+1] (exponents n int32 a term, rational coefficients as
  * int64 numerators and positive denominators), the leading term of each basis element anywhere
- * among its terms; every polynomial is first scaled to its primitive integer multiple.  Returns 1 if every polynomial top-reduces to
- * 0, 0 if one does not, -1 if the check left 64 bits (a coefficient or a packed field; the caller
+ * among its terms; every polynomial is first scaled to its primitive integer multiple.  Returns 1
+ * if every polynomial top-reduces to 0, 0 if one does not, -1 if the check left 64 bits (a
+ * coefficient or a packed field; the caller
  * then checks in Python with unbounded integers).
  *
  * Fraction-free, as kernel/hilbert_compiled.py ``reduce_to_zero``: the step a p - c x^s g with

@@ -29,9 +29,10 @@ Over QQ the conversion runs modulo primes.  From a source basis of small coeffic
 (:data:`LIFT_HEIGHT`) the conversions are lifted by Chinese remaindering and rational
 reconstruction and the lift is proved (:func:`_proved`: its elements reduce to 0 by the source
 basis exactly -- in C on 64-bit integers while they fit, kernel/_fglm_proof.c -- so they lie in
-``I``, and its leading monomials leave ``D`` standard monomials, so they generate ``lt(I)``).  Otherwise, or when that fails, the conversion found modulo a prime
-is redone over QQ (:func:`_exact`): the border normal forms exactly, the normal forms of the new
-standard and leading monomials by the multiplication matrices, one linear solve for the tails.
+``I``, and its leading monomials leave ``D`` standard monomials, so they generate ``lt(I)``).
+Otherwise, or when that fails, the conversion found modulo a prime is redone over QQ
+(:func:`_exact`): the border normal forms exactly, the normal forms of the new standard and
+leading monomials by the multiplication matrices, one linear solve for the tails.
 """
 from __future__ import annotations
 
@@ -55,7 +56,7 @@ from .order import Exp, MonomialOrder
 try:
     from ._fglm import fglm_matrices as MATRICES, fglm_plan as PLAN, fglm_reduces as REDUCES, fglm_replay as REPLAY
     from ._fglm import fglm_step as STEP, fglm_walk as WALK
-except ImportError:  # no compiler at install: the packed Python integers
+except ImportError:  # no compiler at install (or a module built before these): the packed Python integers
     MATRICES = PLAN = REDUCES = REPLAY = STEP = WALK = None
 
 
@@ -316,7 +317,8 @@ class Border:
     def where(self) -> dict[Exp, tuple[int, int]]:
         """Each border monomial as ``x_a B[j]`` (the first reached)."""
         D = len(self.B)
-        return {_times(self.B[(c - D) % D], (c - D) // D): ((c - D) // D, (c - D) % D) for c in self.code_values[D:]}
+        pairs = [divmod(c - D, D) for c in self.code_values[D:]]
+        return {_times(self.B[j], a): (a, j) for a, j in pairs}
 
     @classmethod
     def of(cls, basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> Border | None:
