@@ -367,19 +367,19 @@ static int key_less(const int64_t *a, const int64_t *b, Py_ssize_t n)
     return 0;
 }
 
-/* fglm_walk(p, D, n, w, W, M, codes_keys, codes_vals, tails, steps) runs fglm_modp's visits in C:
+/* fglm_walk(p, D, n, w, W, M, codes_keys, codes_vals, steps) runs fglm_modp's visits in C:
  * monomials packed with w bits a variable, visited in increasing order of the keys W e (W the
  * target's nonnegative n x n weight matrix, int64 row by row); codes_keys/codes_vals say which
  * packed monomials are B[j] (value j) or the border monomial x_a * B[j] (value D + a*D + j).
- * Fills tails (L rows of D uint32) and steps (4 int32 a visit) and returns (stairs, stair_from,
- * lms, lm_from, visits) with packed monomials and flat (i, k) pairs, or None when the new
- * staircase outgrows D (an unlucky prime). */
+ * Fills steps (4 int32 a visit) and returns (stairs, stair_from, lms, lm_from, tails, visits) with
+ * packed monomials, flat (i, k) pairs and the tails as bytes (L rows of D uint32), or None when
+ * the new staircase outgrows D (an unlucky prime). */
 static PyObject *fglm_walk(PyObject *self, PyObject *args)
 {
     unsigned long long p_;
     Py_ssize_t D, n, w;
-    Py_buffer Wb, M, ck, cv, tails, steps;
-    if (!PyArg_ParseTuple(args, "Knnny*y*y*y*w*w*", &p_, &D, &n, &w, &Wb, &M, &ck, &cv, &tails, &steps))
+    Py_buffer Wb, M, ck, cv, steps;
+    if (!PyArg_ParseTuple(args, "Knnny*y*y*y*w*", &p_, &D, &n, &w, &Wb, &M, &ck, &cv, &steps))
         return NULL;
     const int64_t *W = Wb.buf;
     const uint64_t *CK = ck.buf;
@@ -395,8 +395,9 @@ static PyObject *fglm_walk(PyObject *self, PyObject *args)
     int32_t *slot = NULL;
     uint64_t *x = NULL, *st = NULL, *lm = NULL;
     int32_t *stf = NULL, *lmf = NULL;
-    if (Wb.len / 8 < n * n || cv.len / 8 < ncodes || n * w > 64 || (Py_ssize_t)(tails.len / 4) < cap * D
-        || (Py_ssize_t)(steps.len / 16) < cap || (Py_ssize_t)(M.len / 4) < n * D * D) {
+    uint32_t *tl = NULL; /* the tails, tcap rows of D */
+    Py_ssize_t tcap = 0;
+    if (Wb.len / 8 < n * n || cv.len / 8 < ncodes || n * w > 64 || (Py_ssize_t)(steps.len / 16) < cap || (Py_ssize_t)(M.len / 4) < n * D * D) {
         PyErr_SetString(PyExc_ValueError, "fglm_walk: arrays too small");
         goto done;
     }
@@ -473,7 +474,16 @@ static PyObject *fglm_walk(PyObject *self, PyObject *args)
         rec[0] = mode, rec[1] = (int32_t)a, rec[2] = (int32_t)b, rec[3] = s0 < 0;
         if (s0 < 0) {
             *table_slot(&marks, mono, 1) |= 2;
-            uint32_t *t = (uint32_t *)tails.buf + L * D;
+            if (L == tcap) {
+                tcap = 2 * tcap + 8;
+                uint32_t *more = realloc(tl, (size_t)(tcap * D) * sizeof(uint32_t));
+                if (!more) {
+                    PyErr_NoMemory();
+                    goto done;
+                }
+                tl = more;
+            }
+            uint32_t *t = tl + L * D;
             for (Py_ssize_t c = 0; c < D; c++)
                 t[c] = c < K ? (uint32_t)x[D + c] : 0;
             lm[L] = mono, lmf[2 * L] = i, lmf[2 * L + 1] = k;
@@ -533,17 +543,17 @@ static PyObject *fglm_walk(PyObject *self, PyObject *args)
             Py_DECREF(s_list); Py_DECREF(sf); Py_DECREF(l_list); Py_DECREF(lf);
             goto done;
         }
-        result = Py_BuildValue("(NNNNn)", s_list, sf, l_list, lf, visits);
+        result = Py_BuildValue("(NNNNy#n)", s_list, sf, l_list, lf, (char *)(tl ? tl : (uint32_t *)st),
+                               (Py_ssize_t)(L * D * 4), visits);
     }
 done:
     free(codes.keys); free(codes.vals); free(marks.keys); free(marks.vals);
     free(nodes); free(keys); free(heap); free(N); free(R); free(slot); free(x);
-    free(st); free(stf); free(lm); free(lmf);
+    free(st); free(stf); free(lm); free(lmf); free(tl);
     PyBuffer_Release(&Wb);
     PyBuffer_Release(&M);
     PyBuffer_Release(&ck);
     PyBuffer_Release(&cv);
-    PyBuffer_Release(&tails);
     PyBuffer_Release(&steps);
     return result;
 }

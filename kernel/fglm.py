@@ -276,13 +276,13 @@ def _walked(structure: Border, M: array, target: MonomialOrder, p: int) -> Conve
     its nonnegative weight matrix."""
     B, n, w = structure.B, structure.n, structure.w
     D = len(B)
-    cap = n * (D + 1) + 1
-    tails, steps = array("I", bytes(4 * cap * D)), array("i", bytes(16 * cap))
+    steps = array("i", bytes(16 * (n * (D + 1) + 1)))  # 4 entries a visit
     W = array("q", [v for row in nonnegative_matrix(target) for v in row])
-    got = WALK(p, D, n, w, W, M, structure.code_keys, structure.code_values, tails, steps)
+    got = WALK(p, D, n, w, W, M, structure.code_keys, structure.code_values, steps)
     if got is None or len(got[0]) != D:
         raise Unlucky("the new staircase has the wrong size")
-    stairs, stair_from, lms, lm_from, visits = got
+    stairs, stair_from, lms, lm_from, tails, visits = got
+    tails = array("I", tails)
     mask = (1 << w) - 1
     shifts = [w * i for i in range(n)]
     return Conversion([tuple((x >> s) & mask for s in shifts) for x in lms],
