@@ -1,4 +1,4 @@
-/* The Hilbert-driven Buchberger algorithm modulo p < 2^31 and the reduction of its basis
+/* The Hilbert-driven Buchberger algorithm modulo p < 2^50 and the reduction of its basis
  * (kernel/hilbert_compiled.py drives it), the optional extension mech.kernel._bba.
  *
  * Monomials are the packed integers of kernel/monomials.py (``Packing``), split into `nw`
@@ -10,10 +10,11 @@
  *
  * A state (capsule) holds the generators, the basis (monic, terms in decreasing order, each with
  * its sugar) and the pairs (sugar, lcm, i, j; j = -1: generator i waiting; for homogeneous input
- * the sugar is the lcm's degree) under the Gebauer-Moeller criteria.  step(st, d, need) takes the
- * pairs of sugar d in increasing (lcm, i, j) order and reduces their S-polynomials until `need`
- * new leading monomials are found; the caller (which knows the Hilbert series, or asks for every
- * pair) decides the degree and the need.  A state's limit bounds the terms summed (TooLong).
+ * the sugar is the lcm's degree) under the Gebauer-Moeller criteria.  step(st, d, need, defer)
+ * takes the pairs of sugar d in increasing (lcm, i, j) order (those marked in `defer` last) and
+ * reduces their S-polynomials until `need` new leading monomials are found; the caller (which
+ * knows the Hilbert series, or asks for every pair) decides the degree and the need, and defers
+ * the pairs a previous prime reduced to zero.  A state's limit bounds the terms summed (TooLong).
  * reduced(st, target) gives the reduced basis of the active elements, their monomials first
  * mapped to the layout `target` (dehomogenization: the exponents of its variables kept, the
  * others dropped).  Beside it: ratlift (the lift's rational reconstruction in 128-bit integers)
@@ -37,7 +38,7 @@ typedef struct {
 typedef struct {
     Py_ssize_t len;
     uint64_t *m; /* len * nw, decreasing */
-    uint32_t *c;
+    uint64_t *c; /* below p */
     uint64_t sev; /* reducers: the variables of the leading monomial (bit j mod 64 for x_j) */
 } Poly;
 
@@ -50,6 +51,7 @@ typedef struct {
     Layout *L;
     PyObject *layout; /* owns L */
     uint64_t p;
+    double pinv; /* 1 / p, for mulmod */
     Poly *gens, *basis;
     char *active;
     int *sugar; /* of the basis elements */
@@ -227,7 +229,7 @@ static int poly_reserve(Poly *f, Py_ssize_t *cap, Py_ssize_t len, int nw)
     if (!m)
         return -1;
     f->m = m;
-    uint32_t *cc = realloc(f->c, sizeof(uint32_t) * c);
+    uint64_t *cc = realloc(f->c, sizeof(uint64_t) * c);
     if (!cc)
         return -1;
     f->c = cc;
@@ -235,16 +237,30 @@ static int poly_reserve(Poly *f, Py_ssize_t *cap, Py_ssize_t len, int nw)
     return 0;
 }
 
-static int poly_copy(Poly *dst, const uint64_t *m, const uint32_t *c, Py_ssize_t len, int nw)
+static int poly_copy(Poly *dst, const uint64_t *m, const uint64_t *c, Py_ssize_t len, int nw)
 {
     dst->len = len;
     dst->m = malloc(sizeof(uint64_t) * nw * (len ? len : 1));
-    dst->c = malloc(sizeof(uint32_t) * (len ? len : 1));
+    dst->c = malloc(sizeof(uint64_t) * (len ? len : 1));
     if (!dst->m || !dst->c)
         return -1;
     memcpy(dst->m, m, sizeof(uint64_t) * nw * len);
-    memcpy(dst->c, c, sizeof(uint32_t) * len);
+    memcpy(dst->c, c, sizeof(uint64_t) * len);
     return 0;
+}
+
+/* a b mod p for a, b < p < 2^50: the quotient estimated in double precision is off by less than
+ * 1 (relative error below 2^-51 of a value below 2^50), so a b - q p, exact modulo 2^64, lies in
+ * [-p, 2p) */
+static inline uint64_t mulmod(uint64_t a, uint64_t b, uint64_t p, double pinv)
+{
+    uint64_t q = (uint64_t)((double)a * (double)b * pinv);
+    int64_t r = (int64_t)(a * b - q * p);
+    if (r < 0)
+        r += (int64_t)p;
+    else if (r >= (int64_t)p)
+        r -= (int64_t)p;
+    return (uint64_t)r;
 }
 
 static uint64_t inv_mod(uint64_t a, uint64_t p)
@@ -268,112 +284,170 @@ static void poly_monic(Poly *f, uint64_t p)
         return;
     uint64_t inv = inv_mod(f->c[0], p);
     for (Py_ssize_t k = 0; k < f->len; k++)
-        f->c[k] = (uint32_t)(f->c[k] * inv % p);
+        f->c[k] = (uint64_t)((unsigned __int128)f->c[k] * inv % p);
 }
 
-/* A reduction runs on a heap of streams (Monagan-Pearce): each stream is coef * mult * g[pos..],
- * the heap orders the streams by their current monomial, the largest first.  The polynomial
- * under reduction is the sum of the streams; a term is summed from the streams at the top, and
- * a reducible one adds the stream -c * t * r[1..] of its reducer r (monic).  Only the terms
- * asked for are ever formed: a top reduction stops at the first irreducible term (then the rest
- * is summed without reduction). */
-typedef struct {
-    const Poly *g;
-    Py_ssize_t pos;
-    uint64_t coef;
-    uint64_t mult[MAXW];
-    uint64_t cur[MAXW];
-} Stream;
+/* A reduction sums polynomials in a geobucket (Yan, 1998): bucket i holds a sorted polynomial of
+ * at most 4^(i+1) terms; a polynomial added goes to the first bucket that holds its length, by a
+ * merge, and a bucket grown past its size is merged into the next one.  The polynomial under
+ * reduction is the sum of the buckets; its leading term is summed from the buckets' first terms,
+ * and a reducible one adds -c * t * r[1..] for its reducer r (monic).  A top reduction stops
+ * reducing at the first irreducible term (the rest is summed without reduction). */
+#define NBUCKETS 24
 
 typedef struct {
-    uint64_t key; /* the top word of the stream's monomial: most comparisons end there */
-    Py_ssize_t s;
-} Entry;
+    Py_ssize_t head, len; /* the terms head..len-1 */
+    Py_ssize_t capm, capc; /* allocated words of monomials (layouts differ in width), coefficients */
+    uint64_t *m, *c;
+} Bucket;
 
-static Stream *streams;
-static Py_ssize_t nstreams, capstreams;
-static Entry *heap;
-static Py_ssize_t nheap, capheap;
+static Bucket buckets[NBUCKETS];
+static int nbuckets;                 /* buckets 0..nbuckets-1 may hold terms */
+static Bucket scratch, addend;       /* a merge's output, the polynomial being added */
+static uint64_t sum_p;
+static double sum_pinv;
+static long long sum_terms;          /* terms added since sum_clear */
 
-/* the stream's current monomial; -1 when it leaves the packing */
-static int stream_load(const Layout *L, Stream *s)
+static int bucket_reserve(Bucket *b, Py_ssize_t n, int nw)
 {
-    madd(s->cur, s->g->m + (size_t)s->pos * L->nw, s->mult, L->nw);
-    return mguarded(L, s->cur) ? -1 : 0;
-}
-
-static inline int ecmp(const Entry *a, const Entry *b, int nw)
-{
-    if (a->key != b->key)
-        return a->key > b->key ? 1 : -1;
-    return mcmp(streams[a->s].cur, streams[b->s].cur, nw);
-}
-
-static void heap_up(int nw, Py_ssize_t k)
-{
-    Entry x = heap[k];
-    while (k > 0) {
-        Py_ssize_t up = (k - 1) / 2;
-        if (ecmp(&heap[up], &x, nw) >= 0)
-            break;
-        heap[k] = heap[up];
-        k = up;
-    }
-    heap[k] = x;
-}
-
-static void heap_down(int nw, Py_ssize_t k)
-{
-    Entry x = heap[k];
-    for (;;) {
-        Py_ssize_t c = 2 * k + 1;
-        if (c >= nheap)
-            break;
-        if (c + 1 < nheap && ecmp(&heap[c + 1], &heap[c], nw) > 0)
-            c++;
-        if (ecmp(&heap[c], &x, nw) <= 0)
-            break;
-        heap[k] = heap[c];
-        k = c;
-    }
-    heap[k] = x;
-}
-
-/* a new stream coef * mult * g[pos..] (mult NULL: 1), pushed if not empty */
-static int stream_push(const Layout *L, const Poly *g, Py_ssize_t pos, uint64_t coef, const uint64_t *mult)
-{
-    if (pos >= g->len)
-        return 0;
-    if (nstreams == capstreams) {
-        Py_ssize_t c = capstreams ? 2 * capstreams : 64;
-        Stream *t = realloc(streams, sizeof(Stream) * c);
-        if (!t)
+    if ((size_t)n * nw > (size_t)b->capm) {
+        Py_ssize_t c = 2 * n * nw;
+        uint64_t *m = realloc(b->m, 8 * (size_t)c);
+        if (!m)
             return -2;
-        streams = t;
-        capstreams = c;
+        b->m = m;
+        b->capm = c;
     }
-    if (nheap == capheap) {
-        Py_ssize_t c = capheap ? 2 * capheap : 64;
-        Entry *t = realloc(heap, sizeof(Entry) * c);
-        if (!t)
+    if (n > b->capc) {
+        uint64_t *c = realloc(b->c, 8 * (size_t)(2 * n));
+        if (!c)
             return -2;
-        heap = t;
-        capheap = c;
+        b->c = c;
+        b->capc = 2 * n;
     }
-    Stream *s = &streams[nstreams];
-    s->g = g;
-    s->pos = pos;
-    s->coef = coef;
-    if (mult)
-        memcpy(s->mult, mult, 8 * L->nw);
-    else
-        memset(s->mult, 0, 8 * L->nw);
-    if (stream_load(L, s) < 0)
-        return -1;
-    heap[nheap].key = s->cur[L->nw - 1];
-    heap[nheap].s = nstreams++;
-    heap_up(L->nw, nheap++);
     return 0;
+}
+
+/* buckets[i] += the terms m, c (n of them, decreasing) */
+static int bucket_add(int i, const uint64_t *m, const uint64_t *c, Py_ssize_t n, int nw)
+{
+    Bucket *b = &buckets[i];
+    Py_ssize_t na = b->len - b->head;
+    if (bucket_reserve(&scratch, na + n, nw) < 0)
+        return -2;
+    const uint64_t *am = b->m + (size_t)b->head * nw, *ac = b->c + b->head;
+    Py_ssize_t x = 0, y = 0, o = 0;
+    while (x < na && y < n) {
+        int cmp = mcmp(am + (size_t)x * nw, m + (size_t)y * nw, nw);
+        if (cmp > 0) {
+            memcpy(scratch.m + (size_t)o * nw, am + (size_t)x * nw, 8 * nw);
+            scratch.c[o++] = ac[x++];
+        } else if (cmp < 0) {
+            memcpy(scratch.m + (size_t)o * nw, m + (size_t)y * nw, 8 * nw);
+            scratch.c[o++] = c[y++];
+        } else {
+            uint64_t v = ac[x] + c[y];
+            if (v >= sum_p)
+                v -= sum_p;
+            if (v) {
+                memcpy(scratch.m + (size_t)o * nw, am + (size_t)x * nw, 8 * nw);
+                scratch.c[o++] = v;
+            }
+            x++;
+            y++;
+        }
+    }
+    memcpy(scratch.m + (size_t)o * nw, am + (size_t)x * nw, 8 * nw * (na - x));
+    memcpy(scratch.c + o, ac + x, 8 * (na - x));
+    o += na - x;
+    memcpy(scratch.m + (size_t)o * nw, m + (size_t)y * nw, 8 * nw * (n - y));
+    memcpy(scratch.c + o, c + y, 8 * (n - y));
+    o += n - y;
+    Bucket t = *b;
+    *b = scratch;
+    b->head = 0;
+    b->len = o;
+    scratch = t;
+    if (i >= nbuckets)
+        nbuckets = i + 1;
+    return 0;
+}
+
+static Py_ssize_t bucket_size(int i)
+{
+    return (Py_ssize_t)4 << (2 * i);
+}
+
+static void sum_clear(uint64_t p, double pinv)
+{
+    for (int i = 0; i < nbuckets; i++)
+        buckets[i].head = buckets[i].len = 0;
+    nbuckets = 0;
+    sum_p = p;
+    sum_pinv = pinv;
+    sum_terms = 0;
+}
+
+/* the sum += coef * mult * g[pos..] (mult NULL: 1); -1 when a monomial leaves the packing */
+static int sum_add(const Layout *L, const Poly *g, Py_ssize_t pos, uint64_t coef, const uint64_t *mult)
+{
+    const int nw = L->nw;
+    Py_ssize_t n = g->len - pos;
+    if (n <= 0)
+        return 0;
+    if (bucket_reserve(&addend, n, nw) < 0)
+        return -2;
+    for (Py_ssize_t k = 0; k < n; k++) {
+        uint64_t *out = addend.m + (size_t)k * nw;
+        const uint64_t *in = g->m + (size_t)(pos + k) * nw;
+        if (mult) {
+            madd(out, in, mult, nw);
+            if (mguarded(L, out))
+                return -1;
+        } else
+            memcpy(out, in, 8 * nw);
+        addend.c[k] = coef == 1 ? g->c[pos + k] : mulmod(coef, g->c[pos + k], sum_p, sum_pinv);
+    }
+    sum_terms += n;
+    int i = 0;
+    while (i < NBUCKETS - 1 && n > bucket_size(i))
+        i++;
+    if (bucket_add(i, addend.m, addend.c, n, nw) < 0)
+        return -2;
+    while (i < NBUCKETS - 1 && buckets[i].len - buckets[i].head > bucket_size(i)) {
+        Bucket *b = &buckets[i];
+        if (bucket_add(i + 1, b->m + (size_t)b->head * nw, b->c + b->head, b->len - b->head, nw) < 0)
+            return -2;
+        b->head = b->len = 0;
+        i++;
+    }
+    return 0;
+}
+
+/* the leading monomial of the sum into m and its coefficient into c, the terms taken out of the
+ * buckets; 0 when the sum is empty */
+static int sum_top(int nw, uint64_t *m, uint64_t *c)
+{
+    int best = -1;
+    for (int i = 0; i < nbuckets; i++)
+        if (buckets[i].head < buckets[i].len
+            && (best < 0 || mcmp(buckets[i].m + (size_t)buckets[i].head * nw,
+                                 buckets[best].m + (size_t)buckets[best].head * nw, nw) > 0))
+            best = i;
+    if (best < 0)
+        return 0;
+    memcpy(m, buckets[best].m + (size_t)buckets[best].head * nw, 8 * nw);
+    uint64_t v = 0;
+    for (int i = best; i < nbuckets; i++) {
+        Bucket *b = &buckets[i];
+        if (b->head < b->len && mcmp(b->m + (size_t)b->head * nw, m, nw) == 0) {
+            v += b->c[b->head++];
+            if (v >= sum_p)
+                v -= sum_p;
+        }
+    }
+    *c = v;
+    return 1;
 }
 
 /* the shortest reducer whose leading monomial divides m (the first of equal lengths), or -1 */
@@ -387,42 +461,25 @@ static Py_ssize_t find_reducer(const Layout *L, const Poly *red, Py_ssize_t nred
     return best;
 }
 
-/* S->work := the sum of the streams pushed, reduced by the reducers: only its top (full = 0)
- * or every term (full = 1) */
-static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
+/* S->work := the sum, reduced by the reducers: only its top (full = 0) or every term (full = 1) */
+static int sum_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
 {
     const Layout *L = S->L;
     const int nw = L->nw;
     const uint64_t p = S->p;
-    uint64_t m[MAXW], t[MAXW];
+    uint64_t m[MAXW], t[MAXW], c;
     int reducing = 1, rc = 0;
     S->work.len = 0;
-    while (nheap > 0) {
-        memcpy(m, streams[heap[0].s].cur, 8 * nw);
-        uint64_t c = 0;
-        while (nheap > 0 && heap[0].key == m[nw - 1] && mcmp(streams[heap[0].s].cur, m, nw) == 0) {
-            Stream *s = &streams[heap[0].s];
-            if (++S->spent > S->limit && S->limit)
-                return -3;
-            c = (c + s->coef * s->g->c[s->pos]) % p;
-            if (++s->pos < s->g->len) {
-                if (stream_load(L, s) < 0)
-                    return -1;
-                heap[0].key = s->cur[nw - 1];
-                heap_down(nw, 0);
-            } else {
-                heap[0] = heap[--nheap];
-                if (nheap)
-                    heap_down(nw, 0);
-            }
-        }
+    while (sum_top(nw, m, &c)) {
+        if (S->limit && S->spent + sum_terms > S->limit)
+            return -3;
         if (!c)
             continue;
         if (reducing) {
             Py_ssize_t r = find_reducer(L, red, nred, m);
             if (r >= 0) {
                 msub(t, m, red[r].m, nw);
-                rc = stream_push(L, &red[r], 1, p - c, t);
+                rc = sum_add(L, &red[r], 1, p - c, t);
                 if (rc < 0)
                     return rc;
                 continue;
@@ -432,14 +489,11 @@ static int heap_reduce(State *S, const Poly *red, Py_ssize_t nred, int full)
         if (poly_reserve(&S->work, &S->capwork, S->work.len + 1, nw) < 0)
             return -2;
         memcpy(S->work.m + (size_t)S->work.len * nw, m, 8 * nw);
-        S->work.c[S->work.len++] = (uint32_t)c;
+        S->work.c[S->work.len++] = c;
     }
+    S->spent += sum_terms;
+    sum_terms = 0;
     return 0;
-}
-
-static void heap_clear(void)
-{
-    nheap = nstreams = 0;
 }
 
 /* -- states --------------------------------------------------------------------------------- */
@@ -502,8 +556,8 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
     Layout *L = PyCapsule_GetPointer(lay, "bba.layout");
     if (!L)
         return NULL;
-    if (p < 2 || p >= (1ULL << 31)) {
-        PyErr_SetString(PyExc_ValueError, "bba.state: p must be below 2^31");
+    if (p < 2 || p >= (1ULL << 50)) {
+        PyErr_SetString(PyExc_ValueError, "bba.state: p must be below 2^50");
         return NULL;
     }
     State *S = calloc(1, sizeof(State));
@@ -513,6 +567,7 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
     S->layout = lay;
     Py_INCREF(lay);
     S->p = p;
+    S->pinv = 1.0 / (double)p;
     S->limit = limit;
     PyObject *cap = PyCapsule_New(S, "bba.state", state_free);
     if (!cap) {
@@ -534,7 +589,7 @@ static PyObject *bba_state(PyObject *self, PyObject *args)
             Py_DECREF(cap);
             return NULL;
         }
-        Py_ssize_t len = cb.len / 4;
+        Py_ssize_t len = cb.len / 8;
         int bad = mb.len != (Py_ssize_t)8 * nw * len || len == 0;
         int err = bad ? 0 : poly_copy(&S->gens[k], mb.buf, cb.buf, len, nw);
         PyBuffer_Release(&mb);
@@ -720,19 +775,19 @@ static int pair_cmp(const void *x, const void *y)
     return (a->j > b->j) - (a->j < b->j);
 }
 
-/* the S-polynomial of pair a as streams */
-static int spoly_streams(State *S, const Pair *a)
+/* the sum := the S-polynomial of pair a (or generator i waiting) */
+static int spoly_sum(State *S, const Pair *a)
 {
     const Layout *L = S->L;
-    heap_clear();
+    sum_clear(S->p, S->pinv);
     if (a->j < 0)
-        return stream_push(L, &S->gens[a->i], 0, 1, NULL);
+        return sum_add(L, &S->gens[a->i], 0, 1, NULL);
     const Poly *f = &S->basis[a->i], *g = &S->basis[a->j];
     uint64_t tf[MAXW], tg[MAXW];
     msub(tf, a->lcm, f->m, L->nw);
     msub(tg, a->lcm, g->m, L->nw);
-    int rc = stream_push(L, f, 1, 1, tf);
-    return rc ? rc : stream_push(L, g, 1, S->p - 1, tg);
+    int rc = sum_add(L, f, 1, 1, tf);
+    return rc ? rc : sum_add(L, g, 1, S->p - 1, tg);
 }
 
 static PyObject *lm_int(const Layout *L, const uint64_t *m)
@@ -740,26 +795,37 @@ static PyObject *lm_int(const Layout *L, const uint64_t *m)
     return _PyLong_FromByteArray((const unsigned char *)m, 8 * L->nw, 1, 0);
 }
 
-/* step(st, d, need): the pairs of degree d, top-reduced until `need` new elements are found;
- * returns the new leading monomials (packed integers) */
+/* step(st, d, need, defer): the pairs of degree d in increasing (lcm, i, j) order, reduced until
+ * `need` new elements are found, those whose byte in `defer` (indexed like that order) is set
+ * last: a previous prime's zero reductions (any order finds a degree's new leading monomials).
+ * Returns (the new leading monomials as packed integers, a byte per pair: 1 if it reduced to
+ * zero). */
 static PyObject *bba_step(PyObject *self, PyObject *args)
 {
     PyObject *cap;
     int d;
     Py_ssize_t need;
-    if (!PyArg_ParseTuple(args, "Oin", &cap, &d, &need))
+    Py_buffer defer = {0};
+    if (!PyArg_ParseTuple(args, "Oin|y*", &cap, &d, &need, &defer))
         return NULL;
     State *S = get_state(cap);
-    if (!S)
+    if (!S) {
+        PyBuffer_Release(&defer);
         return NULL;
+    }
     const Layout *L = S->L;
     Py_ssize_t nsel = 0, o = 0;
     for (Py_ssize_t q = 0; q < S->np; q++)
         if (S->pairs[q].deg == d)
             nsel++;
     Pair *sel = malloc(sizeof(Pair) * (nsel ? nsel : 1));
-    if (!sel)
+    char *zeros = calloc(nsel ? nsel : 1, 1);
+    if (!sel || !zeros) {
+        free(sel);
+        free(zeros);
+        PyBuffer_Release(&defer);
         return PyErr_NoMemory();
+    }
     nsel = 0;
     for (Py_ssize_t q = 0; q < S->np; q++) {
         if (S->pairs[q].deg == d)
@@ -770,32 +836,42 @@ static PyObject *bba_step(PyObject *self, PyObject *args)
     S->np = o;
     nw_sort = L->nw;
     qsort(sel, nsel, sizeof(Pair), pair_cmp);
-    PyObject *out = PyList_New(0);
+    const char *late = defer.len == nsel ? defer.buf : NULL;
+    PyObject *lms = PyList_New(0);
     int rc = 0;
-    for (Py_ssize_t q = 0; q < nsel && need > 0 && out; q++) {
-        rc = spoly_streams(S, &sel[q]);
-        if (rc == 0)
-            rc = heap_reduce(S, S->basis, S->nb, 1);
-        if (rc < 0)
-            break;
-        if (S->work.len == 0)
-            continue;
-        rc = add_basis(S, d);
-        if (rc < 0)
-            break;
-        need--;
-        PyObject *lm = lm_int(L, S->basis[S->nb - 1].m);
-        if (!lm || PyList_Append(out, lm) < 0) {
-            Py_XDECREF(lm);
-            Py_CLEAR(out);
-        } else
-            Py_DECREF(lm);
-    }
+    for (int pass = 0; pass < (late ? 2 : 1) && rc == 0; pass++)
+        for (Py_ssize_t q = 0; q < nsel && need > 0 && lms; q++) {
+            if (late && (late[q] != 0) != pass)
+                continue;
+            rc = spoly_sum(S, &sel[q]);
+            if (rc == 0)
+                rc = sum_reduce(S, S->basis, S->nb, 1);
+            if (rc < 0)
+                break;
+            if (S->work.len == 0) {
+                zeros[q] = 1;
+                continue;
+            }
+            rc = add_basis(S, d);
+            if (rc < 0)
+                break;
+            need--;
+            PyObject *lm = lm_int(L, S->basis[S->nb - 1].m);
+            if (!lm || PyList_Append(lms, lm) < 0) {
+                Py_XDECREF(lm);
+                Py_CLEAR(lms);
+            } else
+                Py_DECREF(lm);
+        }
+    PyBuffer_Release(&defer);
+    PyObject *out = NULL;
+    if (rc < 0)
+        error(rc);
+    else if (lms)
+        out = Py_BuildValue("(Oy#)", lms, zeros, nsel);
+    Py_XDECREF(lms);
     free(sel);
-    if (rc < 0) {
-        Py_XDECREF(out);
-        return error(rc);
-    }
+    free(zeros);
     return out;
 }
 
@@ -859,12 +935,12 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
         Poly *g = &polys[m++];
         g->len = f->len;
         g->m = malloc(8 * nw * f->len);
-        g->c = malloc(4 * f->len);
+        g->c = malloc(8 * f->len);
         if (!g->m || !g->c) {
             rc = -2;
             break;
         }
-        memcpy(g->c, f->c, 4 * f->len);
+        memcpy(g->c, f->c, 8 * f->len);
         for (Py_ssize_t t = 0; t < f->len; t++) {
             if (B == A)
                 memcpy(g->m + (size_t)t * nw, f->m + (size_t)t * nw, 8 * nw);
@@ -898,16 +974,16 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
         S->L = (Layout *)B;
         for (Py_ssize_t a = 0; a < m && rc == 0; a++) {
             Poly *g = &polys[a];
-            heap_clear();
-            rc = stream_push(B, g, 1, 1, NULL);
+            sum_clear(S->p, S->pinv);
+            rc = sum_add(B, g, 1, 1, NULL);
             if (rc == 0)
-                rc = heap_reduce(S, done, nd, 1);
+                rc = sum_reduce(S, done, nd, 1);
             if (rc < 0)
                 break;
             Poly *r = &done[nd];
             r->len = S->work.len + 1;
             r->m = malloc(8 * nw * r->len);
-            r->c = malloc(4 * r->len);
+            r->c = malloc(8 * r->len);
             if (!r->m || !r->c) {
                 free(r->m);
                 free(r->c);
@@ -917,7 +993,7 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
             memcpy(r->m, g->m, 8 * nw);
             r->c[0] = g->c[0];
             memcpy(r->m + nw, S->work.m, 8 * nw * S->work.len);
-            memcpy(r->c + 1, S->work.c, 4 * S->work.len);
+            memcpy(r->c + 1, S->work.c, 8 * S->work.len);
             poly_monic(r, S->p);
             r->sev = msev(B, r->m);
             nd++;
@@ -932,7 +1008,7 @@ static PyObject *bba_reduced(PyObject *self, PyObject *args)
             out = PyList_New(nd);
             for (Py_ssize_t a = 0; a < nd && out; a++) {
                 PyObject *item = Py_BuildValue("(y#y#)", (const char *)done[a].m, (Py_ssize_t)(8 * nw * done[a].len),
-                                               (const char *)done[a].c, (Py_ssize_t)(4 * done[a].len));
+                                               (const char *)done[a].c, (Py_ssize_t)(8 * done[a].len));
                 if (!item)
                     Py_CLEAR(out);
                 else
@@ -1032,11 +1108,11 @@ static int ratrec128(u128 a, u128 M, u128 B, int64_t *n, int64_t *d)
     return 1;
 }
 
-/* ratlift(residues: list of bytes (uint32 per coefficient, one per prime), primes: list, check:
- * bytes, q): the rationals n/d (|n|, d <= sqrt(M/2), M the product of the primes, at most 4 below
- * 2^31) with n = r d mod each prime, as (numerators, denominators), if every coefficient has one
- * and they agree with the residues `check` modulo q; else None.  A running common denominator
- * makes most coefficients one product per prime. */
+/* ratlift(residues: list of bytes (uint64 per coefficient, one per prime), primes: list, check:
+ * bytes, q): the rationals n/d (|n|, d <= sqrt(M/2), M the product of the primes, each below
+ * 2^50, M below 2^124) with n = r d mod each prime, as (numerators, denominators), if every
+ * coefficient has one and they agree with the residues `check` modulo q < 2^50; else None.  A
+ * running common denominator makes most coefficients one product per prime. */
 static PyObject *bba_ratlift(PyObject *self, PyObject *args)
 {
     PyObject *res, *primes;
@@ -1044,12 +1120,14 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
     unsigned long long q;
     if (!PyArg_ParseTuple(args, "O!O!y*K", &PyList_Type, &res, &PyList_Type, &primes, &check, &q))
         return NULL;
-    Py_ssize_t k = PyList_GET_SIZE(primes), N = check.len / 4;
+    Py_ssize_t k = PyList_GET_SIZE(primes), N = check.len / 8;
     PyObject *out = NULL;
     Py_buffer bufs[4];
     int nbuf = 0;
     uint64_t p[4];
-    if (k < 1 || k > 4 || PyList_GET_SIZE(res) != k) {
+    u128 P[5];
+    P[0] = 1;
+    if (k < 1 || k > 4 || PyList_GET_SIZE(res) != k || q < 2 || q >= (1ULL << 50)) {
         PyErr_SetString(PyExc_ValueError, "ratlift: one to four primes");
         goto done;
     }
@@ -1058,24 +1136,24 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
         if (PyObject_GetBuffer(PyList_GET_ITEM(res, j), &bufs[j], PyBUF_SIMPLE) < 0)
             goto done;
         nbuf++;
-        if (bufs[j].len != check.len || p[j] >= (1ULL << 31) || p[j] < 2) {
-            PyErr_SetString(PyExc_ValueError, "ratlift: bad residues");
+        if (bufs[j].len != check.len || p[j] >= (1ULL << 50) || p[j] < 2 || P[j] > ((((u128)1) << 124) - 1) / p[j]) {
+            PyErr_SetString(PyExc_ValueError, "ratlift: bad residues or primes");
             goto done;
         }
+        P[j + 1] = P[j] * p[j];
     }
     /* Garner: x = sum t_j P_j with P_j the product of the primes before j */
-    u128 P[5];
     uint64_t inv[4];
-    P[0] = 1;
+    double pinv[4], qinv = 1.0 / (double)q;
     for (Py_ssize_t j = 0; j < k; j++) {
-        P[j + 1] = P[j] * p[j];
         inv[j] = j ? inv_mod((uint64_t)(P[j] % p[j]), p[j]) : 1;
+        pinv[j] = 1.0 / (double)p[j];
     }
     const u128 M = P[k], half = M / 2, B = isqrt128(M / 2);
-    const uint32_t *r[4];
+    const uint64_t *r[4];
     for (Py_ssize_t j = 0; j < k; j++)
         r[j] = bufs[j].buf;
-    const uint32_t *cq = check.buf;
+    const uint64_t *cq = check.buf;
     PyObject *nums = PyList_New(N), *dens = PyList_New(N);
     if (!nums || !dens) {
         Py_XDECREF(nums);
@@ -1088,9 +1166,9 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
         /* b = r * den mod M, symmetric */
         u128 x = 0;
         for (Py_ssize_t j = 0; j < k; j++) {
-            uint64_t v = (uint64_t)r[j][i] * ((uint64_t)den % p[j]) % p[j];
-            uint64_t xm = (uint64_t)(x % p[j]);
-            uint64_t t = (v + p[j] - xm) % p[j] * inv[j] % p[j];
+            uint64_t v = mulmod(r[j][i] % p[j], (uint64_t)den % p[j], p[j], pinv[j]);
+            uint64_t xm = x >> 64 ? (uint64_t)(x % p[j]) : (uint64_t)x % p[j];
+            uint64_t t = mulmod(v >= xm ? v - xm : v + p[j] - xm, inv[j], p[j], pinv[j]);
             x += (u128)t * P[j];
         }
         int64_t n, d;
@@ -1103,8 +1181,9 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
         } else {
             u128 a = 0;
             for (Py_ssize_t j = 0; j < k; j++) {
-                uint64_t xm = (uint64_t)(a % p[j]);
-                uint64_t t = ((uint64_t)r[j][i] + p[j] - xm) % p[j] * inv[j] % p[j];
+                uint64_t xm = a >> 64 ? (uint64_t)(a % p[j]) : (uint64_t)a % p[j];
+                uint64_t rj = r[j][i] % p[j];
+                uint64_t t = mulmod(rj >= xm ? rj - xm : rj + p[j] - xm, inv[j], p[j], pinv[j]);
                 a += (u128)t * P[j];
             }
             if (!ratrec128(a, M, B, &n, &d)) {
@@ -1115,14 +1194,14 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
             u128 l = (u128)(den / g) * (u128)d;
             den = l > B ? d : (int64_t)l;
         }
-        /* n / d modulo q against the check residue */
+        /* n / d modulo q against the check residue: n = r d mod q, d invertible */
         uint64_t dq = (uint64_t)d % q;
         if (dq == 0) {
             ok = 0;
             break;
         }
         uint64_t nq = (uint64_t)(n % (int64_t)q + (int64_t)q) % q;
-        if (nq * inv_mod(dq, q) % q != cq[i]) {
+        if (nq != mulmod(cq[i] % q, dq, q, qinv)) {
             ok = 0;
             break;
         }
@@ -1142,6 +1221,249 @@ done:
         PyBuffer_Release(&bufs[j]);
     PyBuffer_Release(&check);
     return out;
+}
+
+/* -- the exact check of a lift ------------------------------------------------------------- */
+/* Polynomials with integer coefficients in 128 bits; every product and sum is checked for
+ * overflow (then the check answers None and the caller does it with Python integers). */
+typedef struct {
+    Py_ssize_t len;
+    uint64_t *m;
+    i128 *c;
+    uint64_t sev;
+} IPoly;
+
+static u128 uabs128(i128 x)
+{
+    return x < 0 ? -(u128)x : (u128)x;
+}
+
+static u128 gcd128(u128 a, u128 b)
+{
+    while (b) {
+        u128 t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* f /= the gcd of its coefficients */
+static void ipoly_primitive(IPoly *f)
+{
+    u128 g = 0;
+    for (Py_ssize_t k = 0; k < f->len && g != 1; k++)
+        g = gcd128(uabs128(f->c[k]), g);
+    if (g > 1)
+        for (Py_ssize_t k = 0; k < f->len; k++)
+            f->c[k] /= (i128)g;
+}
+
+static void ipolys_free(IPoly *f, Py_ssize_t n)
+{
+    for (Py_ssize_t k = 0; k < n; k++) {
+        free(f[k].m);
+        free(f[k].c);
+    }
+    free(f);
+}
+
+/* item = (monomials, numerators[, denominators]) (int64 each): f the primitive integer multiple,
+ * 1 on overflow, -1 on bad input (exception set), -2 out of memory */
+static int ipoly_read(const Layout *L, PyObject *item, IPoly *f)
+{
+    Py_buffer mb, nb, db = {0};
+    int has_den = PyTuple_Check(item) && PyTuple_GET_SIZE(item) == 3;
+    if (!PyArg_ParseTuple(item, has_den ? "y*y*y*" : "y*y*", &mb, &nb, &db))
+        return -1;
+    const int nw = L->nw;
+    Py_ssize_t len = nb.len / 8;
+    int rc = 0;
+    if (mb.len != 8 * nw * len || (has_den && db.len != nb.len) || len == 0) {
+        PyErr_SetString(PyExc_ValueError, "bba.in_ideal: bad polynomial");
+        rc = -1;
+        goto done;
+    }
+    f->len = len;
+    f->m = malloc(8 * nw * len);
+    f->c = malloc(sizeof(i128) * len);
+    if (!f->m || !f->c) {
+        rc = -2;
+        goto done;
+    }
+    memcpy(f->m, mb.buf, 8 * nw * len);
+    const int64_t *num = nb.buf, *den = has_den ? db.buf : NULL;
+    i128 l = 1; /* the lcm of the denominators */
+    for (Py_ssize_t k = 0; den && k < len && rc == 0; k++) {
+        if (den[k] <= 0) {
+            PyErr_SetString(PyExc_ValueError, "bba.in_ideal: bad denominator");
+            rc = -1;
+        } else if (__builtin_mul_overflow(l / (i128)gcd128((u128)l, (u128)den[k]), (i128)den[k], &l))
+            rc = 1;
+    }
+    for (Py_ssize_t k = 0; k < len && rc == 0; k++)
+        if (__builtin_mul_overflow((i128)num[k], den ? l / den[k] : 1, &f->c[k]))
+            rc = 1;
+    if (rc == 0) {
+        ipoly_primitive(f);
+        f->sev = msev(L, f->m);
+    }
+done:
+    PyBuffer_Release(&mb);
+    PyBuffer_Release(&nb);
+    if (has_den)
+        PyBuffer_Release(&db);
+    return rc;
+}
+
+/* Whether f top-reduces to 0 by the reducers, fraction-free (a step a f - c x^s g cancels the top
+ * term with a c = lc(g) f_top / gcd, then the content is removed): 1 yes, 0 no (a top term no
+ * leading monomial divides), 2 on overflow (of the coefficients or the packing), -2 out of
+ * memory.  f is consumed. */
+static int ipoly_reduces_to_zero(const Layout *L, const IPoly *red, Py_ssize_t nred, IPoly *f)
+{
+    const int nw = L->nw;
+    Py_ssize_t cap = 0, fcap = f->len; /* of the buffers om, oc and f's */
+    uint64_t *om = NULL, t[MAXW], s[MAXW];
+    i128 *oc = NULL;
+    int rc = 1;
+    while (f->len > 0) {
+        Py_ssize_t best = -1;
+        const uint64_t not_m = ~msev(L, f->m);
+        for (Py_ssize_t k = 0; k < nred; k++)
+            if (!(red[k].sev & not_m) && (best < 0 || red[k].len < red[best].len) && mdivides(L, red[k].m, f->m))
+                best = k;
+        if (best < 0) {
+            rc = 0;
+            break;
+        }
+        const IPoly *g = &red[best];
+        i128 a = g->c[0], c = f->c[0];
+        i128 d = (i128)gcd128(uabs128(a), uabs128(c));
+        a /= d;
+        c /= d;
+        msub(s, f->m, g->m, nw);
+        Py_ssize_t need = f->len + g->len;
+        if (need > cap) {
+            cap = 2 * need;
+            uint64_t *m2 = realloc(om, 8 * nw * cap);
+            i128 *c2 = m2 ? realloc(oc, sizeof(i128) * cap) : NULL;
+            if (m2)
+                om = m2;
+            if (c2)
+                oc = c2;
+            if (!m2 || !c2) {
+                rc = -2;
+                break;
+            }
+        }
+        /* out = a f[1..] - c x^s g[1..], both decreasing */
+        Py_ssize_t i = 1, j = 1, n = 0;
+        int have = 0;
+        while (i < f->len || j < g->len) {
+            if (j < g->len && !have) {
+                madd(t, g->m + (size_t)j * nw, s, nw);
+                if (mguarded(L, t)) {
+                    rc = 2;
+                    break;
+                }
+                have = 1;
+            }
+            int cmp = i >= f->len ? -1 : !have ? 1 : mcmp(f->m + (size_t)i * nw, t, nw);
+            i128 v, w;
+            const uint64_t *mono;
+            if (cmp > 0) {
+                if (__builtin_mul_overflow(a, f->c[i], &v)) {
+                    rc = 2;
+                    break;
+                }
+                mono = f->m + (size_t)i++ * nw;
+            } else {
+                if (__builtin_mul_overflow(c, g->c[j], &w)) {
+                    rc = 2;
+                    break;
+                }
+                v = -w;
+                if (cmp == 0) {
+                    i128 u;
+                    if (__builtin_mul_overflow(a, f->c[i], &u) || __builtin_add_overflow(u, v, &v)) {
+                        rc = 2;
+                        break;
+                    }
+                    i++;
+                }
+                mono = t;
+                j++;
+                have = 0;
+            }
+            if (v) {
+                memcpy(om + (size_t)n * nw, mono, 8 * nw);
+                oc[n++] = v;
+            }
+        }
+        if (rc != 1)
+            break;
+        uint64_t *fm = f->m;
+        i128 *fc = f->c;
+        f->m = om;
+        f->c = oc;
+        f->len = n;
+        om = fm;
+        oc = fc;
+        Py_ssize_t c2 = cap;
+        cap = fcap;
+        fcap = c2;
+        if (a != 1 && a != -1)
+            ipoly_primitive(f);
+    }
+    free(om);
+    free(oc);
+    return rc;
+}
+
+/* in_ideal(layout, reducers, polys): whether every polynomial top-reduces to 0 by the reducers
+ * exactly (True/False), None when 128-bit integers do not suffice.  A reducer is (monomials,
+ * numerators, denominators), leading term first; a polynomial (monomials, integer coefficients);
+ * all int64 bytes, monomials in the layout's packing. */
+static PyObject *bba_in_ideal(PyObject *self, PyObject *args)
+{
+    PyObject *lay, *reds, *polys;
+    if (!PyArg_ParseTuple(args, "OO!O!", &lay, &PyList_Type, &reds, &PyList_Type, &polys))
+        return NULL;
+    const Layout *L = PyCapsule_GetPointer(lay, "bba.layout");
+    if (!L)
+        return NULL;
+    Py_ssize_t nred = PyList_GET_SIZE(reds);
+    IPoly *red = calloc(nred ? nred : 1, sizeof(IPoly));
+    if (!red)
+        return PyErr_NoMemory();
+    int rc = 0; /* 0 going, 1 overflow, -1 error set, -2 memory; answer: */
+    int answer = 1;
+    for (Py_ssize_t k = 0; k < nred && rc == 0; k++)
+        rc = ipoly_read(L, PyList_GET_ITEM(reds, k), &red[k]);
+    for (Py_ssize_t k = 0; k < PyList_GET_SIZE(polys) && rc == 0 && answer; k++) {
+        IPoly f = {0};
+        rc = ipoly_read(L, PyList_GET_ITEM(polys, k), &f);
+        if (rc == 0) {
+            int z = ipoly_reduces_to_zero(L, red, nred, &f);
+            if (z == 2)
+                rc = 1;
+            else if (z < 0)
+                rc = -2;
+            else
+                answer = z;
+        }
+        free(f.m);
+        free(f.c);
+    }
+    ipolys_free(red, nred);
+    if (rc == -1)
+        return NULL;
+    if (rc == -2)
+        return PyErr_NoMemory();
+    if (rc == 1)
+        Py_RETURN_NONE;
+    return PyBool_FromLong(answer);
 }
 
 /* -- Hilbert series numerators -------------------------------------------------------------- */
@@ -1299,14 +1621,20 @@ static int numerator(uint16_t *g, int k, int n, Series *out)
     return rc;
 }
 
-/* hilbert_numerator(monomials, n): Q(t) of K[x]/M as a list (trailing zeros dropped, [0] for the
- * unit ideal); OverflowError when a coefficient leaves 64 bits or an exponent 16 bits */
+/* hilbert_numerator(monomials, n, divisor=None): Q(t) of K[x]/M as a list (trailing zeros
+ * dropped, [0] for the unit ideal), M generated by the monomials, or with a divisor m the colon
+ * ideal M : m (generated by the lcm(g, m) / m); OverflowError when a coefficient leaves 64 bits
+ * or an exponent 16 bits */
 static PyObject *bba_hilbert_numerator(PyObject *self, PyObject *args)
 {
-    PyObject *mons;
+    PyObject *mons, *divisor = NULL;
     int n;
-    if (!PyArg_ParseTuple(args, "O!i", &PyList_Type, &mons, &n))
+    if (!PyArg_ParseTuple(args, "O!i|O!", &PyList_Type, &mons, &n, &PyTuple_Type, &divisor))
         return NULL;
+    if (divisor && PyTuple_GET_SIZE(divisor) != n) {
+        PyErr_SetString(PyExc_ValueError, "hilbert_numerator: tuples of n exponents");
+        return NULL;
+    }
     int k = (int)PyList_GET_SIZE(mons);
     uint16_t *g = malloc(2 * (size_t)n * (k ? k : 1));
     if (!g)
@@ -1320,13 +1648,14 @@ static PyObject *bba_hilbert_numerator(PyObject *self, PyObject *args)
         }
         for (int j = 0; j < n; j++) {
             long v = PyLong_AsLong(PyTuple_GET_ITEM(t, j));
-            if (v < 0 || v > 65535) {
+            long w = divisor ? PyLong_AsLong(PyTuple_GET_ITEM(divisor, j)) : 0;
+            if (v < 0 || v > 65535 || w < 0) {
                 free(g);
                 if (!PyErr_Occurred())
                     PyErr_SetString(PyExc_OverflowError, "hilbert_numerator: exponent beyond 16 bits");
                 return NULL;
             }
-            g[a * n + j] = (uint16_t)v;
+            g[a * n + j] = (uint16_t)(v > w ? v - w : 0); /* the colon (L : x^w) */
         }
     }
     Series out = {NULL, 0};
@@ -1351,14 +1680,15 @@ static PyObject *bba_hilbert_numerator(PyObject *self, PyObject *args)
 }
 
 static PyMethodDef methods[] = {
-    {"hilbert_numerator", bba_hilbert_numerator, METH_VARARGS, "hilbert_numerator(monomials, n): Q(t)."},
+    {"hilbert_numerator", bba_hilbert_numerator, METH_VARARGS, "hilbert_numerator(monomials, n, divisor=None): Q(t) of K[x]/L, or of K[x]/(L : divisor)."},
     {"ratlift", bba_ratlift, METH_VARARGS, "ratlift(residues, primes, check, q): the lift to QQ, checked mod q."},
     {"layout", bba_layout, METH_VARARGS, "layout(nw, guard, units, eshifts, dshift, ebits): packed monomials."},
     {"state", bba_state, METH_VARARGS, "state(layout, p, gens, limit=0): generators waiting, no basis yet."},
     {"min_degree", bba_min_degree, METH_VARARGS, "min_degree(st): least degree of a pair, -1 if none."},
-    {"step", bba_step, METH_VARARGS, "step(st, d, need): the new leading monomials of degree d."},
+    {"step", bba_step, METH_VARARGS, "step(st, d, need, defer): the new leading monomials of degree d, the zero reductions."},
     {"reduced", bba_reduced, METH_VARARGS, "reduced(st, target): the reduced basis (bytes pairs)."},
     {"exponents", bba_exponents, METH_VARARGS, "exponents(layout, monomials): exponent tuples."},
+    {"in_ideal", bba_in_ideal, METH_VARARGS, "in_ideal(layout, reducers, polys): exact top reductions to 0, None on overflow."},
     {NULL, NULL, 0, NULL}
 };
 

@@ -86,8 +86,8 @@ mechanisms' many small eliminations finish there; larger computations go to FGLM
 wasted 20-40 ms on katsura-4/5 and cyclic-5 in ``lp`` and katsura-5 in (dp(3),dp(3))."""
 
 
-ATTEMPT_PRIMES = 6
-"""The compiled attempt gives up after this many primes (coefficients of about 90 bits): larger
+ATTEMPT_PRIMES = 4
+"""The compiled attempt gives up after this many primes of 50 bits (coefficients of about 95 bits): larger
 coefficients are left to the Hilbert-driven algorithm or FGLM."""
 
 
@@ -97,6 +97,14 @@ terms summed in its reductions modulo a prime.  The four-bar coupler curve needs
 5000 (2.8 ms with the lift, the Python attempt 3.2 ms); failing at 20000 costs 1.3 ms on the
 block (dp(3),dp(2)) and the five-bar projection.  Over Z/p there is no attempt: the compiled
 Hilbert-driven algorithm is faster even on the four-bar curve (0.8 against 2.5 ms)."""
+
+
+HOMOGENEOUS_BUDGET = 5000
+"""The ``dp`` basis of the homogenized generators (the Hilbert series of the Hilbert-driven
+algorithms) by the compiled Buchberger within this many terms summed modulo the first prime,
+past them by ``auto`` (modular F4 over QQ): the block (dp(3),dp(2)) of benchmarks/cases.py needs
+a few thousand (0.1 ms a prime, modular F4 0.4 ms more), the five-bar projection 69000 (two
+primes of 3.5 ms against modular F4's 4.4 ms in all; session 14)."""
 
 
 F4_BUDGET = 4_000_000
@@ -255,9 +263,7 @@ def standard_basis(gens: Sequence[Poly], ring: PolyRing | None = None, engine: s
     out = _CACHE.get(key)
     if out is None:
         out = _compute(gens, ring, name, engine is not None)
-        _CACHE[key] = out
-        if len(_CACHE) > _CACHE_SIZE:
-            _CACHE.popitem(last=False)
+        _remember(key, out)
     else:
         _CACHE.move_to_end(key)
     return list(out)
@@ -277,6 +283,12 @@ def clear_cache() -> None:
 
 def _key(gens: Sequence[Poly], ring: PolyRing, name: str) -> tuple:
     return ring, name, frozenset(g for g in gens if not g.is_zero())
+
+
+def _remember(key: tuple, basis: list[Poly]) -> None:
+    _CACHE[key] = basis
+    if len(_CACHE) > _CACHE_SIZE:
+        _CACHE.popitem(last=False)
 
 
 _CACHE: OrderedDict[tuple, list[Poly]] = OrderedDict()
@@ -411,9 +423,21 @@ def _dp_auto(gens: list[Poly], ring: PolyRing) -> list[Poly]:
 
 def _dp_homogeneous(gens: list[Poly], ring: PolyRing) -> list[Poly]:
     """The ``dp`` basis of homogenized generators the Hilbert-driven algorithms start from: by
-    the compiled Buchberger where it is built (F4's matrices cost more on these small homogeneous
-    systems), else by ``auto``."""
-    return standard_basis(gens, ring, "buchberger-compiled" if compiled_hilbert(ring) else AUTO)
+    the compiled Buchberger within :data:`HOMOGENEOUS_BUDGET` where it is built, else (or past
+    the budget) by ``auto``; kept in the cache as ``auto``'s basis (the reduced basis is one)."""
+    known = cached_standard_basis(gens, ring, AUTO)
+    if known is not None or not compiled_hilbert(ring):
+        return known or standard_basis(gens, ring, AUTO)
+    try:
+        if isinstance(ring.field, PrimeField):
+            terms = buchberger_modp(gens, ring, HOMOGENEOUS_BUDGET)
+        else:
+            terms = buchberger_qq(gens, ring, HOMOGENEOUS_BUDGET)
+    except (TooLong, ModularFailure):
+        return standard_basis(gens, ring, AUTO)
+    basis = _finish(terms, ring, True)
+    _remember(_key(gens, ring, AUTO), basis)
+    return basis
 
 
 def _buchberger_compiled(gens: list[Poly], ring: PolyRing) -> list[Terms]:

@@ -1,4 +1,4 @@
-"""The Hilbert-driven Buchberger algorithm (:mod:`.hilbert_driven`) modulo ``p < 2^31`` in
+"""The Hilbert-driven Buchberger algorithm (:mod:`.hilbert_driven`) modulo ``p < 2^50`` in
 compiled code (the optional C extension ``_bba``, kernel/_bba.c), and over QQ by a modular lift.
 
 Modulo ``p`` the homogenized generators, the basis and the pairs live in C as packed monomials
@@ -16,15 +16,17 @@ is complete as in Buchberger's algorithm.
 
 Over QQ (:func:`hilbert_qq`) the reduced bases at several primes of the same shape (monomials)
 are combined by the Chinese remainder theorem and lifted by rational reconstruction (:class:`Lift`:
-in C up to four primes, then :class:`.modular.Reconstructor`) until the next prime's basis agrees
+in C up to two primes, then :class:`.modular.Reconstructor`) until the next prime's basis agrees
 with the lift ``G``; a
 prime whose basis has another shape is dropped, and when more primes disagree than agree the
 first one was unlucky and the lift starts again from a later prime.  ``G mod q`` is then the
 reduced Gröbner basis of the ideal modulo a prime ``q`` not used to build ``G``, the
 probabilistic Gröbner basis check of :mod:`.modular` ("fast"); every generator is checked to
-top-reduce to 0 by ``G`` exactly over QQ, so ``G`` generates an ideal containing the ideal, and
-equal to it as soon as one prime used is lucky (as for :func:`.modular.f4_qq` on
-inhomogeneous ideals).
+top-reduce to 0 by ``G`` exactly over QQ (in C on 128-bit integers while they suffice,
+``_bba.in_ideal``), so ``G`` generates an ideal containing the ideal, and equal to it as soon as
+one prime used is lucky (as for :func:`.modular.f4_qq` on inhomogeneous ideals).  The primes lie
+below ``2^50`` (products in C by a double-precision quotient), so two of them lift coefficients
+of 49 bits.
 """
 from __future__ import annotations
 
@@ -46,14 +48,23 @@ from .order import Exp, MonomialOrder
 from .poly import Poly, PolyRing
 
 try:
-    from ._bba import exponents, layout, min_degree, ratlift, reduced, state, step
-    _bba: SimpleNamespace | None = SimpleNamespace(exponents=exponents, layout=layout, min_degree=min_degree,
-                                                   ratlift=ratlift, reduced=reduced, state=state, step=step)
+    from ._bba import exponents, in_ideal, layout, min_degree, ratlift, reduced, state, step
+    _bba: SimpleNamespace | None = SimpleNamespace(exponents=exponents, in_ideal=in_ideal, layout=layout,
+                                                   min_degree=min_degree, ratlift=ratlift, reduced=reduced,
+                                                   state=state, step=step)
 except ImportError:  # pragma: no cover - no compiler at install time
     _bba = None
 
-PRIMES = (1 << 30, 1 << 31)
-"""The primes of the lift (the compiled arithmetic takes ``p < 2^31``)."""
+PRIMES = (1 << 49, 1 << 50)
+"""The primes of the lift (the compiled arithmetic takes ``p < 2^50``: two primes lift coefficients
+of 49 bits, where four of 31 bits took 61)."""
+
+MAX_CHARACTERISTIC = 1 << 31
+"""Rings over Z/p with ``p`` below this use the compiled algorithm (as the other engines)."""
+
+C_LIFT_BITS = 124
+"""The lift's rational reconstruction runs in C (128-bit integers) while the product of the primes
+has at most this many bits."""
 
 MAX_PRIMES = 60
 """The lift gives up (:class:`~.modular.ModularFailure`) after this many primes."""
@@ -64,7 +75,7 @@ def usable(ring: PolyRing) -> bool:
     Z/p with ``p < 2^31``."""
     f = ring.field
     return _bba is not None and (isinstance(f, RationalField)
-                                 or isinstance(f, PrimeField) and f.characteristic < PRIMES[1])
+                                 or isinstance(f, PrimeField) and f.characteristic < MAX_CHARACTERISTIC)
 
 
 @lru_cache(maxsize=64)
@@ -75,24 +86,34 @@ def _layout(pk: Packing):
                        tuple(pk.eshifts), pk.dshift, pk.ebits)
 
 
-def _encode(pk: Packing, terms: dict[Exp, int], p: int) -> tuple[bytes, bytes]:
-    """The terms as (monomials, coefficients mod p) bytes, leading first (exponents may come as
-    flint integers: the packed monomial is made a Python int)."""
+def _encode(pk: Packing, terms: dict[Exp, int], p: int = 0) -> tuple[bytes, bytes]:
+    """The integer terms as (monomials, coefficients) bytes, leading first: the coefficients mod
+    ``p`` (uint64), or for ``p = 0`` as they are (int64: OverflowError past 63 bits).  Exponents
+    may come as flint integers: the packed monomial is made a Python int."""
     width = 8 * ((pk.bits + 64) // 64)
-    items = sorted(((int(pk.pack(e)), c % p) for e, c in terms.items()), reverse=True)
+    items = sorted(((int(pk.pack(e)), c % p if p else c) for e, c in terms.items()), reverse=True)
     items = [(m, c) for m, c in items if c]
-    return b"".join(m.to_bytes(width, "little") for m, _ in items), array("I", [c for _, c in items]).tobytes()
+    coefs = array("Q" if p else "q", [c for _, c in items])
+    return b"".join(m.to_bytes(width, "little") for m, _ in items), coefs.tobytes()
 
 
 class _Series:
     """The Hilbert series of the leading monomials found (:class:`.hilbert_driven.Counter`),
     kept across the primes of one lift: primes of the same shape find the same leading monomials
     in the same order, so each numerator is computed once.  A state is a node of the tree of
-    sequences of leading monomials met so far (0: none)."""
+    sequences of leading monomials met so far (0: none).
+
+    The pairs that reduced to zero in a degree at the first prime through a node are reduced last
+    at the next ones (:meth:`deferred`): a degree is complete once it has the new leading
+    monomials the series asks for, whichever pairs gave them (module docstring), so the order of
+    the pairs changes the work, not the result's correctness; at primes of the same shape the
+    pairs that gave new elements come in the same order with the same basis before each, so the
+    basis is the same as without deferring."""
 
     def __init__(self, target: list[int], nvars: int) -> None:
         self.counters = [Counter(target, nvars)]
         self.children: list[dict[Exp, int]] = [{}]
+        self.zeros: dict[tuple[int, int], bytes] = {}
 
     def add(self, node: int, m: Exp) -> int:
         """The node after ``m`` joined the leading monomials of ``node``."""
@@ -110,6 +131,14 @@ class _Series:
     def missing(self, node: int, d: int) -> tuple[int, bool]:
         return self.counters[node].missing(d)
 
+    def deferred(self, node: int, d: int) -> bytes:
+        """A byte per pair of degree ``d`` at ``node`` (sorted as in C), set for those to reduce
+        last; empty: none known."""
+        return self.zeros.get((node, d), b"")
+
+    def reduced_to_zero(self, node: int, d: int, zeros: bytes) -> None:
+        self.zeros.setdefault((node, d), zeros)
+
 
 class _AllPairs:
     """No Hilbert series: every pair is reduced (Buchberger's algorithm, normal strategy)."""
@@ -120,13 +149,19 @@ class _AllPairs:
     def add(self, node: int, m: Exp) -> int:
         return 0
 
+    def deferred(self, node: int, d: int) -> bytes:
+        return b""
+
+    def reduced_to_zero(self, node: int, d: int, zeros: bytes) -> None:
+        pass
+
 
 def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyRing, series: _Series | _AllPairs,
                   p: int, limit: int = 0):
     """The reduced basis modulo ``p`` of the ideal of the homogenized generators ``hpolys``
     (integer coefficients, none of whose leading coefficients ``p`` divides), dehomogenized when
-    ``hring`` is not ``ring``: (layout of ``ring``'s packing, list of (monomials, coefficients)
-    bytes) by increasing leading monomial.  :class:`~.buchberger.TooLong` once the reductions
+    ``hring`` is not ``ring``: (``ring``'s packing, list of (monomials, coefficients) bytes) by
+    increasing leading monomial.  :class:`~.buchberger.TooLong` once the reductions
     have summed more than ``limit`` terms (if not 0)."""
     maxdeg = max(64, 2 * max(sum(e) for t in hpolys for e in t))
     while True:
@@ -144,16 +179,18 @@ def _reduced_modp(hpolys: Sequence[dict[Exp, int]], hring: PolyRing, ring: PolyR
                 need, done = series.missing(path, d)
                 if done:
                     break
-                for lm in _bba.step(st, d, need):
+                lms, zeros = _bba.step(st, d, need, series.deferred(path, d))
+                series.reduced_to_zero(path, d, zeros)
+                for lm in lms:
                     path = series.add(path, unpack(lm))
-            layout = _layout(pk)
-            return layout, _bba.reduced(st, None if hring is ring else layout)
+            return pk, _bba.reduced(st, None if hring is ring else _layout(pk))
         except Overflow:
             maxdeg *= 4
 
 
-def _as_dicts(layout, basis, coefficient) -> list[dict[Exp, Any]]:
-    return [dict(zip(_bba.exponents(layout, ms), map(coefficient, array("I", cs)))) for ms, cs in basis]
+def _as_dicts(pk: Packing, basis, coefficient) -> list[dict[Exp, Any]]:
+    layout = _layout(pk)
+    return [dict(zip(_bba.exponents(layout, ms), map(coefficient, array("Q", cs)))) for ms, cs in basis]
 
 
 def hilbert_modp(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
@@ -161,9 +198,9 @@ def hilbert_modp(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> l
     algorithm, as ``{exponent: nmod}`` dicts by increasing leading monomial."""
     hring, hgens, target = _homogenized(gens, ring, degree_basis)
     p = ring.field.characteristic
-    layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in hgens], hring, ring,
+    pk, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in hgens], hring, ring,
                                   _Series(target, hring.nvars), p)
-    return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
+    return _as_dicts(pk, basis, lambda c: flint.nmod(c, p))
 
 
 def hilbert_qq(gens: Sequence[Poly], ring: PolyRing, degree_basis: Basis) -> list[dict[Exp, Any]]:
@@ -181,9 +218,9 @@ def buchberger_modp(gens: Sequence[Poly], ring: PolyRing, limit: int = 0) -> lis
     sugar strategy, the Gebauer–Möller criteria), as ``{exponent: nmod}`` dicts by increasing
     leading monomial; :class:`~.buchberger.TooLong` past ``limit`` terms summed (if not 0)."""
     p = ring.field.characteristic
-    layout, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in gens], ring, ring,
+    pk, basis = _reduced_modp([{e: int(c) for e, c in g.terms.items()} for g in gens], ring, ring,
                                   _AllPairs(), p, limit)
-    return _as_dicts(layout, basis, lambda c: flint.nmod(c, p))
+    return _as_dicts(pk, basis, lambda c: flint.nmod(c, p))
 
 
 def buchberger_qq(gens: Sequence[Poly], ring: PolyRing, limit: int = 0, max_primes: int = MAX_PRIMES) -> list[dict[Exp, Any]]:
@@ -204,7 +241,7 @@ def lift_primes(seed: int = 30011):
 
 def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[Poly], ring: PolyRing,
              max_primes: int = MAX_PRIMES):
-    """The reduced basis over QQ lifted from ``modp(p)`` (a layout and the reduced basis modulo
+    """The reduced basis over QQ lifted from ``modp(p)`` (a packing and the reduced basis modulo
     ``p`` as bytes) at primes not dividing the leading coefficients of the integer polynomials
     ``ints`` of ``iring``, checked against ``gens`` (see the module docstring)."""
     key = iring.order.key
@@ -212,7 +249,7 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
     stream = lift_primes()
     used = 0
     while used < max_primes:
-        shape = layout = None
+        shape = pk = None
         lift = Lift()
         misses = good = 0
         while used < max_primes:
@@ -220,12 +257,13 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
             used += 1
             if any(c % p == 0 for c in leads):
                 continue
-            lay, basis = modp(p)
+            ppk, basis = modp(p)
             ms = [m for m, _ in basis]
             flat = b"".join(c for _, c in basis)
             if shape is None:
-                shape, layout = ms, lay
-                sizes = [len(c) // 4 for _, c in basis]
+                shape, pk = ms, ppk
+                layout = _layout(pk)
+                sizes = [len(c) // 8 for _, c in basis]
             elif ms != shape:
                 misses += 1
                 if misses > good + 2:
@@ -239,35 +277,64 @@ def _lift_qq(modp, ints: list[dict[Exp, int]], iring: PolyRing, gens: Sequence[P
                     for m, size in zip(shape, sizes):
                         out.append(dict(zip(_bba.exponents(layout, m), coefs[k:k + size])))
                         k += size
-                    if reduce_to_zero(out, [g.terms for g in gens], ring.order):
+                    if _generators_reduce_to_zero(pk, shape, lift.fractions, out, gens, ring.order):
                         return out
                     break
             lift.add(flat, p)
     raise ModularFailure("compiled Buchberger's lift: no verified basis")
 
 
+def _generators_reduce_to_zero(pk: Packing, shape: list[bytes], fractions: tuple[list[int], list[int]] | None,
+                               lift: list[dict[Exp, Any]], gens: Sequence[Poly], order: MonomialOrder) -> bool:
+    """Whether every generator top-reduces to 0 by the lift exactly: in C on 128-bit integers
+    (``_bba.in_ideal``) from the numerators and denominators of the C reconstruction
+    (``fractions``, the coefficients of the basis elements of monomials ``shape`` in turn), else
+    (past 128 bits, or a lift by :class:`.modular.Reconstructor`) by :func:`reduce_to_zero`."""
+    if fractions is not None:
+        try:
+            polys = [_encode(pk, primitive(g.terms)) for g in gens]
+        except OverflowError:  # a coefficient of more than 63 bits
+            polys = None
+        if polys is not None:
+            nums, dens = memoryview(array("q", fractions[0])), memoryview(array("q", fractions[1]))
+            reducers, k = [], 0
+            width = 8 * ((pk.bits + 64) // 64)
+            for ms in shape:
+                size = len(ms) // width
+                reducers.append((ms, nums[k:k + size], dens[k:k + size]))
+                k += size
+            answer = _bba.in_ideal(_layout(pk), reducers, polys)
+            if answer is not None:
+                return answer
+    return reduce_to_zero(lift, [g.terms for g in gens], order)
+
+
 class Lift:
-    """Residues of the coefficients (one flat uint32 array per prime) lifted to QQ: in C while
-    the product of the primes fits 124 bits (four primes), then by :class:`.modular.Lifter` and
-    :class:`.modular.Reconstructor`."""
+    """Residues of the coefficients (one flat uint64 array per prime) lifted to QQ: in C while
+    the product of the primes has at most :data:`C_LIFT_BITS` bits (two primes), then by
+    :class:`.modular.Lifter` and :class:`.modular.Reconstructor`."""
 
     def __init__(self) -> None:
         self.residues: list[bytes] = []
         self.primes: list[int] = []
+        self.modulus = 1
         self.lifter: Lifter | None = None
         self.rec: Reconstructor | None = None
         self.candidate: list | None = None
+        self.fractions: tuple[list[int], list[int]] | None = None
+        """The numerators and denominators of the last lift :meth:`checked` made in C."""
 
     def add(self, flat: bytes, p: int) -> None:
         self.residues.append(flat)
         self.primes.append(p)
-        if len(self.primes) > 4:
+        self.modulus *= p
+        if self.modulus.bit_length() > C_LIFT_BITS:
             if self.lifter is None:
-                self.lifter, self.rec = Lifter(), Reconstructor([len(flat) // 4])
+                self.lifter, self.rec = Lifter(), Reconstructor([len(flat) // 8])
                 for r, q in zip(self.residues, self.primes):
-                    self.lifter.add([array("I", r).tolist()], q)
+                    self.lifter.add([array("Q", r).tolist()], q)
             else:
-                self.lifter.add([array("I", flat).tolist()], p)
+                self.lifter.add([array("Q", flat).tolist()], p)
             self.candidate = self.rec.attempt(self.lifter.values, self.lifter.m)
 
     def checked(self, flat: bytes, q: int) -> list | None:
@@ -275,9 +342,10 @@ class Lift:
         if not self.primes:
             return None
         if self.lifter is None:
-            lifted = _bba.ratlift(self.residues, self.primes, flat, q)
-            return None if lifted is None else list(map(flint.fmpq, *lifted))
-        if not self.rec.check([array("I", flat).tolist()], q) and self.candidate is not None:
+            self.fractions = _bba.ratlift(self.residues, self.primes, flat, q)
+            return None if self.fractions is None else list(map(flint.fmpq, *self.fractions))
+        self.fractions = None
+        if not self.rec.check([array("Q", flat).tolist()], q) and self.candidate is not None:
             return self.candidate[0]
         return None
 

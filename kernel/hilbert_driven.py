@@ -24,7 +24,7 @@ from typing import Any, Callable, Sequence
 from .coeffs import PrimeField, RationalField
 from .buchberger import Reducer, _monic, _spoly, pack, packed, pair_update, unpack
 from .f4 import f4_modp
-from .hilbert import first_numerator, hilbert_numerators
+from .hilbert import colon_numerator, hilbert_numerators
 from .modular import f4_qq
 from .monomials import Packing, nonnegative_matrix
 from .order import Block, Exp, MonomialOrder
@@ -130,8 +130,7 @@ class Counter:
 
     def add(self, m: Exp) -> None:
         """The leading ideal gains the monomial ``m``."""
-        colon = [tuple(a - b if a > b else 0 for a, b in zip(g, m)) for g in self.gens]
-        sub = first_numerator(colon, self.n) if colon else [1]
+        sub = colon_numerator(self.gens, m, self.n)
         if sub == [0]:  # m is in L already (the colon ideal is the unit ideal)
             return
         shifted = [0] * sum(m) + sub

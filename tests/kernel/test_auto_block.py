@@ -9,7 +9,8 @@ from mech.kernel import engines as E
 from mech.kernel.buchberger import TooLong, buchberger, reduce_basis
 from mech.kernel.engines import clear_cache, standard_basis
 from mech.kernel.hilbert import minimal_monomials
-from mech.kernel.hilbert_driven import degree_leads
+from mech.kernel.hilbert_driven import _homogenized_basis, degree_leads
+from mech.kernel.poly import Poly
 from tests.util import ideal_blocks, parse_poly, run_singular
 
 BLOCK = ["x^2+y*u-1", "y^2-x*v", "z^3-u^2*v", "x*y*z-u-v"]  # benchmarks/cases.py's block (dp(3),dp(2))
@@ -106,3 +107,21 @@ def test_block_eliminations_match_singular():
                             key=lambda p: R.order.key(p.lm()))
             assert ours == theirs, (o, field)
             k += 1
+
+
+@pytest.mark.parametrize("field", [QQ, GF(32003)])
+def test_the_homogenized_dp_basis_past_its_budget_goes_to_auto(field, monkeypatch):
+    """The Hilbert series' dp basis: by the compiled Buchberger within HOMOGENEOUS_BUDGET, past it
+    by ``auto`` (modular F4 over QQ): the same basis either way, kept as ``auto``'s."""
+    R = block_ring(field)
+    gens = gens_of(R, BLOCK)
+    clear_cache()
+    within = _homogenized_basis(gens, R, E._dp_homogeneous)[2]
+    dp = within[0].ring
+    hgens = [Poly(dp, g.terms) for g in _homogenized_basis(gens, R, E._dp_homogeneous)[1]]
+    assert E.cached_standard_basis(hgens, dp, E.AUTO) == within
+    monkeypatch.setattr(E, "HOMOGENEOUS_BUDGET", 1)
+    clear_cache()
+    assert _homogenized_basis(gens, R, E._dp_homogeneous)[2] == within
+    clear_cache()
+    assert [g.terms for g in standard_basis(gens, R)] == reduce_basis(buchberger(gens, R), R)

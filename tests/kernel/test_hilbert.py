@@ -8,8 +8,9 @@ from tests.util import SINGULAR, run_singular
 from mech.kernel import QQ, Block, MonomialOrder, PolyRing
 from mech.kernel.errors import DomainError
 from mech.kernel.groebner import groebner
-from mech.kernel.hilbert import (DegreeInfo, degree, hilb_lines, hilbert_numerators, kbase,
-                                 minimal_monomials, mult, vdim)
+from mech.kernel import hilbert as H
+from mech.kernel.hilbert import (DegreeInfo, colon_numerator, degree, first_numerator, hilb_lines,
+                                 hilbert_numerators, kbase, minimal_monomials, mult, vdim)
 from mech.kernel.homog import homogenize, is_homogeneous, variable_weights
 
 singular = pytest.mark.skipif(SINGULAR is None, reason="Singular is not installed")
@@ -128,6 +129,23 @@ def test_minimal_monomials():
     assert sorted(minimal_monomials([(2, 0), (1, 1), (2, 1), (1, 1), (0, 3)])) == [(0, 3), (1, 1), (2, 0)]
     with pytest.raises(DomainError):
         hilbert_numerators([(1, 0)], 3)
+
+
+@pytest.mark.parametrize("compiled", [True, False])
+def test_colon_numerator_is_the_numerator_of_the_colon_ideal(compiled, monkeypatch):
+    """Q(t) of K[x]/(L : m) (the Hilbert-driven algorithms' update), in C with a divisor and in
+    Python, against the colon's generators lcm(l, m) / m written out; m in L gives the unit ideal."""
+    if not compiled:
+        monkeypatch.setattr(H, "_compiled_numerator", None)
+    rng = random.Random(7)
+    for _ in range(30):
+        n = rng.randint(1, 5)
+        lms = [tuple(rng.randint(0, 3) for _ in range(n)) for _ in range(rng.randint(1, 6))]
+        m = tuple(rng.randint(0, 3) for _ in range(n))
+        colon = [tuple(max(a - b, 0) for a, b in zip(g, m)) for g in lms]
+        assert colon_numerator(lms, m, n) == first_numerator(colon, n)
+    assert colon_numerator([(1, 0)], (2, 1), 2) == [0]
+    assert colon_numerator([], (2, 1), 2) == [1]
 
 
 def _intvec(text):
