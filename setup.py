@@ -7,6 +7,8 @@ from setuptools import Extension, setup
 setup(ext_modules=[Extension("mech.kernel._f4rows",
                              ["kernel/_f4rows.c", "kernel/_f4sym.c", "kernel/_f4pairs.c", "kernel/_fglm.c"],
                              optional=True, extra_compile_args=["-O2"]),
+                   Extension("mech.kernel._fglm", ["kernel/_fglm.c", "kernel/_fglm_proof.c"],
+                             define_macros=[("FGLM_MODULE", "1")], optional=True, extra_compile_args=["-O2"]),
                    Extension("mech.kernel._bba", ["kernel/_bba.c"], optional=True, extra_compile_args=["-O2"]),
                    Extension("mech.kernel._mora", ["kernel/_mora.c"], depends=["kernel/_mora_poly.h"], optional=True,
                              extra_compile_args=["-O2"])])

@@ -411,10 +411,10 @@ def _degree_basis(gens: Sequence[Poly], ring: PolyRing) -> list[Poly]:
 def _convert(basis: list[Poly], ring: PolyRing) -> list[Terms]:
     """FGLM from a ``dp`` basis to the ring's ordering."""
     source = basis[0].ring.order if basis else MonomialOrder.simple("dp", ring.nvars)
-    terms = [b.terms for b in basis]
+    terms, leads = [b.terms for b in basis], [b.lm() for b in basis]
     if isinstance(ring.field, PrimeField):
-        return fglm_zp(terms, source, ring.order, ring.field.characteristic)
-    return fglm_qq(terms, source, ring.order)
+        return fglm_zp(terms, source, ring.order, ring.field.characteristic, leads)
+    return fglm_qq(terms, source, ring.order, leads)
 
 
 def _dp_auto(gens: list[Poly], ring: PolyRing) -> list[Poly]:

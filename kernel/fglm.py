@@ -3,28 +3,36 @@ basis in another one (Faugère, Gianni, Lazard, Mora, J. Symb. Comput. 16, 1993)
 
 ``K[x]/I`` has the standard monomials ``B`` of the known basis ``G`` as a ``K``-basis
 (``D = |B|``).  The normal forms of the *border* ``{x_i b : b in B} \\ B`` give the
-multiplication matrices; they come out of one F4 matrix (:meth:`.f4.F4._matrix`): each border
-monomial's row ``u g`` is reduced by back substitution, and its reduced tail is minus its normal
-form.  Then the monomials are visited in increasing target order, each one ``x_i m`` with ``m`` a
-new standard monomial: its normal form is ``M_i NF(m)`` (or read off directly for ``B`` and the
-border), and it is reduced against the normal forms of the new standard monomials so far.  A
-dependent monomial gives an element of the new basis (tail: the dependency, on new standard
-monomials only, so the basis comes out reduced); an independent one is a new standard monomial.
+multiplication matrices.  Then the monomials are visited in increasing target order, each one
+``x_i m`` with ``m`` a new standard monomial: its normal form is ``M_i NF(m)`` (or read off
+directly for ``B`` and the border), and it is reduced against the normal forms of the new
+standard monomials so far.  A dependent monomial gives an element of the new basis (tail: the
+dependency, on new standard monomials only, so the basis comes out reduced); an independent one
+is a new standard monomial.  Whether a visited monomial lies in the new leading ideal is read
+off its quotients by the variables (visited before it), not tested against every leading
+monomial.
 
-Vectors are packed modulo ``p`` as in :mod:`.f4_vectors`: slot ``j < D`` holds the coefficient
-of ``B[j]``; slot ``D + k`` records how a row combines the normal forms of the new standard
-monomials (the ``k``-th one), so a dependency is read off when the low slots vanish.  With
-the compiled extension the same steps run in C on dense arrays (``kernel/_fglm.c``,
-:class:`_Compiled`).  Whether a visited monomial lies in the new leading ideal is read off its
-quotients by the variables (visited before it), not tested against every leading monomial.
+With the compiled module ``_fglm`` (kernel/_fglm.c) and a reduced ``G``, the border's
+:class:`Border` plan -- which monomial each column ``x_a B[j]`` is; the normal form of each
+border monomial, in increasing order, as minus a basis element's tail or as ``x_i`` times an
+earlier border monomial's form -- is found once and depends on the monomials only; C fills the
+matrices from it at each prime and walks the whole new staircase (:func:`_walked`), and at
+further primes repeats the first walk's steps without the walk (:func:`replay`).  Otherwise
+the border normal forms come out of one F4 matrix (:meth:`.f4.F4._matrix`: each border
+monomial's row ``u g`` reduced by back substitution, its reduced tail minus its normal form) and
+the walk runs in Python, its steps in C on dense arrays (:class:`_Compiled`) or on vectors
+packed modulo ``p`` as in :mod:`.f4_vectors` (:class:`_Packed`: slot ``j < D`` holds the
+coefficient of ``B[j]``; slot ``D + k`` records how a row combines the normal forms of the new
+standard monomials, so a dependency is read off when the low slots vanish).
 
 Over QQ the conversion runs modulo primes.  From a source basis of small coefficients
 (:data:`LIFT_HEIGHT`) the conversions are lifted by Chinese remaindering and rational
 reconstruction and the lift is proved (:func:`_proved`: its elements reduce to 0 by the source
-basis exactly, so they lie in ``I``, and its leading monomials leave ``D`` standard monomials,
-so they generate ``lt(I)``).  Otherwise, or when that fails, the conversion found modulo a prime
-is redone over QQ (:func:`_exact`): the border normal forms exactly, the normal forms of the new
-standard and leading monomials by the multiplication matrices, one linear solve for the tails.
+basis exactly -- in C on 64-bit integers while they fit, kernel/_fglm_proof.c -- so they lie in
+``I``, and its leading monomials leave ``D`` standard monomials, so they generate ``lt(I)``).
+Otherwise, or when that fails, the conversion found modulo a prime is redone over QQ
+(:func:`_exact`): the border normal forms exactly, the normal forms of the new standard and
+leading monomials by the multiplication matrices, one linear solve for the tails.
 """
 from __future__ import annotations
 
@@ -32,18 +40,24 @@ import heapq
 from array import array
 from dataclasses import dataclass
 from itertools import chain
+from operator import mul
 from typing import Any, Sequence
 
 import flint
 
 from .errors import NotSupported
 from .f4 import F4, PackingOverflow
-from .f4_rows import FGLM_STEP, compiled
+from .f4_rows import compiled
 from .f4_vectors import Vectors, support
 from .fglm_solve import solve_qq
-from .monomials import Packing
+from .monomials import Packing, nonnegative_matrix
 from .order import Exp, MonomialOrder
 
+try:
+    from ._fglm import fglm_matrices as MATRICES, fglm_plan as PLAN, fglm_reduces as REDUCES, fglm_replay as REPLAY
+    from ._fglm import fglm_step as STEP, fglm_walk as WALK
+except ImportError:  # no compiler at install (or a module built before these): the packed Python integers
+    MATRICES = PLAN = REDUCES = REPLAY = STEP = WALK = None
 
 
 @dataclass
@@ -57,6 +71,8 @@ class Conversion:
     stairs: list[Exp]
     stair_from: list[tuple[int, int]]
     lm_from: list[tuple[int, int]]
+    steps: array | None = None
+    """With the compiled steps: ``(mode, a, b, leading)`` of each visit, for :func:`replay`."""
 
 
 class NotZeroDimensional(NotSupported):
@@ -80,17 +96,36 @@ def staircase(lms: Sequence[Exp], nvars: int) -> list[Exp]:
     if len(pure) < nvars:
         raise NotZeroDimensional("FGLM needs a zero-dimensional ideal")
     one = (0,) * nvars
-    out = [one]
-    std = {one}
-    for b in out:  # grows while it is read
+    w, unit = _digits(lms, nvars, 2)
+    leads = {_packed(e, unit) for e in lmset}
+    out, packs = [one], [0]
+    std = {0}
+    for b, x in zip(out, packs):  # both grow while they are read
+        lower = [x - unit[j] for j in range(nvars) if b[j]]  # b / x_j: t / x_j = x_i (b / x_j)
         for i in range(nvars):
-            t = b[:i] + (b[i] + 1,) + b[i + 1:]
-            if t in std or t in lmset:
+            ui = unit[i]
+            t = x + ui
+            if t in std or t in leads:
                 continue
-            if all(t[:j] + (t[j] - 1,) + t[j + 1:] in std for j in range(nvars) if t[j] and j != i):
+            for y in lower:
+                if y + ui not in std:
+                    break
+            else:
                 std.add(t)
-                out.append(t)
+                packs.append(t)
+                out.append(b[:i] + (b[i] + 1,) + b[i + 1:])
     return out
+
+
+def _digits(monomials: Sequence[Exp], nvars: int, room: int) -> tuple[int, list[int]]:
+    """Exponents as the base ``2^w`` digits of an integer (:func:`_packed`), with room for
+    exponents up to ``room`` above those of ``monomials``: ``w`` and the variables' units."""
+    w = (max(max(e) for e in monomials) + room + 1).bit_length()
+    return w, [1 << (w * i) for i in range(nvars)]
+
+
+def _packed(e: Exp, unit: list[int]) -> int:
+    return sum(map(mul, e, unit))
 
 
 def border_forms(basis: Sequence[dict[Exp, int]], order: MonomialOrder, B: list[Exp], p: int) -> dict[Exp, list[int]]:
@@ -162,10 +197,10 @@ def _border(basis, lms, P: Packing, border, B, p) -> dict[Exp, list[int]]:
 
 
 def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: MonomialOrder, p: int,
-              border: dict[Exp, list[int]] | None = None, B: list[Exp] | None = None) -> Conversion:
+              B: list[Exp] | None = None, structure: Border | None = None) -> Conversion:
     """The reduced basis for ``target`` of the ideal with the monic Gröbner basis ``basis``
-    (for ``source``, coefficients as ints mod ``p``; ``border``: its :func:`border_forms` and
-    ``B`` its standard monomials in increasing ``source`` order, if known already)."""
+    (for ``source``, coefficients as ints mod ``p``; ``B``: its standard monomials in increasing
+    ``source`` order and ``structure`` its :class:`Border`, if known already)."""
     n = source.nvars
     key = source.key
     if B is None:
@@ -173,29 +208,39 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
     D = len(B)
     if not D:
         return Conversion([(0,) * n], [[]], [], [], [])
-    if border is None:
-        border = border_forms(basis, source, B, p)
     index = {b: j for j, b in enumerate(B)}
-    algebra = _Compiled if compiled(p) and (n + 3) * D * D <= COMPILED_ENTRIES else _Packed
-    lin = algebra(p, B, index, border, n)
+    if STEP is not None and p < LIMIT and (n + 3) * D * D <= COMPILED_ENTRIES:
+        if structure is None:
+            structure = Border.of(basis, source, B)
+        if structure is not None:
+            M = structure.matrices(basis, p)
+            if WALK is not None and n * structure.w <= 64 and _small_weights(target, D):
+                return _walked(structure, M, target, p)
+            lin = _Compiled(p, index, structure.where, M)
+        else:  # a basis that is not reduced
+            border = border_forms(basis, source, B, p)
+            lin = _Compiled(p, index, _where(border, B, n), _dense(border, B, index, n))
+    else:
+        lin = _Packed(p, B, index, border_forms(basis, source, B, p), n)
     tkey = target.key
     one = (0,) * n
-    out = Conversion([], [], [], [], [])
-    heap = [(tkey(one), one, -1, -1)]
-    seen = {one}
+    w, unit = _digits([(D,) * n], n, 0)  # a visited monomial has no exponent above D
+    out = Conversion([], [], [], [], [], getattr(lin, "steps", None))
+    heap = [(tkey(one), 0, one, -1, -1)]  # (key, packed monomial, monomial, i, k): x_i * stairs[k]
+    seen = {0}
     # monomials visited and found in the new leading ideal; each visited t = x_i s (s standard)
     # has its other quotients t / x_j = x_i (s / x_j) visited before it (smaller, pushed when
     # the standard s / x_j was found), so t is in the ideal iff one of them is
-    inside: set[Exp] = set()
+    inside: set[int] = set()
     while heap:
-        _, t, i, k = heapq.heappop(heap)
-        if any(t[j] and t[:j] + (t[j] - 1,) + t[j + 1:] in inside for j in range(n) if j != i):
-            inside.add(t)
+        _, x, t, i, k = heapq.heappop(heap)
+        if any(t[j] and x - unit[j] in inside for j in range(n) if j != i):
+            inside.add(x)
             continue
         K = len(out.stairs)
         tail = lin.visit(t, i, k, K)
         if tail is not None:
-            inside.add(t)
+            inside.add(x)
             out.lms.append(t)
             out.lm_from.append((i, k))
             out.tails.append(tail + [0] * (D - K))
@@ -203,14 +248,142 @@ def fglm_modp(basis: Sequence[dict[Exp, int]], source: MonomialOrder, target: Mo
         out.stairs.append(t)
         out.stair_from.append((i, k))
         for j in range(n):
-            u = _times(t, j)
-            if u not in seen:
-                seen.add(u)
-                heapq.heappush(heap, (tkey(u), u, j, K))
+            y = x + unit[j]
+            if y not in seen:
+                seen.add(y)
+                u = t[:j] + (t[j] + 1,) + t[j + 1:]
+                heapq.heappush(heap, (tkey(u), y, u, j, K))
     if len(out.stairs) != D:
         raise Unlucky("the new staircase has the wrong size")
     return out
 
+
+def replay(first: Conversion, basis: Sequence[dict[Exp, int]], structure: Border, p: int) -> Conversion | None:
+    """The conversion ``first`` (made with the compiled steps) at another prime ``p``: the same
+    visits in the same order, only the linear algebra redone (``fglm_replay`` of
+    kernel/_fglm.c); None if a visit turns out otherwise (one of the two primes is unlucky)."""
+    D = len(structure.B)
+    tails = array("I", bytes(4 * D * len(first.lms)))
+    if not REPLAY(p, D, structure.matrices(basis, p), first.steps, tails):
+        return None
+    return Conversion(first.lms, [tails[D * i:D * (i + 1)].tolist() for i in range(len(first.lms))],
+                      first.stairs, first.stair_from, first.lm_from, first.steps)
+
+
+def _walked(structure: Border, M: array, target: MonomialOrder, p: int) -> Conversion:
+    """:func:`fglm_modp`'s visits all in C (``fglm_walk`` of kernel/_fglm.c, the same steps in
+    the same order) on monomials packed as :attr:`Border.w`-bit digits, the target ordering as
+    its nonnegative weight matrix."""
+    B, n, w = structure.B, structure.n, structure.w
+    D = len(B)
+    steps = array("i", bytes(16 * (n * (D + 1) + 1)))  # 4 entries a visit
+    W = array("q", [v for row in nonnegative_matrix(target) for v in row])
+    got = WALK(p, D, n, w, W, M, structure.code_keys, structure.code_values, steps)
+    if got is None or len(got[0]) != D:
+        raise Unlucky("the new staircase has the wrong size")
+    stairs, stair_from, lms, lm_from, tails, visits = got
+    tails = array("I", tails)
+    mask = (1 << w) - 1
+    shifts = [w * i for i in range(n)]
+    return Conversion([tuple((x >> s) & mask for s in shifts) for x in lms],
+                      [tails[D * r:D * (r + 1)].tolist() for r in range(len(lms))],
+                      [tuple((x >> s) & mask for s in shifts) for x in stairs],
+                      list(zip(stair_from[::2], stair_from[1::2])), list(zip(lm_from[::2], lm_from[1::2])),
+                      steps[:4 * visits])
+
+
+def _small_weights(order: MonomialOrder, D: int) -> bool:
+    """Whether the keys ``W e`` of monomials of degree at most ``n D`` fit 63 bits."""
+    return max(max(row) for row in nonnegative_matrix(order)) * order.nvars * (D + 1) < 1 << 62
+
+
+class Border:
+    """The part of the multiplication matrices of ``K[x]/I`` that is the same at every prime, from
+    a reduced Gröbner basis of ``I`` with the standard monomials ``B``: which monomial each
+    column ``x_a B[j]`` is, and how the normal form of each border monomial (in increasing
+    order) follows from earlier ones -- minus a basis element's tail for its leading monomial,
+    else ``x_i`` times an earlier border monomial's form (see ``fglm_matrices`` in
+    kernel/_fglm.c).  :meth:`matrices` fills in the numbers at a prime.  Monomials are packed as
+    digits of :attr:`w` bits (room for the exponents up to ``D`` a conversion visits);
+    :attr:`code_keys` and :attr:`code_values` say which packed monomial is ``B[j]`` (``j``) or
+    ``x_a B[j]`` on the border (``D + a D + j``)."""
+
+    def __init__(self, B: list[Exp], n: int, w: int, cols: array, plan: array, tidx: array,
+                 terms: list[tuple[int, Exp]], code_keys: array, code_values: array) -> None:
+        self.B, self.n, self.w, self.cols, self.plan, self.tidx, self.terms = B, n, w, cols, plan, tidx, terms
+        self.code_keys, self.code_values = code_keys, code_values
+
+    @property
+    def where(self) -> dict[Exp, tuple[int, int]]:
+        """Each border monomial as ``x_a B[j]`` (the first reached)."""
+        D = len(self.B)
+        pairs = [divmod(c - D, D) for c in self.code_values[D:]]
+        return {_times(self.B[j], a): (a, j) for a, j in pairs}
+
+    @classmethod
+    def of(cls, basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> Border | None:
+        """The structure for ``basis`` (``fglm_plan`` of kernel/_fglm.c; None if the basis is not
+        reduced or its monomials do not pack into 64 bits)."""
+        n, D = order.nvars, len(B)
+        w = (D + 1).bit_length()  # a conversion visits exponents up to D
+        if n * w > 64:
+            return None
+        W = array("q", [v for row in nonnegative_matrix(order) for v in row])
+        offsets = array("q", [0])
+        for g in basis:
+            offsets.append(offsets[-1] + len(g))
+        got = PLAN(n, w, W, array("i", [a for b in B for a in b]), array("i", [a for g in basis for e in g for a in e]),
+                   offsets)
+        if got is None:
+            return None
+        cols, plan, tidx, tsrc, code_keys, code_values = got
+        flat = [(k, e) for k, g in enumerate(basis) for e in g]
+        tsrc = array("i", tsrc)
+        return cls(B, n, w, array("i", cols), array("i", plan), array("i", tidx), [flat[t] for t in tsrc],
+                   array("Q", code_keys), array("q", code_values))
+
+    def matrices(self, basis: Sequence[dict[Exp, int]], p: int) -> array:
+        """The multiplication matrices modulo ``p`` (the layout of :class:`_Compiled`) for this
+        structure's basis with coefficients ``basis`` (monic, ints mod ``p``, same elements in
+        the same positions, terms missing counted as 0)."""
+        vals = array("I", [(p - basis[k].get(e, 0)) % p for k, e in self.terms])
+        D, n = len(self.B), self.n
+        M = array("I", bytes(4 * n * D * D))
+        MATRICES(p, D, n, self.cols, self.plan, self.tidx, vals, M)
+        return M
+
+
+def _where(border: dict[Exp, list[int]], B: list[Exp], n: int) -> dict[Exp, tuple[int, int]]:
+    """Each border monomial as ``x_a B[j]`` (the first reached)."""
+    where: dict[Exp, tuple[int, int]] = {}
+    for a in range(n):
+        for j, b in enumerate(B):
+            u = _times(b, a)
+            if u in border:
+                where.setdefault(u, (a, j))
+    return where
+
+
+def _dense(border: dict[Exp, list[int]], B: list[Exp], index: dict[Exp, int], n: int) -> array:
+    """The multiplication matrices in :class:`_Compiled`'s layout from the border normal forms."""
+    D = len(B)
+    M = array("I")
+    unit = [0] * D
+    for a in range(n):
+        for b in B:
+            u = _times(b, a)
+            r = index.get(u)
+            if r is None:
+                M.extend(border[u])
+            else:
+                unit[r] = 1
+                M.extend(unit)
+                unit[r] = 0
+    return M
+
+
+LIMIT = 1 << 31
+"""Primes below this go to the compiled steps (products of two entries fit 62 bits)."""
 
 COMPILED_ENTRIES = 1 << 23
 """FGLM modulo ``p`` runs its linear algebra in the compiled kernel (kernel/_fglm.c) when its
@@ -274,30 +447,16 @@ class _Packed:
 
 class _Compiled:
     """:class:`_Packed`'s operations in the compiled kernel (``fglm_step`` of kernel/_fglm.c) on
-    dense arrays: the multiplication matrices, the new standard monomials' normal forms, the
-    rows and their pivots."""
+    dense arrays: the multiplication matrices ``M``, the new standard monomials' normal forms,
+    the rows and their pivots; each visit is recorded in :attr:`steps`."""
 
-    def __init__(self, p: int, B: list[Exp], index: dict[Exp, int], border: dict[Exp, list[int]], n: int) -> None:
-        D = self.D = len(B)
-        self.p, self.index = p, index
-        M = array("I")
-        unit = [0] * D
-        self.where: dict[Exp, tuple[int, int]] = {}  # a border monomial as x_a * B[j]
-        for a in range(n):
-            for j, b in enumerate(B):
-                u = _times(b, a)
-                r = index.get(u)
-                if r is None:
-                    M.extend(border[u])
-                    self.where.setdefault(u, (a, j))
-                else:
-                    unit[r] = 1
-                    M.extend(unit)
-                    unit[r] = 0
-        self.M = M
+    def __init__(self, p: int, index: dict[Exp, int], where: dict[Exp, tuple[int, int]], M: array) -> None:
+        D = self.D = len(index)
+        self.p, self.index, self.where, self.M = p, index, where, M
         self.nfs = array("I", bytes(4 * D * (D + 1)))
         self.piv = array("I", bytes(4 * (2 * D + 1) * (D + 1)))
         self.slot = array("i", bytes(4 * (D + 1)))
+        self.steps = array("i")
 
     def visit(self, t: Exp, i: int, k: int, K: int) -> list[int] | None:
         """As :meth:`_Packed.visit`."""
@@ -308,7 +467,9 @@ class _Compiled:
             mode, (a, b) = 1, self.where[t]
         else:
             mode, a, b = 2, i, k
-        return FGLM_STEP(self.p, self.D, K, self.M, self.nfs, self.piv, self.slot, mode, a, b)
+        tail = STEP(self.p, self.D, K, self.M, self.nfs, self.piv, self.slot, mode, a, b)
+        self.steps.extend((mode, a, b, tail is not None))
+        return tail
 
 
 def _times(e: Exp, i: int) -> Exp:
@@ -334,12 +495,16 @@ def as_dicts(conv: Conversion, one: Any) -> list[dict[Exp, Any]]:
     return out
 
 
-def fglm_zp(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder, p: int) -> list[dict]:
+def fglm_zp(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder, p: int,
+            leads: Sequence[Exp] | None = None) -> list[dict]:
     """The reduced basis for ``target`` over Z/p (``nmod`` coefficients), increasing leading
-    monomials, from a reduced basis for ``source``."""
-    conv = fglm_modp([{e: int(c) for e, c in g.items()} for g in basis], source, target, p)
-    conv.tails = [[flint.nmod(c, p) for c in tl] for tl in conv.tails]
-    return as_dicts(conv, flint.nmod(1, p))
+    monomials, from a reduced basis for ``source`` (``leads``: its leading exponents, if known)."""
+    key = source.key
+    B = sorted(staircase(leads if leads is not None else [max(g, key=key) for g in basis], source.nvars), key=key)
+    conv = fglm_modp([{e: int(c) for e, c in g.items()} for g in basis], source, target, p, B)
+    one = flint.nmod(1, p)
+    return [{lm: one, **{s: flint.nmod(c, p) for s, c in zip(conv.stairs, tail) if c}}
+            for lm, tail in zip(conv.lms, conv.tails)]
 
 
 # --- over QQ -------------------------------------------------------------------------------
@@ -365,7 +530,8 @@ primes) and proved (:func:`_proved`); otherwise, past those primes, or when a li
 proof, the exact conversion (:func:`_exact`) takes over.  Measured (session 13): cyclic-5 in
 ``lp``, a source of 8 bits, 70 standard monomials, a target of 18 bits: two conversions modulo p
 2.7 ms each and the proof 2 ms, against the exact conversion's 11 ms more (its border normal
-forms 5 ms, its linear algebra 6 ms): 15.8 -> 10.9 ms.  katsura-4/5 (sources of 32 and 61
+forms 5 ms, its linear algebra 6 ms): 15.8 -> 10.9 ms (session 14, compiled: the first
+conversion 0.3 ms, the replay 0.2, the proof 0.75; the lifted path 3 ms).  katsura-4/5 (sources of 32 and 61
 bits, targets of 251 and 1411 bits) and katsura-6 in (dp(3),dp(4)) (115 bits) lost 4-40 ms
 to four primes that did not lift."""
 
@@ -373,14 +539,18 @@ LIFT_PRIMES = 3
 """See :data:`LIFT_HEIGHT`."""
 
 
-def fglm_qq(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder) -> list[dict]:
+def fglm_qq(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder,
+            leads: Sequence[Exp] | None = None) -> list[dict]:
     """The reduced basis for ``target`` over QQ (``fmpq`` coefficients), increasing leading
     monomials, of the zero-dimensional ideal with the reduced basis ``basis`` for ``source``
-    (see the module docstring): lifted from primes and proved, else converted exactly."""
+    (``leads``: its leading exponents, if known; see the module docstring): lifted from primes
+    and proved, else converted exactly."""
     from .modular import ModularFailure
     n = source.nvars
     key = source.key
-    basis = [{max(g, key=key): g[max(g, key=key)], **g} for g in basis]  # leading exponent first
+    if leads is None:
+        leads = [max(g, key=key) for g in basis]
+    basis = [{lm: g[lm], **g} for lm, g in zip(leads, basis)]  # leading exponent first
     B = sorted(staircase([next(iter(g)) for g in basis], n), key=key)
     if not B:
         return [{(0,) * n: flint.fmpq(1)}]
@@ -400,8 +570,12 @@ def fglm_qq(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: Mono
 
 def _conversions(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target: MonomialOrder, B: list[Exp]):
     """``(p, conversion modulo p)`` at successive primes, the unlucky ones skipped, within five
-    primes that divide no denominator."""
+    primes that divide no denominator.  The border's structure is found once; after the first
+    conversion with the compiled steps the others replay its visits (:func:`replay`), in full
+    again where a visit turns out otherwise."""
     from .modular import primes
+    structure = Border.of(basis, source, B) if STEP is not None else None
+    first = None
     tried = 0
     for p in primes(20240917):
         mod = _mod(basis, p)
@@ -410,10 +584,15 @@ def _conversions(basis: Sequence[dict[Exp, Any]], source: MonomialOrder, target:
         tried += 1
         if tried > 5:
             return
-        try:
-            yield p, fglm_modp(mod, source, target, p, B=B)
-        except Unlucky:
-            continue
+        conv = replay(first, mod, structure, p) if first is not None and p < LIMIT else None
+        if conv is None:
+            try:
+                conv = fglm_modp(mod, source, target, p, B, structure)
+            except Unlucky:
+                continue
+        if first is None and conv.steps is not None and structure is not None:
+            first = conv
+        yield p, conv
 
 
 def _lifted(runs, done: list[Conversion], basis: Sequence[dict[Exp, Any]], source: MonomialOrder,
@@ -467,7 +646,31 @@ def _proved(candidate: list[dict[Exp, Any]], basis: Sequence[dict[Exp, Any]], so
         top = tkey(lm)
         if g[lm] != 1 or any(e != lm and (e not in std or tkey(e) > top) for e in g):
             return False
-    return reduce_to_zero(list(basis), candidate, source)
+    got = _reduces_compiled(basis, candidate, source)
+    return reduce_to_zero(list(basis), candidate, source) if got is None else got
+
+
+def _reduces_compiled(basis: Sequence[dict[Exp, Any]], polys: Sequence[dict[Exp, Any]],
+                      order: MonomialOrder) -> bool | None:
+    """:func:`.hilbert_compiled.reduce_to_zero` in C on 64-bit integers (``fglm_reduces`` of
+    kernel/_fglm_proof.c, the same fraction-free steps); None without the extension or when a
+    number leaves 64 bits (then Python's integers decide)."""
+    if REDUCES is None:
+        return None
+    flat = []
+    for group in (basis, polys):
+        offsets = array("q", [0])
+        for f in group:
+            offsets.append(offsets[-1] + len(f))
+        coefs = [c for f in group for c in f.values()]
+        try:
+            nums, dens = array("q", [int(c.p) for c in coefs]), array("q", [int(c.q) for c in coefs])
+        except OverflowError:
+            return None
+        flat += [offsets, array("i", [a for f in group for e in f for a in e]), nums, dens]
+    W = array("q", [v for row in nonnegative_matrix(order) for v in row])
+    got = REDUCES(order.nvars, W, *flat)
+    return None if got < 0 else bool(got)
 
 
 def border_forms_qq(basis: Sequence[dict[Exp, Any]], order: MonomialOrder, B: list[Exp]) -> dict[Exp, list]:

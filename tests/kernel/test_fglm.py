@@ -2,6 +2,7 @@
 orderings of zero-dimensional ideals, against other engines and real Singular."""
 from __future__ import annotations
 
+import flint
 import pytest
 from tests.util import cyclic, ideal_blocks, katsura, parse_poly, ring, run_singular
 
@@ -189,3 +190,146 @@ def test_the_proof_of_a_lifted_conversion_refuses_wrong_bases():
     wrong[-1][e] += 1  # a tail coefficient off: no longer in the ideal
     assert not F._proved(wrong, source, dp.order, lex.order, B)
     assert not F._proved(target[:-1], source, dp.order, lex.order, B)  # too many standard monomials
+
+
+# --- the compiled conversion (kernel/_fglm.c) and the exact check (kernel/_fglm_proof.c) --------
+
+def _compiled_fglm():
+    from mech.kernel import fglm as F
+    if F.STEP is None:
+        pytest.skip("the compiled FGLM module is not built")
+    return F
+
+
+def _modp_basis(R):
+    return [{e: int(c) for e, c in g.terms.items()} for g in standard_basis(cyclic(R), R)]
+
+
+def test_the_walk_in_c_takes_the_steps_of_the_python_walk(monkeypatch):
+    """fglm_walk against the Python walk over the same compiled steps, on cyclic-5 to lex and to a
+    block ordering: the same conversion, visit by visit."""
+    F = _compiled_fglm()
+    R = ring("abcde", [Block("dp", 5)], GF(32003))
+    basis = _modp_basis(R)
+    runs = []
+    for walk in (F.WALK, None):
+        monkeypatch.setattr(F, "WALK", walk)
+        out = []
+        for target in (LEX, BLOCKS):
+            conv = F.fglm_modp(basis, R.order, MonomialOrder(target), 32003)
+            out.append((conv.lms, conv.tails, conv.stairs, conv.stair_from, conv.lm_from, conv.steps.tolist()))
+        runs.append(out)
+    assert runs[0] == runs[1]
+    assert len(runs[0][0][2]) == 70 and len(runs[0][0][0]) == 11
+
+
+def test_a_basis_that_is_not_reduced_has_no_border_plan_but_converts_the_same():
+    F = _compiled_fglm()
+    R = ring("abcde", [Block("dp", 5)], GF(32003))
+    basis = _modp_basis(R)
+    key = R.order.key
+    B = sorted(staircase([max(g, key=key) for g in basis], 5), key=key)
+    assert F.Border.of(basis, R.order, B) is not None
+    g, h = basis[0], basis[-1]  # h + g: the same leading monomial, a tail outside the staircase
+    unreduced = basis[:-1] + [{e: (h.get(e, 0) + g.get(e, 0)) % 32003 for e in set(g) | set(h)}]
+    assert max(unreduced[-1], key=key) == max(h, key=key)
+    assert F.Border.of(unreduced, R.order, B) is None
+    lex = MonomialOrder(LEX)
+    ours, theirs = F.fglm_modp(unreduced, R.order, lex, 32003), F.fglm_modp(basis, R.order, lex, 32003)
+    assert (ours.lms, ours.tails, ours.stairs) == (theirs.lms, theirs.tails, theirs.stairs)
+
+
+def _points_basis(points, p):
+    """The reduced dp basis (x > y) of three points in general position modulo ``p``: for each
+    quadratic monomial m, m + a x + b y + c vanishing at the points (Cramer's rule)."""
+    from fractions import Fraction
+    rows = [(Fraction(x), Fraction(y), Fraction(1)) for x, y in points]
+
+    def det(m):
+        return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+                + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]))
+    d = det(rows)
+    basis = []
+    for lm in [(2, 0), (1, 1), (0, 2)]:
+        rhs = [-(x ** lm[0]) * (y ** lm[1]) for x, y in points]
+        g = {lm: 1}
+        for col, e in enumerate([(1, 0), (0, 1), (0, 0)]):
+            m = [list(r) for r in rows]
+            for i in range(3):
+                m[i][col] = rhs[i]
+            v = det(m) / d
+            if v:
+                g[e] = v.numerator * pow(v.denominator, -1, p) % p
+        basis.append(g)
+    return basis
+
+
+def test_a_replay_at_another_prime_is_the_conversion_there_and_refuses_another_shape():
+    """Three points with distinct y (lex stairs 1, y, y^2) and three with two sharing y (stairs
+    1, y, x) have dp bases of the same shape: a replay of the first's conversion on the second
+    basis finds the other dependency and refuses."""
+    F = _compiled_fglm()
+    R = ring("xy", [Block("dp", 2)], QQ)
+    lex = MonomialOrder([Block("lp", 2)])
+    B = sorted([(0, 0), (0, 1), (1, 0)], key=R.order.key)
+    distinct, sharing = [(1, 1), (2, 3), (3, 2)], [(1, 1), (2, 1), (3, 2)]
+    p, q = 32003, 65521
+    basis = _points_basis(distinct, p)
+    structure = F.Border.of(basis, R.order, B)
+    first = F.fglm_modp(basis, R.order, lex, p, B, structure)
+    assert first.stairs == [(0, 0), (0, 1), (0, 2)]
+    at_q = _points_basis(distinct, q)
+    again, fresh = F.replay(first, at_q, structure, q), F.fglm_modp(at_q, R.order, lex, q, B)
+    assert (again.lms, again.tails, again.stairs) == (fresh.lms, fresh.tails, fresh.stairs)
+    other = _points_basis(sharing, p)
+    assert all(set(g) <= set(h) for g, h in zip(other, basis))  # the same plan serves
+    assert F.fglm_modp(other, R.order, lex, p, B).stairs == [(0, 0), (0, 1), (1, 0)]
+    assert F.replay(first, other, structure, p) is None
+
+
+def test_the_compiled_exact_check_agrees_with_python_and_refuses_wrong_candidates():
+    """kernel/_fglm_proof.c against hilbert_compiled.reduce_to_zero: cyclic-5's lex basis lies in
+    the ideal, a tail coefficient off or a monomial too many does not; katsura-4's lex basis
+    (251-bit coefficients) leaves 64 bits, so Python decides (and the proof still holds)."""
+    F = _compiled_fglm()
+    from mech.kernel.hilbert_compiled import reduce_to_zero
+    for n, make, fits in [(5, cyclic, True), (5, lambda R: katsura(R, 4), False)]:
+        names = "abcde"[:n]
+        dp = ring(names, [Block("dp", n)], QQ)
+        source = [{g.lm(): g.lc(), **g.terms} for g in standard_basis(make(dp), dp)]
+        lex = ring(names, LEX, QQ)
+        target = [{g.lm(): g.lc(), **g.terms} for g in standard_basis(make(lex), lex)]
+        wrong = [dict(g) for g in target]
+        e = next(e for e in wrong[-1] if e != next(iter(wrong[-1])))
+        wrong[-1][e] += 1
+        outside = [dict(g) for g in target]
+        outside[0][(0,) * n] = outside[0].get((0,) * n, flint.fmpq(0)) + 1
+        for polys, member in [(target, True), (wrong, False), (outside, False)]:
+            got = F._reduces_compiled(source, polys, dp.order)
+            assert got == member if fits else got in (None, member)
+            if not fits and member:
+                assert got is None  # Python's integers decided
+            assert reduce_to_zero(source, polys, dp.order) == member
+        B = staircase([next(iter(g)) for g in source], n)
+        assert F._proved(target, source, dp.order, lex.order, B)
+        assert not F._proved(wrong, source, dp.order, lex.order, B)
+
+
+def test_the_conversion_over_qq_without_the_compiled_module_is_the_same(monkeypatch):
+    F = _compiled_fglm()
+    dp = ring("abcde", [Block("dp", 5)], QQ)
+    source = [g.terms for g in standard_basis(cyclic(dp), dp)]
+    target = MonomialOrder(LEX)
+    compiled = F.fglm_qq(source, dp.order, target)
+    for name in ("MATRICES", "REDUCES", "REPLAY", "STEP", "WALK"):
+        monkeypatch.setattr(F, name, None)
+    assert F.fglm_qq(source, dp.order, target) == compiled
+
+
+@pytest.mark.parametrize("field", [QQ, GF(32003)], ids=["QQ", "Z/32003"])
+def test_conversions_to_weighted_and_mixed_orderings_agree_with_buchberger(field):
+    """The C walk takes any global target as its nonnegative weight matrix."""
+    for blocks in ([Block("wp", 4, (3, 2, 1, 1))], [Block("lp", 2), Block("wp", 2, (5, 1))], [Block("Dp", 4)]):
+        R = ring("abcd", blocks, field)
+        gens = katsura(R, 3)
+        assert standard_basis(gens, R, "fglm") == standard_basis(gens, R, "buchberger")
