@@ -215,6 +215,13 @@ def exact_over_zz(fn: Any) -> Any:
     return fn
 
 
+def in_group_rings(fn: Any) -> Any:
+    """Mark a command of the dialect as exact on elements of rings with invertible variables
+    (``GroupLex``): it only prints or reads the ring (the interpreter refuses the others there)."""
+    fn.group_ok = True
+    return fn
+
+
 def in_quotients(fn: Any) -> Any:
     """Mark a command of the dialect as correct on elements of quotient rings (the interpreter
     refuses the others there)."""

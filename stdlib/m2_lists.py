@@ -16,7 +16,7 @@ from typing import Any
 from ..dsl.errors import MechRuntimeError, MechTypeError
 from ..dsl.m2_local import in_local_rings, local_ideal_subset, localized_at
 from ..dsl.m2_printing import to_string
-from ..dsl.m2_rings import in_quotients, is_integral
+from ..dsl.m2_rings import in_group_rings, in_quotients, is_integral
 from ..dsl.m2_values import FUNCTIONS, Array, Iterator, M2Set, Symbol, Tally
 from ..dsl.registry import command
 from ..dsl.values import NONE, ExprList, Ideal, List, Matrix, Number, typeof
@@ -482,6 +482,7 @@ def min_(*xs: Any) -> Any:
 @command("toString", dialect="m2")
 @in_quotients
 @in_local_rings
+@in_group_rings
 def to_string_cmd(x: Any) -> str:
     """toString x: the value as one line of text."""
     return to_string(x)
@@ -490,6 +491,7 @@ def to_string_cmd(x: Any) -> str:
 @command("print", dialect="m2")
 @in_quotients
 @in_local_rings
+@in_group_rings
 def print_(ctx, x: Any) -> None:
     """print x: print the value (one line, as toString x)."""
     ctx.write(to_string(x) + "\n")

@@ -10,11 +10,10 @@ from ..dsl.m2_modules import FreeModule
 from ..dsl.m2_orders import _items
 from ..dsl.m2_printing import to_string
 from ..dsl.m2_ringcons import OPTIONS, make_ring
-from ..dsl.m2_rings import degree_vectors, in_quotients, integers, normal
+from ..dsl.m2_rings import degree_vectors, in_group_rings, in_quotients, integers, normal
 from ..dsl.m2_values import CommandRef, Opt, OptionTable, Symbol, VerticalList
 from ..dsl.registry import command
 from ..dsl.values import NONE, List, Matrix, Ring
-from . import m2_lists
 from .m2_lists import _compare
 
 
@@ -23,6 +22,7 @@ FUNCTION_OPTIONS = {"sort": [("MonomialOrder", Symbol("Ascending")), ("DegreeOrd
 
 
 @command("options", dialect="m2")
+@in_group_rings
 def options(f: Any) -> OptionTable:
     """options R: the options a polynomial ring was made with (all of them, defaults too);
     options f: a function's options with their defaults."""
@@ -154,7 +154,3 @@ def sort_matrix(ctx, m: Matrix) -> Matrix:
 
 sort_matrix.m2_options = ("DegreeOrder", "MonomialOrder")
 
-
-# commands exact in a ring with invertible variables (GroupLex): they only print or read the ring
-for _f in (options, m2_lists.to_string_cmd, m2_lists.print_):
-    _f.group_ok = True
