@@ -360,9 +360,10 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     (the local ideal is not zero-dimensional, or its corner lies higher) the computation
     runs without a cut; a trial cut is skipped when an earlier trial left a monomial of that
     degree outside its leading monomials, and the next trial is then one degree above it.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
-    out; the trials are skipped when there are fewer generators than variables in them (by
-    Krull's height theorem the ideal of the local ring then has positive dimension, and no trial
-    can succeed); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
+    out; the trials are skipped when the ideal of the local ring is seen not to be
+    zero-dimensional, so that no trial can succeed: there are fewer generators than variables in
+    them (Krull's height theorem, :func:`positive_dimensional`), or its zero set contains a
+    coordinate axis (:func:`contains_axis`); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
     trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts."""
     live = [g for g in gens if not g.is_zero()]
     parts = _separate(live, ring.nvars)
@@ -375,7 +376,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 return basis  # the unit ideal
             out.extend(basis)
         return out
-    if live and trials and Corner(ring).enabled and not positive_dimensional(live):
+    if live and trials and Corner(ring).enabled and not positive_dimensional(live) and not contains_axis(live):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
         cuts = [factor * max(top, 1) for factor in TRIAL_CUTS]
@@ -439,6 +440,23 @@ def positive_dimensional(gens: Sequence[Poly]) -> bool:
     generators), or is the whole ring."""
     used = {i for g in gens for e in g.terms for i, v in enumerate(e) if v}
     return len(gens) < len(used)
+
+
+def contains_axis(gens: Sequence[Poly]) -> bool:
+    """Whether some variable occurring in ``gens`` has no pure power among their terms: the ideal
+    then lies in the ideal of that variable's coordinate axis (every term is divisible by another
+    variable), its zero set contains the axis, and the ideal of the local ring is not
+    zero-dimensional (Singular's mora_9: five such variables)."""
+    used = 0
+    powers = 0
+    for g in gens:
+        for e in g.terms:
+            support = [i for i, v in enumerate(e) if v]
+            if len(support) == 1:
+                powers |= 1 << support[0]
+            for i in support:
+                used |= 1 << i
+    return used & ~powers != 0
 
 
 def _separate(gens: list[Poly], n: int) -> list[list[Poly]]:
