@@ -28,7 +28,7 @@ from .buchberger import TooLong
 from .coeffs import PrimeField
 from .f4 import f4_modp
 from .lazard import lazard
-from .mora import Budget, BudgetExceeded, Terms, contains_axis, mora, positive_dimensional
+from .mora import Budget, BudgetExceeded, Terms, contains_axis, in_groups, mora, positive_dimensional
 from .mora_compiled import CompiledMora
 from .poly import Poly, PolyRing
 
@@ -84,8 +84,13 @@ mora_5 took 5.1 M entries and 5.5 G operations, mora_7 6.4 M and 13.8 G."""
 
 
 def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> list[Terms]:
-    """A standard basis of the ideal of ``gens`` (non-global ``ring``) by the policy above;
-    ``global_basis(gens, ring)``: the ``auto`` Gröbner basis for a global ordering."""
+    """A standard basis of the ideal of ``gens`` (non-global ``ring``) by the policy above, for
+    each group of generators in their own variables (:func:`.mora.in_groups`; copies of a group
+    once); ``global_basis(gens, ring)``: the ``auto`` Gröbner basis for a global ordering."""
+    return in_groups(gens, ring, lambda part, sub: _auto_group(part, sub, global_basis))
+
+
+def _auto_group(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> list[Terms]:
     if all(_homogeneous(g) for g in gens):
         try:  # tiny problems end sooner in Mora than in setting up F4's ring
             return mora(gens, ring, Budget(MORA_HOMOGENEOUS), shared=True)

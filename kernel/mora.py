@@ -22,7 +22,7 @@ tails of zero-dimensional ideals is :mod:`.mora_corner`.  Under a cut (a trial's
 corner's) the computation lives in the finite-dimensional algebra ``K[x]/m^(cut+1)``, and there
 reductions take the first reducer (by sugar) without the ecart rule, as Singular does once it
 knows its highest corner.  Generators in disjoint sets of
-variables are computed group by group (:func:`_separate`).
+variables are computed group by group (:func:`in_groups`).
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
 terms, valid for every ordering, GP 2.5.9) and the product criterion only when it really
@@ -37,7 +37,7 @@ from operator import itemgetter, neg
 from typing import Any, Callable, Sequence
 
 from .mora_compiled import CompiledMora
-from .mora_corner import Corner, components
+from .mora_corner import Corner
 from .mora_packed import MAX_DEGREE, PackedFront, Packing
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing, add_exp, divides, support_mask
@@ -366,16 +366,8 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     coordinate axis (:func:`contains_axis`); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
     trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts."""
     live = [g for g in gens if not g.is_zero()]
-    parts = _separate(live, ring.nvars)
-    if len(parts) > 1:
-        out = []
-        known: dict[tuple, list[Terms]] = {}
-        for part in parts:
-            basis = _part_basis(part, ring, budget, shared, trials, known)
-            if any(b.get(ring.zero_exp) for b in basis):
-                return basis  # the unit ideal
-            out.extend(basis)
-        return out
+    if len(_separate(live, ring.nvars)) > 1:
+        return in_groups(live, ring, lambda part, sub: mora(part, sub, budget, shared, trials))
     if live and trials and Corner(ring).enabled and not positive_dimensional(live) and not contains_axis(live):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
@@ -404,29 +396,44 @@ RESTRICTABLE = ("ds", "Ds", "ls", "dp", "Dp", "lp")
 variables alone (in their order) does."""
 
 
-def _part_basis(part: list[Poly], ring: PolyRing, budget: Budget | None, shared: bool, trials: bool,
-                known: dict[tuple, list[Terms]]) -> list[Terms]:
-    """:func:`mora` of one group of :func:`_separate`, computed in the ring of its variables
-    when the ordering allows (then a standard basis there is one in ``ring``: its standard
-    representations stay standard); groups equal up to renaming their variables in order (a
-    sum of copies of one singularity, as in Singular's vdim_overflow test) are computed once,
-    ``known`` keeping their bases."""
+def in_groups(gens: list[Poly], ring: PolyRing, solve: Callable[[list[Poly], PolyRing], list[Terms]]) -> list[Terms]:
+    """``solve(part, part_ring)`` (a standard basis) on each group of generators of :func:`_separate`,
+    the bases together: a standard basis of the ideal (``[1]`` when a group gives the unit ideal).
+    A group is solved in the ring of its own variables when the ordering allows
+    (:data:`RESTRICTABLE`: a standard basis there is one in ``ring``, its standard representations
+    stay standard); groups equal up to renaming their variables in order (a sum of copies of one
+    singularity, as in Singular's vdim_overflow test) are solved once."""
+    parts = _separate(gens, ring.nvars)
+    if len(parts) == 1:
+        return solve(gens, ring)
     blocks = ring.order.blocks
-    if len(blocks) != 1 or blocks[0].kind not in RESTRICTABLE:
-        return mora(part, ring, budget, shared, trials)
-    used = sorted({i for g in part for e in g.terms for i, v in enumerate(e) if v})
+    kind = blocks[0].kind if len(blocks) == 1 and blocks[0].kind in RESTRICTABLE else None
+    known: dict[tuple, list[Terms]] = {}
+    out = []
+    for part in parts:
+        basis = solve(part, ring) if kind is None else _part_basis(part, ring, kind, solve, known)
+        if any(b.get(ring.zero_exp) for b in basis):
+            return basis  # the unit ideal
+        out.extend(basis)
+    return out
+
+
+def _part_basis(part: list[Poly], ring: PolyRing, kind: str, solve: Callable[[list[Poly], PolyRing], list[Terms]],
+                known: dict[tuple, list[Terms]]) -> list[Terms]:
+    """``solve`` on one group of :func:`in_groups` in the ring of its variables (ordered by
+    ``kind``), unless ``known`` holds the basis of a copy; the basis in ``ring``."""
+    used = [i for i, column in enumerate(zip(*[e for g in part for e in g.terms])) if any(column)]
     local = [{tuple([e[i] for i in used]): c for e, c in g.terms.items()} for g in part]
-    key = (blocks[0].kind, len(used), tuple(tuple(sorted(g.items())) for g in local))
+    key = (len(used), tuple(tuple(sorted(g.items())) for g in local))
     basis = known.get(key)
     if basis is None:
-        sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(blocks[0].kind, len(used))]))
-        basis = known[key] = mora([Poly(sub, g) for g in local], sub, budget, shared, trials)
-    n = ring.nvars
+        sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(kind, len(used))]))
+        basis = known[key] = solve([Poly(sub, g) for g in local], sub)
+    full = [0] * ring.nvars
     out = []
     for b in basis:
         terms = {}
         for e, c in b.items():
-            full = [0] * n
             for i, v in zip(used, e):
                 full[i] = v
             terms[tuple(full)] = c
@@ -434,12 +441,22 @@ def _part_basis(part: list[Poly], ring: PolyRing, budget: Budget | None, shared:
     return out
 
 
+def _variables(gens: Sequence[Poly]) -> tuple[list[int], set[int]]:
+    """The variables occurring in ``gens``, and those of which a pure power is a term."""
+    terms = [e for g in gens for e in g.terms]
+    if not terms:
+        return [], set()
+    used = [i for i, column in enumerate(zip(*terms)) if any(column)]
+    others = len(terms[0]) - 1
+    powers = {e.index(max(e)) for e in terms if e.count(0) == others}
+    return used, powers
+
+
 def positive_dimensional(gens: Sequence[Poly]) -> bool:
     """Whether there are fewer generators than variables in them: the ideal of the local ring
     then has positive dimension (Krull's height theorem: its height is at most the number of
     generators), or is the whole ring."""
-    used = {i for g in gens for e in g.terms for i, v in enumerate(e) if v}
-    return len(gens) < len(used)
+    return len(gens) < len(_variables(gens)[0])
 
 
 def contains_axis(gens: Sequence[Poly]) -> bool:
@@ -447,33 +464,39 @@ def contains_axis(gens: Sequence[Poly]) -> bool:
     then lies in the ideal of that variable's coordinate axis (every term is divisible by another
     variable), its zero set contains the axis, and the ideal of the local ring is not
     zero-dimensional (Singular's mora_9: five such variables)."""
-    used = 0
-    powers = 0
-    for g in gens:
-        for e in g.terms:
-            support = [i for i, v in enumerate(e) if v]
-            if len(support) == 1:
-                powers |= 1 << support[0]
-            for i in support:
-                used |= 1 << i
-    return used & ~powers != 0
+    used, powers = _variables(gens)
+    return not powers.issuperset(used)
 
 
 def _separate(gens: list[Poly], n: int) -> list[list[Poly]]:
     """The generators grouped by the variables they share (one group when they cannot be split
-    or one of them is a constant).  Standard bases of the groups together are one of the whole
-    ideal, for every ordering: an S-polynomial of ``f`` and ``g`` in disjoint variables is
-    ``tail(f) g - tail(g) f``, whose two products have different leading monomials (one is
-    ``LM(tail f) LM(g)``, the other ``LM(tail g) LM(f)``): a standard representation."""
-    if len(gens) < 2 or any(not any(e) for g in gens for e in g.terms):
+    or one of them is a constant), in the order of their first generators.  Standard bases of
+    the groups together are one of the whole ideal, for every ordering: an S-polynomial of ``f``
+    and ``g`` in disjoint variables is ``tail(f) g - tail(g) f``, whose two products have
+    different leading monomials (one is ``LM(tail f) LM(g)``, the other ``LM(tail g) LM(f)``):
+    a standard representation."""
+    zero = (0,) * n
+    if len(gens) < 2 or any(zero in g.terms for g in gens):
         return [gens]
-    groups = components([tuple(map(sum, zip(*g.terms))) for g in gens], n)  # each one's support
-    index = {i: k for k, part in enumerate(groups) for i in part}
-    parts: dict[int, list[Poly]] = {}
-    for g in gens:
-        e = next(iter(g.terms))
-        parts.setdefault(index[next(i for i, v in enumerate(e) if v)], []).append(g)
-    return list(parts.values())
+    groups: list[tuple[int, list[int]]] = []  # (the variables as a mask, the generators' positions)
+    for k, g in enumerate(gens):
+        mask = 0
+        for i, column in enumerate(zip(*g.terms)):
+            if any(column):
+                mask |= 1 << i
+        members = [k]
+        rest = []
+        for group in groups:
+            if group[0] & mask:
+                mask |= group[0]
+                members += group[1]
+            else:
+                rest.append(group)
+        rest.append((mask, members))
+        groups = rest
+    if len(groups) == 1:
+        return [gens]
+    return [[gens[k] for k in sorted(members)] for members in sorted((m for _, m in groups), key=min)]
 
 
 def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
@@ -713,16 +736,34 @@ def elems(basis: Sequence[Poly]) -> list[Elem]:
 
 
 
-def finished(basis: list[Terms], ring: PolyRing) -> list[Poly]:
+def finished(basis: list[Terms], ring: PolyRing, minimal: bool = False) -> list[Poly]:
     """A standard basis as :func:`.engines.standard_basis` returns it for a non-global ordering,
     from dicts that each hold their leading monomial first (as :func:`mora` and
     :func:`.lazard.lazard` give them): minimal (an element whose leading monomial another's
     divides is dropped; of equal ones the first is kept), monic, sorted from the largest leading
-    monomial down."""
-    key = ring.order.key
+    monomial down.  ``minimal``: the basis is minimal already (:func:`mora`'s and
+    :func:`.lazard.lazard`'s are), and is not checked."""
     one = ring.field.one
     items = [(next(iter(b)), b) for b in basis if b]
-    items.sort(key=lambda t: sum(t[0]))  # a divisor comes first (stable: equal ones in order)
+    if not minimal:
+        items = _minimal(items)
+    rank = _leading_rank(ring)
+    items.sort(key=lambda t: rank(t[0]))
+    out = []
+    for m, b in items:
+        c = b[m]
+        if c != one:
+            inv = 1 / c
+            b = {e: v * inv for e, v in b.items()}
+        p = Poly(ring, b)
+        p._lm = m
+        out.append(p)
+    return out
+
+
+def _minimal(items: list[tuple[Exp, Terms]]) -> list[tuple[Exp, Terms]]:
+    """The items whose leading monomial no other's divides (of equal ones the first)."""
+    items = sorted(items, key=lambda t: sum(t[0]))  # a divisor comes first (stable: equal ones in order)
     kept: list[tuple[Exp, int]] = []
     out = []
     for m, b in items:
@@ -730,12 +771,5 @@ def finished(basis: list[Terms], ring: PolyRing) -> list[Poly]:
         if any(not kmask & ~mask and divides(lm, m) for lm, kmask in kept):
             continue
         kept.append((m, mask))
-        c = b[m]
-        if c != one:
-            inv = 1 / c
-            b = {e: v * inv for e, v in b.items()}
-        p = Poly(ring, b)
-        p._lm = m
-        out.append((key(m), p))
-    out.sort(key=lambda t: t[0], reverse=True)
-    return [p for _, p in out]
+        out.append((m, b))
+    return out

@@ -70,6 +70,9 @@ def _top(gens: tuple[Exp, ...], n: int, memo: dict) -> Top | None:
         return UNIT if gens else (0, ())
     if gens in memo:
         return memo[gens]
+    if n == 2:
+        memo[gens] = _top_plane(gens)
+        return memo[gens]
     last = n - 1
     power = min((g[last] for g in gens if not any(g[:last])), default=None)
     if power is None or power == 0:
@@ -89,6 +92,21 @@ def _top(gens: tuple[Exp, ...], n: int, memo: dict) -> Top | None:
         if t is not UNIT and end - 1 + t[0] > best[0]:
             best = (end - 1 + t[0], t[1] + (end - 1,))
     memo[gens] = best
+    return best
+
+
+def _top_plane(gens: tuple[Exp, ...]) -> Top | None:
+    """:func:`_top` in two variables (``gens`` minimal): the staircase's outer corners lie between
+    consecutive generators ``x^a y^b``, ``x^a' y^b'`` (by increasing ``a``) at ``x^(a'-1) y^(b-1)``."""
+    steps = sorted(gens)
+    if steps[0][0] or steps[-1][1]:
+        return None  # no pure power of y, or of x
+    if len(steps) == 1:
+        return UNIT  # the generator 1
+    best = None
+    for (_, b), (a, _) in zip(steps, steps[1:]):
+        if best is None or a + b - 2 > best[0]:
+            best = (a + b - 2, (a - 1, b - 1))
     return best
 
 

@@ -115,3 +115,24 @@ def test_an_axis_skips_the_trial_cuts_and_matches_singular(monkeypatch):
     script = f"ring r = 32003, (x,y,z), ds; short = 0;\nideal I = {','.join(AXIS)};\nlead(std(I));\n"
     singular = sorted(parse_poly(R, m).lm() for m in ideal_blocks(run_singular(script))[0])
     assert sorted(g.lm() for g in got) == singular
+
+
+def test_the_policy_runs_once_per_group_of_copies(monkeypatch):
+    """Generators in disjoint variables: the policy runs on each group in the ring of its own
+    variables, copies equal up to renaming once (kernel/mora.py's in_groups), and the bases
+    together have the leading ideal of Mora on the whole."""
+    R = _ring("x,y,z,w", "ds", GF(32003))
+    gens = [parse_poly(R, p) for p in ["x^3+y^2+x^4*y", "x*y^3+y^5", "z^3+w^2+z^4*w", "z*w^3+w^5"]]
+    calls = []
+    real = local_policy._auto_group
+
+    def spy(part, ring, global_basis):
+        calls.append(ring.names)
+        return real(part, ring, global_basis)
+    monkeypatch.setattr(local_policy, "_auto_group", spy)
+    clear_cache()
+    got = standard_basis(gens, R)
+    assert calls == [("x", "y")]
+    key = R.order.key
+    whole = mora_module._mora(gens, R)[0]
+    assert sorted(g.lm() for g in got) == sorted(minimal_monomials([max(b, key=key) for b in whole]))
