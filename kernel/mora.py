@@ -335,7 +335,7 @@ def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
     blocks, key = ring.order.blocks, ring.order.key
     if len(blocks) == 1 and blocks[0].kind in ("ds", "dp") and ring.nvars > 1:
         sign = 1 if blocks[0].kind == "ds" else -1
-        return lambda e: (sign * sum(e), *e[::-1])
+        return lambda e: (sign * sum(e), e[::-1])
     return lambda e: tuple(map(neg, key(e)))
 
 
@@ -410,20 +410,20 @@ def in_groups(gens: list[Poly], ring: PolyRing, solve: Callable[[list[Poly], Pol
     kind = blocks[0].kind if len(blocks) == 1 and blocks[0].kind in RESTRICTABLE else None
     known: dict[tuple, list[Terms]] = {}
     out = []
-    for part in parts:
-        basis = solve(part, ring) if kind is None else _part_basis(part, ring, kind, solve, known)
+    for used, part in parts:
+        basis = solve(part, ring) if kind is None else _part_basis(part, used, ring, kind, solve, known)
         if any(b.get(ring.zero_exp) for b in basis):
             return basis  # the unit ideal
         out.extend(basis)
     return out
 
 
-def _part_basis(part: list[Poly], ring: PolyRing, kind: str, solve: Callable[[list[Poly], PolyRing], list[Terms]],
-                known: dict[tuple, list[Terms]]) -> list[Terms]:
-    """``solve`` on one group of :func:`in_groups` in the ring of its variables (ordered by
-    ``kind``), unless ``known`` holds the basis of a copy; the basis in ``ring``."""
-    used = [i for i, column in enumerate(zip(*[e for g in part for e in g.terms])) if any(column)]
-    local = [{tuple([e[i] for i in used]): c for e, c in g.terms.items()} for g in part]
+def _part_basis(part: list[Poly], used: list[int], ring: PolyRing, kind: str,
+                solve: Callable[[list[Poly], PolyRing], list[Terms]], known: dict[tuple, list[Terms]]) -> list[Terms]:
+    """``solve`` on one group of :func:`in_groups` in the ring of its variables ``used`` (ordered
+    by ``kind``), unless ``known`` holds the basis of a copy; the basis in ``ring``."""
+    restrict = itemgetter(*used) if len(used) > 1 else lambda e: (e[used[0]],)
+    local = [{restrict(e): c for e, c in g.terms.items()} for g in part]
     key = (len(used), tuple(tuple(sorted(g.items())) for g in local))
     basis = known.get(key)
     if basis is None:
@@ -468,16 +468,16 @@ def contains_axis(gens: Sequence[Poly]) -> bool:
     return not powers.issuperset(used)
 
 
-def _separate(gens: list[Poly], n: int) -> list[list[Poly]]:
-    """The generators grouped by the variables they share (one group when they cannot be split
-    or one of them is a constant), in the order of their first generators.  Standard bases of
-    the groups together are one of the whole ideal, for every ordering: an S-polynomial of ``f``
-    and ``g`` in disjoint variables is ``tail(f) g - tail(g) f``, whose two products have
-    different leading monomials (one is ``LM(tail f) LM(g)``, the other ``LM(tail g) LM(f)``):
-    a standard representation."""
+def _separate(gens: list[Poly], n: int) -> list[tuple[list[int], list[Poly]]]:
+    """The generators grouped by the variables they share, in the order of their first
+    generators, each group with its variables; one group (with every variable) when they cannot
+    be split or one of them is a constant.  Standard bases of the groups together are one of the
+    whole ideal, for every ordering: an S-polynomial of ``f`` and ``g`` in disjoint variables is
+    ``tail(f) g - tail(g) f``, whose two products have different leading monomials (one is
+    ``LM(tail f) LM(g)``, the other ``LM(tail g) LM(f)``): a standard representation."""
     zero = (0,) * n
     if len(gens) < 2 or any(zero in g.terms for g in gens):
-        return [gens]
+        return [(list(range(n)), gens)]
     groups: list[tuple[int, list[int]]] = []  # (the variables as a mask, the generators' positions)
     for k, g in enumerate(gens):
         mask = 0
@@ -495,8 +495,9 @@ def _separate(gens: list[Poly], n: int) -> list[list[Poly]]:
         rest.append((mask, members))
         groups = rest
     if len(groups) == 1:
-        return [gens]
-    return [[gens[k] for k in sorted(members)] for members in sorted((m for _, m in groups), key=min)]
+        return [(list(range(n)), gens)]
+    groups.sort(key=lambda group: min(group[1]))
+    return [([i for i in range(n) if mask >> i & 1], [gens[k] for k in sorted(members)]) for mask, members in groups]
 
 
 def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,

@@ -22,10 +22,12 @@ def top_degree(gens: Sequence[Exp], memo: dict | None = None) -> Top | None:
     ``b``, without ``x``), so the best is ``b' - 1 + top(L_b)``; intervals are tried from the
     highest down and skipped when even the bound from the pure powers cannot beat the best.
     ``memo``: the answers for sub-ideals, kept across calls on growing ideals."""
-    gens = minimal_monomials(gens)
     if not gens:
         return None
     n = len(gens[0])
+    if n == 2:
+        return _top_plane(gens)
+    gens = minimal_monomials(gens)
     if any(not any(g) for g in gens):
         return UNIT
     degree, witness = 0, [0] * n
@@ -95,17 +97,20 @@ def _top(gens: tuple[Exp, ...], n: int, memo: dict) -> Top | None:
     return best
 
 
-def _top_plane(gens: tuple[Exp, ...]) -> Top | None:
-    """:func:`_top` in two variables (``gens`` minimal): the staircase's outer corners lie between
-    consecutive generators ``x^a y^b``, ``x^a' y^b'`` (by increasing ``a``) at ``x^(a'-1) y^(b-1)``."""
-    steps = sorted(gens)
-    if steps[0][0] or steps[-1][1]:
+def _top_plane(gens: Sequence[Exp]) -> Top | None:
+    """:func:`top_degree` in two variables: the staircase's outer corners lie between consecutive
+    minimal generators ``x^a y^b``, ``x^a' y^b'`` (by increasing ``a``) at ``x^(a'-1) y^(b-1)``."""
+    stairs: list[Exp] = []
+    for a, b in sorted(gens):
+        if not stairs or b < stairs[-1][1]:
+            stairs.append((a, b))
+    if stairs[0][0] or stairs[-1][1]:
         return None  # no pure power of y, or of x
-    if len(steps) == 1:
+    if len(stairs) == 1:
         return UNIT  # the generator 1
-    best = None
-    for (_, b), (a, _) in zip(steps, steps[1:]):
-        if best is None or a + b - 2 > best[0]:
+    best = UNIT
+    for (_, b), (a, _) in zip(stairs, stairs[1:]):
+        if a + b - 2 > best[0]:
             best = (a + b - 2, (a - 1, b - 1))
     return best
 

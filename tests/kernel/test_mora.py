@@ -93,7 +93,7 @@ def test_generators_in_disjoint_variables_are_split(kind):
     the whole computation (kernel/mora.py's _separate)."""
     R = PolyRing(GF(32003), ["x", "y", "z", "w"], MonomialOrder([Block(kind, 4)]))
     gens = [parse_poly(R, p) for p in ["x^3+y^2+x^4*y", "x*y^3+y^5", "z^2*w+w^4+z^5", "z^3-w^3+z*w^4"]]
-    assert [len(p) for p in _separate(gens, 4)] == [2, 2]
+    assert [(used, len(p)) for used, p in _separate(gens, 4)] == [([0, 1], 2), ([2, 3], 2)]
     key = R.order.key
     split = mora(gens, R)
     whole = _mora(gens, R)[0]
