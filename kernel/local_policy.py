@@ -28,7 +28,7 @@ from .buchberger import TooLong
 from .coeffs import PrimeField
 from .f4 import f4_modp
 from .lazard import lazard
-from .mora import Budget, BudgetExceeded, Terms, contains_axis, in_groups, mora, positive_dimensional
+from .mora import Budget, BudgetExceeded, Terms, contains_axis, in_groups, mora_group, positive_dimensional
 from .mora_compiled import CompiledMora
 from .poly import Poly, PolyRing
 
@@ -87,18 +87,19 @@ def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> l
     """A standard basis of the ideal of ``gens`` (non-global ``ring``) by the policy above, for
     each group of generators in their own variables (:func:`.mora.in_groups`; copies of a group
     once); ``global_basis(gens, ring)``: the ``auto`` Gröbner basis for a global ordering."""
-    return in_groups(gens, ring, lambda part, sub: _auto_group(part, sub, global_basis))
+    live = [g for g in gens if not g.is_zero()]
+    return in_groups(live, ring, lambda part, sub: _auto_group(part, sub, global_basis))
 
 
 def _auto_group(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> list[Terms]:
     if all(_homogeneous(g) for g in gens):
         try:  # tiny problems end sooner in Mora than in setting up F4's ring
-            return mora(gens, ring, Budget(MORA_HOMOGENEOUS), shared=True)
+            return mora_group(gens, ring, Budget(MORA_HOMOGENEOUS), shared=True)
         except BudgetExceeded:
             return lazard(gens, ring, global_basis)
     if not isinstance(ring.field, PrimeField):
         try:
-            return mora(gens, ring, Budget())
+            return mora_group(gens, ring, Budget())
         except BudgetExceeded:
             return lazard(gens, ring, global_basis)
     if CompiledMora.usable(ring):
@@ -107,7 +108,7 @@ def _auto_group(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> 
             return basis
     else:
         try:
-            return mora(gens, ring, Budget(MORA_FIRST), shared=True)
+            return mora_group(gens, ring, Budget(MORA_FIRST), shared=True)
         except BudgetExceeded:
             pass
     try:
@@ -115,7 +116,7 @@ def _auto_group(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> 
     except TooLong:
         pass
     try:
-        return mora(gens, ring, Budget())
+        return mora_group(gens, ring, Budget())
     except BudgetExceeded:
         return lazard(gens, ring, global_basis)
 
@@ -132,20 +133,20 @@ def _compiled_routes(gens: list[Poly], ring: PolyRing) -> list[Terms] | None:
     without cuts under the sugar bound (mora_9: 0.28 s, where the quick run and the trials spent
     0.16 s before it)."""
     def quick() -> list[Terms]:
-        return mora(gens, ring, Budget(MORA_QUICK, corner_steps=CORNER_STEPS), shared=True, trials=False)
+        return mora_group(gens, ring, Budget(MORA_QUICK, corner_steps=CORNER_STEPS), shared=True, trials=False)
 
     def trials() -> list[Terms]:
-        return mora(gens, ring, Budget(MORA_COMPILED, corner_steps=CORNER_STEPS), shared=True)
+        return mora_group(gens, ring, Budget(MORA_COMPILED, corner_steps=CORNER_STEPS), shared=True)
 
     def lazard_small() -> list[Terms]:
         return lazard(gens, ring, _f4_within(LAZARD_SMALL))
 
     def uncut() -> list[Terms]:
-        return mora(gens, ring, Budget(MORA_UNCUT, corner_steps=CORNER_STEPS), shared=True, trials=False)
+        return mora_group(gens, ring, Budget(MORA_UNCUT, corner_steps=CORNER_STEPS), shared=True, trials=False)
 
     def uncut_low() -> list[Terms]:
         budget = Budget(MORA_UNCUT, corner_steps=CORNER_STEPS, degree=SUGAR_FACTOR)
-        return mora(gens, ring, budget, shared=True, trials=False)
+        return mora_group(gens, ring, budget, shared=True, trials=False)
 
     if positive_dimensional(gens):
         routes = [quick, lazard_small, uncut]

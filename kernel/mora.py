@@ -32,7 +32,6 @@ gives a standard representation ``spoly(f, g) = f'g - g'f``: for a local orderin
 from __future__ import annotations
 
 import heapq
-from itertools import islice
 from operator import itemgetter, neg
 from typing import Any, Callable, Sequence
 
@@ -304,7 +303,7 @@ class _Pair:
 class _Words:
     """Monomials of ``n`` variables as one integer of 16-bit fields (exponents below 2^15, the
     top bit of each field a guard): lcm, divisibility and degree in a few integer operations,
-    for the pair criteria."""
+    for the pair criteria (``a`` divides ``b`` when ``((b | guard) - a) & guard == guard``)."""
 
     def __init__(self, n: int) -> None:
         self.shifts = [16 * i for i in range(n)]
@@ -321,10 +320,6 @@ class _Words:
     def lcm(self, a: int, b: int) -> int:
         keep = ((((a | self.guard) - b) & self.guard) >> 15) * 0xFFFF  # the fields where a >= b
         return (a & keep) | (b & ~keep)
-
-    def divides(self, a: int, b: int) -> bool:
-        """Whether ``a`` divides ``b``."""
-        return ((b | self.guard) - a) & self.guard == self.guard
 
     def degree(self, w: int) -> int:
         return (w * self.ones >> self.top) & 0xFFFF  # the fields' sum lands in the top one
@@ -364,10 +359,15 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     zero-dimensional, so that no trial can succeed: there are fewer generators than variables in
     them (Krull's height theorem, :func:`positive_dimensional`), or its zero set contains a
     coordinate axis (:func:`contains_axis`); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
-    trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts."""
+    trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts.
+    Generators in disjoint sets of variables are computed group by group (:func:`in_groups`)."""
     live = [g for g in gens if not g.is_zero()]
-    if len(_separate(live, ring.nvars)) > 1:
-        return in_groups(live, ring, lambda part, sub: mora(part, sub, budget, shared, trials))
+    return in_groups(live, ring, lambda part, sub: mora_group(part, sub, budget, shared, trials))
+
+
+def mora_group(live: list[Poly], ring: PolyRing, budget: Budget | None = None, shared: bool = False,
+               trials: bool = True) -> list[Terms]:
+    """:func:`mora` on nonzero generators that :func:`in_groups` does not split."""
     if live and trials and Corner(ring).enabled and not positive_dimensional(live) and not contains_axis(live):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
@@ -553,21 +553,28 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         k = len(basis)
         basis.append(h)
         active.append(True)
-        hmask = h.mask
         hp = words.pack(h.lm)
         packs.append(hp)
-        lcm, divides_packed = words.lcm, words.divides
+        if not k:
+            return  # no pairs, nothing to deactivate
+        hmask = h.mask
+        lcm, degree, guard = words.lcm, words.degree, words.guard
         # the new pairs whose lcm no other new lcm of lower degree divides (Gebauer–Möller's M;
         # divisibility is transitive, so checking the kept ones of lower degree suffices)
-        new = sorted(((words.degree(lc), lc, i) for i in range(k) if active[i]
-                      for lc in (lcm(packs[i], hp),)), key=itemgetter(0))
+        new = [(degree(lc), lc, i) for i in range(k) if active[i] for lc in (lcm(packs[i], hp),)]
+        new.sort(key=itemgetter(0))
         kept: list[tuple[int, int, int, int]] = []  # (degree, mask, packed lcm, i)
         lower = 0  # kept[:lower] have a degree below the current one
         for d, lc, i in new:
             while lower < len(kept) and kept[lower][0] < d:
                 lower += 1
             m = basis[i].mask | hmask
-            if not any(not km & ~m and divides_packed(kl, lc) for _, km, kl, _ in islice(kept, lower)):
+            top = lc | guard
+            for j in range(lower):
+                _, km, kl, _ = kept[j]
+                if not km & ~m and (top - kl) & guard == guard:  # kl divides lc
+                    break
+            else:
                 kept.append((d, m, lc, i))
         by_lcm: dict[int, tuple[_Pair, bool]] = {}
         for _, m, lc, i in kept:
@@ -575,17 +582,22 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             prev = by_lcm.get(lc)
             if prev is None or (lifts and not prev[1]):
                 by_lcm[lc] = (_Pair(i, k, words.unpack(lc), m, lc), lifts)
-        for p in pairs:
-            if p.alive and not hmask & ~p.mask and divides_packed(hp, p.packed) \
-                    and lcm(packs[p.i], hp) != p.packed and lcm(packs[p.j], hp) != p.packed:
-                p.alive = False
-        pairs[:] = [p for p in pairs if p.alive]
+        if pairs:
+            dead = False
+            for p in pairs:
+                if p.alive and not hmask & ~p.mask and ((p.packed | guard) - hp) & guard == guard \
+                        and lcm(packs[p.i], hp) != p.packed and lcm(packs[p.j], hp) != p.packed:
+                    p.alive = False
+                if not p.alive:
+                    dead = True
+            if dead:
+                pairs[:] = [p for p in pairs if p.alive]
         for a, lifts in by_lcm.values():
             if not lifts:
                 pairs.append(a)
                 push(sum(a.lcm) + max(basis[a.i].ecart, h.ecart), a.lcm, a)
         for i in range(k):
-            if active[i] and not hmask & ~basis[i].mask and divides_packed(hp, packs[i]):
+            if active[i] and not hmask & ~basis[i].mask and ((packs[i] | guard) - hp) & guard == guard:
                 active[i] = False
 
     max_sugar = None if budget is None or budget.degree is None else \

@@ -157,16 +157,16 @@ class Corner:
         went down."""
         if not self.enabled:
             return False
-        support = [i for i, v in enumerate(lm) if v]
-        if len(support) == 1:
-            self.powers.add(support[0])
+        if lm.count(0) == len(lm) - 1:  # a pure power
+            self.powers.add(lm.index(max(lm)))
         if len(self.powers) < len(self.used):
             return False
         used = self.used
         w = self.witness
         if w is not None and any(lm[i] > v for i, v in zip(used, w)):
             return False  # the witness stays outside: the top degree cannot go down
-        top = top_degree([tuple(m[i] for i in used) for m in lms()], self.memo)
+        every = len(used) == len(lm)
+        top = top_degree(lms() if every else [tuple(m[i] for i in used) for m in lms()], self.memo)
         if top is None:
             return False
         self.witness, self.seen = top[1], top[0]
