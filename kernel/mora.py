@@ -412,8 +412,8 @@ def in_groups(gens: list[Poly], ring: PolyRing, solve: Callable[[list[Poly], Pol
     out = []
     for used, part in parts:
         basis = solve(part, ring) if kind is None else _part_basis(part, used, ring, kind, solve, known)
-        if any(b.get(ring.zero_exp) for b in basis):
-            return basis  # the unit ideal
+        if basis and ring.zero_exp in basis[0]:
+            return basis  # the unit ideal (a minimal basis has one element then, with the term 1)
         out.extend(basis)
     return out
 
@@ -712,7 +712,8 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             lm = max(h, key=key)
             if lm == ring.zero_exp:
                 return [{ring.zero_exp: ring.field.one}], corner
-            elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)))
+            h = {lm: h[lm], **h}  # the leading monomial first, as the basis is returned
+            elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)), lm)
             _insert(pool, elem)
         update(elem)
         if corner.update(elem.lm, lambda: [b.lm for b, a in zip(basis, active) if a]):
@@ -722,7 +723,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 compiled.cut_tails(basis, corner.cut)
             for g in pool:
                 g.truncate(corner.cut)
-    return [{b.lm: b.p[b.lm], **b.p} for b, a in zip(basis, active) if a], corner
+    return [b.p for b, a in zip(basis, active) if a], corner  # each with its leading monomial first
 
 
 def _spoly(f: Elem, g: Elem, lc: Exp) -> Terms:
