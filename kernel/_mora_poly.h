@@ -98,6 +98,7 @@ typedef struct {
 typedef struct {
     int W, S;
     u64 p;
+    unsigned used;       /* bit i set for every bucket i holding terms (maybe for some empty ones) */
     Bucket b[NB];
     Buf tmp, q;
 } Geo;
@@ -171,6 +172,8 @@ static int geo_merge(Geo *G, int i, const u64 *q, Py_ssize_t n)
     Py_ssize_t cap = B->cap;
     B->t = G->tmp.t; B->cap = G->tmp.cap; B->start = 0; B->len = k;
     G->tmp.t = t; G->tmp.cap = cap;
+    if (k)
+        G->used |= 1u << i;
     return 0;
 }
 
@@ -205,10 +208,13 @@ static int geo_lead(Geo *G)
     u64 p = G->p;
     for (;;) {
         int best = -1;
-        for (int i = 0; i < NB; i++) {
+        for (unsigned m = G->used; m; m &= m - 1) {
+            int i = __builtin_ctz(m);
             Bucket *B = G->b + i;
-            if (B->start == B->len)
+            if (B->start == B->len) {
+                G->used &= ~(1u << i);
                 continue;
+            }
             if (best < 0 || cmp_mon(B->t + B->start * S, G->b[best].t + G->b[best].start * S, W) < 0)
                 best = i;
         }
@@ -216,7 +222,8 @@ static int geo_lead(Geo *G)
             return -1;
         u64 *lead = G->b[best].t + G->b[best].start * S;
         u64 v = lead[W];
-        for (int i = 0; i < NB; i++) {
+        for (unsigned m = G->used; m; m &= m - 1) {
+            int i = __builtin_ctz(m);
             Bucket *B = G->b + i;
             if (i == best || B->start == B->len || cmp_mon(B->t + B->start * S, lead, W))
                 continue;
