@@ -321,8 +321,18 @@ class _Words:
         keep = ((((a | self.guard) - b) & self.guard) >> 15) * 0xFFFF  # the fields where a >= b
         return (a & keep) | (b & ~keep)
 
-    def degree(self, w: int) -> int:
-        return (w * self.ones >> self.top) & 0xFFFF  # the fields' sum lands in the top one
+    def lcms(self, packs: list[int], active: list[bool], b: int) -> list[tuple[int, int, int]]:
+        """``(degree, lcm, i)`` of ``lcm(packs[i], b)`` for the ``active`` ones (:meth:`lcm`
+        inlined: a new element meets every old one; the degree is the fields' sum, which a
+        multiplication by ``ones`` lands in the top field)."""
+        guard, ones, top = self.guard, self.ones, self.top
+        out = []
+        for i, a in enumerate(packs):
+            if active[i]:
+                keep = ((((a | guard) - b) & guard) >> 15) * 0xFFFF
+                lc = (a & keep) | (b & ~keep)
+                out.append(((lc * ones >> top) & 0xFFFF, lc, i))
+        return out
 
 
 def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
@@ -554,14 +564,15 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         basis.append(h)
         active.append(True)
         hp = words.pack(h.lm)
-        packs.append(hp)
         if not k:
+            packs.append(hp)
             return  # no pairs, nothing to deactivate
         hmask = h.mask
-        lcm, degree, guard = words.lcm, words.degree, words.guard
+        lcm, guard = words.lcm, words.guard
         # the new pairs whose lcm no other new lcm of lower degree divides (Gebauer–Möller's M;
         # divisibility is transitive, so checking the kept ones of lower degree suffices)
-        new = [(degree(lc), lc, i) for i in range(k) if active[i] for lc in (lcm(packs[i], hp),)]
+        new = words.lcms(packs, active, hp)
+        packs.append(hp)
         new.sort(key=itemgetter(0))
         kept: list[tuple[int, int, int, int]] = []  # (degree, mask, packed lcm, i)
         lower = 0  # kept[:lower] have a degree below the current one
