@@ -130,6 +130,13 @@ static void geo_free(Geo *G)
     free(G->q.t);
 }
 
+/* Copy `words` words (one term or monomial: a few words, too short for a call to memcpy). */
+static inline void copy_words(u64 *dst, const u64 *src, int words)
+{
+    for (int j = 0; j < words; j++)
+        dst[j] = src[j];
+}
+
 /* Merge the sorted terms q[0..n) into bucket i (coefficients added, zeros dropped). */
 static int geo_merge(Geo *G, int i, const u64 *q, Py_ssize_t n)
 {
@@ -145,15 +152,15 @@ static int geo_merge(Geo *G, int i, const u64 *q, Py_ssize_t n)
     while (x < blen && y < n) {
         int c = cmp_mon(a + x * S, q + y * S, W);
         if (c < 0) {
-            memcpy(out + k++ * S, a + x++ * S, S * sizeof(u64));
+            copy_words(out + k++ * S, a + x++ * S, S);
         } else if (c > 0) {
-            memcpy(out + k++ * S, q + y++ * S, S * sizeof(u64));
+            copy_words(out + k++ * S, q + y++ * S, S);
         } else {
             u64 v = a[x * S + W] + q[y * S + W];
             if (v >= p)
                 v -= p;
             if (v) {
-                memcpy(out + k * S, a + x * S, W * sizeof(u64));
+                copy_words(out + k * S, a + x * S, W);
                 out[k++ * S + W] = v;
             }
             x++; y++;
