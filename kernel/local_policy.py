@@ -44,13 +44,14 @@ MORA_QUICK = 3000
 """Reduction steps of compiled Mora without trial cuts first: small ideals and those that show
 their highest corner early end there (steps before the corner, seconds in all: mora1 2636,
 0.003, with the trials 0.006; mora_6 1435, 0.0015; each curve of vdim_overflow's milnor; its
-tjurina 19, 1.7); the others lose little (mora_9 0.04 s, mora_5 0.002 s, mora_7 0.007 s)."""
+tjurina 19, 1.7); the others lose little (mora_5 0.002 s, mora_7 0.007 s; mora_9 lost 0.03 s
+here before the test for a coordinate axis sent it straight to Mora without cuts)."""
 
 MORA_COMPILED = 80_000
 """Reduction steps of compiled Mora with its trial cuts (about 0.05-0.15 s) before Mora without
 them.  Measured (steps, seconds; session 13): mora1 7772, 0.005; mora_5 65,989, 0.04; mora_7
-31,925, 0.04; mora_9 (not zero-dimensional, 60 generators in 15 variables) spends them all in
-0.12-0.15 s; vdim_overflow's tjurina finds its corner in the second trial and then has
+31,925, 0.04; mora_9 (not zero-dimensional, 50 generators in 15 variables) spent them all in
+0.12-0.15 s before the test for a coordinate axis skipped its trials; vdim_overflow's tjurina finds its corner in the second trial and then has
 :data:`CORNER_STEPS` (1.0 s)."""
 
 LAZARD_SMALL = 250_000
@@ -58,7 +59,7 @@ LAZARD_SMALL = 250_000
 50,000-100,000: 0.06 s; a random ideal in 4 variables of tests/kernel/test_mora_random.py
 100,000-250,000, 0.02 s, where Mora without cuts runs 1 M steps into high degrees, 0.7 s;
 mora_9 needs 1-4 M and runs out of these in 0.2 s), then compiled Mora without trial cuts
-within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 0.3 s)."""
+within :data:`MORA_UNCUT` steps (mora_9: 205,000 steps, 0.24 s)."""
 
 MORA_UNCUT = 1_000_000
 
@@ -130,8 +131,8 @@ def _compiled_routes(gens: list[Poly], ring: PolyRing) -> list[Terms] | None:
     drive Mora's normal form to degree 85 from generators of degree 7 leave within 0.05 s, and
     Lazard takes them in 0.01-0.02 s).  When the zero set contains a coordinate axis
     (:func:`.mora.contains_axis`) no trial cut can succeed either, and the first run is Mora
-    without cuts under the sugar bound (mora_9: 0.28 s, where the quick run and the trials spent
-    0.16 s before it)."""
+    without cuts under the sugar bound (mora_9: 0.24 s in all, where the quick run and the trials
+    spent 0.16 s before it)."""
     def quick() -> list[Terms]:
         return mora_group(gens, ring, Budget(MORA_QUICK, corner_steps=CORNER_STEPS), shared=True, trials=False)
 
