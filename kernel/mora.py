@@ -434,7 +434,7 @@ def _part_basis(part: list[Poly], used: list[int], ring: PolyRing, kind: str,
     by ``kind``), unless ``known`` holds the basis of a copy; the basis in ``ring``."""
     restrict = itemgetter(*used) if len(used) > 1 else lambda e: (e[used[0]],)
     local = [{restrict(e): c for e, c in g.terms.items()} for g in part]
-    key = (len(used), tuple(tuple(sorted(g.items())) for g in local))
+    key = (len(used), tuple(tuple(g.items()) for g in local))  # copies built alike list their terms alike
     basis = known.get(key)
     if basis is None:
         sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(kind, len(used))]))
@@ -688,7 +688,8 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
 
     for g in gens:
         if not g.is_zero():
-            push(g.total_degree(), g.lm(), (front(dict(g.terms)), g.total_degree()))
+            d = g.total_degree()
+            push(d, g.lm(), (front(dict(g.terms)), d))
     while queue or waiting:
         done = run_compiled(None, 0) if waiting else None
         if done is None:
