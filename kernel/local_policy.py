@@ -28,7 +28,7 @@ from .buchberger import TooLong
 from .coeffs import PrimeField
 from .f4 import f4_modp
 from .lazard import lazard
-from .mora import Budget, BudgetExceeded, Terms, contains_axis, in_groups, mora_group, positive_dimensional
+from .mora import Budget, BudgetExceeded, Terms, in_groups, mora_group, trial_obstacles
 from .mora_compiled import CompiledMora
 from .poly import Poly, PolyRing
 
@@ -149,9 +149,10 @@ def _compiled_routes(gens: list[Poly], ring: PolyRing) -> list[Terms] | None:
         budget = Budget(MORA_UNCUT, corner_steps=CORNER_STEPS, degree=SUGAR_FACTOR)
         return mora_group(gens, ring, budget, shared=True, trials=False)
 
-    if positive_dimensional(gens):
+    krull, axis = trial_obstacles(gens)
+    if krull:
         routes = [quick, lazard_small, uncut]
-    elif contains_axis(gens):
+    elif axis:
         routes = [uncut_low, lazard_small, uncut]
     else:
         routes = [quick, trials, uncut_low, lazard_small, uncut]

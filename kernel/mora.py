@@ -378,7 +378,7 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
 def mora_group(live: list[Poly], ring: PolyRing, budget: Budget | None = None, shared: bool = False,
                trials: bool = True) -> list[Terms]:
     """:func:`mora` on nonzero generators that :func:`in_groups` does not split."""
-    if live and trials and Corner(ring).enabled and not positive_dimensional(live) and not contains_axis(live):
+    if live and trials and Corner(ring).enabled and not any(trial_obstacles(live)):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
         cuts = [factor * max(top, 1) for factor in TRIAL_CUTS]
@@ -460,6 +460,13 @@ def _variables(gens: Sequence[Poly]) -> tuple[list[int], set[int]]:
     others = len(terms[0]) - 1
     powers = {e.index(max(e)) for e in terms if e.count(0) == others}
     return used, powers
+
+
+def trial_obstacles(gens: Sequence[Poly]) -> tuple[bool, bool]:
+    """``(positive_dimensional(gens), contains_axis(gens))`` from one pass over the terms: either
+    shows the ideal of the local ring is not zero-dimensional, so that no trial cut can succeed."""
+    used, powers = _variables(gens)
+    return len(gens) < len(used), not powers.issuperset(used)
 
 
 def positive_dimensional(gens: Sequence[Poly]) -> bool:
