@@ -560,10 +560,14 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         counter += 1
         heapq.heappush(queue, (sugar, rank(lm), counter, item, lm))
 
-    def first_in_queue(sugar: int, lm: Exp) -> bool:
-        """Whether work of this sugar and leading monomial would be taken before the rest."""
+    def drop_dead() -> None:
+        """Drop the dead pairs at the head of the queue."""
         while queue and isinstance(queue[0][3], _Pair) and not queue[0][3].alive:
             heapq.heappop(queue)
+
+    def first_in_queue(sugar: int, lm: Exp) -> bool:
+        """Whether work of this sugar and leading monomial would be taken before the rest."""
+        drop_dead()
         return not queue or (sugar, rank(lm)) <= queue[0][:2]
 
     def update(h: Elem) -> None:
@@ -626,7 +630,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         """:func:`reduce` in compiled code, which goes on with the polynomials postponed there
         while they come before the queue's head; an irreducible nonzero polynomial or None."""
         nonlocal counter, waiting
-        first_in_queue(0, ring.zero_exp)  # drops the dead pairs at the head
+        drop_dead()
         head = (queue[0][0], queue[0][4], queue[0][2]) if queue else None
         status, h, sugar, left, counter, waiting = compiled.run(
             w, sugar, head, corner.cut, None if budget is None else budget.steps, counter,
