@@ -85,11 +85,11 @@ mora_5 took 5.1 M entries and 5.5 G operations, mora_7 6.4 M and 13.8 G."""
 
 
 def auto_local(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> list[Terms]:
-    """A standard basis of the ideal of ``gens`` (non-global ``ring``) by the policy above, for
-    each group of generators in their own variables (:func:`.mora.in_groups`; copies of a group
-    once); ``global_basis(gens, ring)``: the ``auto`` Gröbner basis for a global ordering."""
-    live = [g for g in gens if not g.is_zero()]
-    return in_groups(live, ring, lambda part, sub: _auto_group(part, sub, global_basis))
+    """A standard basis of the ideal of the nonzero ``gens`` (non-global ``ring``) by the policy
+    above, for each group of generators in their own variables (:func:`.mora.in_groups`; copies
+    of a group once); ``global_basis(gens, ring)``: the ``auto`` Gröbner basis for a global
+    ordering."""
+    return in_groups(gens, ring, lambda part, sub: _auto_group(part, sub, global_basis))
 
 
 def _auto_group(gens: list[Poly], ring: PolyRing, global_basis: GlobalBasis) -> list[Terms]:
