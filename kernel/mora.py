@@ -440,12 +440,18 @@ def _part_basis(part: list[Poly], used: list[int], ring: PolyRing, kind: str,
         sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(kind, len(used))]))
         basis = known[key] = solve([Poly(sub, g) for g in local], sub)
     full = [0] * ring.nvars
+    step = used[1] - used[0] if len(used) > 1 else 1
+    spaced = all(b - a == step for a, b in zip(used, used[1:]))
+    where = slice(used[0], used[-1] + 1, step)  # evenly spaced: one slice assignment
     out = []
     for b in basis:
         terms = {}
         for e, c in b.items():
-            for i, v in zip(used, e):
-                full[i] = v
+            if spaced:
+                full[where] = e
+            else:
+                for i, v in zip(used, e):
+                    full[i] = v
             terms[tuple(full)] = c
         out.append(terms)
     return out
