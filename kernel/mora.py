@@ -432,17 +432,20 @@ def _part_basis(part: list[Poly], used: list[int], ring: PolyRing, kind: str,
                 solve: Callable[[list[Poly], PolyRing], list[Terms]], known: dict[tuple, list[Terms]]) -> list[Terms]:
     """``solve`` on one group of :func:`in_groups` in the ring of its variables ``used`` (ordered
     by ``kind``), unless ``known`` holds the basis of a copy; the basis in ``ring``."""
-    restrict = itemgetter(*used) if len(used) > 1 else lambda e: (e[used[0]],)
-    local = [{restrict(e): c for e, c in g.terms.items()} for g in part]
+    step = used[1] - used[0] if len(used) > 1 else 1
+    spaced = all(b - a == step for a, b in zip(used, used[1:]))
+    where = slice(used[0], used[-1] + 1, step)  # evenly spaced variables: one slice
+    if spaced:
+        local = [{e[where]: c for e, c in g.terms.items()} for g in part]
+    else:
+        restrict = itemgetter(*used)
+        local = [{restrict(e): c for e, c in g.terms.items()} for g in part]
     key = (len(used), tuple(tuple(g.items()) for g in local))  # copies built alike list their terms alike
     basis = known.get(key)
     if basis is None:
         sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(kind, len(used))]))
         basis = known[key] = solve([Poly(sub, g) for g in local], sub)
     full = [0] * ring.nvars
-    step = used[1] - used[0] if len(used) > 1 else 1
-    spaced = all(b - a == step for a, b in zip(used, used[1:]))
-    where = slice(used[0], used[-1] + 1, step)  # evenly spaced: one slice assignment
     out = []
     for b in basis:
         terms = {}
