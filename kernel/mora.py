@@ -338,9 +338,10 @@ class _Words:
 def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
     """A sort key that puts larger monomials first (the ordering's key negated)."""
     blocks, key = ring.order.blocks, ring.order.key
-    if len(blocks) == 1 and blocks[0].kind in ("ds", "dp") and ring.nvars > 1:
-        sign = 1 if blocks[0].kind == "ds" else -1
-        return lambda e: (sign * sum(e), e[::-1])
+    if len(blocks) == 1 and blocks[0].kind == "ds" and ring.nvars > 1:
+        return lambda e: (sum(e), e[::-1])
+    if len(blocks) == 1 and blocks[0].kind == "dp" and ring.nvars > 1:
+        return lambda e: (-sum(e), e[::-1])
     return lambda e: tuple(map(neg, key(e)))
 
 
@@ -540,16 +541,17 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     pool: list[Elem] = []  # reducers, sorted by sugar
     queue: list[tuple] = []  # (sugar, rank of LM, counter, pair or (h, sugar))
     counter = 0
-    corner = Corner(ring, cut, sorted({i for g in gens for e in g.terms for i, v in enumerate(e) if v}))
+    corner = Corner(ring, cut, _variables(gens)[0])
 
     def rank(e: Exp) -> tuple:  # smallest first for global orderings, largest first otherwise
         return tuple(sign * v for v in key(e))
 
     lead = _leading_rank(ring)
     blocks = ring.order.blocks
-    packing = Packing(ring.nvars) if len(blocks) == 1 and blocks[0].kind == "ds" else None
+    ds = len(blocks) == 1 and blocks[0].kind == "ds"
     compiled = CompiledMora(ring) if CompiledMora.usable(ring) else None
-    if packing is not None:
+    packing = Packing(ring.nvars) if ds and compiled is None else None
+    if ds:
         rank = lead  # the same order as ``rank`` above, sooner computed
 
     def front(terms: Terms) -> Front | PackedFront | bytes:
