@@ -98,6 +98,7 @@ typedef struct {
 typedef struct {
     int W, S;
     u64 p;
+    unsigned used;       /* bit i set for every bucket i holding terms (maybe for some empty ones) */
     Bucket b[NB];
     Buf tmp, q;
 } Geo;
@@ -129,6 +130,13 @@ static void geo_free(Geo *G)
     free(G->q.t);
 }
 
+/* Copy `words` words (one term or monomial: a few words, too short for a call to memcpy). */
+static inline void copy_words(u64 *dst, const u64 *src, int words)
+{
+    for (int j = 0; j < words; j++)
+        dst[j] = src[j];
+}
+
 /* Merge the sorted terms q[0..n) into bucket i (coefficients added, zeros dropped). */
 static int geo_merge(Geo *G, int i, const u64 *q, Py_ssize_t n)
 {
@@ -144,15 +152,15 @@ static int geo_merge(Geo *G, int i, const u64 *q, Py_ssize_t n)
     while (x < blen && y < n) {
         int c = cmp_mon(a + x * S, q + y * S, W);
         if (c < 0) {
-            memcpy(out + k++ * S, a + x++ * S, S * sizeof(u64));
+            copy_words(out + k++ * S, a + x++ * S, S);
         } else if (c > 0) {
-            memcpy(out + k++ * S, q + y++ * S, S * sizeof(u64));
+            copy_words(out + k++ * S, q + y++ * S, S);
         } else {
             u64 v = a[x * S + W] + q[y * S + W];
             if (v >= p)
                 v -= p;
             if (v) {
-                memcpy(out + k * S, a + x * S, W * sizeof(u64));
+                copy_words(out + k * S, a + x * S, W);
                 out[k++ * S + W] = v;
             }
             x++; y++;
@@ -171,6 +179,8 @@ static int geo_merge(Geo *G, int i, const u64 *q, Py_ssize_t n)
     Py_ssize_t cap = B->cap;
     B->t = G->tmp.t; B->cap = G->tmp.cap; B->start = 0; B->len = k;
     G->tmp.t = t; G->tmp.cap = cap;
+    if (k)
+        G->used |= 1u << i;
     return 0;
 }
 
@@ -205,10 +215,13 @@ static int geo_lead(Geo *G)
     u64 p = G->p;
     for (;;) {
         int best = -1;
-        for (int i = 0; i < NB; i++) {
+        for (unsigned m = G->used; m; m &= m - 1) {
+            int i = __builtin_ctz(m);
             Bucket *B = G->b + i;
-            if (B->start == B->len)
+            if (B->start == B->len) {
+                G->used &= ~(1u << i);
                 continue;
+            }
             if (best < 0 || cmp_mon(B->t + B->start * S, G->b[best].t + G->b[best].start * S, W) < 0)
                 best = i;
         }
@@ -216,7 +229,8 @@ static int geo_lead(Geo *G)
             return -1;
         u64 *lead = G->b[best].t + G->b[best].start * S;
         u64 v = lead[W];
-        for (int i = 0; i < NB; i++) {
+        for (unsigned m = G->used; m; m &= m - 1) {
+            int i = __builtin_ctz(m);
             Bucket *B = G->b + i;
             if (i == best || B->start == B->len || cmp_mon(B->t + B->start * S, lead, W))
                 continue;

@@ -476,7 +476,8 @@ def _hilbert_reduced(gens: list[Poly], ring: PolyRing) -> list[Terms]:
 
 
 def _auto_local(gens: list[Poly], ring: PolyRing) -> list[Poly]:
-    return _finish(auto_local(gens, ring, lambda hgens, hring: standard_basis(hgens, hring, AUTO)), ring, False)
+    basis = auto_local(gens, ring, lambda hgens, hring: standard_basis(hgens, hring, AUTO))
+    return finished(basis, ring, minimal=True)  # the policy's routes (Mora, Lazard) give minimal bases
 
 
 def _finish(basis: list[Terms], ring: PolyRing, reduced: bool) -> list[Poly]:

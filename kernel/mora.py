@@ -22,7 +22,7 @@ tails of zero-dimensional ideals is :mod:`.mora_corner`.  Under a cut (a trial's
 corner's) the computation lives in the finite-dimensional algebra ``K[x]/m^(cut+1)``, and there
 reductions take the first reducer (by sugar) without the ecart rule, as Singular does once it
 knows its highest corner.  Generators in disjoint sets of
-variables are computed group by group (:func:`_separate`).
+variables are computed group by group (:func:`in_groups`).
 
 Pair criteria: the Gebauer–Möller chain criteria (statements about syzygies of the leading
 terms, valid for every ordering, GP 2.5.9) and the product criterion only when it really
@@ -32,12 +32,11 @@ gives a standard representation ``spoly(f, g) = f'g - g'f``: for a local orderin
 from __future__ import annotations
 
 import heapq
-from itertools import islice
 from operator import itemgetter, neg
 from typing import Any, Callable, Sequence
 
 from .mora_compiled import CompiledMora
-from .mora_corner import Corner, components
+from .mora_corner import Corner
 from .mora_packed import MAX_DEGREE, PackedFront, Packing
 from .order import Block, Exp, MonomialOrder
 from .poly import Poly, PolyRing, add_exp, divides, support_mask
@@ -304,7 +303,7 @@ class _Pair:
 class _Words:
     """Monomials of ``n`` variables as one integer of 16-bit fields (exponents below 2^15, the
     top bit of each field a guard): lcm, divisibility and degree in a few integer operations,
-    for the pair criteria."""
+    for the pair criteria (``a`` divides ``b`` when ``((b | guard) - a) & guard == guard``)."""
 
     def __init__(self, n: int) -> None:
         self.shifts = [16 * i for i in range(n)]
@@ -322,20 +321,27 @@ class _Words:
         keep = ((((a | self.guard) - b) & self.guard) >> 15) * 0xFFFF  # the fields where a >= b
         return (a & keep) | (b & ~keep)
 
-    def divides(self, a: int, b: int) -> bool:
-        """Whether ``a`` divides ``b``."""
-        return ((b | self.guard) - a) & self.guard == self.guard
-
-    def degree(self, w: int) -> int:
-        return (w * self.ones >> self.top) & 0xFFFF  # the fields' sum lands in the top one
+    def lcms(self, packs: list[int], active: list[bool], b: int) -> list[tuple[int, int, int]]:
+        """``(degree, lcm, i)`` of ``lcm(packs[i], b)`` for the ``active`` ones (:meth:`lcm`
+        inlined: a new element meets every old one; the degree is the fields' sum, which a
+        multiplication by ``ones`` lands in the top field)."""
+        guard, ones, top = self.guard, self.ones, self.top
+        out = []
+        for i, a in enumerate(packs):
+            if active[i]:
+                keep = ((((a | guard) - b) & guard) >> 15) * 0xFFFF
+                lc = (a & keep) | (b & ~keep)
+                out.append(((lc * ones >> top) & 0xFFFF, lc, i))
+        return out
 
 
 def _leading_rank(ring: PolyRing) -> Callable[[Exp], tuple]:
     """A sort key that puts larger monomials first (the ordering's key negated)."""
     blocks, key = ring.order.blocks, ring.order.key
-    if len(blocks) == 1 and blocks[0].kind in ("ds", "dp") and ring.nvars > 1:
-        sign = 1 if blocks[0].kind == "ds" else -1
-        return lambda e: (sign * sum(e), *e[::-1])
+    if len(blocks) == 1 and blocks[0].kind == "ds" and ring.nvars > 1:
+        return lambda e: (sum(e), e[::-1])
+    if len(blocks) == 1 and blocks[0].kind == "dp" and ring.nvars > 1:
+        return lambda e: (-sum(e), e[::-1])
     return lambda e: tuple(map(neg, key(e)))
 
 
@@ -360,22 +366,20 @@ def mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     (the local ideal is not zero-dimensional, or its corner lies higher) the computation
     runs without a cut; a trial cut is skipped when an earlier trial left a monomial of that
     degree outside its leading monomials, and the next trial is then one degree above it.  Raises :class:`BudgetExceeded` when a ``budget`` is given and runs
-    out; the trials are skipped when there are fewer generators than variables in them (by
-    Krull's height theorem the ideal of the local ring then has positive dimension, and no trial
-    can succeed); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
-    trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts."""
+    out; the trials are skipped when the ideal of the local ring is seen not to be
+    zero-dimensional, so that no trial can succeed: there are fewer generators than variables in
+    them (Krull's height theorem, :func:`positive_dimensional`), or its zero set contains a
+    coordinate axis (:func:`contains_axis`); each trial has its own budget of :data:`TRIAL_STEPS` steps, or with ``shared`` the
+    trials and the final run all draw on ``budget``; ``trials=False`` skips the trial cuts.
+    Generators in disjoint sets of variables are computed group by group (:func:`in_groups`)."""
     live = [g for g in gens if not g.is_zero()]
-    parts = _separate(live, ring.nvars)
-    if len(parts) > 1:
-        out = []
-        known: dict[tuple, list[Terms]] = {}
-        for part in parts:
-            basis = _part_basis(part, ring, budget, shared, trials, known)
-            if any(b.get(ring.zero_exp) for b in basis):
-                return basis  # the unit ideal
-            out.extend(basis)
-        return out
-    if live and trials and Corner(ring).enabled and not positive_dimensional(live):
+    return in_groups(live, ring, lambda part, sub: mora_group(part, sub, budget, shared, trials))
+
+
+def mora_group(live: list[Poly], ring: PolyRing, budget: Budget | None = None, shared: bool = False,
+               trials: bool = True) -> list[Terms]:
+    """:func:`mora` on nonzero generators that :func:`in_groups` does not split."""
+    if live and trials and Corner(ring).enabled and not any(trial_obstacles(live)):
         top = max(g.total_degree() for g in live)
         seen = -1  # a trial's leading monomials left a monomial of this degree outside: skip cuts below
         cuts = [factor * max(top, 1) for factor in TRIAL_CUTS]
@@ -403,59 +407,124 @@ RESTRICTABLE = ("ds", "Ds", "ls", "dp", "Dp", "lp")
 variables alone (in their order) does."""
 
 
-def _part_basis(part: list[Poly], ring: PolyRing, budget: Budget | None, shared: bool, trials: bool,
-                known: dict[tuple, list[Terms]]) -> list[Terms]:
-    """:func:`mora` of one group of :func:`_separate`, computed in the ring of its variables
-    when the ordering allows (then a standard basis there is one in ``ring``: its standard
-    representations stay standard); groups equal up to renaming their variables in order (a
-    sum of copies of one singularity, as in Singular's vdim_overflow test) are computed once,
-    ``known`` keeping their bases."""
+def in_groups(gens: list[Poly], ring: PolyRing, solve: Callable[[list[Poly], PolyRing], list[Terms]]) -> list[Terms]:
+    """``solve(part, part_ring)`` (a standard basis) on each group of generators of :func:`_separate`,
+    the bases together: a standard basis of the ideal (``[1]`` when a group gives the unit ideal).
+    A group is solved in the ring of its own variables when the ordering allows
+    (:data:`RESTRICTABLE`: a standard basis there is one in ``ring``, its standard representations
+    stay standard); groups equal up to renaming their variables in order (a sum of copies of one
+    singularity, as in Singular's vdim_overflow test) are solved once."""
+    parts = _separate(gens, ring.nvars)
+    if len(parts) == 1:
+        return solve(gens, ring)
     blocks = ring.order.blocks
-    if len(blocks) != 1 or blocks[0].kind not in RESTRICTABLE:
-        return mora(part, ring, budget, shared, trials)
-    used = sorted({i for g in part for e in g.terms for i, v in enumerate(e) if v})
-    local = [{tuple([e[i] for i in used]): c for e, c in g.terms.items()} for g in part]
-    key = (blocks[0].kind, len(used), tuple(tuple(sorted(g.items())) for g in local))
+    kind = blocks[0].kind if len(blocks) == 1 and blocks[0].kind in RESTRICTABLE else None
+    known: dict[tuple, list[Terms]] = {}
+    out = []
+    for used, part in parts:
+        basis = solve(part, ring) if kind is None else _part_basis(part, used, ring, kind, solve, known)
+        if basis and ring.zero_exp in basis[0]:
+            return basis  # the unit ideal (a minimal basis has one element then, with the term 1)
+        out.extend(basis)
+    return out
+
+
+def _part_basis(part: list[Poly], used: list[int], ring: PolyRing, kind: str,
+                solve: Callable[[list[Poly], PolyRing], list[Terms]], known: dict[tuple, list[Terms]]) -> list[Terms]:
+    """``solve`` on one group of :func:`in_groups` in the ring of its variables ``used`` (ordered
+    by ``kind``), unless ``known`` holds the basis of a copy; the basis in ``ring``."""
+    step = used[1] - used[0] if len(used) > 1 else 1
+    spaced = all(b - a == step for a, b in zip(used, used[1:]))
+    where = slice(used[0], used[-1] + 1, step)  # evenly spaced variables: one slice
+    if spaced:
+        local = [{e[where]: c for e, c in g.terms.items()} for g in part]
+    else:
+        restrict = itemgetter(*used)
+        local = [{restrict(e): c for e, c in g.terms.items()} for g in part]
+    key = (len(used), tuple(tuple(g.items()) for g in local))  # copies built alike list their terms alike
     basis = known.get(key)
     if basis is None:
-        sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(blocks[0].kind, len(used))]))
-        basis = known[key] = mora([Poly(sub, g) for g in local], sub, budget, shared, trials)
-    n = ring.nvars
+        sub = PolyRing(ring.field, [ring.names[i] for i in used], MonomialOrder([Block(kind, len(used))]))
+        basis = known[key] = solve([Poly(sub, g) for g in local], sub)
+    full = [0] * ring.nvars
     out = []
     for b in basis:
         terms = {}
         for e, c in b.items():
-            full = [0] * n
-            for i, v in zip(used, e):
-                full[i] = v
+            if spaced:
+                full[where] = e
+            else:
+                for i, v in zip(used, e):
+                    full[i] = v
             terms[tuple(full)] = c
         out.append(terms)
     return out
+
+
+def _variables(gens: Sequence[Poly]) -> tuple[list[int], set[int]]:
+    """The variables occurring in ``gens``, and those of which a pure power is a term."""
+    terms = [e for g in gens for e in g.terms]
+    if not terms:
+        return [], set()
+    used = [i for i, column in enumerate(zip(*terms)) if any(column)]
+    others = len(terms[0]) - 1
+    powers = {e.index(max(e)) for e in terms if e.count(0) == others}
+    return used, powers
+
+
+def trial_obstacles(gens: Sequence[Poly]) -> tuple[bool, bool]:
+    """``(positive_dimensional(gens), contains_axis(gens))`` from one pass over the terms: either
+    shows the ideal of the local ring is not zero-dimensional, so that no trial cut can succeed."""
+    used, powers = _variables(gens)
+    return len(gens) < len(used), not powers.issuperset(used)
 
 
 def positive_dimensional(gens: Sequence[Poly]) -> bool:
     """Whether there are fewer generators than variables in them: the ideal of the local ring
     then has positive dimension (Krull's height theorem: its height is at most the number of
     generators), or is the whole ring."""
-    used = {i for g in gens for e in g.terms for i, v in enumerate(e) if v}
-    return len(gens) < len(used)
+    return len(gens) < len(_variables(gens)[0])
 
 
-def _separate(gens: list[Poly], n: int) -> list[list[Poly]]:
-    """The generators grouped by the variables they share (one group when they cannot be split
-    or one of them is a constant).  Standard bases of the groups together are one of the whole
-    ideal, for every ordering: an S-polynomial of ``f`` and ``g`` in disjoint variables is
+def contains_axis(gens: Sequence[Poly]) -> bool:
+    """Whether some variable occurring in ``gens`` has no pure power among their terms: the ideal
+    then lies in the ideal of that variable's coordinate axis (every term is divisible by another
+    variable), its zero set contains the axis, and the ideal of the local ring is not
+    zero-dimensional (Singular's mora_9: five such variables)."""
+    used, powers = _variables(gens)
+    return not powers.issuperset(used)
+
+
+def _separate(gens: list[Poly], n: int) -> list[tuple[list[int], list[Poly]]]:
+    """The generators grouped by the variables they share, in the order of their first
+    generators, each group with its variables; one group (with every variable) when they cannot
+    be split or one of them is a constant.  Standard bases of the groups together are one of the
+    whole ideal, for every ordering: an S-polynomial of ``f`` and ``g`` in disjoint variables is
     ``tail(f) g - tail(g) f``, whose two products have different leading monomials (one is
     ``LM(tail f) LM(g)``, the other ``LM(tail g) LM(f)``): a standard representation."""
-    if len(gens) < 2 or any(not any(e) for g in gens for e in g.terms):
-        return [gens]
-    groups = components([tuple(map(sum, zip(*g.terms))) for g in gens], n)  # each one's support
-    index = {i: k for k, part in enumerate(groups) for i in part}
-    parts: dict[int, list[Poly]] = {}
-    for g in gens:
-        e = next(iter(g.terms))
-        parts.setdefault(index[next(i for i, v in enumerate(e) if v)], []).append(g)
-    return list(parts.values())
+    zero = (0,) * n
+    if len(gens) < 2 or any(zero in g.terms for g in gens):
+        return [(list(range(n)), gens)]
+    groups: list[tuple[int, list[int]]] = []  # (the variables as a mask, the generators' positions)
+    for k, g in enumerate(gens):
+        mask = 0
+        for i, column in enumerate(zip(*g.terms)):
+            if any(column):
+                mask |= 1 << i
+        members = [k]
+        rest = []
+        for group in groups:
+            if group[0] & mask:
+                mask |= group[0]
+                members += group[1]
+            else:
+                rest.append(group)
+        rest.append((mask, members))
+        groups = rest
+    if len(groups) == 1:
+        return [(list(range(n)), gens)]
+    groups.sort(key=lambda group: min(group[1]))
+    return [([i for i in range(n) if mask >> i & 1], [gens[k] for k in sorted(members)]) for mask, members in groups]
 
 
 def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
@@ -472,16 +541,17 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
     pool: list[Elem] = []  # reducers, sorted by sugar
     queue: list[tuple] = []  # (sugar, rank of LM, counter, pair or (h, sugar))
     counter = 0
-    corner = Corner(ring, cut, sorted({i for g in gens for e in g.terms for i, v in enumerate(e) if v}))
+    corner = Corner(ring, cut, _variables(gens)[0])
 
     def rank(e: Exp) -> tuple:  # smallest first for global orderings, largest first otherwise
         return tuple(sign * v for v in key(e))
 
     lead = _leading_rank(ring)
     blocks = ring.order.blocks
-    packing = Packing(ring.nvars) if len(blocks) == 1 and blocks[0].kind == "ds" else None
+    ds = len(blocks) == 1 and blocks[0].kind == "ds"
     compiled = CompiledMora(ring) if CompiledMora.usable(ring) else None
-    if packing is not None:
+    packing = Packing(ring.nvars) if ds and compiled is None else None
+    if ds:
         rank = lead  # the same order as ``rank`` above, sooner computed
 
     def front(terms: Terms) -> Front | PackedFront | bytes:
@@ -501,31 +571,43 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         counter += 1
         heapq.heappush(queue, (sugar, rank(lm), counter, item, lm))
 
-    def first_in_queue(sugar: int, lm: Exp) -> bool:
-        """Whether work of this sugar and leading monomial would be taken before the rest."""
+    def drop_dead() -> None:
+        """Drop the dead pairs at the head of the queue."""
         while queue and isinstance(queue[0][3], _Pair) and not queue[0][3].alive:
             heapq.heappop(queue)
+
+    def first_in_queue(sugar: int, lm: Exp) -> bool:
+        """Whether work of this sugar and leading monomial would be taken before the rest."""
+        drop_dead()
         return not queue or (sugar, rank(lm)) <= queue[0][:2]
 
     def update(h: Elem) -> None:
         k = len(basis)
         basis.append(h)
         active.append(True)
-        hmask = h.mask
         hp = words.pack(h.lm)
-        packs.append(hp)
-        lcm, divides_packed = words.lcm, words.divides
+        if not k:
+            packs.append(hp)
+            return  # no pairs, nothing to deactivate
+        hmask = h.mask
+        lcm, guard = words.lcm, words.guard
         # the new pairs whose lcm no other new lcm of lower degree divides (Gebauer–Möller's M;
         # divisibility is transitive, so checking the kept ones of lower degree suffices)
-        new = sorted(((words.degree(lc), lc, i) for i in range(k) if active[i]
-                      for lc in (lcm(packs[i], hp),)), key=itemgetter(0))
+        new = words.lcms(packs, active, hp)
+        packs.append(hp)
+        new.sort(key=itemgetter(0))
         kept: list[tuple[int, int, int, int]] = []  # (degree, mask, packed lcm, i)
         lower = 0  # kept[:lower] have a degree below the current one
         for d, lc, i in new:
             while lower < len(kept) and kept[lower][0] < d:
                 lower += 1
             m = basis[i].mask | hmask
-            if not any(not km & ~m and divides_packed(kl, lc) for _, km, kl, _ in islice(kept, lower)):
+            top = lc | guard
+            for j in range(lower):
+                _, km, kl, _ = kept[j]
+                if not km & ~m and (top - kl) & guard == guard:  # kl divides lc
+                    break
+            else:
                 kept.append((d, m, lc, i))
         by_lcm: dict[int, tuple[_Pair, bool]] = {}
         for _, m, lc, i in kept:
@@ -533,17 +615,22 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             prev = by_lcm.get(lc)
             if prev is None or (lifts and not prev[1]):
                 by_lcm[lc] = (_Pair(i, k, words.unpack(lc), m, lc), lifts)
-        for p in pairs:
-            if p.alive and not hmask & ~p.mask and divides_packed(hp, p.packed) \
-                    and lcm(packs[p.i], hp) != p.packed and lcm(packs[p.j], hp) != p.packed:
-                p.alive = False
-        pairs[:] = [p for p in pairs if p.alive]
+        if pairs:
+            dead = False
+            for p in pairs:
+                if p.alive and not hmask & ~p.mask and ((p.packed | guard) - hp) & guard == guard \
+                        and lcm(packs[p.i], hp) != p.packed and lcm(packs[p.j], hp) != p.packed:
+                    p.alive = False
+                if not p.alive:
+                    dead = True
+            if dead:
+                pairs[:] = [p for p in pairs if p.alive]
         for a, lifts in by_lcm.values():
             if not lifts:
                 pairs.append(a)
                 push(sum(a.lcm) + max(basis[a.i].ecart, h.ecart), a.lcm, a)
         for i in range(k):
-            if active[i] and not hmask & ~basis[i].mask and divides_packed(hp, packs[i]):
+            if active[i] and not hmask & ~basis[i].mask and ((packs[i] | guard) - hp) & guard == guard:
                 active[i] = False
 
     max_sugar = None if budget is None or budget.degree is None else \
@@ -554,7 +641,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
         """:func:`reduce` in compiled code, which goes on with the polynomials postponed there
         while they come before the queue's head; an irreducible nonzero polynomial or None."""
         nonlocal counter, waiting
-        first_in_queue(0, ring.zero_exp)  # drops the dead pairs at the head
+        drop_dead()
         head = (queue[0][0], queue[0][4], queue[0][2]) if queue else None
         status, h, sugar, left, counter, waiting = compiled.run(
             w, sugar, head, corner.cut, None if budget is None else budget.steps, counter,
@@ -623,7 +710,8 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
 
     for g in gens:
         if not g.is_zero():
-            push(g.total_degree(), g.lm(), (front(dict(g.terms)), g.total_degree()))
+            d = g.total_degree()
+            push(d, g.lm(), (front(dict(g.terms)), d))
     while queue or waiting:
         done = run_compiled(None, 0) if waiting else None
         if done is None:
@@ -658,7 +746,8 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
             lm = max(h, key=key)
             if lm == ring.zero_exp:
                 return [{ring.zero_exp: ring.field.one}], corner
-            elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)))
+            h = {lm: h[lm], **h}  # the leading monomial first, as the basis is returned
+            elem = Elem(h, key, min(sugar - sum(lm), max(sum(e) for e in h) - sum(lm)), lm)
             _insert(pool, elem)
         update(elem)
         if corner.update(elem.lm, lambda: [b.lm for b, a in zip(basis, active) if a]):
@@ -668,7 +757,7 @@ def _mora(gens: Sequence[Poly], ring: PolyRing, budget: Budget | None = None,
                 compiled.cut_tails(basis, corner.cut)
             for g in pool:
                 g.truncate(corner.cut)
-    return [{b.lm: b.p[b.lm], **b.p} for b, a in zip(basis, active) if a], corner
+    return [b.p for b, a in zip(basis, active) if a], corner  # each with its leading monomial first
 
 
 def _spoly(f: Elem, g: Elem, lc: Exp) -> Terms:
@@ -695,16 +784,34 @@ def elems(basis: Sequence[Poly]) -> list[Elem]:
 
 
 
-def finished(basis: list[Terms], ring: PolyRing) -> list[Poly]:
+def finished(basis: list[Terms], ring: PolyRing, minimal: bool = False) -> list[Poly]:
     """A standard basis as :func:`.engines.standard_basis` returns it for a non-global ordering,
     from dicts that each hold their leading monomial first (as :func:`mora` and
     :func:`.lazard.lazard` give them): minimal (an element whose leading monomial another's
     divides is dropped; of equal ones the first is kept), monic, sorted from the largest leading
-    monomial down."""
-    key = ring.order.key
+    monomial down.  ``minimal``: the basis is minimal already (:func:`mora`'s and
+    :func:`.lazard.lazard`'s are), and is not checked."""
     one = ring.field.one
     items = [(next(iter(b)), b) for b in basis if b]
-    items.sort(key=lambda t: sum(t[0]))  # a divisor comes first (stable: equal ones in order)
+    if not minimal:
+        items = _minimal(items)
+    rank = _leading_rank(ring)
+    items.sort(key=lambda t: rank(t[0]))
+    out = []
+    for m, b in items:
+        c = b[m]
+        if c != one:
+            inv = 1 / c
+            b = {e: v * inv for e, v in b.items()}
+        p = Poly(ring, b)
+        p._lm = m
+        out.append(p)
+    return out
+
+
+def _minimal(items: list[tuple[Exp, Terms]]) -> list[tuple[Exp, Terms]]:
+    """The items whose leading monomial no other's divides (of equal ones the first)."""
+    items = sorted(items, key=lambda t: sum(t[0]))  # a divisor comes first (stable: equal ones in order)
     kept: list[tuple[Exp, int]] = []
     out = []
     for m, b in items:
@@ -712,12 +819,5 @@ def finished(basis: list[Terms], ring: PolyRing) -> list[Poly]:
         if any(not kmask & ~mask and divides(lm, m) for lm, kmask in kept):
             continue
         kept.append((m, mask))
-        c = b[m]
-        if c != one:
-            inv = 1 / c
-            b = {e: v * inv for e, v in b.items()}
-        p = Poly(ring, b)
-        p._lm = m
-        out.append((key(m), p))
-    out.sort(key=lambda t: t[0], reverse=True)
-    return [p for _, p in out]
+        out.append((m, b))
+    return out

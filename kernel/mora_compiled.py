@@ -101,7 +101,7 @@ class CompiledMora:
 
 class PackedElem:
     """A basis element of the compiled run (:class:`.mora.Elem`'s leading data; its terms
-    ``p`` as a dict only when asked for)."""
+    ``p`` as a dict, the leading monomial first, only when asked for)."""
 
     __slots__ = ("owner", "b", "lm", "tail_lm", "mask", "ecart", "_p")
 

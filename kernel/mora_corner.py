@@ -22,10 +22,12 @@ def top_degree(gens: Sequence[Exp], memo: dict | None = None) -> Top | None:
     ``b``, without ``x``), so the best is ``b' - 1 + top(L_b)``; intervals are tried from the
     highest down and skipped when even the bound from the pure powers cannot beat the best.
     ``memo``: the answers for sub-ideals, kept across calls on growing ideals."""
-    gens = minimal_monomials(gens)
     if not gens:
         return None
     n = len(gens[0])
+    if n == 2:
+        return _top_plane(gens)
+    gens = minimal_monomials(gens)
     if any(not any(g) for g in gens):
         return UNIT
     degree, witness = 0, [0] * n
@@ -70,6 +72,9 @@ def _top(gens: tuple[Exp, ...], n: int, memo: dict) -> Top | None:
         return UNIT if gens else (0, ())
     if gens in memo:
         return memo[gens]
+    if n == 2:
+        memo[gens] = _top_plane(gens)
+        return memo[gens]
     last = n - 1
     power = min((g[last] for g in gens if not any(g[:last])), default=None)
     if power is None or power == 0:
@@ -89,6 +94,24 @@ def _top(gens: tuple[Exp, ...], n: int, memo: dict) -> Top | None:
         if t is not UNIT and end - 1 + t[0] > best[0]:
             best = (end - 1 + t[0], t[1] + (end - 1,))
     memo[gens] = best
+    return best
+
+
+def _top_plane(gens: Sequence[Exp]) -> Top | None:
+    """:func:`top_degree` in two variables: the staircase's outer corners lie between consecutive
+    minimal generators ``x^a y^b``, ``x^a' y^b'`` (by increasing ``a``) at ``x^(a'-1) y^(b-1)``."""
+    stairs: list[Exp] = []
+    for a, b in sorted(gens):
+        if not stairs or b < stairs[-1][1]:
+            stairs.append((a, b))
+    if stairs[0][0] or stairs[-1][1]:
+        return None  # no pure power of y, or of x
+    if len(stairs) == 1:
+        return UNIT  # the generator 1
+    best = UNIT
+    for (_, b), (a, _) in zip(stairs, stairs[1:]):
+        if a + b - 2 > best[0]:
+            best = (a + b - 2, (a - 1, b - 1))
     return best
 
 
@@ -134,16 +157,16 @@ class Corner:
         went down."""
         if not self.enabled:
             return False
-        support = [i for i, v in enumerate(lm) if v]
-        if len(support) == 1:
-            self.powers.add(support[0])
+        if lm.count(0) == len(lm) - 1:  # a pure power
+            self.powers.add(lm.index(max(lm)))
         if len(self.powers) < len(self.used):
             return False
         used = self.used
         w = self.witness
         if w is not None and any(lm[i] > v for i, v in zip(used, w)):
             return False  # the witness stays outside: the top degree cannot go down
-        top = top_degree([tuple(m[i] for i in used) for m in lms()], self.memo)
+        every = len(used) == len(lm)
+        top = top_degree(lms() if every else [tuple(m[i] for i in used) for m in lms()], self.memo)
         if top is None:
             return False
         self.witness, self.seen = top[1], top[0]

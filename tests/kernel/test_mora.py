@@ -93,7 +93,7 @@ def test_generators_in_disjoint_variables_are_split(kind):
     the whole computation (kernel/mora.py's _separate)."""
     R = PolyRing(GF(32003), ["x", "y", "z", "w"], MonomialOrder([Block(kind, 4)]))
     gens = [parse_poly(R, p) for p in ["x^3+y^2+x^4*y", "x*y^3+y^5", "z^2*w+w^4+z^5", "z^3-w^3+z*w^4"]]
-    assert [len(p) for p in _separate(gens, 4)] == [2, 2]
+    assert [(used, len(p)) for used, p in _separate(gens, 4)] == [([0, 1], 2), ([2, 3], 2)]
     key = R.order.key
     split = mora(gens, R)
     whole = _mora(gens, R)[0]
@@ -110,15 +110,28 @@ def test_copies_of_a_group_are_computed_once(kind, monkeypatch):
     R = PolyRing(GF(32003), ["x", "y", "z", "w"], MonomialOrder([Block(kind, 4)]))
     gens = [parse_poly(R, p) for p in ["x^3+y^2+x^4*y", "x*y^3+y^5", "z^3+w^2+z^4*w", "z*w^3+w^5"]]
     calls = []
-    real = mora_module.mora
+    real = mora_module.mora_group
 
     def spy(gens, ring, *args):
         calls.append(ring.nvars)
         return real(gens, ring, *args)
-    monkeypatch.setattr(mora_module, "mora", spy)
-    split = real(gens, R)
+    monkeypatch.setattr(mora_module, "mora_group", spy)
+    split = mora(gens, R)
     assert calls == [2]
     key = R.order.key
     lms = sorted(max(b, key=key) for b in split)
     assert lms == sorted(minimal_monomials([max(b, key=key) for b in _mora(gens, R)[0]]))
     assert sorted((e[2], e[3]) for e in lms if e[2] or e[3]) == sorted((e[0], e[1]) for e in lms if e[0] or e[1])
+
+
+@pytest.mark.parametrize("kind", ["ds", "ls"])
+def test_groups_in_unevenly_spaced_variables(kind):
+    """Groups whose variables are not evenly spaced in the ring (a, b, d and c, e, f) are placed
+    back term by term (kernel/mora.py's _part_basis), with the leading ideal of the whole."""
+    R = PolyRing(GF(32003), list("abcdef"), MonomialOrder([Block(kind, 6)]))
+    gens = [parse_poly(R, p) for p in ["a^3+b^2+d^4*a", "a*b^3+d^5", "d^3-b*a^2", "c^3+e^2+f^4*c", "c*e^3+f^5", "f^3-e*c^2"]]
+    assert [used for used, _ in _separate(gens, 6)] == [[0, 1, 3], [2, 4, 5]]
+    key = R.order.key
+    split = mora(gens, R)
+    whole = _mora(gens, R)[0]
+    assert sorted(max(b, key=key) for b in split) == sorted(minimal_monomials([max(b, key=key) for b in whole]))

@@ -83,6 +83,18 @@ def test_auto_and_mora_have_the_leading_ideal_of_lazard(seed):
         assert any(not any(m[i] == sum(m) for m in lazard) for i in range(R.nvars))
 
 
+@pytest.mark.parametrize("compiled", [True, False])
+def test_each_element_comes_with_its_leading_monomial_first(compiled, monkeypatch):
+    """:func:`.mora.finished` reads the leading monomial as the first key of each dict."""
+    if not compiled:
+        monkeypatch.setattr(mora_compiled, "C", None)
+    for seed in range(10):
+        R, gens = _random_ideal(seed)
+        basis, _ = _mora_within(gens, R, 5000)
+        for b in basis or []:
+            assert next(iter(b)) == max(b, key=R.order.key)
+
+
 def test_most_random_ideals_finish_in_mora():
     finished = [_mora_within(*reversed(_random_ideal(seed)), 5000)[0] is not None for seed in SEEDS]
     assert sum(finished) >= 30
