@@ -61,6 +61,11 @@ from .f4_trace import Trace, TraceMismatch, replay, replay_full
 from .monomials import Packing, nonnegative_matrix, packing
 from .poly import support_mask
 
+try:
+    from ._f4rows import agree_rows as AGREE_ROWS, ratrec_rows as RATREC_ROWS
+except ImportError:  # no compiler at install (or an older extension): the same loops in Python
+    AGREE_ROWS = RATREC_ROWS = None
+
 PRIME_RANGE = (1 << 27, 1 << 28)
 FULL_REPLAY_COST = 3.0
 """A lift not yet likely right is confirmed by a full replay (the check modulo a fresh prime on
@@ -133,6 +138,10 @@ def ratrec(a: int, m: int, bound: int) -> tuple[int, int] | None:
     return (r1, s1) if s1 > 0 else (-r1, -s1)
 
 
+COMPILED_MODULUS = 1 << 62
+"""Moduli (and primes) below which the reconstruction and its check run in C (kernel/_f4lift.c)."""
+
+
 class Reconstructor:
     """Rational reconstruction of coefficient lists, resumed where the last attempt failed:
     coefficients lifted from fewer primes are kept (the final check against a further prime
@@ -153,6 +162,16 @@ class Reconstructor:
         """Rewind to the first lifted coefficient that disagrees with the residues mod p;
         whether one did."""
         out = self.out
+        if AGREE_ROWS is not None and p < COMPILED_MODULUS:
+            try:
+                first = AGREE_ROWS(out, residues, p, self.i, self.j)
+            except OverflowError:  # an entry beyond 64 bits: the loop below
+                pass
+            else:
+                if first is None:
+                    return False
+                self.i, self.j, self.den = *first, 1
+                return True
         for i in range(min(self.i + 1, len(out))):
             row, rs = out[i], residues[i]
             for j in range(self.j if i == self.i else len(row)):
@@ -163,6 +182,9 @@ class Reconstructor:
         return False
 
     def attempt(self, values: list[list[int]], m: int) -> list[list[Any]] | None:
+        if RATREC_ROWS is not None and m < COMPILED_MODULUS:  # the same loop in C
+            self.i, self.j, self.den, complete = RATREC_ROWS(values, self.out, m, self.i, self.j, self.den)
+            return self._complete(m) if complete else None
         bound = isqrt(m // 2)
         half = m // 2
         i, j, den, out = self.i, self.j, self.den, self.out
@@ -186,6 +208,11 @@ class Reconstructor:
                         den = r[1]
             i, j = i + 1, 0
         self.i, self.j, self.den = i, j, den
+        return self._complete(m)
+
+    def _complete(self, m: int) -> list[list[Any]]:
+        """The complete lift as rationals, from a modulus ``m``."""
+        out = self.out
         fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
         self.lift = [[fmpq(n) if d == 1 else fmpq(n, d) for n, d in row] for row in out]
         self.bits = m.bit_length()
