@@ -9,8 +9,8 @@
  * field of ebits bits at bit dshift.  mons[k] and coefs[k] (bytes): the terms of basis element
  * k, decreasing, and their coefficients (uint64); tdeg[k] its total degree; reducers (int32):
  * the basis elements to search, in order, for a divisor of a monomial; specs: the pair rows
- * (k, u) (u: packed cofactor, bytes); pivots: the pair rows chosen as reducers (L, k, u) of
- * their leading monomial L.  Every monomial of a row x^u * poly[k] that is not a pivot yet
+ * (k, u) (u: packed cofactor, bytes or a Python int); pivots: a dict {L: (k, u)} of the pair
+ * rows chosen as reducers of their leading monomial L (in its order).  Every monomial of a row x^u * poly[k] that is not a pivot yet
  * gets as reducer the first element of reducers whose leading monomial divides it (its row
  * joins the matrix), else it is a non-pivot column.
  * Returns the pivot columns and the non-pivot monomials (Python ints, increasing), redk (the
@@ -215,26 +215,53 @@ static int reserve64(int64_t **a, Py_ssize_t *cap, Py_ssize_t n)
     return 0;
 }
 
-static int parse_row(PyObject *o, int with_lead, const Basis *B, uint64_t *key, uint64_t *lead)
+/* A packed monomial given as bytes (nw little-endian words) or as a nonnegative integer (a Python
+ * int, or another integer type such as python-flint's fmpz through __index__). */
+static int parse_words(PyObject *o, uint64_t *dst, int nw)
 {
-    /* (k, u) or (L, k, u): key = u words then k; lead = L */
-    Py_ssize_t n = with_lead ? 3 : 2;
-    if (!PyTuple_Check(o) || PyTuple_GET_SIZE(o) != n)
+    if (PyBytes_Check(o)) {
+        if (PyBytes_GET_SIZE(o) != 8 * nw)
+            return -1;
+        memcpy(dst, PyBytes_AS_STRING(o), 8 * (size_t)nw);
+        return 0;
+    }
+    PyObject *x = PyNumber_Index(o);
+    if (x == NULL) {
+        PyErr_Clear();
+        return -1;
+    }
+    int bad;
+    if (nw == 1) {
+        unsigned long long v = PyLong_AsUnsignedLongLong(x);
+        bad = v == (unsigned long long)-1 && PyErr_Occurred();
+        dst[0] = v;
+    } else {
+#if PY_VERSION_HEX >= 0x030D0000
+        Py_ssize_t need = PyLong_AsNativeBytes(x, dst, 8 * (Py_ssize_t)nw,
+                                               Py_ASNATIVEBYTES_LITTLE_ENDIAN | Py_ASNATIVEBYTES_REJECT_NEGATIVE);
+        bad = need < 0 || need > 8 * nw;
+#else
+        bad = _PyLong_AsByteArray((PyLongObject *)x, (unsigned char *)dst, 8 * (size_t)nw, 1, 0) != 0;
+#endif
+    }
+    Py_DECREF(x);
+    if (bad)
+        PyErr_Clear();
+    return bad ? -1 : 0;
+}
+
+static int parse_row(PyObject *lo, PyObject *o, const Basis *B, uint64_t *key, uint64_t *lead)
+{
+    /* (k, u), and the leading monomial L of a pair row chosen as reducer (lo, else NULL):
+     * key = u words then k; lead = L */
+    if (!PyTuple_Check(o) || PyTuple_GET_SIZE(o) != 2)
         return -1;
     int nw = B->nw;
-    PyObject *ko = PyTuple_GET_ITEM(o, n - 2), *uo = PyTuple_GET_ITEM(o, n - 1);
-    Py_ssize_t k = PyLong_AsSsize_t(ko);
-    if (k < 0 || k >= B->nbasis || !PyBytes_Check(uo) || PyBytes_GET_SIZE(uo) != 8 * nw)
+    Py_ssize_t k = PyLong_AsSsize_t(PyTuple_GET_ITEM(o, 0));
+    if (k < 0 || k >= B->nbasis || parse_words(PyTuple_GET_ITEM(o, 1), key, nw))
         return -1;
-    memcpy(key, PyBytes_AS_STRING(uo), 8 * (size_t)nw);
     key[nw] = (uint64_t)k;
-    if (with_lead) {
-        PyObject *lo = PyTuple_GET_ITEM(o, 0);
-        if (!PyBytes_Check(lo) || PyBytes_GET_SIZE(lo) != 8 * nw)
-            return -1;
-        memcpy(lead, PyBytes_AS_STRING(lo), 8 * (size_t)nw);
-    }
-    return 0;
+    return lo != NULL && parse_words(lo, lead, nw) ? -1 : 0;
 }
 
 PyObject *f4_layout(PyObject *self, PyObject *args)
@@ -245,7 +272,7 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     PyObject *mons_o, *tdeg_o, *coefs_o, *specs_o, *pivots_o;
     if (!PyArg_ParseTuple(args, "iy*iiLO!O!O!y*O!O!", &nw, &guard, &dshift, &ebits, &maxdeg,
                           &PyList_Type, &mons_o, &PyList_Type, &tdeg_o, &PyList_Type, &coefs_o,
-                          &reducers, &PyList_Type, &specs_o, &PyList_Type, &pivots_o))
+                          &reducers, &PyList_Type, &specs_o, &PyDict_Type, &pivots_o))
         return NULL;
     PyObject *result = NULL;
     Basis B = {nw, PyList_GET_SIZE(mons_o), NULL, NULL, NULL};
@@ -255,7 +282,7 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     long long *tdeg = NULL;
     uint64_t *val = NULL, *leads = NULL, *tmp = NULL;
     Py_ssize_t redcap = 0, midxcap = 0, rowoffcap = 0, nmidx = 0;
-    Py_ssize_t nspec = PyList_GET_SIZE(specs_o), npiv0 = PyList_GET_SIZE(pivots_o);
+    Py_ssize_t nspec = PyList_GET_SIZE(specs_o);
     Py_ssize_t nred = reducers.len / (Py_ssize_t)sizeof(int32_t);
     const int32_t *rk = reducers.buf;
     const uint64_t *G = guard.buf;
@@ -292,8 +319,9 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     uint64_t *key = tmp, *x = tmp + nw + 1, *lead = tmp + 2 * (nw + 1);
     int fresh;
     /* the pair rows chosen as reducers, then the other pair rows */
-    for (Py_ssize_t i = 0; i < npiv0; i++) {
-        if (parse_row(PyList_GET_ITEM(pivots_o, i), 1, &B, key, lead))
+    PyObject *lo, *spec;
+    for (Py_ssize_t pos = 0; PyDict_Next(pivots_o, &pos, &lo, &spec);) {
+        if (parse_row(lo, spec, &B, key, lead))
             goto bad;
         Py_ssize_t r = keys_put(&rows, key, &fresh);
         Py_ssize_t xi = keys_put(&mono, lead, &fresh);
@@ -302,7 +330,7 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
         red[xi] = (int32_t)r;
     }
     for (Py_ssize_t i = 0; i < nspec; i++) {
-        if (parse_row(PyList_GET_ITEM(specs_o, i), 0, &B, key, lead))
+        if (parse_row(NULL, PyList_GET_ITEM(specs_o, i), &B, key, lead))
             goto bad;
         Py_ssize_t r = keys_put(&rows, key, &fresh);
         if (r < 0)

@@ -33,7 +33,7 @@ import flint
 
 from .buchberger import TooLong
 from .f4_rows import LAYOUT, CodedRow, Flat, Packed, Plan, compiled
-from .f4_pairs import pair_set
+from .f4_pairs import pair_rows, pair_set
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing, packing
@@ -282,30 +282,9 @@ class F4:
             self._plan = Plan.of_flat(flat, redk + crowk, [1] * K + [0] * len(crow_specs))
         return pivcols, nonpivot, result, recorded
 
-    def _pair_rows(self, sel: list[tuple[int, int, int, int]]):
-        """The rows of the selected pairs: per lcm one row becomes its reducer, the others
-        are to be reduced (``(k, u)`` stands for ``x^u * poly[k]``)."""
-        pivots: dict[int, tuple[int, int]] = {}
-        crows: list[tuple[int, int]] = []
-        seen: set[tuple[int, int]] = set()
-        mons = self.mons
-        for s, L, i, j in sel:
-            for k in ((i,) if j < 0 else (i, j)):
-                spec = (k, L - mons[k][0])
-                if spec in seen:
-                    continue
-                seen.add(spec)
-                if j >= 0 and L not in pivots:
-                    pivots[L] = spec
-                else:
-                    crows.append(spec)
-        return pivots, crows
-
     def _step(self) -> bool:
         """Process the pairs of lowest degree; returns False when 1 is in the ideal."""
-        sel = self.pairs.take()
-        d = sel[0][0]
-        pivots, crows = self._pair_rows(sel)
+        d, pivots, crows = self.pairs.take_rows()
         if not crows:
             return True
         if compiled(self.p):
@@ -404,7 +383,7 @@ def is_groebner(polys: Sequence[Row], packing: Packing, p: int) -> bool:
     eng = F4([], packing, p)
     for ms, cs in polys:
         eng._update(eng._add(ms, cs, True))
-    pivots, crows = eng._pair_rows(eng.pairs.everything())
+    pivots, crows = pair_rows(eng.pairs.everything(), [int(ms[0]) for ms in eng.mons])
     if not crows:
         return True
     if compiled(p):

@@ -91,12 +91,9 @@ class Packed:
         """Symbolic preprocessing and the matrix's rows (see ``kernel/_f4sym.c``):
         ``(pivcols, nonpivot, redk, flat, work)``, or None when a row exceeds the packing."""
         self._sync(mons, coefs)
-        nb = self.nb
         dshift, ebits, maxdeg = self.fields
         out = LAYOUT(self.nw, self.guard, dshift, ebits, maxdeg, self.mons, tdeg, self.coefs,
-                     array("i", reducers), [(k, int(u).to_bytes(nb, "little")) for k, u in specs],
-                     [(int(x).to_bytes(nb, "little"), k, int(u).to_bytes(nb, "little"))
-                      for x, (k, u) in pivots.items()])
+                     array("i", reducers), specs, pivots)
         if out is None:
             return None
         pivcols, nonpivot, redk, off, col, val, work = out
