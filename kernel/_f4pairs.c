@@ -506,6 +506,56 @@ done:
     return result;
 }
 
+/* minimal(active): the active elements whose leading monomial no other active element's divides
+ * (of equal ones, the first), by increasing index (kernel/f4_pairs.PairSet.minimal) */
+static PyObject *Pairs_minimal(Pairs *s, PyObject *active)
+{
+    if (!PyList_Check(active) || PyList_GET_SIZE(active) > s->ne) {
+        PyErr_SetString(PyExc_ValueError, "Pairs.minimal: a list of flags, one per element");
+        return NULL;
+    }
+    Py_ssize_t ne = PyList_GET_SIZE(active);
+    int n = s->n;
+    char *on = malloc((size_t)ne + 1);
+    PyObject *out = on ? PyList_New(0) : PyErr_NoMemory();
+    if (out == NULL) {
+        free(on);
+        return NULL;
+    }
+    for (Py_ssize_t k = 0; k < ne; k++) {
+        int t = PyObject_IsTrue(PyList_GET_ITEM(active, k));
+        if (t < 0) {
+            free(on);
+            Py_DECREF(out);
+            return NULL;
+        }
+        on[k] = (char)t;
+    }
+    for (Py_ssize_t k = 0; k < ne; k++) {
+        if (!on[k])
+            continue;
+        const int32_t *e = s->ex + k * n;
+        int minimal = 1;
+        for (Py_ssize_t j = 0; j < ne && minimal; j++) {
+            if (j == k || !on[j] || !divides(s->ex + j * n, e, n))
+                continue;
+            minimal = j < k ? 0 : memcmp(s->ex + j * n, e, n * sizeof(int32_t)) == 0;  /* a later equal one: k stays */
+        }
+        if (!minimal)
+            continue;
+        PyObject *v = PyLong_FromSsize_t(k);
+        if (v == NULL || PyList_Append(out, v)) {
+            Py_XDECREF(v);
+            free(on);
+            Py_DECREF(out);
+            return NULL;
+        }
+        Py_DECREF(v);
+    }
+    free(on);
+    return out;
+}
+
 /* lowest(): the lowest key (None without pairs) */
 static PyObject *Pairs_lowest(Pairs *s, PyObject *unused)
 {
@@ -567,6 +617,7 @@ static PyMethodDef Pairs_methods[] = {
     {"update", (PyCFunction)Pairs_update, METH_VARARGS, "update(h, active): Gebauer–Möller; False on overflow."},
     {"take", (PyCFunction)Pairs_take, METH_NOARGS, "take(): the pairs of the lowest key, removed."},
     {"take_rows", (PyCFunction)Pairs_take_rows, METH_NOARGS, "take_rows(): those pairs as F4's rows."},
+    {"minimal", (PyCFunction)Pairs_minimal, METH_O, "minimal(active): the minimal active elements."},
     {"lowest", (PyCFunction)Pairs_lowest, METH_NOARGS, "lowest(): the lowest key, or None."},
     {"drop", (PyCFunction)Pairs_drop, METH_O, "drop(d): forget the pairs of key d."},
     {"clear", (PyCFunction)Pairs_clear, METH_NOARGS, "clear(): forget every pair."},

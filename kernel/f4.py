@@ -341,16 +341,8 @@ class F4:
 
     def _reduce(self) -> list[Row]:
         """Tail-reduce the minimal basis with one more back substitution."""
-        g = self.P.guard
         mons = self.mons
-        keep: list[int] = []  # the minimal elements by increasing leading monomial (divisors come first)
-        for k in sorted((k for k in range(len(mons)) if self.active[k]), key=lambda k: mons[k][0]):
-            xg = mons[k][0] | g
-            for j in keep:
-                if (xg - mons[j][0]) & g == g:
-                    break
-            else:
-                keep.append(k)
+        keep = sorted(self.pairs.minimal(self.active), key=lambda k: mons[k][0])  # the minimal elements
         pivots = {mons[k][0]: (k, 0) for k in keep}
         lead = [mons[k][0] for k in keep]
         if compiled(self.p):

@@ -112,6 +112,18 @@ class PairSet:
         active[h] = True
         return True
 
+    def minimal(self, active: list[bool]) -> list[int]:
+        """The active elements whose leading monomial no other active element's divides (of equal
+        ones, the first), by increasing index."""
+        g, leads = self.P.guard, self.leads
+        on = [k for k in range(len(active)) if active[k]]
+        out = []
+        for k in on:
+            xg = leads[k] | g
+            if not any((xg - leads[j]) & g == g and (leads[j] != leads[k] or j < k) for j in on if j != k):
+                out.append(k)
+        return out
+
     def lowest(self) -> int | None:
         """The lowest key (None without pairs)."""
         return min(pr[0] for pr in self.pairs) if self.pairs else None

@@ -28,7 +28,7 @@ def run(pairs, P, leads, sugars, rng):
                 log.append(("take", pairs.lowest(), pairs.take()))
             else:  # as F4's rows
                 log.append(("take_rows", pairs.lowest(), pairs.take_rows()))
-    log.append(("rest", len(pairs), pairs.everything()))
+    log.append(("rest", len(pairs), pairs.everything(), pairs.minimal(active)))
     return log
 
 
@@ -102,8 +102,20 @@ def test_rows_of_pairs(use_compiled):
         pairs.add(P.pack(e), 2)
         active.append(False)
         assert pairs.update(k, active)
+    assert pairs.minimal(active) == [0, 1, 2]
     d, pivots, rows = pairs.take_rows()
     got_pivots = {P.unpack(L): (k, P.unpack(u)) for L, (k, u) in pivots.items()}
     assert d == 3 and len(pairs) == 0
     assert got_pivots == {(2, 1): (0, (0, 1)), (1, 2): (1, (0, 1))}
     assert sorted((k, P.unpack(u)) for k, u in rows) == [(1, (1, 0)), (2, (1, 0))]
+
+
+def test_minimal_elements(use_compiled):
+    """Active x, xy, y^2 and inactive 1: x divides xy (dropped); of two equal leading monomials
+    the first stays."""
+    P = Packing(MonomialOrder.simple("dp", 2), 63)
+    pairs = pair_set(P, True)
+    for e in [(1, 0), (1, 1), (0, 2), (0, 0), (0, 2)]:
+        pairs.add(P.pack(e), sum(e))
+    assert pairs.minimal([True, True, True, False, True]) == [0, 2]
+    assert pairs.minimal([False, True, False, False, True]) == [1, 4]
