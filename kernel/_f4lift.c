@@ -2,14 +2,16 @@
  * of the optional extension _f4rows; kernel/modular.py's Reconstructor does the same in Python
  * for any modulus and falls back to it).
  *
- * ratrec_rows(values, out, m, i, j, den) -> (i, j, den, complete)
+ * ratrec_rows(values, out, m, i, j, den) -> (i, j, den, height)
  *   values: lists of ints in [0, m) (the residues mod m of the basis's coefficients, row by
  *   row); out: lists of the same lengths, whose entries from row i, position j on are set to
  *   (n, d) with n/d = a mod m, |n|, d <= sqrt(m/2) -- exactly Reconstructor.attempt's loop: a
  *   running denominator den makes a coefficient one product when a den mod m (symmetric) is
  *   small, else Wang's reconstruction, and den becomes the lcm (or the new denominator once the
  *   lcm exceeds the bound).  Stops at the first coefficient with no reconstruction: returns
- *   where it stopped and complete false; else the end and complete true.
+ *   where it stopped and height -1; else the end and the height in bits of the whole lift
+ *   (of out: the largest bit length of |n| or d over the entries n/d in lowest terms, as
+ *   python-flint's fmpq.height_bits).
  *
  * agree_rows(out, residues, p, i, j) -> (i, j) or None
  *   The first entry (n, d) of out, in rows 0..i (row i only below position j), with
@@ -75,6 +77,32 @@ static int ratrec64(int64_t a, int64_t m, int64_t bound, int64_t *n, int64_t *d)
     return 1;
 }
 
+static int bit_length(uint64_t x)
+{
+    return x ? 64 - __builtin_clzll(x) : 0;
+}
+
+/* The height in bits of the entries (n, d) of out (all fit 64 bits: made by ratrec_rows). */
+static int height(PyObject *out)
+{
+    int h = 0;
+    for (Py_ssize_t i = 0; i < PyList_GET_SIZE(out); i++) {
+        PyObject *row = PyList_GET_ITEM(out, i);
+        for (Py_ssize_t j = 0; j < PyList_GET_SIZE(row); j++) {
+            PyObject *t = PyList_GET_ITEM(row, j);
+            long long n = PyLong_AsLongLong(PyTuple_GET_ITEM(t, 0)), d = PyLong_AsLongLong(PyTuple_GET_ITEM(t, 1));
+            if (PyErr_Occurred())
+                return -1;
+            int64_t g = gcd_i64(n, d);
+            uint64_t an = (uint64_t)(n < 0 ? -n : n) / (uint64_t)g, ad = (uint64_t)d / (uint64_t)g;
+            int b = bit_length(an > ad ? an : ad);
+            if (b > h)
+                h = b;
+        }
+    }
+    return h;
+}
+
 static PyObject *pair(int64_t n, int64_t d)
 {
     PyObject *t = PyTuple_New(2);
@@ -127,7 +155,7 @@ PyObject *f4_ratrec_rows(PyObject *self, PyObject *args)
                 d = den;
             } else {
                 if (!ratrec64(a, m, bound, &n, &d))
-                    return Py_BuildValue("(nnLO)", i, j, den, Py_False);
+                    return Py_BuildValue("(nnLi)", i, j, den, -1);
                 int64_t l = den / gcd_i64(den, d) * d;  /* den, d <= bound < 2^31 */
                 den = l > bound ? d : l;
             }
@@ -137,7 +165,8 @@ PyObject *f4_ratrec_rows(PyObject *self, PyObject *args)
             PyList_SetItem(row, j, t);  /* steals t */
         }
     }
-    return Py_BuildValue("(nnLO)", i, j, den, Py_True);
+    int h = height(out);
+    return h < 0 ? NULL : Py_BuildValue("(nnLi)", i, j, den, h);
 }
 
 PyObject *f4_agree_rows(PyObject *self, PyObject *args)

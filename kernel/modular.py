@@ -157,6 +157,7 @@ class Reconstructor:
         self.den = 1
         self.lift: list[list[Any]] = []  # the last complete lift, from a modulus of ``bits`` bits
         self.bits = 0
+        self.height: int | None = None  # the lift's height in bits, when the compiled lift gave it
 
     def check(self, residues: list[list[int]], p: int) -> bool:
         """Rewind to the first lifted coefficient that disagrees with the residues mod p;
@@ -183,8 +184,8 @@ class Reconstructor:
 
     def attempt(self, values: list[list[int]], m: int) -> list[list[Any]] | None:
         if RATREC_ROWS is not None and m < COMPILED_MODULUS:  # the same loop in C
-            self.i, self.j, self.den, complete = RATREC_ROWS(values, self.out, m, self.i, self.j, self.den)
-            return self._complete(m) if complete else None
+            self.i, self.j, self.den, height = RATREC_ROWS(values, self.out, m, self.i, self.j, self.den)
+            return self._complete(m, height) if height >= 0 else None
         bound = isqrt(m // 2)
         half = m // 2
         i, j, den, out = self.i, self.j, self.den, self.out
@@ -210,19 +211,23 @@ class Reconstructor:
         self.i, self.j, self.den = i, j, den
         return self._complete(m)
 
-    def _complete(self, m: int) -> list[list[Any]]:
-        """The complete lift as rationals, from a modulus ``m``."""
+    def _complete(self, m: int, height: int | None = None) -> list[list[Any]]:
+        """The complete lift as rationals, from a modulus ``m`` (``height``: its height in bits,
+        if known)."""
         out = self.out
         fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
         self.lift = [[fmpq(n) if d == 1 else fmpq(n, d) for n, d in row] for row in out]
         self.bits = m.bit_length()
+        self.height = height
         return self.lift
 
     def confident(self) -> bool:
         """Whether the last complete lift's coefficients lie far below the bound, where a wrong
         lift is unlikely: a residue mod m is n/d with |n|, d < 2^h for fewer than 2^(2h+1)
         residues, here at most m/32 (and a wrong lift of many coefficients is far rarer)."""
-        height = max([c.height_bits() for row in self.lift for c in row], default=0)
+        height = self.height
+        if height is None:
+            height = max([c.height_bits() for row in self.lift for c in row], default=0)
         return 2 * height + 6 < self.bits
 
 
@@ -319,10 +324,12 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
             if any(cs[0] % p == 0 for cs in coefs):
                 continue
             try:
-                if candidate is not None and cheap_full is None:
-                    cheap_full = trace.full_cost() <= FULL_REPLAY_COST
-                res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p,
-                                    candidate is not None and (cheap_full or rec.confident()))
+                want_full = candidate is not None and rec.confident()
+                if candidate is not None and not want_full:
+                    if cheap_full is None:
+                        cheap_full = trace.full_cost() <= FULL_REPLAY_COST
+                    want_full = cheap_full
+                res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p, want_full)
             except TraceMismatch:
                 misses += 1
                 if misses > good + 2:
