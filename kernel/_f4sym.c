@@ -549,3 +549,75 @@ PyObject *f4_words(PyObject *self, PyObject *args)
     Py_DECREF(fast);
     return out;
 }
+
+/* exponents(monomials, eshifts, ebits) -> {monomial: exponent tuple}: the exponents of packed
+ * monomials (nonnegative integers) whose exponent fields lie in the lowest 64 bits (else
+ * ValueError), each unpacked once: field f of ebits bits at bit eshifts[f] (kernel/monomials.py's
+ * Packing.unpack_all does the same in Python). */
+PyObject *f4_exponents(PyObject *self, PyObject *args)
+{
+    PyObject *seq, *shifts_o;
+    int ebits;
+    if (!PyArg_ParseTuple(args, "OO!i", &seq, &PyTuple_Type, &shifts_o, &ebits))
+        return NULL;
+    Py_ssize_t n = PyTuple_GET_SIZE(shifts_o);
+    if (ebits < 1 || ebits > 62 || n > 64) {
+        PyErr_SetString(PyExc_ValueError, "exponents: bad packing");
+        return NULL;
+    }
+    int shift[64], top = 0;
+    for (Py_ssize_t f = 0; f < n; f++) {
+        long v = PyLong_AsLong(PyTuple_GET_ITEM(shifts_o, f));
+        if (v < 0 || v > (1L << 20)) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_ValueError, "exponents: bad packing");
+            return NULL;
+        }
+        shift[f] = (int)v;
+        if (shift[f] + ebits > top)
+            top = shift[f] + ebits;
+    }
+    if (top > 64) {
+        PyErr_SetString(PyExc_ValueError, "exponents: the exponent fields exceed 64 bits");
+        return NULL;
+    }
+    PyObject *fast = PySequence_Fast(seq, "exponents: a sequence of ints");
+    if (fast == NULL)
+        return NULL;
+    PyObject *out = PyDict_New();
+    if (out == NULL) {
+        Py_DECREF(fast);
+        return NULL;
+    }
+    for (Py_ssize_t i = 0; i < PySequence_Fast_GET_SIZE(fast); i++) {
+        PyObject *m = PySequence_Fast_GET_ITEM(fast, i);
+        int known = PyDict_Contains(out, m);
+        if (known > 0)
+            continue;
+        PyObject *t = NULL, *x = known == 0 ? PyNumber_Index(m) : NULL;
+        if (x != NULL) {
+            uint64_t w = PyLong_AsUnsignedLongLongMask(x);  /* the lowest 64 bits */
+            t = PyErr_Occurred() ? NULL : PyTuple_New(n);
+            for (Py_ssize_t f = 0; t && f < n; f++) {
+                PyObject *e = PyLong_FromUnsignedLongLong(field(&w, shift[f], ebits, 1));
+                if (e == NULL)
+                    Py_CLEAR(t);
+                else
+                    PyTuple_SET_ITEM(t, f, e);
+            }
+        } else if (known == 0) {
+            PyErr_Clear();
+            PyErr_SetString(PyExc_TypeError, "exponents: a sequence of nonnegative ints");
+        }
+        Py_XDECREF(x);
+        if (t == NULL || PyDict_SetItem(out, m, t)) {
+            Py_XDECREF(t);
+            Py_DECREF(out);
+            Py_DECREF(fast);
+            return NULL;
+        }
+        Py_DECREF(t);
+    }
+    Py_DECREF(fast);
+    return out;
+}

@@ -24,6 +24,11 @@ from typing import Sequence
 
 from .order import Exp, MonomialOrder
 
+try:
+    from ._f4rows import exponents as EXPONENTS
+except ImportError:  # no compiler at install (or an older extension): unpacked in Python
+    EXPONENTS = None
+
 
 def nonnegative_matrix(order: MonomialOrder) -> list[list[int]]:
     """A nonnegative ``n x n`` integer matrix of full rank defining the same (global) ordering."""
@@ -87,6 +92,8 @@ class Packing:
         self.wshift = shifts[0]
         self.guard = sum(1 << (s + w - 1) for s, w in zip(shifts, widths))
         self.eshifts = shifts[n + 1:]
+        self._eshifts = tuple(self.eshifts)
+        self._compiled_unpack = EXPONENTS is not None and n * ebits <= 64  # the exponent fields in 64 bits
         self.dshift = shifts[n]
         self.emask = (1 << ebits) - 1
         # the exponent fields are the lowest ones: their mask, guard bits and field width
@@ -112,8 +119,11 @@ class Packing:
         return tuple([(m >> s) & mask for s in self.eshifts])
 
     def unpack_all(self, monomials) -> dict[int, Exp]:
-        """The exponents of packed monomials, by monomial (each unpacked once): the exponent
-        fields (the lowest bits) cut out first, then one field of every monomial at a time."""
+        """The exponents of packed monomials, by monomial (each unpacked once): in C when the
+        exponent fields fit the lowest 64 bits, else the exponent fields (the lowest bits) cut
+        out first, then one field of every monomial at a time."""
+        if self._compiled_unpack:
+            return EXPONENTS(monomials, self._eshifts, self.ebits)
         mask, eall = self.emask, self.eall
         ms = list(set(monomials))
         low = [m & eall for m in ms]

@@ -5,7 +5,7 @@ import random
 
 import pytest
 
-from mech.kernel import GF, Block, f4_rows
+from mech.kernel import GF, Block, MonomialOrder, f4_rows
 from mech.kernel.f4 import F4, PackingOverflow, is_groebner, pack_polys
 from mech.kernel.f4_rows import Packed
 from mech.kernel.f4_trace import replay
@@ -126,3 +126,18 @@ def test_a_trace_too_large_to_keep_lets_its_full_layouts_go(monkeypatch):
     fast.run()
     assert not fast.trace.full
     assert all(st.full is None and "full" not in st.plans for st in fast.trace.steps)
+
+
+@pytest.mark.parametrize("nvars, maxdeg", [(3, 63), (6, 63), (7, 255), (2, 100000), (10, 63)])
+@pytest.mark.parametrize("kind", ["dp", "lp"])
+def test_exponents_unpacked_in_c_as_in_python(nvars, maxdeg, kind):
+    """Packing.unpack_all: the compiled unpacking (exponent fields within 64 bits; ten variables
+    of 7 bits exceed them and stay in Python) gives every monomial's exponents as Python does."""
+    rng = random.Random(nvars * maxdeg)
+    Pk = Packing(MonomialOrder.simple(kind, nvars), maxdeg)
+    exps = [tuple(rng.randrange(maxdeg // nvars + 1) for _ in range(nvars)) for _ in range(200)]
+    mons = [Pk.pack(e) for e in exps] * 2
+    got = Pk.unpack_all(iter(mons))
+    assert Pk._compiled_unpack == (nvars * Pk.ebits <= 64)
+    Pk._compiled_unpack = False
+    assert got == Pk.unpack_all(iter(mons)) == {Pk.pack(e): e for e in exps}
