@@ -70,6 +70,14 @@ static const uint64_t *key_at(const Keys *t, Py_ssize_t i)
     return t->keys + (size_t)i * t->kw;
 }
 
+static int same_words(const uint64_t *a, const uint64_t *b, int kw)
+{
+    for (int i = 0; i < kw; i++)
+        if (a[i] != b[i])
+            return 0;
+    return 1;
+}
+
 /* The number of key, inserted when absent (*fresh then 1); -1 when out of memory. */
 static Py_ssize_t keys_put(Keys *t, const uint64_t *key, int *fresh)
 {
@@ -79,7 +87,7 @@ static Py_ssize_t keys_put(Keys *t, const uint64_t *key, int *fresh)
         int32_t i = t->slot[h];
         if (i < 0)
             break;
-        if (!memcmp(key_at(t, i), key, (size_t)kw * sizeof(uint64_t))) {
+        if (same_words(key_at(t, i), key, kw)) {
             *fresh = 0;
             return i;
         }
@@ -402,7 +410,8 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
         goto nomem;
     for (Py_ssize_t i = 0; i < N; i++) {
         Py_ssize_t xi = order[i];
-        PyObject *v = _PyLong_FromByteArray((const unsigned char *)key_at(&mono, xi), 8 * (size_t)nw, 1, 0);
+        PyObject *v = nw == 1 ? PyLong_FromUnsignedLongLong(key_at(&mono, xi)[0])
+                              : _PyLong_FromByteArray((const unsigned char *)key_at(&mono, xi), 8 * (size_t)nw, 1, 0);
         if (!v) {
             free(pivrow);
             goto fail;
