@@ -274,7 +274,8 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
         exps = P.unpack_all(chain.from_iterable(shape))
         basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
         replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
-        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed):
+        packed = (P.guard, list(zip(shapes, coefs)), list(zip(shape, G)))
+        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed, packed):
             return basis
     raise ModularFailure("modular F4: no verified basis after 3 attempts (use another engine)")
 
@@ -356,7 +357,7 @@ def _replay(trace: Trace, polys: list[list[int]], p: int, full: bool) -> tuple[l
 
 
 def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool = False,
-                 replayed: Callable[[int], bool | None] | None = None) -> bool:
+                 replayed: Callable[[int], bool | None] | None = None, packed: tuple | None = None) -> bool:
     """Check a lifted reduced basis (see the module docstring).
 
     ``basis``: dicts with the leading exponent first (as :func:`f4_qq` builds them).
@@ -364,11 +365,15 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
     checked exactly over QQ (``exact``), or else modulo one fresh prime ``q``: by
     ``replayed(q)`` when given (True: ``G mod q`` is the reduced basis of the ideal mod
     ``q``; None: ``q`` cannot tell), else (or on None) by one F4 matrix of all S-pairs left
-    by the Gebauer–Möller criteria."""
+    by the Gebauer–Möller criteria.  ``packed``: ``(guard, generators, elements)``, the
+    generators ``ints`` and the basis as (packed monomials decreasing, coefficients) of one
+    packing with these guard bits; the generators are then top-reduced on packed monomials
+    (:func:`_top_reduces_packed`)."""
     if len(basis) == 1 and len(basis[0]) == 1 and not any(next(iter(basis[0]))):
         return True  # the unit ideal: nothing to check beyond the lift
-    red = ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
+    red = None
     if exact:
+        red = ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
         if not red.is_groebner():
             return False
     else:
@@ -387,7 +392,48 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
             if not _is_groebner_mod(rows, ring.order, q):
                 return False
             checked += 1
-    return all(red.reduces_to_zero(f) for f in ints)
+    for k, f in enumerate(ints):
+        reduced = None if packed is None else _top_reduces_packed(packed[1][k], packed[2], packed[0])
+        if reduced is None:  # not packed, or a product left the packing: in flint
+            red = red or ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
+            reduced = red.reduces_to_zero(f)
+        if not reduced:
+            return False
+    return True
+
+
+def _top_reduces_packed(f: tuple[list, list], elements: list[tuple[list, list]], guard: int) -> bool | None:
+    """Whether ``f`` top-reduces to 0 over QQ by the ``elements`` (all as packed monomials,
+    decreasing, and their rational or integer coefficients), exactly; None once a product
+    ``x^u * m`` sets a guard bit (a field past its width: packed arithmetic would no longer be
+    exact; the caller then reduces in flint).  Packed monomials compare as the ordering does,
+    and ``a`` divides ``b`` iff ``(b | guard) - a`` keeps every guard bit."""
+    terms = dict(zip(*f))
+    leads = [ms[0] for ms, _ in elements]
+    while terms:
+        m = max(terms)
+        mg = m | guard
+        for k, lm in enumerate(leads):
+            if (mg - lm) & guard == guard:
+                break
+        else:
+            return False
+        ms, cs = elements[k]
+        c = terms.pop(m)
+        if cs[0] != 1:
+            c = c / cs[0]
+        u = m - lm
+        get = terms.get
+        for x, a in zip(ms[1:], cs[1:]):
+            y = u + x
+            if y & guard:
+                return None
+            v = get(y, 0) - c * a
+            if v:
+                terms[y] = v
+            else:
+                terms.pop(y, None)
+    return True
 
 
 def _replayed_basis_agrees(trace: Trace, coefs: list[list[int]], G: list[list[Any]], q: int) -> bool | None:
