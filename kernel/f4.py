@@ -310,7 +310,7 @@ class F4:
                         st.let_go()
             self.trace.steps.append(step)
         for slots, vals in new:
-            k = self._add([nonpivot[s] for s in slots], vals, True, d)
+            k = self._add(list(map(nonpivot.__getitem__, slots)), vals, True, d)
             if self.mons[k][0] == 0:
                 return False
             self._update(k)
@@ -417,8 +417,9 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
     exps = P.unpack_all(chain.from_iterable(ms for ms, _ in basis))
-    one = flint.nmod(1, p)  # one * c: an nmod, made faster than by nmod(c, p)
-    return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in basis]
+    one = flint.nmod(1, p).__mul__  # one * c: an nmod, made faster than by nmod(c, p)
+    exp = exps.__getitem__
+    return [dict(zip(map(exp, ms), map(one, cs))) for ms, cs in basis]
 
 
 def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
@@ -449,8 +450,9 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
     exps = P.unpack_all(chain.from_iterable(ms for ms, _ in out))
-    one = flint.nmod(1, p)
-    return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in out]
+    one = flint.nmod(1, p).__mul__
+    exp = exps.__getitem__
+    return [dict(zip(map(exp, ms), map(one, cs))) for ms, cs in out]
 
 
 def _coded_rows(off, col, redk: list[int], crowk: list[int]) -> tuple[list[CodedRow], list[CodedRow]]:

@@ -84,7 +84,10 @@ class Packed:
                 self.mons.append(WORDS(mons[k], nw))
             else:
                 self.mons.append(b"".join([int(x).to_bytes(nb, "little") for x in mons[k]]))
-            self.coefs.append(array("Q", map(int, coefs[k])).tobytes())
+            try:
+                self.coefs.append(array("Q", coefs[k]).tobytes())
+            except TypeError:  # coefficients of another type (python-flint's nmod)
+                self.coefs.append(array("Q", map(int, coefs[k])).tobytes())
 
     def layout(self, mons: list[list[int]], coefs: list[list[int]], tdeg: list[int], reducers: list[int],
                specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]]):

@@ -272,7 +272,8 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
             continue
         shape, G, trace, certified = result
         exps = P.unpack_all(chain.from_iterable(shape))
-        basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
+        exp = exps.__getitem__
+        basis = [dict(zip(map(exp, ms), cs)) for ms, cs in zip(shape, G)]
         replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
         packed = (P.guard, list(zip(shapes, coefs)), list(zip(shape, G)))
         if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed, packed):
