@@ -13,6 +13,10 @@
  *   (of out: the largest bit length of |n| or d over the entries n/d in lowest terms, as
  *   python-flint's fmpq.height_bits).
  *
+ * fractions(out, fmpq, cache) -> the rows of out as fractions: fmpq(n) for d = 1 (taken from the
+ *   dict cache, where integers of fewer than 16 bits are kept for the next lifts), else
+ *   fmpq(n, d) (fmpq: python-flint's type; Reconstructor's complete lift).
+ *
  * agree_rows(out, residues, p, i, j) -> (i, j) or None
  *   The first entry (n, d) of out, in rows 0..i (row i only below position j), with
  *   n != r d mod p or p | d (r its residue mod p), as Reconstructor.check; None if all agree.
@@ -209,4 +213,58 @@ PyObject *f4_agree_rows(PyObject *self, PyObject *args)
         }
     }
     Py_RETURN_NONE;
+}
+
+PyObject *f4_fractions(PyObject *self, PyObject *args)
+{
+    PyObject *out, *fmpq, *cache;
+    if (!PyArg_ParseTuple(args, "O!OO!", &PyList_Type, &out, &fmpq, &PyDict_Type, &cache))
+        return NULL;
+    Py_ssize_t nrows = PyList_GET_SIZE(out);
+    PyObject *lift = PyList_New(nrows);
+    for (Py_ssize_t i = 0; lift && i < nrows; i++) {
+        PyObject *row = PyList_GET_ITEM(out, i);
+        if (!PyList_Check(row)) {
+            PyErr_SetString(PyExc_ValueError, "fractions: rows of (n, d)");
+            Py_CLEAR(lift);
+            break;
+        }
+        PyObject *got = PyList_New(PyList_GET_SIZE(row));
+        PyList_SET_ITEM(lift, i, got);
+        for (Py_ssize_t j = 0; got && j < PyList_GET_SIZE(row); j++) {
+            PyObject *t = PyList_GET_ITEM(row, j), *q = NULL;
+            if (!PyTuple_Check(t) || PyTuple_GET_SIZE(t) != 2) {
+                PyErr_SetString(PyExc_ValueError, "fractions: rows of (n, d)");
+            } else {
+                PyObject *n = PyTuple_GET_ITEM(t, 0), *d = PyTuple_GET_ITEM(t, 1);
+                int overflow;
+                long long dv = PyLong_AsLongLongAndOverflow(d, &overflow);
+                long long nv = PyLong_AsLongLongAndOverflow(n, &overflow);
+                if (PyErr_Occurred()) {
+                    q = NULL;
+                } else if (dv == 1 && !overflow && nv > -32768 && nv < 32768) {
+                    q = PyDict_GetItemWithError(cache, n);  /* borrowed */
+                    if (q != NULL) {
+                        Py_INCREF(q);
+                    } else if (!PyErr_Occurred()) {
+                        q = PyObject_CallOneArg(fmpq, n);
+                        if (q && PyDict_SetItem(cache, n, q))
+                            Py_CLEAR(q);
+                    }
+                } else if (dv == 1 && !overflow) {
+                    q = PyObject_CallOneArg(fmpq, n);
+                } else {
+                    q = PyObject_CallFunctionObjArgs(fmpq, n, d, NULL);
+                }
+            }
+            if (q == NULL) {
+                Py_CLEAR(lift);
+                break;
+            }
+            PyList_SET_ITEM(got, j, q);
+        }
+        if (!got)
+            Py_CLEAR(lift);
+    }
+    return lift;
 }

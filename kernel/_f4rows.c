@@ -616,6 +616,7 @@ PyObject *f4_exponents(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *fglm_step(PyObject *self, PyObject *args);  /* kernel/_fglm.c */
 PyObject *f4_ratrec_rows(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
 PyObject *f4_agree_rows(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
+PyObject *f4_fractions(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
 extern PyTypeObject PairsType;  /* kernel/_f4pairs.c */
 
 static PyMethodDef methods[] = {
@@ -628,6 +629,7 @@ static PyMethodDef methods[] = {
     {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p (see kernel/_fglm.c)."},
     {"ratrec_rows", f4_ratrec_rows, METH_VARARGS, "Rational reconstruction of a lift's rows (see kernel/_f4lift.c)."},
     {"agree_rows", f4_agree_rows, METH_VARARGS, "A lift's rows against residues modulo p (see kernel/_f4lift.c)."},
+    {"fractions", f4_fractions, METH_VARARGS, "A lift's rows as python-flint fractions (see kernel/_f4lift.c)."},
     {NULL, NULL, 0, NULL}
 };
 

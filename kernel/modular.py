@@ -62,9 +62,13 @@ from .monomials import Packing, nonnegative_matrix, packing
 from .poly import support_mask
 
 try:
-    from ._f4rows import agree_rows as AGREE_ROWS, ratrec_rows as RATREC_ROWS
+    from ._f4rows import agree_rows as AGREE_ROWS, fractions as FRACTIONS, ratrec_rows as RATREC_ROWS
 except ImportError:  # no compiler at install (or an older extension): the same loops in Python
-    AGREE_ROWS = RATREC_ROWS = None
+    AGREE_ROWS = FRACTIONS = RATREC_ROWS = None
+
+_SMALL_INTEGERS: dict[int, Any] = {}
+"""Integers below 2^15 in absolute value as python-flint fractions, made once (immutable, shared by
+the lifts: most coefficients of small systems' bases are such integers)."""
 
 PRIME_RANGE = (1 << 27, 1 << 28)
 FULL_REPLAY_COST = 3.0
@@ -214,9 +218,11 @@ class Reconstructor:
     def _complete(self, m: int, height: int | None = None) -> list[list[Any]]:
         """The complete lift as rationals, from a modulus ``m`` (``height``: its height in bits,
         if known)."""
-        out = self.out
-        fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
-        self.lift = [[fmpq(n) if d == 1 else fmpq(n, d) for n, d in row] for row in out]
+        if FRACTIONS is not None:
+            self.lift = FRACTIONS(self.out, flint.fmpq, _SMALL_INTEGERS)
+        else:
+            fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
+            self.lift = [[fmpq(n) if d == 1 else fmpq(n, d) for n, d in row] for row in self.out]
         self.bits = m.bit_length()
         self.height = height
         return self.lift

@@ -3,6 +3,7 @@ loops (kernel/_f4lift.c) give the same coefficients, resume points, heights and 
 pure-Python ones."""
 import random
 
+import flint
 import pytest
 
 from mech.kernel import modular
@@ -27,6 +28,7 @@ def lift(rows, m, use_compiled, monkeypatch):
     if not use_compiled:
         monkeypatch.setattr(modular, "RATREC_ROWS", None)
         monkeypatch.setattr(modular, "AGREE_ROWS", None)
+        monkeypatch.setattr(modular, "FRACTIONS", None)
     rec = Reconstructor([len(r) for r in rows])
     got = rec.attempt(rows, m)
     monkeypatch.undo()
@@ -68,3 +70,14 @@ def test_compiled_and_python_checks_agree(monkeypatch):
         assert disagrees == theirs.check(mod_p, p)
         monkeypatch.undo()
         assert (ours.i, ours.j, ours.den) == (theirs.i, theirs.j, theirs.den)
+
+
+@compiled
+def test_fractions_of_any_size():
+    """The compiled lift's fractions (small integers shared through the cache)."""
+    rows = [[(2**70, 1), (3, 1), (-5, 7), (2**80 + 1, 3**50), (-32767, 1), (32768, 1)], [(3, 1)]]
+    cache = {}
+    got = modular.FRACTIONS(rows, flint.fmpq, cache)
+    assert got == [[flint.fmpq(n, d) for n, d in row] for row in rows]
+    assert all(type(q) is flint.fmpq for row in got for q in row)
+    assert sorted(cache) == [-32767, 3] and got[1][0] is got[0][1]
