@@ -22,7 +22,7 @@ typedef struct {
     int n, ebits, by_weight;
     int64_t maxdeg;
     PyObject *units;       /* tuple of Python ints */
-    uint64_t *units64;     /* the same as 64-bit words, when every unit fits one (else NULL) */
+    unsigned __int128 *units128;  /* the same as 128-bit words, when every unit fits one (else NULL) */
     int64_t *w0;           /* n */
     int32_t *ex;           /* element exponents, n per element */
     int64_t *sugar, *deg;  /* per element */
@@ -76,7 +76,7 @@ static int reserve_pairs(Pairs *s, Py_ssize_t need)
 static void Pairs_dealloc(Pairs *s)
 {
     Py_XDECREF(s->units);
-    free(s->units64);
+    free(s->units128);
     free(s->w0); free(s->ex); free(s->sugar); free(s->deg);
     free(s->pex); free(s->key); free(s->pi); free(s->pj);
     free(s->cand); free(s->cidx); free(s->ccop);
@@ -101,23 +101,25 @@ static int Pairs_init(Pairs *s, PyObject *args, PyObject *kw)
     s->maxdeg = maxdeg;
     Py_INCREF(units);
     Py_XSETREF(s->units, units);
-    free(s->units64);
-    s->units64 = malloc((size_t)n * sizeof(uint64_t));
-    if (s->units64 == NULL) {
+    free(s->units128);
+    s->units128 = malloc((size_t)n * sizeof(unsigned __int128));
+    if (s->units128 == NULL) {
         PyErr_NoMemory();
         return -1;
     }
     for (int f = 0; f < n; f++) {
-        int overflow;
-        unsigned long long u = PyLong_AsUnsignedLongLong(PyTuple_GET_ITEM(units, f));
-        overflow = u == (unsigned long long)-1 && PyErr_Occurred();
-        if (overflow) {
+        PyObject *u = PyTuple_GET_ITEM(units, f);
+        unsigned char b[16];
+        if (!PyLong_Check(u) || _PyLong_AsByteArray((PyLongObject *)u, b, 16, 1, 0)) {
             PyErr_Clear();
-            free(s->units64);
-            s->units64 = NULL;
+            free(s->units128);
+            s->units128 = NULL;
             break;
         }
-        s->units64[f] = u;
+        unsigned __int128 v = 0;
+        for (int i = 15; i >= 0; i--)
+            v = (v << 8) | b[i];
+        s->units128[f] = v;
     }
     if (grow((void **)&s->w0, n, sizeof(int64_t)))
         return -1;
@@ -379,19 +381,25 @@ static PyObject *Pairs_update(Pairs *s, PyObject *args)
     Py_RETURN_TRUE;
 }
 
-/* the packed monomial of exponents e - b (b NULL: of e): the sum of its e_f units[f], in 64-bit
+/* the packed monomial of exponents e - b (b NULL: of e): the sum of its e_f units[f], in 128-bit
  * words when they hold it, else in Python ints */
 static PyObject *packed(Pairs *s, const int32_t *e, const int32_t *b)
 {
-    if (s->units64 != NULL) {
-        uint64_t acc = 0;
+    if (s->units128 != NULL) {
+        unsigned __int128 acc = 0;
         int over = 0;
         for (int f = 0; f < s->n && !over; f++) {
-            uint64_t x = (uint64_t)(b ? e[f] - b[f] : e[f]), t;
-            over = __builtin_mul_overflow(x, s->units64[f], &t) || __builtin_add_overflow(acc, t, &acc);
+            unsigned __int128 x = (uint64_t)(b ? e[f] - b[f] : e[f]), t;
+            over = __builtin_mul_overflow(x, s->units128[f], &t) || __builtin_add_overflow(acc, t, &acc);
         }
-        if (!over)
-            return PyLong_FromUnsignedLongLong(acc);
+        if (!over) {
+            if ((acc >> 64) == 0)
+                return PyLong_FromUnsignedLongLong((uint64_t)acc);
+            unsigned char bytes[16];
+            for (int i = 0; i < 16; i++)
+                bytes[i] = (unsigned char)(acc >> (8 * i));
+            return _PyLong_FromByteArray(bytes, 16, 1, 0);
+        }
     }
     PyObject *acc = PyLong_FromLong(0);
     for (int f = 0; f < s->n && acc; f++) {
