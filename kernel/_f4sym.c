@@ -1,22 +1,25 @@
 /* F4's symbolic preprocessing and matrix layout, compiled (part of the optional extension
  * _f4rows; kernel/f4.py's F4._layout and F4._matrix_compiled do the same in Python).
  *
- * layout(nw, guard, dshift, ebits, maxdeg, mons, tdeg, coefs, reducers, specs, pivots)
- *   -> (pivcols, nonpivot, redk, off, col, val, work), or None when a row's degree exceeds maxdeg
+ * layout(nw, guard, dshift, ebits, maxdeg, mons, tdeg, coefs, active, specs, pivots)
+ *   -> (pivcols, nonpivot, ids, off, col, val, rk, rstart, work), or None when a row's degree
+ *   exceeds maxdeg
  *
  * Monomials are packed as in kernel/monomials.py, here as nw little-endian 64-bit words
  * (``int.to_bytes(8 nw, "little")``); guard holds the guard bits, the total degree is the
  * field of ebits bits at bit dshift.  mons[k] and coefs[k] (bytes): the terms of basis element
- * k, decreasing, and their coefficients (uint64); tdeg[k] its total degree; reducers (int32):
- * the basis elements to search, in order, for a divisor of a monomial; specs: the pair rows
- * (k, u) (u: packed cofactor, bytes or a Python int); pivots: a dict {L: (k, u)} of the pair
- * rows chosen as reducers of their leading monomial L (in its order).  Every monomial of a row x^u * poly[k] that is not a pivot yet
- * gets as reducer the first element of reducers whose leading monomial divides it (its row
- * joins the matrix), else it is a non-pivot column.
- * Returns the pivot columns and the non-pivot monomials (Python ints, increasing), redk (the
- * basis element of each reducer by pivot id) and the rows flat as kernel/f4_rows.Flat holds
- * them (bytes: off int64, col int32, val uint64): the reducers by pivot id without their
- * leading term, then the pair rows in the order given; work: the number of terms of the
+ * k, decreasing, and their coefficients (uint64); tdeg[k] its total degree; active[k]: whether
+ * element k serves as a reducer: the reducer of a monomial is the first active element, by
+ * increasing number of terms (then by index), whose leading monomial divides it; specs: the
+ * pair rows (k, u) (u: packed cofactor, bytes or a Python int); pivots: a dict {L: (k, u)} of
+ * the pair rows chosen as reducers of their leading monomial L (in its order).  Every
+ * monomial of a row x^u * poly[k] that is not a pivot yet gets its reducer's row (which joins
+ * the matrix), else it is a non-pivot column.
+ * Returns the pivot columns and the non-pivot monomials (Python ints, increasing) and the rows
+ * flat as kernel/f4_rows.Flat holds them (bytes: ids int32, the pivot ids 0..K-1 of the
+ * reducers; off int64, col int32, val uint64: the reducers by pivot id without their leading
+ * term, then the pair rows in the order given), per row its basis element rk and first term
+ * rstart (int32: 1 for a reducer, 0 for a pair row); work: the number of terms of the
  * distinct rows.
  */
 #define PY_SSIZE_T_CLEAN
@@ -276,36 +279,39 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
 {
     int nw, dshift, ebits;
     long long maxdeg;
-    Py_buffer guard, reducers;
-    PyObject *mons_o, *tdeg_o, *coefs_o, *specs_o, *pivots_o;
-    if (!PyArg_ParseTuple(args, "iy*iiLO!O!O!y*O!O!", &nw, &guard, &dshift, &ebits, &maxdeg,
+    Py_buffer guard;
+    PyObject *mons_o, *tdeg_o, *coefs_o, *active_o, *specs_o, *pivots_o;
+    if (!PyArg_ParseTuple(args, "iy*iiLO!O!O!O!O!O!", &nw, &guard, &dshift, &ebits, &maxdeg,
                           &PyList_Type, &mons_o, &PyList_Type, &tdeg_o, &PyList_Type, &coefs_o,
-                          &reducers, &PyList_Type, &specs_o, &PyDict_Type, &pivots_o))
+                          &PyList_Type, &active_o, &PyList_Type, &specs_o, &PyDict_Type, &pivots_o))
         return NULL;
     PyObject *result = NULL;
     Basis B = {nw, PyList_GET_SIZE(mons_o), NULL, NULL, NULL};
     Keys rows = {0}, mono = {0};
     int32_t *red = NULL, *midx = NULL, *crow = NULL, *order = NULL, *code = NULL, *col = NULL;
+    int32_t *rowk = NULL, *rowstart = NULL;
     int64_t *rowoff = NULL, *off = NULL;
     long long *tdeg = NULL;
     uint64_t *val = NULL, *leads = NULL, *tmp = NULL;
     Py_ssize_t redcap = 0, midxcap = 0, rowoffcap = 0, nmidx = 0;
     Py_ssize_t nspec = PyList_GET_SIZE(specs_o);
-    Py_ssize_t nred = reducers.len / (Py_ssize_t)sizeof(int32_t);
-    const int32_t *rk = reducers.buf;
+    Py_ssize_t nred = 0;
+    int32_t *rk = NULL;
     const uint64_t *G = guard.buf;
 
     if (nw < 1 || nw > 64 || guard.len != 8 * nw || ebits < 1 || ebits > 62 || dshift < 0 || dshift + ebits > 64 * nw
-        || PyList_GET_SIZE(tdeg_o) != B.nbasis || PyList_GET_SIZE(coefs_o) != B.nbasis)
+        || PyList_GET_SIZE(tdeg_o) != B.nbasis || PyList_GET_SIZE(coefs_o) != B.nbasis
+        || PyList_GET_SIZE(active_o) != B.nbasis)
         goto bad;
     B.mons = malloc((size_t)(B.nbasis + 1) * sizeof(uint64_t *));
     B.coefs = malloc((size_t)(B.nbasis + 1) * sizeof(uint64_t *));
     B.len = malloc((size_t)(B.nbasis + 1) * sizeof(Py_ssize_t));
     tdeg = malloc((size_t)(B.nbasis + 1) * sizeof(long long));
-    leads = malloc((size_t)(nred + 1) * nw * sizeof(uint64_t));
+    rk = malloc((size_t)(B.nbasis + 1) * sizeof(int32_t));
+    leads = malloc((size_t)(B.nbasis + 1) * nw * sizeof(uint64_t));
     tmp = malloc(3 * ((size_t)nw + 1) * sizeof(uint64_t));
     crow = malloc((size_t)(nspec + 1) * sizeof(int32_t));
-    if (!B.mons || !B.coefs || !B.len || !tdeg || !leads || !tmp || !crow || keys_init(&rows, nw + 1) || keys_init(&mono, nw))
+    if (!B.mons || !B.coefs || !B.len || !tdeg || !rk || !leads || !tmp || !crow || keys_init(&rows, nw + 1) || keys_init(&mono, nw))
         goto nomem;
     for (Py_ssize_t k = 0; k < B.nbasis; k++) {
         PyObject *m = PyList_GET_ITEM(mons_o, k), *c = PyList_GET_ITEM(coefs_o, k);
@@ -319,11 +325,23 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
         if (tdeg[k] == -1 && PyErr_Occurred())
             goto done;
     }
-    for (Py_ssize_t i = 0; i < nred; i++) {
-        if (rk[i] < 0 || rk[i] >= B.nbasis || B.len[rk[i]] == 0)
+    for (Py_ssize_t k = 0; k < B.nbasis; k++) {  /* the reducers: active, by length, then index */
+        int on = PyObject_IsTrue(PyList_GET_ITEM(active_o, k));
+        if (on < 0)
+            goto done;
+        if (!on)
+            continue;
+        if (B.len[k] == 0)
             goto bad;
-        memcpy(leads + (size_t)i * nw, B.mons[rk[i]], 8 * (size_t)nw);
+        Py_ssize_t i = nred++;
+        while (i > 0 && B.len[rk[i - 1]] > B.len[k]) {
+            rk[i] = rk[i - 1];
+            i--;
+        }
+        rk[i] = (int32_t)k;
     }
+    for (Py_ssize_t i = 0; i < nred; i++)
+        memcpy(leads + (size_t)i * nw, B.mons[rk[i]], 8 * (size_t)nw);
     uint64_t *key = tmp, *x = tmp + nw + 1, *lead = tmp + 2 * (nw + 1);
     int fresh;
     /* the pair rows chosen as reducers, then the other pair rows */
@@ -401,9 +419,9 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     cmp_nw = nw;
     cmp_base = mono.keys;
     qsort(order, (size_t)N, sizeof(int32_t), cmp_mono);
-    PyObject *pivcols = PyList_New(0), *nonpivot = PyList_New(0), *redk = PyList_New(0);
-    result = Py_BuildValue("(NNN)", pivcols, nonpivot, redk);  /* owns the lists */
-    if (!pivcols || !nonpivot || !redk || !result)
+    PyObject *pivcols = PyList_New(0), *nonpivot = PyList_New(0);
+    result = Py_BuildValue("(NN)", pivcols, nonpivot);  /* owns the lists */
+    if (!pivcols || !nonpivot || !result)
         goto done;
     int32_t *pivrow = malloc((size_t)(N + 1) * sizeof(int32_t));
     if (!pivrow)
@@ -440,7 +458,9 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     off = malloc((size_t)(K + nspec + 1) * sizeof(int64_t));
     col = malloc((size_t)(total + 1) * sizeof(int32_t));
     val = malloc((size_t)(total + 1) * sizeof(uint64_t));
-    if (!off || !col || !val) {
+    rowk = malloc((size_t)(2 * (K + nspec) + 1) * sizeof(int32_t));  /* ids, then rk */
+    rowstart = malloc((size_t)(K + nspec + 1) * sizeof(int32_t));
+    if (!off || !col || !val || !rowk || !rowstart) {
         free(pivrow);
         goto nomem_result;
     }
@@ -449,15 +469,10 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     for (Py_ssize_t q = 0; q < K + nspec; q++) {
         Py_ssize_t r = q < K ? pivrow[q] : crow[q - K], start = q < K ? 1 : 0;
         Py_ssize_t k = (Py_ssize_t)key_at(&rows, r)[nw];
-        if (q < K) {
-            PyObject *kv = PyLong_FromSsize_t(k);
-            if (!kv || PyList_Append(redk, kv)) {
-                Py_XDECREF(kv);
-                free(pivrow);
-                goto fail;
-            }
-            Py_DECREF(kv);
-        }
+        if (q < K)
+            rowk[q] = (int32_t)q;
+        rowk[K + q] = (int32_t)k;
+        rowstart[q] = (int32_t)start;
         const int32_t *mi = midx + rowoff[r];
         Py_ssize_t n = rowoff[r + 1] - rowoff[r];
         for (Py_ssize_t t = start; t < n; t++) {
@@ -467,10 +482,13 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
         off[q + 1] = e;
     }
     free(pivrow);
-    PyObject *full = Py_BuildValue("(OOOy#y#y#L)", PyTuple_GET_ITEM(result, 0), PyTuple_GET_ITEM(result, 1),
-                                   PyTuple_GET_ITEM(result, 2), (const char *)off, (Py_ssize_t)((K + nspec + 1) * sizeof(int64_t)),
+    PyObject *full = Py_BuildValue("(OOy#y#y#y#y#y#L)", PyTuple_GET_ITEM(result, 0), PyTuple_GET_ITEM(result, 1),
+                                   (const char *)rowk, (Py_ssize_t)(K * sizeof(int32_t)),
+                                   (const char *)off, (Py_ssize_t)((K + nspec + 1) * sizeof(int64_t)),
                                    (const char *)col, (Py_ssize_t)(e * sizeof(int32_t)),
-                                   (const char *)val, (Py_ssize_t)(e * sizeof(uint64_t)), work);
+                                   (const char *)val, (Py_ssize_t)(e * sizeof(uint64_t)),
+                                   (const char *)(rowk + K), (Py_ssize_t)((K + nspec) * sizeof(int32_t)),
+                                   (const char *)rowstart, (Py_ssize_t)((K + nspec) * sizeof(int32_t)), work);
     Py_DECREF(result);
     result = full;
     goto done;
@@ -484,7 +502,9 @@ fail:
     Py_CLEAR(result);
 done:
     PyBuffer_Release(&guard);
-    PyBuffer_Release(&reducers);
+    free(rk);
+    free(rowk);
+    free(rowstart);
     free(B.mons);
     free(B.coefs);
     free(B.len);

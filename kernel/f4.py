@@ -26,7 +26,7 @@ prime below ``2^31`` runs there in one call, on the same rows.
 from __future__ import annotations
 
 from functools import partial
-from itertools import chain, compress, islice
+from itertools import chain, islice
 from typing import Sequence
 
 import flint
@@ -260,12 +260,10 @@ class F4:
         """:meth:`_matrix_compiled` with the symbolic preprocessing compiled too
         (:class:`~.f4_rows.Packed`); the reducer of a monomial is the first active element, by
         increasing length, whose leading monomial divides it."""
-        mons, active = self.mons, self.active
-        reducers = sorted(compress(range(len(mons)), active), key=list(map(len, mons)).__getitem__)
-        out = self.packed.layout(mons, self.coefs, self.tdeg, reducers, crow_specs, pivots)
+        out = self.packed.layout(self.mons, self.coefs, self.tdeg, self.active, crow_specs, pivots)
         if out is None:
             raise PackingOverflow
-        pivcols, nonpivot, redk, flat, work = out
+        pivcols, nonpivot, flat, rk, rstart, work = out
         self.work += work
         self.dense += work * len(nonpivot)
         if self.work > self.budget or self.dense > DENSE_PER_ENTRY * self.budget:
@@ -277,9 +275,8 @@ class F4:
         result = flat.reduce(self.p, len(nonpivot), K, want, stop)
         recorded = None
         if self.trace is not None:
-            crowk = [k for k, _ in crow_specs]
-            recorded = partial(_coded_rows, flat.off, flat.col, redk, crowk)
-            self._plan = Plan.of_flat(flat, redk + crowk, [1] * K + [0] * len(crow_specs))
+            recorded = partial(_coded_rows, flat.off, flat.col, rk, K)
+            self._plan = Plan.of_flat(flat, rk, rstart)
         return pivcols, nonpivot, result, recorded
 
     def _step(self) -> bool:
@@ -455,10 +452,9 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
     return [dict(zip(map(exp, ms), map(one, cs))) for ms, cs in out]
 
 
-def _coded_rows(off, col, redk: list[int], crowk: list[int]) -> tuple[list[CodedRow], list[CodedRow]]:
+def _coded_rows(off, col, rk, K: int) -> tuple[list[CodedRow], list[CodedRow]]:
     """The rows of a matrix laid out flat (offsets, column codes) as :class:`~.f4_rows.CodedRow`
-    (array slices of the codes): the reducers by pivot id (of basis elements ``redk``), then the
-    pair rows (of ``crowk``)."""
-    K = len(redk)
-    reds = [CodedRow(k, 1, col[off[j]:off[j + 1]]) for j, k in enumerate(redk)]
-    return reds, [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]]) for i, k in enumerate(crowk)]
+    (slices of the codes): the ``K`` reducers by pivot id, then the pair rows, of the basis
+    elements ``rk`` (one per row)."""
+    rows = [CodedRow(k, 1 if r < K else 0, col[off[r]:off[r + 1]]) for r, k in enumerate(rk)]
+    return rows[:K], rows[K:]

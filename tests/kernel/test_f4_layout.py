@@ -84,9 +84,9 @@ def test_overflow_of_the_packing_is_found():
 
 def test_bad_arguments_are_errors():
     with pytest.raises(ValueError):
-        f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b""], b"", [], {})  # terms and coefficients disagree
+        f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b""], [False], [], {})  # terms and coefficients disagree
     with pytest.raises(ValueError):
-        f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b"\1" + b"\0" * 7], b"", [(5, b"\0" * 8)], {})
+        f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b"\1" + b"\0" * 7], [False], [(5, b"\0" * 8)], {})
 
 
 def test_replays_through_plans_agree_with_rows_added_one_by_one(monkeypatch):
