@@ -650,3 +650,77 @@ PyObject *f4_exponents(PyObject *self, PyObject *args)
     Py_DECREF(fast);
     return out;
 }
+
+/* pack(exponents, units) -> [packed monomial], or None when a unit or a monomial does not fit 128
+ * bits: each exponent vector e (a sequence of nonnegative ints) as the sum of e_f units[f]
+ * (kernel/monomials.py's Packing.pack, which computes the same in Python ints). */
+PyObject *f4_pack(PyObject *self, PyObject *args)
+{
+    PyObject *seq, *units_o;
+    if (!PyArg_ParseTuple(args, "OO!", &seq, &PyTuple_Type, &units_o))
+        return NULL;
+    Py_ssize_t n = PyTuple_GET_SIZE(units_o);
+    if (n > 1024)
+        Py_RETURN_NONE;
+    unsigned __int128 units[1024];
+    for (Py_ssize_t f = 0; f < n; f++) {
+        PyObject *u = PyTuple_GET_ITEM(units_o, f);
+        unsigned char b[16];
+        if (!PyLong_Check(u) || _PyLong_AsByteArray((PyLongObject *)u, b, 16, 1, 0)) {
+            PyErr_Clear();
+            Py_RETURN_NONE;
+        }
+        unsigned __int128 v = 0;
+        for (int i = 15; i >= 0; i--)
+            v = (v << 8) | b[i];
+        units[f] = v;
+    }
+    PyObject *fast = PySequence_Fast(seq, "pack: a sequence of exponent vectors");
+    if (fast == NULL)
+        return NULL;
+    Py_ssize_t N = PySequence_Fast_GET_SIZE(fast);
+    PyObject *out = PyList_New(N);
+    for (Py_ssize_t i = 0; out && i < N; i++) {
+        PyObject *e = PySequence_Fast(PySequence_Fast_GET_ITEM(fast, i), "pack: exponent vectors");
+        if (e == NULL || PySequence_Fast_GET_SIZE(e) != n) {
+            if (e != NULL)
+                PyErr_SetString(PyExc_ValueError, "pack: an exponent vector of another length");
+            Py_XDECREF(e);
+            Py_CLEAR(out);
+            break;
+        }
+        unsigned __int128 acc = 0, t;
+        int over = 0;
+        for (Py_ssize_t f = 0; f < n && !over; f++) {
+            long x = PyLong_AsLong(PySequence_Fast_GET_ITEM(e, f));
+            if (x == -1 && PyErr_Occurred()) {
+                PyErr_Clear();
+                over = 1;
+            } else {
+                over = x < 0 || __builtin_mul_overflow((unsigned __int128)x, units[f], &t)
+                       || __builtin_add_overflow(acc, t, &acc);
+            }
+        }
+        Py_DECREF(e);
+        if (over) {  /* beyond 128 bits (or not a small nonnegative exponent): the caller packs in Python */
+            Py_DECREF(out);
+            Py_DECREF(fast);
+            Py_RETURN_NONE;
+        }
+        PyObject *v;
+        if ((acc >> 64) == 0) {
+            v = PyLong_FromUnsignedLongLong((uint64_t)acc);
+        } else {
+            unsigned char bytes[16];
+            for (int k = 0; k < 16; k++)
+                bytes[k] = (unsigned char)(acc >> (8 * k));
+            v = _PyLong_FromByteArray(bytes, 16, 1, 0);
+        }
+        if (v == NULL)
+            Py_CLEAR(out);
+        else
+            PyList_SET_ITEM(out, i, v);
+    }
+    Py_DECREF(fast);
+    return out;
+}

@@ -354,7 +354,7 @@ class F4:
         out, final = [], []
         for lm, (slots, vals) in zip(lead, tails):
             j = where[lm]
-            out.append(([lm] + [nonpivot[s] for s in slots], [1] + vals))
+            out.append(([lm, *map(nonpivot.__getitem__, slots)], [1] + vals))
             final.append((j, slots))
         if self.trace is not None:
             self.trace.final = Step(len(pivcols), m, rows_of, [], [], [j for j, _ in final])
@@ -384,7 +384,7 @@ def pack_polys(gens: Sequence, packing: Packing, coeff) -> list[Row]:
     """Generators as packed rows (decreasing monomials), coefficients through ``coeff``."""
     rows = []
     for g in gens:
-        items = sorted(((packing.pack(e), c) for e, c in g.terms.items()), reverse=True)
+        items = sorted(zip(packing.pack_all(g.terms.keys()), g.terms.values()), reverse=True)
         rows.append(([m for m, _ in items], [coeff(c) for _, c in items]))
     return rows
 

@@ -48,7 +48,7 @@ from __future__ import annotations
 
 import random
 from itertools import chain
-from math import gcd, isqrt
+from math import gcd, isqrt, lcm
 from operator import le, sub
 from typing import Any, Callable, Sequence
 
@@ -119,15 +119,13 @@ def _next_prime(n: int) -> int:
 
 def primitive(terms: dict) -> dict:
     """The primitive integer multiple (positive content) of a polynomial over QQ."""
-    den = 1
-    for c in terms.values():
-        q = int(c.q)
-        den = den * q // gcd(den, q)
-    ints = {e: int(c.p) * (den // int(c.q)) for e, c in terms.items()}
-    cont = 0
-    for v in ints.values():
-        cont = gcd(cont, v)
-    return {e: v // cont for e, v in ints.items()}
+    cs = terms.values()
+    den = lcm(*[int(c.q) for c in cs])
+    nums = [int(c.p) for c in cs] if den == 1 else [int(c.p) * (den // int(c.q)) for c in cs]
+    cont = gcd(*nums)
+    if cont != 1:
+        nums = [v // cont for v in nums]
+    return dict(zip(terms, nums))
 
 
 def ratrec(a: int, m: int, bound: int) -> tuple[int, int] | None:
@@ -290,7 +288,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
 def _pack(ints: list[dict], P: Packing):
     shapes, coefs = [], []
     for t in ints:
-        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
+        items = sorted(zip(P.pack_all(t.keys()), t.values()), reverse=True)
         shapes.append([m for m, _ in items])
         coefs.append([c for _, c in items])
     return shapes, coefs

@@ -25,9 +25,9 @@ from typing import Sequence
 from .order import Exp, MonomialOrder
 
 try:
-    from ._f4rows import exponents as EXPONENTS
-except ImportError:  # no compiler at install (or an older extension): unpacked in Python
-    EXPONENTS = None
+    from ._f4rows import exponents as EXPONENTS, pack as PACK
+except ImportError:  # no compiler at install (or an older extension): packed and unpacked in Python
+    EXPONENTS = PACK = None
 
 
 def nonnegative_matrix(order: MonomialOrder) -> list[list[int]]:
@@ -105,6 +105,7 @@ class Packing:
         self.units = [sum(W[i][j] << shifts[i] for i in range(n)) + (1 << shifts[n])
                       + (1 << shifts[n + 1 + j])
                       for j in range(n)]
+        self._units = tuple(self.units)
         # the same by exponent field, lowest first (the last variable's field is the lowest)
         self._field_units = self.units[::-1]
 
@@ -113,6 +114,14 @@ class Packing:
 
     def pack(self, e: Exp) -> int:
         return sum(k * u for k, u in zip(e, self.units) if k)
+
+    def pack_all(self, exponents: Sequence[Exp]) -> list[int]:
+        """:meth:`pack` of each exponent vector (in C when the packed monomials fit 128 bits)."""
+        if PACK is not None:
+            packed = PACK(exponents, self._units)
+            if packed is not None:
+                return packed
+        return [self.pack(e) for e in exponents]
 
     def unpack(self, m: int) -> Exp:
         mask = self.emask

@@ -132,11 +132,14 @@ def test_a_trace_too_large_to_keep_lets_its_full_layouts_go(monkeypatch):
 @pytest.mark.parametrize("kind", ["dp", "lp"])
 def test_exponents_unpacked_in_c_as_in_python(nvars, maxdeg, kind):
     """Packing.unpack_all: the compiled unpacking (exponent fields within 64 bits; ten variables
-    of 7 bits exceed them and stay in Python) gives every monomial's exponents as Python does."""
+    of 7 bits exceed them and stay in Python) gives every monomial's exponents as Python does;
+    Packing.pack_all packs as pack (in C within 128 bits, beyond them in Python)."""
     rng = random.Random(nvars * maxdeg)
     Pk = Packing(MonomialOrder.simple(kind, nvars), maxdeg)
     exps = [tuple(rng.randrange(maxdeg // nvars + 1) for _ in range(nvars)) for _ in range(200)]
     mons = [Pk.pack(e) for e in exps] * 2
+    assert max(mons).bit_length() > 64 or nvars < 6
+    assert Pk.pack_all(exps) == mons[:200] == [Pk.pack(e) for e in exps]  # packed in C up to 128 bits
     got = Pk.unpack_all(iter(mons))
     assert Pk._compiled_unpack == (nvars * Pk.ebits <= 64)
     Pk._compiled_unpack = False
