@@ -397,8 +397,9 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
             if not _is_groebner_mod(rows, ring.order, q):
                 return False
             checked += 1
+    leads = None if packed is None else [ms[0] for ms, _ in packed[2]]
     for k, f in enumerate(ints):
-        reduced = None if packed is None else _top_reduces_packed(packed[1][k], packed[2], packed[0])
+        reduced = None if packed is None else _top_reduces_packed(packed[1][k], packed[2], leads, packed[0])
         if reduced is None:  # not packed, or a product left the packing: in flint
             red = red or ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
             reduced = red.reduces_to_zero(f)
@@ -407,14 +408,15 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
     return True
 
 
-def _top_reduces_packed(f: tuple[list, list], elements: list[tuple[list, list]], guard: int) -> bool | None:
+def _top_reduces_packed(f: tuple[list, list], elements: list[tuple[list, list]], leads: list[int],
+                        guard: int) -> bool | None:
     """Whether ``f`` top-reduces to 0 over QQ by the ``elements`` (all as packed monomials,
-    decreasing, and their rational or integer coefficients), exactly; None once a product
+    decreasing, and their rational or integer coefficients; ``leads``: their leading
+    monomials), exactly; None once a product
     ``x^u * m`` sets a guard bit (a field past its width: packed arithmetic would no longer be
     exact; the caller then reduces in flint).  Packed monomials compare as the ordering does,
     and ``a`` divides ``b`` iff ``(b | guard) - a`` keeps every guard bit."""
     terms = dict(zip(*f))
-    leads = [ms[0] for ms, _ in elements]
     while terms:
         m = max(terms)
         mg = m | guard

@@ -219,19 +219,20 @@ def test_top_reduction_on_packed_monomials():
     shapes, coefs = _pack(ints, P)
     shape, G, _, _ = _modular(shapes, coefs, P, primes(), 100)
     elements = list(zip(shape, G))
+    leads = [ms[0] for ms in shape]
     basis = [{P.unpack(m): c for m, c in zip(ms, cs)} for ms, cs in elements]
     flint_red = ExactReducer(basis, R.order)
     x = R.gens()
     others = [primitive(t.terms) for t in (gens[0] * x[1] + gens[2] * x[3], gens[1] + x[4], x[0] ** 3 - 2)]
     for f in ints + others:
         fs, fc = _pack([f], P)
-        assert _top_reduces_packed((fs[0], fc[0]), elements, P.guard) == flint_red.reduces_to_zero(f)
-    assert [_top_reduces_packed(r, elements, P.guard) for r in zip(*_pack(others, P))] == [True, False, False]
+        assert _top_reduces_packed((fs[0], fc[0]), elements, leads, P.guard) == flint_red.reduces_to_zero(f)
+    assert [_top_reduces_packed(r, elements, leads, P.guard) for r in zip(*_pack(others, P))] == [True, False, False]
     # lp in x, y: x^3 by x - y^3 passes x^2 y^3 of degree 5, past a packing for degree 3
     for maxdeg, want in [(3, None), (63, False)]:  # (63: it ends in y^9, which x does not divide)
         Q = Packing(MonomialOrder.simple("lp", 2), maxdeg)
         g = ([Q.pack((1, 0)), Q.pack((0, 3))], [1, -1])
-        assert _top_reduces_packed(([Q.pack((3, 0))], [1]), [g], Q.guard) is want
+        assert _top_reduces_packed(([Q.pack((3, 0))], [1]), [g], [g[0][0]], Q.guard) is want
 
 
 def test_a_large_run_keeps_no_full_trace(monkeypatch):
