@@ -724,3 +724,92 @@ PyObject *f4_pack(PyObject *self, PyObject *args)
     Py_DECREF(fast);
     return out;
 }
+
+/* term_dicts(rows, eshifts, ebits, scale) -> [{exponent tuple: coefficient}]: each row (packed
+ * monomials, coefficients: two sequences of equal length) as a dict in the row's order, the
+ * exponents cut from the packed monomials as exponents() does (fields within the lowest 64 bits,
+ * else ValueError; the tuples of equal monomials shared), each coefficient multiplied by scale
+ * unless scale is None (kernel/monomials.py's Packing.term_dicts). */
+PyObject *f4_term_dicts(PyObject *self, PyObject *args)
+{
+    PyObject *rows, *shifts_o, *scale;
+    int ebits;
+    if (!PyArg_ParseTuple(args, "OO!iO", &rows, &PyTuple_Type, &shifts_o, &ebits, &scale))
+        return NULL;
+    Py_ssize_t n = PyTuple_GET_SIZE(shifts_o);
+    int shift[64], top = 0;
+    if (ebits < 1 || ebits > 62 || n > 64) {
+        PyErr_SetString(PyExc_ValueError, "term_dicts: bad packing");
+        return NULL;
+    }
+    for (Py_ssize_t f = 0; f < n; f++) {
+        long v = PyLong_AsLong(PyTuple_GET_ITEM(shifts_o, f));
+        if (v < 0 || v > 64) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_ValueError, "term_dicts: the exponent fields exceed 64 bits");
+            return NULL;
+        }
+        shift[f] = (int)v;
+        if (shift[f] + ebits > top)
+            top = shift[f] + ebits;
+    }
+    if (top > 64) {
+        PyErr_SetString(PyExc_ValueError, "term_dicts: the exponent fields exceed 64 bits");
+        return NULL;
+    }
+    PyObject *fast = PySequence_Fast(rows, "term_dicts: a sequence of rows");
+    if (fast == NULL)
+        return NULL;
+    PyObject *seen = PyDict_New(), *out = PyList_New(0);
+    if (seen == NULL)
+        Py_CLEAR(out);
+    for (Py_ssize_t r = 0; out && r < PySequence_Fast_GET_SIZE(fast); r++) {
+        PyObject *row = PySequence_Fast_GET_ITEM(fast, r);
+        PyObject *ms = NULL, *cs = NULL, *d = NULL;
+        if (!PyTuple_Check(row) || PyTuple_GET_SIZE(row) != 2
+            || !(ms = PySequence_Fast(PyTuple_GET_ITEM(row, 0), "term_dicts: monomials"))
+            || !(cs = PySequence_Fast(PyTuple_GET_ITEM(row, 1), "term_dicts: coefficients"))
+            || PySequence_Fast_GET_SIZE(ms) != PySequence_Fast_GET_SIZE(cs) || !(d = PyDict_New())) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_ValueError, "term_dicts: rows of (monomials, coefficients)");
+            Py_XDECREF(ms);
+            Py_XDECREF(cs);
+            Py_CLEAR(out);
+            break;
+        }
+        int bad = PyList_Append(out, d) < 0;
+        Py_DECREF(d);
+        for (Py_ssize_t t = 0; !bad && t < PySequence_Fast_GET_SIZE(ms); t++) {
+            PyObject *m = PySequence_Fast_GET_ITEM(ms, t), *c = PySequence_Fast_GET_ITEM(cs, t);
+            PyObject *e = PyDict_GetItemWithError(seen, m);  /* borrowed */
+            if (e != NULL) {
+                Py_INCREF(e);
+            } else if (!PyErr_Occurred()) {
+                PyObject *x = PyNumber_Index(m);
+                uint64_t w = x ? PyLong_AsUnsignedLongLongMask(x) : 0;  /* the lowest 64 bits */
+                Py_XDECREF(x);
+                e = x && !PyErr_Occurred() ? PyTuple_New(n) : NULL;
+                for (Py_ssize_t f = 0; e && f < n; f++) {
+                    PyObject *v = PyLong_FromUnsignedLongLong(field(&w, shift[f], ebits, 1));
+                    if (v == NULL)
+                        Py_CLEAR(e);
+                    else
+                        PyTuple_SET_ITEM(e, f, v);
+                }
+                if (e && PyDict_SetItem(seen, m, e))
+                    Py_CLEAR(e);
+            }
+            PyObject *v = e == NULL ? NULL : scale == Py_None ? (Py_INCREF(c), c) : PyNumber_Multiply(scale, c);
+            bad = v == NULL || PyDict_SetItem(d, e, v) < 0;
+            Py_XDECREF(e);
+            Py_XDECREF(v);
+        }
+        Py_DECREF(ms);
+        Py_DECREF(cs);
+        if (bad)
+            Py_CLEAR(out);
+    }
+    Py_DECREF(fast);
+    Py_XDECREF(seen);
+    return out;
+}

@@ -26,7 +26,7 @@ prime below ``2^31`` runs there in one call, on the same rows.
 from __future__ import annotations
 
 from functools import partial
-from itertools import chain, islice
+from itertools import islice
 from typing import Sequence
 
 import flint
@@ -413,10 +413,7 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = P.unpack_all(chain.from_iterable(ms for ms, _ in basis))
-    one = flint.nmod(1, p).__mul__  # one * c: an nmod, made faster than by nmod(c, p)
-    exp = exps.__getitem__
-    return [dict(zip(map(exp, ms), map(one, cs))) for ms, cs in basis]
+    return P.term_dicts(basis, flint.nmod(1, p))  # one * c: an nmod, made faster than by nmod(c, p)
 
 
 def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
@@ -446,10 +443,7 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = P.unpack_all(chain.from_iterable(ms for ms, _ in out))
-    one = flint.nmod(1, p).__mul__
-    exp = exps.__getitem__
-    return [dict(zip(map(exp, ms), map(one, cs))) for ms, cs in out]
+    return P.term_dicts(out, flint.nmod(1, p))
 
 
 def _coded_rows(off, col, rk, K: int) -> tuple[list[CodedRow], list[CodedRow]]:

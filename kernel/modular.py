@@ -47,7 +47,6 @@
 from __future__ import annotations
 
 import random
-from itertools import chain
 from math import gcd, isqrt, lcm
 from operator import le, sub
 from typing import Any, Callable, Sequence
@@ -275,9 +274,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
         if result is None:
             continue
         shape, G, trace, certified = result
-        exps = P.unpack_all(chain.from_iterable(shape))
-        exp = exps.__getitem__
-        basis = [dict(zip(map(exp, ms), cs)) for ms, cs in zip(shape, G)]
+        basis = P.term_dicts(list(zip(shape, G)))
         replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
         packed = (P.guard, list(zip(shapes, coefs)), list(zip(shape, G)))
         if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed, packed):

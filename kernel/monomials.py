@@ -20,14 +20,15 @@ from __future__ import annotations
 
 from fractions import Fraction
 from functools import lru_cache
+from itertools import chain
 from typing import Sequence
 
 from .order import Exp, MonomialOrder
 
 try:
-    from ._f4rows import exponents as EXPONENTS, pack as PACK
+    from ._f4rows import exponents as EXPONENTS, pack as PACK, term_dicts as TERM_DICTS
 except ImportError:  # no compiler at install (or an older extension): packed and unpacked in Python
-    EXPONENTS = PACK = None
+    EXPONENTS = PACK = TERM_DICTS = None
 
 
 def nonnegative_matrix(order: MonomialOrder) -> list[list[int]]:
@@ -93,7 +94,8 @@ class Packing:
         self.guard = sum(1 << (s + w - 1) for s, w in zip(shifts, widths))
         self.eshifts = shifts[n + 1:]
         self._eshifts = tuple(self.eshifts)
-        self._compiled_unpack = EXPONENTS is not None and n * ebits <= 64  # the exponent fields in 64 bits
+        # the exponent fields in 64 bits: unpacked in C
+        self._compiled_unpack = EXPONENTS is not None and TERM_DICTS is not None and n * ebits <= 64
         self.dshift = shifts[n]
         self.emask = (1 << ebits) - 1
         # the exponent fields are the lowest ones: their mask, guard bits and field width
@@ -138,6 +140,17 @@ class Packing:
         low = [m & eall for m in ms]
         columns = [[e >> s & mask for e in low] for s in self.eshifts]
         return dict(zip(ms, zip(*columns))) if columns else dict.fromkeys(ms, ())
+
+    def term_dicts(self, rows: Sequence[tuple[Sequence[int], Sequence]], scale=None) -> list[dict]:
+        """Rows ``(packed monomials, coefficients)`` as ``{exponent: coefficient}`` dicts in the
+        rows' order, each coefficient multiplied by ``scale`` unless it is None (in C when the
+        exponent fields fit 64 bits)."""
+        if self._compiled_unpack:
+            return TERM_DICTS(rows, self._eshifts, self.ebits, scale)
+        exp = self.unpack_all(chain.from_iterable(ms for ms, _ in rows)).__getitem__
+        if scale is None:
+            return [dict(zip(map(exp, ms), cs)) for ms, cs in rows]
+        return [dict(zip(map(exp, ms), map(scale.__mul__, cs))) for ms, cs in rows]
 
     def weighted_degree(self, m: int) -> int:
         """The first weight row applied to the exponent (the degree of a graded ordering)."""
