@@ -96,14 +96,16 @@ class F4:
             td = max([(m >> dshift) & emask for m in ms])
         if td > P.maxdeg:
             raise PackingOverflow
+        if sugar is None:
+            sugar = td
         self.mons.append(ms)
         self.coefs.append(cs)
         if self.neg is not None:
             self.neg.append([self.p - c for c in cs])
         self.tdeg.append(td)
-        self.sugar.append(td if sugar is None else sugar)
+        self.sugar.append(sugar)
         self.active.append(is_basis)
-        self.pairs.add(int(ms[0]), self.sugar[-1])
+        self.pairs.add(int(ms[0]), sugar)
         return len(self.mons) - 1
 
     def _update(self, h: int) -> None:
@@ -306,8 +308,9 @@ class F4:
                     for st in self.trace.steps:
                         st.let_go()
             self.trace.steps.append(step)
+        monomial = nonpivot.__getitem__
         for slots, vals in new:
-            k = self._add(list(map(nonpivot.__getitem__, slots)), vals, True, d)
+            k = self._add(list(map(monomial, slots)), vals, True, d)
             if self.mons[k][0] == 0:
                 return False
             self._update(k)
