@@ -13,9 +13,9 @@
  *   (of out: the largest bit length of |n| or d over the entries n/d in lowest terms, as
  *   python-flint's fmpq.height_bits).
  *
- * fractions(out, fmpq, cache) -> the rows of out as fractions: fmpq(n) for d = 1 (taken from the
- *   dict cache, where integers of fewer than 16 bits are kept for the next lifts), else
- *   fmpq(n, d) (fmpq: python-flint's type; Reconstructor's complete lift).
+ * fractions(out, fmpq, cache) -> the rows of out as fractions fmpq(n) for d = 1, else fmpq(n, d)
+ *   (fmpq: python-flint's type; Reconstructor's complete lift); those with |n|, d below 2^15 are
+ *   taken from the dict cache by (n, d), where up to CACHED of them are kept for the next lifts.
  *
  * agree_rows(out, residues, p, i, j) -> (i, j) or None
  *   The first entry (n, d) of out, in rows 0..i (row i only below position j), with
@@ -25,6 +25,8 @@
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 #include <stdint.h>
+
+#define CACHED 65536  /* fractions kept in fractions()'s cache */
 
 typedef unsigned __int128 u128;
 typedef __int128 i128;
@@ -237,24 +239,20 @@ PyObject *f4_fractions(PyObject *self, PyObject *args)
                 PyErr_SetString(PyExc_ValueError, "fractions: rows of (n, d)");
             } else {
                 PyObject *n = PyTuple_GET_ITEM(t, 0), *d = PyTuple_GET_ITEM(t, 1);
-                int overflow;
-                long long dv = PyLong_AsLongLongAndOverflow(d, &overflow);
-                long long nv = PyLong_AsLongLongAndOverflow(n, &overflow);
-                if (PyErr_Occurred()) {
-                    q = NULL;
-                } else if (dv == 1 && !overflow && nv > -32768 && nv < 32768) {
-                    q = PyDict_GetItemWithError(cache, n);  /* borrowed */
-                    if (q != NULL) {
+                int overflow_n, overflow_d;
+                long long nv = PyLong_AsLongLongAndOverflow(n, &overflow_n);
+                long long dv = PyLong_AsLongLongAndOverflow(d, &overflow_d);
+                int small = !PyErr_Occurred() && !overflow_n && !overflow_d && nv > -32768 && nv < 32768
+                            && dv > 0 && dv < 32768;
+                if (small) {
+                    q = PyDict_GetItemWithError(cache, t);  /* borrowed */
+                    if (q != NULL)
                         Py_INCREF(q);
-                    } else if (!PyErr_Occurred()) {
-                        q = PyObject_CallOneArg(fmpq, n);
-                        if (q && PyDict_SetItem(cache, n, q))
-                            Py_CLEAR(q);
-                    }
-                } else if (dv == 1 && !overflow) {
-                    q = PyObject_CallOneArg(fmpq, n);
-                } else {
-                    q = PyObject_CallFunctionObjArgs(fmpq, n, d, NULL);
+                }
+                if (q == NULL && !PyErr_Occurred()) {
+                    q = dv == 1 && !overflow_d ? PyObject_CallOneArg(fmpq, n) : PyObject_CallFunctionObjArgs(fmpq, n, d, NULL);
+                    if (q && small && PyDict_GET_SIZE(cache) < CACHED && PyDict_SetItem(cache, t, q))
+                        Py_CLEAR(q);
                 }
             }
             if (q == NULL) {

@@ -65,9 +65,10 @@ try:
 except ImportError:  # no compiler at install (or an older extension): the same loops in Python
     AGREE_ROWS = FRACTIONS = RATREC_ROWS = None
 
-_SMALL_INTEGERS: dict[int, Any] = {}
-"""Integers below 2^15 in absolute value as python-flint fractions, made once (immutable, shared by
-the lifts: most coefficients of small systems' bases are such integers)."""
+_SMALL_FRACTIONS: dict[tuple[int, int], Any] = {}
+"""Fractions n/d with |n|, d below 2^15 as python-flint fractions by (n, d), made once (immutable,
+shared by the lifts: most coefficients of small systems' bases are such fractions; kernel/_f4lift.c
+keeps at most 65536)."""
 
 PRIME_RANGE = (1 << 27, 1 << 28)
 FULL_REPLAY_COST = 3.0
@@ -216,7 +217,7 @@ class Reconstructor:
         """The complete lift as rationals, from a modulus ``m`` (``height``: its height in bits,
         if known)."""
         if FRACTIONS is not None:
-            self.lift = FRACTIONS(self.out, flint.fmpq, _SMALL_INTEGERS)
+            self.lift = FRACTIONS(self.out, flint.fmpq, _SMALL_FRACTIONS)
         else:
             fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
             self.lift = [[fmpq(n) if d == 1 else fmpq(n, d) for n, d in row] for row in self.out]
