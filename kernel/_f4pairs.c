@@ -22,6 +22,7 @@ typedef struct {
     int n, ebits, by_weight;
     int64_t maxdeg;
     PyObject *units;       /* tuple of Python ints */
+    unsigned __int128 *units128;  /* the same as 128-bit words, when every unit fits one (else NULL) */
     int64_t *w0;           /* n */
     int32_t *ex;           /* element exponents, n per element */
     int64_t *sugar, *deg;  /* per element */
@@ -75,6 +76,7 @@ static int reserve_pairs(Pairs *s, Py_ssize_t need)
 static void Pairs_dealloc(Pairs *s)
 {
     Py_XDECREF(s->units);
+    free(s->units128);
     free(s->w0); free(s->ex); free(s->sugar); free(s->deg);
     free(s->pex); free(s->key); free(s->pi); free(s->pj);
     free(s->cand); free(s->cidx); free(s->ccop);
@@ -99,6 +101,26 @@ static int Pairs_init(Pairs *s, PyObject *args, PyObject *kw)
     s->maxdeg = maxdeg;
     Py_INCREF(units);
     Py_XSETREF(s->units, units);
+    free(s->units128);
+    s->units128 = malloc((size_t)n * sizeof(unsigned __int128));
+    if (s->units128 == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    for (int f = 0; f < n; f++) {
+        PyObject *u = PyTuple_GET_ITEM(units, f);
+        unsigned char b[16];
+        if (!PyLong_Check(u) || _PyLong_AsByteArray((PyLongObject *)u, b, 16, 1, 0)) {
+            PyErr_Clear();
+            free(s->units128);
+            s->units128 = NULL;
+            break;
+        }
+        unsigned __int128 v = 0;
+        for (int i = 15; i >= 0; i--)
+            v = (v << 8) | b[i];
+        s->units128[f] = v;
+    }
     if (grow((void **)&s->w0, n, sizeof(int64_t)))
         return -1;
     for (int f = 0; f < n; f++) {
@@ -359,23 +381,45 @@ static PyObject *Pairs_update(Pairs *s, PyObject *args)
     Py_RETURN_TRUE;
 }
 
-/* the packed lcm of pair q: sum of e_f units[f] */
-static PyObject *packed_lcm(Pairs *s, Py_ssize_t q)
+/* the packed monomial of exponents e - b (b NULL: of e): the sum of its e_f units[f], in 128-bit
+ * words when they hold it, else in Python ints */
+static PyObject *packed(Pairs *s, const int32_t *e, const int32_t *b)
 {
+    if (s->units128 != NULL) {
+        unsigned __int128 acc = 0;
+        int over = 0;
+        for (int f = 0; f < s->n && !over; f++) {
+            unsigned __int128 x = (uint64_t)(b ? e[f] - b[f] : e[f]), t;
+            over = __builtin_mul_overflow(x, s->units128[f], &t) || __builtin_add_overflow(acc, t, &acc);
+        }
+        if (!over) {
+            if ((acc >> 64) == 0)
+                return PyLong_FromUnsignedLongLong((uint64_t)acc);
+            unsigned char bytes[16];
+            for (int i = 0; i < 16; i++)
+                bytes[i] = (unsigned char)(acc >> (8 * i));
+            return _PyLong_FromByteArray(bytes, 16, 1, 0);
+        }
+    }
     PyObject *acc = PyLong_FromLong(0);
-    const int32_t *L = s->pex + q * s->n;
     for (int f = 0; f < s->n && acc; f++) {
-        if (!L[f])
+        long x = b ? e[f] - b[f] : e[f];
+        if (!x)
             continue;
-        PyObject *e = PyLong_FromLong(L[f]);
-        PyObject *t = e ? PyNumber_Multiply(e, PyTuple_GET_ITEM(s->units, f)) : NULL;
-        Py_XDECREF(e);
+        PyObject *ex = PyLong_FromLong(x);
+        PyObject *t = ex ? PyNumber_Multiply(ex, PyTuple_GET_ITEM(s->units, f)) : NULL;
+        Py_XDECREF(ex);
         PyObject *r = t ? PyNumber_Add(acc, t) : NULL;
         Py_XDECREF(t);
         Py_DECREF(acc);
         acc = r;
     }
     return acc;
+}
+
+static PyObject *packed_lcm(Pairs *s, Py_ssize_t q)
+{
+    return packed(s, s->pex + q * s->n, NULL);
 }
 
 static PyObject *pair_tuple(Pairs *s, Py_ssize_t q)
@@ -411,6 +455,112 @@ static PyObject *Pairs_take(Pairs *s, PyObject *unused)
         pairs_move(s, w++, q);
     }
     s->np = w;
+    return out;
+}
+
+/* take_rows(): the pairs of the lowest key d, removed, as F4's rows: (d, pivots, rows) as
+ * kernel/f4_pairs.pair_rows makes them from take() and the elements' leading monomials */
+static PyObject *Pairs_take_rows(Pairs *s, PyObject *unused)
+{
+    if (s->np == 0) {
+        PyErr_SetString(PyExc_IndexError, "Pairs.take_rows: no pairs");
+        return NULL;
+    }
+    int64_t d = s->key[0];
+    for (Py_ssize_t q = 1; q < s->np; q++)
+        if (s->key[q] < d)
+            d = s->key[q];
+    PyObject *pivots = PyDict_New(), *rows = PyList_New(0), *seen = PySet_New(NULL), *result = NULL;
+    if (!pivots || !rows || !seen)
+        goto done;
+    Py_ssize_t w = 0;
+    for (Py_ssize_t q = 0; q < s->np; q++) {
+        if (s->key[q] != d) {
+            pairs_move(s, w++, q);
+            continue;
+        }
+        const int32_t *L = s->pex + q * s->n;
+        int32_t ks[2] = {s->pi[q], s->pj[q]};
+        PyObject *Lo = NULL;
+        for (int t = 0; t < (ks[1] < 0 ? 1 : 2); t++) {
+            PyObject *u = packed(s, L, s->ex + (Py_ssize_t)ks[t] * s->n);
+            PyObject *spec = u ? Py_BuildValue("(iN)", ks[t], u) : NULL;
+            int known = spec ? PySet_Contains(seen, spec) : -1;
+            int bad = known < 0 || (!known && PySet_Add(seen, spec));
+            if (!bad && !known) {
+                int is_pivot = 0;
+                if (ks[1] >= 0) {
+                    if (Lo == NULL)
+                        Lo = packed(s, L, NULL);
+                    int has = Lo ? PyDict_Contains(pivots, Lo) : -1;
+                    is_pivot = has < 0 ? -1 : !has;
+                }
+                bad = is_pivot < 0 || (is_pivot ? PyDict_SetItem(pivots, Lo, spec) : PyList_Append(rows, spec));
+            }
+            Py_XDECREF(spec);
+            if (bad) {
+                Py_XDECREF(Lo);
+                goto done;
+            }
+        }
+        Py_XDECREF(Lo);
+    }
+    s->np = w;
+    result = Py_BuildValue("(LOO)", (long long)d, pivots, rows);
+done:
+    Py_XDECREF(pivots);
+    Py_XDECREF(rows);
+    Py_XDECREF(seen);
+    return result;
+}
+
+/* minimal(active): the active elements whose leading monomial no other active element's divides
+ * (of equal ones, the first), by increasing index (kernel/f4_pairs.PairSet.minimal) */
+static PyObject *Pairs_minimal(Pairs *s, PyObject *active)
+{
+    if (!PyList_Check(active) || PyList_GET_SIZE(active) > s->ne) {
+        PyErr_SetString(PyExc_ValueError, "Pairs.minimal: a list of flags, one per element");
+        return NULL;
+    }
+    Py_ssize_t ne = PyList_GET_SIZE(active);
+    int n = s->n;
+    char *on = malloc((size_t)ne + 1);
+    PyObject *out = on ? PyList_New(0) : PyErr_NoMemory();
+    if (out == NULL) {
+        free(on);
+        return NULL;
+    }
+    for (Py_ssize_t k = 0; k < ne; k++) {
+        int t = PyObject_IsTrue(PyList_GET_ITEM(active, k));
+        if (t < 0) {
+            free(on);
+            Py_DECREF(out);
+            return NULL;
+        }
+        on[k] = (char)t;
+    }
+    for (Py_ssize_t k = 0; k < ne; k++) {
+        if (!on[k])
+            continue;
+        const int32_t *e = s->ex + k * n;
+        int minimal = 1;
+        for (Py_ssize_t j = 0; j < ne && minimal; j++) {
+            if (j == k || !on[j] || !divides(s->ex + j * n, e, n))
+                continue;
+            minimal = j < k ? 0 : memcmp(s->ex + j * n, e, n * sizeof(int32_t)) == 0;  /* a later equal one: k stays */
+        }
+        if (!minimal)
+            continue;
+        PyObject *v = PyLong_FromSsize_t(k);
+        if (v == NULL || PyList_Append(out, v)) {
+            Py_XDECREF(v);
+            free(on);
+            Py_DECREF(out);
+            return NULL;
+        }
+        Py_DECREF(v);
+    }
+    free(on);
     return out;
 }
 
@@ -474,6 +624,8 @@ static PyMethodDef Pairs_methods[] = {
     {"push", (PyCFunction)Pairs_push, METH_VARARGS, "push(key, k): the pair of input row k."},
     {"update", (PyCFunction)Pairs_update, METH_VARARGS, "update(h, active): Gebauer–Möller; False on overflow."},
     {"take", (PyCFunction)Pairs_take, METH_NOARGS, "take(): the pairs of the lowest key, removed."},
+    {"take_rows", (PyCFunction)Pairs_take_rows, METH_NOARGS, "take_rows(): those pairs as F4's rows."},
+    {"minimal", (PyCFunction)Pairs_minimal, METH_O, "minimal(active): the minimal active elements."},
     {"lowest", (PyCFunction)Pairs_lowest, METH_NOARGS, "lowest(): the lowest key, or None."},
     {"drop", (PyCFunction)Pairs_drop, METH_O, "drop(d): forget the pairs of key d."},
     {"clear", (PyCFunction)Pairs_clear, METH_NOARGS, "clear(): forget every pair."},

@@ -33,6 +33,18 @@ typedef struct {
     Py_ssize_t K;
 } Table;
 
+/* x mod p by Barrett's method with pinv = floor((2^64 - 1) / p): the quotient estimate is at most
+ * two below the true one (the same result as x % p, without a hardware division). */
+static inline uint64_t mod_p(uint64_t x, uint64_t p, uint64_t pinv)
+{
+    uint64_t r = x - (uint64_t)(((unsigned __int128)x * pinv) >> 64) * p;
+    if (r >= p)
+        r -= p;
+    if (r >= p)
+        r -= p;
+    return r;
+}
+
 static void table_free(Table *t)
 {
     if (t->rows) {
@@ -43,15 +55,15 @@ static void table_free(Table *t)
     free(t->len);
 }
 
-static void normalize(uint64_t *acc, Py_ssize_t b, uint64_t p)
+static void normalize(uint64_t *acc, Py_ssize_t b, uint64_t p, uint64_t pinv)
 {
     for (Py_ssize_t s = 0; s < b; s++)
-        acc[s] %= p;
+        acc[s] = mod_p(acc[s], p, pinv);
 }
 
 /* acc[0..m) := the reduced row r (entries < p); returns the bound (highest nonzero + 1),
  * -1 on a bad pivot reference. */
-static Py_ssize_t combine(const Table *T, uint64_t *acc, Py_ssize_t m, uint64_t p, uint64_t hmax,
+static Py_ssize_t combine(const Table *T, uint64_t *acc, Py_ssize_t m, uint64_t p, uint64_t pinv, uint64_t hmax,
                           const int64_t *off, const int32_t *col, const uint64_t *val, Py_ssize_t r)
 {
     Py_ssize_t b = 0;
@@ -74,7 +86,7 @@ static Py_ssize_t combine(const Table *T, uint64_t *acc, Py_ssize_t m, uint64_t 
     uint64_t count = 0;
     for (int64_t e = off[r]; e < off[r + 1]; e++) {
         int32_t c = col[e];
-        uint64_t v = val[e] % p;
+        uint64_t v = mod_p(val[e], p, pinv);
         if (c < 0) {
             acc[~c] += v;
             continue;
@@ -87,11 +99,11 @@ static Py_ssize_t combine(const Table *T, uint64_t *acc, Py_ssize_t m, uint64_t 
         for (Py_ssize_t s = 0; s < n; s++)
             acc[s] += nv * t[s];
         if (++count >= hmax) {
-            normalize(acc, b, p);
+            normalize(acc, b, p, pinv);
             count = 0;
         }
     }
-    normalize(acc, b, p);
+    normalize(acc, b, p, pinv);
     while (b > 0 && acc[b - 1] == 0)
         b--;
     return b;
@@ -105,8 +117,8 @@ static Py_ssize_t combine(const Table *T, uint64_t *acc, Py_ssize_t m, uint64_t 
  * as combine(): a row minus the unique combination of reducers clearing its pivot entries.
  * Entries stay below p^2 (p^2 + p^2 < 2^63 for p < 2^31) by one conditional subtraction. */
 static Py_ssize_t reduce_seq(const int64_t *rowof, Py_ssize_t K, uint64_t *accP, uint64_t *acc, Py_ssize_t m,
-                             uint64_t p, const int64_t *off, const int32_t *col, const uint64_t *val,
-                             Py_ssize_t r, int32_t below)
+                             uint64_t p, uint64_t pinv, const int64_t *off, const int32_t *col,
+                             const uint64_t *val, Py_ssize_t r, int32_t below)
 {
     uint64_t p2 = p * p;
     Py_ssize_t top = below < 0 ? K : below;  /* pivots a reducer row may refer to lie below its own */
@@ -114,7 +126,7 @@ static Py_ssize_t reduce_seq(const int64_t *rowof, Py_ssize_t K, uint64_t *accP,
     memset(acc, 0, (size_t)m * sizeof(uint64_t));
     for (int64_t e = off[r]; e < off[r + 1]; e++) {
         int32_t c = col[e];
-        uint64_t v = val[e] % p;
+        uint64_t v = mod_p(val[e], p, pinv);
         if (c < 0) {
             if ((Py_ssize_t)(~c) >= m)
                 return -1;
@@ -126,7 +138,7 @@ static Py_ssize_t reduce_seq(const int64_t *rowof, Py_ssize_t K, uint64_t *accP,
         }
     }
     for (Py_ssize_t j = top - 1; j >= 0; j--) {
-        uint64_t c = accP[j] % p;
+        uint64_t c = mod_p(accP[j], p, pinv);
         if (!c)
             continue;
         uint64_t f = p - c;
@@ -139,8 +151,7 @@ static Py_ssize_t reduce_seq(const int64_t *rowof, Py_ssize_t K, uint64_t *accP,
         }
     }
     Py_ssize_t b = m;
-    for (Py_ssize_t s = 0; s < m; s++)
-        acc[s] %= p;
+    normalize(acc, m, p, pinv);
     while (b > 0 && acc[b - 1] == 0)
         b--;
     return b;
@@ -206,7 +217,7 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     if (!PyArg_ParseTuple(args, "Knnny*y*y*y*y*p|i", &p_, &m, &K, &nred, &ids, &off, &col, &val, &want, &stop,
                           &mode))
         return NULL;
-    uint64_t p = p_;
+    uint64_t p = p_, pinv = p_ >= 2 ? UINT64_MAX / p_ : 0;
     PyObject *result = NULL, *used = NULL, *E = NULL, *W = NULL;
     Table T = {NULL, NULL, K};
     uint64_t *acc = NULL, **piv = NULL, *accP = NULL, *vmod = NULL;
@@ -267,13 +278,13 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
                 }
             }
         for (Py_ssize_t e = 0; e < nent; e++)
-            vmod[e] = pval[e] % p;
+            vmod[e] = mod_p(pval[e], p, pinv);
         pval = vmod;
     }
     for (Py_ssize_t r = 0; r < nred && !seq; r++) {
         if ((r & 1023) == 1023 && PyErr_CheckSignals())
             goto done;  /* Ctrl-C, a time limit's signal: the handler's exception propagates */
-        Py_ssize_t b = combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
+        Py_ssize_t b = combine(&T, acc, m, p, pinv, hmax, poff, pcol, pval, r);
         int32_t j = pid[r];
         if (b < 0 || j < 0 || j >= K) {
             PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
@@ -294,8 +305,8 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
     for (Py_ssize_t r = nred; r < R; r++) {
         if (((r - nred) & 255) == 255 && PyErr_CheckSignals())
             goto done;
-        Py_ssize_t b = seq ? reduce_seq(rowof, K, accP, acc, m, p, poff, pcol, pval, r, -1)
-                           : combine(&T, acc, m, p, hmax, poff, pcol, pval, r);
+        Py_ssize_t b = seq ? reduce_seq(rowof, K, accP, acc, m, p, pinv, poff, pcol, pval, r, -1)
+                           : combine(&T, acc, m, p, pinv, hmax, poff, pcol, pval, r);
         if (b < 0) {
             PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
             goto done;
@@ -305,18 +316,18 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
         memset(acc + b, 0, (size_t)(m - b) * sizeof(uint64_t));
         uint64_t n = 0;
         for (Py_ssize_t i = 0; i < npiv; i++) {
-            uint64_t c = acc[pslot[i]] % p;
+            uint64_t c = mod_p(acc[pslot[i]], p, pinv);
             if (c) {
                 uint64_t f = p - c, *y = piv[i];
                 for (Py_ssize_t s = 0; s <= pslot[i]; s++)
                     acc[s] += f * y[s];
                 if (++n >= hmax) {
-                    normalize(acc, m, p);
+                    normalize(acc, m, p, pinv);
                     n = 0;
                 }
             }
         }
-        normalize(acc, m, p);
+        normalize(acc, m, p, pinv);
         Py_ssize_t s0 = m - 1;
         while (s0 >= 0 && acc[s0] == 0)
             s0--;
@@ -325,7 +336,7 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
         if (acc[s0] != 1) {
             uint64_t inv = inverse(acc[s0], p);
             for (Py_ssize_t s = 0; s <= s0; s++)
-                acc[s] = acc[s] * inv % p;
+                acc[s] = mod_p(acc[s] * inv, p, pinv);
         }
         PyObject *u = Py_BuildValue("(nn)", r - nred, s0);
         if (!u || PyList_Append(used, u)) {
@@ -349,18 +360,18 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
         for (Py_ssize_t i = npiv - 2; i >= 0; i--) {
             uint64_t *x = piv[i], n = 0;
             for (Py_ssize_t k = i + 1; k < npiv; k++) {
-                uint64_t c = x[pslot[k]] % p;
+                uint64_t c = mod_p(x[pslot[k]], p, pinv);
                 if (c) {
                     uint64_t f = p - c, *y = piv[k];
                     for (Py_ssize_t s = 0; s <= pslot[k]; s++)
                         x[s] += f * y[s];
                     if (++n >= hmax) {
-                        normalize(x, pslot[i] + 1, p);
+                        normalize(x, pslot[i] + 1, p, pinv);
                         n = 0;
                     }
                 }
             }
-            normalize(x, pslot[i] + 1, p);
+            normalize(x, pslot[i] + 1, p, pinv);
         }
         /* E by increasing pivot slot */
         Py_ssize_t *order = malloc((size_t)(npiv ? npiv : 1) * sizeof(Py_ssize_t));
@@ -404,7 +415,7 @@ static PyObject *f4_reduce(PyObject *self, PyObject *args)
         }
         Py_ssize_t b = T.len[j];
         if (seq) {
-            b = reduce_seq(rowof, K, accP, acc, m, p, poff, pcol, pval, rowof[j], j);
+            b = reduce_seq(rowof, K, accP, acc, m, p, pinv, poff, pcol, pval, rowof[j], j);
             if (b < 0) {
                 PyErr_SetString(PyExc_ValueError, "f4 rows: bad pivot reference");
                 goto done;
@@ -601,7 +612,13 @@ done:
 
 PyObject *f4_layout(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *f4_words(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
+PyObject *f4_exponents(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
+PyObject *f4_pack(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
+PyObject *f4_term_dicts(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *fglm_step(PyObject *self, PyObject *args);  /* kernel/_fglm.c */
+PyObject *f4_ratrec_rows(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
+PyObject *f4_agree_rows(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
+PyObject *f4_fractions(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
 extern PyTypeObject PairsType;  /* kernel/_f4pairs.c */
 
 static PyMethodDef methods[] = {
@@ -610,7 +627,13 @@ static PyMethodDef methods[] = {
     {"subplan", f4_subplan, METH_VARARGS, "The plan of some pair rows and the reducers they need (see the source)."},
     {"layout", f4_layout, METH_VARARGS, "F4's symbolic preprocessing and matrix layout (see kernel/_f4sym.c)."},
     {"words", f4_words, METH_VARARGS, "Packed monomials as little-endian 64-bit words (see kernel/_f4sym.c)."},
+    {"exponents", f4_exponents, METH_VARARGS, "The exponents of packed monomials (see kernel/_f4sym.c)."},
+    {"pack", f4_pack, METH_VARARGS, "Exponent vectors as packed monomials (see kernel/_f4sym.c)."},
+    {"term_dicts", f4_term_dicts, METH_VARARGS, "Packed rows as {exponents: coefficient} dicts (see kernel/_f4sym.c)."},
     {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p (see kernel/_fglm.c)."},
+    {"ratrec_rows", f4_ratrec_rows, METH_VARARGS, "Rational reconstruction of a lift's rows (see kernel/_f4lift.c)."},
+    {"agree_rows", f4_agree_rows, METH_VARARGS, "A lift's rows against residues modulo p (see kernel/_f4lift.c)."},
+    {"fractions", f4_fractions, METH_VARARGS, "A lift's rows as python-flint fractions (see kernel/_f4lift.c)."},
     {NULL, NULL, 0, NULL}
 };
 

@@ -1,22 +1,25 @@
 /* F4's symbolic preprocessing and matrix layout, compiled (part of the optional extension
  * _f4rows; kernel/f4.py's F4._layout and F4._matrix_compiled do the same in Python).
  *
- * layout(nw, guard, dshift, ebits, maxdeg, mons, tdeg, coefs, reducers, specs, pivots)
- *   -> (pivcols, nonpivot, redk, off, col, val, work), or None when a row's degree exceeds maxdeg
+ * layout(nw, guard, dshift, ebits, maxdeg, mons, tdeg, coefs, active, specs, pivots)
+ *   -> (pivcols, nonpivot, ids, off, col, val, rk, rstart, work), or None when a row's degree
+ *   exceeds maxdeg
  *
  * Monomials are packed as in kernel/monomials.py, here as nw little-endian 64-bit words
  * (``int.to_bytes(8 nw, "little")``); guard holds the guard bits, the total degree is the
  * field of ebits bits at bit dshift.  mons[k] and coefs[k] (bytes): the terms of basis element
- * k, decreasing, and their coefficients (uint64); tdeg[k] its total degree; reducers (int32):
- * the basis elements to search, in order, for a divisor of a monomial; specs: the pair rows
- * (k, u) (u: packed cofactor, bytes); pivots: the pair rows chosen as reducers (L, k, u) of
- * their leading monomial L.  Every monomial of a row x^u * poly[k] that is not a pivot yet
- * gets as reducer the first element of reducers whose leading monomial divides it (its row
- * joins the matrix), else it is a non-pivot column.
- * Returns the pivot columns and the non-pivot monomials (Python ints, increasing), redk (the
- * basis element of each reducer by pivot id) and the rows flat as kernel/f4_rows.Flat holds
- * them (bytes: off int64, col int32, val uint64): the reducers by pivot id without their
- * leading term, then the pair rows in the order given; work: the number of terms of the
+ * k, decreasing, and their coefficients (uint64); tdeg[k] its total degree; active[k]: whether
+ * element k serves as a reducer: the reducer of a monomial is the first active element, by
+ * increasing number of terms (then by index), whose leading monomial divides it; specs: the
+ * pair rows (k, u) (u: packed cofactor, bytes or a Python int); pivots: a dict {L: (k, u)} of
+ * the pair rows chosen as reducers of their leading monomial L (in its order).  Every
+ * monomial of a row x^u * poly[k] that is not a pivot yet gets its reducer's row (which joins
+ * the matrix), else it is a non-pivot column.
+ * Returns the pivot columns and the non-pivot monomials (Python ints, increasing) and the rows
+ * flat as kernel/f4_rows.Flat holds them (bytes: ids int32, the pivot ids 0..K-1 of the
+ * reducers; off int64, col int32, val uint64: the reducers by pivot id without their leading
+ * term, then the pair rows in the order given), per row its basis element rk and first term
+ * rstart (int32: 1 for a reducer, 0 for a pair row); work: the number of terms of the
  * distinct rows.
  */
 #define PY_SSIZE_T_CLEAN
@@ -70,6 +73,14 @@ static const uint64_t *key_at(const Keys *t, Py_ssize_t i)
     return t->keys + (size_t)i * t->kw;
 }
 
+static int same_words(const uint64_t *a, const uint64_t *b, int kw)
+{
+    for (int i = 0; i < kw; i++)
+        if (a[i] != b[i])
+            return 0;
+    return 1;
+}
+
 /* The number of key, inserted when absent (*fresh then 1); -1 when out of memory. */
 static Py_ssize_t keys_put(Keys *t, const uint64_t *key, int *fresh)
 {
@@ -79,7 +90,7 @@ static Py_ssize_t keys_put(Keys *t, const uint64_t *key, int *fresh)
         int32_t i = t->slot[h];
         if (i < 0)
             break;
-        if (!memcmp(key_at(t, i), key, (size_t)kw * sizeof(uint64_t))) {
+        if (same_words(key_at(t, i), key, kw)) {
             *fresh = 0;
             return i;
         }
@@ -215,62 +226,92 @@ static int reserve64(int64_t **a, Py_ssize_t *cap, Py_ssize_t n)
     return 0;
 }
 
-static int parse_row(PyObject *o, int with_lead, const Basis *B, uint64_t *key, uint64_t *lead)
+/* A packed monomial given as bytes (nw little-endian words) or as a nonnegative integer (a Python
+ * int, or another integer type such as python-flint's fmpz through __index__). */
+static int parse_words(PyObject *o, uint64_t *dst, int nw)
 {
-    /* (k, u) or (L, k, u): key = u words then k; lead = L */
-    Py_ssize_t n = with_lead ? 3 : 2;
-    if (!PyTuple_Check(o) || PyTuple_GET_SIZE(o) != n)
+    if (PyBytes_Check(o)) {
+        if (PyBytes_GET_SIZE(o) != 8 * nw)
+            return -1;
+        memcpy(dst, PyBytes_AS_STRING(o), 8 * (size_t)nw);
+        return 0;
+    }
+    PyObject *x = PyNumber_Index(o);
+    if (x == NULL) {
+        PyErr_Clear();
+        return -1;
+    }
+    int bad;
+    if (nw == 1) {
+        unsigned long long v = PyLong_AsUnsignedLongLong(x);
+        bad = v == (unsigned long long)-1 && PyErr_Occurred();
+        dst[0] = v;
+    } else {
+#if PY_VERSION_HEX >= 0x030D0000
+        Py_ssize_t need = PyLong_AsNativeBytes(x, dst, 8 * (Py_ssize_t)nw,
+                                               Py_ASNATIVEBYTES_LITTLE_ENDIAN | Py_ASNATIVEBYTES_REJECT_NEGATIVE);
+        bad = need < 0 || need > 8 * nw;
+#else
+        bad = _PyLong_AsByteArray((PyLongObject *)x, (unsigned char *)dst, 8 * (size_t)nw, 1, 0) != 0;
+#endif
+    }
+    Py_DECREF(x);
+    if (bad)
+        PyErr_Clear();
+    return bad ? -1 : 0;
+}
+
+static int parse_row(PyObject *lo, PyObject *o, const Basis *B, uint64_t *key, uint64_t *lead)
+{
+    /* (k, u), and the leading monomial L of a pair row chosen as reducer (lo, else NULL):
+     * key = u words then k; lead = L */
+    if (!PyTuple_Check(o) || PyTuple_GET_SIZE(o) != 2)
         return -1;
     int nw = B->nw;
-    PyObject *ko = PyTuple_GET_ITEM(o, n - 2), *uo = PyTuple_GET_ITEM(o, n - 1);
-    Py_ssize_t k = PyLong_AsSsize_t(ko);
-    if (k < 0 || k >= B->nbasis || !PyBytes_Check(uo) || PyBytes_GET_SIZE(uo) != 8 * nw)
+    Py_ssize_t k = PyLong_AsSsize_t(PyTuple_GET_ITEM(o, 0));
+    if (k < 0 || k >= B->nbasis || parse_words(PyTuple_GET_ITEM(o, 1), key, nw))
         return -1;
-    memcpy(key, PyBytes_AS_STRING(uo), 8 * (size_t)nw);
     key[nw] = (uint64_t)k;
-    if (with_lead) {
-        PyObject *lo = PyTuple_GET_ITEM(o, 0);
-        if (!PyBytes_Check(lo) || PyBytes_GET_SIZE(lo) != 8 * nw)
-            return -1;
-        memcpy(lead, PyBytes_AS_STRING(lo), 8 * (size_t)nw);
-    }
-    return 0;
+    return lo != NULL && parse_words(lo, lead, nw) ? -1 : 0;
 }
 
 PyObject *f4_layout(PyObject *self, PyObject *args)
 {
     int nw, dshift, ebits;
     long long maxdeg;
-    Py_buffer guard, reducers;
-    PyObject *mons_o, *tdeg_o, *coefs_o, *specs_o, *pivots_o;
-    if (!PyArg_ParseTuple(args, "iy*iiLO!O!O!y*O!O!", &nw, &guard, &dshift, &ebits, &maxdeg,
+    Py_buffer guard;
+    PyObject *mons_o, *tdeg_o, *coefs_o, *active_o, *specs_o, *pivots_o;
+    if (!PyArg_ParseTuple(args, "iy*iiLO!O!O!O!O!O!", &nw, &guard, &dshift, &ebits, &maxdeg,
                           &PyList_Type, &mons_o, &PyList_Type, &tdeg_o, &PyList_Type, &coefs_o,
-                          &reducers, &PyList_Type, &specs_o, &PyList_Type, &pivots_o))
+                          &PyList_Type, &active_o, &PyList_Type, &specs_o, &PyDict_Type, &pivots_o))
         return NULL;
     PyObject *result = NULL;
     Basis B = {nw, PyList_GET_SIZE(mons_o), NULL, NULL, NULL};
     Keys rows = {0}, mono = {0};
     int32_t *red = NULL, *midx = NULL, *crow = NULL, *order = NULL, *code = NULL, *col = NULL;
+    int32_t *rowk = NULL, *rowstart = NULL;
     int64_t *rowoff = NULL, *off = NULL;
     long long *tdeg = NULL;
     uint64_t *val = NULL, *leads = NULL, *tmp = NULL;
     Py_ssize_t redcap = 0, midxcap = 0, rowoffcap = 0, nmidx = 0;
-    Py_ssize_t nspec = PyList_GET_SIZE(specs_o), npiv0 = PyList_GET_SIZE(pivots_o);
-    Py_ssize_t nred = reducers.len / (Py_ssize_t)sizeof(int32_t);
-    const int32_t *rk = reducers.buf;
+    Py_ssize_t nspec = PyList_GET_SIZE(specs_o);
+    Py_ssize_t nred = 0;
+    int32_t *rk = NULL;
     const uint64_t *G = guard.buf;
 
     if (nw < 1 || nw > 64 || guard.len != 8 * nw || ebits < 1 || ebits > 62 || dshift < 0 || dshift + ebits > 64 * nw
-        || PyList_GET_SIZE(tdeg_o) != B.nbasis || PyList_GET_SIZE(coefs_o) != B.nbasis)
+        || PyList_GET_SIZE(tdeg_o) != B.nbasis || PyList_GET_SIZE(coefs_o) != B.nbasis
+        || PyList_GET_SIZE(active_o) != B.nbasis)
         goto bad;
     B.mons = malloc((size_t)(B.nbasis + 1) * sizeof(uint64_t *));
     B.coefs = malloc((size_t)(B.nbasis + 1) * sizeof(uint64_t *));
     B.len = malloc((size_t)(B.nbasis + 1) * sizeof(Py_ssize_t));
     tdeg = malloc((size_t)(B.nbasis + 1) * sizeof(long long));
-    leads = malloc((size_t)(nred + 1) * nw * sizeof(uint64_t));
+    rk = malloc((size_t)(B.nbasis + 1) * sizeof(int32_t));
+    leads = malloc((size_t)(B.nbasis + 1) * nw * sizeof(uint64_t));
     tmp = malloc(3 * ((size_t)nw + 1) * sizeof(uint64_t));
     crow = malloc((size_t)(nspec + 1) * sizeof(int32_t));
-    if (!B.mons || !B.coefs || !B.len || !tdeg || !leads || !tmp || !crow || keys_init(&rows, nw + 1) || keys_init(&mono, nw))
+    if (!B.mons || !B.coefs || !B.len || !tdeg || !rk || !leads || !tmp || !crow || keys_init(&rows, nw + 1) || keys_init(&mono, nw))
         goto nomem;
     for (Py_ssize_t k = 0; k < B.nbasis; k++) {
         PyObject *m = PyList_GET_ITEM(mons_o, k), *c = PyList_GET_ITEM(coefs_o, k);
@@ -284,16 +325,29 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
         if (tdeg[k] == -1 && PyErr_Occurred())
             goto done;
     }
-    for (Py_ssize_t i = 0; i < nred; i++) {
-        if (rk[i] < 0 || rk[i] >= B.nbasis || B.len[rk[i]] == 0)
+    for (Py_ssize_t k = 0; k < B.nbasis; k++) {  /* the reducers: active, by length, then index */
+        int on = PyObject_IsTrue(PyList_GET_ITEM(active_o, k));
+        if (on < 0)
+            goto done;
+        if (!on)
+            continue;
+        if (B.len[k] == 0)
             goto bad;
-        memcpy(leads + (size_t)i * nw, B.mons[rk[i]], 8 * (size_t)nw);
+        Py_ssize_t i = nred++;
+        while (i > 0 && B.len[rk[i - 1]] > B.len[k]) {
+            rk[i] = rk[i - 1];
+            i--;
+        }
+        rk[i] = (int32_t)k;
     }
+    for (Py_ssize_t i = 0; i < nred; i++)
+        memcpy(leads + (size_t)i * nw, B.mons[rk[i]], 8 * (size_t)nw);
     uint64_t *key = tmp, *x = tmp + nw + 1, *lead = tmp + 2 * (nw + 1);
     int fresh;
     /* the pair rows chosen as reducers, then the other pair rows */
-    for (Py_ssize_t i = 0; i < npiv0; i++) {
-        if (parse_row(PyList_GET_ITEM(pivots_o, i), 1, &B, key, lead))
+    PyObject *lo, *spec;
+    for (Py_ssize_t pos = 0; PyDict_Next(pivots_o, &pos, &lo, &spec);) {
+        if (parse_row(lo, spec, &B, key, lead))
             goto bad;
         Py_ssize_t r = keys_put(&rows, key, &fresh);
         Py_ssize_t xi = keys_put(&mono, lead, &fresh);
@@ -302,7 +356,7 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
         red[xi] = (int32_t)r;
     }
     for (Py_ssize_t i = 0; i < nspec; i++) {
-        if (parse_row(PyList_GET_ITEM(specs_o, i), 0, &B, key, lead))
+        if (parse_row(NULL, PyList_GET_ITEM(specs_o, i), &B, key, lead))
             goto bad;
         Py_ssize_t r = keys_put(&rows, key, &fresh);
         if (r < 0)
@@ -365,16 +419,17 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     cmp_nw = nw;
     cmp_base = mono.keys;
     qsort(order, (size_t)N, sizeof(int32_t), cmp_mono);
-    PyObject *pivcols = PyList_New(0), *nonpivot = PyList_New(0), *redk = PyList_New(0);
-    result = Py_BuildValue("(NNN)", pivcols, nonpivot, redk);  /* owns the lists */
-    if (!pivcols || !nonpivot || !redk || !result)
+    PyObject *pivcols = PyList_New(0), *nonpivot = PyList_New(0);
+    result = Py_BuildValue("(NN)", pivcols, nonpivot);  /* owns the lists */
+    if (!pivcols || !nonpivot || !result)
         goto done;
     int32_t *pivrow = malloc((size_t)(N + 1) * sizeof(int32_t));
     if (!pivrow)
         goto nomem;
     for (Py_ssize_t i = 0; i < N; i++) {
         Py_ssize_t xi = order[i];
-        PyObject *v = _PyLong_FromByteArray((const unsigned char *)key_at(&mono, xi), 8 * (size_t)nw, 1, 0);
+        PyObject *v = nw == 1 ? PyLong_FromUnsignedLongLong(key_at(&mono, xi)[0])
+                              : _PyLong_FromByteArray((const unsigned char *)key_at(&mono, xi), 8 * (size_t)nw, 1, 0);
         if (!v) {
             free(pivrow);
             goto fail;
@@ -403,7 +458,9 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     off = malloc((size_t)(K + nspec + 1) * sizeof(int64_t));
     col = malloc((size_t)(total + 1) * sizeof(int32_t));
     val = malloc((size_t)(total + 1) * sizeof(uint64_t));
-    if (!off || !col || !val) {
+    rowk = malloc((size_t)(2 * (K + nspec) + 1) * sizeof(int32_t));  /* ids, then rk */
+    rowstart = malloc((size_t)(K + nspec + 1) * sizeof(int32_t));
+    if (!off || !col || !val || !rowk || !rowstart) {
         free(pivrow);
         goto nomem_result;
     }
@@ -412,15 +469,10 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
     for (Py_ssize_t q = 0; q < K + nspec; q++) {
         Py_ssize_t r = q < K ? pivrow[q] : crow[q - K], start = q < K ? 1 : 0;
         Py_ssize_t k = (Py_ssize_t)key_at(&rows, r)[nw];
-        if (q < K) {
-            PyObject *kv = PyLong_FromSsize_t(k);
-            if (!kv || PyList_Append(redk, kv)) {
-                Py_XDECREF(kv);
-                free(pivrow);
-                goto fail;
-            }
-            Py_DECREF(kv);
-        }
+        if (q < K)
+            rowk[q] = (int32_t)q;
+        rowk[K + q] = (int32_t)k;
+        rowstart[q] = (int32_t)start;
         const int32_t *mi = midx + rowoff[r];
         Py_ssize_t n = rowoff[r + 1] - rowoff[r];
         for (Py_ssize_t t = start; t < n; t++) {
@@ -430,10 +482,13 @@ PyObject *f4_layout(PyObject *self, PyObject *args)
         off[q + 1] = e;
     }
     free(pivrow);
-    PyObject *full = Py_BuildValue("(OOOy#y#y#L)", PyTuple_GET_ITEM(result, 0), PyTuple_GET_ITEM(result, 1),
-                                   PyTuple_GET_ITEM(result, 2), (const char *)off, (Py_ssize_t)((K + nspec + 1) * sizeof(int64_t)),
+    PyObject *full = Py_BuildValue("(OOy#y#y#y#y#y#L)", PyTuple_GET_ITEM(result, 0), PyTuple_GET_ITEM(result, 1),
+                                   (const char *)rowk, (Py_ssize_t)(K * sizeof(int32_t)),
+                                   (const char *)off, (Py_ssize_t)((K + nspec + 1) * sizeof(int64_t)),
                                    (const char *)col, (Py_ssize_t)(e * sizeof(int32_t)),
-                                   (const char *)val, (Py_ssize_t)(e * sizeof(uint64_t)), work);
+                                   (const char *)val, (Py_ssize_t)(e * sizeof(uint64_t)),
+                                   (const char *)(rowk + K), (Py_ssize_t)((K + nspec) * sizeof(int32_t)),
+                                   (const char *)rowstart, (Py_ssize_t)((K + nspec) * sizeof(int32_t)), work);
     Py_DECREF(result);
     result = full;
     goto done;
@@ -447,7 +502,9 @@ fail:
     Py_CLEAR(result);
 done:
     PyBuffer_Release(&guard);
-    PyBuffer_Release(&reducers);
+    free(rk);
+    free(rowk);
+    free(rowstart);
     free(B.mons);
     free(B.coefs);
     free(B.len);
@@ -519,5 +576,240 @@ PyObject *f4_words(PyObject *self, PyObject *args)
         }
     }
     Py_DECREF(fast);
+    return out;
+}
+
+/* exponents(monomials, eshifts, ebits) -> {monomial: exponent tuple}: the exponents of packed
+ * monomials (nonnegative integers) whose exponent fields lie in the lowest 64 bits (else
+ * ValueError), each unpacked once: field f of ebits bits at bit eshifts[f] (kernel/monomials.py's
+ * Packing.unpack_all does the same in Python). */
+PyObject *f4_exponents(PyObject *self, PyObject *args)
+{
+    PyObject *seq, *shifts_o;
+    int ebits;
+    if (!PyArg_ParseTuple(args, "OO!i", &seq, &PyTuple_Type, &shifts_o, &ebits))
+        return NULL;
+    Py_ssize_t n = PyTuple_GET_SIZE(shifts_o);
+    if (ebits < 1 || ebits > 62 || n > 64) {
+        PyErr_SetString(PyExc_ValueError, "exponents: bad packing");
+        return NULL;
+    }
+    int shift[64], top = 0;
+    for (Py_ssize_t f = 0; f < n; f++) {
+        long v = PyLong_AsLong(PyTuple_GET_ITEM(shifts_o, f));
+        if (v < 0 || v > (1L << 20)) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_ValueError, "exponents: bad packing");
+            return NULL;
+        }
+        shift[f] = (int)v;
+        if (shift[f] + ebits > top)
+            top = shift[f] + ebits;
+    }
+    if (top > 64) {
+        PyErr_SetString(PyExc_ValueError, "exponents: the exponent fields exceed 64 bits");
+        return NULL;
+    }
+    PyObject *fast = PySequence_Fast(seq, "exponents: a sequence of ints");
+    if (fast == NULL)
+        return NULL;
+    PyObject *out = PyDict_New();
+    if (out == NULL) {
+        Py_DECREF(fast);
+        return NULL;
+    }
+    for (Py_ssize_t i = 0; i < PySequence_Fast_GET_SIZE(fast); i++) {
+        PyObject *m = PySequence_Fast_GET_ITEM(fast, i);
+        int known = PyDict_Contains(out, m);
+        if (known > 0)
+            continue;
+        PyObject *t = NULL, *x = known == 0 ? PyNumber_Index(m) : NULL;
+        if (x != NULL) {
+            uint64_t w = PyLong_AsUnsignedLongLongMask(x);  /* the lowest 64 bits */
+            t = PyErr_Occurred() ? NULL : PyTuple_New(n);
+            for (Py_ssize_t f = 0; t && f < n; f++) {
+                PyObject *e = PyLong_FromUnsignedLongLong(field(&w, shift[f], ebits, 1));
+                if (e == NULL)
+                    Py_CLEAR(t);
+                else
+                    PyTuple_SET_ITEM(t, f, e);
+            }
+        } else if (known == 0) {
+            PyErr_Clear();
+            PyErr_SetString(PyExc_TypeError, "exponents: a sequence of nonnegative ints");
+        }
+        Py_XDECREF(x);
+        if (t == NULL || PyDict_SetItem(out, m, t)) {
+            Py_XDECREF(t);
+            Py_DECREF(out);
+            Py_DECREF(fast);
+            return NULL;
+        }
+        Py_DECREF(t);
+    }
+    Py_DECREF(fast);
+    return out;
+}
+
+/* pack(exponents, units) -> [packed monomial], or None when a unit or a monomial does not fit 128
+ * bits: each exponent vector e (a sequence of nonnegative ints) as the sum of e_f units[f]
+ * (kernel/monomials.py's Packing.pack, which computes the same in Python ints). */
+PyObject *f4_pack(PyObject *self, PyObject *args)
+{
+    PyObject *seq, *units_o;
+    if (!PyArg_ParseTuple(args, "OO!", &seq, &PyTuple_Type, &units_o))
+        return NULL;
+    Py_ssize_t n = PyTuple_GET_SIZE(units_o);
+    if (n > 1024)
+        Py_RETURN_NONE;
+    unsigned __int128 units[1024];
+    for (Py_ssize_t f = 0; f < n; f++) {
+        PyObject *u = PyTuple_GET_ITEM(units_o, f);
+        unsigned char b[16];
+        if (!PyLong_Check(u) || _PyLong_AsByteArray((PyLongObject *)u, b, 16, 1, 0)) {
+            PyErr_Clear();
+            Py_RETURN_NONE;
+        }
+        unsigned __int128 v = 0;
+        for (int i = 15; i >= 0; i--)
+            v = (v << 8) | b[i];
+        units[f] = v;
+    }
+    PyObject *fast = PySequence_Fast(seq, "pack: a sequence of exponent vectors");
+    if (fast == NULL)
+        return NULL;
+    Py_ssize_t N = PySequence_Fast_GET_SIZE(fast);
+    PyObject *out = PyList_New(N);
+    for (Py_ssize_t i = 0; out && i < N; i++) {
+        PyObject *e = PySequence_Fast(PySequence_Fast_GET_ITEM(fast, i), "pack: exponent vectors");
+        if (e == NULL || PySequence_Fast_GET_SIZE(e) != n) {
+            if (e != NULL)
+                PyErr_SetString(PyExc_ValueError, "pack: an exponent vector of another length");
+            Py_XDECREF(e);
+            Py_CLEAR(out);
+            break;
+        }
+        unsigned __int128 acc = 0, t;
+        int over = 0;
+        for (Py_ssize_t f = 0; f < n && !over; f++) {
+            long x = PyLong_AsLong(PySequence_Fast_GET_ITEM(e, f));
+            if (x == -1 && PyErr_Occurred()) {
+                PyErr_Clear();
+                over = 1;
+            } else {
+                over = x < 0 || __builtin_mul_overflow((unsigned __int128)x, units[f], &t)
+                       || __builtin_add_overflow(acc, t, &acc);
+            }
+        }
+        Py_DECREF(e);
+        if (over) {  /* beyond 128 bits (or not a small nonnegative exponent): the caller packs in Python */
+            Py_DECREF(out);
+            Py_DECREF(fast);
+            Py_RETURN_NONE;
+        }
+        PyObject *v;
+        if ((acc >> 64) == 0) {
+            v = PyLong_FromUnsignedLongLong((uint64_t)acc);
+        } else {
+            unsigned char bytes[16];
+            for (int k = 0; k < 16; k++)
+                bytes[k] = (unsigned char)(acc >> (8 * k));
+            v = _PyLong_FromByteArray(bytes, 16, 1, 0);
+        }
+        if (v == NULL)
+            Py_CLEAR(out);
+        else
+            PyList_SET_ITEM(out, i, v);
+    }
+    Py_DECREF(fast);
+    return out;
+}
+
+/* term_dicts(rows, eshifts, ebits, scale) -> [{exponent tuple: coefficient}]: each row (packed
+ * monomials, coefficients: two sequences of equal length) as a dict in the row's order, the
+ * exponents cut from the packed monomials as exponents() does (fields within the lowest 64 bits,
+ * else ValueError; the tuples of equal monomials shared), each coefficient multiplied by scale
+ * unless scale is None (kernel/monomials.py's Packing.term_dicts). */
+PyObject *f4_term_dicts(PyObject *self, PyObject *args)
+{
+    PyObject *rows, *shifts_o, *scale;
+    int ebits;
+    if (!PyArg_ParseTuple(args, "OO!iO", &rows, &PyTuple_Type, &shifts_o, &ebits, &scale))
+        return NULL;
+    Py_ssize_t n = PyTuple_GET_SIZE(shifts_o);
+    int shift[64], top = 0;
+    if (ebits < 1 || ebits > 62 || n > 64) {
+        PyErr_SetString(PyExc_ValueError, "term_dicts: bad packing");
+        return NULL;
+    }
+    for (Py_ssize_t f = 0; f < n; f++) {
+        long v = PyLong_AsLong(PyTuple_GET_ITEM(shifts_o, f));
+        if (v < 0 || v > 64) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_ValueError, "term_dicts: the exponent fields exceed 64 bits");
+            return NULL;
+        }
+        shift[f] = (int)v;
+        if (shift[f] + ebits > top)
+            top = shift[f] + ebits;
+    }
+    if (top > 64) {
+        PyErr_SetString(PyExc_ValueError, "term_dicts: the exponent fields exceed 64 bits");
+        return NULL;
+    }
+    PyObject *fast = PySequence_Fast(rows, "term_dicts: a sequence of rows");
+    if (fast == NULL)
+        return NULL;
+    PyObject *seen = PyDict_New(), *out = PyList_New(0);
+    if (seen == NULL)
+        Py_CLEAR(out);
+    for (Py_ssize_t r = 0; out && r < PySequence_Fast_GET_SIZE(fast); r++) {
+        PyObject *row = PySequence_Fast_GET_ITEM(fast, r);
+        PyObject *ms = NULL, *cs = NULL, *d = NULL;
+        if (!PyTuple_Check(row) || PyTuple_GET_SIZE(row) != 2
+            || !(ms = PySequence_Fast(PyTuple_GET_ITEM(row, 0), "term_dicts: monomials"))
+            || !(cs = PySequence_Fast(PyTuple_GET_ITEM(row, 1), "term_dicts: coefficients"))
+            || PySequence_Fast_GET_SIZE(ms) != PySequence_Fast_GET_SIZE(cs) || !(d = PyDict_New())) {
+            if (!PyErr_Occurred())
+                PyErr_SetString(PyExc_ValueError, "term_dicts: rows of (monomials, coefficients)");
+            Py_XDECREF(ms);
+            Py_XDECREF(cs);
+            Py_CLEAR(out);
+            break;
+        }
+        int bad = PyList_Append(out, d) < 0;
+        Py_DECREF(d);
+        for (Py_ssize_t t = 0; !bad && t < PySequence_Fast_GET_SIZE(ms); t++) {
+            PyObject *m = PySequence_Fast_GET_ITEM(ms, t), *c = PySequence_Fast_GET_ITEM(cs, t);
+            PyObject *e = PyDict_GetItemWithError(seen, m);  /* borrowed */
+            if (e != NULL) {
+                Py_INCREF(e);
+            } else if (!PyErr_Occurred()) {
+                PyObject *x = PyNumber_Index(m);
+                uint64_t w = x ? PyLong_AsUnsignedLongLongMask(x) : 0;  /* the lowest 64 bits */
+                Py_XDECREF(x);
+                e = x && !PyErr_Occurred() ? PyTuple_New(n) : NULL;
+                for (Py_ssize_t f = 0; e && f < n; f++) {
+                    PyObject *v = PyLong_FromUnsignedLongLong(field(&w, shift[f], ebits, 1));
+                    if (v == NULL)
+                        Py_CLEAR(e);
+                    else
+                        PyTuple_SET_ITEM(e, f, v);
+                }
+                if (e && PyDict_SetItem(seen, m, e))
+                    Py_CLEAR(e);
+            }
+            PyObject *v = e == NULL ? NULL : scale == Py_None ? (Py_INCREF(c), c) : PyNumber_Multiply(scale, c);
+            bad = v == NULL || PyDict_SetItem(d, e, v) < 0;
+            Py_XDECREF(e);
+            Py_XDECREF(v);
+        }
+        Py_DECREF(ms);
+        Py_DECREF(cs);
+        if (bad)
+            Py_CLEAR(out);
+    }
+    Py_DECREF(fast);
+    Py_XDECREF(seen);
     return out;
 }

@@ -26,14 +26,14 @@ prime below ``2^31`` runs there in one call, on the same rows.
 from __future__ import annotations
 
 from functools import partial
-from itertools import chain, compress, islice
+from itertools import islice
 from typing import Sequence
 
 import flint
 
 from .buchberger import TooLong
 from .f4_rows import LAYOUT, CodedRow, Flat, Packed, Plan, compiled
-from .f4_pairs import pair_set
+from .f4_pairs import pair_rows, pair_set
 from .f4_trace import Step, Trace
 from .f4_vectors import RowSpec, Vectors, echelon, support
 from .monomials import Packing, packing
@@ -96,14 +96,16 @@ class F4:
             td = max([(m >> dshift) & emask for m in ms])
         if td > P.maxdeg:
             raise PackingOverflow
+        if sugar is None:
+            sugar = td
         self.mons.append(ms)
         self.coefs.append(cs)
         if self.neg is not None:
             self.neg.append([self.p - c for c in cs])
         self.tdeg.append(td)
-        self.sugar.append(td if sugar is None else sugar)
+        self.sugar.append(sugar)
         self.active.append(is_basis)
-        self.pairs.add(int(ms[0]), self.sugar[-1])
+        self.pairs.add(int(ms[0]), sugar)
         return len(self.mons) - 1
 
     def _update(self, h: int) -> None:
@@ -260,12 +262,10 @@ class F4:
         """:meth:`_matrix_compiled` with the symbolic preprocessing compiled too
         (:class:`~.f4_rows.Packed`); the reducer of a monomial is the first active element, by
         increasing length, whose leading monomial divides it."""
-        mons, active = self.mons, self.active
-        reducers = sorted(compress(range(len(mons)), active), key=list(map(len, mons)).__getitem__)
-        out = self.packed.layout(mons, self.coefs, self.tdeg, reducers, crow_specs, pivots)
+        out = self.packed.layout(self.mons, self.coefs, self.tdeg, self.active, crow_specs, pivots)
         if out is None:
             raise PackingOverflow
-        pivcols, nonpivot, redk, flat, work = out
+        pivcols, nonpivot, flat, rk, rstart, work = out
         self.work += work
         self.dense += work * len(nonpivot)
         if self.work > self.budget or self.dense > DENSE_PER_ENTRY * self.budget:
@@ -277,35 +277,13 @@ class F4:
         result = flat.reduce(self.p, len(nonpivot), K, want, stop)
         recorded = None
         if self.trace is not None:
-            crowk = [k for k, _ in crow_specs]
-            recorded = partial(_coded_rows, flat.off, flat.col, redk, crowk)
-            self._plan = Plan.of_flat(flat, redk + crowk, [1] * K + [0] * len(crow_specs))
+            recorded = partial(_coded_rows, flat.off, flat.col, rk, K)
+            self._plan = Plan.of_flat(flat, rk, rstart)
         return pivcols, nonpivot, result, recorded
-
-    def _pair_rows(self, sel: list[tuple[int, int, int, int]]):
-        """The rows of the selected pairs: per lcm one row becomes its reducer, the others
-        are to be reduced (``(k, u)`` stands for ``x^u * poly[k]``)."""
-        pivots: dict[int, tuple[int, int]] = {}
-        crows: list[tuple[int, int]] = []
-        seen: set[tuple[int, int]] = set()
-        mons = self.mons
-        for s, L, i, j in sel:
-            for k in ((i,) if j < 0 else (i, j)):
-                spec = (k, L - mons[k][0])
-                if spec in seen:
-                    continue
-                seen.add(spec)
-                if j >= 0 and L not in pivots:
-                    pivots[L] = spec
-                else:
-                    crows.append(spec)
-        return pivots, crows
 
     def _step(self) -> bool:
         """Process the pairs of lowest degree; returns False when 1 is in the ideal."""
-        sel = self.pairs.take()
-        d = sel[0][0]
-        pivots, crows = self._pair_rows(sel)
+        d, pivots, crows = self.pairs.take_rows()
         if not crows:
             return True
         if compiled(self.p):
@@ -330,8 +308,9 @@ class F4:
                     for st in self.trace.steps:
                         st.let_go()
             self.trace.steps.append(step)
+        monomial = nonpivot.__getitem__
         for slots, vals in new:
-            k = self._add([nonpivot[s] for s in slots], vals, True, d)
+            k = self._add(list(map(monomial, slots)), vals, True, d)
             if self.mons[k][0] == 0:
                 return False
             self._update(k)
@@ -362,16 +341,8 @@ class F4:
 
     def _reduce(self) -> list[Row]:
         """Tail-reduce the minimal basis with one more back substitution."""
-        g = self.P.guard
         mons = self.mons
-        keep: list[int] = []  # the minimal elements by increasing leading monomial (divisors come first)
-        for k in sorted((k for k in range(len(mons)) if self.active[k]), key=lambda k: mons[k][0]):
-            xg = mons[k][0] | g
-            for j in keep:
-                if (xg - mons[j][0]) & g == g:
-                    break
-            else:
-                keep.append(k)
+        keep = sorted(self.pairs.minimal(self.active), key=lambda k: mons[k][0])  # the minimal elements
         pivots = {mons[k][0]: (k, 0) for k in keep}
         lead = [mons[k][0] for k in keep]
         if compiled(self.p):
@@ -386,7 +357,7 @@ class F4:
         out, final = [], []
         for lm, (slots, vals) in zip(lead, tails):
             j = where[lm]
-            out.append(([lm] + [nonpivot[s] for s in slots], [1] + vals))
+            out.append(([lm, *map(nonpivot.__getitem__, slots)], [1] + vals))
             final.append((j, slots))
         if self.trace is not None:
             self.trace.final = Step(len(pivcols), m, rows_of, [], [], [j for j, _ in final])
@@ -404,7 +375,7 @@ def is_groebner(polys: Sequence[Row], packing: Packing, p: int) -> bool:
     eng = F4([], packing, p)
     for ms, cs in polys:
         eng._update(eng._add(ms, cs, True))
-    pivots, crows = eng._pair_rows(eng.pairs.everything())
+    pivots, crows = pair_rows(eng.pairs.everything(), [int(ms[0]) for ms in eng.mons])
     if not crows:
         return True
     if compiled(p):
@@ -416,7 +387,7 @@ def pack_polys(gens: Sequence, packing: Packing, coeff) -> list[Row]:
     """Generators as packed rows (decreasing monomials), coefficients through ``coeff``."""
     rows = []
     for g in gens:
-        items = sorted(((packing.pack(e), c) for e, c in g.terms.items()), reverse=True)
+        items = sorted(zip(packing.pack_all(g.terms.keys()), g.terms.values()), reverse=True)
         rows.append(([m for m, _ in items], [coeff(c) for _, c in items]))
     return rows
 
@@ -445,9 +416,7 @@ def f4_modp(gens: Sequence, ring, budget: float = float("inf"), counter=None) ->
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = P.unpack_all(chain.from_iterable(ms for ms, _ in basis))
-    one = flint.nmod(1, p)  # one * c: an nmod, made faster than by nmod(c, p)
-    return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in basis]
+    return P.term_dicts(basis, flint.nmod(1, p))  # one * c: an nmod, made faster than by nmod(c, p)
 
 
 def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
@@ -477,15 +446,12 @@ def reduce_modp(basis: Sequence[dict], ring) -> list[dict]:
             break
         except PackingOverflow:
             maxdeg = 2 * maxdeg + 1
-    exps = P.unpack_all(chain.from_iterable(ms for ms, _ in out))
-    one = flint.nmod(1, p)
-    return [{exps[m]: one * c for m, c in zip(ms, cs)} for ms, cs in out]
+    return P.term_dicts(out, flint.nmod(1, p))
 
 
-def _coded_rows(off, col, redk: list[int], crowk: list[int]) -> tuple[list[CodedRow], list[CodedRow]]:
+def _coded_rows(off, col, rk, K: int) -> tuple[list[CodedRow], list[CodedRow]]:
     """The rows of a matrix laid out flat (offsets, column codes) as :class:`~.f4_rows.CodedRow`
-    (array slices of the codes): the reducers by pivot id (of basis elements ``redk``), then the
-    pair rows (of ``crowk``)."""
-    K = len(redk)
-    reds = [CodedRow(k, 1, col[off[j]:off[j + 1]]) for j, k in enumerate(redk)]
-    return reds, [CodedRow(k, 0, col[off[K + i]:off[K + i + 1]]) for i, k in enumerate(crowk)]
+    (slices of the codes): the ``K`` reducers by pivot id, then the pair rows, of the basis
+    elements ``rk`` (one per row)."""
+    rows = [CodedRow(k, 1 if r < K else 0, col[off[r]:off[r + 1]]) for r, k in enumerate(rk)]
+    return rows[:K], rows[K:]

@@ -112,6 +112,18 @@ class PairSet:
         active[h] = True
         return True
 
+    def minimal(self, active: list[bool]) -> list[int]:
+        """The active elements whose leading monomial no other active element's divides (of equal
+        ones, the first), by increasing index."""
+        g, leads = self.P.guard, self.leads
+        on = [k for k in range(len(active)) if active[k]]
+        out = []
+        for k in on:
+            xg = leads[k] | g
+            if not any((xg - leads[j]) & g == g and (leads[j] != leads[k] or j < k) for j in on if j != k):
+                out.append(k)
+        return out
+
     def lowest(self) -> int | None:
         """The lowest key (None without pairs)."""
         return min(pr[0] for pr in self.pairs) if self.pairs else None
@@ -123,6 +135,12 @@ class PairSet:
         self.pairs = [pr for pr in self.pairs if pr[0] != d]
         return sel
 
+    def take_rows(self) -> tuple[int, dict[int, tuple[int, int]], list[tuple[int, int]]]:
+        """The pairs of the lowest key ``d``, removed, as F4's rows: ``(d, pivots, rows)``
+        (:func:`pair_rows`)."""
+        sel = self.take()
+        return (sel[0][0], *pair_rows(sel, self.leads))
+
     def drop(self, d: int) -> None:
         """Forget the pairs of key ``d``."""
         self.pairs = [pr for pr in self.pairs if pr[0] != d]
@@ -133,3 +151,23 @@ class PairSet:
     def everything(self) -> list[tuple[int, int, int, int]]:
         """All pairs (in their order)."""
         return list(self.pairs)
+
+
+def pair_rows(sel: list[tuple[int, int, int, int]], leads: list[int]):
+    """F4's rows of the pairs ``sel`` (elements with leading monomials ``leads``): per lcm one
+    row becomes its reducer, the others are to be reduced; ``(k, u)`` stands for
+    ``x^u * poly[k]``.  Returns ``pivots`` ({lcm: row}) and the rows to reduce, each row once."""
+    pivots: dict[int, tuple[int, int]] = {}
+    rows: list[tuple[int, int]] = []
+    seen: set[tuple[int, int]] = set()
+    for s, L, i, j in sel:
+        for k in ((i,) if j < 0 else (i, j)):
+            spec = (k, L - leads[k])
+            if spec in seen:
+                continue
+            seen.add(spec)
+            if j >= 0 and L not in pivots:
+                pivots[L] = spec
+            else:
+                rows.append(spec)
+    return pivots, rows

@@ -43,11 +43,12 @@ class Flat:
         self.val = array("Q")
 
     @classmethod
-    def of(cls, K: int, off: bytes, col: bytes, val: bytes) -> "Flat":
-        """The rows as :meth:`Packed.layout` returns them (``K`` reducers by pivot id first)."""
-        flat = cls()
-        flat.ids.extend(range(K))
-        flat.off, flat.col, flat.val = array("q", off), array("i", col), array("Q", val)
+    def of(cls, ids: bytes, off: bytes, col: bytes, val: bytes) -> "Flat":
+        """The rows as :meth:`Packed.layout` returns them (bytes, viewed as arrays without a copy:
+        the reducers' pivot ids, offsets, column codes, coefficients)."""
+        flat = cls.__new__(cls)
+        flat.ids, flat.off = memoryview(ids).cast("i"), memoryview(off).cast("q")
+        flat.col, flat.val = memoryview(col).cast("i"), memoryview(val).cast("Q")
         return flat
 
     def add(self, codes, coefs) -> None:
@@ -84,23 +85,24 @@ class Packed:
                 self.mons.append(WORDS(mons[k], nw))
             else:
                 self.mons.append(b"".join([int(x).to_bytes(nb, "little") for x in mons[k]]))
-            self.coefs.append(array("Q", map(int, coefs[k])).tobytes())
+            try:
+                self.coefs.append(array("Q", coefs[k]).tobytes())
+            except TypeError:  # coefficients of another type (python-flint's nmod)
+                self.coefs.append(array("Q", map(int, coefs[k])).tobytes())
 
-    def layout(self, mons: list[list[int]], coefs: list[list[int]], tdeg: list[int], reducers: list[int],
+    def layout(self, mons: list[list[int]], coefs: list[list[int]], tdeg: list[int], active: list[bool],
                specs: list[tuple[int, int]], pivots: dict[int, tuple[int, int]]):
-        """Symbolic preprocessing and the matrix's rows (see ``kernel/_f4sym.c``):
-        ``(pivcols, nonpivot, redk, flat, work)``, or None when a row exceeds the packing."""
+        """Symbolic preprocessing and the matrix's rows (see ``kernel/_f4sym.c``; the reducers
+        are the ``active`` elements, shortest first): ``(pivcols, nonpivot, flat, rk, rstart,
+        work)`` (``rk``, ``rstart``: each row's basis element and first term, as a
+        :class:`Plan` takes them), or None when a row exceeds the packing."""
         self._sync(mons, coefs)
-        nb = self.nb
         dshift, ebits, maxdeg = self.fields
-        out = LAYOUT(self.nw, self.guard, dshift, ebits, maxdeg, self.mons, tdeg, self.coefs,
-                     array("i", reducers), [(k, int(u).to_bytes(nb, "little")) for k, u in specs],
-                     [(int(x).to_bytes(nb, "little"), k, int(u).to_bytes(nb, "little"))
-                      for x, (k, u) in pivots.items()])
+        out = LAYOUT(self.nw, self.guard, dshift, ebits, maxdeg, self.mons, tdeg, self.coefs, active, specs, pivots)
         if out is None:
             return None
-        pivcols, nonpivot, redk, off, col, val, work = out
-        return pivcols, nonpivot, redk, Flat.of(len(pivcols), off, col, val), work
+        pivcols, nonpivot, ids, off, col, val, rk, rstart, work = out
+        return pivcols, nonpivot, Flat.of(ids, off, col, val), memoryview(rk).cast("i"), memoryview(rstart).cast("i"), work
 
 
 class CodedRow:
@@ -178,12 +180,12 @@ class Plan:
             self.rstart.append(row.start)
 
     @classmethod
-    def of_flat(cls, flat: Flat, rk: list[int], rstart: list[int]) -> "Plan":
+    def of_flat(cls, flat: Flat, rk: Sequence[int], rstart: Sequence[int]) -> "Plan":
         """The plan of a matrix's rows as they were reduced (``flat``; polynomial and first
-        term of each row)."""
+        term of each row, int32 buffers as :meth:`Packed.layout` gives them)."""
         plan = cls.__new__(cls)
         plan.ids, plan.off, plan.col = flat.ids, flat.off, flat.col
-        plan.rk, plan.rstart = array("i", rk), array("i", rstart)
+        plan.rk, plan.rstart = rk, rstart
         return plan
 
     def sub(self, K: int, rows: Sequence[int], roots: Sequence[int] = ()) -> "Plan":

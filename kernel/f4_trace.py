@@ -201,13 +201,16 @@ def replay_full(trace: Trace, polys: Sequence[list[int]], p: int) -> list[list[i
         raise TraceMismatch("no full trace to replay")
     coefs: list[list[int]] = [list(c) for c in polys]
     for st in trace.steps:
-        reducers, rows = ([], []) if "full" in st.plans else st.every()  # the plan holds the rows
-        used, E, _ = replay_step(list(enumerate(reducers)), rows, st, coefs, p, key="full")
+        plan = st.plans.get("full")
+        if plan is not None:  # the rows as the run reduced them
+            used, E, _ = plan.reduce(coefs, p, st.m, st.K)
+        else:
+            used, E, _ = replay_step(list(enumerate(st.every()[0])), st.every()[1], st, coefs, p, key="full")
         if used != st.used:
             raise TraceMismatch("a matrix reduced differently")
-        got = {s0: (slots, vals) for s0, slots, vals in E}
-        for slots in st.new:
-            coefs.append(_on_slots(*got[slots[0]], slots))
+        # the same rank profile: the echelon rows are the new elements, in the recorded order
+        for (_, support, vals), slots in zip(E, st.new):
+            coefs.append(_on_slots(support, vals, slots))
     if trace.unit:
         return [[1]]
     _, _, W = _replay_needed(trace.final, coefs, p, [j for j, _ in trace.final_out])

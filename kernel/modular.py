@@ -47,8 +47,7 @@
 from __future__ import annotations
 
 import random
-from itertools import chain
-from math import gcd, isqrt
+from math import gcd, isqrt, lcm
 from operator import le, sub
 from typing import Any, Callable, Sequence
 
@@ -60,6 +59,16 @@ from .f4_rows import compiled
 from .f4_trace import Trace, TraceMismatch, replay, replay_full
 from .monomials import Packing, nonnegative_matrix, packing
 from .poly import support_mask
+
+try:
+    from ._f4rows import agree_rows as AGREE_ROWS, fractions as FRACTIONS, ratrec_rows as RATREC_ROWS
+except ImportError:  # no compiler at install (or an older extension): the same loops in Python
+    AGREE_ROWS = FRACTIONS = RATREC_ROWS = None
+
+_SMALL_FRACTIONS: dict[tuple[int, int], Any] = {}
+"""Fractions n/d with |n|, d below 2^15 as python-flint fractions by (n, d), made once (immutable,
+shared by the lifts: most coefficients of small systems' bases are such fractions; kernel/_f4lift.c
+keeps at most 65536)."""
 
 PRIME_RANGE = (1 << 27, 1 << 28)
 FULL_REPLAY_COST = 3.0
@@ -110,15 +119,13 @@ def _next_prime(n: int) -> int:
 
 def primitive(terms: dict) -> dict:
     """The primitive integer multiple (positive content) of a polynomial over QQ."""
-    den = 1
-    for c in terms.values():
-        q = int(c.q)
-        den = den * q // gcd(den, q)
-    ints = {e: int(c.p) * (den // int(c.q)) for e, c in terms.items()}
-    cont = 0
-    for v in ints.values():
-        cont = gcd(cont, v)
-    return {e: v // cont for e, v in ints.items()}
+    cs = terms.values()
+    den = lcm(*[int(c.q) for c in cs])
+    nums = [int(c.p) for c in cs] if den == 1 else [int(c.p) * (den // int(c.q)) for c in cs]
+    cont = gcd(*nums)
+    if cont != 1:
+        nums = [v // cont for v in nums]
+    return dict(zip(terms, nums))
 
 
 def ratrec(a: int, m: int, bound: int) -> tuple[int, int] | None:
@@ -131,6 +138,10 @@ def ratrec(a: int, m: int, bound: int) -> tuple[int, int] | None:
     if s1 == 0 or abs(s1) > bound or gcd(r1, abs(s1)) != 1:
         return None
     return (r1, s1) if s1 > 0 else (-r1, -s1)
+
+
+COMPILED_MODULUS = 1 << 62
+"""Moduli (and primes) below which the reconstruction and its check run in C (kernel/_f4lift.c)."""
 
 
 class Reconstructor:
@@ -148,11 +159,22 @@ class Reconstructor:
         self.den = 1
         self.lift: list[list[Any]] = []  # the last complete lift, from a modulus of ``bits`` bits
         self.bits = 0
+        self.height: int | None = None  # the lift's height in bits, when the compiled lift gave it
 
     def check(self, residues: list[list[int]], p: int) -> bool:
         """Rewind to the first lifted coefficient that disagrees with the residues mod p;
         whether one did."""
         out = self.out
+        if AGREE_ROWS is not None and p < COMPILED_MODULUS:
+            try:
+                first = AGREE_ROWS(out, residues, p, self.i, self.j)
+            except OverflowError:  # an entry beyond 64 bits: the loop below
+                pass
+            else:
+                if first is None:
+                    return False
+                self.i, self.j, self.den = *first, 1
+                return True
         for i in range(min(self.i + 1, len(out))):
             row, rs = out[i], residues[i]
             for j in range(self.j if i == self.i else len(row)):
@@ -163,6 +185,9 @@ class Reconstructor:
         return False
 
     def attempt(self, values: list[list[int]], m: int) -> list[list[Any]] | None:
+        if RATREC_ROWS is not None and m < COMPILED_MODULUS:  # the same loop in C
+            self.i, self.j, self.den, height = RATREC_ROWS(values, self.out, m, self.i, self.j, self.den)
+            return self._complete(m, height) if height >= 0 else None
         bound = isqrt(m // 2)
         half = m // 2
         i, j, den, out = self.i, self.j, self.den, self.out
@@ -186,16 +211,27 @@ class Reconstructor:
                         den = r[1]
             i, j = i + 1, 0
         self.i, self.j, self.den = i, j, den
-        fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
-        self.lift = [[fmpq(n) if d == 1 else fmpq(n, d) for n, d in row] for row in out]
+        return self._complete(m)
+
+    def _complete(self, m: int, height: int | None = None) -> list[list[Any]]:
+        """The complete lift as rationals, from a modulus ``m`` (``height``: its height in bits,
+        if known)."""
+        if FRACTIONS is not None:
+            self.lift = FRACTIONS(self.out, flint.fmpq, _SMALL_FRACTIONS)
+        else:
+            fmpq = flint.fmpq  # fmpq(n) is made faster than fmpq(n, 1)
+            self.lift = [[fmpq(n) if d == 1 else fmpq(n, d) for n, d in row] for row in self.out]
         self.bits = m.bit_length()
+        self.height = height
         return self.lift
 
     def confident(self) -> bool:
         """Whether the last complete lift's coefficients lie far below the bound, where a wrong
         lift is unlikely: a residue mod m is n/d with |n|, d < 2^h for fewer than 2^(2h+1)
         residues, here at most m/32 (and a wrong lift of many coefficients is far rarer)."""
-        height = max([c.height_bits() for row in self.lift for c in row], default=0)
+        height = self.height
+        if height is None:
+            height = max([c.height_bits() for row in self.lift for c in row], default=0)
         return 2 * height + 6 < self.bits
 
 
@@ -239,10 +275,10 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
         if result is None:
             continue
         shape, G, trace, certified = result
-        exps = P.unpack_all(chain.from_iterable(shape))
-        basis = [{exps[mo]: c for mo, c in zip(ms, cs)} for ms, cs in zip(shape, G)]
+        basis = P.term_dicts(list(zip(shape, G)))
         replayed = (lambda q: True) if certified else (lambda q: _replayed_basis_agrees(trace, coefs, G, q))
-        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed):
+        packed = (P.guard, list(zip(shapes, coefs)), list(zip(shape, G)))
+        if verify == "none" or verify_basis(basis, ints, ring, stream, verify == "exact", replayed, packed):
             return basis
     raise ModularFailure("modular F4: no verified basis after 3 attempts (use another engine)")
 
@@ -250,7 +286,7 @@ def f4_qq(gens: Sequence, ring, verify: str = "fast", max_primes: int = 2000,
 def _pack(ints: list[dict], P: Packing):
     shapes, coefs = [], []
     for t in ints:
-        items = sorted(((P.pack(e), c) for e, c in t.items()), reverse=True)
+        items = sorted(zip(P.pack_all(t.keys()), t.values()), reverse=True)
         shapes.append([m for m, _ in items])
         coefs.append([c for _, c in items])
     return shapes, coefs
@@ -292,10 +328,12 @@ def _modular(shapes, coefs, P: Packing, stream, max_primes: int, small_work: int
             if any(cs[0] % p == 0 for cs in coefs):
                 continue
             try:
-                if candidate is not None and cheap_full is None:
-                    cheap_full = trace.full_cost() <= FULL_REPLAY_COST
-                res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p,
-                                    candidate is not None and (cheap_full or rec.confident()))
+                want_full = candidate is not None and rec.confident()
+                if candidate is not None and not want_full:
+                    if cheap_full is None:
+                        cheap_full = trace.full_cost() <= FULL_REPLAY_COST
+                    want_full = cheap_full
+                res, full = _replay(trace, [[c % p for c in cs] for cs in coefs], p, want_full)
             except TraceMismatch:
                 misses += 1
                 if misses > good + 2:
@@ -322,7 +360,7 @@ def _replay(trace: Trace, polys: list[list[int]], p: int, full: bool) -> tuple[l
 
 
 def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool = False,
-                 replayed: Callable[[int], bool | None] | None = None) -> bool:
+                 replayed: Callable[[int], bool | None] | None = None, packed: tuple | None = None) -> bool:
     """Check a lifted reduced basis (see the module docstring).
 
     ``basis``: dicts with the leading exponent first (as :func:`f4_qq` builds them).
@@ -330,11 +368,15 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
     checked exactly over QQ (``exact``), or else modulo one fresh prime ``q``: by
     ``replayed(q)`` when given (True: ``G mod q`` is the reduced basis of the ideal mod
     ``q``; None: ``q`` cannot tell), else (or on None) by one F4 matrix of all S-pairs left
-    by the Gebauer–Möller criteria."""
+    by the Gebauer–Möller criteria.  ``packed``: ``(guard, generators, elements)``, the
+    generators ``ints`` and the basis as (packed monomials decreasing, coefficients) of one
+    packing with these guard bits; the generators are then top-reduced on packed monomials
+    (:func:`_top_reduces_packed`)."""
     if len(basis) == 1 and len(basis[0]) == 1 and not any(next(iter(basis[0]))):
         return True  # the unit ideal: nothing to check beyond the lift
-    red = ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
+    red = None
     if exact:
+        red = ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
         if not red.is_groebner():
             return False
     else:
@@ -353,7 +395,50 @@ def verify_basis(basis: list[dict], ints: list[dict], ring, stream, exact: bool 
             if not _is_groebner_mod(rows, ring.order, q):
                 return False
             checked += 1
-    return all(red.reduces_to_zero(f) for f in ints)
+    leads = None if packed is None else [ms[0] for ms, _ in packed[2]]
+    for k, f in enumerate(ints):
+        reduced = None if packed is None else _top_reduces_packed(packed[1][k], packed[2], leads, packed[0])
+        if reduced is None:  # not packed, or a product left the packing: in flint
+            red = red or ExactReducer(basis, ring.order, [next(iter(b)) for b in basis])
+            reduced = red.reduces_to_zero(f)
+        if not reduced:
+            return False
+    return True
+
+
+def _top_reduces_packed(f: tuple[list, list], elements: list[tuple[list, list]], leads: list[int],
+                        guard: int) -> bool | None:
+    """Whether ``f`` top-reduces to 0 over QQ by the ``elements`` (all as packed monomials,
+    decreasing, and their rational or integer coefficients; ``leads``: their leading
+    monomials), exactly; None once a product
+    ``x^u * m`` sets a guard bit (a field past its width: packed arithmetic would no longer be
+    exact; the caller then reduces in flint).  Packed monomials compare as the ordering does,
+    and ``a`` divides ``b`` iff ``(b | guard) - a`` keeps every guard bit."""
+    terms = dict(zip(*f))
+    while terms:
+        m = max(terms)
+        mg = m | guard
+        for k, lm in enumerate(leads):
+            if (mg - lm) & guard == guard:
+                break
+        else:
+            return False
+        ms, cs = elements[k]
+        c = terms.pop(m)
+        if cs[0] != 1:
+            c = c / cs[0]
+        u = m - lm
+        get = terms.get
+        for x, a in zip(ms[1:], cs[1:]):
+            y = u + x
+            if y & guard:
+                return None
+            v = get(y, 0) - c * a
+            if v:
+                terms[y] = v
+            else:
+                terms.pop(y, None)
+    return True
 
 
 def _replayed_basis_agrees(trace: Trace, coefs: list[list[int]], G: list[list[Any]], q: int) -> bool | None:

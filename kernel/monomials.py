@@ -20,9 +20,15 @@ from __future__ import annotations
 
 from fractions import Fraction
 from functools import lru_cache
+from itertools import chain
 from typing import Sequence
 
 from .order import Exp, MonomialOrder
+
+try:
+    from ._f4rows import exponents as EXPONENTS, pack as PACK, term_dicts as TERM_DICTS
+except ImportError:  # no compiler at install (or an older extension): packed and unpacked in Python
+    EXPONENTS = PACK = TERM_DICTS = None
 
 
 def nonnegative_matrix(order: MonomialOrder) -> list[list[int]]:
@@ -87,6 +93,9 @@ class Packing:
         self.wshift = shifts[0]
         self.guard = sum(1 << (s + w - 1) for s, w in zip(shifts, widths))
         self.eshifts = shifts[n + 1:]
+        self._eshifts = tuple(self.eshifts)
+        # the exponent fields in 64 bits: unpacked in C
+        self._compiled_unpack = EXPONENTS is not None and TERM_DICTS is not None and n * ebits <= 64
         self.dshift = shifts[n]
         self.emask = (1 << ebits) - 1
         # the exponent fields are the lowest ones: their mask, guard bits and field width
@@ -98,6 +107,7 @@ class Packing:
         self.units = [sum(W[i][j] << shifts[i] for i in range(n)) + (1 << shifts[n])
                       + (1 << shifts[n + 1 + j])
                       for j in range(n)]
+        self._units = tuple(self.units)
         # the same by exponent field, lowest first (the last variable's field is the lowest)
         self._field_units = self.units[::-1]
 
@@ -107,18 +117,40 @@ class Packing:
     def pack(self, e: Exp) -> int:
         return sum(k * u for k, u in zip(e, self.units) if k)
 
+    def pack_all(self, exponents: Sequence[Exp]) -> list[int]:
+        """:meth:`pack` of each exponent vector (in C when the packed monomials fit 128 bits)."""
+        if PACK is not None:
+            packed = PACK(exponents, self._units)
+            if packed is not None:
+                return packed
+        return [self.pack(e) for e in exponents]
+
     def unpack(self, m: int) -> Exp:
         mask = self.emask
         return tuple([(m >> s) & mask for s in self.eshifts])
 
     def unpack_all(self, monomials) -> dict[int, Exp]:
-        """The exponents of packed monomials, by monomial (each unpacked once): the exponent
-        fields (the lowest bits) cut out first, then one field of every monomial at a time."""
+        """The exponents of packed monomials, by monomial (each unpacked once): in C when the
+        exponent fields fit the lowest 64 bits, else the exponent fields (the lowest bits) cut
+        out first, then one field of every monomial at a time."""
+        if self._compiled_unpack:
+            return EXPONENTS(monomials, self._eshifts, self.ebits)
         mask, eall = self.emask, self.eall
         ms = list(set(monomials))
         low = [m & eall for m in ms]
         columns = [[e >> s & mask for e in low] for s in self.eshifts]
         return dict(zip(ms, zip(*columns))) if columns else dict.fromkeys(ms, ())
+
+    def term_dicts(self, rows: Sequence[tuple[Sequence[int], Sequence]], scale=None) -> list[dict]:
+        """Rows ``(packed monomials, coefficients)`` as ``{exponent: coefficient}`` dicts in the
+        rows' order, each coefficient multiplied by ``scale`` unless it is None (in C when the
+        exponent fields fit 64 bits)."""
+        if self._compiled_unpack:
+            return TERM_DICTS(rows, self._eshifts, self.ebits, scale)
+        exp = self.unpack_all(chain.from_iterable(ms for ms, _ in rows)).__getitem__
+        if scale is None:
+            return [dict(zip(map(exp, ms), cs)) for ms, cs in rows]
+        return [dict(zip(map(exp, ms), map(scale.__mul__, cs))) for ms, cs in rows]
 
     def weighted_degree(self, m: int) -> int:
         """The first weight row applied to the exponent (the degree of a graded ordering)."""

@@ -13,8 +13,8 @@ from mech.kernel.groebner import groebner
 from mech.kernel import f4 as f4_module
 from mech.kernel.f4 import F4, pack_polys
 from mech.kernel.f4_trace import TraceMismatch, replay
-from mech.kernel.modular import (ExactReducer, Reconstructor, _modular, _pack, _replayed_basis_agrees, primes, primitive,
-                                 ratrec, verify_basis)
+from mech.kernel.modular import (ExactReducer, Reconstructor, _modular, _pack, _replayed_basis_agrees, _top_reduces_packed,
+                                 primes, primitive, ratrec, verify_basis)
 from mech.kernel.monomials import Packing
 from tests.util import cyclic, katsura, ring
 
@@ -206,6 +206,33 @@ def test_full_replay_certifies_the_lift_modulo_a_fresh_prime():
     assert not verify_basis(basis, ints, R, primes(), replayed=lambda p: _replayed_basis_agrees(trace, coefs, wrong, p))
     trace.full = False
     assert _replayed_basis_agrees(trace, coefs, G, q) is None
+
+
+def test_top_reduction_on_packed_monomials():
+    """The exact inclusion check on F4's packed rows (modular._top_reduces_packed) decides as
+    flint's top reduction (ExactReducer) on katsura-4's generators and on non-members, and
+    gives up (None) where a product leaves the packing."""
+    R = ring([f"x{i}" for i in range(5)], [Block("dp", 5)])
+    gens = katsura(R, 4)
+    ints = [primitive(g.terms) for g in gens]
+    P = Packing(R.order, 31)
+    shapes, coefs = _pack(ints, P)
+    shape, G, _, _ = _modular(shapes, coefs, P, primes(), 100)
+    elements = list(zip(shape, G))
+    leads = [ms[0] for ms in shape]
+    basis = [{P.unpack(m): c for m, c in zip(ms, cs)} for ms, cs in elements]
+    flint_red = ExactReducer(basis, R.order)
+    x = R.gens()
+    others = [primitive(t.terms) for t in (gens[0] * x[1] + gens[2] * x[3], gens[1] + x[4], x[0] ** 3 - 2)]
+    for f in ints + others:
+        fs, fc = _pack([f], P)
+        assert _top_reduces_packed((fs[0], fc[0]), elements, leads, P.guard) == flint_red.reduces_to_zero(f)
+    assert [_top_reduces_packed(r, elements, leads, P.guard) for r in zip(*_pack(others, P))] == [True, False, False]
+    # lp in x, y: x^3 by x - y^3 passes x^2 y^3 of degree 5, past a packing for degree 3
+    for maxdeg, want in [(3, None), (63, False)]:  # (63: it ends in y^9, which x does not divide)
+        Q = Packing(MonomialOrder.simple("lp", 2), maxdeg)
+        g = ([Q.pack((1, 0)), Q.pack((0, 3))], [1, -1])
+        assert _top_reduces_packed(([Q.pack((3, 0))], [1]), [g], [g[0][0]], Q.guard) is want
 
 
 def test_a_large_run_keeps_no_full_trace(monkeypatch):

@@ -3,9 +3,10 @@ Python one (F4._layout) feeding the same compiled row reduction: the same reduce
 that replay, packing overflows found, on packings of one to three words."""
 import random
 
+import flint
 import pytest
 
-from mech.kernel import GF, Block, f4_rows
+from mech.kernel import GF, Block, MonomialOrder, f4_rows
 from mech.kernel.f4 import F4, PackingOverflow, is_groebner, pack_polys
 from mech.kernel.f4_rows import Packed
 from mech.kernel.f4_trace import replay
@@ -84,9 +85,9 @@ def test_overflow_of_the_packing_is_found():
 
 def test_bad_arguments_are_errors():
     with pytest.raises(ValueError):
-        f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b""], b"", [], [])  # terms and coefficients disagree
+        f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b""], [False], [], {})  # terms and coefficients disagree
     with pytest.raises(ValueError):
-        f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b"\1" + b"\0" * 7], b"", [(5, b"\0" * 8)], [])
+        f4_rows.LAYOUT(1, b"\0" * 8, 0, 8, 63, [b"\0" * 8], [0], [b"\1" + b"\0" * 7], [False], [(5, b"\0" * 8)], {})
 
 
 def test_replays_through_plans_agree_with_rows_added_one_by_one(monkeypatch):
@@ -126,3 +127,26 @@ def test_a_trace_too_large_to_keep_lets_its_full_layouts_go(monkeypatch):
     fast.run()
     assert not fast.trace.full
     assert all(st.full is None and "full" not in st.plans for st in fast.trace.steps)
+
+
+@pytest.mark.parametrize("nvars, maxdeg", [(3, 63), (6, 63), (7, 255), (2, 100000), (10, 63)])
+@pytest.mark.parametrize("kind", ["dp", "lp"])
+def test_exponents_unpacked_in_c_as_in_python(nvars, maxdeg, kind):
+    """Packing.unpack_all: the compiled unpacking (exponent fields within 64 bits; ten variables
+    of 7 bits exceed them and stay in Python) gives every monomial's exponents as Python does,
+    Packing.term_dicts the same dicts (in the rows' order); Packing.pack_all packs as pack (in C
+    within 128 bits, beyond them in Python)."""
+    rng = random.Random(nvars * maxdeg)
+    Pk = Packing(MonomialOrder.simple(kind, nvars), maxdeg)
+    exps = [tuple(rng.randrange(maxdeg // nvars + 1) for _ in range(nvars)) for _ in range(200)]
+    mons = [Pk.pack(e) for e in exps] * 2
+    assert max(mons).bit_length() > 64 or nvars < 6
+    assert Pk.pack_all(exps) == mons[:200] == [Pk.pack(e) for e in exps]  # packed in C up to 128 bits
+    got = Pk.unpack_all(iter(mons))
+    rows = [(mons[i:i + 7], list(range(i, i + 7))) for i in range(0, 200, 7)]
+    dicts = Pk.term_dicts(rows), Pk.term_dicts(rows, flint.nmod(1, 7))
+    assert Pk._compiled_unpack == (nvars * Pk.ebits <= 64)
+    Pk._compiled_unpack = False
+    assert got == Pk.unpack_all(iter(mons)) == {Pk.pack(e): e for e in exps}
+    assert dicts == (Pk.term_dicts(rows), Pk.term_dicts(rows, flint.nmod(1, 7)))
+    assert [list(d.items()) for d in dicts[1]] == [[(Pk.unpack(m), flint.nmod(c, 7)) for m, c in zip(*r)] for r in rows]

@@ -24,22 +24,26 @@ def run(pairs, P, leads, sugars, rng):
             continue
         log.append(("update", k, pairs.update(k, active), list(active)))
         if rng.random() < 0.3 and len(pairs):
-            log.append(("take", pairs.lowest(), pairs.take()))
-    log.append(("rest", len(pairs), pairs.everything()))
+            if rng.random() < 0.5:
+                log.append(("take", pairs.lowest(), pairs.take()))
+            else:  # as F4's rows
+                log.append(("take_rows", pairs.lowest(), pairs.take_rows()))
+    log.append(("rest", len(pairs), pairs.everything(), pairs.minimal(active)))
     return log
 
 
 @compiled
+@pytest.mark.parametrize("maxdeg", [63, 100000], ids=["one word", "wider"])  # packed rows from 64-bit words or ints
 @pytest.mark.parametrize("order", ["dp", "lp", "block"])
 @pytest.mark.parametrize("seed", range(6))
-def test_compiled_and_python_pair_sets_agree(order, seed):
+def test_compiled_and_python_pair_sets_agree(order, seed, maxdeg):
     rng = random.Random(seed)
     n = rng.choice([2, 3, 5, 7])
     if order == "block":
         mo = MonomialOrder([Block("dp", n - 1), Block("dp", 1)]) if n > 1 else MonomialOrder.simple("dp", n)
     else:
         mo = MonomialOrder.simple(order, n)
-    P = Packing(mo, 63)
+    P = Packing(mo, maxdeg)
     leads = [tuple(rng.randrange(5) for _ in range(n)) for _ in range(40)]
     leads = [e if any(e) else (1,) + e[1:] for e in leads]
     sugars = [sum(e) + rng.randrange(3) for e in leads]
@@ -86,3 +90,32 @@ def test_criteria_on_a_small_example(use_compiled):
     got = sorted((key, P.unpack(L), i, j) for key, L, i, j in pairs.everything())
     assert got == [(3, (1, 2), 1, 2), (3, (2, 1), 0, 1)]
     assert pairs.lowest() == 3 and len(pairs.take()) == 2 and pairs.lowest() is None
+
+
+def test_rows_of_pairs(use_compiled):
+    """Leading monomials x^2, xy, y^2: the pairs (0, 1) and (1, 2), of lcms x^2 y and x y^2, each
+    give the row of their first element as the lcm's reducer and the other as a row to reduce."""
+    P = Packing(MonomialOrder.simple("dp", 2), 63)
+    pairs = pair_set(P, True)
+    active = []
+    for k, e in enumerate([(2, 0), (1, 1), (0, 2)]):
+        pairs.add(P.pack(e), 2)
+        active.append(False)
+        assert pairs.update(k, active)
+    assert pairs.minimal(active) == [0, 1, 2]
+    d, pivots, rows = pairs.take_rows()
+    got_pivots = {P.unpack(L): (k, P.unpack(u)) for L, (k, u) in pivots.items()}
+    assert d == 3 and len(pairs) == 0
+    assert got_pivots == {(2, 1): (0, (0, 1)), (1, 2): (1, (0, 1))}
+    assert sorted((k, P.unpack(u)) for k, u in rows) == [(1, (1, 0)), (2, (1, 0))]
+
+
+def test_minimal_elements(use_compiled):
+    """Active x, xy, y^2 and inactive 1: x divides xy (dropped); of two equal leading monomials
+    the first stays."""
+    P = Packing(MonomialOrder.simple("dp", 2), 63)
+    pairs = pair_set(P, True)
+    for e in [(1, 0), (1, 1), (0, 2), (0, 0), (0, 2)]:
+        pairs.add(P.pack(e), sum(e))
+    assert pairs.minimal([True, True, True, False, True]) == [0, 2]
+    assert pairs.minimal([False, True, False, False, True]) == [1, 4]
