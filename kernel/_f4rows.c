@@ -615,7 +615,6 @@ PyObject *f4_words(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *f4_exponents(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *f4_pack(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
 PyObject *f4_term_dicts(PyObject *self, PyObject *args);  /* kernel/_f4sym.c */
-PyObject *fglm_step(PyObject *self, PyObject *args);  /* kernel/_fglm.c */
 PyObject *f4_ratrec_rows(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
 PyObject *f4_agree_rows(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
 PyObject *f4_fractions(PyObject *self, PyObject *args);  /* kernel/_f4lift.c */
@@ -630,7 +629,6 @@ static PyMethodDef methods[] = {
     {"exponents", f4_exponents, METH_VARARGS, "The exponents of packed monomials (see kernel/_f4sym.c)."},
     {"pack", f4_pack, METH_VARARGS, "Exponent vectors as packed monomials (see kernel/_f4sym.c)."},
     {"term_dicts", f4_term_dicts, METH_VARARGS, "Packed rows as {exponents: coefficient} dicts (see kernel/_f4sym.c)."},
-    {"fglm_step", fglm_step, METH_VARARGS, "One step of FGLM's linear algebra modulo p (see kernel/_fglm.c)."},
     {"ratrec_rows", f4_ratrec_rows, METH_VARARGS, "Rational reconstruction of a lift's rows (see kernel/_f4lift.c)."},
     {"agree_rows", f4_agree_rows, METH_VARARGS, "A lift's rows against residues modulo p (see kernel/_f4lift.c)."},
     {"fractions", f4_fractions, METH_VARARGS, "A lift's rows as python-flint fractions (see kernel/_f4lift.c)."},

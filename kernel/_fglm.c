@@ -1,6 +1,5 @@
 /* FGLM's linear algebra modulo p < 2^31 (kernel/fglm.py ``fglm_modp``): the module
- * mech.kernel._fglm (built with FGLM_MODULE defined, with kernel/_fglm_proof.c); ``fglm_step`` is
- * also part of the optional extension mech.kernel._f4rows.
+ * mech.kernel._fglm (built with kernel/_fglm_proof.c).
  *
  * fglm_matrices(p, D, n, cols, plan, tidx, tval, M) fills the multiplication matrices M (n*D
  * columns of D entries, uint32) of the quotient by a reduced Groebner basis with standard
@@ -120,7 +119,7 @@ static Py_ssize_t step(uint64_t p, Py_ssize_t D, Py_ssize_t K, const uint32_t *M
     return s0;
 }
 
-PyObject *fglm_step(PyObject *self, PyObject *args)
+static PyObject *fglm_step(PyObject *self, PyObject *args)
 {
     unsigned long long p_;
     Py_ssize_t D, K;
@@ -165,7 +164,6 @@ done:
     return result;
 }
 
-#ifdef FGLM_MODULE
 static PyObject *fglm_matrices(PyObject *self, PyObject *args)
 {
     unsigned long long p_;
@@ -766,4 +764,3 @@ PyMODINIT_FUNC PyInit__fglm(void)
 {
     return PyModule_Create(&module);
 }
-#endif

@@ -13,10 +13,10 @@ from typing import Sequence
 from .f4_vectors import RowSpec
 
 try:
-    from ._f4rows import fglm_step as FGLM_STEP, gather as GATHER, layout as LAYOUT, reduce as KERNEL
+    from ._f4rows import gather as GATHER, layout as LAYOUT, reduce as KERNEL
     from ._f4rows import subplan as SUBPLAN
-except ImportError:  # no compiler at install (or an extension built before FGLM's step): pure Python
-    KERNEL = LAYOUT = GATHER = FGLM_STEP = SUBPLAN = None
+except ImportError:  # no compiler at install: pure Python
+    KERNEL = LAYOUT = GATHER = SUBPLAN = None
 try:
     from ._f4rows import words as WORDS
 except ImportError:  # the same bytes by int.to_bytes (an extension built before it)
