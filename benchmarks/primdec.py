@@ -215,10 +215,10 @@ def time_singular(case: Case, repeat: int, timeout: float) -> Timing:
 
 def time_m2(case: Case, repeat: int, timeout: float) -> Timing:
     """Macaulay2's mean CPU time (``cpuTime``) of ``minimalPrimes`` on a fresh ideal (M2 caches on it)."""
-    script = ("t = 0; n = 0; C = null;\n"
-              f"while n < {repeat} and (n == 0 or t < {timeout}) do ({case.m2} "
-              "t0 = cpuTime(); C = minimalPrimes I; t = t + cpuTime() - t0; n = n + 1);\n"
-              'print "RESULT"; print(t / n); print(#C);\n')
+    script = ("Total = 0; Runs = 0; Primes = null;\n"  # names no ring variable (single letters) shadows
+              f"while Runs < {repeat} and (Runs == 0 or Total < {timeout}) do ({case.m2} "
+              "Start = cpuTime(); Primes = minimalPrimes I; Total = Total + cpuTime() - Start; Runs = Runs + 1);\n"
+              'print "RESULT"; print(Total / Runs); print(#Primes);\n')
     out = _run([M2, "--script"], script, 2 * timeout + 10)
     if out is None:
         return Timing(None, note=f"> {timeout:g} s")
