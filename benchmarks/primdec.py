@@ -98,9 +98,11 @@ def minimal_primes_cases() -> list[Case]:
         if not set(re.findall(r"[A-Za-z]", ideal)) <= set(names):  # the ideal lives in another ring
             continue
         field = "QQ" if char == 0 else f"ZZ/{char}"
+        singular_ideal = re.sub(r"([\w)])\s*\(", r"\1*(", ideal)  # M2's "xy(x-y)" is a product
         m2_ideal = f"ideal({ideal})" if re.search(r"[*^]", ideal) else f'ideal "{ideal}"'  # "" reads a2b only
-        out.append(Case(f"M2 {name}: minAssGTZ", f"ring r = {char}, ({','.join(names)}), dp;\nideal I = {ideal};\n",
-                        "list L = minAssGTZ(I);", "L", m2=f"R = {field}[{','.join(names)}]; use R; I = {m2_ideal};"))
+        setup = f"ring rng = {char}, ({','.join(names)}), dp;\nideal I = {singular_ideal};\n"  # no variable is rng
+        out.append(Case(f"M2 {name}: minAssGTZ", setup, "list L = minAssGTZ(I);", "L",
+                        m2=f"R = {field}[{','.join(names)}]; use R; I = {m2_ideal};"))
     return out
 
 
