@@ -61,7 +61,9 @@ def test_minimal_primes_cases_polynomial_ideals_in_m2_syntax():
     for case in cases:
         ideal = case.setup.split("ideal I = ")[1]
         assert "/(" not in ideal.replace(" ", "") or not any(ch.isalpha() for ch in ideal.split("/(")[1].split(")")[0])
-        assert ("ideal(" in case.m2) == ("*" in ideal or "^" in ideal)
+        m2_ideal = case.m2.split("I = ")[1]
+        assert m2_ideal.startswith("ideal(") or not re.search(r"[*^]", m2_ideal)  # M2's strings read a2b only
+        assert not re.search(r"[\w)]\s*\(", ideal)  # M2's juxtaposed products written with *
         assert set(re.findall(r"[A-Za-z]", ideal)) <= set(case.setup.split("(")[1].split(")")[0].split(","))
 
 
