@@ -7,9 +7,10 @@ from setuptools import Extension, setup
 
 setup(ext_modules=[Extension("mech.kernel._f4rows",
                              ["kernel/_f4rows.c", "kernel/_f4sym.c", "kernel/_f4pairs.c", "kernel/_f4lift.c"],
-                             optional=True, extra_compile_args=["-O2"]),
-                   Extension("mech.kernel._fglm", ["kernel/_fglm.c", "kernel/_fglm_proof.c"], optional=True,
+                             depends=["kernel/_intmath.h"], optional=True, extra_compile_args=["-O2"]),
+                   Extension("mech.kernel._fglm", ["kernel/_fglm.c", "kernel/_fglm_proof.c"],
+                             depends=["kernel/_intmath.h"], optional=True, extra_compile_args=["-O2"]),
+                   Extension("mech.kernel._bba", ["kernel/_bba.c"], depends=["kernel/_intmath.h"], optional=True,
                              extra_compile_args=["-O2"]),
-                   Extension("mech.kernel._bba", ["kernel/_bba.c"], optional=True, extra_compile_args=["-O2"]),
                    Extension("mech.kernel._mora", ["kernel/_mora.c"], depends=["kernel/_mora_poly.h"], optional=True,
                              extra_compile_args=["-O2"])])

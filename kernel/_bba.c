@@ -21,6 +21,7 @@
  * and hilbert_numerator (kernel/hilbert.py's numerator recursion). */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include "_intmath.h"
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1062,9 +1063,6 @@ static PyObject *bba_exponents(PyObject *self, PyObject *args)
 }
 
 /* -- the lift to QQ -------------------------------------------------------------------------- */
-typedef unsigned __int128 u128;
-typedef __int128 i128;
-
 static u128 isqrt128(u128 x)
 {
     u128 r = (u128)sqrtl((long double)x);
@@ -1073,18 +1071,6 @@ static u128 isqrt128(u128 x)
     while ((r + 1) * (r + 1) <= x)
         r++;
     return r;
-}
-
-static int64_t gcd64(int64_t a, int64_t b)
-{
-    if (a < 0)
-        a = -a;
-    while (b) {
-        int64_t t = a % b;
-        a = b;
-        b = t;
-    }
-    return a;
 }
 
 /* n/d with n = a d mod M, |n| <= B, 0 < d <= B, gcd(n, d) = 1 (Wang); 0 when none */
@@ -1101,7 +1087,7 @@ static int ratrec128(u128 a, u128 M, u128 B, int64_t *n, int64_t *d)
         s1 = t;
     }
     i128 as1 = s1 < 0 ? -s1 : s1;
-    if (s1 == 0 || as1 > (i128)B || gcd64((int64_t)r1, (int64_t)as1) != 1)
+    if (s1 == 0 || as1 > (i128)B || gcd_i64((int64_t)r1, (int64_t)as1) != 1)
         return 0;
     *n = (int64_t)(s1 > 0 ? r1 : -r1);
     *d = (int64_t)as1;
@@ -1190,7 +1176,7 @@ static PyObject *bba_ratlift(PyObject *self, PyObject *args)
                 ok = 0;
                 break;
             }
-            int64_t g = gcd64(den, d);
+            int64_t g = gcd_i64(den, d);
             u128 l = (u128)(den / g) * (u128)d;
             den = l > B ? d : (int64_t)l;
         }

@@ -24,12 +24,10 @@
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include "_intmath.h"
 #include <stdint.h>
 
 #define CACHED 65536  /* fractions kept in fractions()'s cache */
-
-typedef unsigned __int128 u128;
-typedef __int128 i128;
 
 static uint64_t isqrt64(uint64_t x)
 {
@@ -46,20 +44,6 @@ static uint64_t isqrt64(uint64_t x)
         bit >>= 2;
     }
     return r;
-}
-
-static int64_t gcd_i64(int64_t a, int64_t b)
-{
-    if (a < 0)
-        a = -a;
-    if (b < 0)
-        b = -b;
-    while (b) {
-        int64_t t = a % b;
-        a = b;
-        b = t;
-    }
-    return a;
 }
 
 /* Wang's n/d = a mod m with |n|, d <= bound and gcd(n, d) = 1 (modular.ratrec); 0 when none */

@@ -17,6 +17,7 @@
  * under multiplication, and every field keeps a guard bit that flags an overflow. */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include "_intmath.h"
 #include <stdint.h>
 #include <stdlib.h>
 
@@ -46,20 +47,6 @@ static int by_key_desc(const void *a, const void *b)
 {
     const uint64_t x = ((const Term *)a)->key, y = ((const Term *)b)->key;
     return (x < y) - (x > y);
-}
-
-static int64_t gcd64(int64_t a, int64_t b)
-{
-    if (a < 0)
-        a = -a;
-    if (b < 0)
-        b = -b;
-    while (b) {
-        int64_t r = a % b;
-        a = b;
-        b = r;
-    }
-    return a;
 }
 
 /* The packing: field widths for W e (each bounded by max W[r] * top) and for e (bounded by top),
@@ -158,7 +145,7 @@ static int read_polys(const Packing *P, const int64_t *W, Py_buffer *off, Py_buf
         for (Py_ssize_t k = a; k < b; k++) {
             if (Q[k] <= 0)
                 return -2;
-            const int64_t g = gcd64(den, Q[k]);
+            const int64_t g = gcd_i64(den, Q[k]);
             if (__builtin_mul_overflow(den / g, Q[k], &den))
                 return -1;
         }
@@ -168,7 +155,7 @@ static int read_polys(const Packing *P, const int64_t *W, Py_buffer *off, Py_buf
                 return -1;
             if (C[k] == INT64_MIN || __builtin_mul_overflow(C[k], den / Q[k], &t->coef) || t->coef == INT64_MIN)
                 return -1;
-            cont = gcd64(cont, t->coef);
+            cont = gcd_i64(cont, t->coef);
         }
         ps[i].len = b - a;
         if (cont > 1)
@@ -225,7 +212,7 @@ static int step(const Packing *P, Poly *p, const Poly *g, uint64_t skey, uint64_
     if (a != 1 && p->len > 1) {
         int64_t cont = 0;
         for (Py_ssize_t r = 0; r < p->len && cont != 1; r++)
-            cont = gcd64(cont, p->t[r].coef);
+            cont = gcd_i64(cont, p->t[r].coef);
         if (cont > 1)
             for (Py_ssize_t r = 0; r < p->len; r++)
                 p->t[r].coef /= cont;
@@ -246,7 +233,7 @@ static int reduces(const Packing *P, const Poly *basis, Py_ssize_t nb, Poly *p, 
         if (!g)
             return 0;
         int64_t a = g->t[0].coef, c = top.coef;
-        const int64_t d = gcd64(a, c);
+        const int64_t d = gcd_i64(a, c);
         a /= d, c /= d;
         if (a < 0)
             a = -a, c = -c;
