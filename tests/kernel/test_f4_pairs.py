@@ -77,9 +77,8 @@ def test_overflow_leaves_the_set_unchanged(use_compiled):
     assert active == [True, True, False] and len(pairs) == 0
 
 
-def test_criteria_on_a_small_example(use_compiled):
-    """x^2, xy, y^2: the pairs (x^2, xy) and (xy, y^2) of lcm degree 3 survive, (x^2, y^2) is
-    coprime (Buchberger's first criterion drops it)."""
+def _three_quadrics():
+    """The packing, the pair set and the activity flags after adding x^2, xy, y^2 in turn."""
     P = Packing(MonomialOrder.simple("dp", 2), 63)
     pairs = pair_set(P, True)
     active = []
@@ -87,6 +86,13 @@ def test_criteria_on_a_small_example(use_compiled):
         pairs.add(P.pack(e), 2)
         active.append(False)
         assert pairs.update(k, active)
+    return P, pairs, active
+
+
+def test_criteria_on_a_small_example(use_compiled):
+    """x^2, xy, y^2: the pairs (x^2, xy) and (xy, y^2) of lcm degree 3 survive, (x^2, y^2) is
+    coprime (Buchberger's first criterion drops it)."""
+    P, pairs, active = _three_quadrics()
     got = sorted((key, P.unpack(L), i, j) for key, L, i, j in pairs.everything())
     assert got == [(3, (1, 2), 1, 2), (3, (2, 1), 0, 1)]
     assert pairs.lowest() == 3 and len(pairs.take()) == 2 and pairs.lowest() is None
@@ -95,13 +101,7 @@ def test_criteria_on_a_small_example(use_compiled):
 def test_rows_of_pairs(use_compiled):
     """Leading monomials x^2, xy, y^2: the pairs (0, 1) and (1, 2), of lcms x^2 y and x y^2, each
     give the row of their first element as the lcm's reducer and the other as a row to reduce."""
-    P = Packing(MonomialOrder.simple("dp", 2), 63)
-    pairs = pair_set(P, True)
-    active = []
-    for k, e in enumerate([(2, 0), (1, 1), (0, 2)]):
-        pairs.add(P.pack(e), 2)
-        active.append(False)
-        assert pairs.update(k, active)
+    P, pairs, active = _three_quadrics()
     assert pairs.minimal(active) == [0, 1, 2]
     d, pivots, rows = pairs.take_rows()
     got_pivots = {P.unpack(L): (k, P.unpack(u)) for L, (k, u) in pivots.items()}
