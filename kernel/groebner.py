@@ -8,7 +8,7 @@ from .buchberger import Reducer, pack, packed, unpack
 from .engines import standard_basis
 from .errors import OrderingError
 from .monomials import Packing
-from .poly import Exp, Poly, PolyRing
+from .poly import Exp, Poly, PolyRing, divides
 
 
 def groebner(gens: Sequence[Poly], ring: PolyRing | None = None, engine: str | None = None) -> list[Poly]:
@@ -41,19 +41,25 @@ def contains(basis: Sequence[Poly], f: Poly) -> bool:
 
 def contains_all(basis: Sequence[Poly], polys: Sequence[Poly]) -> bool:
     """Whether every one of ``polys`` lies in the ideal of the Gröbner basis ``basis`` (the
-    basis packed once for all of them; top reductions suffice for a Gröbner basis)."""
-    fs = [f.terms for f in polys if not f.is_zero()]
+    basis packed once for all of them; top reductions suffice for a Gröbner basis).  First the
+    necessary condition that each leading monomial is divisible by one of the basis's (cheap: most
+    ideals compared are not contained in each other)."""
+    fs = [f for f in polys if not f.is_zero()]
     if not fs:
         return True
     ring = polys[0].ring
     if not ring.order.is_global:
         raise OrderingError("ideal membership by normal forms needs a global ordering")
-    bs = [b.terms for b in basis if not b.is_zero()]
+    nonzero = [b for b in basis if not b.is_zero()]
+    leads = [b.lm() for b in nonzero]
+    if any(not any(divides(m, f.lm()) for m in leads) for f in fs):
+        return False
+    bs = [b.terms for b in nonzero]
 
     def run(pk: Packing) -> bool:
         red = Reducer(pk, [pack(pk, b) for b in bs])
-        return not any(red.reduce(pack(pk, f), False) for f in fs)
-    return packed(ring, bs + fs, run)
+        return not any(red.reduce(pack(pk, f.terms), False) for f in fs)
+    return packed(ring, bs + [f.terms for f in fs], run)
 
 
 def normal_forms(polys: Sequence[Poly], basis: Sequence[Poly]) -> list[Poly]:

@@ -46,7 +46,7 @@ from .ideals import (Ideal, dimension, independent_set, intersect, is_unit, move
                      product_order, quotient, ring_of, saturate_poly, saturation_exponent, std,
                      with_order)
 from .order import Block, Exp, MonomialOrder
-from .poly import Poly, PolyRing, divides
+from .poly import Poly, PolyRing
 from .zerodim import Component, Reduction, contract, irreducible, separator
 
 
@@ -57,12 +57,7 @@ def _is_linear(basis: Sequence[Poly]) -> bool:
 # --- minimal associated primes ----------------------------------------------------------
 
 def _contained(polys: Sequence[Poly], basis: Sequence[Poly]) -> bool:
-    """Whether the polynomials lie in the ideal of the Gröbner basis ``basis``; first the
-    necessary condition that each leading monomial is divisible by one of the basis's (cheap:
-    most pairs of ideals compared are not contained in each other)."""
-    leads = [b.lm() for b in basis if not b.is_zero()]
-    if any(not f.is_zero() and not any(divides(m, f.lm()) for m in leads) for f in polys):
-        return False
+    """Whether the polynomials lie in the ideal of the Gröbner basis ``basis``."""
     return contains_all(basis, polys)
 
 
